@@ -1,0 +1,55 @@
+"""Diagnostics: plain records with a stable code, a position and a message.
+
+The parser, the checker and the linter all report through this one record so
+every front end (CLI text, JSON, SARIF, the API) renders them the same way.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .codes import Severity, lookup
+from .errors import EXIT_SYNTAX, EcncError, Location
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    path: str
+    line: int
+    col: int
+    code: str
+    message: str
+    severity: Severity = Severity.ERROR
+    source: str = ""  # the offending source line, for the caret display
+
+    @classmethod
+    def make(cls, code: str, message: str, path: str, line: int, col: int,
+             source: str = "") -> "Diagnostic":
+        """Build a diagnostic with the severity its code is registered with."""
+        return cls(path, line, col, code, message, lookup(code).severity, source)
+
+    @property
+    def location(self) -> Location:
+        return Location(self.path, self.line, self.col)
+
+    def format(self, with_source: bool = True) -> str:
+        """``PATH:LINE:COL: error: message`` and, if known, the line with a caret."""
+        text = f"{self.location}: {self.severity.value}: {self.message}"
+        if with_source and self.source:
+            caret_col = max(self.col, 1)
+            prefix = "".join("\t" if ch == "\t" else " " for ch in self.source[:caret_col - 1])
+            text += f"\n    {self.source}\n    {prefix}^"
+        return text
+
+
+class SyntaxErrors(EcncError):
+    """Raised when a file has syntax errors; carries every one of them (exit 65)."""
+
+    exit_code = EXIT_SYNTAX
+
+    def __init__(self, diagnostics: list[Diagnostic]) -> None:
+        first = diagnostics[0]
+        super().__init__(first.message, first.location)
+        self.diagnostics = diagnostics
+
+    def format(self) -> str:
+        return "\n".join(d.format() for d in self.diagnostics)

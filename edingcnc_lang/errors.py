@@ -1,0 +1,62 @@
+"""Error types shared by every stage.
+
+Every error the user can cause carries a location so the CLI can print
+``PATH:LINE:COL: error: MESSAGE`` and never a traceback.  The exit code that
+belongs to an error is part of its type (see docs/cli.md).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+EXIT_OK = 0
+EXIT_FINDINGS = 1
+EXIT_USAGE = 2
+EXIT_SYNTAX = 65
+EXIT_RUNTIME = 70
+
+
+@dataclass(frozen=True)
+class Location:
+    """Where something happened; line and col are 1-based, 0 means unknown."""
+
+    path: str
+    line: int = 0
+    col: int = 0
+
+    def __str__(self) -> str:
+        parts = [self.path]
+        if self.line:
+            parts.append(str(self.line))
+            if self.col:
+                parts.append(str(self.col))
+        return ":".join(parts)
+
+
+class EcncError(Exception):
+    """Base of all errors reported to the user; ``exit_code`` picks the CLI exit status."""
+
+    exit_code = EXIT_RUNTIME
+
+    def __init__(self, message: str, location: Location | None = None,
+                 notes: tuple[str, ...] = ()) -> None:
+        super().__init__(message)
+        self.message = message
+        self.location = location
+        self.notes = notes
+
+    def format(self) -> str:
+        """Render as ``PATH:LINE:COL: error: MESSAGE`` plus indented notes."""
+        head = f"{self.location}: error: {self.message}" if self.location else f"error: {self.message}"
+        return "\n".join([head, *(f"  {n}" for n in self.notes)])
+
+
+class ConfigError(EcncError):
+    """A bad value in cnc.ini (location names the ini file and line)."""
+
+
+class PluginError(EcncError):
+    """A kinematics plug-in that failed to load or raised while running."""
+
+
+class MachineError(EcncError):
+    """A runtime error while running a job: errmsg, limits, bad arguments, step budget."""

@@ -1,0 +1,241 @@
+"""The abstract syntax tree: frozen dataclasses with a source span on every node.
+
+Nothing here knows about Lark; the parser converts its trees into these nodes
+and every later stage (checker, interpreter, linter, printer) works on them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Union
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """Source range of a node: 1-based line and column, end column exclusive."""
+
+    path: str
+    line: int
+    col: int
+    end_line: int
+    end_col: int
+
+
+NO_SPAN = Span("<none>", 0, 0, 0, 0)
+
+
+# --------------------------------------------------------------------------- expressions
+
+@dataclass(frozen=True, slots=True)
+class Number:
+    value: float
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    """``#n`` (index is a Number), ``#[e]`` or ``##n`` (index is another Param)."""
+
+    index: "Expr"
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Unary:
+    op: str  # "-" or "+"
+    operand: "Expr"
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Binary:
+    """Arithmetic and logic: ``** * / MOD + - OR XOR AND`` (op upper-cased)."""
+
+    op: str
+    left: "Expr"
+    right: "Expr"
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Compare:
+    """Comparison; op is normalised to one of ``== <> < > <= >=``."""
+
+    op: str
+    left: "Expr"
+    right: "Expr"
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """Function call; ``ATAN[y]/[x]`` has two arguments, the others one."""
+
+    name: str  # upper-case
+    args: tuple["Expr", ...]
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+Expr = Union[Number, Param, Unary, Binary, Compare, Call]
+
+
+# --------------------------------------------------------------------------- block items
+
+@dataclass(frozen=True, slots=True)
+class Word:
+    """A letter word such as ``G1``, ``X[#1+2]`` or ``T[#5011]`` (letter upper-case)."""
+
+    letter: str
+    value: Expr
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Assign:
+    """``#n = expr``; takes effect after every expression of its line is evaluated."""
+
+    target: Param
+    value: Expr
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+# --------------------------------------------------------------------------- statements
+
+@dataclass(frozen=True, slots=True)
+class Block:
+    """One line of words and assignments (the ordinary G-code line).
+
+    ``message`` holds the text of a ``(MSG ...)`` comment, ``line_number`` the
+    N word, ``block_delete`` the leading ``/``.
+    """
+
+    words: tuple[Word, ...]
+    assigns: tuple[Assign, ...] = ()
+    message: str | None = None
+    line_number: int | None = None
+    block_delete: bool = False
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+MessageItem = Union[str, Expr]
+
+
+@dataclass(frozen=True, slots=True)
+class Message:
+    """``msg``, ``warnmsg``, ``errmsg`` or ``logmsg`` with concatenated items."""
+
+    kind: str  # "msg" | "warnmsg" | "errmsg" | "logmsg"
+    items: tuple[MessageItem, ...]
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Dialog:
+    """``dlgmsg "title" "label" 27 ...``; items kept as written so the linter sees mistakes."""
+
+    items: tuple[MessageItem, ...]
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class LogFile:
+    name: str
+    mode: Expr | None
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Home:
+    """``home x`` / ``homeTandem x`` (axis upper-case)."""
+
+    axis: str
+    tandem: bool = False
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Switch:
+    """On/off commands: tanknife, homeIsEstop, TCAGuard, ZHC, LaserEngrave (name lower-case)."""
+
+    name: str
+    on: bool
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Kin:
+    """``KIN ON|OFF|CTRL id p1..p6|<mapping>``; mode upper-case, args only for CTRL."""
+
+    mode: str
+    args: tuple[Expr, ...] = ()
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class PrepareLinDeltaHome:
+    velocity: Expr | None = None
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Command:
+    """Commands accepted but not modelled in detail (ZHC*, GetToolInfo, modbus, Exec, ...)."""
+
+    name: str  # lower-case
+    args: str
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class GoSub:
+    name: str  # as written; lookups are case-insensitive
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class If:
+    cond: Expr
+    then: tuple["Stmt", ...]
+    orelse: tuple["Stmt", ...] = ()
+    has_else: bool = False
+    extra_brackets: int = 0  # stray ']' after the condition, accepted like the controller does
+    span: Span = field(default=NO_SPAN, compare=False)
+    end_span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class While:
+    cond: Expr
+    body: tuple["Stmt", ...]
+    extra_brackets: int = 0
+    span: Span = field(default=NO_SPAN, compare=False)
+    end_span: Span = field(default=NO_SPAN, compare=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Sub:
+    name: str
+    body: tuple["Stmt", ...]
+    span: Span = field(default=NO_SPAN, compare=False)
+    end_span: Span = field(default=NO_SPAN, compare=False)
+
+
+Stmt = Union[Block, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,
+             Command, GoSub, If, While, Sub]
+
+
+@dataclass(frozen=True, slots=True)
+class Program:
+    """A whole file: its statements and the ``@unit`` directive, if any."""
+
+    path: str
+    body: tuple[Stmt, ...]
+    unit: str | None = None
+
+    @property
+    def subs(self) -> dict[str, Sub]:
+        """Sub definitions by lower-case name (the first definition wins)."""
+        found: dict[str, Sub] = {}
+        for stmt in self.body:
+            if isinstance(stmt, Sub):
+                found.setdefault(stmt.name.lower(), stmt)
+        return found

@@ -1,0 +1,529 @@
+"""Parsing: source lines -> AST statements, streaming, with errors in the user's terms.
+
+Each line is one statement, so the grammar parses a single line at a time and
+this module assembles the multi-line blocks (Sub, If, While) from the stream.
+Plain word lines (most CAM output) take a regular-expression fast path that
+builds exactly the Block the grammar would.  Lark trees never leave this module.
+"""
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
+from functools import lru_cache
+from importlib import resources
+
+from lark import Lark, Token, Tree
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+
+from . import nodes as n
+from .diagnostics import Diagnostic, SyntaxErrors
+from .source import iter_file_lines, iter_text_lines
+
+KIN_MODES = frozenset({"ON", "OFF", "CTRL", "X2A", "X2XA", "Y2A", "Y2YA", "Z2C", "Z2ZC", "Y2YAZ2ZC"})
+UNITS = frozenset({"mm", "inch"})
+
+_UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
+_FAST_WORD = r"[A-Za-z][ \t]*[+-]?(?:\d+\.?\d*|\.\d+)"
+_FAST_LINE = re.compile(rf"^[ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$")
+_FAST_WORDS = re.compile(r"([A-Za-z])[ \t]*([+-]?(?:\d+\.?\d*|\.\d+))")
+
+
+@lru_cache(maxsize=1)
+def _lark() -> Lark:
+    """The line parser, built once per process from the packaged grammar files."""
+    grammar = resources.files("edingcnc_lang.grammar")
+    with resources.as_file(grammar / "macro.lark") as path:
+        return Lark.open(str(path), parser="lalr", lexer="contextual",
+                         propagate_positions=True, maybe_placeholders=False, cache=True)
+
+
+# --------------------------------------------------------------------------- block markers
+
+@dataclass(frozen=True)
+class _Open:
+    """A line that opens a block: Sub, If or While (kept until its end line)."""
+
+    kind: str  # "Sub" | "If" | "While"
+    span: n.Span
+    name: str = ""
+    cond: n.Expr | None = None
+    extra: int = 0
+
+
+@dataclass(frozen=True)
+class _Close:
+    kind: str  # "EndSub" | "EndIf" | "EndWhile" | "Else"
+    span: n.Span
+
+
+_LineResult = n.Stmt | _Open | _Close | None
+
+
+# --------------------------------------------------------------------------- tree -> AST
+
+def _strip(name: str) -> str:
+    return name.rsplit("__", 1)[-1]
+
+
+class _Builder:
+    """Converts the Lark tree of one line into AST nodes with spans."""
+
+    def __init__(self, path: str, line: int) -> None:
+        self.path = path
+        self.line = line
+
+    def span(self, item: Tree | Token) -> n.Span:
+        if isinstance(item, Token):
+            return n.Span(self.path, self.line, item.column or 0, self.line, item.end_column or 0)
+        meta = item.meta
+        if getattr(meta, "empty", True):
+            return n.Span(self.path, self.line, 0, self.line, 0)
+        return n.Span(self.path, self.line, meta.column, self.line, meta.end_column)
+
+    # expressions ------------------------------------------------------------
+    def expr(self, item: Tree | Token) -> n.Expr:
+        if isinstance(item, Token):  # a bare NUMBER inlined by '?' rules
+            return n.Number(float(item), self.span(item))
+        kind = _strip(item.data)
+        handler = self._EXPR[kind]
+        return handler(self, item)
+
+    def _number(self, tree: Tree) -> n.Expr:
+        return n.Number(float(tree.children[0]), self.span(tree))
+
+    def _param(self, tree: Tree) -> n.Expr:
+        return n.Param(self.expr(tree.children[0]), self.span(tree))
+
+    def _unary(self, tree: Tree) -> n.Expr:
+        op, operand = str(tree.children[0]), self.expr(tree.children[1])
+        if isinstance(operand, n.Number):  # fold signs into literals: X-5 is Number(-5)
+            value = -operand.value if op == "-" else operand.value
+            return n.Number(value, self.span(tree))
+        return n.Unary(op, operand, self.span(tree))
+
+    def _binary(self, tree: Tree) -> n.Expr:
+        left, op, right = tree.children
+        return n.Binary(str(op).upper(), self.expr(left), self.expr(right), self.span(tree))
+
+    def _compare(self, tree: Tree) -> n.Expr:
+        left, op, right = tree.children
+        return n.Compare(_COMPARE_OPS[str(op).upper()], self.expr(left), self.expr(right),
+                         self.span(tree))
+
+    def _call(self, tree: Tree) -> n.Expr:
+        name, arg = tree.children
+        return n.Call(str(name).upper(), (self.expr(arg),), self.span(tree))
+
+    def _atan(self, tree: Tree) -> n.Expr:
+        _, y, _slash, x = tree.children
+        return n.Call("ATAN", (self.expr(y), self.expr(x)), self.span(tree))
+
+    _EXPR: dict[str, Callable[["_Builder", Tree], n.Expr]] = {
+        "number": _number, "param": _param, "unary": _unary, "binary": _binary,
+        "compare": _compare, "call": _call, "atan": _atan,
+    }
+
+    # statements -------------------------------------------------------------
+    def statement(self, tree: Tree) -> _LineResult:
+        if not tree.children:
+            return None
+        stmt = tree.children[0]
+        return self._STMT[_strip(stmt.data)](self, stmt)
+
+    def _block(self, tree: Tree) -> n.Stmt:
+        words: list[n.Word] = []
+        assigns: list[n.Assign] = []
+        message: str | None = None
+        block_delete = False
+        for child in tree.children:
+            if isinstance(child, Token):
+                if _strip(child.type) == "SLASH":
+                    block_delete = True
+                else:  # MSG_COMMENT: "(MSG text)"
+                    message = _MSG_TEXT.match(str(child)).group(1)  # type: ignore[union-attr]
+            elif _strip(child.data) == "word":
+                letter, value = child.children
+                words.append(n.Word(str(letter).upper(), self.expr(value), self.span(child)))
+            else:
+                target, value = child.children
+                param = self.expr(target)
+                assert isinstance(param, n.Param)
+                assigns.append(n.Assign(param, self.expr(value), self.span(child)))
+        return _make_block(words, assigns, message, block_delete, self.span(tree))
+
+    def _sub_head(self, tree: Tree) -> _LineResult:
+        return _Open("Sub", self.span(tree), name=str(tree.children[1]))
+
+    def _cond(self, tree: Tree) -> tuple[n.Expr, int]:
+        expr, *extra = tree.children
+        return self.expr(expr), len(extra)
+
+    def _if_head(self, tree: Tree) -> _LineResult:
+        cond, extra = self._cond(tree.children[1])
+        return _Open("If", self.span(tree), cond=cond, extra=extra)
+
+    def _while_head(self, tree: Tree) -> _LineResult:
+        cond, extra = self._cond(tree.children[1])
+        return _Open("While", self.span(tree), cond=cond, extra=extra)
+
+    def _close(kind: str) -> Callable[["_Builder", Tree], _LineResult]:  # type: ignore[misc]
+        def handler(self: "_Builder", tree: Tree) -> _LineResult:
+            return _Close(kind, self.span(tree))
+        return handler
+
+    def _gosub(self, tree: Tree) -> n.Stmt:
+        return n.GoSub(str(tree.children[1]), self.span(tree))
+
+    def _items(self, children: list[Tree | Token]) -> tuple[n.MessageItem, ...]:
+        return tuple(str(c)[1:-1] if isinstance(c, Token) and _strip(c.type) == "STRING"
+                     else self.expr(c) for c in children)
+
+    def _message(self, tree: Tree) -> n.Stmt:
+        kind = str(tree.children[0]).lower()
+        return n.Message(kind, self._items(tree.children[1:]), self.span(tree))
+
+    def _dialog(self, tree: Tree) -> n.Stmt:
+        return n.Dialog(self._items(tree.children[1:]), self.span(tree))
+
+    def _logfile(self, tree: Tree) -> n.Stmt:
+        name_tok = tree.children[1]
+        name = str(name_tok)
+        if _strip(name_tok.type) == "STRING":
+            name = name[1:-1]
+        mode = self.expr(tree.children[2]) if len(tree.children) > 2 else None
+        return n.LogFile(name, mode, self.span(tree))
+
+    def _home(self, tree: Tree) -> n.Stmt:
+        keyword, axis = tree.children
+        return n.Home(str(axis).upper(), str(keyword).lower() == "hometandem", self.span(tree))
+
+    def _switch(self, tree: Tree) -> n.Stmt:
+        name, state = tree.children
+        return n.Switch(str(name).lower(), str(state).lower() == "on", self.span(tree))
+
+    def _kin(self, tree: Tree) -> n.Stmt:
+        mode_tok = tree.children[1]
+        mode = str(mode_tok).upper()
+        if mode not in KIN_MODES:
+            raise _LineError("E107", f"unknown KIN mode '{mode_tok}' (expected ON, OFF, CTRL or one of "
+                             "X2A X2XA Y2A Y2YA Z2C Z2ZC Y2YAZ2ZC)", mode_tok.column)
+        args = tuple(self.expr(c) for c in tree.children[2:])
+        if args and mode != "CTRL":
+            raise _LineError("E100", f"KIN {mode} takes no arguments", self.span(tree.children[2]).col)
+        if mode == "CTRL" and not 1 <= len(args) <= 7:
+            raise _LineError("E100", "KIN CTRL needs a control id and up to 6 values", mode_tok.column)
+        return n.Kin(mode, args, self.span(tree))
+
+    def _prepare_delta(self, tree: Tree) -> n.Stmt:
+        vel = self.expr(tree.children[1]) if len(tree.children) > 1 else None
+        return n.PrepareLinDeltaHome(vel, self.span(tree))
+
+    def _command(self, tree: Tree) -> n.Stmt:
+        args = str(tree.children[1]).strip() if len(tree.children) > 1 else ""
+        return n.Command(str(tree.children[0]).lower(), args, self.span(tree))
+
+    def _percent(self, tree: Tree) -> _LineResult:
+        return None
+
+    _STMT: dict[str, Callable[["_Builder", Tree], _LineResult]] = {
+        "block": _block, "sub_head": _sub_head, "endsub": _close("EndSub"),
+        "if_head": _if_head, "else_": _close("Else"), "endif": _close("EndIf"),
+        "while_head": _while_head, "endwhile": _close("EndWhile"), "gosub": _gosub,
+        "message": _message, "dialog": _dialog, "logfile": _logfile, "home": _home,
+        "switch": _switch, "kin": _kin, "prepare_delta": _prepare_delta,
+        "command": _command, "percent": _percent,
+    }
+    del _close
+
+
+_MSG_TEXT = re.compile(r"\(\s*msg\b[ \t,]*([^)]*)\)", re.IGNORECASE)
+_COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<": "<", "LT": "<",
+                ">": ">", "GT": ">", "<=": "<=", "LE": "<=", ">=": ">=", "GE": ">="}
+
+
+def _make_block(words: list[n.Word], assigns: list[n.Assign], message: str | None,
+                block_delete: bool, span: n.Span) -> n.Block:
+    """Build a Block, moving a literal N word into ``line_number``."""
+    line_number = None
+    if words and words[0].letter == "N" and isinstance(words[0].value, n.Number):
+        line_number = int(words[0].value.value)
+        words = words[1:]
+    return n.Block(tuple(words), tuple(assigns), message, line_number, block_delete, span)
+
+
+def _fast_block(text: str, path: str, line: int) -> n.Block:
+    """The Block for a line of plain ``letter number`` words, without Lark."""
+    words = []
+    for match in _FAST_WORDS.finditer(text):
+        col, end = match.start() + 1, match.end() + 1
+        span = n.Span(path, line, col, line, end)
+        num_span = n.Span(path, line, match.start(2) + 1, line, end)
+        words.append(n.Word(match.group(1).upper(), n.Number(float(match.group(2)), num_span), span))
+    first, last = words[0].span, words[-1].span
+    return _make_block(words, [], None, False, n.Span(path, line, first.col, line, last.end_col))
+
+
+def is_fast_line(text: str) -> bool:
+    """True when the fast path handles this line (used by the equivalence tests)."""
+    return _FAST_LINE.match(text) is not None
+
+
+# --------------------------------------------------------------------------- errors
+
+class _LineError(Exception):
+    """A problem found while converting one line (code, message, column)."""
+
+    def __init__(self, code: str, message: str, col: int) -> None:
+        super().__init__(message)
+        self.code, self.message, self.col = code, message, col
+
+
+def _scan_delimiters(text: str) -> _LineError | None:
+    """Explain unbalanced quotes, comments and brackets, which Lark reports poorly."""
+    opens: list[int] = []
+    i = 0
+    while i < len(text):
+        ch = text[i]
+        if ch == '"':
+            close = text.find('"', i + 1)
+            if close < 0:
+                return _LineError("E104", f"unterminated string: the '\"' at column {i + 1} has no closing '\"'", i + 1)
+            i = close + 1
+            continue
+        if ch == ";":
+            break
+        if ch == "(":
+            close = text.find(")", i + 1)
+            if close < 0:
+                return _LineError("E103", f"unclosed '(' comment opened at column {i + 1}", i + 1)
+            i = close + 1
+            continue
+        if ch == "[":
+            opens.append(i + 1)
+        elif ch == "]":
+            if not opens:
+                return _LineError("E102", f"unbalanced ']' at column {i + 1} has no matching '['", i + 1)
+            opens.pop()
+        i += 1
+    if opens:
+        return _LineError("E101", f"unclosed '[' opened at column {opens[-1]}", opens[-1])
+    return None
+
+
+_WORD_BEFORE = re.compile(r"([A-Za-z])[ \t]*[^\sA-Za-z;(]*$")
+_CONDITION_LINE = re.compile(r"^\s*(if|while)(?![a-z0-9_])", re.IGNORECASE)
+
+
+def _explain(text: str, exc: UnexpectedInput) -> _LineError:
+    """Turn a Lark error on ``text`` into a message in the user's terms."""
+    col = getattr(exc, "column", 0) or len(text) + 1
+    condition = _CONDITION_LINE.match(text)
+    if condition:
+        delim = _scan_delimiters(text)
+        if delim and delim.code != "E102":
+            return delim
+        keyword = condition.group(1).capitalize()
+        return _LineError("E106", f"{keyword} condition must be one bracketed expression, e.g. "
+                          f"{keyword} [[#1 > 0] and [#2 < 5]] (EdingCNC error G1171)", col)
+    delim = _scan_delimiters(text)
+    if delim:
+        return delim
+    ch = text[col - 1] if 0 < col <= len(text) else ""
+    if isinstance(exc, UnexpectedEOF) or (isinstance(exc, UnexpectedToken) and exc.token.type == "$END"):
+        word = _WORD_BEFORE.search(text.rstrip())
+        if word and not text.rstrip()[word.end(1):].strip():
+            return _LineError("E108", f"word '{word.group(1).upper()}' needs a value", word.start(1) + 1)
+        return _LineError("E100", "line ends too early", col)
+    if ch in "+-*/" or text[col - 1:col + 2].lower() in ("mod", "and", "xor") or text[col - 1:col + 1].lower() == "or":
+        word = _WORD_BEFORE.search(text[:col - 1])
+        if word:
+            start = word.start(1)
+            end = len(text)
+            for stop in (" ", "\t", ";", "("):
+                pos = text.find(stop, col)
+                if pos >= 0:
+                    end = min(end, pos)
+            fragment = text[start:end]
+            return _LineError("E105", f"expression needs brackets: {fragment} (write "
+                              f"{fragment[0]}[{fragment[1:].strip()}])", start + 1)
+    if isinstance(exc, UnexpectedCharacters):
+        return _LineError("E100", f"unexpected character '{ch}'", col)
+    token = str(exc.token) if isinstance(exc, UnexpectedToken) else ch
+    return _LineError("E100", f"unexpected '{token}'", col)
+
+
+# --------------------------------------------------------------------------- one line
+
+def parse_line(text: str, path: str = "<string>", line: int = 1) -> _LineResult:
+    """Parse one source line; raises _LineError on a syntax error."""
+    if _FAST_LINE.match(text):
+        return _fast_block(text, path, line)
+    try:
+        tree = _lark().parse(text)
+    except UnexpectedInput as exc:
+        raise _explain(text, exc) from None
+    return _Builder(path, line).statement(tree)
+
+
+# --------------------------------------------------------------------------- structure
+
+@dataclass
+class _Frame:
+    """An open block while its body is being collected."""
+
+    opener: _Open
+    source: str
+    body: list[n.Stmt] = field(default_factory=list)
+    orelse: list[n.Stmt] = field(default_factory=list)
+    in_else: bool = False
+
+    def add(self, stmt: n.Stmt) -> None:
+        (self.orelse if self.in_else else self.body).append(stmt)
+
+    def close(self, end: n.Span) -> n.Stmt:
+        o = self.opener
+        if o.kind == "Sub":
+            return n.Sub(o.name, tuple(self.body), o.span, end)
+        assert o.cond is not None
+        if o.kind == "If":
+            return n.If(o.cond, tuple(self.body), tuple(self.orelse), self.in_else, o.extra, o.span, end)
+        return n.While(o.cond, tuple(self.body), o.extra, o.span, end)
+
+    def describe(self) -> str:
+        o = self.opener
+        return f"Sub {o.name} (line {o.span.line})" if o.kind == "Sub" else f"{o.kind} (line {o.span.line})"
+
+
+_END_OF = {"Sub": "EndSub", "If": "EndIf", "While": "EndWhile"}
+_OPENER_OF = {"EndSub": "Sub", "EndIf": "If", "EndWhile": "While", "Else": "If"}
+_ORPHAN_CODE = {"EndSub": "S203", "EndIf": "S200", "EndWhile": "S202", "Else": "S201"}
+
+
+class StatementReader:
+    """Streams the statements of a source, top level only, as soon as each is complete.
+
+    Diagnostics are collected in ``diagnostics`` (parsing goes on at the next
+    line); ``unit`` holds the ``@unit`` directive once the first line is read.
+    """
+
+    def __init__(self, lines: Iterable[str], path: str) -> None:
+        self.path = path
+        self.unit: str | None = None
+        self.diagnostics: list[Diagnostic] = []
+        self._lines = lines
+
+    def _error(self, code: str, message: str, line: int, col: int, source: str = "") -> None:
+        self.diagnostics.append(Diagnostic.make(code, message, self.path, line, col, source))
+
+    def __iter__(self) -> Iterator[n.Stmt]:
+        stack: list[_Frame] = []
+        path = self.path
+        lineno = 0
+        for lineno, text in enumerate(self._lines, 1):
+            if lineno == 1 and self._read_unit(text):
+                continue
+            try:
+                result = parse_line(text, path, lineno)
+            except _LineError as err:
+                self._error(err.code, err.message, lineno, err.col, text)
+                opener = _CONDITION_LINE.match(text)
+                if opener:  # keep the block structure so its EndIf/EndWhile still matches
+                    span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
+                    stack.append(_Frame(_Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
+                continue
+            if result is None:
+                continue
+            if isinstance(result, _Open):
+                if result.kind == "Sub" and stack:
+                    self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
+                                f"close that first (subs cannot be nested)", lineno, result.span.col, text)
+                    yield from self._unwind(stack, lineno, report=False)
+                stack.append(_Frame(result, text))
+            elif isinstance(result, _Close):
+                done = self._close(stack, result, text)
+                if done is not None:
+                    yield done
+            elif stack:
+                stack[-1].add(result)
+            else:
+                yield result
+        yield from self._unwind(stack, lineno + 1, report=True)
+
+    def _read_unit(self, text: str) -> bool:
+        """Record a first-line ``@unit`` directive; True if the line was one."""
+        match = _UNIT_RE.match(text)
+        if not match:
+            return False
+        unit = match.group(1).lower()
+        if unit in UNITS:
+            self.unit = unit
+        else:
+            col = match.start(1) + 1
+            self._error("E109", f"@unit must be 'mm' or 'inch', not '{match.group(1)}'", 1, col, text)
+        return True
+
+    def _close(self, stack: list[_Frame], close: _Close, text: str) -> n.Stmt | None:
+        """Apply an end line (or Else) to the stack; returns a finished top-level statement."""
+        want = _OPENER_OF[close.kind]
+        line, col = close.span.line, close.span.col
+        if not any(f.opener.kind == want for f in stack):
+            self._error(_ORPHAN_CODE[close.kind], f"{close.kind} without {want}", line, col, text)
+            return None
+        while stack[-1].opener.kind != want:
+            inner = stack.pop()
+            self._error("S204", f"{inner.describe()} has no {_END_OF[inner.opener.kind]} before "
+                        f"this {close.kind}", line, col, text)
+            stack[-1].add(inner.close(close.span))
+        frame = stack[-1]
+        if close.kind == "Else":
+            if frame.in_else:
+                self._error("S206", f"second Else in {frame.describe()}", line, col, text)
+            frame.in_else = True
+            return None
+        stack.pop()
+        stmt = frame.close(close.span)
+        if stack:
+            stack[-1].add(stmt)
+            return None
+        return stmt
+
+    def _unwind(self, stack: list[_Frame], line: int, report: bool) -> Iterator[n.Stmt]:
+        """Close every open block (at end of file, or on a nested Sub)."""
+        end = n.Span(self.path, line, 0, line, 0)
+        while stack:
+            frame = stack.pop()
+            if report:
+                o = frame.opener
+                self._error("S204", f"{frame.describe()} has no {_END_OF[o.kind]}",
+                            o.span.line, o.span.col, frame.source)
+            stmt = frame.close(end)
+            if stack:
+                stack[-1].add(stmt)
+            else:
+                yield stmt
+
+
+# --------------------------------------------------------------------------- whole files
+
+def read_statements(path: str | os.PathLike[str]) -> StatementReader:
+    """A streaming reader over a file (statements are parsed as you iterate)."""
+    return StatementReader(iter_file_lines(path), os.fspath(path))
+
+
+def parse_text(text: str, path: str = "<string>") -> n.Program:
+    """Parse a whole string; raises SyntaxErrors listing every error found."""
+    return _collect(StatementReader(iter_text_lines(text), path))
+
+
+def parse_file(path: str | os.PathLike[str]) -> n.Program:
+    """Parse a whole file; raises SyntaxErrors listing every error found."""
+    return _collect(read_statements(path))
+
+
+def _collect(reader: StatementReader) -> n.Program:
+    body = tuple(reader)
+    if reader.diagnostics:
+        raise SyntaxErrors(reader.diagnostics)
+    return n.Program(reader.path, body, reader.unit)

@@ -1,0 +1,45 @@
+"""Reading source files: decoding and line splitting, lazily.
+
+Real macro files come as ASCII, UTF-8 (with or without BOM) and Latin-1 with
+CRLF or LF line ends.  Each line is decoded on its own (UTF-8 first, Latin-1 as
+fallback) so a stray byte never breaks a file and nothing is held in memory
+beyond the current line.
+"""
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+
+BOM = b"\xef\xbb\xbf"
+
+
+def decode_line(raw: bytes) -> str:
+    """Decode one line; Latin-1 accepts every byte, so this never fails."""
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return raw.decode("latin-1")
+
+
+def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
+    """Yield the lines of a file without their line ends (CRLF, LF or CR)."""
+    with open(path, "rb") as handle:
+        first = True
+        for raw in handle:
+            if first:
+                first = False
+                if raw.startswith(BOM):
+                    raw = raw[len(BOM):]
+            yield decode_line(raw.rstrip(b"\r\n"))
+
+
+def iter_text_lines(text: str) -> Iterator[str]:
+    """Yield the lines of an in-memory string (BOM stripped)."""
+    if text.startswith("\ufeff"):
+        text = text[1:]
+    yield from text.splitlines()
+
+
+def read_text(path: str | os.PathLike[str]) -> str:
+    """The whole file decoded line by line, joined with LF."""
+    return "\n".join(iter_file_lines(path))
