@@ -1,0 +1,152 @@
+"""The kinematics interface every built-in, Python plug-in and compiled plug-in offers.
+
+The interpreter only talks to ``Kinematics``; ``KinematicsPlugin`` gives Python
+plug-ins sensible defaults so a user only has to write ``inverse`` and ``forward``.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import ClassVar, Protocol, runtime_checkable
+
+import numpy as np
+
+from edingcnc_lang.errors import ConfigError, Location, MachineError
+from edingcnc_lang.kinematics import abi
+
+Pose = tuple[float, float, float, float, float, float]
+AXES = ("x", "y", "z", "a", "b", "c")
+JOINTS = ("jx", "jy", "jz", "ja", "jb", "jc")
+
+
+class KinematicsDomainError(MachineError):
+    """A position the machine cannot reach; ``sample`` is the index within an ``inverse_many`` batch."""
+
+    def __init__(self, message: str, location: Location | None = None,
+                 notes: tuple[str, ...] = (), sample: int | None = None) -> None:
+        super().__init__(message, location, notes)
+        self.sample = sample
+
+
+@runtime_checkable
+class Kinematics(Protocol):
+    """What the interpreter needs from a kinematics, whatever it is implemented in."""
+
+    name: str
+
+    def kin_type(self) -> int: ...
+    def version(self) -> str: ...
+    def inverse(self, pos: Pose, tool_length: float = 0.0) -> Pose: ...
+    def forward(self, joints: Pose, tool_length: float = 0.0) -> Pose: ...
+    def control(self, control_id: int, data: list[float]) -> int: ...
+    def inverse_many(self, pos: np.ndarray, tool_length: float = 0.0) -> np.ndarray: ...
+    def user_output(self) -> Sequence[float]: ...
+
+
+def setting_float(settings: Mapping[str, str], key: str, default: float) -> float:
+    """Read a number from the raw ``[KINEMATICS]`` section; an empty or missing value gives ``default``."""
+    raw = settings.get(key.lower(), "").strip()
+    if not raw:
+        return default
+    try:
+        return float(raw)
+    except ValueError:
+        raise ConfigError(f"[KINEMATICS] {key} = {raw!r} is not a number") from None
+
+
+def as_pose(values: Sequence[float]) -> Pose:
+    """Six plain floats (numpy scalars would leak into JSON and user variables otherwise)."""
+    x, y, z, a, b, c = (float(v) for v in values)
+    return (x, y, z, a, b, c)
+
+
+def as_rows(pos: np.ndarray) -> np.ndarray:
+    """Validate an (N, 6) batch and return it as a float array."""
+    rows = np.asarray(pos, dtype=float)
+    if rows.ndim != 2 or rows.shape[1] != 6:
+        raise ValueError(f"expected an (N, 6) array of poses, got shape {rows.shape}")
+    return rows
+
+
+class KinematicsPlugin:
+    """Base class of Python kinematics: ON/OFF bookkeeping, user output via control 5, batch fallback.
+
+    Subclasses set ``name``, ``KIN_TYPE`` and ``VERSION`` and implement ``inverse``/``forward``;
+    ``control`` handles the standard IDs and returns -1 for the rest, so an override handles
+    its own IDs and delegates to ``super().control``.
+    """
+
+    name: str = "plugin"
+    KIN_TYPE: ClassVar[int] = abi.KinType.CUSTOM_1
+    VERSION: ClassVar[str] = "0"
+
+    def __init__(self, settings: Mapping[str, str]) -> None:
+        self.settings = settings
+        self.enabled = False
+
+    def setting(self, key: str, default: float) -> float:
+        """A number from ``[KINEMATICS]`` (key as spelled in cnc.ini, matched case-insensitively)."""
+        return setting_float(self.settings, key, default)
+
+    def kin_type(self) -> int:
+        return int(self.KIN_TYPE)
+
+    def version(self) -> str:
+        return self.VERSION
+
+    def inverse(self, pos: Pose, tool_length: float = 0.0) -> Pose:
+        raise NotImplementedError
+
+    def forward(self, joints: Pose, tool_length: float = 0.0) -> Pose:
+        raise NotImplementedError
+
+    def control(self, control_id: int, data: list[float]) -> int:
+        if control_id in (abi.OPEN, abi.CLOSE):
+            return 0
+        if control_id in (abi.ON, abi.OFF):
+            self.enabled = control_id == abi.ON
+            return 0
+        if control_id == abi.USER_OUTPUT:
+            values = list(self.user_output())[:abi.USER_OUTPUT_LEN]
+            data[:abi.USER_OUTPUT_LEN] = values + [0.0] * (abi.USER_OUTPUT_LEN - len(values))
+            return 0
+        return -1
+
+    def inverse_many(self, pos: np.ndarray, tool_length: float = 0.0) -> np.ndarray:
+        """Fallback for plug-ins without a vectorised inverse: one scalar call per sample."""
+        rows = as_rows(pos)
+        out = np.empty_like(rows)
+        for i, row in enumerate(rows):
+            try:
+                out[i] = self.inverse(as_pose(row), tool_length)
+            except KinematicsDomainError as err:
+                raise KinematicsDomainError(err.message, err.location, err.notes, sample=i) from None
+        return out
+
+    def user_output(self) -> Sequence[float]:
+        return ()
+
+
+class VectorisedKinematics(KinematicsPlugin):
+    """A plug-in whose maths is written once on (N, 6) arrays; the scalar calls use a one-row batch."""
+
+    def inverse_rows(self, pos: np.ndarray, tool_length: float) -> np.ndarray:
+        raise NotImplementedError
+
+    def forward_rows(self, joints: np.ndarray, tool_length: float) -> np.ndarray:
+        raise NotImplementedError
+
+    def inverse(self, pos: Pose, tool_length: float = 0.0) -> Pose:
+        try:
+            return as_pose(self.inverse_rows(np.array([pos], dtype=float), tool_length)[0])
+        except KinematicsDomainError as err:
+            raise KinematicsDomainError(err.message, err.location, err.notes) from None
+
+    def forward(self, joints: Pose, tool_length: float = 0.0) -> Pose:
+        return as_pose(self.forward_rows(np.array([joints], dtype=float), tool_length)[0])
+
+    def inverse_many(self, pos: np.ndarray, tool_length: float = 0.0) -> np.ndarray:
+        return self.inverse_rows(as_rows(pos), tool_length)
+
+    def forward_many(self, joints: np.ndarray, tool_length: float = 0.0) -> np.ndarray:
+        """Batch forward kinematics (handy for plotting joint logs)."""
+        return self.forward_rows(as_rows(joints), tool_length)

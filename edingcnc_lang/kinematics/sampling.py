@@ -1,0 +1,93 @@
+"""Interpolation of one move at the controller's interpolation period.
+
+The interpreter feeds these samples to ``inverse_many``: a straight Cartesian line is a curve in
+joint space, so the kinematics must see the path every ``dt`` seconds, not only its ends.
+
+Conventions shared by both functions: the move runs at constant ``feed`` (mm/s along the XYZ
+path; degrees/s when only a, b, c move); samples are at t = dt, 2 dt, ... after the move start and
+the last sample is the end point exactly (so the start point, which is the previous move's end,
+is not repeated); a move of zero length gives just its end point at t = 0.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+# Sample times closer than this fraction of dt to the end are merged into the end point.
+_END_SLACK = 1e-9
+
+
+def _times(length: float, feed: float, dt: float) -> np.ndarray:
+    """Sample times of a move of ``length`` at ``feed``: every dt, ending exactly at length/feed."""
+    if feed <= 0.0 or dt <= 0.0:
+        raise ValueError(f"feed and dt must be positive (feed={feed}, dt={dt})")
+    if length <= 0.0:
+        return np.zeros(1)
+    duration = length / feed
+    count = max(1, math.ceil(duration / dt - _END_SLACK))
+    t = np.arange(1, count + 1, dtype=float) * dt
+    t[-1] = duration
+    return t
+
+
+def _path_length(linear: float, rotary: np.ndarray) -> float:
+    """Feed applies to the XYZ path; a rotary-only move is timed in degrees."""
+    return linear if linear > 0.0 else float(np.linalg.norm(rotary))
+
+
+def sample_line(start: Sequence[float], end: Sequence[float], feed: float, dt: float
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """Samples of a straight move in all six axes: (t of shape (N,), poses of shape (N, 6))."""
+    p0, p1 = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    delta = p1 - p0
+    t = _times(_path_length(float(np.linalg.norm(delta[:3])), delta[3:]), feed, dt)
+    fraction = t / t[-1] if t[-1] > 0.0 else np.ones(1)
+    pts = p0 + fraction[:, None] * delta
+    pts[-1] = p1
+    return t, pts
+
+
+def arc_sweep(start_angle: float, end_angle: float, turns: int) -> float:
+    """Signed angle swept (radians): ``turns`` > 0 counter-clockwise, < 0 clockwise.
+
+    |turns| = 1 goes the short way round in the requested direction (a full circle when start
+    and end coincide); each further turn adds one full revolution.
+    """
+    if turns == 0:
+        raise ValueError("turns must be non-zero: its sign is the direction of the arc")
+    direction = 1.0 if turns > 0 else -1.0
+    sweep = (direction * (end_angle - start_angle)) % (2.0 * math.pi)
+    if sweep <= 1e-12:
+        sweep = 2.0 * math.pi
+    return direction * (sweep + 2.0 * math.pi * (abs(turns) - 1))
+
+
+def sample_arc(start: Sequence[float], end: Sequence[float], center: Sequence[float], normal: int,
+               turns: int, feed: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """Samples of an arc or helix about ``center`` in the plane normal to axis ``normal``.
+
+    ``normal`` is 2 for G17 (XY), 1 for G18 (ZX) and 0 for G19 (YZ); the in-plane axes are
+    (normal+1, normal+2) mod 3, so positive ``turns`` is counter-clockwise seen from the positive
+    normal axis.  The radius blends linearly from the start to the end radius (a slightly
+    inconsistent end point still ends exactly); the normal axis and a, b, c move linearly.
+    """
+    p0, p1 = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    u, v = (normal + 1) % 3, (normal + 2) % 3
+    cu, cv = float(center[u]), float(center[v])
+    r0 = math.hypot(p0[u] - cu, p0[v] - cv)
+    r1 = math.hypot(p1[u] - cu, p1[v] - cv)
+    a0 = math.atan2(p0[v] - cv, p0[u] - cu)
+    sweep = arc_sweep(a0, math.atan2(p1[v] - cv, p1[u] - cu), turns)
+    delta = p1 - p0
+    linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, delta[normal])
+    t = _times(_path_length(linear, delta[3:]), feed, dt)
+    s = t / t[-1] if t[-1] > 0.0 else np.ones(1)
+    angle = a0 + s * sweep
+    radius = r0 + s * (r1 - r0)
+    pts = p0 + s[:, None] * delta
+    pts[:, u] = cu + radius * np.cos(angle)
+    pts[:, v] = cv + radius * np.sin(angle)
+    pts[-1] = p1
+    return t, pts
