@@ -496,7 +496,7 @@ def _update_variables(text: str, values: Mapping[int, float]) -> str:
     classes = _classify(lines)
     written: set[int] = set()
     for i, (section, entry) in enumerate(classes):
-        match = _VARIABLE_KEY.fullmatch(entry.key) if section == "variables" and entry else None
+        match = _VARIABLE_KEY.fullmatch(entry.key) if entry and section == "variables" else None
         if entry and match and int(match.group(1)) in values:
             number = int(match.group(1))
             body, end = lines[i]
