@@ -60,9 +60,20 @@ def _find_file(name_or_path: str, search_dirs: Sequence[Path]) -> Path | None:
         bases += [Path(d) / path for d in search_dirs]
     for base in bases:
         for candidate in _file_candidates(base):
-            if candidate.is_file():
-                return candidate
+            found = _existing(candidate)
+            if found is not None:
+                return found
     return None
+
+
+def _existing(candidate: Path) -> Path | None:
+    """The file itself, else one in its folder whose name differs only in case (names come from Windows)."""
+    if candidate.is_file():
+        return candidate
+    if not candidate.parent.is_dir():
+        return None
+    wanted = candidate.name.lower()
+    return next((f for f in sorted(candidate.parent.iterdir()) if f.name.lower() == wanted and f.is_file()), None)
 
 
 def _import_file(path: Path) -> ModuleType:
