@@ -1,0 +1,87 @@
+"""``ecnc kins ...`` through click's CliRunner."""
+from __future__ import annotations
+
+import json
+import math
+import shutil
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from edingcnc_lang.cli.kins_cmd import kins
+
+DELTA_INI = "[KINEMATICS]\r\nkinematicsDLLName = deltakins.dll\r\nlinDeltaRadius = 100.000000\r\nlinDeltaArmLength = 200.0\r\n"
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(kins, list(args))
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception  # no traceback
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_list() -> None:
+    code, out, _ = run("list")
+    assert code == 0
+    assert "deltakins\t4\t" in out and "trivial\t1\tTRIVIAL 1.0" in out
+    listed = json.loads(run("list", "--json")[1])
+    assert {"name": "corexy", "type": 5, "version": "COREXY 1.0"} in listed
+
+
+def test_inverse_accepts_negative_numbers_and_prints_exact_json() -> None:
+    code, out, _ = run("inverse", "corexy", "-5", "0.1", "-2.5e-3")
+    assert code == 0
+    assert json.loads(out) == {"jx": -4.9, "jy": -5.1, "jz": -0.0025, "ja": 0.0, "jb": 0.0, "jc": 0.0}
+    assert '"jx": -4.9,' in out                                       # repr, not rounded
+
+
+def test_rotatekins_is_switched_on_at_the_origin() -> None:
+    _, out, _ = run("inverse", "rotatekins", "10", "0", "0", "0", "0", "90")
+    joints = json.loads(out)
+    assert joints["jx"] == pytest.approx(0.0, abs=1e-12) and joints["jy"] == pytest.approx(10.0)
+
+
+def test_forward_with_ini(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_bytes(DELTA_INI.encode())
+    home = math.sqrt(200.0**2 - 100.0**2) + 50.0
+    code, out, _ = run("forward", "deltakins", "--ini", str(ini), str(home), str(home), str(home), "-1")
+    assert code == 0
+    pos = json.loads(out)
+    assert (pos["x"], pos["y"], pos["z"], pos["a"]) == pytest.approx((0.0, 0.0, 50.0, -1.0), abs=1e-9)
+
+
+def test_unreachable_exits_70() -> None:
+    code, out, err = run("inverse", "deltakins", "0", "-400", "0")
+    assert (code, out) == (70, "")
+    assert err.startswith("error: X0 Y-400 Z0 is out of reach of the delta robot")
+    assert "Traceback" not in err
+
+
+def test_unknown_plugin_exits_70() -> None:
+    code, _, err = run("inverse", "nosuchkins.dll", "1", "2", "3")
+    assert code == 70 and "error: kinematics plug-in 'nosuchkins.dll' not found" in err
+
+
+@pytest.mark.parametrize("args", [("inverse", "trivial", "1", "2"), ("forward", "trivial", *"1234567"),
+                                  ("inverse", "trivial", "1", "x", "3"), ("inverse",), ("frobnicate",)])
+def test_usage_errors_exit_2(args: tuple[str, ...]) -> None:
+    assert run(*args)[0] == 2
+
+
+def test_build_and_use(tmp_path: Path) -> None:
+    if shutil.which("cc") is None:
+        pytest.skip("no C compiler (cc) on PATH")
+    source = tmp_path / "rotatekins.c"
+    source.write_text((Path(__file__).resolve().parents[2] / "kins" / "c" / "rotatekins.c").read_text())
+    code, out, _ = run("build", str(source), "-o", str(tmp_path / "rk.so"))
+    assert code == 0 and out.strip() == str(tmp_path / "rk.so")
+    _, out, _ = run("inverse", str(tmp_path / "rk.so"), "10", "0", "0", "0", "0", "-90")
+    assert json.loads(out)["jy"] == pytest.approx(-10.0)
+
+
+def test_build_failure_exits_70(tmp_path: Path) -> None:
+    source = tmp_path / "bad.c"
+    source.write_text("this is not C")
+    code, _, err = run("build", str(source), "--cc", "no-such-cc")
+    assert code == 70 and "cannot run the C compiler 'no-such-cc'" in err
