@@ -1,8 +1,9 @@
 """Where the shipped plug-ins (the repo's ``kins/`` folder) live.
 
-Installed, ``kins/`` is the package ``edingcnc_lang.kins``; in a source checkout run with
-PYTHONPATH at the repo root it is the top-level package ``kins``.  Everything that needs it
-goes through this module so that the difference is handled once.
+Installed, ``kins/`` is the package ``edingcnc_lang.kins``; a source checkout reaches it through
+the symlink ``edingcnc_lang/kins``, and where git could not create that link (Windows without
+symlink support) through the top-level package ``kins`` with PYTHONPATH at the repo root.
+Everything that needs it goes through this module so that the difference is handled once.
 """
 from __future__ import annotations
 

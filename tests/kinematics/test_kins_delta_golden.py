@@ -16,35 +16,35 @@ DeltaKins = import_shipped("deltakins").DeltaKins
 
 
 @pytest.fixture(scope="module")
-def golden() -> dict[str, Any]:
+def cases() -> dict[str, Any]:
     if not GOLDEN.exists():
         pytest.skip(f"{GOLDEN} has not been recorded from LinuxCNC yet")
     return json.loads(GOLDEN.read_text())
 
 
-def kins_for(golden: dict[str, Any]) -> Any:
-    return DeltaKins({"lindeltaradius": repr(golden["R"]), "lindeltaarmlength": repr(golden["L"])})
+def kins_for(cases: dict[str, Any]) -> Any:
+    return DeltaKins({"lindeltaradius": repr(cases["R"]), "lindeltaarmlength": repr(cases["L"])})
 
 
-def test_inverse_matches_lineardeltakins(golden: dict[str, Any]) -> None:
-    cases = golden["cases"]
-    assert len(cases) >= 10
-    pos = np.array([[*c["pos"], 0.0, 0.0, 0.0] for c in cases])
-    joints = kins_for(golden).inverse_many(pos)
-    np.testing.assert_allclose(joints[:, :3], [c["joints"] for c in cases], rtol=0, atol=1e-9)
+def test_inverse_matches_lineardeltakins(cases: dict[str, Any]) -> None:
+    recorded = cases["cases"]
+    assert len(recorded) >= 10
+    pos = np.array([[*c["pos"], 0.0, 0.0, 0.0] for c in recorded])
+    joints = kins_for(cases).inverse_many(pos)
+    np.testing.assert_allclose(joints[:, :3], [c["joints"] for c in recorded], rtol=0, atol=1e-9)
 
 
-def test_forward_matches_lineardeltakins(golden: dict[str, Any]) -> None:
-    cases = golden.get("forward", [])
-    if not cases:
+def test_forward_matches_lineardeltakins(cases: dict[str, Any]) -> None:
+    recorded = cases.get("forward", [])
+    if not recorded:
         pytest.skip("the golden file has no forward cases")
-    joints = np.array([[*c["joints"], 0.0, 0.0, 0.0] for c in cases])
-    pos = kins_for(golden).forward_many(joints)
-    np.testing.assert_allclose(pos[:, :3], [c["pos"] for c in cases], rtol=0, atol=1e-9)
+    joints = np.array([[*c["joints"], 0.0, 0.0, 0.0] for c in recorded])
+    pos = kins_for(cases).forward_many(joints)
+    np.testing.assert_allclose(pos[:, :3], [c["pos"] for c in recorded], rtol=0, atol=1e-9)
 
 
-def test_unreachable_like_lineardeltakins(golden: dict[str, Any]) -> None:
-    kins = kins_for(golden)
-    for x, y, z in golden.get("unreachable", []):
+def test_unreachable_like_lineardeltakins(cases: dict[str, Any]) -> None:
+    kins = kins_for(cases)
+    for x, y, z in cases.get("unreachable", []):
         with pytest.raises(KinematicsDomainError, match="out of reach"):
             kins.inverse((x, y, z, 0.0, 0.0, 0.0))
