@@ -360,6 +360,11 @@ def parse_line(text: str, path: str = "<string>", line: int = 1) -> _LineResult:
     """Parse one source line; raises _LineError on a syntax error."""
     if _FAST_LINE.match(text):
         return _fast_block(text, path, line)
+    return parse_line_grammar(text, path, line)
+
+
+def parse_line_grammar(text: str, path: str = "<string>", line: int = 1) -> _LineResult:
+    """Parse one line with the Lark grammar only (the reference for the fast path)."""
     try:
         tree = _lark().parse(text)
     except UnexpectedInput as exc:
@@ -469,7 +474,9 @@ class StatementReader:
         want = _OPENER_OF[close.kind]
         line, col = close.span.line, close.span.col
         if not any(f.opener.kind == want for f in stack):
-            self._error(_ORPHAN_CODE[close.kind], f"{close.kind} without {want}", line, col, text)
+            hint = (f" ({stack[-1].describe()} is still open: close it with "
+                    f"{_END_OF[stack[-1].opener.kind]})") if stack else ""
+            self._error(_ORPHAN_CODE[close.kind], f"{close.kind} without {want}{hint}", line, col, text)
             return None
         while stack[-1].opener.kind != want:
             inner = stack.pop()
@@ -525,5 +532,5 @@ def parse_file(path: str | os.PathLike[str]) -> n.Program:
 def _collect(reader: StatementReader) -> n.Program:
     body = tuple(reader)
     if reader.diagnostics:
-        raise SyntaxErrors(reader.diagnostics)
+        raise SyntaxErrors(sorted(reader.diagnostics, key=lambda d: (d.line, d.col)))
     return n.Program(reader.path, body, reader.unit)

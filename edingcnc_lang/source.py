@@ -37,7 +37,11 @@ def iter_text_lines(text: str) -> Iterator[str]:
     """Yield the lines of an in-memory string (BOM stripped)."""
     if text.startswith("\ufeff"):
         text = text[1:]
-    yield from text.splitlines()
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    for line in lines:  # only LF/CRLF end a line, as in files (str.splitlines would split on \f)
+        yield line.rstrip("\r")
 
 
 def read_text(path: str | os.PathLike[str]) -> str:

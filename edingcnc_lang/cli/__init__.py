@@ -1,0 +1,16 @@
+"""The ``ecnc`` command line: one click group, one module per subcommand."""
+from __future__ import annotations
+
+import click
+
+from .. import __version__
+from .parse_cmd import parse
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="ecnc")
+def main() -> None:
+    """Parse, run, lint and simulate EdingCNC G-code and macro files."""
+
+
+main.add_command(parse)

@@ -1,0 +1,29 @@
+"""Shared pytest options: ``--regen-goldens`` rewrites golden files instead of comparing."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption("--regen-goldens", action="store_true", default=False,
+                     help="rewrite golden files from the current output")
+
+
+@pytest.fixture
+def golden(request: pytest.FixtureRequest):
+    """Compare text with a golden file, or rewrite it under --regen-goldens."""
+    regen = request.config.getoption("--regen-goldens")
+
+    def check(path: Path, actual: str) -> None:
+        if regen or not path.exists():
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(actual, encoding="utf-8")
+            if not regen:
+                pytest.fail(f"golden file {path} did not exist; written now, review and commit it")
+        assert actual == path.read_text(encoding="utf-8"), f"differs from {path} (rerun with --regen-goldens if intended)"
+
+    return check

@@ -1,0 +1,2 @@
+@unit cm
+G0 X1

@@ -1,0 +1,2 @@
+While [1]
+EndIf

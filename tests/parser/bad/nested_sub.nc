@@ -1,0 +1,3 @@
+Sub a
+Sub b
+EndSub

@@ -1,0 +1,4 @@
+If [1]
+Else
+Else
+EndIf

@@ -1,0 +1,1 @@
+G0 X1 (comment

@@ -1,0 +1,3 @@
+;* @unit inch
+msg "Grüße"
+G0 X1

@@ -1,0 +1,3 @@
+﻿;@unit mm
+msg "Grüße"
+G0 X1
