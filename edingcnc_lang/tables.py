@@ -1,0 +1,136 @@
+"""The dialect's tables as data: modal groups, order of execution, parameter ranges.
+
+G and M numbers are stored as integer tenths (G38.2 -> 382) so they compare
+exactly.  The interpreter and the linter both read these tables; neither keeps
+its own copy.
+"""
+from __future__ import annotations
+
+from types import MappingProxyType
+from typing import Mapping
+
+
+def code_key(value: float) -> int:
+    """A G/M number as integer tenths: 38.2 -> 382, 1 -> 10."""
+    return int(round(value * 10))
+
+
+def code_name(letter: str, key: int) -> str:
+    """Integer tenths back to the familiar spelling: ('G', 382) -> 'G38.2'."""
+    whole, tenth = divmod(key, 10)
+    return f"{letter}{whole}" + (f".{tenth}" if tenth else "")
+
+
+def _groups(spec: dict[str, tuple[float, ...]]) -> Mapping[int, str]:
+    return MappingProxyType({code_key(c): group for group, codes in spec.items() for c in codes})
+
+
+G_GROUPS: Mapping[int, str] = _groups({
+    "motion": (0, 1, 2, 3, 33, 33.1, 38.2, 73, 74, 76, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89),
+    "plane": (17, 18, 19),
+    "distance": (90, 91),
+    "feed_mode": (93, 94, 95),
+    "units": (20, 21, 70, 71),
+    "cutter_comp": (40, 41, 42, 41.1, 42.1),
+    "length_offset": (43, 43.1, 49),
+    "return_mode": (98, 99),
+    "coord_system": (54, 55, 56, 57, 58, 59, 59.1, 59.2, 59.3),
+    "path_control": (61, 61.1, 64),
+    "rotation": (68, 69),
+    "scaling": (50, 51),
+    "non_modal": (4, 10, 28, 30, 53, 92, 92.1, 92.2, 92.3),
+})
+
+M_GROUPS: Mapping[int, str] = _groups({
+    "stopping": (0, 1, 2, 30, 60),
+    "tool_change": (6,),
+    "spindle": (3, 4, 5),
+    "coolant": (7, 8, 9),
+    "overrides": (48, 49, 50, 51),
+    "io": (54, 55, 56, 57),
+    "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97),
+})
+
+# Modal groups whose current member is reported (in this order) as the modal state.
+REPORTED_G_GROUPS = ("motion", "plane", "units", "cutter_comp", "length_offset", "coord_system",
+                     "path_control", "distance", "feed_mode", "return_mode")
+
+# G codes that take the axis words of their line (so a motion on the same line may not).
+AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92, 53))
+
+MAX_M_WORDS = 4
+LETTER_ARGS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"  # M-sub arguments: A=#1 .. Z=#26
+ABSENT_ARGUMENT = -1e10
+
+# --------------------------------------------------------------------------- parameters
+
+FIRST_PARAM, LAST_PARAM = 1, 5999
+ARG_PARAMS = range(1, 27)
+VOLATILE_PARAMS = range(27, 4000)
+PERSISTENT_PARAMS = range(4000, 5000)
+
+READ_ONLY_PARAMS: tuple[range, ...] = (
+    range(5001, 5007), range(5051, 5077), range(5081, 5087), range(5101, 5127),
+    range(5150, 5153), range(5380, 5381), range(5397, 5398),
+)
+
+# Named system parameters (dialect reference, section 10).
+POS_WORK = 5001            # ..5006 work position X..C
+TOOL_CURRENT = 5008
+TOOL_RADIUS = 5009
+TOOL_Z_OFFSET = 5010
+TOOL_NEW = 5011
+TOOL_G43_OFFSET = 5013
+TOOL_CHANGED = 5015
+PROBE_MACHINE = 5051       # ..5056
+PROBE_WORK = 5061          # ..5066
+PROBE_TRIPPED = 5067
+PROBE_INPUT = 5068
+SPINDLE_SPEED = 5070
+POS_MACHINE = 5071         # ..5076
+PROBE_JOINTS = 5081        # ..5086
+SOFT_LIMIT_NEG = 5101      # ..5106
+SOFT_LIMIT_POS = 5111      # ..5116
+HOME_POSITION = 5121       # ..5126
+KIN_TYPE = 5150
+ZHC_ACTIVE = 5151
+SPINDLE_ON = 5152
+G28_HOME = 5161            # ..5166
+G30_HOME = 5181            # ..5186
+G68_ACTIVE = 5190          # 5191..5193 pivot, 5194..5196 angles
+G92_OFFSET = 5211          # ..5216
+COORD_SYSTEM = 5220        # 1..9
+COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + i
+COORD_STRIDE = 20
+SIMULATION = 5380
+RENDERING = 5397
+DIALOG_RESULT = 5398
+IO_RESULT = 5399
+TOOL_LENGTH = 5400         # + tool number (1..99)
+TOOL_DIAMETER = 5500
+TOOL_X_OFFSET = 5600
+TOOL_ORIENTATION = 5700
+TOOL_X_WEAR = 5800
+TOOL_Z_WEAR = 5900
+MAX_TOOL = 99
+
+
+def is_read_only(index: int) -> bool:
+    return any(index in r for r in READ_ONLY_PARAMS)
+
+
+def coord_offset_param(system: int, axis: int) -> int:
+    """Parameter holding axis ``axis`` (0 = X) of coordinate system ``system`` (1 = G54)."""
+    return COORD_OFFSETS + COORD_STRIDE * (system - 1) + axis
+
+
+COORD_SYSTEM_CODES = tuple(code_key(c) for c in (54, 55, 56, 57, 58, 59, 59.1, 59.2, 59.3))
+
+# --------------------------------------------------------------------------- order of execution
+
+# The steps of one line, in the order the controller executes them (dialect reference, section 9).
+ORDER_OF_EXECUTION = (
+    "message", "feed_mode", "feed", "spindle_speed", "tool_select", "tool_change", "spindle",
+    "coolant", "overrides", "io", "dwell", "plane", "units", "cutter_comp", "length_offset",
+    "coord_system", "path_control", "distance", "return_mode", "non_modal", "motion", "stopping",
+)
