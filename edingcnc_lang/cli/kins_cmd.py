@@ -7,36 +7,21 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Callable, Mapping, Sequence
-from functools import wraps
+from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any
 
 import click
 
+from edingcnc_lang.cli.common import reports_errors
 from edingcnc_lang.config import read_ini
-from edingcnc_lang.errors import EcncError, PluginError
+from edingcnc_lang.errors import PluginError
 from edingcnc_lang.kinematics import abi
-from edingcnc_lang.kinematics.build import build_plugin
 from edingcnc_lang.kinematics.base import AXES, JOINTS, Kinematics, Pose
+from edingcnc_lang.kinematics.build import build_plugin
 from edingcnc_lang.kinematics.loader import available_kinematics, load_kinematics
 
 # Let "-5" through as a number instead of an unknown option.
 NUMBERS = {"ignore_unknown_options": True}
-
-
-def _reports_errors(command: Callable[..., None]) -> Callable[..., None]:
-    """Print an EcncError as ``error: ...`` on stderr and exit with its code (no traceback)."""
-
-    @wraps(command)
-    def wrapper(*args: Any, **kwargs: Any) -> None:
-        try:
-            command(*args, **kwargs)
-        except EcncError as err:
-            click.echo(err.format(), err=True)
-            raise SystemExit(err.exit_code) from None
-
-    return wrapper
 
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
@@ -75,7 +60,7 @@ def kins() -> None:
 
 @kins.command("list")
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON array instead of a table.")
-@_reports_errors
+@reports_errors
 def list_cmd(as_json: bool) -> None:
     """Registered kinematics: name, type and version (tab separated)."""
     rows = available_kinematics()
@@ -94,7 +79,7 @@ _INI = click.option("--ini", type=click.Path(exists=True, dir_okay=False, path_t
 @click.argument("name")
 @_INI
 @click.argument("coords", nargs=-1, type=float, metavar="X Y Z [A B C]")
-@_reports_errors
+@reports_errors
 def inverse_cmd(name: str, ini: Path | None, coords: tuple[float, ...]) -> None:
     """Joints for a Cartesian position (missing A B C are 0)."""
     pos = _pose(coords, AXES)
@@ -105,7 +90,7 @@ def inverse_cmd(name: str, ini: Path | None, coords: tuple[float, ...]) -> None:
 @click.argument("name")
 @_INI
 @click.argument("joints", nargs=-1, type=float, metavar="JX JY JZ [JA JB JC]")
-@_reports_errors
+@reports_errors
 def forward_cmd(name: str, ini: Path | None, joints: tuple[float, ...]) -> None:
     """Cartesian position for joint positions (missing JA JB JC are 0)."""
     values = _pose(joints, JOINTS)
@@ -118,7 +103,7 @@ def forward_cmd(name: str, ini: Path | None, joints: tuple[float, ...]) -> None:
               help="Library to write (default: SOURCE with .so).")
 @click.option("--cc", default=lambda: os.environ.get("CC", "cc"), show_default="$CC or cc",
               help="C compiler to run.")
-@_reports_errors
+@reports_errors
 def build_cmd(source: Path, output: Path | None, cc: str) -> None:
     """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
     click.echo(str(build_plugin(source, output, cc)))
