@@ -123,6 +123,7 @@ def test_available_kinematics_lists_builtins() -> None:
 
 def test_shipped_plugins_without_the_package_link(monkeypatch: pytest.MonkeyPatch) -> None:
     """Where the edingcnc_lang/kins symlink is missing, the repo's top-level ``kins`` package is used."""
+    fake_entry_points(monkeypatch)                                  # a checkout without installed metadata
     monkeypatch.syspath_prepend(str(REPO))
     for name in [m for m in sys.modules if m == "edingcnc_lang.kins" or m.startswith("edingcnc_lang.kins.")]:
         monkeypatch.delitem(sys.modules, name)
