@@ -75,7 +75,7 @@ class KinematicsPlugin:
     its own IDs and delegates to ``super().control``.
     """
 
-    name: str = "plugin"
+    name: str = ""          # the loader fills in the plug-in name when a subclass leaves it empty
     KIN_TYPE: ClassVar[int] = abi.KinType.CUSTOM_1
     VERSION: ClassVar[str] = "0"
 

@@ -90,7 +90,10 @@ def test_py_file_by_path_and_in_search_dir(tmp_path: Path) -> None:
 
 def test_kinematics_attribute_picks_the_class(tmp_path: Path) -> None:
     (tmp_path / "two.py").write_text(PLUGIN_PY + "\nclass Other(Doubler):\n    pass\n\nKINEMATICS = Other\n")
-    assert type(load_kinematics(str(tmp_path / "two.py"), {})).__name__ == "Other"
+    kins = load_kinematics(str(tmp_path / "two.py"), {})
+    assert type(kins).__name__ == "Other" and kins.name == "doubler"
+    (tmp_path / "anon.py").write_text(PLUGIN_PY.replace('name = "doubler"', "pass"))
+    assert load_kinematics(str(tmp_path / "anon.py"), {}).name == str(tmp_path / "anon.py")
 
 
 @pytest.mark.parametrize(("source", "reason"), [
