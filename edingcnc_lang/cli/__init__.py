@@ -4,6 +4,7 @@ from __future__ import annotations
 import click
 
 from .. import __version__
+from .kins_cmd import kins
 from .parse_cmd import parse
 
 
@@ -14,3 +15,4 @@ def main() -> None:
 
 
 main.add_command(parse)
+main.add_command(kins)
