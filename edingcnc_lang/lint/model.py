@@ -1,0 +1,51 @@
+"""A parsed source file as the linter sees it: its lines, statements and parser findings."""
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+
+from .. import nodes as n
+from ..diagnostics import Diagnostic
+from ..errors import EXIT_USAGE, EcncError, Location
+from ..parser import StatementReader
+from ..source import iter_file_lines
+
+
+class UnreadableFile(EcncError):
+    """A path given to lint that cannot be read (a usage error, like a missing file)."""
+
+    exit_code = EXIT_USAGE
+
+
+@dataclass(frozen=True, eq=False)  # one object per file: compared and hashed by identity
+class SourceFile:
+    path: str
+    lines: tuple[str, ...]
+    body: tuple[n.Stmt, ...]
+    unit: str | None
+    parse_errors: tuple[Diagnostic, ...]
+    is_macro: bool  # a macro library (macro.cnc, user_macro.cnc, --macro ...), not a job
+    subs: Mapping[str, n.Sub]  # first definition of each sub, by lower-case name
+
+    def line(self, number: int) -> str:
+        """Source line ``number`` (1-based), or "" past the end."""
+        return self.lines[number - 1] if 0 < number <= len(self.lines) else ""
+
+
+def load_source(path: str | os.PathLike[str], is_macro: bool) -> SourceFile:
+    """Read and parse a file; syntax errors become findings, never exceptions."""
+    shown = os.fspath(path)
+    try:
+        lines = tuple(iter_file_lines(path))
+    except OSError as exc:
+        raise UnreadableFile(f"cannot read: {exc.strerror or exc}", Location(shown)) from None
+    reader = StatementReader(lines, shown)
+    body = tuple(reader)
+    subs: dict[str, n.Sub] = {}
+    for stmt in body:
+        if isinstance(stmt, n.Sub):
+            subs.setdefault(stmt.name.lower(), stmt)
+    return SourceFile(shown, lines, body, reader.unit, tuple(reader.diagnostics), is_macro,
+                      MappingProxyType(subs))

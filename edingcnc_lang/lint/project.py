@@ -1,0 +1,158 @@
+"""Facts about the whole linted set (jobs plus their macro files) that single-file rules need.
+
+Which sub a call reaches, which subs only ever run under the simulation
+guard, which subs may overwrite the M-code arguments #1..#26, and which
+parameters are written anywhere: each is computed once, on first use.
+"""
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+
+from .. import nodes as n
+from ..tables import ARG_PARAMS, PROBE_TRIPPED, code_key
+from .model import SourceFile
+from .names import TOOL_CHANGE_SUB, is_entry_point, m_sub_number
+from .walk import Scope, assigned, dialog_fields, literal_index, reads, walk, word_codes
+
+SubKey = tuple[str, str]  # (path, lower-case name)
+TOOL_CHANGE = code_key(6)
+# Commands that store a result in the variable whose number they are given.
+_WRITING_COMMANDS = frozenset({"gettoolinfo", "getjobdistance"})
+
+
+@dataclass(frozen=True)
+class Call:
+    """A statement that runs a sub: GoSub, an M code with a ``Sub mNNN``, or M6."""
+
+    caller: SourceFile
+    scope: Scope
+    stmt: n.Stmt
+    callee: SourceFile
+    sub: n.Sub
+
+    @property
+    def key(self) -> SubKey:
+        return sub_key(self.callee, self.sub)
+
+
+def sub_key(file: SourceFile, sub: n.Sub) -> SubKey:
+    return file.path, sub.name.lower()
+
+
+class Project:
+    """The files being linted and the macro files each one can call into."""
+
+    def __init__(self, files: Sequence[SourceFile], macros: Mapping[str, Sequence[SourceFile]],
+                 extra_written: frozenset[int] = frozenset()) -> None:
+        self.files = tuple(files)
+        self._macros = macros
+        self._extra_written = extra_written
+        self._walked = {f.path: tuple(walk(f.body)) for f in self.files}
+
+    def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
+        return self._walked[file.path]
+
+    # ----------------------------------------------------------------- calls
+    def resolve(self, file: SourceFile, name: str) -> tuple[SourceFile, n.Sub] | None:
+        """The sub ``name`` as the controller finds it: in the file itself, then its macro files."""
+        for candidate in (file, *self._macros.get(file.path, ())):
+            sub = candidate.subs.get(name.lower())
+            if sub is not None:
+                return candidate, sub
+        return None
+
+    def callees(self, file: SourceFile, stmt: n.Stmt, scope: Scope) -> Iterator[tuple[SourceFile, n.Sub]]:
+        """The subs a statement runs (inside ``Sub m3`` an M3 is the built-in, not a call)."""
+        if isinstance(stmt, n.GoSub):
+            found = self.resolve(file, stmt.name)
+            if found:
+                yield found
+        elif isinstance(stmt, n.Block):
+            own = m_sub_number(scope.sub.name) if scope.sub else None
+            for key in word_codes(stmt, "M"):
+                whole, tenth = divmod(key, 10)
+                name = TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
+                if tenth or whole == own:
+                    continue
+                found = self.resolve(file, name)
+                if found:
+                    yield found
+
+    @cached_property
+    def calls(self) -> tuple[Call, ...]:
+        return tuple(Call(file, scope, stmt, *target)
+                     for file in self.files for stmt, scope in self.walked(file)
+                     for target in self.callees(file, stmt, scope))
+
+    @cached_property
+    def called(self) -> frozenset[SubKey]:
+        return frozenset(call.key for call in self.calls)
+
+    @cached_property
+    def guarded_subs(self) -> frozenset[SubKey]:
+        """Subs that only ever run under the simulation guard: called, and only from guarded code.
+
+        Entry points (controller and M-code subs) can run from anywhere, so never count.
+        """
+        guarded = {call.key for call in self.calls if not is_entry_point(call.sub.name)}
+        changed = True
+        while changed:  # shrink to the largest consistent set (handles recursion)
+            changed = False
+            for call in self.calls:
+                if call.key in guarded and not self.is_guarded(call.caller, call.scope, guarded):
+                    guarded.discard(call.key)
+                    changed = True
+        return frozenset(guarded)
+
+    def is_guarded(self, file: SourceFile, scope: Scope,
+                   guarded_subs: frozenset[SubKey] | set[SubKey] | None = None) -> bool:
+        """True if code in ``scope`` only runs on a real machine (outside simulation)."""
+        subs = self.guarded_subs if guarded_subs is None else guarded_subs
+        return scope.guarded or (scope.sub is not None and sub_key(file, scope.sub) in subs)
+
+    @cached_property
+    def argument_clobbering_subs(self) -> frozenset[SubKey]:
+        """Subs that may overwrite #1..#26: they assign them, call an M-code sub, or GoSub one that does."""
+        clobbering = {call.key for call in self.calls if m_sub_number(call.sub.name) is not None}
+        for file in self.files:
+            for stmt, scope in self.walked(file):
+                if scope.sub and any(literal_index(t) in ARG_PARAMS for t in assigned(stmt)):
+                    clobbering.add(sub_key(file, scope.sub))
+        changed = True
+        while changed:
+            changed = False
+            for call in self.calls:
+                caller = call.scope.sub
+                if caller and call.key in clobbering and sub_key(call.caller, caller) not in clobbering:
+                    clobbering.add(sub_key(call.caller, caller))
+                    changed = True
+        return frozenset(clobbering)
+
+    def clobbers_arguments(self, file: SourceFile, stmt: n.Stmt, scope: Scope) -> bool:
+        """True if running ``stmt`` may change #1..#26 (an M-code sub call sets them all)."""
+        return any(m_sub_number(sub.name) is not None or
+                   sub_key(target, sub) in self.argument_clobbering_subs
+                   for target, sub in self.callees(file, stmt, scope))
+
+    @cached_property
+    def probe_checking_subs(self) -> frozenset[SubKey]:
+        """Subs that read #5067 themselves (a GoSub to one counts as checking the probe)."""
+        return frozenset(sub_key(file, scope.sub) for file in self.files
+                         for stmt, scope in self.walked(file)
+                         if scope.sub and any(literal_index(p) == PROBE_TRIPPED for p in reads(stmt)))
+
+    # ----------------------------------------------------------------- variables
+    @cached_property
+    def written(self) -> frozenset[int]:
+        """Parameters assigned by number anywhere, set by a dlgmsg field or a command, or by the ini."""
+        found = set(self._extra_written)
+        for file in self.files:
+            for stmt, _ in self.walked(file):
+                found.update(i for i in map(literal_index, assigned(stmt)) if i is not None)
+                if isinstance(stmt, n.Dialog):
+                    found.update(index for index, _ in dialog_fields(stmt))
+                elif isinstance(stmt, n.Command) and stmt.name in _WRITING_COMMANDS:
+                    found.update(int(word) for word in stmt.args.split() if word.isdigit())
+        return frozenset(found)

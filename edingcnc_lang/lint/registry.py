@@ -1,0 +1,50 @@
+"""The rule registry: each rule names the codes it reports and checks one file at a time.
+
+Codes, severities and summaries live in ``edingcnc_lang.codes`` (shared with
+the parser); this module only knows which function reports which codes, so the
+driver can skip rules whose codes are all deselected.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+from .. import nodes as n
+from ..codes import CODES
+from ..diagnostics import Diagnostic
+from .model import SourceFile
+from .project import Project
+
+Check = Callable[[SourceFile, Project], Iterable[Diagnostic]]
+
+
+@dataclass(frozen=True)
+class Rule:
+    codes: tuple[str, ...]
+    check: Check
+
+
+RULES: list[Rule] = []
+
+
+def rule(*codes: str) -> Callable[[Check], Check]:
+    """Register a check as reporting ``codes`` (each must be in the code table)."""
+    unknown = [c for c in codes if c not in CODES]
+    if unknown:
+        raise KeyError(f"codes missing from edingcnc_lang.codes: {unknown}")
+
+    def register(check: Check) -> Check:
+        RULES.append(Rule(codes, check))
+        return check
+
+    return register
+
+
+def at(code: str, message: str, span: n.Span) -> Diagnostic:
+    """A finding at the start of a node."""
+    return Diagnostic.make(code, message, span.path, span.line, max(span.col, 1))
+
+
+def at_line(code: str, message: str, file: SourceFile, line: int, col: int = 1) -> Diagnostic:
+    """A finding at a line and column of a file."""
+    return Diagnostic.make(code, message, file.path, line, max(col, 1))

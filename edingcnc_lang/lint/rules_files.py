@@ -1,0 +1,61 @@
+"""F rules (whole lines and files) and the parser's own syntax and structure findings."""
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from ..codes import CODES
+from ..diagnostics import Diagnostic
+from .model import SourceFile
+from .project import Project
+from .registry import at_line, rule
+
+PARSER_CODES = tuple(c for c in CODES if c.startswith("E") or c in
+                     ("S200", "S201", "S202", "S203", "S204", "S205", "S206"))
+WARN_LENGTH, MAX_LENGTH = 256, 1055
+
+# Three or more plain words (letters, maybe ending in punctuation) that do not start with a keyword.
+_PROSE = re.compile(r"^\s*[A-Za-z][A-Za-z']*[,.:!?]?(?:\s+[A-Za-z][A-Za-z'-]*[,.:!?]?){2,}\s*$")
+_KEYWORDS = frozenset({"sub", "endsub", "gosub", "if", "else", "endif", "while", "endwhile", "msg",
+                       "warnmsg", "errmsg", "logmsg", "dlgmsg", "logfile", "home", "hometandem",
+                       "kin", "exec", "modbus"})
+
+
+def looks_like_prose(text: str) -> bool:
+    """A line of ordinary words, such as a note someone forgot to comment out."""
+    code = text.split(";", 1)[0]
+    return bool(_PROSE.match(code)) and code.split()[0].lower() not in _KEYWORDS
+
+
+@rule(*PARSER_CODES, "F603")
+def syntax(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """The parser's findings; an 'unexpected word' on a line of prose gets a plainer message."""
+    for diag in file.parse_errors:
+        if diag.code == "E100" and looks_like_prose(file.line(diag.line)):
+            yield at_line("F603", "this line is plain text, not a statement: make it a comment "
+                          "by starting it with ';' (or wrap it in '( )')", file, diag.line,
+                          len(file.line(diag.line)) - len(file.line(diag.line).lstrip()) + 1)
+        else:
+            yield diag
+
+
+@rule("F600")
+def unit_directive(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """EdingCNC 5 refuses a macro file whose first line does not declare its units."""
+    declared = file.unit is not None or any(d.code == "E109" for d in file.parse_errors)
+    if file.is_macro and not declared:
+        yield at_line("F600", "macro file does not declare its units: make the first line "
+                      "';@unit mm' (or ';@unit inch') (EdingCNC G1290: Macro does not specify unit)",
+                      file, 1)
+
+
+@rule("F601", "F602")
+def line_length(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """The controller reads 256 characters a line as documented and 1055 at most."""
+    for number, text in enumerate(file.lines, 1):
+        if len(text) > MAX_LENGTH:
+            yield at_line("F602", f"line is {len(text)} characters long; the controller reads at most "
+                          f"{MAX_LENGTH}: split it", file, number, MAX_LENGTH + 1)
+        elif len(text) > WARN_LENGTH:
+            yield at_line("F601", f"line is {len(text)} characters long; the manual allows {WARN_LENGTH}: "
+                          "split it or shorten its comment", file, number, WARN_LENGTH + 1)

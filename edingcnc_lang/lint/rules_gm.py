@@ -1,0 +1,137 @@
+"""G rules: G and M words on one line, and probing.
+
+Only literal G/M numbers are checked (``G[#1]`` is decided at run time).
+"""
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterator, Sequence
+
+from .. import nodes as n
+from ..diagnostics import Diagnostic
+from ..tables import G_GROUPS, M_GROUPS, MAX_M_WORDS, MAX_TOOL, PROBE_TRIPPED, code_key, code_name
+from .evaluate import evaluate
+from .model import SourceFile
+from .project import Project, sub_key
+from .registry import at, rule
+from .walk import Scope, literal_index, reads
+
+PROBE = code_key(38.2)
+ARCS = frozenset(code_key(c) for c in (2, 3))
+G53 = code_key(53)
+G53_MOTIONS = frozenset(code_key(c) for c in (0, 1))
+FEED_MOVES = frozenset(code_key(c) for c in (1, 2, 3, 38.2, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
+AXES = frozenset("XYZABC")
+CENTRE = frozenset("IJKR")
+
+
+def _codes(block: n.Block, letter: str) -> list[tuple[int, n.Word]]:
+    return [(code_key(w.value.value), w) for w in block.words
+            if w.letter == letter and isinstance(w.value, n.Number)]
+
+
+def _blocks(file: SourceFile, project: Project) -> Iterator[n.Block]:
+    return (stmt for stmt, _ in project.walked(file) if isinstance(stmt, n.Block))
+
+
+@rule("G500")
+def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    for block in _blocks(file, project):
+        for letter, groups in (("G", G_GROUPS), ("M", M_GROUPS)):
+            seen: dict[str, int] = {}
+            for key, word in _codes(block, letter):
+                group = groups.get(key)
+                if group is None:
+                    continue
+                first = seen.setdefault(group, key)
+                if first != key:
+                    yield at("G500", f"{code_name(letter, first)} and {code_name(letter, key)} are both in "
+                             f"the {group.replace('_', ' ')} group: one line may hold only one of them; "
+                             "put them on separate lines", word.span)
+
+
+@rule("G501", "G502", "G503", "G506", "G507")
+def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    for block in _blocks(file, project):
+        yield from _line_words(block)
+
+
+def _line_words(block: n.Block) -> Iterator[Diagnostic]:
+    g_words = _codes(block, "G")
+    g = {key: word for key, word in g_words}
+    letters = {w.letter: w for w in block.words}
+    if G53 in g and not G53_MOTIONS & g.keys():
+        yield at("G501", "G53 (machine coordinates) needs G0 or G1 on the same line, e.g. G53 G0 Z0",
+                 g[G53].span)
+    arc = next((k for k in ARCS if k in g), None)
+    if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
+        yield at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
+                 g[arc].span)
+    feed = letters.get("F")
+    move = next((k for k in FEED_MOVES if k in g), None)
+    if feed is not None and move is not None and evaluate(feed.value) == 0:
+        yield at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
+                 "(EdingCNC G1516: incorrect feed rate)", feed.span)
+    tool = letters.get("T")
+    number = evaluate(tool.value) if tool else None
+    if tool is not None and number is not None and number > MAX_TOOL:
+        yield at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span)
+    m_words = [w for w in block.words if w.letter == "M"]
+    if len(m_words) > MAX_M_WORDS:
+        yield at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
+                 f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
+
+
+def _probe_word(stmt: n.Stmt) -> n.Word | None:
+    if isinstance(stmt, n.Block):
+        return next((w for k, w in _codes(stmt, "G") if k == PROBE), None)
+    return None
+
+
+@rule("G504")
+def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
+    for stmt, scope in project.walked(file):
+        word = _probe_word(stmt)
+        if word is not None and not project.is_guarded(file, scope):
+            yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
+                     "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
+
+
+@rule("G505")
+def probe_checked(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """Each G38.2 needs a read of #5067 later in its sub (or file), before the next G38.2."""
+    scopes: dict[n.Sub | None, list[tuple[n.Stmt, Scope]]] = defaultdict(list)
+    for stmt, scope in project.walked(file):
+        if not isinstance(stmt, n.Sub):
+            scopes[scope.sub].append((stmt, scope))
+    for statements in scopes.values():
+        yield from _unchecked_probes(file, project, statements)
+
+
+def _unchecked_probes(file: SourceFile, project: Project,
+                      statements: Sequence[tuple[n.Stmt, Scope]]) -> Iterator[Diagnostic]:
+    pending: n.Word | None = None
+    for stmt, scope in statements:
+        if pending is not None and _checks_probe(file, project, stmt, scope):
+            pending = None
+        word = _probe_word(stmt)
+        if word is not None:
+            if pending is not None:
+                yield _unchecked(pending)
+            pending = word
+    if pending is not None:
+        yield _unchecked(pending)
+
+
+def _checks_probe(file: SourceFile, project: Project, stmt: n.Stmt, scope: Scope) -> bool:
+    if any(literal_index(p) == PROBE_TRIPPED for p in reads(stmt)):
+        return True
+    return any(sub_key(target, sub) in project.probe_checking_subs
+               for target, sub in project.callees(file, stmt, scope))
+
+
+def _unchecked(word: n.Word) -> Diagnostic:
+    return at("G505", "G38.2 without a check of #5067 afterwards: if the probe never touched, the job "
+              "goes on from the end of the move; add If [#5067 <> 1] errmsg \"...\" EndIf", word.span)
+

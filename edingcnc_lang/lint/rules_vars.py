@@ -1,0 +1,124 @@
+"""V rules: parameter indices, read-only and never-written variables, M-code arguments, brackets.
+
+A missing pair of brackets around an If/While condition (EdingCNC G1171) is a
+syntax error the parser reports as E106.
+"""
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+
+from .. import nodes as n
+from ..diagnostics import Diagnostic
+from ..tables import ARG_PARAMS, FIRST_PARAM, LAST_PARAM, LETTER_ARGS, VOLATILE_PARAMS, is_read_only
+from .evaluate import constant_index
+from .model import SourceFile
+from .names import m_sub_number
+from .project import Project
+from .registry import at, rule
+from .walk import Scope, assigned, dialog_fields, literal_index, reads
+
+
+def _indexed(stmt: n.Stmt) -> Iterator[tuple[float, n.Span]]:
+    """Every index the statement names literally, with where it is written."""
+    for param in (*reads(stmt), *assigned(stmt)):
+        index = constant_index(param)
+        if index is not None:
+            yield index, param.span
+    if isinstance(stmt, n.Dialog):
+        for item in stmt.items[1:]:
+            if isinstance(item, n.Number):
+                yield item.value, item.span
+
+
+@rule("V300")
+def index_range(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    for stmt, _ in project.walked(file):
+        for index, span in _indexed(stmt):
+            if not index.is_integer() or not FIRST_PARAM <= index <= LAST_PARAM:
+                shown = int(index) if index.is_integer() else index
+                yield at("V300", f"#{shown} does not exist: parameters are numbered "
+                         f"{FIRST_PARAM}..{LAST_PARAM}", span)
+
+
+@rule("V301")
+def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    for stmt, _ in project.walked(file):
+        targets = [(literal_index(t), t.span) for t in assigned(stmt)]
+        if isinstance(stmt, n.Dialog):
+            targets += [(index, node.span) for index, node in dialog_fields(stmt)]
+        for index, span in targets:
+            if index is not None and is_read_only(index):
+                yield at("V301", f"#{index} is read-only: the controller sets it, a macro cannot "
+                         "(use a variable of your own, e.g. one of #27..#3999)", span)
+
+
+@rule("V302")
+def never_written(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """First read in each file of a volatile variable nothing assigns (a typo or a missing setup)."""
+    seen: set[int] = set()
+    for stmt, _ in project.walked(file):
+        for param in reads(stmt):
+            index = literal_index(param)
+            if index in VOLATILE_PARAMS and index not in project.written and index not in seen:
+                seen.add(index)
+                yield at("V302", f"#{index} is read but never assigned in this file or its macro files, "
+                         "so it is 0 or left over from an earlier job: assign it first", param.span)
+
+
+# ----------------------------------------------------------------------- M-code arguments
+
+Clobbered = dict[int, int]  # argument index -> line of the call that may have overwritten it
+
+
+class _ArgumentFlow:
+    """Follows which of #1..#26 a call may have overwritten, through If and While, in one M-code sub."""
+
+    def __init__(self, file: SourceFile, project: Project, sub: n.Sub) -> None:
+        self.file, self.project, self.scope = file, project, Scope(sub)
+        self.found: list[Diagnostic] = []
+
+    def run(self, body: Sequence[n.Stmt], state: Clobbered) -> Clobbered:
+        for stmt in body:
+            state = self.step(stmt, state)
+        return state
+
+    def step(self, stmt: n.Stmt, state: Clobbered) -> Clobbered:
+        self.check_reads(stmt, state)
+        if isinstance(stmt, n.If):
+            then, orelse = self.run(stmt.then, dict(state)), self.run(stmt.orelse, dict(state))
+            return {**then, **orelse}
+        if isinstance(stmt, n.While):
+            return {**state, **self.run(stmt.body, dict(state))}
+        state = {i: line for i, line in state.items()
+                 if i not in {literal_index(t) for t in assigned(stmt)}}
+        if self.project.clobbers_arguments(self.file, stmt, self.scope):
+            state = {i: stmt.span.line for i in ARG_PARAMS}
+        return state
+
+    def check_reads(self, stmt: n.Stmt, state: Clobbered) -> None:
+        for param in reads(stmt):
+            index = literal_index(param)
+            if index in state:
+                letter = LETTER_ARGS[index - 1]
+                self.found.append(at(
+                    "V303", f"#{index} (argument {letter}) is read after the call on line {state[index]}, "
+                    f"which may have overwritten it: copy #{index} to a variable of your own before "
+                    "the call", param.span))
+
+
+@rule("V303")
+def arguments_after_call(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    for sub in file.subs.values():
+        if m_sub_number(sub.name) is not None:
+            flow = _ArgumentFlow(file, project, sub)
+            flow.run(sub.body, {})
+            yield from flow.found
+
+
+@rule("V304")
+def extra_bracket(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    for stmt, _ in project.walked(file):
+        if isinstance(stmt, (n.If, n.While)) and stmt.extra_brackets:
+            keyword = "If" if isinstance(stmt, n.If) else "While"
+            yield at("V304", f"{stmt.extra_brackets} extra ']' after the {keyword} condition: the "
+                     "controller ignores it, but remove it so the brackets match", stmt.span)

@@ -1,0 +1,148 @@
+"""Walking a file's statements in source order with what the rules need to know about each.
+
+``walk`` yields every statement with its ``Scope``: the sub it is in and
+whether it is under the simulation guard.  The helpers below say which
+parameters a statement reads and writes and whether it ends the program.
+"""
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+
+from .. import nodes as n
+from ..tables import SIMULATION, code_key
+from .evaluate import constant_index, evaluate, params_in, reads_param
+
+END_OF_PROGRAM = frozenset(code_key(c) for c in (2, 30))
+
+
+@dataclass(frozen=True)
+class Scope:
+    """Where a statement sits: its sub (None at top level) and whether the simulation guard covers it."""
+
+    sub: n.Sub | None = None
+    guarded: bool = False
+
+
+def walk(body: Sequence[n.Stmt], scope: Scope = Scope()) -> Iterator[tuple[n.Stmt, Scope]]:
+    """Every statement, nested ones included, in source order with its scope."""
+    guarded = scope.guarded
+    for stmt in body:
+        here = Scope(scope.sub, guarded)
+        yield stmt, here
+        if isinstance(stmt, n.Sub):
+            yield from walk(stmt.body, Scope(stmt, False))
+        elif isinstance(stmt, n.While):
+            yield from walk(stmt.body, here)
+        elif isinstance(stmt, n.If):
+            then_guard, else_guard = guard_branches(stmt.cond)
+            yield from walk(stmt.then, Scope(scope.sub, guarded or then_guard))
+            yield from walk(stmt.orelse, Scope(scope.sub, guarded or else_guard))
+            if exits_in_simulation(stmt):
+                guarded = True  # the rest of this block only runs on a real machine
+
+
+def statement_lists(body: Sequence[n.Stmt]) -> Iterator[Sequence[n.Stmt]]:
+    """Every list of statements that runs in sequence: the file, sub bodies, branches, loop bodies."""
+    yield body
+    for stmt, _ in walk(body):
+        if isinstance(stmt, (n.Sub, n.While)):
+            yield stmt.body
+        elif isinstance(stmt, n.If):
+            yield stmt.then
+            yield stmt.orelse
+
+
+def simulation_value(index: int) -> float | None:
+    """Parameter lookup for a simulated run: #5380 is 1, nothing else is known."""
+    return 1.0 if index == SIMULATION else None
+
+
+def guard_branches(cond: n.Expr) -> tuple[bool, bool]:
+    """Which branches of an If never run in simulation: (then, else).
+
+    A condition that reads #5380 but cannot be decided counts as guarding
+    both branches: the author checked for simulation, so no finding.
+    """
+    if not reads_param(cond, SIMULATION):
+        return False, False
+    value = evaluate(cond, simulation_value)
+    if value is None:
+        return True, True
+    return (False, True) if value else (True, False)
+
+
+def exits_in_simulation(stmt: n.If) -> bool:
+    """True for an If that ends the program or aborts whenever it runs in simulation."""
+    if not reads_param(stmt.cond, SIMULATION):
+        return False
+    value = evaluate(stmt.cond, simulation_value)
+    if value is None:
+        return False
+    branch = stmt.then if value else stmt.orelse
+    return any(ends_program(s) for s in branch)
+
+
+def ends_program(stmt: n.Stmt) -> bool:
+    """An unconditional end: a line with M2/M30 (no block delete) or an errmsg."""
+    if isinstance(stmt, n.Message):
+        return stmt.kind == "errmsg"
+    if isinstance(stmt, n.Block) and not stmt.block_delete:
+        return any(code in END_OF_PROGRAM for code in word_codes(stmt, "M"))
+    return False
+
+
+def word_codes(block: n.Block, letter: str) -> list[int]:
+    """The literal G or M numbers of a block as integer tenths (G38.2 -> 382)."""
+    return [code_key(w.value.value) for w in block.words
+            if w.letter == letter and isinstance(w.value, n.Number)]
+
+
+def expressions(stmt: n.Stmt) -> Iterator[n.Expr]:
+    """The expressions a statement evaluates itself (not those of nested statements).
+
+    Assignment targets are not included (see ``written``); dlgmsg items are
+    field indices, not reads, so they are left to the dialog rules.
+    """
+    if isinstance(stmt, n.Block):
+        for word in stmt.words:
+            yield word.value
+        for assign in stmt.assigns:
+            yield assign.target.index  # #[#1 + 2] = ... reads #1
+            yield assign.value
+    elif isinstance(stmt, (n.If, n.While)):
+        yield stmt.cond
+    elif isinstance(stmt, n.Message):
+        yield from (item for item in stmt.items if not isinstance(item, str))
+    elif isinstance(stmt, n.LogFile) and stmt.mode is not None:
+        yield stmt.mode
+    elif isinstance(stmt, n.Kin):
+        yield from stmt.args
+    elif isinstance(stmt, n.PrepareLinDeltaHome) and stmt.velocity is not None:
+        yield stmt.velocity
+
+
+def reads(stmt: n.Stmt) -> Iterator[n.Param]:
+    """Every parameter the statement itself reads."""
+    for expr in expressions(stmt):
+        yield from params_in(expr)
+
+
+def assigned(stmt: n.Stmt) -> Iterator[n.Param]:
+    """Assignment targets of a statement (as written, maybe computed)."""
+    if isinstance(stmt, n.Block):
+        for assign in stmt.assigns:
+            yield assign.target
+
+
+def dialog_fields(stmt: n.Dialog) -> Iterator[tuple[int, n.Number]]:
+    """The bare integer field indices of a dlgmsg with their literal nodes."""
+    for item in stmt.items[1:]:
+        if isinstance(item, n.Number) and item.value.is_integer():
+            yield int(item.value), item
+
+
+def literal_index(param: n.Param) -> int | None:
+    """The index of a parameter when it is a whole number known without running."""
+    index = constant_index(param)
+    return int(index) if index is not None and index.is_integer() else None
