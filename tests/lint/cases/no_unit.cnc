@@ -1,0 +1,4 @@
+; expect: F600
+Sub user_1
+    G0 X1
+EndSub

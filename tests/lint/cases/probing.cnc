@@ -1,0 +1,67 @@
+;@unit mm
+; G38.2 belongs under the simulation guard and needs a #5067 check after it.
+Sub user_1
+    If [[#5380 == 0] and [#5397 == 0]]
+        G38.2 Z-10 F100
+        If [#5067 <> 1]
+            errmsg "no contact"
+        EndIf
+    EndIf
+EndSub
+
+Sub user_2
+    G38.2 Z-10 F100          ; expect: G504
+    If [#5067 == 0]
+        errmsg "no contact"
+    EndIf
+EndSub
+
+Sub user_3
+    If [#5380 == 0]          ; checking #5380 alone is enough
+        G38.2 Z-10 F100      ; expect: G505
+    EndIf
+EndSub
+
+Sub user_4
+    If [#5380 == 1]          ; the simulation branch ends the run ...
+        errmsg "probing needs the real machine"
+    EndIf
+    G38.2 Z-10 F100          ; ... so this is guarded
+    GoSub check_contact      ; a sub that reads #5067 counts as the check
+EndSub
+
+Sub user_5
+    If [#5380 <> 0]
+        msg "simulation: skipped"
+    Else
+        GoSub touch          ; touch only runs from guarded code
+    EndIf
+EndSub
+
+Sub touch
+    G38.2 Z-5 F50            ; expect: G505
+    G38.2 Z-6 F50            ; checked below
+    If [#5067 <> 1]
+        errmsg "no contact"
+    EndIf
+EndSub
+
+Sub user_6
+    GoSub touch_anywhere
+    If [[#5380 == 0] and [#5397 == 0]]
+        GoSub touch_anywhere
+    EndIf
+EndSub
+
+Sub touch_anywhere
+    G38.2 X10 F0             ; expect: G504, G503
+    If [#5067 <> 1]
+        errmsg "no contact"
+    EndIf
+EndSub
+
+Sub check_contact
+    If [#5067 <> 1]
+        errmsg "no contact"
+    EndIf
+EndSub
