@@ -256,7 +256,8 @@ def _make_block(words: list[n.Word], assigns: list[n.Assign], message: str | Non
 def _fast_block(text: str, path: str, line: int) -> n.Block:
     """The Block for a line of plain ``letter number`` words, without Lark."""
     words = []
-    for match in _FAST_WORDS.finditer(text):
+    semicolon = text.find(";")
+    for match in _FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)):
         col, end = match.start() + 1, match.end() + 1
         span = n.Span(path, line, col, line, end)
         num_span = n.Span(path, line, match.start(2) + 1, line, end)

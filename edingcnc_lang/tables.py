@@ -56,7 +56,7 @@ REPORTED_G_GROUPS = ("motion", "plane", "units", "cutter_comp", "length_offset",
                      "path_control", "distance", "feed_mode", "return_mode")
 
 # G codes that take the axis words of their line (so a motion on the same line may not).
-AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92, 53))
+AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
 
 MAX_M_WORDS = 4
 LETTER_ARGS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"  # M-sub arguments: A=#1 .. Z=#26

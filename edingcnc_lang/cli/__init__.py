@@ -6,6 +6,7 @@ import click
 from .. import __version__
 from .kins_cmd import kins
 from .parse_cmd import parse
+from .run_cmd import run
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -16,3 +17,4 @@ def main() -> None:
 
 main.add_command(parse)
 main.add_command(kins)
+main.add_command(run)

@@ -1,0 +1,66 @@
+"""The canon seam: what the interpreter tells the machine, as plain event records.
+
+The interpreter emits these to a ``Canon`` and knows nothing of what happens
+next; the motion stage (kinematics, joints, limits), the trace writer and the
+API's event stream all sit behind this interface.  Positions are machine
+coordinates in mm and degrees.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Mapping, Protocol
+
+Pose = tuple[float, float, float, float, float, float]
+AXES = "XYZABC"
+
+# Arc planes: the two in-plane axis indices and the normal axis index.
+PLANES: Mapping[str, tuple[int, int, int]] = {"XY": (0, 1, 2), "XZ": (2, 0, 1), "YZ": (1, 2, 0)}
+
+
+@dataclass(frozen=True, slots=True)
+class Arc:
+    """Circle data of an arc move: centre (machine, in-plane pair), plane, direction and turns."""
+
+    center: tuple[float, float]  # in-plane coordinates in the plane's name order (XZ -> x, z)
+    plane: str                   # "XY" | "XZ" | "YZ"
+    turn: int                    # +1 counter-clockwise seen from the normal's positive end, -1 clockwise
+    full_turns: int = 0          # extra full revolutions (a full circle has one)
+
+
+@dataclass(frozen=True, slots=True)
+class Move:
+    """One executed move; ``feed`` in mm/min (0 for rapids and homing)."""
+
+    kind: str  # "rapid" | "linear" | "arc" | "probe" | "home"
+    path: str
+    line: int
+    start: Pose
+    end: Pose
+    feed: float = 0.0
+    arc: Arc | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Event:
+    """Anything else the machine does: dwell, tool change, spindle, messages, dialogs, I/O, ..."""
+
+    kind: str
+    path: str
+    line: int
+    data: Mapping[str, Any] = field(default_factory=dict)
+
+
+class Canon(Protocol):
+    """The interface between the interpreter and everything downstream of it."""
+
+    def move(self, move: Move) -> None:
+        """Execute a move (called in program order)."""
+
+    def event(self, event: Event) -> None:
+        """Record a non-motion event."""
+
+    def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
+        """Switch or control the kinematics (``KIN`` / tanknife); returns the Cartesian position after it."""
+
+    def home(self, axis: int, path: str, line: int) -> Pose:
+        """Home one joint with kinematics off; returns the Cartesian position after it."""

@@ -1,0 +1,83 @@
+"""Canned drilling cycles (G73, G81-G89) expanded into plain moves.
+
+Works along the drilling axis only: given the hole position and the
+clearance, R and bottom levels it returns the sequence of (kind, depth)
+steps that RS274/NGC prescribes, so every plane and both distance modes
+share one implementation.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+PECK_CLEARANCE_MM = 0.254  # G83 re-entry above the last depth, G73 chip-break retract (0.010 inch)
+
+
+@dataclass(frozen=True)
+class Step:
+    """One action at the hole: a rapid or feed along the drilling axis, a dwell, or a spindle switch."""
+
+    kind: str  # "rapid" | "feed" | "dwell" | "spindle_stop" | "spindle_start"
+    level: float = 0.0  # drilling-axis coordinate (rapid/feed); seconds for dwell
+
+
+def _pecks(r: float, bottom: float, q: float) -> list[float]:
+    depths = []
+    depth = r - q
+    while depth > bottom:
+        depths.append(depth)
+        depth -= q
+    return depths
+
+
+def g81(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    return [Step("feed", bottom), Step("rapid", clear)]
+
+
+def g82(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    return [Step("feed", bottom), Step("dwell", p), Step("rapid", clear)]
+
+
+def g83(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    steps: list[Step] = []
+    for depth in _pecks(r, bottom, q):
+        steps += [Step("feed", depth), Step("rapid", r), Step("rapid", depth + PECK_CLEARANCE_MM)]
+    return steps + [Step("feed", bottom), Step("rapid", clear)]
+
+
+def g73(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    steps: list[Step] = []
+    for depth in _pecks(r, bottom, q):
+        steps += [Step("feed", depth), Step("rapid", depth + PECK_CLEARANCE_MM)]
+    return steps + [Step("feed", bottom), Step("rapid", clear)]
+
+
+def g84(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    return [Step("feed", bottom), Step("feed", r), Step("rapid", clear)]
+
+
+def g85(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    return [Step("feed", bottom), Step("feed", r), Step("rapid", clear)]
+
+
+def g86(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    return [Step("feed", bottom), Step("dwell", p), Step("spindle_stop"), Step("rapid", clear),
+            Step("spindle_start")]
+
+
+def g88(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    # The operator retracts by hand on the machine; in simulation the spindle stops and retracts.
+    return [Step("feed", bottom), Step("dwell", p), Step("spindle_stop"), Step("rapid", clear),
+            Step("spindle_start")]
+
+
+def g89(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    return [Step("feed", bottom), Step("dwell", p), Step("feed", r), Step("rapid", clear)]
+
+
+CycleFn = Callable[[float, float, float, float, float], list[Step]]
+
+# Keyed by G number in integer tenths; the flags say which cycles need Q > 0.
+CYCLES: dict[int, CycleFn] = {730: g73, 810: g81, 820: g82, 830: g83, 840: g84, 850: g85, 860: g86,
+                              880: g88, 890: g89}
+NEEDS_Q = frozenset({730, 830})

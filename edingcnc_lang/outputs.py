@@ -1,0 +1,104 @@
+"""Output sinks behind the motion stage: the trace CSV, the samples file and the event recorder.
+
+Each writes incrementally, so memory stays flat however long the job is
+(the .npz samples format is the exception: numpy writes it in one go at the end).
+Numbers are written with ``repr`` so they read back as the same double.
+"""
+from __future__ import annotations
+
+import io
+import os
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from .canon import Event, Move, Pose
+from .errors import EcncError
+from .motion import Samples
+
+TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc\n"
+SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc")
+
+
+def _open_for_writing(path: Path) -> io.TextIOWrapper:
+    try:
+        return open(path, "w", encoding="utf-8", newline="", buffering=1 << 16)
+    except OSError as err:
+        raise EcncError(f"cannot write {path}: {err.strerror}") from None
+
+
+class TraceWriter:
+    """One CSV row per executed move: source line, kind, machine end point, joints there."""
+
+    def __init__(self, path: Path) -> None:
+        self._file = _open_for_writing(path)
+        self._file.write(TRACE_HEADER)
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+        self._file.write(f"{move.line},{move.kind},{','.join(map(repr, move.end))},{','.join(map(repr, joints))}\n")
+
+    def event(self, event: Event) -> None:
+        pass
+
+    def close(self) -> None:
+        self._file.close()
+
+
+class SamplesWriter:
+    """The interpolated trajectory: CSV rows as moves arrive, or one .npz array at the end."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self._npz = path.suffix.lower() == ".npz"
+        self._chunks: list[np.ndarray] = []
+        self._file = None if self._npz else _open_for_writing(path)
+        if self._file is not None:
+            self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+        if samples is None:
+            return
+        rows = np.column_stack([samples.t, samples.pos, samples.joints])
+        if self._file is None:
+            self._chunks.append(rows)
+        else:
+            self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
+
+    def event(self, event: Event) -> None:
+        pass
+
+    def close(self) -> None:
+        if self._file is not None:
+            self._file.close()
+            return
+        data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
+        with open(self.path, "wb") as handle:
+            np.savez(handle, **{name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)})
+
+
+class CallbackSink:
+    """Forwards moves and events to callables (the embedding API's streaming interface)."""
+
+    def __init__(self, on_move: Callable[[Move, Pose], None] | None = None,
+                 on_event: Callable[[Event], None] | None = None) -> None:
+        self.on_move = on_move
+        self.on_event = on_event
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+        if self.on_move:
+            self.on_move(move, joints)
+
+    def event(self, event: Event) -> None:
+        if self.on_event:
+            self.on_event(event)
+
+    def close(self) -> None:
+        pass
+
+
+def ensure_parent(path: str | os.PathLike[str]) -> Path:
+    result = Path(path)
+    if result.parent and not result.parent.exists():
+        raise EcncError(f"cannot write {result}: folder {result.parent} does not exist")
+    return result

@@ -1,0 +1,207 @@
+"""Running a job end to end: configuration, macro files, check, execute, report.
+
+This is the embedding API's engine.  A run reads the job twice: first to check
+the whole file (syntax and block structure; nothing runs if it is wrong) and to
+collect its subs, then to execute it statement by statement as it streams in.
+"""
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from . import nodes as n
+from . import tables as t
+from .canon import AXES, Event, Move, Pose
+from .config import MachineConfig, load_config, save_variables, is_persisted
+from .diagnostics import SyntaxErrors
+from .errors import EcncError
+from .host import Host
+from .interpreter import CYCLES, Interpreter
+from .kinematics.base import Kinematics
+from .kinematics.loader import load_kinematics
+from .motion import MotionStage, MoveSink
+from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
+from .parser import parse_file, parse_text, read_statements
+
+PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
+
+
+@dataclass
+class RunResult:
+    """The machine after a run: what ``ecnc run --json`` prints."""
+
+    position: Pose
+    machine: Pose
+    joints: Pose
+    variables: dict[int, float]
+    messages: list[Event]
+    kinematics: dict[str, Any]
+    tool: int
+    moves: int
+    modal: list[str]
+    ended_by: str = "end of file"   # "M2", "M30" or "end of file"
+    error: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        axes = [a.lower() for a in AXES]
+        return {
+            "position": dict(zip(axes, self.position)),
+            "machine": dict(zip(axes, self.machine)),
+            "joints": dict(zip(axes, self.joints)),
+            "variables": {str(k): v for k, v in self.variables.items()},
+            "messages": [{"kind": e.kind, "text": e.data.get("text", ""), "file": e.path, "line": e.line}
+                         for e in self.messages],
+            "kinematics": self.kinematics,
+            "tool": self.tool,
+            "moves": self.moves,
+            "modal": self.modal,
+            "ended_by": self.ended_by,
+            **({"error": self.error} if self.error else {}),
+        }
+
+
+@dataclass
+class RunOptions:
+    """Everything a run can be told; the CLI and the API both fill one of these."""
+
+    ini: Path | None = None
+    macro: Path | None = None
+    user_macro: Path | None = None
+    host: Host = field(default_factory=Host)
+    max_steps: int | None = None
+    trace: Path | None = None
+    samples: Path | None = None
+    log_dir: Path | None = None
+    allow_exec: bool = False
+    simulation: bool = True
+    block_delete: bool = False
+    save_vars: bool = False
+    on_move: Callable[[Move, Pose], None] | None = None
+    on_event: Callable[[Event], None] | None = None
+
+
+def packaged_macro() -> Path:
+    """The default macro file shipped inside the package."""
+    return Path(str(resources.files("edingcnc_lang.stdlib") / "macro.cnc"))
+
+
+def check_file(path: Path) -> dict[str, n.Sub]:
+    """Read the whole file once: raise SyntaxErrors if anything is wrong, else return its subs."""
+    reader = read_statements(path)
+    subs = {stmt.name.lower(): stmt for stmt in reader if isinstance(stmt, n.Sub)}
+    if reader.diagnostics:
+        raise SyntaxErrors(sorted(reader.diagnostics, key=lambda d: (d.line, d.col)))
+    return subs
+
+
+class Run:
+    """One job run on one virtual machine; build it, then call ``execute``."""
+
+    def __init__(self, options: RunOptions) -> None:
+        self.options = options
+        self.config = load_config(options.ini) if options.ini else MachineConfig.default()
+        self.kinematics = self._load_kinematics()
+        sinks: list[MoveSink] = []
+        if options.trace:
+            sinks.append(TraceWriter(ensure_parent(options.trace)))
+        if options.samples:
+            sinks.append(SamplesWriter(ensure_parent(options.samples)))
+        if options.on_move or options.on_event:
+            sinks.append(CallbackSink(options.on_move, options.on_event))
+        self.motion = MotionStage(self.config, self.kinematics, sinks, self._write_param,
+                                  sample_always=options.samples is not None)
+        self.interpreter = Interpreter(self.motion, self.config, options.host, max_steps=options.max_steps,
+                                       log_dir=options.log_dir, allow_exec=options.allow_exec,
+                                       simulation=options.simulation, block_delete=options.block_delete)
+        self.interpreter.params.set(t.KIN_TYPE, float(self.kinematics.kin_type()))
+        self.ended_by = "end of file"
+
+    def _write_param(self, index: int, value: float) -> None:
+        self.interpreter.params.set(index, value)
+
+    def _load_kinematics(self) -> Kinematics:
+        search = [Path(self.config.path).parent] if self.config.path else []
+        return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
+
+    def macro_files(self) -> list[Path]:
+        """Macro files in lookup order: user macro first (its subs win), then the main macro file."""
+        opts, cfg = self.options, self.config
+        main = opts.macro or cfg.macro_file or packaged_macro()
+        user = opts.user_macro or cfg.user_macro_file
+        return [p for p in (user, main) if p is not None]
+
+    def execute_file(self, job: Path) -> RunResult:
+        job_subs = check_file(job)
+        macros = [(path, parse_file(path)) for path in self.macro_files()]
+        return self._execute(lambda: read_statements(job), job_subs, macros)
+
+    def execute_text(self, text: str, path: str = "<string>") -> RunResult:
+        program = parse_text(text, path)
+        macros = [(p, parse_file(p)) for p in self.macro_files()]
+        return self._execute(lambda: program.body, program.subs, macros)
+
+    def _execute(self, statements: Callable[[], Iterable[n.Stmt]], job_subs: dict[str, n.Sub],
+                 macros: Sequence[tuple[Path, n.Program]]) -> RunResult:
+        interp = self.interpreter
+        interp.define_subs(job_subs.values())
+        for _path, program in macros:
+            interp.define_subs(program.subs.values())
+        error: EcncError | None = None
+        try:
+            for _path, program in reversed(macros):  # top-level statements of macro files run once at load
+                interp.run(program.body)
+            if self.config.initial_string:
+                interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+            if "start" in interp.subs:
+                interp.call_sub("start")
+            finished = interp.run(statements())
+            if not finished:
+                self.ended_by = next((f"M{e.data['m']}" for e in reversed(interp.messages) if e.kind == "end"),
+                                     "M30")
+        except EcncError as err:
+            error = err
+        finally:
+            self.motion.close()
+        result = self.result(error)
+        if error is not None:
+            error.result = result  # type: ignore[attr-defined]
+            raise error
+        if self.options.save_vars and self.config.path:
+            save_variables(self.config.path, {i: v for i, v in interp.params.snapshot_written().items()
+                                              if is_persisted(i)})
+        return result
+
+    def result(self, error: EcncError | None = None) -> RunResult:
+        interp = self.interpreter
+        motion = interp.modal["motion"]
+        modal_codes = [code for group, code in interp.modal.items() if group not in ("motion", "rotation")]
+        modal_codes.append(motion if motion in PLAIN_MOTION else t.code_key(0))
+        modal_codes.append(motion if motion in CYCLES else t.code_key(80))
+        kin = self.kinematics
+        return RunResult(
+            position=tuple(interp.work_position()),  # type: ignore[arg-type]
+            machine=tuple(interp.pos),  # type: ignore[arg-type]
+            joints=tuple(self.motion.joints),  # type: ignore[arg-type]
+            variables=interp.params.snapshot_written(),
+            messages=list(interp.messages),
+            kinematics={"name": kin.name, "type": kin.kin_type(), "active": interp.kinematics_active},
+            tool=int(interp.params.read(t.TOOL_CURRENT)),
+            moves=self.motion.moves,
+            modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
+            ended_by=self.ended_by,
+            error=error.format() if error else None,
+        )
+
+
+def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:
+    """Run a job file; raises EcncError subclasses (with ``.result`` for runtime errors)."""
+    return Run(options or RunOptions()).execute_file(Path(job))
+
+
+def run_string(text: str, options: RunOptions | None = None, path: str = "<string>") -> RunResult:
+    """Run G-code given as a string (parsed whole first)."""
+    return Run(options or RunOptions()).execute_text(text, path)
