@@ -6,7 +6,7 @@ belongs to an error is part of its type (see docs/cli.md).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 EXIT_OK = 0
 EXIT_FINDINGS = 1
