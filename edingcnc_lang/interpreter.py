@@ -90,6 +90,7 @@ class Interpreter:
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
+        self.tanknife = False
         self.messages: list[Event] = []
         self.path = "<string>"
         self.line = 0
@@ -345,6 +346,7 @@ class Interpreter:
 
     def _exec_switch(self, stmt: n.Switch) -> None:
         if stmt.name == "tanknife":
+            self.tanknife = stmt.on
             self.pos = list(self.canon.kinematics("TANKNIFE_ON" if stmt.on else "TANKNIFE_OFF", (),
                                                   tuple(self.pos), self.path, self.line))
         self.canon.event(Event(stmt.name, self.path, self.line, {"on": stmt.on}))
@@ -727,7 +729,11 @@ class Interpreter:
             if motion == G(0):
                 self._move("rapid", target)
             elif motion == G(1):
-                self._move("linear", target, self._feed_for(_distance(self.pos, target), words, span))
+                feed = self._feed_for(_distance(self.pos, target), words, span)
+                if self.tanknife and math.hypot(target[0] - self.pos[0], target[1] - self.pos[1]) > 1e-9:
+                    target[5] = self._knife_align(math.degrees(math.atan2(target[1] - self.pos[1],
+                                                                          target[0] - self.pos[0])))
+                self._move("linear", target, feed)
             else:
                 self._probe(target, words, span)
 
@@ -769,7 +775,33 @@ class Interpreter:
         length = math.hypot(radius * angle, along)
         feed = self._feed_for(length, words, span)
         named = (center[1], center[0]) if plane == "XZ" else center
+        if self.tanknife and plane == "XY":  # the knife follows the tangent all along the arc
+            normal_deg = -90.0 if clockwise else 90.0
+            start_tangent = math.degrees(math.atan2(s[1] - center[1], s[0] - center[0])) + normal_deg
+            c_start = self._knife_align(start_tangent)
+            end[5] = c_start + math.degrees(angle) * (-1.0 if clockwise else 1.0)
         self._move("arc", end, feed, Arc(named, plane, -1 if clockwise else 1, full))
+
+    def _knife_align(self, direction: float) -> float:
+        """Turn C to ``direction`` (the equivalent angle nearest the current C) before a cut.
+
+        A turn larger than tanKnifeAngleForLiftUp lifts the knife, turns it and lowers it
+        again (three moves); a smaller one turns in place.  Returns the new C.
+        """
+        current = self.pos[5]
+        target = current + ((direction - current + 180.0) % 360.0 - 180.0)
+        turn = abs(target - current)
+        if turn < 1e-9:
+            return current
+        knife = self.config.tanknife
+        if turn > knife.angle_for_lift_up:
+            down = self.pos[2]
+            self._move("rapid", self.pos[:2] + [down + knife.lift_up_distance] + self.pos[3:])
+            self._move("rapid", self.pos[:5] + [target])
+            self._move("rapid", self.pos[:2] + [down] + self.pos[3:])
+        else:
+            self._move("rapid", self.pos[:5] + [target])
+        return target
 
     def _probe(self, target: list[float], words: Mapping[str, float], span: n.Span) -> None:
         if any(abs(target[i] - self.pos[i]) > 1e-9 for i in range(3, 6)):
