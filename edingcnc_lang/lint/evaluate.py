@@ -95,6 +95,8 @@ def reads_param(expr: n.Expr, index: int) -> bool:
 
 def params_in(expr: n.Expr) -> list[n.Param]:
     """Every parameter reference in ``expr``, outer ones first (``##5`` gives both)."""
+    if isinstance(expr, n.Number):  # most word values: nothing to look into
+        return []
     found: list[n.Param] = []
     stack: list[n.Expr] = [expr]
     while stack:

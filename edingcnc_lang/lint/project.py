@@ -50,9 +50,18 @@ class Project:
         self._macros = macros
         self._extra_written = extra_written
         self._walked = {f.path: tuple(walk(f.body)) for f in self.files}
+        self._reads: dict[int, tuple[n.Param, ...]] = {}
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
         return self._walked[file.path]
+
+    def reads(self, stmt: n.Stmt) -> tuple[n.Param, ...]:
+        """The parameters a statement reads, computed once (several rules ask)."""
+        key = id(stmt)  # nodes hash by value, deeply; the AST lives as long as the project
+        found = self._reads.get(key)
+        if found is None:
+            found = self._reads[key] = tuple(reads(stmt))
+        return found
 
     # ----------------------------------------------------------------- calls
     def resolve(self, file: SourceFile, name: str) -> tuple[SourceFile, n.Sub] | None:
@@ -141,7 +150,7 @@ class Project:
         """Subs that read #5067 themselves (a GoSub to one counts as checking the probe)."""
         return frozenset(sub_key(file, scope.sub) for file in self.files
                          for stmt, scope in self.walked(file)
-                         if scope.sub and any(literal_index(p) == PROBE_TRIPPED for p in reads(stmt)))
+                         if scope.sub and any(literal_index(p) == PROBE_TRIPPED for p in self.reads(stmt)))
 
     # ----------------------------------------------------------------- variables
     @cached_property

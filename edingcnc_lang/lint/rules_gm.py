@@ -14,7 +14,7 @@ from .evaluate import evaluate
 from .model import SourceFile
 from .project import Project, sub_key
 from .registry import at, rule
-from .walk import Scope, literal_index, reads
+from .walk import Scope, literal_index
 
 PROBE = code_key(38.2)
 ARCS = frozenset(code_key(c) for c in (2, 3))
@@ -101,10 +101,10 @@ def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 @rule("G505")
 def probe_checked(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """Each G38.2 needs a read of #5067 later in its sub (or file), before the next G38.2."""
-    scopes: dict[n.Sub | None, list[tuple[n.Stmt, Scope]]] = defaultdict(list)
+    scopes: dict[int, list[tuple[n.Stmt, Scope]]] = defaultdict(list)  # by id() of the sub: nodes hash deeply
     for stmt, scope in project.walked(file):
         if not isinstance(stmt, n.Sub):
-            scopes[scope.sub].append((stmt, scope))
+            scopes[id(scope.sub)].append((stmt, scope))
     for statements in scopes.values():
         yield from _unchecked_probes(file, project, statements)
 
@@ -125,7 +125,7 @@ def _unchecked_probes(file: SourceFile, project: Project,
 
 
 def _checks_probe(file: SourceFile, project: Project, stmt: n.Stmt, scope: Scope) -> bool:
-    if any(literal_index(p) == PROBE_TRIPPED for p in reads(stmt)):
+    if any(literal_index(p) == PROBE_TRIPPED for p in project.reads(stmt)):
         return True
     return any(sub_key(target, sub) in project.probe_checking_subs
                for target, sub in project.callees(file, stmt, scope))

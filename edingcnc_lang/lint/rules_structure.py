@@ -46,7 +46,7 @@ def _ending(stmt: n.Stmt) -> str:
 @rule("S209")
 def unreachable(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """Statements after an unconditional end in the same list never run (Sub definitions excepted)."""
-    for body in statement_lists(file.body):
+    for body in statement_lists(file.body, project.walked(file)):
         stop = next((i for i, s in enumerate(body) if ends_program(s)), None)
         if stop is None:
             continue

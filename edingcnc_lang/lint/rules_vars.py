@@ -15,12 +15,12 @@ from .model import SourceFile
 from .names import m_sub_number
 from .project import Project
 from .registry import at, rule
-from .walk import Scope, assigned, dialog_fields, literal_index, reads
+from .walk import Scope, assigned, dialog_fields, literal_index
 
 
-def _indexed(stmt: n.Stmt) -> Iterator[tuple[float, n.Span]]:
+def _indexed(stmt: n.Stmt, project: Project) -> Iterator[tuple[float, n.Span]]:
     """Every index the statement names literally, with where it is written."""
-    for param in (*reads(stmt), *assigned(stmt)):
+    for param in (*project.reads(stmt), *assigned(stmt)):
         index = constant_index(param)
         if index is not None:
             yield index, param.span
@@ -33,7 +33,7 @@ def _indexed(stmt: n.Stmt) -> Iterator[tuple[float, n.Span]]:
 @rule("V300")
 def index_range(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for stmt, _ in project.walked(file):
-        for index, span in _indexed(stmt):
+        for index, span in _indexed(stmt, project):
             if not index.is_integer() or not FIRST_PARAM <= index <= LAST_PARAM:
                 shown = int(index) if index.is_integer() else index
                 yield at("V300", f"#{shown} does not exist: parameters are numbered "
@@ -57,7 +57,7 @@ def never_written(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """First read in each file of a volatile variable nothing assigns (a typo or a missing setup)."""
     seen: set[int] = set()
     for stmt, _ in project.walked(file):
-        for param in reads(stmt):
+        for param in project.reads(stmt):
             index = literal_index(param)
             if index in VOLATILE_PARAMS and index not in project.written and index not in seen:
                 seen.add(index)
@@ -96,7 +96,7 @@ class _ArgumentFlow:
         return state
 
     def check_reads(self, stmt: n.Stmt, state: Clobbered) -> None:
-        for param in reads(stmt):
+        for param in self.project.reads(stmt):
             index = literal_index(param)
             if index in state:
                 letter = LETTER_ARGS[index - 1]

@@ -6,7 +6,7 @@ parameters a statement reads and writes and whether it ends the program.
 """
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from .. import nodes as n
@@ -24,28 +24,33 @@ class Scope:
     guarded: bool = False
 
 
-def walk(body: Sequence[n.Stmt], scope: Scope = Scope()) -> Iterator[tuple[n.Stmt, Scope]]:
+def walk(body: Sequence[n.Stmt], scope: Scope = Scope()) -> list[tuple[n.Stmt, Scope]]:
     """Every statement, nested ones included, in source order with its scope."""
-    guarded = scope.guarded
+    found: list[tuple[n.Stmt, Scope]] = []
+    _walk_into(found, body, scope)
+    return found
+
+
+def _walk_into(found: list[tuple[n.Stmt, Scope]], body: Sequence[n.Stmt], scope: Scope) -> None:
+    here = scope
     for stmt in body:
-        here = Scope(scope.sub, guarded)
-        yield stmt, here
+        found.append((stmt, here))
         if isinstance(stmt, n.Sub):
-            yield from walk(stmt.body, Scope(stmt, False))
+            _walk_into(found, stmt.body, Scope(stmt, False))
         elif isinstance(stmt, n.While):
-            yield from walk(stmt.body, here)
+            _walk_into(found, stmt.body, here)
         elif isinstance(stmt, n.If):
             then_guard, else_guard = guard_branches(stmt.cond)
-            yield from walk(stmt.then, Scope(scope.sub, guarded or then_guard))
-            yield from walk(stmt.orelse, Scope(scope.sub, guarded or else_guard))
-            if exits_in_simulation(stmt):
-                guarded = True  # the rest of this block only runs on a real machine
+            _walk_into(found, stmt.then, Scope(scope.sub, True) if then_guard else here)
+            _walk_into(found, stmt.orelse, Scope(scope.sub, True) if else_guard else here)
+            if not here.guarded and exits_in_simulation(stmt):
+                here = Scope(scope.sub, True)  # the rest of this block only runs on a real machine
 
 
-def statement_lists(body: Sequence[n.Stmt]) -> Iterator[Sequence[n.Stmt]]:
+def statement_lists(body: Sequence[n.Stmt], walked: Iterable[tuple[n.Stmt, Scope]]) -> Iterator[Sequence[n.Stmt]]:
     """Every list of statements that runs in sequence: the file, sub bodies, branches, loop bodies."""
     yield body
-    for stmt, _ in walk(body):
+    for stmt, _ in walked:
         if isinstance(stmt, (n.Sub, n.While)):
             yield stmt.body
         elif isinstance(stmt, n.If):
