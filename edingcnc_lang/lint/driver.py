@@ -11,7 +11,6 @@ import os
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
-from functools import lru_cache
 from pathlib import Path
 
 from ..codes import CODES
@@ -76,7 +75,6 @@ def is_macro_name(path: Path) -> bool:
     return path.name.lower() in MACRO_NAMES or path.suffix.lower() == ".cnc"
 
 
-@lru_cache(maxsize=256)
 def _beside(folder: Path) -> tuple[Path, ...]:
     """macro.cnc and user_macro.cnc in ``folder``, names matched case-insensitively like Windows."""
     try:
@@ -92,6 +90,7 @@ class _Loader:
     def __init__(self, given_macros: Sequence[Path]) -> None:
         self.given = tuple(given_macros)
         self.files: dict[Path, SourceFile] = {}
+        self._folders: dict[Path, tuple[Path, ...]] = {}
 
     def load(self, path: Path, is_macro: bool) -> SourceFile:
         key = path.resolve()
@@ -100,7 +99,10 @@ class _Loader:
         return self.files[key]
 
     def macros_for(self, path: Path) -> list[SourceFile]:
-        paths = self.given or _beside(path.resolve().parent)
+        folder = path.resolve().parent
+        if folder not in self._folders:
+            self._folders[folder] = _beside(folder)
+        paths = self.given or self._folders[folder]
         return [self.load(p, True) for p in paths if p.resolve() != path.resolve()]
 
 

@@ -43,6 +43,12 @@ def github(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
         f"title={_escape_property(d.code)}::{_escape_data(d.message)}" for d in findings)
 
 
+def _uri(path: str) -> str:
+    """SARIF wants URIs: relative paths as POSIX references, absolute ones as file: URIs."""
+    p = Path(path)
+    return p.as_uri() if p.is_absolute() else p.as_posix()
+
+
 def sarif(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
     """One SARIF run whose rules are the whole code table (so every result's ruleIndex resolves)."""
     codes = list(CODES.values())
@@ -53,7 +59,7 @@ def sarif(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
         "ruleId": d.code, "ruleIndex": index[d.code], "level": _SARIF_LEVEL[d.severity],
         "message": {"text": d.message},
         "locations": [{"physicalLocation": {
-            "artifactLocation": {"uri": Path(d.path).as_posix()},
+            "artifactLocation": {"uri": _uri(d.path)},
             "region": {"startLine": d.line, "startColumn": d.col}}}],
     } for d in findings]
     log = {"$schema": SARIF_SCHEMA, "version": "2.1.0", "runs": [{

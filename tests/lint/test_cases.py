@@ -74,3 +74,8 @@ def test_findings_are_sorted_by_file_and_line() -> None:
     keys = [(d.path, d.line, d.col) for d in found]
     assert keys == sorted(keys)
     assert len({d.path for d in found}) > 10
+
+
+def test_every_code_is_documented() -> None:
+    doc = (ROOT / "docs" / "lint.md").read_text(encoding="utf-8")
+    assert [c for c in CODES if f"| {c} |" not in doc] == []
