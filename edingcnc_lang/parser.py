@@ -414,8 +414,9 @@ class StatementReader:
     line); ``unit`` holds the ``@unit`` directive once the first line is read.
     """
 
-    def __init__(self, lines: Iterable[str], path: str) -> None:
+    def __init__(self, lines: Iterable[str], path: str, *, skip_plain: bool = False) -> None:
         self.path = path
+        self.skip_plain = skip_plain  # checking only: top-level plain word lines need no nodes
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self._lines = lines
@@ -429,6 +430,8 @@ class StatementReader:
         lineno = 0
         for lineno, text in enumerate(self._lines, 1):
             if lineno == 1 and self._read_unit(text):
+                continue
+            if self.skip_plain and not stack and _FAST_LINE.match(text):
                 continue
             try:
                 result = parse_line(text, path, lineno)
@@ -456,6 +459,11 @@ class StatementReader:
             else:
                 yield result
         yield from self._unwind(stack, lineno + 1, report=True)
+
+    def raise_errors(self) -> None:
+        """Raise SyntaxErrors with every diagnostic, in line order, if there is any."""
+        if self.diagnostics:
+            raise SyntaxErrors(sorted(self.diagnostics, key=lambda d: (d.line, d.col)))
 
     def _read_unit(self, text: str) -> bool:
         """Record a first-line ``@unit`` directive; True if the line was one."""
@@ -515,9 +523,20 @@ class StatementReader:
 
 # --------------------------------------------------------------------------- whole files
 
-def read_statements(path: str | os.PathLike[str]) -> StatementReader:
+def read_statements(path: str | os.PathLike[str], *, skip_plain: bool = False) -> StatementReader:
     """A streaming reader over a file (statements are parsed as you iterate)."""
-    return StatementReader(iter_file_lines(path), os.fspath(path))
+    return StatementReader(iter_file_lines(path), os.fspath(path), skip_plain=skip_plain)
+
+
+def check_file(path: str | os.PathLike[str]) -> dict[str, n.Sub]:
+    """Read a whole file without keeping it: raise SyntaxErrors if anything is wrong, else return its subs."""
+    reader = read_statements(path, skip_plain=True)
+    subs: dict[str, n.Sub] = {}
+    for stmt in reader:
+        if isinstance(stmt, n.Sub):
+            subs.setdefault(stmt.name.lower(), stmt)
+    reader.raise_errors()
+    return subs
 
 
 def parse_text(text: str, path: str = "<string>") -> n.Program:
@@ -532,6 +551,5 @@ def parse_file(path: str | os.PathLike[str]) -> n.Program:
 
 def _collect(reader: StatementReader) -> n.Program:
     body = tuple(reader)
-    if reader.diagnostics:
-        raise SyntaxErrors(sorted(reader.diagnostics, key=lambda d: (d.line, d.col)))
+    reader.raise_errors()
     return n.Program(reader.path, body, reader.unit)

@@ -17,7 +17,6 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, load_config, save_variables, is_persisted
-from .diagnostics import SyntaxErrors
 from .errors import EcncError
 from .host import Host
 from .interpreter import CYCLES, Interpreter
@@ -25,7 +24,7 @@ from .kinematics.base import Kinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage, MoveSink
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
-from .parser import parse_file, parse_text, read_statements
+from .parser import check_file, parse_file, parse_text, read_statements
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
 
@@ -87,15 +86,6 @@ class RunOptions:
 def packaged_macro() -> Path:
     """The default macro file shipped inside the package."""
     return Path(str(resources.files("edingcnc_lang.stdlib") / "macro.cnc"))
-
-
-def check_file(path: Path) -> dict[str, n.Sub]:
-    """Read the whole file once: raise SyntaxErrors if anything is wrong, else return its subs."""
-    reader = read_statements(path)
-    subs = {stmt.name.lower(): stmt for stmt in reader if isinstance(stmt, n.Sub)}
-    if reader.diagnostics:
-        raise SyntaxErrors(sorted(reader.diagnostics, key=lambda d: (d.line, d.col)))
-    return subs
 
 
 class Run:

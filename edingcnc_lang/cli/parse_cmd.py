@@ -5,7 +5,7 @@ import json
 
 import click
 
-from ..parser import parse_file
+from ..parser import check_file, parse_file
 from ..serialize import to_data
 from .common import existing_file, reports_errors
 
@@ -17,6 +17,8 @@ from .common import existing_file, reports_errors
 @reports_errors
 def parse(file: str, as_json: bool, no_spans: bool) -> None:
     """Parse FILE without running it (exit 65 on syntax errors)."""
-    program = parse_file(file)
     if as_json:
+        program = parse_file(file)
         click.echo(json.dumps(to_data(program, with_spans=not no_spans), indent=1))
+        return
+    check_file(file)  # streams: memory stays flat however long the file is

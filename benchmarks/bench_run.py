@@ -1,0 +1,147 @@
+"""Speed and memory of parsing and running big jobs, side by side with LinuxCNC's rs274.
+
+Generates the jobs deterministically in a temporary folder, runs ``ecnc`` and
+``rs274 -g`` alternately ``--repeat`` times and prints medians, ratios and peak
+memory (max RSS of the child process) as a table.  rs274 is optional: without
+it the reference column stays empty.
+
+    python benchmarks/bench_run.py               # all benchmarks
+    python benchmarks/bench_run.py --only parse  # one of: parse run1m macro startup
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+
+def write_g1_job(path: Path, lines: int, ngc: bool = False) -> None:
+    """A 3D-surfacing style job: G1 X Y Z lines with three decimals (seeded, deterministic)."""
+    rng = random.Random(1)
+    with open(path, "w") as out:
+        out.write("G21 G17 G90 G94 F1000\n")
+        for _ in range(lines):
+            out.write(f"G1 X{rng.uniform(0, 300):.3f} Y{rng.uniform(0, 200):.3f} Z{rng.uniform(-5, 0):.3f}\n")
+        out.write("M2\n")
+
+
+def write_macro_loop(path: Path, iterations: int, ngc: bool) -> None:
+    """The same arithmetic loop as an EdingCNC While and as a LinuxCNC O-word while."""
+    body = ["#2 = [[#2 + #1 * 0.5] MOD 97]", "G1 X[#2] Y[#1 MOD 50] Z[-#2 / 10]", "#1 = [#1 + 1]"]
+    if ngc:
+        lines = ["G21 G90 F1000", "#1 = 0", "#2 = 0", f"o100 while [#1 LT {iterations}]", *body,
+                 "o100 endwhile", "M2"]
+    else:
+        lines = ["G21 G90 F1000", "#1 = 0", "#2 = 0", f"While [#1 < {iterations}]", *body, "EndWhile", "M2"]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def measure(cmd: list[str]) -> tuple[float, float]:
+    """Wall seconds and peak RSS (MB) of one run of ``cmd`` (stdout discarded)."""
+    start = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, _, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - start
+    if proc.stderr:
+        proc.stderr.close()
+    return wall, usage.ru_maxrss / 1024.0
+
+
+def median_runs(cmds: dict[str, list[str]], repeat: int) -> dict[str, tuple[float, float]]:
+    """Run the commands alternately; median wall time and max RSS for each."""
+    results: dict[str, list[tuple[float, float]]] = {name: [] for name in cmds}
+    for _ in range(repeat):
+        for name, cmd in cmds.items():
+            results[name].append(measure(cmd))
+    return {name: (statistics.median(w for w, _ in runs), max(m for _, m in runs)) for name, runs in results.items()}
+
+
+ECNC = [sys.executable, "-m", "edingcnc_lang"]
+
+
+def bench_parse(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job = tmp / "g1_200k.nc"
+    write_g1_job(job, 200_000)
+    res = median_runs({"ecnc": ECNC + ["parse", str(job)]}, repeat)
+    wall, rss = res["ecnc"]
+    return [("ecnc parse, 200k G1 lines", f"{wall:.2f} s ({200_000 / wall:,.0f} lines/s)", f"{rss:.0f} MB", "")]
+
+
+def _versus(label: str, ours: list[str], ref: list[str] | None, repeat: int) -> tuple[str, str, str, str]:
+    cmds = {"ecnc": ours, **({"rs274": ref} if ref else {})}
+    res = median_runs(cmds, repeat)
+    wall, rss = res["ecnc"]
+    if ref:
+        ref_wall, ref_rss = res["rs274"]
+        return (label, f"{wall:.2f} s / {rss:.0f} MB", f"{ref_wall:.2f} s / {ref_rss:.0f} MB", f"{wall / ref_wall:.2f}x")
+    return (label, f"{wall:.2f} s / {rss:.0f} MB", "-", "-")
+
+
+def bench_run(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job, ngc = tmp / "g1_200k.nc", tmp / "g1_200k.ngc"
+    write_g1_job(job, 200_000)
+    write_g1_job(ngc, 200_000, ngc=True)
+    rs274 = shutil.which("rs274")
+    trace = tmp / "trace.csv"
+    return [_versus("run 200k G1 lines (--trace CSV) vs rs274 -g", ECNC + ["run", str(job), "--trace", str(trace)],
+                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
+
+
+def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job = tmp / "g1_1m.nc"
+    write_g1_job(job, 1_000_000)
+    res = median_runs({"ecnc": ECNC + ["run", str(job)]}, 1)
+    wall, rss = res["ecnc"]
+    return [("run 1M G1 lines (memory)", f"{wall:.2f} s", f"{rss:.0f} MB peak", "")]
+
+
+def bench_macro(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job, ngc = tmp / "loop.nc", tmp / "loop.ngc"
+    write_macro_loop(job, 200_000, ngc=False)
+    write_macro_loop(ngc, 200_000, ngc=True)
+    rs274 = shutil.which("rs274")
+    return [_versus("While loop, 200k iterations vs O-word while", ECNC + ["run", str(job), "--max-steps", "10000000"],
+                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
+
+
+def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job = tmp / "three.nc"
+    job.write_text("G0 X1\nG1 Y1 F100\nM30\n")
+    res = median_runs({"ecnc": ECNC + ["run", str(job)]}, max(repeat, 5))
+    wall, rss = res["ecnc"]
+    return [("run a three-line job, from process start", f"{wall * 1000:.0f} ms", f"{rss:.0f} MB", "")]
+
+
+BENCHES: dict[str, Callable[[Path, int], list[tuple[str, str, str, str]]]] = {
+    "parse": bench_parse, "run": bench_run, "run1m": bench_run1m, "macro": bench_macro, "startup": bench_startup,
+}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--only", choices=sorted(BENCHES), action="append")
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    rows = [("benchmark", "ecnc", "reference", "ratio")]
+    with tempfile.TemporaryDirectory() as folder:
+        for name in args.only or list(BENCHES):
+            rows += BENCHES[name](Path(folder), args.repeat)
+    widths = [max(len(r[i]) for r in rows) for i in range(4)]
+    for i, row in enumerate(rows):
+        print(" | ".join(cell.ljust(w) for cell, w in zip(row, widths)))
+        if i == 0:
+            print("-+-".join("-" * w for w in widths))
+
+
+if __name__ == "__main__":
+    main()
