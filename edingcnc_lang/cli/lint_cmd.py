@@ -20,9 +20,9 @@ def _codes(ctx: click.Context, param: click.Parameter, value: str | None) -> tup
 
 @click.command("lint")
 @click.argument("paths", nargs=-1, type=click.Path(exists=True))
-@click.option("--macro", type=existing_file(), help="macro.cnc to resolve GoSub against "
+@click.option("--macro", type=existing_file(), help="Macro file to resolve GoSub against "
               "(default: macro.cnc beside each file).")
-@click.option("--user-macro", type=existing_file(), help="user_macro.cnc to resolve GoSub against.")
+@click.option("--user-macro", type=existing_file(), help="User macro file to resolve GoSub against.")
 @click.option("--ini", type=existing_file(), help="cnc.ini to check (its kinematics user outputs count as written).")
 @click.option("--format", "fmt", type=click.Choice(sorted(FORMATS)), default="text", show_default=True)
 @click.option("--select", callback=_codes, metavar="CODES", help="Only these codes or prefixes (E,S208,G5).")
