@@ -1,10 +1,11 @@
 """The motion stage: what happens to a move after the interpreter (the canon's machine side).
 
-It turns Cartesian moves into joint positions through the active kinematics,
-samples moves at the interpolation rate when the joints need it (kinematics on,
-or a samples file asked for), checks joint and Cartesian limits, copies the
-kinematics' user output into parameters, and hands each move with its joints
-to the output sinks.
+It owns the joints.  It switches kinematics (``KIN``, homing, the bend knife), times each move
+(the programmed feed capped by the axis limits; rapids and homing as fast as the limits allow),
+samples it at the interpolation rate when the joints are not simply the position, evaluates the
+inverse kinematics once per move on all samples, checks joint and Cartesian limits, copies the
+kinematics' user output into parameters, and hands each move with its joints to the sinks.
+See docs/kinematics.md ("Running jobs") for the rules.
 """
 from __future__ import annotations
 
@@ -15,17 +16,20 @@ from typing import Protocol
 
 import numpy as np
 
+from . import tables as t
 from .canon import AXES, PLANES, Event, Move, Pose
 from .config import MachineConfig
-from .errors import Location, MachineError, PluginError
-from .geometry import arc_extremes
+from .errors import EcncError, Location, MachineError, PluginError
+from .geometry import arc_extremes, sweep
 from .kinematics import abi
-from .kinematics.base import Kinematics, KinematicsDomainError
-from .kinematics.builtin import CylinderMapping, TrivialKinematics, bend_knife_correction
-from .kinematics.sampling import sample_arc, sample_line
+from .kinematics.base import Kinematics, KinematicsDomainError, as_pose
+from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
+from .kinematics.trajectory import Dynamics, Geometry, dynamics, geometry_of
 
-JOINT_NAMES = ("jx", "jy", "jz", "ja", "jb", "jc")
-LIMIT_SLACK = 1e-9
+LIMIT_SLACK = 1e-9          # mm or degrees beyond a position limit that still counts as on it
+DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity / maxAcceleration before it is an error
+SWITCH_TOLERANCE = 1e-6     # a joint that would have to jump further than this at a switch is an error
+PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the fastest allowed speed
 
 
 class MoveSink(Protocol):
@@ -40,11 +44,25 @@ class MoveSink(Protocol):
 
 @dataclass(frozen=True)
 class Samples:
-    """One move sampled at the interpolation rate: absolute times, Cartesian poses, joints."""
+    """One move sampled at the interpolation rate: times from the job start, Cartesian poses, joints."""
 
     t: np.ndarray
     pos: np.ndarray
     joints: np.ndarray
+
+
+@dataclass(frozen=True)
+class AxisLimits:
+    """Velocity (units/s) and acceleration (units/s^2) limits of the six axes a move is timed against."""
+
+    velocity: np.ndarray
+    acceleration: np.ndarray
+
+
+def _positive(values: Sequence[float]) -> np.ndarray:
+    """Limits as an array; a limit of 0 or less means "not set" rather than "cannot move"."""
+    array = np.asarray(values, dtype=float)
+    return np.where(array > 0.0, array, np.inf)
 
 
 def _located(move: Move) -> Location:
@@ -63,71 +81,124 @@ class MotionStage:
         self.sample_always = sample_always
         self.active: Kinematics | None = None  # None: kinematics off, joints = position
         self.tanknife = False
-        self.joints: list[float] = [0.0] * 6
+        self.knife_z_zero = 0.0                # machine Z of the work zero when tanknife was switched on
+        self.joints: Pose = (0.0,) * 6         # type: ignore[assignment]
         self.time = 0.0
         self.moves = 0
-        self._lower = np.array([j.negative_limit for j in config.joints])
-        self._upper = np.array([j.positive_limit for j in config.joints])
-        self._vmax = np.array([max(j.max_velocity, 1e-9) for j in config.joints])
-        self._plugin_call(lambda: self.plugin.control(abi.OPEN, [0.0] * 12), None)
+        joints = config.joints
+        self._lower = np.array([j.negative_limit for j in joints])
+        self._upper = np.array([j.positive_limit for j in joints])
+        self._joint_limits = AxisLimits(_positive([j.max_velocity for j in joints]),
+                                        _positive([j.max_acceleration for j in joints]))
+        self._cartesian_limits = AxisLimits(_positive(config.cartesian_max_velocity),
+                                            _positive(config.cartesian_max_acceleration))
+        self._plugin_call(lambda: self.plugin.control(abi.OPEN, [0.0] * abi.CONTROL_DATA_LEN), None)
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
         self.moves += 1
-        kin = self.active
-        samples = None
-        if kin is None and not self.sample_always and not self._bend_active():
-            self._check_exact(move)
+        checked = move.kind != "home"  # homing is what puts the joints in their range: not checked
+        if self._identity() and not self.sample_always:
+            samples = None
+            if checked:
+                self._check_exact(move)
             joints = move.end
         else:
-            samples = self._sample(move, kin)
-            joints = tuple(float(v) for v in samples.joints[-1])  # type: ignore[assignment]
-            self._check_samples(move, samples)
-        self.joints = list(joints)
-        if kin is not None:
-            self._user_output(kin)
+            start_time = self.time
+            samples = self._sample(move)
+            joints = as_pose(samples.joints[-1])
+            if checked and self._identity():
+                self._check_exact(move)
+            elif checked:
+                self._check_samples(move, samples, start_time)
+        self.joints = joints
+        if self.active is not None:
+            self._user_output(self.active, _located(move))
         for sink in self.sinks:
-            sink.move(move, joints, samples)  # type: ignore[arg-type]
+            sink.move(move, joints, samples)
 
     def event(self, event: Event) -> None:
+        if event.kind == "dwell":
+            self.time += float(event.data.get("seconds", 0.0))
         for sink in self.sinks:
             sink.event(event)
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
+        """``KIN ON|OFF|CTRL|<mapping>`` and ``tanknife on|off``; returns the Cartesian position after it."""
         where = Location(path, line)
         if mode == "ON":
-            data = list(pos) + [0.0] * 6
-            self._control(abi.ON, data, where)
-            self.active = self.plugin
-            new = self._plugin_call(lambda: self.plugin.forward(tuple(self.joints)), where)  # type: ignore[arg-type]
-            self._user_output(self.plugin)
-            return tuple(float(v) for v in new)  # type: ignore[return-value]
+            self._control(abi.ON, [*pos, *[0.0] * 6], where)
+            return self._switch(self.plugin, f"KIN ON ({self.plugin.name})", where)
         if mode == "OFF":
             if self.active is self.plugin:
-                self._control(abi.OFF, [0.0] * 12, where)
-            self.active = None
-            return tuple(self.joints)  # type: ignore[return-value]
+                self._control(abi.OFF, [0.0] * abi.CONTROL_DATA_LEN, where)
+            return self._switch(None, "KIN OFF", where)
         if mode == "CTRL":
-            control_id = int(args[0])
-            data = [*args[1:], *[0.0] * (13 - len(args))]
-            self._control(control_id, data, where)
-            return pos
-        if mode.startswith("TANKNIFE"):
+            self._control(int(args[0]), [*args[1:], *[0.0] * (abi.CONTROL_DATA_LEN + 1 - len(args))], where)
+            return self._switch(self.active, f"KIN CTRL {int(args[0])}", where) if self.active else pos
+        if mode in ("TANKNIFE_ON", "TANKNIFE_OFF"):
             self.tanknife = mode == "TANKNIFE_ON"
+            self.knife_z_zero = args[2] if len(args) > 2 else 0.0
+            self._check_no_jump(pos, f"tanknife {'on' if self.tanknife else 'off'}", where)
             return pos
-        zero_x, zero_y = args[0], args[1]
-        wrapped_x = mode in ("X2A", "X2XA")
-        self.active = self._plugin_call(
-            lambda: CylinderMapping(mode, self.config.kinematics_settings, zero_x if wrapped_x else zero_y,
-                                    self.joints[2]), where)
-        return pos
+        if mode.upper() in MAPPINGS:
+            return self._start_mapping(mode.upper(), args, where)
+        raise MachineError(f"unknown kinematics mode {mode!r}", where)
 
     def close(self) -> None:
-        self._plugin_call(lambda: self.plugin.control(abi.CLOSE, [0.0] * 12), None)
-        for sink in self.sinks:
-            sink.close()
+        try:
+            self._plugin_call(lambda: self.plugin.control(abi.CLOSE, [0.0] * abi.CONTROL_DATA_LEN), None)
+        finally:
+            for sink in self.sinks:
+                sink.close()
+
+    # ---------------------------------------------------------------- switching
+    def _start_mapping(self, mode: str, args: tuple[float, ...], where: Location) -> Pose:
+        """``KIN X2A .. Y2YAZ2ZC``: args are the active work zero's machine X and Y."""
+        if self.active is self.plugin:
+            self._control(abi.OFF, [0.0] * abi.CONTROL_DATA_LEN, where)
+        zero = args[0] if MAPPINGS[mode].wrap == 0 else args[1]
+        mapping = self._plugin_call(
+            lambda: CylinderMapping(mode, self.config.kinematics_settings, zero, self.joints[2]), where)
+        return self._switch(mapping, f"KIN {mode}", where)  # type: ignore[arg-type]
+
+    def _switch(self, kin: Kinematics | None, label: str, where: Location) -> Pose:
+        """Make ``kin`` active without moving a motor: the position is found from the joints."""
+        self.active = kin
+        self.write_param(t.KIN_TYPE, float((kin or self.plugin).kin_type()))
+        pos = self._forward(self.joints, where)
+        self._check_no_jump(pos, label, where)
+        if kin is not None:
+            self._user_output(kin, where)
+        return pos
+
+    def _forward(self, joints: Pose, where: Location) -> Pose:
+        """Cartesian position of ``joints`` under the active kinematics, bend knife correction removed."""
+        kin = self.active
+
+        def forward(values: Pose) -> Pose:
+            return as_pose(values) if kin is None else self._plugin_call(lambda: as_pose(kin.forward(values)), where)
+
+        pos = forward(joints)
+        if not self._bend_active():
+            return pos
+        # the correction depends on Z and C only, which it does not change itself
+        return forward(as_pose(np.array(joints) - self._bend_offset(np.array([pos]))[0]))
+
+    def _check_no_jump(self, pos: Pose, label: str, where: Location) -> None:
+        """Switching kinematics must not move a motor: the new inverse of ``pos`` must give the current joints."""
+        joints = self._joints_of(np.array([pos], dtype=float), where)[0]
+        jump = np.abs(joints - np.array(self.joints))
+        if jump.max() > SWITCH_TOLERANCE:
+            axis = int(jump.argmax())
+            raise MachineError(f"{label} would make joint {AXES[axis]} jump from {self.joints[axis]:.4f} to "
+                               f"{joints[axis]:.4f}; move the machine to where both agree first", where)
 
     # ---------------------------------------------------------------- helpers
+    def _identity(self) -> bool:
+        """Joints equal the position: kinematics off or trivial, and no bend knife correction."""
+        return (self.active is None or isinstance(self.active, TrivialKinematics)) and not self._bend_active()
+
     def _bend_active(self) -> bool:
         return self.tanknife and self.config.tanknife.bending_angle != 0.0
 
@@ -140,115 +211,173 @@ class MotionStage:
         """Run plug-in code; its exceptions become a clear error naming the plug-in (exit 70)."""
         try:
             return call()
-        except MachineError as err:
+        except EcncError as err:
             if err.location is None:
                 err.location = where
             raise
         except Exception as err:  # a user plug-in may raise anything
-            raise PluginError(f"kinematics plug-in {self.plugin.name} failed: {type(err).__name__}: {err}",
-                              where) from None
+            name = getattr(self.active or self.plugin, "name", "?")
+            raise PluginError(f"kinematics plug-in {name} failed: {type(err).__name__}: {err}", where) from None
 
-    def _user_output(self, kin: Kinematics) -> None:
+    def _user_output(self, kin: Kinematics, where: Location) -> None:
+        """Copy the kinematics' user output into #start .. #start+n-1 (missing values are 0)."""
         start, count = self.config.user_output_start, self.config.user_output_count
         if start <= 0 or count <= 0:
             return
-        values = list(self._plugin_call(kin.user_output, None))[:count]  # type: ignore[call-overload]
-        values += [0.0] * (count - len(values))
-        for offset, value in enumerate(values):
-            self.write_param(start + offset, float(value))
+        values = self._plugin_call(lambda: [float(v) for v in kin.user_output()][:count], where)
+        values += [0.0] * (count - len(values))  # type: ignore[operator]
+        for offset, value in enumerate(values):  # type: ignore[arg-type]
+            self.write_param(start + offset, value)
 
-    def _feed_mm_s(self, move: Move) -> float:
-        if move.feed > 0:
-            return move.feed / 60.0
-        delta = np.abs(np.subtract(move.end, move.start))
-        duration = float(np.max(delta / self._vmax)) * (1.0 / max(self.config.g0_velocity_factor, 1e-9))
-        length = math.dist(move.start[:3], move.end[:3]) or float(np.linalg.norm(delta[3:]))
-        return length / duration if duration > 0 else 1.0
+    def _bend_offset(self, pos: np.ndarray) -> np.ndarray:
+        """The bend knife's joint XY correction at (N, 6) poses (its Z band is in work coordinates)."""
+        knife = self.config.tanknife
+        offset = np.zeros_like(pos)
+        zero = np.zeros(len(pos))
+        offset[:, 0], offset[:, 1] = bend_knife_correction(zero, zero, pos[:, 2] - self.knife_z_zero, pos[:, 5],
+                                                           knife.bending_angle, knife.z_hi, knife.z_lo)
+        return offset
 
-    def _sample(self, move: Move, kin: Kinematics | None) -> Samples:
-        dt = self.config.interpolation_time
-        feed = self._feed_mm_s(move)
-        if move.arc is not None:
-            first, second, normal = PLANES[move.arc.plane]
-            center = list(move.start[:3])
-            named = move.arc.center
-            c1, c2 = (named[1], named[0]) if move.arc.plane == "XZ" else named
-            center[first], center[second] = c1, c2
-            t, pos = sample_arc(move.start, move.end, center, normal, move.arc.turn, feed, dt)
-        else:
-            t, pos = sample_line(move.start, move.end, feed, dt)
+    def _joints_of(self, pos: np.ndarray, where: Location) -> np.ndarray:
+        """Inverse kinematics of (N, 6) poses in one call, bend correction included; checked for sanity."""
+        kin = self.active
         if kin is None:
             joints = pos.copy()
         else:
             try:
-                joints = np.asarray(self._plugin_call(lambda: kin.inverse_many(pos), _located(move)))
+                joints = self._plugin_call(lambda: _checked_rows(kin.inverse_many(pos), len(pos)), where)
             except KinematicsDomainError as err:
-                bad = pos[err.sample or 0]
-                raise MachineError(f"position ({', '.join(f'{v:.4f}' for v in bad[:3])}) cannot be reached "
-                                   f"by {kin.name}: {err.message}", _located(move)) from None
-        if self._bend_active():
-            knife = self.config.tanknife
-            jx, jy = bend_knife_correction(joints[:, 0], joints[:, 1], pos[:, 2], pos[:, 5],
-                                           knife.bending_angle, knife.z_hi, knife.z_lo)
-            joints[:, 0], joints[:, 1] = jx, jy
-        start = self.time
+                raise MachineError(f"{err.message} (kinematics {kin.name})", where) from None
+        return joints + self._bend_offset(pos) if self._bend_active() else joints  # type: ignore[return-value]
+
+    def _limits_for(self, move: Move) -> AxisLimits:
+        """What a move is timed against: joints with kinematics off, [KINEMATICS] (or the plug-in) with them on."""
+        if move.kind == "home":
+            speed = move.feed / 60.0 if move.feed > 0 else None
+            return AxisLimits(np.array([speed or abs(j.home_velocity) or np.inf for j in self.config.joints]),
+                              self._joint_limits.acceleration)
+        limits = self._joint_limits if self._identity() else self._plugin_limits(move) or self._cartesian_limits
+        if move.kind == "rapid":
+            return AxisLimits(limits.velocity * self.config.g0_velocity_factor, limits.acceleration)
+        return limits
+
+    def _plugin_limits(self, move: Move) -> AxisLimits | None:
+        """A compiled plug-in's KinematicsInverseMaxFeed(Arc) answer for this move, when it exports one."""
+        kin = self.active
+        if move.arc is None:
+            ask = getattr(kin, "inverse_max_feed", None)
+            answer = ask(move.start, move.end) if ask else None
+        else:
+            ask = getattr(kin, "inverse_max_feed_arc", None)
+            geo = geometry_of(move)
+            normal = [0.0, 0.0, 0.0]
+            normal[geo.normal] = 1.0
+            answer = ask(move.start, move.end, geo.center, normal, geo.turns) if ask else None
+        return None if answer is None else AxisLimits(_positive(answer[0]), _positive(answer[1]))
+
+    def _sample(self, move: Move) -> Samples:
+        """Time and sample a move, and evaluate the joints on every sample."""
+        dt = self.config.interpolation_time
+        geo = geometry_of(move, self.config.full_circle_theta_epsilon)
+        limits = self._limits_for(move)
+        where = _located(move)
+        start = np.array(move.start, dtype=float)
+        fastest = move.feed <= 0.0 or move.kind == "home"  # rapids and homing: as fast as the limits allow
+        speed = move.feed / 60.0 if not fastest else _first_guess(geo, limits.velocity)
+        for attempt in range(PLAN_PASSES + 1):
+            t, pos = geo.sample(speed, dt)
+            factor = dynamics(0.0, start, t, pos, dt).speed_factor(limits.velocity, limits.acceleration)
+            joints = self._joints_of(pos, where) if not self._identity() else pos.copy()
+            if fastest and not self._identity() and move.kind != "home":
+                joint_dynamics = dynamics(0.0, np.array(self.joints), t, joints, dt)
+                factor = max(factor, joint_dynamics.speed_factor(
+                    self._joint_limits.velocity * self.config.g0_velocity_factor, self._joint_limits.acceleration))
+            done = factor <= 1.0 + 1e-9 and (not fastest or factor >= 0.999 or factor == 0.0)
+            if done or attempt == PLAN_PASSES or not math.isfinite(speed / factor):
+                break
+            speed /= factor
+        start_time = self.time
         self.time += float(t[-1])
-        return Samples(t + start, pos, joints)
+        return Samples(t + start_time, pos, joints)
 
     def _limit_error(self, move: Move, axis: int, value: float) -> MachineError:
         joint = self.config.joints[axis]
-        low, high = joint.negative_limit, joint.positive_limit
         return MachineError(f"joint {AXES[axis]} would reach {value:.4f}, outside its limits "
-                            f"[{low:g}, {high:g}] ([JOINT_{axis}] in the ini)", _located(move))
+                            f"[{joint.negative_limit:g}, {joint.positive_limit:g}] ([JOINT_{axis}])", _located(move))
 
     def _check_exact(self, move: Move) -> None:
-        """Trivial kinematics: the end point and an arc's extremes bound the whole move."""
+        """Joints = position: the end point and an arc's extremes bound the whole move."""
         points = [move.end]
         if move.arc is not None:
             first, second, _ = PLANES[move.arc.plane]
-            named = move.arc.center
-            center = (named[1], named[0]) if move.arc.plane == "XZ" else named
-            s = (move.start[first], move.start[second])
-            radius = math.hypot(s[0] - center[0], s[1] - center[1])
-            start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
-            end_angle = math.atan2(move.end[second] - center[1], move.end[first] - center[0])
+            geo = geometry_of(move)
+            assert geo.center is not None
+            center = (geo.center[first], geo.center[second])
+            s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
             clockwise = move.arc.turn < 0
-            sweep = ((start_angle - end_angle) if clockwise else (end_angle - start_angle)) % (2 * math.pi)
-            if move.arc.full_turns or sweep < 1e-12:
-                sweep = 2 * math.pi
-            for p1, p2 in arc_extremes(center, radius, start_angle, sweep, clockwise):
+            angle, _ = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
+            start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
+            radius = math.hypot(s[0] - center[0], s[1] - center[1])
+            for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):
                 point = list(move.end)
                 point[first], point[second] = p1, p2
-                points.append(tuple(point))  # type: ignore[arg-type]
+                points.append(as_pose(point))
         for point in points:
             for axis, value in enumerate(point):
-                if value < self._lower[axis] - LIMIT_SLACK or value > self._upper[axis] + LIMIT_SLACK:
+                if not self._lower[axis] - LIMIT_SLACK <= value <= self._upper[axis] + LIMIT_SLACK:
                     raise self._limit_error(move, axis, value)
 
-    def _check_cartesian(self, move: Move, pos: np.ndarray) -> None:
-        """With kinematics on, [KINEMATICS] limits bound the Cartesian position."""
-        low = np.array(self.config.cartesian_negative_limits)
-        high = np.array(self.config.cartesian_positive_limits)
-        outside = (pos < low - LIMIT_SLACK) | (pos > high + LIMIT_SLACK)
+    def _check_samples(self, move: Move, samples: Samples, start_time: float) -> None:
+        """Kinematics on: Cartesian limits, then joint positions, velocities and accelerations."""
+        where = _located(move)
+        if self.active is not None:
+            low = np.array(self.config.cartesian_negative_limits)
+            high = np.array(self.config.cartesian_positive_limits)
+            outside = (samples.pos < low - LIMIT_SLACK) | (samples.pos > high + LIMIT_SLACK)
+            if outside.any():
+                row, axis = np.argwhere(outside)[0]
+                raise MachineError(f"{AXES[axis]} would reach {samples.pos[row, axis]:.4f}, outside the Cartesian "
+                                   f"limits [{low[axis]:g}, {high[axis]:g}] of [KINEMATICS]", where)
+        joints = samples.joints
+        outside = (joints < self._lower - LIMIT_SLACK) | (joints > self._upper + LIMIT_SLACK)
         if outside.any():
             row, axis = np.argwhere(outside)[0]
-            raise MachineError(f"{AXES[axis]} would reach {pos[row, axis]:.4f}, outside the Cartesian limits "
-                               f"[{low[axis]:g}, {high[axis]:g}] of [KINEMATICS]", _located(move))
-
-    def _check_samples(self, move: Move, samples: Samples) -> None:
-        joints = samples.joints
-        if self.active is not None:
-            self._check_cartesian(move, samples.pos)
-        low = joints < self._lower - LIMIT_SLACK
-        high = joints > self._upper + LIMIT_SLACK
-        if low.any() or high.any():
-            row, axis = np.argwhere(low | high)[0]
             raise self._limit_error(move, int(axis), float(joints[row, axis]))
-        if len(joints) > 2:
-            dt = np.diff(samples.t)[1:, None]
-            speed = np.abs(np.diff(joints[1:], axis=0)) / np.where(dt > 0, dt, np.inf)
-            over = speed > self._vmax * 1.01 + 1e-9
-            if over.any():
-                row, axis = np.argwhere(over)[0]
-                raise MachineError(f"joint {AXES[axis]} would move at {speed[row, axis]:.1f} units/s, above its "
-                                   f"maxVelocity {self._vmax[axis]:g} ([JOINT_{axis}])", _located(move))
+        measured = dynamics(start_time, np.array(self.joints), samples.t, joints, self.config.interpolation_time)
+        self._check_dynamics(measured, where)
+
+    def _check_dynamics(self, measured: Dynamics, where: Location) -> None:
+        limits = self._joint_limits
+        v_ratio, a_ratio = measured.ratios(limits.velocity, limits.acceleration)
+        if v_ratio.max() > DYNAMICS_SLACK:
+            axis = int(v_ratio.argmax())
+            raise MachineError(f"joint {AXES[axis]} would move at {measured.velocity[axis]:.1f} units/s, above its "
+                               f"maxVelocity {limits.velocity[axis]:g} ([JOINT_{axis}]); lower the feed", where)
+        if a_ratio.max() > DYNAMICS_SLACK:
+            axis = int(a_ratio.argmax())
+            raise MachineError(f"joint {AXES[axis]} would accelerate at {measured.acceleration[axis]:.1f} "
+                               f"units/s^2, above its maxAcceleration {limits.acceleration[axis]:g} "
+                               f"([JOINT_{axis}]); lower the feed", where)
+
+
+def _checked_rows(joints: object, count: int) -> np.ndarray:
+    """A plug-in's inverse_many result as an (N, 6) float array of finite numbers."""
+    rows = np.asarray(joints, dtype=float)
+    if rows.shape != (count, 6):
+        raise ValueError(f"inverse_many returned shape {rows.shape}, expected ({count}, 6)")
+    if not np.isfinite(rows).all():
+        raise ValueError("inverse_many returned a joint that is not a finite number")
+    return rows
+
+
+def _first_guess(geo: Geometry, max_velocity: np.ndarray) -> float:
+    """Path speed at which the straight chord of a move keeps every axis within its velocity limit."""
+    delta = np.abs(np.subtract(geo.end, geo.start))
+    linear = float(np.linalg.norm(delta[:3]))
+    length = linear if linear > 0.0 else float(np.linalg.norm(delta[3:]))
+    if length == 0.0:
+        return float(np.min(max_velocity[:3])) if np.isfinite(max_velocity[:3]).any() else 1.0
+    with np.errstate(divide="ignore"):
+        bound = np.where(delta > 0.0, max_velocity * length / delta, np.inf)
+    speed = float(bound.min())
+    return speed if math.isfinite(speed) else 1000.0

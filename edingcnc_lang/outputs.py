@@ -46,12 +46,17 @@ class TraceWriter:
 
 
 class SamplesWriter:
-    """The interpolated trajectory: CSV rows as moves arrive, or one .npz array at the end."""
+    """The interpolated trajectory: CSV rows as moves arrive, or one .npz array at the end.
+
+    Rows are strictly increasing in time: a move that takes no time (its single sample repeats
+    the previous end point) adds no row.  The .npz file holds one 1-D array per column name.
+    """
 
     def __init__(self, path: Path) -> None:
         self.path = path
         self._npz = path.suffix.lower() == ".npz"
         self._chunks: list[np.ndarray] = []
+        self._last_time = -np.inf
         self._file = None if self._npz else _open_for_writing(path)
         if self._file is not None:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
@@ -59,7 +64,10 @@ class SamplesWriter:
     def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
         if samples is None:
             return
-        rows = np.column_stack([samples.t, samples.pos, samples.joints])
+        rows = np.column_stack([samples.t, samples.pos, samples.joints])[samples.t > self._last_time]
+        if not len(rows):
+            return
+        self._last_time = float(rows[-1, 0])
         if self._file is None:
             self._chunks.append(rows)
         else:

@@ -49,23 +49,25 @@ def sample_line(start: Sequence[float], end: Sequence[float], feed: float, dt: f
     return t, pts
 
 
-def arc_sweep(start_angle: float, end_angle: float, turns: int) -> float:
+def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsilon: float = 1e-12) -> float:
     """Signed angle swept (radians): ``turns`` > 0 counter-clockwise, < 0 clockwise.
 
     |turns| = 1 goes the short way round in the requested direction (a full circle when start
-    and end coincide); each further turn adds one full revolution.
+    and end are less than ``full_circle_epsilon`` radians apart, as ``[INTERPRETER]
+    fullCircleThetaEpsilon`` decides); each further turn adds one full revolution.
     """
     if turns == 0:
         raise ValueError("turns must be non-zero: its sign is the direction of the arc")
     direction = 1.0 if turns > 0 else -1.0
     sweep = (direction * (end_angle - start_angle)) % (2.0 * math.pi)
-    if sweep <= 1e-12:
+    if sweep <= max(full_circle_epsilon, 1e-12):
         sweep = 2.0 * math.pi
     return direction * (sweep + 2.0 * math.pi * (abs(turns) - 1))
 
 
 def sample_arc(start: Sequence[float], end: Sequence[float], center: Sequence[float], normal: int,
-               turns: int, feed: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+               turns: int, feed: float, dt: float, full_circle_epsilon: float = 1e-12
+               ) -> tuple[np.ndarray, np.ndarray]:
     """Samples of an arc or helix about ``center`` in the plane normal to axis ``normal``.
 
     ``normal`` is 2 for G17 (XY), 1 for G18 (ZX) and 0 for G19 (YZ); the in-plane axes are
@@ -79,7 +81,7 @@ def sample_arc(start: Sequence[float], end: Sequence[float], center: Sequence[fl
     r0 = math.hypot(p0[u] - cu, p0[v] - cv)
     r1 = math.hypot(p1[u] - cu, p1[v] - cv)
     a0 = math.atan2(p0[v] - cv, p0[u] - cu)
-    sweep = arc_sweep(a0, math.atan2(p1[v] - cv, p1[u] - cu), turns)
+    sweep = arc_sweep(a0, math.atan2(p1[v] - cv, p1[u] - cu), turns, full_circle_epsilon)
     delta = p1 - p0
     linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, delta[normal])
     t = _times(_path_length(linear, delta[3:]), feed, dt)

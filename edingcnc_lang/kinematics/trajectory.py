@@ -1,0 +1,94 @@
+"""One move as a timed path: its geometry, its samples at a given speed, and the speeds and
+accelerations those samples ask of each axis.
+
+The motion stage uses these to pick the speed a move runs at (the programmed feed, capped by
+the axis limits; rapids as fast as the limits allow) and to check the joints against their
+``maxVelocity``/``maxAcceleration``.  Dynamics are measured on the samples themselves, so the
+same code serves Cartesian axes and joints, lines and arcs, and any kinematics.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from edingcnc_lang.canon import PLANES, Move
+from edingcnc_lang.kinematics.sampling import sample_arc, sample_line
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """The path of a move in machine coordinates; ``center`` is None for a straight move."""
+
+    start: tuple[float, ...]
+    end: tuple[float, ...]
+    center: tuple[float, float, float] | None = None
+    normal: int = 2
+    turns: int = 1
+    full_circle_epsilon: float = 1e-12
+
+    def sample(self, speed: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+        """Times after the move start and poses, every ``dt`` at ``speed`` (mm/s, or deg/s if rotary only)."""
+        if self.center is None:
+            return sample_line(self.start, self.end, speed, dt)
+        return sample_arc(self.start, self.end, self.center, self.normal, self.turns, speed, dt,
+                          self.full_circle_epsilon)
+
+
+def geometry_of(move: Move, full_circle_epsilon: float = 1e-12) -> Geometry:
+    """The path of a canon move (arcs: centre in all three linear axes, normal axis, signed turns)."""
+    if move.arc is None:
+        return Geometry(move.start, move.end)
+    first, second, normal = PLANES[move.arc.plane]
+    c1, c2 = move.arc.center
+    if move.arc.plane == "XZ":  # the canon names the XZ centre (x, z); the plane's order is (z, x)
+        c1, c2 = c2, c1
+    center = list(move.start[:3])
+    center[first], center[second] = c1, c2
+    turns = move.arc.turn * max(1, move.arc.full_turns)
+    return Geometry(move.start, move.end, (center[0], center[1], center[2]), normal, turns, full_circle_epsilon)
+
+
+@dataclass(frozen=True)
+class Dynamics:
+    """Peak absolute velocity and acceleration of each axis along a sampled move."""
+
+    velocity: np.ndarray
+    acceleration: np.ndarray
+
+    def ratios(self, max_velocity: np.ndarray, max_acceleration: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Per axis, how far the move goes beyond its limits (1 = exactly at the limit)."""
+        return self.velocity / max_velocity, self.acceleration / max_acceleration
+
+    def speed_factor(self, max_velocity: np.ndarray, max_acceleration: np.ndarray) -> float:
+        """The factor to divide the path speed by to stay within both limits (velocity ~ v, accel ~ v^2)."""
+        v_ratio, a_ratio = self.ratios(max_velocity, max_acceleration)
+        return max(float(v_ratio.max(initial=0.0)), math.sqrt(float(a_ratio.max(initial=0.0))))
+
+
+def dynamics(start_time: float, start: np.ndarray, t: np.ndarray, points: np.ndarray, dt: float) -> Dynamics:
+    """Velocities between consecutive samples (from the move's start point on) and accelerations
+    between consecutive steps inside the move.
+
+    Steps shorter than dt/2 (the shortened last step of a move) are left out of the
+    accelerations: over such a short step rounding dominates the difference quotient.  The
+    velocity step where one move meets the next is not an acceleration of either (the
+    controller's look-ahead blends it), so it is not measured here.
+    """
+    times = np.concatenate(([start_time], t))
+    pts = np.vstack((start, points))
+    steps = np.diff(times)
+    moving = steps > 0.0
+    width = pts.shape[1]
+    if not moving.any():
+        return Dynamics(np.zeros(width), np.zeros(width))
+    velocity = np.diff(pts, axis=0)[moving] / steps[moving, None]
+    peak_velocity = np.abs(velocity).max(axis=0)
+    long_steps = steps[moving]
+    usable = (long_steps[:-1] >= dt / 2.0) & (long_steps[1:] >= dt / 2.0)
+    if not usable.any():
+        return Dynamics(peak_velocity, np.zeros(width))
+    between = (long_steps[:-1] + long_steps[1:])[usable, None] / 2.0
+    acceleration = np.diff(velocity, axis=0)[usable] / between
+    return Dynamics(peak_velocity, np.abs(acceleration).max(axis=0))
