@@ -397,36 +397,54 @@ class Interpreter:
         g_codes: dict[str, int] = {}
         m_codes: dict[str, int] = {}
         for word in block.words:
-            letter = word.letter
-            number = value(word.value)
-            if letter == "G" or letter == "M":
-                key = G(number)
-                table, found = (t.G_GROUPS, g_codes) if letter == "G" else (t.M_GROUPS, m_codes)
-                group = table.get(key)
-                if group is None and letter == "G":
-                    raise self.fail(f"unknown G code {t.code_name('G', key)}", word.span)
-                group = group or f"user_{key}"
-                if group in found:
-                    raise self.fail(f"{t.code_name(letter, found[group])} and {t.code_name(letter, key)} "
-                                    f"are in the same modal group; use one per line", word.span)
-                found[group] = key
-            elif letter in words:
-                raise self.fail(f"word {letter} appears twice on this line", word.span)
-            else:
-                words[letter] = number
-        if len(m_codes) > t.MAX_M_WORDS:
-            raise self.fail(f"{len(m_codes)} M words on one line; at most {t.MAX_M_WORDS} are allowed", block.span)
+            self._add_word(words, g_codes, m_codes, word.letter, value(word.value), word.span.col)
         # Deferred assignment: every expression of the line is evaluated before any parameter changes.
         pending = [(self.evaluator.index(a.target), value(a.value), a.span) for a in block.assigns]
         for index, number, span in pending:
             self.params.write(index, number, self.where(span))
         if block.message is not None:
             self.message("msg", block.message)
-        user_m = [k for k in m_codes.values() if self._user_m_sub(k)]
-        if user_m:
-            self._call_m_sub(user_m[0], words, g_codes, m_codes, block.span)
-            return
-        self._execute_line(words, g_codes, m_codes, block.span)
+        self._dispatch(words, g_codes, m_codes, block.span)
+
+    def _exec_plain(self, block: n.PlainBlock) -> None:
+        words: dict[str, float] = {}
+        g_codes: dict[str, int] = {}
+        m_codes: dict[str, int] = {}
+        for letter, number, col in block.words:
+            self._add_word(words, g_codes, m_codes, letter, number, col)
+        self._dispatch(words, g_codes, m_codes, block.span)
+
+    def _add_word(self, words: dict[str, float], g_codes: dict[str, int], m_codes: dict[str, int],
+                  letter: str, number: float, col: int) -> None:
+        """Sort one evaluated word into axis/parameter words, G codes by group and M codes by group."""
+        if letter == "G" or letter == "M":
+            key = int(round(number * 10))
+            table, found = (t.G_GROUPS, g_codes) if letter == "G" else (t.M_GROUPS, m_codes)
+            group = table.get(key)
+            if group is None:
+                if letter == "G":
+                    raise MachineError(f"unknown G code {t.code_name('G', key)}", Location(self.path, self.line, col))
+                group = f"user_{key}"
+            if group in found:
+                raise MachineError(f"{t.code_name(letter, found[group])} and {t.code_name(letter, key)} are in the "
+                                   "same modal group; use one per line", Location(self.path, self.line, col))
+            found[group] = key
+        elif letter in words:
+            raise MachineError(f"word {letter} appears twice on this line", Location(self.path, self.line, col))
+        else:
+            words[letter] = number
+
+    def _dispatch(self, words: dict[str, float], g_codes: dict[str, int], m_codes: dict[str, int],
+                  span: n.Span) -> None:
+        """Run the sorted words of one line: an M-code sub call, or the built-in actions."""
+        if len(m_codes) > t.MAX_M_WORDS:
+            raise self.fail(f"{len(m_codes)} M words on one line; at most {t.MAX_M_WORDS} are allowed", span)
+        if m_codes:
+            user_m = [k for k in m_codes.values() if self._user_m_sub(k)]
+            if user_m:
+                self._call_m_sub(user_m[0], words, g_codes, m_codes, span)
+                return
+        self._execute_line(words, g_codes, m_codes, span)
 
     def _user_m_sub(self, key: int) -> str | None:
         """The sub overriding M<key>, unless we are inside it (then the built-in runs)."""
@@ -905,7 +923,7 @@ def _fmt(point: tuple[float, float]) -> str:
 
 
 Interpreter._EXECUTE = {
-    n.Block: Interpreter._exec_block, n.If: Interpreter._exec_if, n.While: Interpreter._exec_while,
+    n.Block: Interpreter._exec_block, n.PlainBlock: Interpreter._exec_plain, n.If: Interpreter._exec_if, n.While: Interpreter._exec_while,
     n.GoSub: Interpreter._exec_gosub, n.Sub: Interpreter._exec_sub, n.Message: Interpreter._exec_message,
     n.Dialog: Interpreter._exec_dialog, n.LogFile: Interpreter._exec_logfile, n.Home: Interpreter._exec_home,
     n.PrepareLinDeltaHome: Interpreter._exec_prepare_delta, n.Kin: Interpreter._exec_kin,

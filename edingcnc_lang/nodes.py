@@ -116,6 +116,20 @@ class Block:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
+@dataclass(frozen=True, slots=True)
+class PlainBlock:
+    """A line of literal words only, as the run's fast path reads it (most CAM output).
+
+    Equivalent to the Block the grammar builds for the same line (a property test
+    checks this); it skips the per-word nodes because a run only needs each word's
+    letter, value and column.
+    """
+
+    words: tuple[tuple[str, float, int], ...]  # (letter upper-case, value, column)
+    line_number: int | None = None
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
 MessageItem = Union[str, Expr]
 
 
@@ -219,7 +233,7 @@ class Sub:
     end_span: Span = field(default=NO_SPAN, compare=False)
 
 
-Stmt = Union[Block, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,
+Stmt = Union[Block, PlainBlock, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,
              Command, GoSub, If, While, Sub]
 
 

@@ -266,6 +266,19 @@ def _fast_block(text: str, path: str, line: int) -> n.Block:
     return _make_block(words, [], None, False, n.Span(path, line, first.col, line, last.end_col))
 
 
+def _fast_plain(text: str, path: str, line: int) -> n.PlainBlock:
+    """The PlainBlock for a line of plain words: one node per line instead of one per word."""
+    semicolon = text.find(";")
+    matches = list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
+    words = [(m.group(1).upper(), float(m.group(2)), m.start() + 1) for m in matches]
+    line_number = None
+    if words[0][0] == "N":
+        line_number = int(words[0][1])
+        del words[0]
+    span = n.Span(path, line, matches[0].start() + 1, line, matches[-1].end() + 1)
+    return n.PlainBlock(tuple(words), line_number, span)
+
+
 def is_fast_line(text: str) -> bool:
     """True when the fast path handles this line (used by the equivalence tests)."""
     return _FAST_LINE.match(text) is not None
@@ -414,9 +427,11 @@ class StatementReader:
     line); ``unit`` holds the ``@unit`` directive once the first line is read.
     """
 
-    def __init__(self, lines: Iterable[str], path: str, *, skip_plain: bool = False) -> None:
+    def __init__(self, lines: Iterable[str], path: str, *, skip_plain: bool = False,
+                 plain_blocks: bool = False) -> None:
         self.path = path
         self.skip_plain = skip_plain  # checking only: top-level plain word lines need no nodes
+        self.plain_blocks = plain_blocks  # running: plain word lines become PlainBlock nodes
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self._lines = lines
@@ -431,8 +446,16 @@ class StatementReader:
         for lineno, text in enumerate(self._lines, 1):
             if lineno == 1 and self._read_unit(text):
                 continue
-            if self.skip_plain and not stack and _FAST_LINE.match(text):
-                continue
+            if (self.skip_plain or self.plain_blocks) and _FAST_LINE.match(text):
+                if self.plain_blocks:
+                    plain = _fast_plain(text, path, lineno)
+                    if stack:
+                        stack[-1].add(plain)
+                    else:
+                        yield plain
+                    continue
+                if not stack:
+                    continue
             try:
                 result = parse_line(text, path, lineno)
             except _LineError as err:
@@ -523,9 +546,11 @@ class StatementReader:
 
 # --------------------------------------------------------------------------- whole files
 
-def read_statements(path: str | os.PathLike[str], *, skip_plain: bool = False) -> StatementReader:
+def read_statements(path: str | os.PathLike[str], *, skip_plain: bool = False,
+                    plain_blocks: bool = False) -> StatementReader:
     """A streaming reader over a file (statements are parsed as you iterate)."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), skip_plain=skip_plain)
+    return StatementReader(iter_file_lines(path), os.fspath(path), skip_plain=skip_plain,
+                           plain_blocks=plain_blocks)
 
 
 def check_file(path: str | os.PathLike[str]) -> dict[str, n.Sub]:

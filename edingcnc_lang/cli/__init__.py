@@ -5,6 +5,7 @@ import click
 
 from .. import __version__
 from .kins_cmd import kins
+from .lint_cmd import lint
 from .parse_cmd import parse
 from .run_cmd import run
 
@@ -17,4 +18,5 @@ def main() -> None:
 
 main.add_command(parse)
 main.add_command(kins)
+main.add_command(lint)
 main.add_command(run)

@@ -57,14 +57,10 @@ def test_stdlib_lints_clean() -> None:
     assert lint_paths([ROOT / "stdlib"]) == []
 
 
-EXAMPLES = sorted((ROOT / "examples").glob("*.nc"))
-# probe_corner.nc probes outside the simulation guard (G504): reported, not ours to edit.
-KNOWN = {"probe_corner.nc": "G504: G38.2 outside the simulation guard"}
+EXAMPLES = sorted((ROOT / "examples").rglob("*.nc"))
 
 
-@pytest.mark.parametrize("example", [
-    pytest.param(p, marks=pytest.mark.xfail(reason=KNOWN[p.name], strict=True)) if p.name in KNOWN else p
-    for p in EXAMPLES], ids=[p.name for p in EXAMPLES])
+@pytest.mark.parametrize("example", EXAMPLES, ids=[str(p.relative_to(ROOT)) for p in EXAMPLES])
 def test_example_lints_clean(example: Path) -> None:
     assert [f"{d.line}: {d.code}" for d in lint_paths([example])] == []
 
