@@ -62,7 +62,7 @@ FUNCTIONS: dict[str, Callable[[float, n.Span], float]] = {
                      "the argument must lie between -1 and 1"),
     "COS": _checked("COS", _any, lambda x: math.cos(math.radians(x)), ""),
     "SIN": _checked("SIN", _any, lambda x: math.sin(math.radians(x)), ""),
-    "TAN": _checked("TAN", lambda x: math.cos(math.radians(x)) != 0.0, lambda x: math.tan(math.radians(x)),
+    "TAN": _checked("TAN", lambda x: abs(math.cos(math.radians(x))) > 1e-12, lambda x: math.tan(math.radians(x)),
                     "the tangent of this angle is infinite"),
     "EXP": _checked("EXP", lambda x: x < 709.0, math.exp, "the result is too large"),
     "LN": _checked("LN", lambda x: x > 0.0, math.log, "the argument must be greater than 0"),

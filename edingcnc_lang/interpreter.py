@@ -8,7 +8,7 @@ behind the canon.  One Interpreter is one machine; there is no global state.
 from __future__ import annotations
 
 import math
-import shlex
+import re
 import subprocess
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
@@ -91,6 +91,7 @@ class Interpreter:
         self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
         self.tanknife = False
+        self.ended_by = "end of file"
         self.messages: list[Event] = []
         self.path = "<string>"
         self.line = 0
@@ -126,6 +127,9 @@ class Interpreter:
 
     def _offsets_changed(self) -> None:
         self._offset = None
+        system = self.params.values[t.COORD_SYSTEM]  # a macro may select the system by writing #5220
+        if system == int(system) and 1 <= system <= 9:
+            self.modal["coord_system"] = t.COORD_SYSTEM_CODES[int(system) - 1]
 
     def offset(self) -> list[float]:
         """Machine minus work position: G5x + G92 (if active) + tool length on Z (if G43)."""
@@ -378,8 +382,9 @@ class Interpreter:
         if not self.allow_exec:
             self.message("warn", f"Exec {stmt.args} was not run: running programs needs --allow-exec")
             return
+        argv = [quoted or bare for quoted, bare in _EXEC_ARG.findall(stmt.args)]
         try:
-            result = subprocess.run(shlex.split(stmt.args, posix=False), check=False)
+            result = subprocess.run(argv, check=False)
         except OSError as err:
             raise self.fail(f"Exec {stmt.args}: {err.strerror}", stmt.span) from None
         self.canon.event(Event("exec", self.path, self.line, {"args": stmt.args, "status": result.returncode}))
@@ -459,6 +464,7 @@ class Interpreter:
                     m_codes: Mapping[str, int], span: n.Span) -> None:
         if g_codes or len(m_codes) > 1:
             raise self.fail(f"a line calling M{key // 10} (a macro sub) may hold only its letter arguments", span)
+        self._feed_speed_tool(words, span)  # F, S and T act as usual before the sub runs
         for i, letter in enumerate(t.LETTER_ARGS, 1):
             self.params.set(i, words.get(letter, t.ABSENT_ARGUMENT))
         self.call_sub(f"m{key // 10}", span)
@@ -468,21 +474,7 @@ class Interpreter:
         """One line's actions in the controller's order of execution."""
         if "feed_mode" in g:
             self.modal["feed_mode"] = g["feed_mode"]
-        if "F" in words:
-            if words["F"] < 0:
-                raise self.fail("negative feed rate", span)
-            self.feed = words["F"] * (self.scale if self.modal["feed_mode"] == G(94) else 1.0)
-        if "S" in words:
-            if words["S"] < 0:
-                raise self.fail(f"spindle speed S{format_value(words['S'])} is negative", span)
-            self.speed = words["S"]
-            if self.spindle != 5:
-                self.params.set(t.SPINDLE_SPEED, self.speed / 60.0)
-        if "T" in words:
-            tool = words["T"]
-            if tool != int(tool) or not 0 <= tool <= t.MAX_TOOL:
-                raise self.fail(f"tool T{format_value(tool)} does not exist (tools are T0..T{t.MAX_TOOL})", span)
-            self.selected_tool = int(tool)
+        self._feed_speed_tool(words, span)
         if m.get("tool_change") == G(6):
             self._tool_change(span)
         if "spindle" in m:
@@ -522,6 +514,24 @@ class Interpreter:
             self._stop(m["stopping"], span)
 
     # ------------------------------------------------------------------ line steps
+    def _feed_speed_tool(self, words: Mapping[str, float], span: n.Span) -> None:
+        """The F, S and T words of a line (they come first in the order of execution)."""
+        if "F" in words:
+            if words["F"] < 0:
+                raise self.fail("negative feed rate", span)
+            self.feed = words["F"] * (self.scale if self.modal["feed_mode"] == G(94) else 1.0)
+        if "S" in words:
+            if words["S"] < 0:
+                raise self.fail(f"spindle speed S{format_value(words['S'])} is negative", span)
+            self.speed = words["S"]
+            if self.spindle != 5:
+                self.params.set(t.SPINDLE_SPEED, self.speed / 60.0)
+        if "T" in words:
+            tool = words["T"]
+            if tool != int(tool) or not 0 <= tool <= t.MAX_TOOL:
+                raise self.fail(f"tool T{format_value(tool)} does not exist (tools are T0..T{t.MAX_TOOL})", span)
+            self.selected_tool = int(tool)
+
     def _tool_change(self, span: n.Span) -> None:
         if "change_tool" in self.subs and all(f.name != "change_tool" for f in self.stack):
             self.params.set(t.TOOL_NEW, float(self.selected_tool))
@@ -678,6 +688,7 @@ class Interpreter:
         self.spindle = 5
         self.coolant = set()
         self.params.set(t.SPINDLE_ON, 0.0)
+        self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()
 
@@ -727,7 +738,7 @@ class Interpreter:
         previous = self.modal["motion"]
         if motion is not None:
             self.modal["motion"] = motion
-        elif not has_axes or non_modal in t.AXIS_WORD_USERS:
+        elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G(68):
             if g53:
                 raise self.fail("G53 needs an axis word and G0 or G1", span)
             return
@@ -754,6 +765,8 @@ class Interpreter:
                 self._move("linear", target, feed)
             else:
                 self._probe(target, words, span)
+        elif motion == G(38.2):
+            raise self.fail("G38.2 needs at least one of X, Y, Z", span)
 
     def _arc(self, motion: int, words: Mapping[str, float], span: n.Span) -> None:
         plane = PLANE_OF[self.modal["plane"]]
@@ -912,6 +925,9 @@ class Interpreter:
                                         "speed": self.speed}))
 
     _EXECUTE: dict[type, Callable[["Interpreter", n.Stmt], None]] = {}
+
+
+_EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
 
 
 def _distance(a: list[float] | Pose, b: list[float] | Pose) -> float:

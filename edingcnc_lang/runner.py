@@ -108,7 +108,6 @@ class Run:
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
         self.interpreter.params.set(t.KIN_TYPE, float(self.kinematics.kin_type()))
-        self.ended_by = "end of file"
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)
@@ -148,10 +147,7 @@ class Run:
                 interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
             if "start" in interp.subs:
                 interp.call_sub("start")
-            finished = interp.run(statements())
-            if not finished:
-                self.ended_by = next((f"M{e.data['m']}" for e in reversed(interp.messages) if e.kind == "end"),
-                                     "M30")
+            interp.run(statements())
         except EcncError as err:
             error = err
         finally:
@@ -182,7 +178,7 @@ class Run:
             tool=int(interp.params.read(t.TOOL_CURRENT)),
             moves=self.motion.moves,
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
-            ended_by=self.ended_by,
+            ended_by=interp.ended_by,
             error=error.format() if error else None,
         )
 
