@@ -276,22 +276,30 @@ class MotionStage:
         return None if answer is None else AxisLimits(_positive(answer[0]), _positive(answer[1]))
 
     def _sample(self, move: Move) -> Samples:
-        """Time and sample a move, and evaluate the joints on every sample."""
+        """Time and sample a move, and evaluate the joints on every sample.
+
+        Feed moves run at the programmed feed unless an axis limit (Cartesian, or the joints'
+        accelerations) needs them slower; rapids and homing run as fast as every limit allows,
+        the joints' velocities included.  Velocity scales with the path speed and acceleration
+        with its square, so a few re-samplings settle the speed.
+        """
         dt = self.config.interpolation_time
         geo = geometry_of(move, self.config.full_circle_theta_epsilon)
         limits = self._limits_for(move)
         where = _located(move)
-        start = np.array(move.start, dtype=float)
-        fastest = move.feed <= 0.0 or move.kind == "home"  # rapids and homing: as fast as the limits allow
+        start, start_joints = np.array(move.start, dtype=float), np.array(self.joints)
+        fastest = move.feed <= 0.0 or move.kind == "home"
+        joint_timed = not self._identity() and move.kind != "home"
+        joint_velocity = self._joint_limits.velocity * (self.config.g0_velocity_factor if fastest else 1.0)
         speed = move.feed / 60.0 if not fastest else _first_guess(geo, limits.velocity)
         for attempt in range(PLAN_PASSES + 1):
             t, pos = geo.sample(speed, dt)
             factor = dynamics(0.0, start, t, pos, dt).speed_factor(limits.velocity, limits.acceleration)
             joints = self._joints_of(pos, where) if not self._identity() else pos.copy()
-            if fastest and not self._identity() and move.kind != "home":
-                joint_dynamics = dynamics(0.0, np.array(self.joints), t, joints, dt)
-                factor = max(factor, joint_dynamics.speed_factor(
-                    self._joint_limits.velocity * self.config.g0_velocity_factor, self._joint_limits.acceleration))
+            if joint_timed:
+                v_ratio, a_ratio = dynamics(0.0, start_joints, t, joints, dt).ratios(
+                    joint_velocity, self._joint_limits.acceleration)
+                factor = max(factor, math.sqrt(a_ratio.max()), v_ratio.max() if fastest else 0.0)
             done = factor <= 1.0 + 1e-9 and (not fastest or factor >= 0.999 or factor == 0.0)
             if done or attempt == PLAN_PASSES or not math.isfinite(speed / factor):
                 break
