@@ -31,13 +31,56 @@ MAX_DIALOG_FIELDS = 15
 MIN_PROBE_DISTANCE = 0.254
 G = t.code_key  # G(38.2) -> 382
 
-PLANE_OF = {G(17): "XY", G(18): "XZ", G(19): "YZ"}
+AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
+AXIS_SET = frozenset(AXES)
+LINEAR_AXES = frozenset("XYZ")
+PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1, 60))  # M0, M1, M60
+
+# G codes as integer tenths, computed once (they are compared on every line).
+G_0 = G(0)
+G_1 = G(1)
+G_2 = G(2)
+G_3 = G(3)
+G_4 = G(4)
+G_10 = G(10)
+G_17 = G(17)
+G_18 = G(18)
+G_19 = G(19)
+G_20 = G(20)
+G_21 = G(21)
+G_28 = G(28)
+G_30 = G(30)
+G_38_2 = G(38.2)
+G_40 = G(40)
+G_43_1 = G(43.1)
+G_49 = G(49)
+G_51 = G(51)
+G_53 = G(53)
+G_54 = G(54)
+G_64 = G(64)
+G_68 = G(68)
+G_69 = G(69)
+G_70 = G(70)
+G_80 = G(80)
+G_90 = G(90)
+G_91 = G(91)
+G_92 = G(92)
+G_92_1 = G(92.1)
+G_92_2 = G(92.2)
+G_92_3 = G(92.3)
+G_93 = G(93)
+G_94 = G(94)
+G_95 = G(95)
+G_98 = G(98)
+G_99 = G(99)
+
+PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
 # Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
 CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
 MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | frozenset(CYCLES)
-DEFAULT_MODAL = {"motion": G(0), "plane": G(17), "units": G(21), "cutter_comp": G(40),
-                 "length_offset": G(49), "coord_system": G(54), "path_control": G(64),
-                 "distance": G(90), "feed_mode": G(94), "return_mode": G(98)}
+DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
+                 "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
+                 "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
 
 
 class ProgramEnd(Exception):
@@ -80,7 +123,7 @@ class Interpreter:
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
         self.speed = 0.0
-        self.spindle = G(5) // 10          # 3, 4 or 5
+        self.spindle = 5                   # M3, M4 or M5
         self.coolant: set[int] = set()
         self.selected_tool = 0
         self.tool_z = 0.0                  # active G43 length
@@ -117,13 +160,13 @@ class Interpreter:
         initial[t.KIN_TYPE] = 1.0
         self.params.load(initial)
         system = int(self.params.values[t.COORD_SYSTEM])
-        self.modal["coord_system"] = t.COORD_SYSTEM_CODES[system - 1] if 1 <= system <= 9 else G(54)
+        self.modal["coord_system"] = t.COORD_SYSTEM_CODES[system - 1] if 1 <= system <= 9 else G_54
         self.params.values[t.COORD_SYSTEM] = float(t.COORD_SYSTEM_CODES.index(self.modal["coord_system"]) + 1)
         self.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
 
     @property
     def scale(self) -> float:
-        return INCH if self.modal["units"] in (G(20), G(70)) else 1.0
+        return INCH if self.modal["units"] in (G_20, G_70) else 1.0
 
     def _offsets_changed(self) -> None:
         self._offset = None
@@ -475,7 +518,7 @@ class Interpreter:
         if "feed_mode" in g:
             self.modal["feed_mode"] = g["feed_mode"]
         self._feed_speed_tool(words, span)
-        if m.get("tool_change") == G(6):
+        if "tool_change" in m:  # M6
             self._tool_change(span)
         if "spindle" in m:
             self.spindle = m["spindle"] // 10
@@ -494,7 +537,7 @@ class Interpreter:
         if "misc" in m:
             self.canon.event(Event("m_code", self.path, self.line, {"m": m["misc"] // 10}))
         non_modal = g.get("non_modal")
-        if non_modal == G(4):
+        if non_modal == G_4:
             self._dwell(words, span)
         for group in ("plane", "units", "cutter_comp", "path_control", "distance", "return_mode"):
             if group in g:
@@ -505,7 +548,7 @@ class Interpreter:
             self._select_coord_system(g["coord_system"])
         if "rotation" in g:
             self._rotation(g["rotation"], words, span)
-        if "scaling" in g and g["scaling"] == G(51):
+        if "scaling" in g and g["scaling"] == G_51:
             raise self.fail("G51 scaling is not supported", span)
         if non_modal in self._NON_MODAL:
             self._NON_MODAL[non_modal](self, non_modal, words, span)
@@ -519,7 +562,7 @@ class Interpreter:
         if "F" in words:
             if words["F"] < 0:
                 raise self.fail("negative feed rate", span)
-            self.feed = words["F"] * (self.scale if self.modal["feed_mode"] == G(94) else 1.0)
+            self.feed = words["F"] * (self.scale if self.modal["feed_mode"] == G_94 else 1.0)
         if "S" in words:
             if words["S"] < 0:
                 raise self.fail(f"spindle speed S{format_value(words['S'])} is negative", span)
@@ -567,13 +610,13 @@ class Interpreter:
         self.canon.event(Event("dwell", self.path, self.line, {"seconds": seconds}))
 
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
-        if code == G(49):
+        if code == G_49:
             self.tool_z = 0.0
         else:
             tool = int(words.get("H", self.params.read(t.TOOL_CURRENT)))
             if not 0 <= tool <= t.MAX_TOOL:
                 raise self.fail(f"G43 H{tool}: no such tool", span)
-            self.tool_z = words["Z"] * self.scale if code == G(43.1) and "Z" in words else (
+            self.tool_z = words["Z"] * self.scale if code == G_43_1 and "Z" in words else (
                 self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0)
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
@@ -584,7 +627,7 @@ class Interpreter:
         self.params.set(t.COORD_SYSTEM, float(t.COORD_SYSTEM_CODES.index(code) + 1))
 
     def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
-        if code == G(69):
+        if code == G_69:
             self.rotation = None
             self.params.set(t.G68_ACTIVE, 0.0)
         else:
@@ -600,7 +643,7 @@ class Interpreter:
     def _axis_values(self, words: Mapping[str, float]) -> dict[int, float]:
         """The axis words of a line, in mm / degrees."""
         scale = self.scale
-        return {i: words[a] * (scale if i < 3 else 1.0) for i, a in enumerate(AXES) if a in words}
+        return {AXIS_INDEX[a]: v * (scale if a in LINEAR_AXES else 1.0) for a, v in words.items() if a in AXIS_INDEX}
 
     def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         level = int(words.get("L", -1))
@@ -629,7 +672,7 @@ class Interpreter:
             self.params.set(t.coord_offset_param(system, axis), number)
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
-        base = t.G28_HOME if code == G(28) else t.G30_HOME
+        base = t.G28_HOME if code == G_28 else t.G30_HOME
         axes = self._axis_values(words)
         if axes:  # the intermediate point, in the current coordinates
             self._move("rapid", self._target(words))
@@ -674,16 +717,16 @@ class Interpreter:
         self._offset = None
 
     _NON_MODAL: dict[int, Callable[["Interpreter", int, Mapping[str, float], n.Span], None]] = {
-        G(10): _g10, G(28): _g28_g30, G(30): _g28_g30, G(92): _g92, G(92.1): _g92_1,
-        G(92.2): _g92_2, G(92.3): _g92_3,
+        G_10: _g10, G_28: _g28_g30, G_30: _g28_g30, G_92: _g92, G_92_1: _g92_1,
+        G_92_2: _g92_2, G_92_3: _g92_3,
     }
 
     def _stop(self, code: int, span: n.Span) -> None:
-        if code in (G(0), G(1), G(60)):
+        if code in PAUSE_CODES:
             self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
             return
-        for group, reset in (("plane", G(17)), ("distance", G(90)), ("feed_mode", G(94)),
-                             ("cutter_comp", G(40)), ("motion", G(0))):
+        for group, reset in (("plane", G_17), ("distance", G_90), ("feed_mode", G_94),
+                             ("cutter_comp", G_40), ("motion", G_0)):
             self.modal[group] = reset
         self.spindle = 5
         self.coolant = set()
@@ -698,8 +741,18 @@ class Interpreter:
         axes = self._axis_values(words)
         if machine:  # G53: machine coordinates, absolute
             return [axes.get(i, p) for i, p in enumerate(self.pos)]
+        if self.rotation is None:  # the common case, without converting the whole position
+            target = list(self.pos)
+            if self.modal["distance"] == G_91:
+                for axis, number in axes.items():
+                    target[axis] += number
+            else:
+                offset = self.offset()
+                for axis, number in axes.items():
+                    target[axis] = number + offset[axis]
+            return target
         work = self.work_position()
-        if self.modal["distance"] == G(91):
+        if self.modal["distance"] == G_91:
             for axis, number in axes.items():
                 work[axis] += number
         else:
@@ -714,11 +767,11 @@ class Interpreter:
     def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span) -> float:
         """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode."""
         mode = self.modal["feed_mode"]
-        if mode == G(93):
+        if mode == G_93:
             if "F" not in words or words["F"] <= 0:
                 raise self.fail("inverse time mode (G93) needs a positive F on every feed move", span)
             return length * words["F"]
-        rate = self.feed * self.speed if mode == G(95) else self.feed
+        rate = self.feed * self.speed if mode == G_95 else self.feed
         if rate <= 0:
             raise self.fail("feed rate is 0: program an F word before this feed move (EdingCNC error G1516)",
                             span)
@@ -727,37 +780,37 @@ class Interpreter:
     def _motion(self, words: Mapping[str, float], g: Mapping[str, int], non_modal: int | None,
                 span: n.Span) -> None:
         motion = g.get("motion")
-        g53 = non_modal == G(53)
-        has_axes = any(a in words for a in AXES)
-        if motion == G(80):
+        g53 = non_modal == G_53
+        has_axes = not AXIS_SET.isdisjoint(words)
+        if motion == G_80:
             if has_axes:
                 raise self.fail("G80 cancels the canned cycle; it takes no axis words", span)
-            self.modal["motion"] = G(80)
+            self.modal["motion"] = G_80
             self.cycle_words.clear()
             return
         previous = self.modal["motion"]
         if motion is not None:
             self.modal["motion"] = motion
-        elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G(68):
+        elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68:
             if g53:
                 raise self.fail("G53 needs an axis word and G0 or G1", span)
             return
         motion = self.modal["motion"]
-        if motion == G(80):
+        if motion == G_80:
             raise self.fail("axis words without a motion mode: G80 is active, add G0 or G1", span)
-        if g53 and motion not in (G(0), G(1)):
+        if g53 and motion not in (G_0, G_1):
             raise self.fail("G53 moves in machine coordinates only with G0 or G1", span)
-        if g53 and self.modal["cutter_comp"] != G(40):
+        if g53 and self.modal["cutter_comp"] != G_40:
             raise self.fail("G53 is not allowed while cutter compensation (G41/G42) is on", span)
         if motion in CYCLES:
             self._cycle(motion, words, span, new_sequence=previous != motion)
-        elif motion in (G(2), G(3)):
+        elif motion in (G_2, G_3):
             self._arc(motion, words, span)
         elif has_axes:
             target = self._target(words, g53)
-            if motion == G(0):
+            if motion == G_0:
                 self._move("rapid", target)
-            elif motion == G(1):
+            elif motion == G_1:
                 feed = self._feed_for(_distance(self.pos, target), words, span)
                 if self.tanknife and math.hypot(target[0] - self.pos[0], target[1] - self.pos[1]) > 1e-9:
                     target[5] = self._knife_align(math.degrees(math.atan2(target[1] - self.pos[1],
@@ -765,13 +818,13 @@ class Interpreter:
                 self._move("linear", target, feed)
             else:
                 self._probe(target, words, span)
-        elif motion == G(38.2):
+        elif motion == G_38_2:
             raise self.fail("G38.2 needs at least one of X, Y, Z", span)
 
     def _arc(self, motion: int, words: Mapping[str, float], span: n.Span) -> None:
         plane = PLANE_OF[self.modal["plane"]]
         first, second, normal = PLANES[plane]
-        clockwise = (motion == G(2)) != self.config.reverse_g2g3
+        clockwise = (motion == G_2) != self.config.reverse_g2g3
         end = self._target(words)
         start = self.pos
         s = (start[first], start[second])
@@ -837,7 +890,7 @@ class Interpreter:
     def _probe(self, target: list[float], words: Mapping[str, float], span: n.Span) -> None:
         if any(abs(target[i] - self.pos[i]) > 1e-9 for i in range(3, 6)):
             raise self.fail("G38.2 cannot move a rotary axis", span)
-        if self.modal["feed_mode"] == G(93):
+        if self.modal["feed_mode"] == G_93:
             raise self.fail("G38.2 is not allowed in inverse time mode (G93)", span)
         distance = _distance(self.pos, target)
         if distance < MIN_PROBE_DISTANCE:
@@ -866,9 +919,9 @@ class Interpreter:
                 sticky[key] = words[letter]
         if any(a in words for a in "ABC"):
             raise self.fail("canned cycles cannot move rotary axes", span)
-        if self.modal["feed_mode"] == G(93):
+        if self.modal["feed_mode"] == G_93:
             raise self.fail("canned cycles are not allowed in inverse time mode (G93)", span)
-        if self.modal["cutter_comp"] != G(40):
+        if self.modal["cutter_comp"] != G_40:
             raise self.fail("canned cycles are not allowed with cutter compensation on (G41/G42)", span)
         for needed in ("R", "Z"):
             if needed not in sticky:
@@ -882,8 +935,8 @@ class Interpreter:
         work = self.work_position()
         if new_sequence:  # a new cycle sequence: G98 returns to the level it started from
             self.cycle_initial = work[normal]
-        old = work[normal] if self.modal["return_mode"] == G(99) else self.cycle_initial
-        incremental = self.modal["distance"] == G(91)
+        old = work[normal] if self.modal["return_mode"] == G_99 else self.cycle_initial
+        incremental = self.modal["distance"] == G_91
         r_level = (old if incremental else 0.0) + sticky["R"] * scale
         bottom = (r_level if incremental else 0.0) + sticky["Z"] * scale
         if r_level < bottom:
@@ -893,7 +946,7 @@ class Interpreter:
         if old < r_level:  # start below R: climb to R first
             self._cycle_move("rapid", work, normal, r_level, feed)
             old = self.cycle_initial = r_level
-        clear = r_level if self.modal["return_mode"] == G(99) else old
+        clear = r_level if self.modal["return_mode"] == G_99 else old
         dwell = sticky.get("P", 0.0) / (1000.0 if self.config.g4_in_milliseconds else 1.0)
         steps = CYCLES[motion](r_level, bottom, clear, dwell, sticky.get("Q", 0.0) * scale)
         hole = list(work)
