@@ -1,0 +1,35 @@
+"""Every examples/<name>/ folder runs: cnc.ini + job.nc, its C plug-in built first with ``ecnc kins build``."""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from motion_helpers import REPO
+
+from edingcnc_lang.cli import main
+
+FOLDERS = sorted(p.parent for p in (REPO / "examples").glob("*/job.nc"))
+
+
+def test_every_required_example_exists() -> None:
+    names = {folder.name for folder in FOLDERS}
+    assert {"rotate", "delta", "cylinder", "parallel", "tanknife", "cplugin"} <= names
+    assert all((folder / "cnc.ini").is_file() for folder in FOLDERS)
+
+
+@pytest.mark.parametrize("folder", FOLDERS, ids=lambda p: p.name)
+def test_example_runs(folder: Path, tmp_path: Path) -> None:
+    work = shutil.copytree(folder, tmp_path / folder.name)
+    runner = CliRunner()
+    for source in work.glob("*.c"):
+        if shutil.which("cc") is None:
+            pytest.skip("no C compiler (cc) on PATH")
+        built = runner.invoke(main, ["kins", "build", str(source)])
+        assert built.exit_code == 0, built.output
+    result = runner.invoke(main, ["run", "--ini", str(work / "cnc.ini"), str(work / "job.nc"), "--json",
+                                  "--samples", str(tmp_path / "samples.npz")])
+    assert result.exit_code == 0, result.stderr
+    assert "Traceback" not in result.stderr
+    assert (tmp_path / "samples.npz").stat().st_size > 0
