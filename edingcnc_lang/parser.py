@@ -27,6 +27,7 @@ UNITS = frozenset({"mm", "inch"})
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 _FAST_WORD = r"[A-Za-z][ \t]*[+-]?(?:\d+\.?\d*|\.\d+)"
 _FAST_LINE = re.compile(rf"^[ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$")
+_EMPTY_LINE = re.compile(r"^\s*(?:\((?!\s*msg\b)[^)\n]*\)\s*)*(?:;.*)?$", re.IGNORECASE)
 _FAST_WORDS = re.compile(r"([A-Za-z])[ \t]*([+-]?(?:\d+\.?\d*|\.\d+))")
 
 
@@ -374,6 +375,8 @@ def parse_line(text: str, path: str = "<string>", line: int = 1) -> _LineResult:
     """Parse one source line; raises _LineError on a syntax error."""
     if _FAST_LINE.match(text):
         return _fast_block(text, path, line)
+    if _EMPTY_LINE.match(text):  # blank or comments only
+        return None
     return parse_line_grammar(text, path, line)
 
 

@@ -1,6 +1,7 @@
 """Property tests: print/parse round trips and the fast path's equivalence with the grammar."""
 from __future__ import annotations
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -86,6 +87,19 @@ plain_lines = st.tuples(spaces, st.lists(plain_words, min_size=1, max_size=7).ma
 def test_fast_path_builds_what_the_grammar_builds(line: str) -> None:
     assert is_fast_line(line)
     assert to_data(parse_line(line, "f", 3)) == to_data(parse_line_grammar(line, "f", 3))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.sampled_from(["", " ", "\t", "(note)", "( MSG: no )", "(msg)", ";", "; c", "(a;b)", "x"]),
+                max_size=5).map("".join))
+def test_comment_only_lines_agree_with_the_grammar(line: str) -> None:
+    try:
+        expected = to_data(parse_line_grammar(line, "f", 1))
+    except Exception:  # the grammar rejects it: the fast path must not accept it either
+        with pytest.raises(Exception):
+            parse_line(line, "f", 1)
+        return
+    assert to_data(parse_line(line, "f", 1)) == expected
 
 
 def test_fast_path_declines_lines_it_does_not_understand() -> None:
