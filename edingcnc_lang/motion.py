@@ -35,7 +35,7 @@ PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the 
 class MoveSink(Protocol):
     """Receives every executed move with its joints (and samples when they were computed)."""
 
-    def move(self, move: Move, joints: Pose, samples: "Samples | None") -> None: ...
+    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -215,7 +215,7 @@ class MotionStage:
             if err.location is None:
                 err.location = where
             raise
-        except Exception as err:  # a user plug-in may raise anything
+        except Exception as err:  # noqa: BLE001 - a user plug-in may raise anything
             name = getattr(self.active or self.plugin, "name", "?")
             raise PluginError(f"kinematics plug-in {name} failed: {type(err).__name__}: {err}", where) from None
 
