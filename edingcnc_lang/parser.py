@@ -19,6 +19,8 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from . import nodes as n
 from .diagnostics import Diagnostic, SyntaxErrors
+from .fastparse import GIVE_UP, parse_fast
+from .markers import Close, LineResult, Open
 from .source import iter_file_lines, iter_text_lines
 
 KIN_MODES = frozenset({"ON", "OFF", "CTRL", "X2A", "X2XA", "Y2A", "Y2YA", "Z2C", "Z2ZC", "Y2YAZ2ZC"})
@@ -38,28 +40,6 @@ def _lark() -> Lark:
     with resources.as_file(grammar / "macro.lark") as path:
         return Lark.open(str(path), parser="lalr", lexer="contextual",
                          propagate_positions=True, maybe_placeholders=False, cache=True)
-
-
-# --------------------------------------------------------------------------- block markers
-
-@dataclass(frozen=True)
-class _Open:
-    """A line that opens a block: Sub, If or While (kept until its end line)."""
-
-    kind: str  # "Sub" | "If" | "While"
-    span: n.Span
-    name: str = ""
-    cond: n.Expr | None = None
-    extra: int = 0
-
-
-@dataclass(frozen=True)
-class _Close:
-    kind: str  # "EndSub" | "EndIf" | "EndWhile" | "Else"
-    span: n.Span
-
-
-_LineResult = n.Stmt | _Open | _Close | None
 
 
 # --------------------------------------------------------------------------- tree -> AST
@@ -127,7 +107,7 @@ class _Builder:
     }
 
     # statements -------------------------------------------------------------
-    def statement(self, tree: Tree) -> _LineResult:
+    def statement(self, tree: Tree) -> LineResult:
         if not tree.children:
             return None
         stmt = tree.children[0]
@@ -154,24 +134,24 @@ class _Builder:
                 assigns.append(n.Assign(param, self.expr(value), self.span(child)))
         return _make_block(words, assigns, message, block_delete, self.span(tree))
 
-    def _sub_head(self, tree: Tree) -> _LineResult:
-        return _Open("Sub", self.span(tree), name=str(tree.children[1]))
+    def _sub_head(self, tree: Tree) -> LineResult:
+        return Open("Sub", self.span(tree), name=str(tree.children[1]))
 
     def _cond(self, tree: Tree) -> tuple[n.Expr, int]:
         expr, *extra = tree.children
         return self.expr(expr), len(extra)
 
-    def _if_head(self, tree: Tree) -> _LineResult:
+    def _if_head(self, tree: Tree) -> LineResult:
         cond, extra = self._cond(tree.children[1])
-        return _Open("If", self.span(tree), cond=cond, extra=extra)
+        return Open("If", self.span(tree), cond=cond, extra=extra)
 
-    def _while_head(self, tree: Tree) -> _LineResult:
+    def _while_head(self, tree: Tree) -> LineResult:
         cond, extra = self._cond(tree.children[1])
-        return _Open("While", self.span(tree), cond=cond, extra=extra)
+        return Open("While", self.span(tree), cond=cond, extra=extra)
 
-    def _close(kind: str) -> Callable[["_Builder", Tree], _LineResult]:  # type: ignore[misc]
-        def handler(self: "_Builder", tree: Tree) -> _LineResult:
-            return _Close(kind, self.span(tree))
+    def _close(kind: str) -> Callable[["_Builder", Tree], LineResult]:  # type: ignore[misc]
+        def handler(self: "_Builder", tree: Tree) -> LineResult:
+            return Close(kind, self.span(tree))
         return handler
 
     def _gosub(self, tree: Tree) -> n.Stmt:
@@ -225,10 +205,10 @@ class _Builder:
         args = str(tree.children[1]).strip() if len(tree.children) > 1 else ""
         return n.Command(str(tree.children[0]).lower(), args, self.span(tree))
 
-    def _percent(self, tree: Tree) -> _LineResult:
+    def _percent(self, tree: Tree) -> LineResult:
         return None
 
-    _STMT: dict[str, Callable[["_Builder", Tree], _LineResult]] = {
+    _STMT: dict[str, Callable[["_Builder", Tree], LineResult]] = {
         "block": _block, "sub_head": _sub_head, "endsub": _close("EndSub"),
         "if_head": _if_head, "else_": _close("Else"), "endif": _close("EndIf"),
         "while_head": _while_head, "endwhile": _close("EndWhile"), "gosub": _gosub,
@@ -371,16 +351,17 @@ def _explain(text: str, exc: UnexpectedInput) -> _LineError:
 
 # --------------------------------------------------------------------------- one line
 
-def parse_line(text: str, path: str = "<string>", line: int = 1) -> _LineResult:
+def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
     """Parse one source line; raises _LineError on a syntax error."""
     if _FAST_LINE.match(text):
         return _fast_block(text, path, line)
     if _EMPTY_LINE.match(text):  # blank or comments only
         return None
-    return parse_line_grammar(text, path, line)
+    result = parse_fast(text, path, line)
+    return parse_line_grammar(text, path, line) if result is GIVE_UP else result  # type: ignore[return-value]
 
 
-def parse_line_grammar(text: str, path: str = "<string>", line: int = 1) -> _LineResult:
+def parse_line_grammar(text: str, path: str = "<string>", line: int = 1) -> LineResult:
     """Parse one line with the Lark grammar only (the reference for the fast path)."""
     try:
         tree = _lark().parse(text)
@@ -395,7 +376,7 @@ def parse_line_grammar(text: str, path: str = "<string>", line: int = 1) -> _Lin
 class _Frame:
     """An open block while its body is being collected."""
 
-    opener: _Open
+    opener: Open
     source: str
     body: list[n.Stmt] = field(default_factory=list)
     orelse: list[n.Stmt] = field(default_factory=list)
@@ -466,17 +447,17 @@ class StatementReader:
                 opener = _CONDITION_LINE.match(text)
                 if opener:  # keep the block structure so its EndIf/EndWhile still matches
                     span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
-                    stack.append(_Frame(_Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
+                    stack.append(_Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
                 continue
             if result is None:
                 continue
-            if isinstance(result, _Open):
+            if isinstance(result, Open):
                 if result.kind == "Sub" and stack:
                     self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
                                 f"close that first (subs cannot be nested)", lineno, result.span.col, text)
                     yield from self._unwind(stack, lineno, report=False)
                 stack.append(_Frame(result, text))
-            elif isinstance(result, _Close):
+            elif isinstance(result, Close):
                 done = self._close(stack, result, text)
                 if done is not None:
                     yield done
@@ -504,7 +485,7 @@ class StatementReader:
             self._error("E109", f"@unit must be 'mm' or 'inch', not '{match.group(1)}'", 1, col, text)
         return True
 
-    def _close(self, stack: list[_Frame], close: _Close, text: str) -> n.Stmt | None:
+    def _close(self, stack: list[_Frame], close: Close, text: str) -> n.Stmt | None:
         """Apply an end line (or Else) to the stack; returns a finished top-level statement."""
         want = _OPENER_OF[close.kind]
         line, col = close.span.line, close.span.col

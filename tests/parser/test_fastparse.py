@@ -1,0 +1,78 @@
+"""The hand-written fast parser builds exactly what the Lark grammar builds, spans included.
+
+Lines come from printing generated statements (so every construct and operator appears),
+with random spacing, case and comments mixed in; the fast parser may give up on a line,
+but whenever it answers, its answer must equal the grammar's.
+"""
+from __future__ import annotations
+
+import re
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from edingcnc_lang.fastparse import GIVE_UP, parse_fast
+from edingcnc_lang.parser import _LineError, parse_line_grammar
+from edingcnc_lang.printer import stmt_lines
+from edingcnc_lang.serialize import to_data
+
+from .test_properties import blocks, exprs, messages, simple
+
+_TOKEN_GAP = re.compile(r" ")
+
+
+def _respace(text: str, data: st.DataObject) -> str:
+    """Drop or widen the spaces between tokens, as hand-written files do."""
+    return _TOKEN_GAP.sub(lambda _m: data.draw(st.sampled_from(["", " ", "  ", "\t"])), text)
+
+
+def _grammar(line: str) -> object:
+    try:
+        return to_data(parse_line_grammar(line, "f", 7))
+    except _LineError:
+        return "error"
+
+
+def _check(line: str) -> bool:
+    fast = parse_fast(line, "f", 7)
+    if fast is GIVE_UP:
+        return False
+    assert to_data(fast) == _grammar(line), line
+    return True
+
+
+heads = st.one_of(
+    exprs.map(lambda e: f"If [{_plain(e)}]"), exprs.map(lambda e: f"IF [{_plain(e)}] THEN"),
+    exprs.map(lambda e: f"while [{_plain(e)}]"), exprs.map(lambda e: f"If [{_plain(e)}]]"),
+    st.sampled_from(["Else", "ENDIF", "endwhile", "EndSub", "Sub 1st_sub", "GoSub change_tool", "gosub X"]),
+)
+
+
+def _plain(expr) -> str:  # type: ignore[no-untyped-def]
+    from edingcnc_lang.printer import expr_text
+    return expr_text(expr)
+
+
+lines = st.one_of(blocks.map(lambda b: stmt_lines(b)[0]), messages.map(lambda m: stmt_lines(m)[0]), heads,
+                  simple.map(lambda s: stmt_lines(s)[0]))
+comments = st.sampled_from(["", " ; note", ";x G1 X2", "   "])
+
+
+@settings(max_examples=400, deadline=None)
+@given(lines, comments, st.data())
+def test_fast_parser_agrees_with_the_grammar(line: str, comment: str, data: st.DataObject) -> None:
+    _check(_respace(line, data) + comment)
+
+
+def test_fast_parser_handles_the_common_lines() -> None:
+    handled = ["#1 = [#1 + 1]", "G1 X[#1 * 2] Y-[#2] F[#4105]", "If [[#5380 == 0] and [#5397 == 0]]",
+               "While [#1 < 10]", "msg \"T\"#5011\" ok\"", "EndIf", "Else", "Sub home_x ; homes X",
+               "GoSub change_tool", "X[ATAN[1]/[2]] Y[SQRT[4]]", "/G0 X[1]", "N10 #3 = 6 G1 X#3"]
+    for line in handled:
+        assert _check(line), line
+
+
+def test_fast_parser_gives_up_on_what_it_does_not_cover() -> None:
+    for line in ["G0 X1 (comment)", "dlgmsg \"a\" \"b\" 27", "home x", "G0 X1+2", "If [1] AND [2]",
+                 "#1 == 2", "msg \"open", "Sub a b", "KIN ON", "G1 X"]:
+        assert parse_fast(line, "f", 1) is GIVE_UP, line
