@@ -15,4 +15,5 @@ G3 X10 Y80 R10
 G1 Y30
 G3 X20 Y20 R10
 G0 Z0
-msg "belt motors at X" #1000 " Y" #1001
+; #1000.. are written by the kinematics (userOutputStartVariable in cnc.ini)
+msg "belt motors at X" #1000 " Y" #1001  ; noqa: V302

@@ -13,4 +13,5 @@ G1 X40 Y0 Z20 F1500         ; down to the work
 G3 X40 Y0 I-40 J0           ; a full circle of 80 mm diameter
 G1 X0 Y0 Z60
 G0 Z200
-msg "carriages at " #1000 " " #1001 " " #1002
+; #1000.. are written by the kinematics (userOutputStartVariable in cnc.ini)
+msg "carriages at " #1000 " " #1001 " " #1002  ; noqa: V302
