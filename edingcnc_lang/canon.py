@@ -61,6 +61,3 @@ class Canon(Protocol):
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
         """Switch or control the kinematics (``KIN`` / tanknife); returns the Cartesian position after it."""
-
-    def home(self, axis: int, path: str, line: int) -> Pose:
-        """Home one joint with kinematics off; returns the Cartesian position after it."""

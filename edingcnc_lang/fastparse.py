@@ -21,7 +21,6 @@ class _GiveUp(Exception):
     pass
 
 
-_WS = re.compile(r"[ \t]*")
 _NUMBER = re.compile(r"\d+\.?\d*|\.\d+")
 _IDENT = re.compile(r"[A-Za-z0-9_]+")
 _STRING = re.compile(r'"[^"\n]*"')
@@ -31,6 +30,10 @@ _MUL_OP = re.compile(r"\*(?!\*)|/|mod(?![A-Za-z0-9_])", re.IGNORECASE)
 _COMPARE = re.compile(r"==|<>|!=|<=|>=|<|>|(?:eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])", re.IGNORECASE)
 _COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<": "<", "LT": "<",
                 ">": ">", "GT": ">", "<=": "<=", "LE": "<=", ">=": ">=", "GE": ">="}
+# Names the grammar's lexer prefers to a word letter (they outrank LETTER): "A0 ASIN[0]" is read
+# as the function ASIN, not as the word A, so a line with one is left to the grammar.
+_RESERVED = re.compile(r"(abs|acos|asin|cos|exp|fix|fup|ln|round|sin|sqrt|tan|atan)\s*\[|"
+                       r"(mod|or|xor|and|eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])", re.IGNORECASE)
 _MESSAGES = frozenset({"msg", "warnmsg", "errmsg", "logmsg"})
 _CLOSERS = {"endsub": "EndSub", "endif": "EndIf", "endwhile": "EndWhile", "else": "Else"}
 # Every keyword the grammar knows at the start of a line; those not handled here go to Lark.
@@ -53,9 +56,10 @@ class _Line:
 
     # ---------------------------------------------------------------- scanning
     def skip(self) -> None:
-        self.pos = _WS.match(self.text, self.pos).end()  # type: ignore[union-attr]
-        if self.pos < self.end and self.text[self.pos] == ";":
-            self.pos = self.end
+        text, pos, end = self.text, self.pos, self.end
+        while pos < end and (text[pos] == " " or text[pos] == "\t"):
+            pos += 1
+        self.pos = end if pos < end and text[pos] == ";" else pos
 
     def at_end(self) -> bool:
         self.skip()
@@ -152,25 +156,27 @@ class _Line:
             left = n.Binary("**", left, right, self.span(start, end))
         return left, start, end
 
-    def _chain(self, operand, ops: re.Pattern[str]) -> tuple[n.Expr, int, int]:  # type: ignore[no-untyped-def]
+    def _chain(self, operand, ops: re.Pattern[str], first: str) -> tuple[n.Expr, int, int]:  # type: ignore[no-untyped-def]
         left, start, end = operand()
         while True:
-            match = self.take(ops)
+            ch = self.peek()
+            match = self.take(ops) if ch and ch in first else None
             if not match:
                 return left, start, end
             right, _s, end = operand()
             left = n.Binary(match.group().upper(), left, right, self.span(start, end))
 
     def product(self) -> tuple[n.Expr, int, int]:
-        return self._chain(self.power, _MUL_OP)
+        return self._chain(self.power, _MUL_OP, "*/mM")
 
     def sum(self) -> tuple[n.Expr, int, int]:
-        return self._chain(self.product, _ADD_OP)
+        return self._chain(self.product, _ADD_OP, "+-oOxXaA")
 
     def expr(self) -> tuple[n.Expr, int, int]:
         left, start, end = self.sum()
         while True:
-            match = self.take(_COMPARE)
+            ch = self.peek()
+            match = self.take(_COMPARE) if ch and ch in "=<>!eEnNgGlL" else None
             if not match:
                 return left, start, end
             right, _s, end = self.sum()
@@ -197,6 +203,8 @@ class _Line:
                 assert isinstance(target, n.Param)
                 assigns.append(n.Assign(target, value, self.span(item_start, end)))
             elif ch.isalpha() and ch.isascii():
+                if _RESERVED.match(self.text, self.pos):
+                    raise _GiveUp
                 self.pos += 1
                 value, _s, end = self.signed()
                 words.append(n.Word(ch.upper(), value, self.span(item_start, end)))

@@ -394,7 +394,8 @@ class Interpreter:
     def _exec_switch(self, stmt: n.Switch) -> None:
         if stmt.name == "tanknife":
             self.tanknife = stmt.on
-            self.pos = list(self.canon.kinematics("TANKNIFE_ON" if stmt.on else "TANKNIFE_OFF", (),
+            work_zero = tuple(self.offset()[:3])  # the bend knife's Z band is in work coordinates
+            self.pos = list(self.canon.kinematics("TANKNIFE_ON" if stmt.on else "TANKNIFE_OFF", work_zero,
                                                   tuple(self.pos), self.path, self.line))
         self.canon.event(Event(stmt.name, self.path, self.line, {"on": stmt.on}))
 

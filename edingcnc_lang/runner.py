@@ -17,7 +17,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, load_config, save_variables, is_persisted
-from .errors import EcncError
+from .errors import EcncError, Location
 from .host import Host
 from .interpreter import CYCLES, Interpreter
 from .kinematics.base import Kinematics
@@ -114,7 +114,12 @@ class Run:
 
     def _load_kinematics(self) -> Kinematics:
         search = [Path(self.config.path).parent] if self.config.path else []
-        return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
+        try:
+            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
+        except EcncError as err:
+            if err.location is None and self.config.path:  # point at the ini that names the plug-in
+                err.location = Location(self.config.path)
+            raise
 
     def macro_files(self) -> list[Path]:
         """Macro files in lookup order: user macro first (its subs win), then the main macro file."""
