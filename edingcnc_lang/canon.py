@@ -8,7 +8,7 @@ coordinates in mm and degrees.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Mapping, Protocol
+from typing import Any, Mapping, Protocol, Sequence
 
 Pose = tuple[float, float, float, float, float, float]
 AXES = "XYZABC"
@@ -55,6 +55,12 @@ class Canon(Protocol):
 
     def move(self, move: Move) -> None:
         """Execute a move (called in program order)."""
+
+    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+        """Straight moves in bulk: (kind, line, end, feed) each, the first starting at ``start``.
+
+        The same as one ``move`` per item; it exists so the common case costs less.
+        """
 
     def event(self, event: Event) -> None:
         """Record a non-motion event."""

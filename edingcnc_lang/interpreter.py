@@ -24,6 +24,7 @@ from .evaluator import Evaluator
 from .geometry import ArcError, center_from_radius, check_radius, sweep
 from .host import DialogAnswer, DialogField, Host
 from .params import Parameters
+from .parser import plain_block, plain_words
 
 INCH = 25.4
 MAX_CALL_DEPTH = 64
@@ -454,6 +455,88 @@ class Interpreter:
         if block.message is not None:
             self.message("msg", block.message)
         self._dispatch(words, g_codes, m_codes, block.span)
+
+    def _exec_plain_run(self, run: n.PlainRun) -> None:
+        """Plain lines: straight moves in bulk while they are simple, any other line on its own."""
+        lines = run.lines
+        done = 0
+        while done < len(lines):
+            done = self._simple_moves(run.path, lines, done)
+            if done < len(lines):
+                lineno, text = lines[done]
+                self.execute(plain_block(text, run.path, lineno))
+                done += 1
+
+    def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
+        """Execute lines[first:] as long as each is a plain G0/G1 move; returns the first it left.
+
+        This is the per-line work of ``_exec_plain`` and ``_execute_line`` for the case that
+        dominates CAM output (axis words, F, G0/G1, N only; G94; no G68 or tangential knife),
+        done without building nodes.  Anything unusual, including every error, is left to the
+        general path so messages stay exactly the same.
+        """
+        if self.rotation is not None or self.tanknife or self.modal["feed_mode"] != G_94:
+            return first
+        motion = self.modal["motion"]
+        if motion not in (G_0, G_1):
+            motion = None  # the line must name G0 or G1 itself
+        scale = self.scale
+        offset = self.offset()
+        incremental = self.modal["distance"] == G_91
+        budget = self.max_steps
+        pos = self.pos
+        feed = self.feed
+        batch: list[tuple[str, int, tuple[float, ...], float]] = []
+        index = first
+        for index in range(first, len(lines)):
+            lineno, text = lines[index]
+            line_motion = motion
+            seen: set[str] = set()
+            axes: list[tuple[int, float]] = []
+            new_feed = None
+            for letter, number in plain_words(text):
+                letter = letter.upper()
+                if letter in seen:
+                    break
+                seen.add(letter)
+                value = float(number)
+                axis = AXIS_INDEX.get(letter)
+                if axis is not None:
+                    axes.append((axis, value * scale if axis < 3 else value))
+                elif letter == "F" and value >= 0:
+                    new_feed = value * scale
+                elif letter == "G" and (value == 0.0 or value == 1.0):
+                    line_motion = G_0 if value == 0.0 else G_1
+                elif letter != "N":
+                    break
+            else:
+                if line_motion is None or (budget is not None and self.steps + 1 > budget):
+                    break
+                if new_feed is not None:
+                    feed = new_feed
+                if axes:
+                    if line_motion == G_1 and feed <= 0:
+                        break
+                    target = list(pos)
+                    for axis, value in axes:
+                        target[axis] = target[axis] + value if incremental else value + offset[axis]
+                    batch.append(("rapid" if line_motion == G_0 else "linear", lineno, tuple(target),
+                                  0.0 if line_motion == G_0 else feed))
+                    pos = target
+                self.steps += 1
+                motion = line_motion
+                continue
+            break
+        else:
+            index = len(lines)
+        if batch:
+            self.path, self.line = path, batch[-1][1]
+            self.canon.straight_moves(path, tuple(self.pos), batch)
+        self.pos = list(pos)
+        self.feed = feed
+        if motion is not None:
+            self.modal["motion"] = motion
+        return index
 
     def _exec_plain(self, block: n.PlainBlock) -> None:
         words: dict[str, float] = {}
@@ -993,7 +1076,8 @@ def _fmt(point: tuple[float, float]) -> str:
 
 
 Interpreter._EXECUTE = {
-    n.Block: Interpreter._exec_block, n.PlainBlock: Interpreter._exec_plain, n.If: Interpreter._exec_if, n.While: Interpreter._exec_while,
+    n.Block: Interpreter._exec_block, n.PlainBlock: Interpreter._exec_plain,
+    n.PlainRun: Interpreter._exec_plain_run, n.If: Interpreter._exec_if, n.While: Interpreter._exec_while,
     n.GoSub: Interpreter._exec_gosub, n.Sub: Interpreter._exec_sub, n.Message: Interpreter._exec_message,
     n.Dialog: Interpreter._exec_dialog, n.LogFile: Interpreter._exec_logfile, n.Home: Interpreter._exec_home,
     n.PrepareLinDeltaHome: Interpreter._exec_prepare_delta, n.Kin: Interpreter._exec_kin,

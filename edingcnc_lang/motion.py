@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 
@@ -30,6 +30,13 @@ LIMIT_SLACK = 1e-9          # mm or degrees beyond a position limit that still c
 DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity before it is an error
 SWITCH_TOLERANCE = 1e-6     # a joint that would have to jump further than this at a switch is an error
 PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the fastest allowed speed
+
+
+@runtime_checkable
+class BatchSink(Protocol):
+    """A sink that can take straight moves in bulk (joints equal to the position)."""
+
+    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None: ...
 
 
 class MoveSink(Protocol):
@@ -88,6 +95,8 @@ class MotionStage:
         joints = config.joints
         self._lower = np.array([j.negative_limit for j in joints])
         self._upper = np.array([j.positive_limit for j in joints])
+        self._lower_list = [j.negative_limit - LIMIT_SLACK for j in joints]
+        self._upper_list = [j.positive_limit + LIMIT_SLACK for j in joints]
         self._joint_limits = AxisLimits(_positive([j.max_velocity for j in joints]),
                                         _positive([j.max_acceleration for j in joints]))
         self._cartesian_limits = AxisLimits(_positive(config.cartesian_max_velocity),
@@ -116,6 +125,29 @@ class MotionStage:
             self._user_output(self.active, _located(move))
         for sink in self.sinks:
             sink.move(move, joints, samples)
+
+    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+        """Straight moves in bulk; joints = position and trace-only sinks make this the cheap case."""
+        if not (self._identity() and not self.sample_always and self.active is None
+                and all(isinstance(sink, BatchSink) for sink in self.sinks)):
+            for kind, line, end, feed in batch:
+                self.move(Move(kind, path, line, start, end, feed))
+                start = end
+            return
+        lower, upper = self._lower_list, self._upper_list
+        for count, (kind, line, end, feed) in enumerate(batch):
+            for axis, value in enumerate(end):
+                if not lower[axis] <= value <= upper[axis]:
+                    self._write_batch(path, batch[:count])
+                    raise self._limit_error(Move(kind, path, line, start, end, feed), axis, value)
+        self._write_batch(path, batch)
+
+    def _write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+        if batch:
+            self.moves += len(batch)
+            self.joints = batch[-1][2]
+            for sink in self.sinks:
+                sink.write_batch(path, batch)  # type: ignore[attr-defined]
 
     def event(self, event: Event) -> None:
         if event.kind == "dwell":

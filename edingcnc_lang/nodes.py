@@ -130,6 +130,23 @@ class PlainBlock:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
+@dataclass(frozen=True, slots=True)
+class PlainRun:
+    """Consecutive top-level plain word lines, as (line number, text), for a run's fast path.
+
+    The interpreter executes them directly from their text; each line is exactly what the
+    corresponding PlainBlock (and Block) says.
+    """
+
+    path: str
+    lines: tuple[tuple[int, str], ...]
+
+    @property
+    def span(self) -> Span:
+        first, last = self.lines[0][0], self.lines[-1][0]
+        return Span(self.path, first, 1, last, len(self.lines[-1][1]) + 1)
+
+
 MessageItem = Union[str, Expr]
 
 
@@ -233,7 +250,7 @@ class Sub:
     end_span: Span = field(default=NO_SPAN, compare=False)
 
 
-Stmt = Union[Block, PlainBlock, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,
+Stmt = Union[Block, PlainBlock, PlainRun, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,
              Command, GoSub, If, While, Sub]
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import io
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -37,6 +37,14 @@ class TraceWriter:
 
     def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
         self._file.write(f"{move.line},{move.kind},{','.join(map(repr, move.end))},{','.join(map(repr, joints))}\n")
+
+    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+        """Rows of straight moves whose joints equal their end points."""
+        rows = []
+        for kind, line, end, _feed in batch:
+            coords = ",".join(map(repr, end))
+            rows.append(f"{line},{kind},{coords},{coords}\n")
+        self._file.write("".join(rows))
 
     def event(self, event: Event) -> None:
         pass

@@ -29,6 +29,7 @@ UNITS = frozenset({"mm", "inch"})
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 _FAST_WORD = r"[A-Za-z][ \t]*[+-]?(?:\d+\.?\d*|\.\d+)"
 _FAST_LINE = re.compile(rf"^[ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$")
+RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 _EMPTY_LINE = re.compile(r"^\s*(?:\((?!\s*msg\b)[^)\n]*\)\s*)*(?:;.*)?$", re.IGNORECASE)
 _FAST_WORDS = re.compile(r"([A-Za-z])[ \t]*([+-]?(?:\d+\.?\d*|\.\d+))")
 
@@ -247,7 +248,7 @@ def _fast_block(text: str, path: str, line: int) -> n.Block:
     return _make_block(words, [], None, False, n.Span(path, line, first.col, line, last.end_col))
 
 
-def _fast_plain(text: str, path: str, line: int) -> n.PlainBlock:
+def plain_block(text: str, path: str, line: int) -> n.PlainBlock:
     """The PlainBlock for a line of plain words: one node per line instead of one per word."""
     semicolon = text.find(";")
     matches = list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
@@ -258,6 +259,12 @@ def _fast_plain(text: str, path: str, line: int) -> n.PlainBlock:
         del words[0]
     span = n.Span(path, line, matches[0].start() + 1, line, matches[-1].end() + 1)
     return n.PlainBlock(tuple(words), line_number, span)
+
+
+def plain_words(text: str) -> list[tuple[str, str]]:
+    """(letter, number text) pairs of a plain word line, comment excluded."""
+    semicolon = text.find(";")
+    return _FAST_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
 
 
 def is_fast_line(text: str) -> bool:
@@ -411,11 +418,12 @@ class StatementReader:
     line); ``unit`` holds the ``@unit`` directive once the first line is read.
     """
 
-    def __init__(self, lines: Iterable[str], path: str, *, skip_plain: bool = False,
-                 plain_blocks: bool = False) -> None:
+    def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree") -> None:
         self.path = path
-        self.skip_plain = skip_plain  # checking only: top-level plain word lines need no nodes
-        self.plain_blocks = plain_blocks  # running: plain word lines become PlainBlock nodes
+        # How plain word lines (most of a CAM job) are delivered: "tree" as Block nodes like any
+        # line; "check" not at all at the top level (checking keeps nothing); "run" as PlainRun
+        # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute.
+        self.mode = mode
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self._lines = lines
@@ -425,21 +433,26 @@ class StatementReader:
 
     def __iter__(self) -> Iterator[n.Stmt]:
         stack: list[_Frame] = []
+        run: list[tuple[int, str]] = []
         path = self.path
         lineno = 0
         for lineno, text in enumerate(self._lines, 1):
             if lineno == 1 and self._read_unit(text):
                 continue
-            if (self.skip_plain or self.plain_blocks) and _FAST_LINE.match(text):
-                if self.plain_blocks:
-                    plain = _fast_plain(text, path, lineno)
-                    if stack:
-                        stack[-1].add(plain)
-                    else:
-                        yield plain
-                    continue
+            if self.mode != "tree" and _FAST_LINE.match(text):
                 if not stack:
+                    if self.mode == "run":
+                        run.append((lineno, text))
+                        if len(run) == RUN_LENGTH:
+                            yield n.PlainRun(path, tuple(run))
+                            run = []
                     continue
+                if self.mode == "run":
+                    stack[-1].add(plain_block(text, path, lineno))
+                    continue
+            if run:
+                yield n.PlainRun(path, tuple(run))
+                run = []
             try:
                 result = parse_line(text, path, lineno)
             except _LineError as err:
@@ -465,6 +478,8 @@ class StatementReader:
                 stack[-1].add(result)
             else:
                 yield result
+        if run:
+            yield n.PlainRun(path, tuple(run))
         yield from self._unwind(stack, lineno + 1, report=True)
 
     def raise_errors(self) -> None:
@@ -530,16 +545,14 @@ class StatementReader:
 
 # --------------------------------------------------------------------------- whole files
 
-def read_statements(path: str | os.PathLike[str], *, skip_plain: bool = False,
-                    plain_blocks: bool = False) -> StatementReader:
-    """A streaming reader over a file (statements are parsed as you iterate)."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), skip_plain=skip_plain,
-                           plain_blocks=plain_blocks)
+def read_statements(path: str | os.PathLike[str], *, mode: str = "tree") -> StatementReader:
+    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader.mode."""
+    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode)
 
 
 def check_file(path: str | os.PathLike[str]) -> dict[str, n.Sub]:
     """Read a whole file without keeping it: raise SyntaxErrors if anything is wrong, else return its subs."""
-    reader = read_statements(path, skip_plain=True)
+    reader = read_statements(path, mode="check")
     subs: dict[str, n.Sub] = {}
     for stmt in reader:
         if isinstance(stmt, n.Sub):

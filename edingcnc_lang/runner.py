@@ -131,7 +131,7 @@ class Run:
     def execute_file(self, job: Path) -> RunResult:
         job_subs = check_file(job)
         macros = [(path, parse_file(path)) for path in self.macro_files()]
-        return self._execute(lambda: read_statements(job, plain_blocks=True), job_subs, macros)
+        return self._execute(lambda: read_statements(job, mode="run"), job_subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
         program = parse_text(text, path)
