@@ -154,7 +154,6 @@ def test_runtime_error_stops_the_job_where_it_happened() -> None:
     assert partial.moves == 1
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: TAN[90] returns 1.6e16 instead of the error the evaluator means to raise")
 def test_tangent_of_90_degrees_is_an_error() -> None:
     with pytest.raises(MachineError, match="TAN"):
         run("#100 = TAN[90]\n")

@@ -184,7 +184,6 @@ def test_exec_of_a_missing_program_is_a_runtime_error() -> None:
     assert str(err.location) == "job.nc:1:1" and "no_such_program_ecnc_test" in err.message
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: Exec passes the double quotes of a quoted program path to the OS")
 def test_exec_with_a_quoted_program_path(tmp_path: Path) -> None:
     flag = tmp_path / "ran"
     run(f'Exec "{sys.executable}" -c "open(r\'{flag}\', \'w\').close()"\n', allow_exec=True)

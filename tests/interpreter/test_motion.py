@@ -166,7 +166,6 @@ def test_selecting_a_system_through_5220() -> None:
     assert moves[-1].end[0] == 6.0 and result.position[0] == 1.0
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: writing #5220 switches the offsets but the reported modal state keeps G54")
 def test_selecting_a_system_through_5220_shows_in_the_modal_state() -> None:
     assert "G55" in run("#5220 = 2\n")[0].modal
 
@@ -210,7 +209,6 @@ def test_g68_rotates_the_program_around_a_pivot() -> None:
     assert close(moves[1].end[:2], (10.0, 0.0))
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: the X/Y pivot words of G68 also make a move in the active motion mode")
 def test_g68_pivot_words_do_not_move() -> None:
     result, moves = run("G0 X10 Y0\nG68 X5 Y5 R90\nG0 X10 Y0\n")
     assert len(moves) == 2
@@ -284,7 +282,6 @@ def test_probe_errors(source: str, words: str) -> None:
     assert words in error_of(source).message
 
 
-@pytest.mark.xfail(strict=True, reason="BUG: G38.2 without X/Y/Z is accepted silently (dialect: at least one is needed)")
 def test_probe_needs_an_axis_word() -> None:
     assert "G38.2" in error_of("G38.2 F100\n").message
 
