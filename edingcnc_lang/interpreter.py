@@ -32,6 +32,9 @@ MAX_DIALOG_FIELDS = 15
 MIN_PROBE_DISTANCE = 0.254
 G = t.code_key  # G(38.2) -> 382
 
+_NUM = r"([+-]?(?:\d+\.?\d*|\.\d+))[ \t]*"
+CAM_LINE = re.compile(r"[ \t]*(?:[Gg][ \t]*" + _NUM + ")?" + "".join(
+    f"(?:[{a}{a.lower()}][ \\t]*{_NUM})?" for a in AXES + "F") + r"(?:;.*)?$")
 AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
 AXIS_SET = frozenset(AXES)
 LINEAR_AXES = frozenset("XYZ")
@@ -490,43 +493,41 @@ class Interpreter:
         index = first
         for index in range(first, len(lines)):
             lineno, text = lines[index]
-            line_motion = motion
-            seen: set[str] = set()
-            axes: list[tuple[int, float]] = []
-            new_feed = None
-            for letter, number in plain_words(text):
-                letter = letter.upper()
-                if letter in seen:
-                    break
-                seen.add(letter)
-                value = float(number)
-                axis = AXIS_INDEX.get(letter)
-                if axis is not None:
-                    axes.append((axis, value * scale if axis < 3 else value))
-                elif letter == "F" and value >= 0:
-                    new_feed = value * scale
-                elif letter == "G" and (value == 0.0 or value == 1.0):
-                    line_motion = G_0 if value == 0.0 else G_1
-                elif letter != "N":
+            cam = CAM_LINE.match(text)
+            if cam is not None:  # the usual shape: [G0|G1] [X] [Y] [Z] [A] [B] [C] [F], in that order
+                g, *values, f = cam.groups()
+                if g is not None:
+                    g_value = float(g)
+                    if g_value != 0.0 and g_value != 1.0:
+                        break
+                    line_motion = G_0 if g_value == 0.0 else G_1
+                else:
+                    line_motion = motion
+                axes = [(axis, float(v) * scale if axis < 3 else float(v))
+                        for axis, v in enumerate(values) if v is not None]
+                new_feed = float(f) * scale if f is not None else None
+                if new_feed is not None and new_feed < 0:
                     break
             else:
-                if line_motion is None or (budget is not None and self.steps + 1 > budget):
+                parsed = self._plain_move_words(text, motion, scale)
+                if parsed is None:
                     break
-                if new_feed is not None:
-                    feed = new_feed
-                if axes:
-                    if line_motion == G_1 and feed <= 0:
-                        break
-                    target = list(pos)
-                    for axis, value in axes:
-                        target[axis] = target[axis] + value if incremental else value + offset[axis]
-                    batch.append(("rapid" if line_motion == G_0 else "linear", lineno, tuple(target),
-                                  0.0 if line_motion == G_0 else feed))
-                    pos = target
-                self.steps += 1
-                motion = line_motion
-                continue
-            break
+                line_motion, axes, new_feed = parsed
+            if line_motion is None or (budget is not None and self.steps + 1 > budget):
+                break
+            if new_feed is not None:
+                feed = new_feed
+            if axes:
+                if line_motion == G_1 and feed <= 0:
+                    break
+                target = list(pos)
+                for axis, value in axes:
+                    target[axis] = target[axis] + value if incremental else value + offset[axis]
+                batch.append(("rapid" if line_motion == G_0 else "linear", lineno, tuple(target),
+                              0.0 if line_motion == G_0 else feed))
+                pos = target
+            self.steps += 1
+            motion = line_motion
         else:
             index = len(lines)
         if batch:
@@ -537,6 +538,30 @@ class Interpreter:
         if motion is not None:
             self.modal["motion"] = motion
         return index
+
+    @staticmethod
+    def _plain_move_words(text: str, motion: int | None, scale: float
+                          ) -> tuple[int | None, list[tuple[int, float]], float | None] | None:
+        """A plain line's motion code, axis values and feed, if it is nothing but a straight move."""
+        seen: set[str] = set()
+        axes: list[tuple[int, float]] = []
+        new_feed = None
+        for letter, number in plain_words(text):
+            letter = letter.upper()
+            if letter in seen:
+                return None
+            seen.add(letter)
+            value = float(number)
+            axis = AXIS_INDEX.get(letter)
+            if axis is not None:
+                axes.append((axis, value * scale if axis < 3 else value))
+            elif letter == "F" and value >= 0:
+                new_feed = value * scale
+            elif letter == "G" and (value == 0.0 or value == 1.0):
+                motion = G_0 if value == 0.0 else G_1
+            elif letter != "N":
+                return None
+        return motion, axes, new_feed
 
     def _exec_plain(self, block: n.PlainBlock) -> None:
         words: dict[str, float] = {}

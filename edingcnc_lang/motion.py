@@ -135,12 +135,21 @@ class MotionStage:
                 start = end
             return
         lower, upper = self._lower_list, self._upper_list
+        ends = [item[2] for item in batch]
+        for axis in range(6):
+            column = [end[axis] for end in ends]
+            if min(column) < lower[axis] or max(column) > upper[axis]:
+                self._first_limit_violation(path, start, batch)
+        self._write_batch(path, batch)
+
+    def _first_limit_violation(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+        """Write the moves before the first one out of limits, then raise its error."""
+        lower, upper = self._lower_list, self._upper_list
         for count, (kind, line, end, feed) in enumerate(batch):
             for axis, value in enumerate(end):
                 if not lower[axis] <= value <= upper[axis]:
                     self._write_batch(path, batch[:count])
                     raise self._limit_error(Move(kind, path, line, start, end, feed), axis, value)
-        self._write_batch(path, batch)
 
     def _write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         if batch:

@@ -21,16 +21,37 @@ def decode_line(raw: bytes) -> str:
         return raw.decode("latin-1")
 
 
+CHUNK = 1 << 20  # bytes read at a time
+
+
 def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
-    """Yield the lines of a file without their line ends (CRLF, LF or CR)."""
+    """Yield the lines of a file without their line ends (LF, with any CRs before it).
+
+    The file is read in blocks of about a megabyte and each block is decoded at once;
+    only a block that is not valid UTF-8 is decoded line by line.
+    """
     with open(path, "rb") as handle:
-        first = True
-        for raw in handle:
-            if first:
-                first = False
-                if raw.startswith(BOM):
-                    raw = raw[len(BOM):]
-            yield decode_line(raw.rstrip(b"\r\n"))
+        head = handle.read(len(BOM))
+        pending = b"" if head == BOM else head
+        while True:
+            block = handle.read(CHUNK)
+            data = pending + block
+            if block:
+                cut = data.rfind(b"\n")
+                if cut < 0:
+                    pending = data
+                    continue
+                pending, body = data[cut + 1:], data[:cut]
+            elif not data:
+                return
+            else:  # the end of the file: what is left is the last line(s)
+                pending, body = b"", data[:-1] if data.endswith(b"\n") else data
+            try:
+                lines = body.decode("utf-8").split("\n")
+            except UnicodeDecodeError:
+                lines = [decode_line(raw) for raw in body.split(b"\n")]
+            for line in lines:
+                yield line.rstrip("\r")
 
 
 def iter_text_lines(text: str) -> Iterator[str]:
