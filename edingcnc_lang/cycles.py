@@ -21,7 +21,16 @@ class Step:
     level: float = 0.0  # drilling-axis coordinate (rapid/feed); seconds for dwell
 
 
+MAX_PECKS = 100_000
+
+
+class CycleError(ValueError):
+    """Cycle words that describe no sensible hole; the message is for the user."""
+
+
 def _pecks(r: float, bottom: float, q: float) -> list[float]:
+    if (r - bottom) / q > MAX_PECKS:
+        raise CycleError(f"Q{q:g} would drill {r - bottom:g} mm in more than {MAX_PECKS} pecks")
     depths = []
     depth = r - q
     while depth > bottom:

@@ -18,9 +18,9 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, PLANES, Arc, Canon, Event, Move, Pose
 from .config import MachineConfig
-from .cycles import CYCLES, NEEDS_Q, Step
+from .cycles import CYCLES, NEEDS_Q, CycleError, Step
 from .errors import EcncError, Location, MachineError
-from .evaluator import Evaluator
+from .evaluator import Evaluator, param_index
 from .geometry import ArcError, center_from_radius, check_radius, sweep
 from .host import DialogAnswer, DialogField, Host
 from .params import Parameters
@@ -260,13 +260,17 @@ class Interpreter:
             self.execute(stmt)
 
     def execute(self, stmt: n.Stmt) -> None:
-        self.steps += 1
         span = stmt.span
         self.path, self.line = span.path, span.line
-        if self.max_steps is not None and self.steps > self.max_steps:
-            raise self.fail(f"step budget of {self.max_steps} statements exhausted (an endless loop?); "
-                            "raise it with --max-steps", span)
+        self.spend(1, span)
         self._EXECUTE[type(stmt)](self, stmt)
+
+    def spend(self, steps: int, span: n.Span | None = None) -> None:
+        """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""
+        self.steps += steps
+        if self.max_steps is not None and self.steps > self.max_steps:
+            raise self.fail(f"step budget of {self.max_steps} steps exhausted (an endless loop?); "
+                            "raise it with --max-steps", span)
 
     # ------------------------------------------------------------------ control flow
     def _condition(self, expr: n.Expr) -> bool:
@@ -279,10 +283,7 @@ class Interpreter:
         while self._condition(stmt.cond):
             self.execute_body(stmt.body)
             self.path, self.line = stmt.span.path, stmt.span.line
-            self.steps += 1
-            if self.max_steps is not None and self.steps > self.max_steps:
-                raise self.fail(f"step budget of {self.max_steps} statements exhausted in this While loop "
-                                "(an endless loop?); raise it with --max-steps", stmt.span)
+            self.spend(1, stmt.span)
 
     def _exec_gosub(self, stmt: n.GoSub) -> None:
         self.call_sub(stmt.name, stmt.span)
@@ -327,7 +328,8 @@ class Interpreter:
                 where = rest[0].span if rest and not isinstance(rest[0], str) else stmt.span
                 raise self.fail(f"dlgmsg field \"{label}\" needs a parameter number written without '#' "
                                 "(EdingCNC error G1167)", where)
-            index = int(rest.pop(0).value)  # type: ignore[union-attr]
+            number = rest.pop(0)
+            index = param_index(number.value, number.span)  # type: ignore[union-attr]
             fields.append(DialogField(label, index, self.params.read(index)))
         if len(fields) > MAX_DIALOG_FIELDS:
             raise self.fail(f"dlgmsg has {len(fields)} fields; at most {MAX_DIALOG_FIELDS} fit", stmt.span)
@@ -345,7 +347,7 @@ class Interpreter:
     def _exec_logfile(self, stmt: n.LogFile) -> None:
         mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
         name = PureWindowsPath(stmt.name).name  # never outside the log folder, whatever the path says
-        if not name:
+        if name in ("", ".", ".."):
             raise self.fail(f"logfile {stmt.name!r} names no file", stmt.span)
         folder = self.log_dir or Path(self.path).resolve().parent
         self._log_file = folder / name
@@ -416,7 +418,7 @@ class Interpreter:
             raise self.fail("GetToolInfo expects first|next|num and a parameter number, e.g. "
                             "GetToolInfo first 100", stmt.span)
         tools = sorted(k for k, tool in self.config.tools.items() if tool.length or tool.diameter)
-        kind, index = parts[0].lower(), int(parts[1])
+        kind, index = parts[0].lower(), param_index(float(parts[1]), stmt.span)
         if kind == "num":
             value = float(len(tools))
         else:
@@ -1057,9 +1059,13 @@ class Interpreter:
             old = self.cycle_initial = r_level
         clear = r_level if self.modal["return_mode"] == G_99 else old
         dwell = sticky.get("P", 0.0) / (1000.0 if self.config.g4_in_milliseconds else 1.0)
-        steps = CYCLES[motion](r_level, bottom, clear, dwell, sticky.get("Q", 0.0) * scale)
+        try:
+            steps = CYCLES[motion](r_level, bottom, clear, dwell, sticky.get("Q", 0.0) * scale)
+        except CycleError as err:
+            raise self.fail(str(err), span) from None
         hole = list(work)
         for _ in range(int(repeats)):
+            self.spend(1 + len(steps), span)
             for axis, letter in ((first, AXES[first]), (second, AXES[second])):
                 if letter in words:
                     hole[axis] = (hole[axis] + words[letter] * scale) if incremental else words[letter] * scale

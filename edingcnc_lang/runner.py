@@ -17,7 +17,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, load_config, save_variables, is_persisted
-from .errors import EcncError, Location
+from .errors import EcncError, Location, MachineError
 from .host import Host
 from .interpreter import CYCLES, Interpreter
 from .kinematics.base import Kinematics
@@ -155,6 +155,9 @@ class Run:
             interp.run(statements())
         except EcncError as err:
             error = err
+        except RecursionError:  # If/While/GoSub nested beyond what the interpreter's stack holds
+            error = MachineError("blocks and sub calls are nested too deeply to run",
+                                 Location(interp.path, interp.line))
         finally:
             self.motion.close()
         result = self.result(error)

@@ -138,8 +138,6 @@ class TooManyMoves(Exception):
     """Raised by the test's move callback to stop a run the step budget let through."""
 
 
-@pytest.mark.xfail(strict=True, raises=TooManyMoves,
-                   reason="BUG: the step budget does not count canned-cycle repeats, so L[10**9] runs for hours")
 def test_step_budget_also_stops_a_runaway_canned_cycle() -> None:
     moves = 0
 
@@ -151,6 +149,11 @@ def test_step_budget_also_stops_a_runaway_canned_cycle() -> None:
 
     err = error_of("G0 Z5\nG81 X1 Z-1 R1 F100 L[10**9]\n", max_steps=1000, on_move=count)
     assert "step budget" in err.message
+
+
+def test_a_peck_depth_too_small_to_finish_is_an_error() -> None:
+    err = error_of("G0 Z5\nG83 X1 Z-1000 R1 Q[10**-9] F100\n")
+    assert "pecks" in err.message
 
 
 def test_a_job_within_its_step_budget_runs() -> None:
