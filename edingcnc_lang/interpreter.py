@@ -626,8 +626,9 @@ class Interpreter:
     def _execute_line(self, words: dict[str, float], g: Mapping[str, int], m: Mapping[str, int],
                       span: n.Span) -> None:
         """One line's actions in the controller's order of execution."""
-        if "feed_mode" in g:
+        if "feed_mode" in g and g["feed_mode"] != self.modal["feed_mode"]:
             self.modal["feed_mode"] = g["feed_mode"]
+            self.feed = 0.0  # an F of the old mode means something else: the next feed move needs a new F
         self._feed_speed_tool(words, span)
         if "tool_change" in m:  # M6
             self._tool_change(span)
@@ -941,7 +942,7 @@ class Interpreter:
         s = (start[first], start[second])
         e = (end[first], end[second])
         scale = self.scale
-        center = s
+        center: tuple[float, float] | None = None
         try:
             if "R" in words:
                 center = center_from_radius(s, e, words["R"] * scale, clockwise)
@@ -962,8 +963,9 @@ class Interpreter:
                     center = (s[0] + d1, s[1] + d2)
                 check_radius(s, center, e)
         except ArcError as err:
-            raise self.fail(f"{err}; start ({_fmt(s)}), centre ({_fmt(center)}), "
-                            f"end ({_fmt(e)}) in the {plane} plane", span) from None
+            where = f"start ({_fmt(s)})" + (f", centre ({_fmt(center)})" if center else "") + f", end ({_fmt(e)})"
+            raise self.fail(f"{err}; {where} in the {plane} plane", span) from None
+        assert center is not None
         angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
         radius = math.hypot(s[0] - center[0], s[1] - center[1])
         along = end[normal] - start[normal]

@@ -405,3 +405,13 @@ def test_line_errors(source: str, words: str, location: str) -> None:
 
 def test_four_m_words_are_allowed() -> None:
     assert run("M3 M8 M48 M27 S100\n")[0].variables[5152] == 1.0
+
+
+def test_changing_the_feed_mode_asks_for_a_new_feed() -> None:
+    err = error_of("G93 G1 X10 F2\nG94 G1 X0\n")
+    assert "feed rate is 0" in err.message and err.location.line == 2
+
+
+def test_an_r_arc_that_cannot_reach_its_end_shows_no_centre() -> None:
+    err = error_of("G0 X10 Y0\nG2 X0 Y10 R4 F100\n")
+    assert "too small" in err.message and "centre" not in err.message
