@@ -492,6 +492,7 @@ class Interpreter:
         pos = self.pos
         feed = self.feed
         batch: list[tuple[str, int, tuple[float, ...], float]] = []
+        multiplier = (scale, scale, scale, 1.0, 1.0, 1.0)
         index = first
         for index in range(first, len(lines)):
             lineno, text = lines[index]
@@ -505,8 +506,7 @@ class Interpreter:
                     line_motion = G_0 if g_value == 0.0 else G_1
                 else:
                     line_motion = motion
-                axes = [(axis, float(v) * scale if axis < 3 else float(v))
-                        for axis, v in enumerate(values) if v is not None]
+                axes = [(axis, float(v) * multiplier[axis]) for axis, v in enumerate(values) if v is not None]
                 new_feed = float(f) * scale if f is not None else None
                 if new_feed is not None and new_feed < 0:
                     break
@@ -523,8 +523,9 @@ class Interpreter:
                 if line_motion == G_1 and feed <= 0:
                     break
                 target = list(pos)
+                base = pos if incremental else offset
                 for axis, value in axes:
-                    target[axis] = target[axis] + value if incremental else value + offset[axis]
+                    target[axis] = base[axis] + value
                 batch.append(("rapid" if line_motion == G_0 else "linear", lineno, tuple(target),
                               0.0 if line_motion == G_0 else feed))
                 pos = target

@@ -17,6 +17,7 @@ from .canon import Event, Move, Pose
 from .errors import EcncError
 from .motion import Samples
 
+SIX_REPR = ",".join(["%r"] * 6)
 TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc\n"
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc")
 
@@ -42,7 +43,7 @@ class TraceWriter:
         """Rows of straight moves whose joints equal their end points."""
         rows = []
         for kind, line, end, _feed in batch:
-            coords = ",".join(map(repr, end))
+            coords = SIX_REPR % end
             rows.append(f"{line},{kind},{coords},{coords}\n")
         self._file.write("".join(rows))
 

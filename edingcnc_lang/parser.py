@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import os
 import re
+from bisect import bisect_left
 from collections.abc import Callable, Iterable, Iterator
+from itertools import islice
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
@@ -267,6 +269,34 @@ def plain_words(text: str) -> list[tuple[str, str]]:
     return _FAST_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
 
 
+CHUNK_LINES = 8192
+_NON_PLAIN = re.compile(rf"^(?![ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$).*$", re.MULTILINE)
+
+
+def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
+    """The lines in lists of CHUNK_LINES, with the line number of each list's first line."""
+    source = iter(lines)
+    base = 1
+    while True:
+        chunk = list(islice(source, CHUNK_LINES))
+        if not chunk:
+            return
+        yield base, chunk
+        base += len(chunk)
+
+
+def _non_plain_lines(chunk: list[str]) -> list[int]:
+    """Indices of the lines of a chunk that are not plain word lines, found in one regex pass."""
+    joined = "\n".join(chunk)
+    found = []
+    index, position = 0, 0
+    for match in _NON_PLAIN.finditer(joined):
+        index += joined.count("\n", position, match.start())
+        position = match.start()
+        found.append(index)
+    return found
+
+
 def is_fast_line(text: str) -> bool:
     """True when the fast path handles this line (used by the equivalence tests)."""
     return _FAST_LINE.match(text) is not None
@@ -433,54 +463,63 @@ class StatementReader:
 
     def __iter__(self) -> Iterator[n.Stmt]:
         stack: list[_Frame] = []
-        run: list[tuple[int, str]] = []
         path = self.path
+        bulk = self.mode != "tree"
         lineno = 0
-        for lineno, text in enumerate(self._lines, 1):
-            if lineno == 1 and self._read_unit(text):
-                continue
-            if self.mode != "tree" and _FAST_LINE.match(text):
-                if not stack:
-                    if self.mode == "run":
-                        run.append((lineno, text))
-                        if len(run) == RUN_LENGTH:
-                            yield n.PlainRun(path, tuple(run))
-                            run = []
-                    continue
-                if self.mode == "run":
-                    stack[-1].add(plain_block(text, path, lineno))
-                    continue
-            if run:
-                yield n.PlainRun(path, tuple(run))
-                run = []
-            try:
-                result = parse_line(text, path, lineno)
-            except _LineError as err:
-                self._error(err.code, err.message, lineno, err.col, text)
-                opener = _CONDITION_LINE.match(text)
-                if opener:  # keep the block structure so its EndIf/EndWhile still matches
-                    span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
-                    stack.append(_Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
-                continue
-            if result is None:
-                continue
-            if isinstance(result, Open):
-                if result.kind == "Sub" and stack:
-                    self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
-                                f"close that first (subs cannot be nested)", lineno, result.span.col, text)
-                    yield from self._unwind(stack, lineno, report=False)
-                stack.append(_Frame(result, text))
-            elif isinstance(result, Close):
-                done = self._close(stack, result, text)
-                if done is not None:
-                    yield done
-            elif stack:
-                stack[-1].add(result)
-            else:
-                yield result
-        if run:
-            yield n.PlainRun(path, tuple(run))
+        for base, chunk in _chunks(self._lines):
+            # Plain lines at the top level are skipped (check) or handed over in runs (run) in
+            # bulk: the regular-expression engine finds the few other lines of a chunk.
+            others = _non_plain_lines(chunk) if bulk else []
+            i, count = 0, len(chunk)
+            while i < count:
+                if bulk and not stack:
+                    k = bisect_left(others, i)
+                    j = others[k] if k < len(others) else count
+                    if j > i:
+                        if self.mode == "run":
+                            for first in range(i, j, RUN_LENGTH):
+                                last = min(first + RUN_LENGTH, j)
+                                yield n.PlainRun(path, tuple(zip(range(base + first, base + last), chunk[first:last])))
+                        i = j
+                        continue
+                lineno = base + i
+                yield from self._line(stack, chunk[i], lineno, bulk)
+                i += 1
         yield from self._unwind(stack, lineno + 1, report=True)
+
+    def _line(self, stack: list[_Frame], text: str, lineno: int, bulk: bool) -> Iterator[n.Stmt]:
+        """One line taken on its own: parse it and fit it into the block structure."""
+        path = self.path
+        if lineno == 1 and self._read_unit(text):
+            return
+        if bulk and stack and self.mode == "run" and _FAST_LINE.match(text):
+            stack[-1].add(plain_block(text, path, lineno))
+            return
+        try:
+            result = parse_line(text, path, lineno)
+        except _LineError as err:
+            self._error(err.code, err.message, lineno, err.col, text)
+            opener = _CONDITION_LINE.match(text)
+            if opener:  # keep the block structure so its EndIf/EndWhile still matches
+                span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
+                stack.append(_Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
+            return
+        if result is None:
+            return
+        if isinstance(result, Open):
+            if result.kind == "Sub" and stack:
+                self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
+                            f"close that first (subs cannot be nested)", lineno, result.span.col, text)
+                yield from self._unwind(stack, lineno, report=False)
+            stack.append(_Frame(result, text))
+        elif isinstance(result, Close):
+            done = self._close(stack, result, text)
+            if done is not None:
+                yield done
+        elif stack:
+            stack[-1].add(result)
+        else:
+            yield result
 
     def raise_errors(self) -> None:
         """Raise SyntaxErrors with every diagnostic, in line order, if there is any."""
