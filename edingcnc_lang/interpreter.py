@@ -492,7 +492,6 @@ class Interpreter:
         pos = self.pos
         feed = self.feed
         batch: list[tuple[str, int, tuple[float, ...], float]] = []
-        multiplier = (scale, scale, scale, 1.0, 1.0, 1.0)
         index = first
         for index in range(first, len(lines)):
             lineno, text = lines[index]
@@ -506,7 +505,16 @@ class Interpreter:
                     line_motion = G_0 if g_value == 0.0 else G_1
                 else:
                     line_motion = motion
-                axes = [(axis, float(v) * multiplier[axis]) for axis, v in enumerate(values) if v is not None]
+                x, y, z, a, b, c = values
+                axes = []
+                if x is not None:
+                    axes.append((0, float(x) * scale))
+                if y is not None:
+                    axes.append((1, float(y) * scale))
+                if z is not None:
+                    axes.append((2, float(z) * scale))
+                if a is not None or b is not None or c is not None:
+                    axes += [(axis, float(v)) for axis, v in ((3, a), (4, b), (5, c)) if v is not None]
                 new_feed = float(f) * scale if f is not None else None
                 if new_feed is not None and new_feed < 0:
                     break

@@ -10,7 +10,8 @@ from __future__ import annotations
 import os
 import re
 from bisect import bisect_left
-from collections.abc import Callable, Iterable, Iterator
+from array import array
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -448,12 +449,16 @@ class StatementReader:
     line); ``unit`` holds the ``@unit`` directive once the first line is read.
     """
 
-    def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree") -> None:
+    def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree",
+                 non_plain: Sequence[int] | None = None) -> None:
         self.path = path
         # How plain word lines (most of a CAM job) are delivered: "tree" as Block nodes like any
         # line; "check" not at all at the top level (checking keeps nothing); "run" as PlainRun
         # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute.
         self.mode = mode
+        # Line numbers of the lines that are not plain: recorded by a "check" read, reused by a "run" read.
+        self.non_plain: Sequence[int] = non_plain if non_plain is not None else array("I")
+        self._known = non_plain is not None
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self._lines = lines
@@ -469,7 +474,7 @@ class StatementReader:
         for base, chunk in _chunks(self._lines):
             # Plain lines at the top level are skipped (check) or handed over in runs (run) in
             # bulk: the regular-expression engine finds the few other lines of a chunk.
-            others = _non_plain_lines(chunk) if bulk else []
+            others = self._others(base, chunk) if bulk else []
             i, count = 0, len(chunk)
             while i < count:
                 if bulk and not stack:
@@ -486,6 +491,16 @@ class StatementReader:
                 yield from self._line(stack, chunk[i], lineno, bulk)
                 i += 1
         yield from self._unwind(stack, lineno + 1, report=True)
+
+    def _others(self, base: int, chunk: list[str]) -> list[int]:
+        """Indices (within the chunk) of the chunk's lines that are not plain word lines."""
+        if self._known:
+            first = bisect_left(self.non_plain, base)
+            last = bisect_left(self.non_plain, base + len(chunk))
+            return [number - base for number in self.non_plain[first:last]]
+        others = _non_plain_lines(chunk)
+        self.non_plain.extend(base + i for i in others)  # type: ignore[attr-defined]
+        return others
 
     def _line(self, stack: list[_Frame], text: str, lineno: int, bulk: bool) -> Iterator[n.Stmt]:
         """One line taken on its own: parse it and fit it into the block structure."""
@@ -584,20 +599,29 @@ class StatementReader:
 
 # --------------------------------------------------------------------------- whole files
 
-def read_statements(path: str | os.PathLike[str], *, mode: str = "tree") -> StatementReader:
-    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader.mode."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode)
+def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
+                    non_plain: Sequence[int] | None = None) -> StatementReader:
+    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader."""
+    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain)
 
 
-def check_file(path: str | os.PathLike[str]) -> dict[str, n.Sub]:
-    """Read a whole file without keeping it: raise SyntaxErrors if anything is wrong, else return its subs."""
+@dataclass(frozen=True)
+class CheckedFile:
+    """What checking a file found out: its subs, and which lines are not plain (for the run's reader)."""
+
+    subs: dict[str, n.Sub]
+    non_plain: Sequence[int]
+
+
+def check_file(path: str | os.PathLike[str]) -> CheckedFile:
+    """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong."""
     reader = read_statements(path, mode="check")
     subs: dict[str, n.Sub] = {}
     for stmt in reader:
         if isinstance(stmt, n.Sub):
             subs.setdefault(stmt.name.lower(), stmt)
     reader.raise_errors()
-    return subs
+    return CheckedFile(subs, reader.non_plain)
 
 
 def parse_text(text: str, path: str = "<string>") -> n.Program:

@@ -21,6 +21,7 @@ from .errors import EcncError, Location, MachineError
 from .host import Host
 from .interpreter import CYCLES, Interpreter
 from .kinematics.base import Kinematics
+from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage, MoveSink
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
@@ -113,11 +114,14 @@ class Run:
         self.interpreter.params.set(index, value)
 
     def _load_kinematics(self) -> Kinematics:
-        search = [Path(self.config.path).parent] if self.config.path else []
+        """The ini's plug-in; without an ini the built-in trivial kinematics (no plug-in lookup)."""
+        if not self.config.path:
+            return TrivialKinematics(self.config.kinematics_settings)
+        search = [Path(self.config.path).parent]
         try:
             return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
         except EcncError as err:
-            if err.location is None and self.config.path:  # point at the ini that names the plug-in
+            if err.location is None:  # point at the ini that names the plug-in
                 err.location = Location(self.config.path)
             raise
 
@@ -129,9 +133,10 @@ class Run:
         return [p for p in (user, main) if p is not None]
 
     def execute_file(self, job: Path) -> RunResult:
-        job_subs = check_file(job)
+        checked = check_file(job)
         macros = [(path, parse_file(path)) for path in self.macro_files()]
-        return self._execute(lambda: read_statements(job, mode="run"), job_subs, macros)
+        return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
+                             checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
         program = parse_text(text, path)
