@@ -25,9 +25,14 @@ _NUMBER = re.compile(r"\d+\.?\d*|\.\d+")
 _IDENT = re.compile(r"[A-Za-z0-9_]+")
 _STRING = re.compile(r'"[^"\n]*"')
 _FUNC = re.compile(r"(abs|acos|asin|cos|exp|fix|fup|ln|round|sin|sqrt|tan|atan)(?=\s*\[)", re.IGNORECASE)
-_ADD_OP = re.compile(r"\+|-|(?:or|xor|and)(?![A-Za-z0-9_])", re.IGNORECASE)
-_MUL_OP = re.compile(r"\*(?!\*)|/|mod(?![A-Za-z0-9_])", re.IGNORECASE)
-_COMPARE = re.compile(r"==|<>|!=|<=|>=|<|>|(?:eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])", re.IGNORECASE)
+_OPERATOR = re.compile(r"\*\*|==|<>|!=|<=|>=|[-+*/<>]|(?:mod|or|xor|and|eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])",
+                       re.IGNORECASE)
+_OPERATOR_START = frozenset("*=<>!+-/mMoOxXaAeEnNgGlL")
+# Binding levels, loosest first: comparisons, then + - OR XOR AND, then * / MOD, then **.
+_LEVEL = {op: 1 for op in ("==", "<>", "!=", "<=", ">=", "<", ">", "EQ", "NE", "GT", "GE", "LT", "LE")}
+_LEVEL.update({op: 2 for op in ("+", "-", "OR", "XOR", "AND")})
+_LEVEL.update({op: 3 for op in ("*", "/", "MOD")})
+_LEVEL["**"] = 4
 _COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<": "<", "LT": "<",
                 ">": ">", "GT": ">", "<=": "<=", "LE": "<=", ">=": ">=", "GE": ">="}
 # Names the grammar's lexer prefers to a word letter (they outrank LETTER): "A0 ASIN[0]" is read
@@ -148,39 +153,24 @@ class _Line:
             return n.Unary(ch, operand, span), start, end
         return self.atom()
 
-    def power(self) -> tuple[n.Expr, int, int]:
+    def expr(self, min_level: int = 1) -> tuple[n.Expr, int, int]:
+        """Precedence climbing over the grammar's levels; every level is left-associative."""
         left, start, end = self.signed()
-        while self.peek() == "*" and self.text.startswith("**", self.pos):
-            self.pos += 2
-            right, _s, end = self.signed()
-            left = n.Binary("**", left, right, self.span(start, end))
-        return left, start, end
-
-    def _chain(self, operand, ops: re.Pattern[str], first: str) -> tuple[n.Expr, int, int]:  # type: ignore[no-untyped-def]
-        left, start, end = operand()
         while True:
             ch = self.peek()
-            match = self.take(ops) if ch and ch in first else None
-            if not match:
+            if not ch or ch not in _OPERATOR_START:
                 return left, start, end
-            right, _s, end = operand()
-            left = n.Binary(match.group().upper(), left, right, self.span(start, end))
-
-    def product(self) -> tuple[n.Expr, int, int]:
-        return self._chain(self.power, _MUL_OP, "*/mM")
-
-    def sum(self) -> tuple[n.Expr, int, int]:
-        return self._chain(self.product, _ADD_OP, "+-oOxXaA")
-
-    def expr(self) -> tuple[n.Expr, int, int]:
-        left, start, end = self.sum()
-        while True:
-            ch = self.peek()
-            match = self.take(_COMPARE) if ch and ch in "=<>!eEnNgGlL" else None
-            if not match:
+            match = _OPERATOR.match(self.text, self.pos)
+            if match is None:
                 return left, start, end
-            right, _s, end = self.sum()
-            left = n.Compare(_COMPARE_OPS[match.group().upper()], left, right, self.span(start, end))
+            op = match.group().upper()
+            level = _LEVEL[op]
+            if level < min_level:
+                return left, start, end
+            self.pos = match.end()
+            right, _s, end = self.expr(level + 1)
+            span = self.span(start, end)
+            left = n.Compare(_COMPARE_OPS[op], left, right, span) if level == 1 else n.Binary(op, left, right, span)
 
     # ---------------------------------------------------------------- statements
     def block(self) -> n.Block:

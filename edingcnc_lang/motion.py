@@ -6,15 +6,17 @@ samples it at the interpolation rate when the joints are not simply the position
 inverse kinematics once per move on all samples, checks joint and Cartesian limits, copies the
 kinematics' user output into parameters, and hands each move with its joints to the sinks.
 See docs/kinematics.md ("Running jobs") for the rules.
+
+numpy is imported by the sampling methods only: while the joints are simply the position (no
+kinematics, trivial kinematics, no bend knife) and no samples are written, a run never loads it.
 """
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Protocol, runtime_checkable
-
-import numpy as np
+from functools import cached_property
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 from . import tables as t
 from .canon import AXES, PLANES, Event, Move, Pose
@@ -25,6 +27,9 @@ from .kinematics import abi
 from .kinematics.base import Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
 from .kinematics.trajectory import Dynamics, Geometry, dynamics, geometry_of
+
+if TYPE_CHECKING:
+    import numpy as np
 
 LIMIT_SLACK = 1e-9          # mm or degrees beyond a position limit that still counts as on it
 DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity before it is an error
@@ -68,6 +73,8 @@ class AxisLimits:
 
 def _positive(values: Sequence[float]) -> np.ndarray:
     """Limits as an array; a limit of 0 or less means "not set" rather than "cannot move"."""
+    import numpy as np
+
     array = np.asarray(values, dtype=float)
     return np.where(array > 0.0, array, np.inf)
 
@@ -92,16 +99,20 @@ class MotionStage:
         self.joints: Pose = (0.0,) * 6         # type: ignore[assignment]
         self.time = 0.0
         self.moves = 0
-        joints = config.joints
-        self._lower = np.array([j.negative_limit for j in joints])
-        self._upper = np.array([j.positive_limit for j in joints])
-        self._lower_list = [j.negative_limit - LIMIT_SLACK for j in joints]
-        self._upper_list = [j.positive_limit + LIMIT_SLACK for j in joints]
-        self._joint_limits = AxisLimits(_positive([j.max_velocity for j in joints]),
-                                        _positive([j.max_acceleration for j in joints]))
-        self._cartesian_limits = AxisLimits(_positive(config.cartesian_max_velocity),
-                                            _positive(config.cartesian_max_acceleration))
+        # joint position limits, LIMIT_SLACK included
+        self._lower = [j.negative_limit - LIMIT_SLACK for j in config.joints]
+        self._upper = [j.positive_limit + LIMIT_SLACK for j in config.joints]
         self._plugin_call(lambda: self.plugin.control(abi.OPEN, [0.0] * abi.CONTROL_DATA_LEN), None)
+
+    @cached_property
+    def _joint_limits(self) -> AxisLimits:
+        joints = self.config.joints
+        return AxisLimits(_positive([j.max_velocity for j in joints]), _positive([j.max_acceleration for j in joints]))
+
+    @cached_property
+    def _cartesian_limits(self) -> AxisLimits:
+        return AxisLimits(_positive(self.config.cartesian_max_velocity),
+                          _positive(self.config.cartesian_max_acceleration))
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
@@ -134,7 +145,7 @@ class MotionStage:
                 self.move(Move(kind, path, line, start, end, feed))
                 start = end
             return
-        lower, upper = self._lower_list, self._upper_list
+        lower, upper = self._lower, self._upper
         ends = [item[2] for item in batch]
         for axis in range(6):
             column = [end[axis] for end in ends]
@@ -144,7 +155,7 @@ class MotionStage:
 
     def _first_limit_violation(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         """Write the moves before the first one out of limits, then raise its error."""
-        lower, upper = self._lower_list, self._upper_list
+        lower, upper = self._lower, self._upper
         for count, (kind, line, end, feed) in enumerate(batch):
             for axis, value in enumerate(end):
                 if not lower[axis] <= value <= upper[axis]:
@@ -223,11 +234,15 @@ class MotionStage:
         pos = forward(joints)
         if not self._bend_active():
             return pos
+        import numpy as np
+
         # the correction depends on Z and C only, which it does not change itself
         return forward(as_pose(np.array(joints) - self._bend_offset(np.array([pos]))[0]))
 
     def _check_no_jump(self, pos: Pose, label: str, where: Location) -> None:
         """Switching kinematics must not move a motor: the new inverse of ``pos`` must give the current joints."""
+        import numpy as np
+
         joints = self._joints_of(np.array([pos], dtype=float), where)[0]
         jump = np.abs(joints - np.array(self.joints))
         if jump.max() > SWITCH_TOLERANCE:
@@ -272,6 +287,8 @@ class MotionStage:
 
     def _bend_offset(self, pos: np.ndarray) -> np.ndarray:
         """The bend knife's joint XY correction at (N, 6) poses (its Z band is in work coordinates)."""
+        import numpy as np
+
         knife = self.config.tanknife
         offset = np.zeros_like(pos)
         zero = np.zeros(len(pos))
@@ -294,6 +311,8 @@ class MotionStage:
     def _limits_for(self, move: Move) -> AxisLimits:
         """What a move is timed against: joints with kinematics off, [KINEMATICS] (or the plug-in) with them on."""
         if move.kind == "home":
+            import numpy as np
+
             speed = move.feed / 60.0 if move.feed > 0 else None
             return AxisLimits(np.array([speed or abs(j.home_velocity) or np.inf for j in self.config.joints]),
                               self._joint_limits.acceleration)
@@ -324,6 +343,8 @@ class MotionStage:
         the joints' velocities included.  Velocity scales with the path speed and acceleration
         with its square, so a few re-samplings settle the speed.
         """
+        import numpy as np
+
         dt = self.config.interpolation_time
         geo = geometry_of(move, self.config.full_circle_theta_epsilon)
         limits = self._limits_for(move)
@@ -373,11 +394,13 @@ class MotionStage:
                 points.append(as_pose(point))
         for point in points:
             for axis, value in enumerate(point):
-                if not self._lower[axis] - LIMIT_SLACK <= value <= self._upper[axis] + LIMIT_SLACK:
+                if not self._lower[axis] <= value <= self._upper[axis]:
                     raise self._limit_error(move, axis, value)
 
     def _check_samples(self, move: Move, samples: Samples, start_time: float) -> None:
         """Kinematics on: Cartesian limits, then joint positions, velocities and accelerations."""
+        import numpy as np
+
         where = _located(move)
         if self.active is not None:
             low = np.array(self.config.cartesian_negative_limits)
@@ -388,7 +411,7 @@ class MotionStage:
                 raise MachineError(f"{AXES[axis]} would reach {samples.pos[row, axis]:.4f}, outside the Cartesian "
                                    f"limits [{low[axis]:g}, {high[axis]:g}] of [KINEMATICS]", where)
         joints = samples.joints
-        outside = (joints < self._lower - LIMIT_SLACK) | (joints > self._upper + LIMIT_SLACK)
+        outside = (joints < np.array(self._lower)) | (joints > np.array(self._upper))
         if outside.any():
             row, axis = np.argwhere(outside)[0]
             raise self._limit_error(move, int(axis), float(joints[row, axis]))
@@ -412,6 +435,8 @@ class MotionStage:
 
 def _checked_rows(joints: object, count: int) -> np.ndarray:
     """A plug-in's inverse_many result as an (N, 6) float array of finite numbers."""
+    import numpy as np
+
     rows = np.asarray(joints, dtype=float)
     if rows.shape != (count, 6):
         raise ValueError(f"inverse_many returned shape {rows.shape}, expected ({count}, 6)")
@@ -422,6 +447,8 @@ def _checked_rows(joints: object, count: int) -> np.ndarray:
 
 def _first_guess(geo: Geometry, max_velocity: np.ndarray) -> float:
     """Path speed at which the straight chord of a move keeps every axis within its velocity limit."""
+    import numpy as np
+
     delta = np.abs(np.subtract(geo.end, geo.start))
     linear = float(np.linalg.norm(delta[:3]))
     length = linear if linear > 0.0 else float(np.linalg.norm(delta[3:]))

@@ -6,12 +6,15 @@ and every later stage (checker, interpreter, linter, printer) works on them.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Union
+from typing import NamedTuple, Union
 
 
-@dataclass(frozen=True, slots=True)
-class Span:
-    """Source range of a node: 1-based line and column, end column exclusive."""
+class Span(NamedTuple):
+    """Source range of a node: 1-based line and column, end column exclusive.
+
+    A named tuple rather than a dataclass: one is made for every node of every line,
+    so it has to be cheap to build; it is just as immutable.
+    """
 
     path: str
     line: int

@@ -2,20 +2,24 @@
 
 Each writes incrementally, so memory stays flat however long the job is
 (the .npz samples format is the exception: numpy writes it in one go at the end).
-Numbers are written with ``repr`` so they read back as the same double.
+Numbers are written with ``repr`` so they read back as the same double.  Only the samples
+writer needs numpy, and imports it itself.
 """
 from __future__ import annotations
 
 import io
+import math
 import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from .canon import Event, Move, Pose
 from .errors import EcncError
 from .motion import Samples
+
+if TYPE_CHECKING:
+    import numpy as np
 
 SIX_REPR = ",".join(["%r"] * 6)
 TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc\n"
@@ -65,7 +69,7 @@ class SamplesWriter:
         self.path = path
         self._npz = path.suffix.lower() == ".npz"
         self._chunks: list[np.ndarray] = []
-        self._last_time = -np.inf
+        self._last_time = -math.inf
         self._file = None if self._npz else _open_for_writing(path)
         if self._file is not None:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
@@ -73,6 +77,8 @@ class SamplesWriter:
     def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
         if samples is None:
             return
+        import numpy as np
+
         rows = np.column_stack([samples.t, samples.pos, samples.joints])[samples.t > self._last_time]
         if not len(rows):
             return
@@ -89,6 +95,8 @@ class SamplesWriter:
         if self._file is not None:
             self._file.close()
             return
+        import numpy as np
+
         data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
         with open(self.path, "wb") as handle:
             np.savez(handle, **{name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)})

@@ -1,4 +1,8 @@
-"""The ``ecnc`` command line: one click group, one module per subcommand."""
+"""The ``ecnc`` command line: one click group, one module per subcommand.
+
+A subcommand module imports its implementation inside the command function, so ``ecnc --help``
+and each command start without loading what the other commands need (the parser, numpy, ...).
+"""
 from __future__ import annotations
 
 import click

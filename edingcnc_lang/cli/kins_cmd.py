@@ -9,16 +9,15 @@ import json
 import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
 from edingcnc_lang.cli.common import reports_errors
-from edingcnc_lang.config import read_ini
-from edingcnc_lang.errors import PluginError
-from edingcnc_lang.kinematics import abi
-from edingcnc_lang.kinematics.base import AXES, JOINTS, Kinematics, Pose
-from edingcnc_lang.kinematics.build import build_plugin
-from edingcnc_lang.kinematics.loader import available_kinematics, load_kinematics
+from edingcnc_lang.kinematics.base import AXES, JOINTS, Pose
+
+if TYPE_CHECKING:
+    from edingcnc_lang.kinematics.base import Kinematics
 
 # Let "-5" through as a number instead of an unknown option.
 NUMBERS = {"ignore_unknown_options": True}
@@ -26,12 +25,18 @@ NUMBERS = {"ignore_unknown_options": True}
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
     """The ``[KINEMATICS]`` section and the ini's folder (where plug-in files are looked for)."""
+    from edingcnc_lang.config import read_ini
+
     if ini is None:
         return {}, ()
     return read_ini(ini).section("KINEMATICS"), (ini.parent,)
 
 
 def _switched_on(name: str, ini: Path | None) -> Kinematics:
+    from edingcnc_lang.errors import PluginError
+    from edingcnc_lang.kinematics import abi
+    from edingcnc_lang.kinematics.loader import load_kinematics
+
     settings, search_dirs = _settings(ini)
     kins = load_kinematics(name, settings, search_dirs)
     rc = kins.control(abi.ON, [0.0] * abi.CONTROL_DATA_LEN)
@@ -63,6 +68,8 @@ def kins() -> None:
 @reports_errors
 def list_cmd(as_json: bool) -> None:
     """Registered kinematics: name, type and version (tab separated)."""
+    from edingcnc_lang.kinematics.loader import available_kinematics
+
     rows = available_kinematics()
     if as_json:
         click.echo(json.dumps([{"name": n, "type": t, "version": v} for n, t, v in rows]))
@@ -106,4 +113,6 @@ def forward_cmd(name: str, ini: Path | None, joints: tuple[float, ...]) -> None:
 @reports_errors
 def build_cmd(source: Path, output: Path | None, cc: str) -> None:
     """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
+    from edingcnc_lang.kinematics.build import build_plugin
+
     click.echo(str(build_plugin(source, output, cc)))

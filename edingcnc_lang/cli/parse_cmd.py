@@ -5,8 +5,6 @@ import json
 
 import click
 
-from ..parser import check_file, parse_file
-from ..serialize import to_data
 from .common import existing_file, reports_errors
 
 
@@ -17,6 +15,9 @@ from .common import existing_file, reports_errors
 @reports_errors
 def parse(file: str, as_json: bool, no_spans: bool) -> None:
     """Parse FILE without running it (exit 65 on syntax errors)."""
+    from ..parser import check_file, parse_file
+    from ..serialize import to_data
+
     if as_json:
         program = parse_file(file)
         click.echo(json.dumps(to_data(program, with_spans=not no_spans), indent=1))

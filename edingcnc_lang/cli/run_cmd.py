@@ -4,13 +4,16 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
 from ..errors import EXIT_RUNTIME, EcncError
 from ..host import DialogAnswer, Host, scripted_dialogs
-from ..runner import RunOptions, RunResult, run_file
 from .common import existing_file
+
+if TYPE_CHECKING:
+    from ..runner import RunResult
 
 MESSAGE_LABEL = {"msg": "msg", "warn": "warning", "error": "error", "log": "log", "dialog": "dialog"}
 
@@ -42,6 +45,8 @@ def run(job: str, ini: str | None, macro: str | None, user_macro: str | None, as
         trace: str | None, samples: str | None, answers: tuple[str, ...], max_steps: int | None,
         log_dir: str | None, allow_exec: bool, save_vars: bool, no_simulation: bool, block_delete: bool) -> None:
     """Run JOB as the controller would (in simulation) and report what the machine does."""
+    from ..runner import RunOptions, run_file
+
     if save_vars and not ini:
         raise click.UsageError("--save-vars needs --ini (the file to write the variables to)")
     if log_dir and not Path(log_dir).is_dir():

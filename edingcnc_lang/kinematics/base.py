@@ -2,16 +2,18 @@
 
 The interpreter only talks to ``Kinematics``; ``KinematicsPlugin`` gives Python
 plug-ins sensible defaults so a user only has to write ``inverse`` and ``forward``.
+numpy is imported by the batch methods, not here: a run with the trivial kinematics never needs it.
 """
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import ClassVar, Protocol, runtime_checkable
-
-import numpy as np
+from typing import TYPE_CHECKING, ClassVar, Protocol, runtime_checkable
 
 from edingcnc_lang.errors import ConfigError, Location, MachineError
 from edingcnc_lang.kinematics import abi
+
+if TYPE_CHECKING:
+    import numpy as np
 
 Pose = tuple[float, float, float, float, float, float]
 AXES = ("x", "y", "z", "a", "b", "c")
@@ -61,6 +63,8 @@ def as_pose(values: Sequence[float]) -> Pose:
 
 def as_rows(pos: np.ndarray) -> np.ndarray:
     """Validate an (N, 6) batch and return it as a float array."""
+    import numpy as np
+
     rows = np.asarray(pos, dtype=float)
     if rows.ndim != 2 or rows.shape[1] != 6:
         raise ValueError(f"expected an (N, 6) array of poses, got shape {rows.shape}")
@@ -113,6 +117,8 @@ class KinematicsPlugin:
 
     def inverse_many(self, pos: np.ndarray, tool_length: float = 0.0) -> np.ndarray:
         """Fallback for plug-ins without a vectorised inverse: one scalar call per sample."""
+        import numpy as np
+
         rows = as_rows(pos)
         out = np.empty_like(rows)
         for i, row in enumerate(rows):
@@ -136,12 +142,16 @@ class VectorisedKinematics(KinematicsPlugin):
         raise NotImplementedError
 
     def inverse(self, pos: Pose, tool_length: float = 0.0) -> Pose:
+        import numpy as np
+
         try:
             return as_pose(self.inverse_rows(np.array([pos], dtype=float), tool_length)[0])
         except KinematicsDomainError as err:
             raise KinematicsDomainError(err.message, err.location, err.notes) from None
 
     def forward(self, joints: Pose, tool_length: float = 0.0) -> Pose:
+        import numpy as np
+
         return as_pose(self.forward_rows(np.array([joints], dtype=float), tool_length)[0])
 
     def inverse_many(self, pos: np.ndarray, tool_length: float = 0.0) -> np.ndarray:

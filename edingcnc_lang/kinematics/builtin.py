@@ -1,16 +1,21 @@
-"""Kinematics built into the controller: trivial, CoreXY, the ``KIN`` axis mappings, the bend knife."""
+"""Kinematics built into the controller: trivial, CoreXY, the ``KIN`` axis mappings, the bend knife.
+
+The batch methods work on the arrays they are given, so only the bend knife imports numpy itself.
+"""
 from __future__ import annotations
 
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-
-import numpy as np
-from numpy.typing import ArrayLike
+from typing import TYPE_CHECKING
 
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import VectorisedKinematics
+
+if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import ArrayLike
 
 X, Y, Z, A, B, C = range(6)
 
@@ -141,6 +146,8 @@ def bend_knife_correction(x: ArrayLike, y: ArrayLike, z_work: ArrayLike, c_deg: 
     d = clamp(z_hi - z_work, 0, z_hi - z_lo); (jx, jy) = (x, y) + d * (cos(C + beta), sin(C + beta)).
     beta = 0 is a straight knife (no correction).  Scalars in give floats out, arrays broadcast.
     """
+    import numpy as np
+
     xa, ya = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     if beta_deg == 0.0:
         jx, jy = np.broadcast_arrays(xa, ya)

@@ -4,7 +4,8 @@ Resolution order (docs/kinematics.md): a file (the name as a path, else in each 
 ``.py`` source, ``.so`` library, or the ``.so`` sibling of a Windows ``.dll`` name), then a name
 registered under the entry-point group ``edingcnc_lang.kinematics``, then the built-in table
 (the same names, for source checkouts without installed metadata).  Every failure is a
-``PluginError`` naming the plug-in.
+``PluginError`` naming the plug-in.  ``importlib.metadata`` and ctypes are imported only when a
+lookup needs them (reading every installed package's entry points is slow on a big site-packages).
 """
 from __future__ import annotations
 
@@ -12,15 +13,16 @@ import importlib
 import importlib.util
 import inspect
 from collections.abc import Callable, Mapping, Sequence
-from importlib import metadata
 from pathlib import Path
 from types import ModuleType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.errors import EcncError, PluginError
 from edingcnc_lang.kinematics.base import Kinematics, KinematicsPlugin
-from edingcnc_lang.kinematics.ctypes_plugin import CompiledKinematics
 from edingcnc_lang.kinematics.shipped import import_shipped
+
+if TYPE_CHECKING:
+    from importlib import metadata
 
 ENTRY_POINT_GROUP = "edingcnc_lang.kinematics"
 
@@ -119,11 +121,15 @@ def _construct(factory: Callable[..., Any], label: str, settings: Mapping[str, s
 
 def _load_file(path: Path, settings: Mapping[str, str]) -> Kinematics:
     if path.suffix.lower() == ".so":
+        from edingcnc_lang.kinematics.ctypes_plugin import CompiledKinematics
+
         return CompiledKinematics(path, settings)
     return _construct(_plugin_class(_import_file(path), str(path)), str(path), settings)
 
 
 def _entry_points() -> dict[str, metadata.EntryPoint]:
+    from importlib import metadata
+
     return {ep.name.lower(): ep for ep in metadata.entry_points(group=ENTRY_POINT_GROUP)}
 
 

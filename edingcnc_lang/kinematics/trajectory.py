@@ -5,16 +5,19 @@ The motion stage uses these to pick the speed a move runs at (the programmed fee
 the axis limits; rapids as fast as the limits allow) and to check the joints against their
 ``maxVelocity``/``maxAcceleration``.  Dynamics are measured on the samples themselves, so the
 same code serves Cartesian axes and joints, lines and arcs, and any kinematics.
+``geometry_of`` is also used for limit checks without sampling, so numpy is only imported by
+the functions that sample or measure.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import PLANES, Move
-from edingcnc_lang.kinematics.sampling import sample_arc, sample_line
+
+if TYPE_CHECKING:
+    import numpy as np
 
 
 @dataclass(frozen=True)
@@ -30,6 +33,8 @@ class Geometry:
 
     def sample(self, speed: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
         """Times after the move start and poses, every ``dt`` at ``speed`` (mm/s, or deg/s if rotary only)."""
+        from edingcnc_lang.kinematics.sampling import sample_arc, sample_line
+
         if self.center is None:
             return sample_line(self.start, self.end, speed, dt)
         return sample_arc(self.start, self.end, self.center, self.normal, self.turns, speed, dt,
@@ -76,6 +81,8 @@ def dynamics(start_time: float, start: np.ndarray, t: np.ndarray, points: np.nda
     velocity step where one move meets the next is not an acceleration of either (the
     controller's look-ahead blends it), so it is not measured here.
     """
+    import numpy as np
+
     times = np.concatenate(([start_time], t))
     pts = np.vstack((start, points))
     steps = np.diff(times)
