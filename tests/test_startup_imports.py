@@ -1,0 +1,78 @@
+"""Start-up cost: what a short run and ``ecnc --help`` import.
+
+numpy (~100 ms) and lark (~50 ms) dominate the start of a three-line job, so a run whose joints
+are simply the position must not load numpy, and ``ecnc --help`` loads neither.  Each check runs
+in a fresh interpreter, because this test process has imported everything already.
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+RUN_TRIVIAL_JOB = """
+import sys
+from pathlib import Path
+from edingcnc_lang import RunOptions, run_file
+result = run_file(sys.argv[1], RunOptions(trace=Path(sys.argv[2])))
+print(result.machine, result.moves, 'numpy' in sys.modules)
+"""
+
+
+def _python(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, *args], capture_output=True, text=True, check=True, cwd=ROOT)
+
+
+def _imported_modules(importtime_log: str) -> set[str]:
+    """Module names from ``-X importtime`` lines (``import time: self | cumulative | name``)."""
+    return {line.rsplit("|", 1)[1].strip() for line in importtime_log.splitlines()
+            if line.startswith("import time:") and "|" in line}
+
+
+def test_a_trivial_job_does_not_import_numpy(tmp_path: Path) -> None:
+    job = tmp_path / "three.nc"
+    job.write_text("G0 X1\nG1 Y1 F100\nG2 X2 Y2 R1\nM30\n")  # the arc checks its extremes without sampling
+    out = _python("-c", RUN_TRIVIAL_JOB, str(job), str(tmp_path / "trace.csv")).stdout.split()
+    assert out == ["(2.0,", "2.0,", "0.0,", "0.0,", "0.0,", "0.0)", "3", "False"]
+    assert len((tmp_path / "trace.csv").read_text().splitlines()) == 4  # header and three moves
+
+
+def test_samples_still_load_numpy(tmp_path: Path) -> None:
+    job = tmp_path / "one.nc"
+    job.write_text("G1 X1 F600\n")
+    samples = tmp_path / "samples.csv"
+    _python("-m", "edingcnc_lang", "run", str(job), "--samples", str(samples))
+    rows = samples.read_text().splitlines()
+    assert rows[0].startswith("t,x,y,z") and rows[-1].split(",")[1] == "1.0"
+
+
+@pytest.mark.parametrize("args", [["--help"], ["run", "--help"], ["kins", "--help"]])
+def test_help_imports_neither_numpy_nor_lark(args: list[str]) -> None:
+    result = _python("-X", "importtime", "-m", "edingcnc_lang", *args)
+    assert "Usage:" in result.stdout
+    modules = _imported_modules(result.stderr)
+    assert "click" in modules  # the log is really there
+    assert not {"numpy", "lark"} & modules
+
+
+def test_lazy_package_names_resolve() -> None:
+    import edingcnc_lang
+    import edingcnc_lang.kinematics
+
+    for package in (edingcnc_lang, edingcnc_lang.kinematics):
+        for name in package.__all__:
+            assert getattr(package, name) is not None, name
+        with pytest.raises(AttributeError):
+            package.no_such_name  # noqa: B018 - the lookup itself is the test
+    assert edingcnc_lang.run_file.__module__ == "edingcnc_lang.runner"
+
+
+def test_lint_format_names_match_the_formats() -> None:
+    from edingcnc_lang.cli.lint_cmd import FORMAT_NAMES
+    from edingcnc_lang.lint.formats import FORMATS
+
+    assert sorted(FORMAT_NAMES) == sorted(FORMATS)
