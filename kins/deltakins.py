@@ -18,6 +18,7 @@ from edingcnc_lang.kinematics.base import KinematicsDomainError, VectorisedKinem
 SIN_60 = math.sqrt(3.0) / 2.0
 COS_60 = 0.5
 JOINT_NAMES = ("X", "Y", "Z")
+BLOCK = 16_384  # samples per pass of the inverse: a block's temporaries stay in the CPU cache
 
 
 class DeltaKins(VectorisedKinematics):
@@ -40,28 +41,50 @@ class DeltaKins(VectorisedKinematics):
         self.last_joints: tuple[float, ...] = ()
 
     def inverse_rows(self, pos: np.ndarray, tool_length: float) -> np.ndarray:
-        dx = self.towers[None, :, 0] - pos[:, 0:1]
-        dy = self.towers[None, :, 1] - pos[:, 1:2]
-        radicand = self.arm ** 2 - dx ** 2 - dy ** 2
-        bad = (radicand < 0.0).any(axis=1)
-        if self.safety_radius > 0.0:
-            bad |= np.hypot(pos[:, 0], pos[:, 1]) > self.safety_radius
-        if bad.any():
-            self._raise_unreachable(pos, radicand, int(np.flatnonzero(bad)[0]))
+        """jk = z + sqrt(L^2 - (tx_k - x)^2 - (ty_k - y)^2) for the three towers k, block by block."""
         joints = pos.copy()
-        joints[:, 0:3] = pos[:, 2:3] + np.sqrt(radicand)
+        for first in range(0, len(pos), BLOCK):
+            joints[first:first + BLOCK, 0:3] = self._carriage_heights(pos[first:first + BLOCK], first).T
         if len(joints):
-            self.last_joints = tuple(float(j) for j in joints[-1, 0:3])
+            self.last_joints = tuple(joints[-1, 0:3].tolist())
         return joints
 
-    def _raise_unreachable(self, pos: np.ndarray, radicand: np.ndarray, index: int) -> None:
-        x, y, z = (float(v) for v in pos[index, 0:3])
-        short = [JOINT_NAMES[k] for k in range(3) if radicand[index, k] < 0.0]
+    def _carriage_heights(self, pos: np.ndarray, first: int) -> np.ndarray:
+        """(3, n) joint positions of a block of poses; ``first`` is the block's first sample in the batch.
+
+        The work is done in place on (3, n) arrays with one contiguous row per axis or tower:
+        numpy streams through contiguous rows several times faster than through the columns of
+        an (n, 6) array.
+        """
+        x, y, z = pos[:, 0:3].T.copy()
+        radicand = np.subtract.outer(self.towers[:, 0], x)
+        np.square(radicand, out=radicand)
+        dy = np.subtract.outer(self.towers[:, 1], y)
+        np.square(dy, out=dy)
+        np.subtract(self.arm ** 2, radicand, out=radicand)
+        np.subtract(radicand, dy, out=radicand)
+        far = np.hypot(x, y) > self.safety_radius if self.safety_radius > 0.0 else None  # 0: not set
+        # one cheap pass when every sample is reachable; NaN fails ">=" and takes the exact check too
+        if not radicand.min(initial=np.inf) >= 0.0 or (far is not None and far.any()):
+            bad = (radicand < 0.0).any(axis=0)
+            if far is not None:
+                bad |= far
+            if bad.any():
+                index = int(np.flatnonzero(bad)[0])
+                self._raise_unreachable(pos[index], radicand[:, index], first + index)
+        heights = np.sqrt(radicand, out=radicand)  # in place: the radicand becomes the carriage heights
+        heights += z
+        return heights
+
+    def _raise_unreachable(self, pose: np.ndarray, radicand: np.ndarray, sample: int) -> None:
+        """``radicand`` holds the three towers' values at ``pose``, sample number ``sample`` of the batch."""
+        x, y, z = (float(v) for v in pose[0:3])
+        short = [JOINT_NAMES[k] for k in range(3) if radicand[k] < 0.0]
         reason = (f"the arm of joint {', '.join(short)} is too short" if short else
                   f"it is {math.hypot(x, y):g} mm from the centre, beyond "
                   f"linDeltaSafetyRadius = {self.safety_radius:g}")
         raise KinematicsDomainError(f"X{x:g} Y{y:g} Z{z:g} is out of reach of the delta robot: {reason}",
-                                    sample=index)
+                                    sample=sample)
 
     def forward_rows(self, joints: np.ndarray, tool_length: float) -> np.ndarray:
         """Trilateration of three spheres of radius L about the carriage joints; the lower root."""
