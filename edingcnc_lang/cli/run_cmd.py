@@ -1,7 +1,6 @@
 """``ecnc run JOB``: run a job on the virtual machine and report what it did."""
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -45,6 +44,8 @@ def run(job: str, ini: str | None, macro: str | None, user_macro: str | None, as
         trace: str | None, samples: str | None, answers: tuple[str, ...], max_steps: int | None,
         log_dir: str | None, allow_exec: bool, save_vars: bool, no_simulation: bool, block_delete: bool) -> None:
     """Run JOB as the controller would (in simulation) and report what the machine does."""
+    import json
+
     from ..runner import RunOptions, run_file
 
     if save_vars and not ini:
