@@ -39,6 +39,9 @@ _COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<":
 # as the function ASIN, not as the word A, so a line with one is left to the grammar.
 _RESERVED = re.compile(r"(abs|acos|asin|cos|exp|fix|fup|ln|round|sin|sqrt|tan|atan)\s*\[|"
                        r"(mod|or|xor|and|eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])", re.IGNORECASE)
+_AXIS = re.compile(r"[xyzabc](?![A-Za-z0-9_])", re.IGNORECASE)
+_FILE_NAME = re.compile(r'[^\s;"]+')
+_STRINGS = re.compile(r'"[^"\n]*"')
 _MESSAGES = frozenset({"msg", "warnmsg", "errmsg", "logmsg"})
 _CLOSERS = {"endsub": "EndSub", "endif": "EndIf", "endwhile": "EndWhile", "else": "Else"}
 # Every keyword the grammar knows at the start of a line; those not handled here go to Lark.
@@ -227,8 +230,10 @@ class _Line:
             raise _GiveUp
         return Open(kind, self.span(start, end), cond=cond, extra=extra)
 
-    def message(self, kind: str, start: int, end: int) -> n.Message:
+    def items(self) -> tuple[list[n.MessageItem], int]:
+        """Strings and values up to the end of the line (msg, dlgmsg), and the end column."""
         items: list[n.MessageItem] = []
+        end = self.pos + 1
         while not self.at_end():
             if self.text[self.pos] == '"':
                 match = self.take(_STRING)
@@ -239,7 +244,25 @@ class _Line:
             else:
                 value, _s, end = self.signed()
                 items.append(value)
-        return n.Message(kind, tuple(items), self.span(start, end))
+        return items, end
+
+    def logfile(self, start: int) -> n.LogFile:
+        self.skip()
+        if self.peek() == '"':
+            match = self.take(_STRING)
+            name = match.group()[1:-1] if match else None
+        else:
+            match = self.take(_FILE_NAME)
+            name = match.group() if match else None
+        if match is None or name is None:
+            raise _GiveUp
+        end = self.pos + 1
+        mode = None
+        if not self.at_end():
+            mode, _s, end = self.signed()
+            if not self.at_end():
+                raise _GiveUp
+        return n.LogFile(name, mode, self.span(start, end))
 
     def statement(self) -> LineResult:
         if self.at_end():
@@ -258,7 +281,18 @@ class _Line:
         if word in ("if", "while"):
             return self.condition(word.capitalize(), start)
         if word in _MESSAGES:
-            return self.message(word, start, end)
+            items, last = self.items()
+            return n.Message(word, tuple(items), self.span(start, last if items else end))
+        if word == "dlgmsg":
+            items, last = self.items()
+            return n.Dialog(tuple(items), self.span(start, last if items else end))
+        if word == "logfile":
+            return self.logfile(start)
+        if word in ("home", "hometandem"):
+            axis = self.take(_AXIS)
+            if not axis or not self.at_end():
+                raise _GiveUp
+            return n.Home(axis.group().upper(), word == "hometandem", self.span(start, axis.end() + 1))
         if word in ("sub", "gosub"):
             name = self.take(_IDENT)
             if not name or not self.at_end():
@@ -270,7 +304,7 @@ class _Line:
 
 def parse_fast(text: str, path: str, line: int) -> LineResult | object:
     """The line's node, or GIVE_UP when the grammar must decide."""
-    if "(" in text:  # comments in parentheses (and MSG comments) are the grammar's business
+    if "(" in text and "(" in _STRINGS.sub("", text):  # ( ) comments and MSG comments: the grammar's business
         return GIVE_UP
     try:
         return _Line(text, path, line).statement()

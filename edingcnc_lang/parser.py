@@ -15,16 +15,21 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
 from dataclasses import dataclass, field
 from functools import lru_cache
-from importlib import resources
+from pathlib import Path
+from typing import TYPE_CHECKING
 
-from lark import Lark, Token, Tree
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from . import nodes as n
 from .diagnostics import Diagnostic, SyntaxErrors
 from .fastparse import GIVE_UP, parse_fast
 from .markers import Close, LineResult, Open
 from .source import iter_file_lines, iter_text_lines
+
+if TYPE_CHECKING:  # lark is imported when a line first needs the grammar (start-up time)
+    from lark import Lark, Token, Tree
+    from lark.exceptions import UnexpectedInput
+
+GRAMMAR = Path(__file__).resolve().parent / "grammar" / "macro.lark"
 
 KIN_MODES = frozenset({"ON", "OFF", "CTRL", "X2A", "X2XA", "Y2A", "Y2YA", "Z2C", "Z2ZC", "Y2YAZ2ZC"})
 UNITS = frozenset({"mm", "inch"})
@@ -40,10 +45,10 @@ _FAST_WORDS = re.compile(r"([A-Za-z])[ \t]*([+-]?(?:\d+\.?\d*|\.\d+))")
 @lru_cache(maxsize=1)
 def _lark() -> Lark:
     """The line parser, built once per process from the packaged grammar files."""
-    grammar = resources.files("edingcnc_lang.grammar")
-    with resources.as_file(grammar / "macro.lark") as path:
-        return Lark.open(str(path), parser="lalr", lexer="contextual",
-                         propagate_positions=True, maybe_placeholders=False, cache=True)
+    from lark import Lark
+
+    return Lark.open(str(GRAMMAR), parser="lalr", lexer="contextual",
+                     propagate_positions=True, maybe_placeholders=False, cache=True)
 
 
 # --------------------------------------------------------------------------- tree -> AST
@@ -60,7 +65,7 @@ class _Builder:
         self.line = line
 
     def span(self, item: Tree | Token) -> n.Span:
-        if isinstance(item, Token):
+        if isinstance(item, str):
             return n.Span(self.path, self.line, item.column or 0, self.line, item.end_column or 0)
         meta = item.meta
         if getattr(meta, "empty", True):
@@ -69,7 +74,7 @@ class _Builder:
 
     # expressions ------------------------------------------------------------
     def expr(self, item: Tree | Token) -> n.Expr:
-        if isinstance(item, Token):  # a bare NUMBER inlined by '?' rules
+        if isinstance(item, str):  # a bare NUMBER inlined by '?' rules
             return n.Number(float(item), self.span(item))
         kind = _strip(item.data)
         handler = self._EXPR[kind]
@@ -123,7 +128,7 @@ class _Builder:
         message: str | None = None
         block_delete = False
         for child in tree.children:
-            if isinstance(child, Token):
+            if isinstance(child, str):
                 if _strip(child.type) == "SLASH":
                     block_delete = True
                 else:  # MSG_COMMENT: "(MSG text)"
@@ -162,7 +167,7 @@ class _Builder:
         return n.GoSub(str(tree.children[1]), self.span(tree))
 
     def _items(self, children: list[Tree | Token]) -> tuple[n.MessageItem, ...]:
-        return tuple(str(c)[1:-1] if isinstance(c, Token) and _strip(c.type) == "STRING"
+        return tuple(str(c)[1:-1] if isinstance(c, str) and _strip(c.type) == "STRING"
                      else self.expr(c) for c in children)
 
     def _message(self, tree: Tree) -> n.Stmt:
@@ -351,6 +356,8 @@ _CONDITION_LINE = re.compile(r"^\s*(if|while)(?![a-z0-9_])", re.IGNORECASE)
 
 def _explain(text: str, exc: UnexpectedInput) -> _LineError:
     """Turn a Lark error on ``text`` into a message in the user's terms."""
+    from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
+
     col = getattr(exc, "column", 0) or len(text) + 1
     condition = _CONDITION_LINE.match(text)
     if condition:
@@ -401,6 +408,8 @@ def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
 
 def parse_line_grammar(text: str, path: str = "<string>", line: int = 1) -> LineResult:
     """Parse one line with the Lark grammar only (the reference for the fast path)."""
+    from lark.exceptions import UnexpectedInput
+
     try:
         tree = _lark().parse(text)
     except UnexpectedInput as exc:

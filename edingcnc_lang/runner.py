@@ -9,7 +9,6 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
@@ -86,7 +85,7 @@ class RunOptions:
 
 def packaged_macro() -> Path:
     """The default macro file shipped inside the package."""
-    return Path(str(resources.files("edingcnc_lang.stdlib") / "macro.cnc"))
+    return Path(__file__).resolve().parent / "stdlib" / "macro.cnc"
 
 
 class Run:

@@ -53,7 +53,16 @@ def _plain(expr) -> str:  # type: ignore[no-untyped-def]
     return expr_text(expr)
 
 
-lines = st.one_of(blocks.map(lambda b: stmt_lines(b)[0]), messages.map(lambda m: stmt_lines(m)[0]), heads,
+others = st.one_of(
+    st.builds(lambda a, t: f"{'homeTandem' if t else 'home'} {a}", st.sampled_from("xyzabcXC"), st.booleans()),
+    st.builds(lambda items: "dlgmsg " + " ".join(items),
+              st.lists(st.one_of(st.from_regex(r'"[a-z (;]{0,8}"', fullmatch=True),
+                                 st.integers(1, 6000).map(str), st.just("#27")), max_size=5)),
+    st.builds(lambda name, mode: f"logfile {name}{mode}",
+              st.sampled_from(['"log.txt"', "probe.txt", '"a;b (1).txt"', "x", "C:\\temp\\l.txt"]),
+              st.sampled_from(["", " 0", " 1", " [1]", " -1"])),
+)
+lines = st.one_of(others, blocks.map(lambda b: stmt_lines(b)[0]), messages.map(lambda m: stmt_lines(m)[0]), heads,
                   simple.map(lambda s: stmt_lines(s)[0]))
 comments = st.sampled_from(["", " ; note", ";x G1 X2", "   "])
 
@@ -67,12 +76,14 @@ def test_fast_parser_agrees_with_the_grammar(line: str, comment: str, data: st.D
 def test_fast_parser_handles_the_common_lines() -> None:
     handled = ["#1 = [#1 + 1]", "G1 X[#1 * 2] Y-[#2] F[#4105]", "If [[#5380 == 0] and [#5397 == 0]]",
                "While [#1 < 10]", "msg \"T\"#5011\" ok\"", "EndIf", "Else", "Sub home_x ; homes X",
-               "GoSub change_tool", "X[ATAN[1]/[2]] Y[SQRT[4]]", "/G0 X[1]", "N10 #3 = 6 G1 X#3"]
+               "GoSub change_tool", "X[ATAN[1]/[2]] Y[SQRT[4]]", "/G0 X[1]", "N10 #3 = 6 G1 X#3",
+               "home z", "homeTandem x", 'dlgmsg "Setup" "width" 27', 'logfile "probe.txt" 1',
+               'errmsg "probe (T1) not found"']
     for line in handled:
         assert _check(line), line
 
 
 def test_fast_parser_gives_up_on_what_it_does_not_cover() -> None:
-    for line in ["G0 X1 (comment)", "dlgmsg \"a\" \"b\" 27", "home x", "G0 X1+2", "If [1] AND [2]",
+    for line in ["G0 X1 (comment)", "kin on", "tanknife off", "G0 X1+2", "If [1] AND [2]",
                  "#1 == 2", "msg \"open", "Sub a b", "KIN ON", "G1 X"]:
         assert parse_fast(line, "f", 1) is GIVE_UP, line
