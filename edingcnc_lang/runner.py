@@ -107,7 +107,8 @@ class Run:
         self.interpreter = Interpreter(self.motion, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
-        self.interpreter.params.set(t.KIN_TYPE, float(self.kinematics.kin_type()))
+        # the configured kinematics' type is there from the start; it is not something the job wrote
+        self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)

@@ -92,3 +92,10 @@ def test_result_to_json_matches_the_cli_contract() -> None:
     assert {"position", "machine", "joints", "variables", "messages", "kinematics", "tool", "moves",
             "modal"} <= set(doc)
     assert doc["messages"] == [{"kind": "msg", "text": "m", "file": "job.nc", "line": 2}]
+
+
+def test_variables_list_only_what_the_run_wrote() -> None:
+    from edingcnc_lang.runner import run_string
+
+    result = run_string("#100 = 2\nG0 X1\n")
+    assert result.variables == {100: 2.0}
