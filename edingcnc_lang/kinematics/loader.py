@@ -168,8 +168,10 @@ def load_kinematics(name_or_path: str, settings: Mapping[str, str],
         return _construct(factory, name, settings)
     files = (f"no .so or .py file of that name is in {', '.join(str(d) for d in search_dirs)}" if search_dirs
              else "it is not the path of a .py or .so file")
+    sources = [d / f"{name}.c" for d in search_dirs if (d / f"{name}.c").is_file()]
+    hint = f"; {sources[0]} is there: build it first with `ecnc kins build {sources[0]}`" if sources else ""
     raise PluginError(f"kinematics plug-in {name_or_path!r} not found: it is not a registered name "
-                      f"({', '.join(registered_names())}) and {files}")
+                      f"({', '.join(registered_names())}) and {files}{hint}")
 
 
 def available_kinematics() -> list[tuple[str, int, str]]:

@@ -94,3 +94,18 @@ def test_plugin_batch_result_is_checked(run_job, tmp_path: Path, nan: int, messa
     assert outcome.code == 70
     assert "job.nc:1: error: kinematics plug-in " in outcome.err
     assert f"mykins.py failed: ValueError: {message}" in outcome.err
+
+
+def test_an_unbuilt_c_plugin_says_how_to_build_it(tmp_path) -> None:
+    from click.testing import CliRunner
+
+    from edingcnc_lang.cli import main
+
+    (tmp_path / "mykins.c").write_text("/* source only */\n")
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[KINEMATICS]\nkinematicsDLLName = mykins.dll\n")
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X1\n")
+    result = CliRunner().invoke(main, ["run", "--ini", str(ini), str(job)])
+    assert result.exit_code == 70
+    assert "build it first with `ecnc kins build" in result.output
