@@ -492,12 +492,16 @@ class Interpreter:
         pos = self.pos
         feed = self.feed
         batch: list[tuple[str, int, tuple[float, ...], float]] = []
+        room = len(lines) if budget is None else budget - self.steps  # statements left in the step budget
+        done = 0
         index = first
         for index in range(first, len(lines)):
+            if done >= room:
+                break
             lineno, text = lines[index]
             cam = CAM_LINE.match(text)
             if cam is not None:  # the usual shape: [G0|G1] [X] [Y] [Z] [A] [B] [C] [F], in that order
-                g, *values, f = cam.groups()
+                g, x, y, z, a, b, c, f = cam.groups()
                 if g is not None:
                     g_value = float(g)
                     if g_value != 0.0 and g_value != 1.0:
@@ -505,42 +509,60 @@ class Interpreter:
                     line_motion = G_0 if g_value == 0.0 else G_1
                 else:
                     line_motion = motion
-                x, y, z, a, b, c = values
-                axes = []
-                if x is not None:
-                    axes.append((0, float(x) * scale))
-                if y is not None:
-                    axes.append((1, float(y) * scale))
-                if z is not None:
-                    axes.append((2, float(z) * scale))
-                if a is not None or b is not None or c is not None:
-                    axes += [(axis, float(v)) for axis, v in ((3, a), (4, b), (5, c)) if v is not None]
-                new_feed = float(f) * scale if f is not None else None
-                if new_feed is not None and new_feed < 0:
+                if line_motion is None:
                     break
+                if f is not None:
+                    new_feed = float(f) * scale
+                    if new_feed < 0:
+                        break
+                    feed = new_feed
+                if x is None and y is None and z is None and a is None and b is None and c is None:
+                    done += 1
+                    motion = line_motion
+                    continue
+                base = pos if incremental else offset
+                target = list(pos)
+                if x is not None:
+                    target[0] = base[0] + float(x) * scale
+                if y is not None:
+                    target[1] = base[1] + float(y) * scale
+                if z is not None:
+                    target[2] = base[2] + float(z) * scale
+                if a is not None:
+                    target[3] = base[3] + float(a)
+                if b is not None:
+                    target[4] = base[4] + float(b)
+                if c is not None:
+                    target[5] = base[5] + float(c)
             else:
                 parsed = self._plain_move_words(text, motion, scale)
                 if parsed is None:
                     break
                 line_motion, axes, new_feed = parsed
-            if line_motion is None or (budget is not None and self.steps + 1 > budget):
-                break
-            if new_feed is not None:
-                feed = new_feed
-            if axes:
-                if line_motion == G_1 and feed <= 0:
+                if line_motion is None:
                     break
-                target = list(pos)
+                if new_feed is not None:
+                    feed = new_feed
+                if not axes:
+                    done += 1
+                    motion = line_motion
+                    continue
                 base = pos if incremental else offset
+                target = list(pos)
                 for axis, value in axes:
                     target[axis] = base[axis] + value
-                batch.append(("rapid" if line_motion == G_0 else "linear", lineno, tuple(target),
-                              0.0 if line_motion == G_0 else feed))
-                pos = target
-            self.steps += 1
+            if line_motion == G_1:
+                if feed <= 0:
+                    break
+                batch.append(("linear", lineno, tuple(target), feed))
+            else:
+                batch.append(("rapid", lineno, tuple(target), 0.0))
+            pos = target
+            done += 1
             motion = line_motion
         else:
             index = len(lines)
+        self.steps += done
         if batch:
             self.path, self.line = path, batch[-1][1]
             self.canon.straight_moves(path, tuple(self.pos), batch)
