@@ -308,5 +308,5 @@ def parse_fast(text: str, path: str, line: int) -> LineResult | object:
         return GIVE_UP
     try:
         return _Line(text, path, line).statement()
-    except (_GiveUp, IndexError):
+    except (_GiveUp, IndexError, RecursionError):  # RecursionError: absurdly deep nesting, the grammar decides
         return GIVE_UP

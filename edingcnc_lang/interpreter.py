@@ -38,6 +38,7 @@ CAM_LINE = re.compile(r"[ \t]*(?:[Gg][ \t]*" + _NUM + ")?" + "".join(
 AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
 AXIS_SET = frozenset(AXES)
 LINEAR_AXES = frozenset("XYZ")
+UNSUPPORTED_MOTION = frozenset(t.code_key(c) for c in (33, 33.1, 74, 76, 87))  # threading, back boring
 PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1, 60))  # M0, M1, M60
 
 # G codes as integer tenths, computed once (they are compared on every line).
@@ -232,7 +233,10 @@ class Interpreter:
         """Execute top-level statements; Sub definitions are skipped. False if M2/M30 ended the run."""
         try:
             for stmt in statements:
-                if type(stmt) is not n.Sub:
+                kind = type(stmt)
+                if kind is n.PlainRun:  # a chunk of lines, each counted as a statement
+                    self._exec_plain_run(stmt)  # type: ignore[arg-type]
+                elif kind is not n.Sub:
                     self.execute(stmt)
         except ProgramEnd:
             return False
@@ -492,6 +496,7 @@ class Interpreter:
         pos = self.pos
         feed = self.feed
         batch: list[tuple[str, int, tuple[float, ...], float]] = []
+        feeds: list[float] = []  # the feed in force at each move of the batch
         room = len(lines) if budget is None else budget - self.steps  # statements left in the step budget
         done = 0
         index = first
@@ -557,6 +562,7 @@ class Interpreter:
                 batch.append(("linear", lineno, tuple(target), feed))
             else:
                 batch.append(("rapid", lineno, tuple(target), 0.0))
+            feeds.append(feed)
             pos = target
             done += 1
             motion = line_motion
@@ -565,7 +571,17 @@ class Interpreter:
         self.steps += done
         if batch:
             self.path, self.line = path, batch[-1][1]
-            self.canon.straight_moves(path, tuple(self.pos), batch)
+            try:
+                self.canon.straight_moves(path, tuple(self.pos), batch)
+            except EcncError as err:  # a move was refused: the state is that of the move before it
+                failed = next((k for k, item in enumerate(batch)
+                               if err.location is not None and item[1] == err.location.line), 0)
+                if failed:
+                    self.pos = list(batch[failed - 1][2])
+                self.feed = feeds[failed]
+                self.modal["motion"] = G_1 if batch[failed][0] == "linear" else G_0
+                self.line = batch[failed][1]
+                raise
         self.pos = list(pos)
         self.feed = feed
         if motion is not None:
@@ -705,7 +721,7 @@ class Interpreter:
         if "F" in words:
             if words["F"] < 0:
                 raise self.fail("negative feed rate", span)
-            self.feed = words["F"] * (self.scale if self.modal["feed_mode"] == G_94 else 1.0)
+            self.feed = words["F"] * (1.0 if self.modal["feed_mode"] == G_93 else self.scale)
         if "S" in words:
             if words["S"] < 0:
                 raise self.fail(f"spindle speed S{format_value(words['S'])} is negative", span)
@@ -759,8 +775,10 @@ class Interpreter:
             tool = int(words.get("H", self.params.read(t.TOOL_CURRENT)))
             if not 0 <= tool <= t.MAX_TOOL:
                 raise self.fail(f"G43 H{tool}: no such tool", span)
-            self.tool_z = words["Z"] * self.scale if code == G_43_1 and "Z" in words else (
-                self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0)
+            if code == G_43_1:  # dynamic offset: K is the tool length (I, the lathe X offset, has no effect)
+                self.tool_z = words.get("K", 0.0) * self.scale
+            else:
+                self.tool_z = self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
         self._offset = None
@@ -826,7 +844,8 @@ class Interpreter:
         z_first = home[2] > self.pos[2]
         if z_first and 2 in chosen:
             self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
-        self._move("rapid", [home[i] if (i != 2 or z_first) else self.pos[i] for i in range(6)])
+        if any(axis != 2 for axis in chosen):
+            self._move("rapid", [home[i] if i != 2 else self.pos[i] for i in range(6)])
         if not z_first and 2 in chosen:
             self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
 
@@ -904,8 +923,8 @@ class Interpreter:
 
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None) -> None:
         start = tuple(self.pos)
-        self.pos = list(end)
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc))  # type: ignore[arg-type]
+        self.pos = list(end)  # only a move the machine made changes the position
 
     def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span) -> float:
         """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode."""
@@ -933,6 +952,8 @@ class Interpreter:
             return
         previous = self.modal["motion"]
         if motion is not None:
+            if motion in UNSUPPORTED_MOTION:
+                raise self.fail(f"{t.code_name('G', motion)} is not supported by this simulator", span)
             self.modal["motion"] = motion
         elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68:
             if g53:

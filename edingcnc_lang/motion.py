@@ -116,7 +116,6 @@ class MotionStage:
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
-        self.moves += 1
         checked = move.kind != "home"  # homing is what puts the joints in their range: not checked
         if self._identity() and not self.sample_always:
             samples = None
@@ -132,6 +131,7 @@ class MotionStage:
             elif checked:
                 self._check_samples(move, samples, start_time)
         self.joints = joints
+        self.moves += 1
         if self.active is not None:
             self._user_output(self.active, _located(move))
         for sink in self.sinks:

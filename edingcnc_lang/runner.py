@@ -163,8 +163,13 @@ class Run:
         except RecursionError:  # If/While/GoSub nested beyond what the interpreter's stack holds
             error = MachineError("blocks and sub calls are nested too deeply to run",
                                  Location(interp.path, interp.line))
+        except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
+            error = EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
         finally:
-            self.motion.close()
+            try:
+                self.motion.close()
+            except OSError as err:
+                error = error or EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]

@@ -131,11 +131,15 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     for file in list(loader.files.values()):  # also loads the macro files of every file
         loader.macros_for(Path(file.path))
     macros = {file.path: loader.macros_for(Path(file.path)) for file in loader.files.values()}
-    project = Project(list(loader.files.values()), macros, written)
     active = [r for r in RULES if any(wanted(c, options) for c in r.codes)]
-    for file in dict.fromkeys(targets):
-        for rule in active:
-            found.extend(rule.check(file, project))
+    try:
+        project = Project(list(loader.files.values()), macros, written)
+        for file in dict.fromkeys(targets):
+            for rule in active:
+                found.extend(rule.check(file, project))
+    except RecursionError:  # thousands of nested blocks: report it instead of analysing further
+        found.extend(Diagnostic.make("E100", "blocks are nested too deeply to analyse", file.path, 1, 1)
+                     for file in dict.fromkeys(targets))
     return _finish(found, options, {f.path: f.lines for f in loader.files.values()})
 
 

@@ -1,0 +1,89 @@
+"""Edge cases found in review: state after a refused move, step counting, unsupported codes, I/O errors."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from edingcnc_lang import EcncError, Move, RunOptions, run_file, run_string
+from edingcnc_lang.cli import main
+
+INI = "[JOINT_0]\npositiveLimit = 600\nnegativeLimit = 0\n"
+
+
+@pytest.mark.parametrize("source", ["G1 X10 F100\nX700\n", "G1 X10 F100\nIf [1]\nX700\nEndIf\n"],
+                         ids=["bulk path", "general path"])
+def test_a_move_out_of_limits_leaves_the_machine_where_it_was(tmp_path: Path, source: str) -> None:
+    (tmp_path / "cnc.ini").write_text(INI)
+    job = tmp_path / "job.nc"
+    job.write_text(source)
+    result = CliRunner().invoke(main, ["run", "--ini", str(tmp_path / "cnc.ini"), "--json", str(job)])
+    assert result.exit_code == 70
+    state = json.loads(result.stdout[: result.stdout.rindex("}") + 1])
+    assert state["machine"]["x"] == state["joints"]["x"] == 10.0
+    assert state["moves"] == 1
+    assert "G1" in state["modal"]
+
+
+def test_the_step_budget_counts_lines_the_same_in_files_and_strings(tmp_path: Path) -> None:
+    source = "G1 X10 F100\nX20\nX30\n"
+    job = tmp_path / "job.nc"
+    job.write_text(source)
+    for budget in range(1, 7):
+        outcomes = []
+        for run in (lambda o: run_file(job, o), lambda o: run_string(source, o, path=str(job))):
+            try:
+                outcomes.append(run(RunOptions(max_steps=budget)).moves)
+            except EcncError as err:
+                outcomes.append(err.format())
+        assert outcomes[0] == outcomes[1], budget
+    assert outcomes[0] == 3
+
+
+@pytest.mark.parametrize("code", ["G33 Z-10 K1 F100", "G33.1 Z-10 K1", "G74 X1 Z-1 R1 F100",
+                                  "G76 X1 Z-1 P1 F100", "G87 X1 Z-1 R1 F100"])
+def test_unsupported_motion_codes_are_errors_not_probe_moves(code: str) -> None:
+    moves: list[Move] = []
+    with pytest.raises(EcncError) as info:
+        run_string(f"G0 Z5\n{code}\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    assert "not supported" in info.value.message
+    assert [m.kind for m in moves] == ["rapid"]
+
+
+def test_feed_per_revolution_in_inches_is_converted() -> None:
+    moves: list[Move] = []
+    # G20 on its own line: within a line F is read before the units change (order of execution)
+    run_string("G20\nG95 F0.01 S1000 M3\nG1 X1\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    assert moves[-1].feed == pytest.approx(254.0)
+
+
+def test_g43_1_takes_the_length_from_k() -> None:
+    result = run_string("G43.1 K5\nG0 Z0\n")
+    assert result.variables[5013] == 5.0
+    assert result.machine[2] == 5.0
+
+
+def test_g28_with_only_z_makes_no_extra_move() -> None:
+    moves: list[Move] = []
+    run_string("#5161=10\n#5163=-20\nG0 X5 Z5\nG28 Z7\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    assert [m.end[2] for m in moves if m.line == 4] == [7.0, -20.0]
+
+
+def test_an_unwritable_trace_is_an_error_not_a_traceback(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X1\n")
+    result = subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", str(job), "--trace", "/dev/full"],
+                            capture_output=True, text=True)
+    assert result.returncode == 70
+    assert "error: cannot write" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_absurdly_deep_brackets_are_parsed_by_the_grammar(tmp_path: Path) -> None:
+    job = tmp_path / "deep.nc"
+    job.write_text("#1000=" + "[" * 400 + "1" + "]" * 400 + "\n")
+    result = CliRunner().invoke(main, ["parse", str(job)])
+    assert result.exit_code == 0, result.output
