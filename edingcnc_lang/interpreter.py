@@ -643,6 +643,8 @@ class Interpreter:
     def _dispatch(self, words: dict[str, float], g_codes: dict[str, int], m_codes: dict[str, int],
                   span: n.Span) -> None:
         """Run the sorted words of one line: an M-code sub call, or the built-in actions."""
+        if not words and not g_codes and not m_codes:  # assignments or a message only
+            return
         if len(m_codes) > t.MAX_M_WORDS:
             raise self.fail(f"{len(m_codes)} M words on one line; at most {t.MAX_M_WORDS} are allowed", span)
         if m_codes:
@@ -672,67 +674,107 @@ class Interpreter:
 
     def _execute_line(self, words: dict[str, float], g: Mapping[str, int], m: Mapping[str, int],
                       span: n.Span) -> None:
-        """One line's actions in the controller's order of execution."""
-        if "feed_mode" in g and g["feed_mode"] != self.modal["feed_mode"]:
-            self.modal["feed_mode"] = g["feed_mode"]
-            self.feed = 0.0  # an F of the old mode means something else: the next feed move needs a new F
-        self._feed_speed_tool(words, span)
-        if "tool_change" in m:  # M6
-            self._tool_change(span)
-        if "spindle" in m:
-            self.spindle = m["spindle"] // 10
-            on = self.spindle != 5
-            self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
-            self.params.set(t.SPINDLE_SPEED, self.speed / 60.0 if on else 0.0)
-            self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed}))
-        if "coolant" in m:
-            code = m["coolant"] // 10
-            self.coolant = set() if code == 9 else self.coolant | {code}
-            self.canon.event(Event("coolant", self.path, self.line, {"m": code}))
-        if "overrides" in m:
-            self.canon.event(Event("override", self.path, self.line, {"m": m["overrides"] // 10}))
-        if "io" in m:
-            self._io(m["io"] // 10, words, span)
-        if "misc" in m:
-            self.canon.event(Event("m_code", self.path, self.line, {"m": m["misc"] // 10}))
-        non_modal = g.get("non_modal")
-        if non_modal == G_4:
-            self._dwell(words, span)
-        for group in ("plane", "units", "cutter_comp", "path_control", "distance", "return_mode"):
-            if group in g:
-                self.modal[group] = g[group]
-        if "length_offset" in g:
-            self._length_offset(g["length_offset"], words, span)
-        if "coord_system" in g:
-            self._select_coord_system(g["coord_system"])
-        if "rotation" in g:
-            self._rotation(g["rotation"], words, span)
-        if "scaling" in g and g["scaling"] == G_51:
-            raise self.fail("G51 scaling is not supported", span)
-        if non_modal in self._NON_MODAL:
-            self._NON_MODAL[non_modal](self, non_modal, words, span)
-        self._motion(words, g, non_modal, span)
-        if "stopping" in m:
-            self._stop(m["stopping"], span)
+        """One line's actions in the controller's order of execution (tables.ORDER_OF_EXECUTION)."""
+        sources = {"G": g, "M": m, "word": words}
+        for handler, source, key in self._LINE_STEPS:
+            if source == "always":
+                handler(self, g.get("motion"), words, g, span)
+            else:
+                found = sources[source]
+                if key in found:
+                    handler(self, found[key], words, g, span)
 
     # ------------------------------------------------------------------ line steps
+    # Each step takes the value that triggered it (a G/M key or a word's value), the line's words,
+    # its G codes by group and its span.
+    def _step_feed_mode(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if code != self.modal["feed_mode"]:
+            self.modal["feed_mode"] = code
+            self.feed = 0.0  # an F of the old mode means something else: the next feed move needs a new F
+
+    def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if value < 0:
+            raise self.fail("negative feed rate", span)
+        self.feed = value * (1.0 if self.modal["feed_mode"] == G_93 else self.scale)
+
+    def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                            span: n.Span) -> None:
+        if value < 0:
+            raise self.fail(f"spindle speed S{format_value(value)} is negative", span)
+        self.speed = value
+        if self.spindle != 5:
+            self.params.set(t.SPINDLE_SPEED, self.speed / 60.0)
+
+    def _step_tool_select(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                          span: n.Span) -> None:
+        if value != int(value) or not 0 <= value <= t.MAX_TOOL:
+            raise self.fail(f"tool T{format_value(value)} does not exist (tools are T0..T{t.MAX_TOOL})", span)
+        self.selected_tool = int(value)
+
+    def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._tool_change(span)
+
+    def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.spindle = code // 10
+        on = self.spindle != 5
+        self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
+        self.params.set(t.SPINDLE_SPEED, self.speed / 60.0 if on else 0.0)
+        self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed}))
+
+    def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.coolant = set() if code == 90 else self.coolant | {code // 10}
+        self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
+
+    def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.canon.event(Event("override", self.path, self.line, {"m": code // 10}))
+
+    def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._io(code // 10, words, span)
+
+    def _step_m_state(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.canon.event(Event("m_code", self.path, self.line, {"m": code // 10}))
+
+    def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if code == G_4:
+            self._dwell(words, span)
+
+    def _step_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """Plane, units, cutter compensation, path control, distance and return mode: state only."""
+        self.modal[t.G_GROUPS[code]] = code
+
+    def _step_length_offset(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
+                            span: n.Span) -> None:
+        self._length_offset(code, words, span)
+
+    def _step_coord_system(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
+                           span: n.Span) -> None:
+        self._select_coord_system(code)
+
+    def _step_rotation(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._rotation(code, words, span)
+
+    def _step_scaling(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if code == G_51:
+            raise self.fail("G51 scaling is not supported", span)
+
+    def _step_non_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        handler = self._NON_MODAL.get(code)
+        if handler is not None:
+            handler(self, code, words, span)
+
+    def _step_motion(self, code: int | None, words: Mapping[str, float], g: Mapping[str, int],
+                     span: n.Span) -> None:
+        self._motion(words, g, g.get("non_modal"), span)
+
+    def _step_stopping(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._stop(code, span)
+
     def _feed_speed_tool(self, words: Mapping[str, float], span: n.Span) -> None:
-        """The F, S and T words of a line (they come first in the order of execution)."""
-        if "F" in words:
-            if words["F"] < 0:
-                raise self.fail("negative feed rate", span)
-            self.feed = words["F"] * (1.0 if self.modal["feed_mode"] == G_93 else self.scale)
-        if "S" in words:
-            if words["S"] < 0:
-                raise self.fail(f"spindle speed S{format_value(words['S'])} is negative", span)
-            self.speed = words["S"]
-            if self.spindle != 5:
-                self.params.set(t.SPINDLE_SPEED, self.speed / 60.0)
-        if "T" in words:
-            tool = words["T"]
-            if tool != int(tool) or not 0 <= tool <= t.MAX_TOOL:
-                raise self.fail(f"tool T{format_value(tool)} does not exist (tools are T0..T{t.MAX_TOOL})", span)
-            self.selected_tool = int(tool)
+        """The F, S and T steps alone (a line calling an M-code sub still sets them)."""
+        for letter, step in (("F", Interpreter._step_feed), ("S", Interpreter._step_spindle_speed),
+                             ("T", Interpreter._step_tool_select)):
+            if letter in words:
+                step(self, words[letter], words, {}, span)
 
     def _tool_change(self, span: n.Span) -> None:
         if "change_tool" in self.subs and all(f.name != "change_tool" for f in self.stack):
@@ -1147,6 +1189,7 @@ class Interpreter:
                                         "speed": self.speed}))
 
     _EXECUTE: dict[type, Callable[["Interpreter", n.Stmt], None]] = {}
+    _LINE_STEPS: tuple[tuple[Callable[..., None], str, str], ...] = ()
 
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
@@ -1159,6 +1202,12 @@ def _distance(a: list[float] | Pose, b: list[float] | Pose) -> float:
 def _fmt(point: tuple[float, float]) -> str:
     return ", ".join(f"{v:.4f}" for v in point)
 
+
+_STEP_ALIASES = {"plane": "modal", "units": "modal", "cutter_comp": "modal", "path_control": "modal",
+                 "distance": "modal", "return_mode": "modal"}
+Interpreter._LINE_STEPS = tuple(
+    (getattr(Interpreter, f"_step_{_STEP_ALIASES.get(name, name)}"), source, key)
+    for name, source, key in t.ORDER_OF_EXECUTION)
 
 Interpreter._EXECUTE = {
     n.Block: Interpreter._exec_block, n.PlainBlock: Interpreter._exec_plain,

@@ -51,10 +51,6 @@ M_GROUPS: Mapping[int, str] = _groups({
     "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97),
 })
 
-# Modal groups whose current member is reported (in this order) as the modal state.
-REPORTED_G_GROUPS = ("motion", "plane", "units", "cutter_comp", "length_offset", "coord_system",
-                     "path_control", "distance", "feed_mode", "return_mode")
-
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
 
@@ -67,7 +63,6 @@ ABSENT_ARGUMENT = -1e10
 FIRST_PARAM, LAST_PARAM = 1, 5999
 ARG_PARAMS = range(1, 27)
 VOLATILE_PARAMS = range(27, 4000)
-PERSISTENT_PARAMS = range(4000, 5000)
 
 READ_ONLY_PARAMS: tuple[range, ...] = (
     range(5001, 5007), range(5051, 5077), range(5081, 5087), range(5101, 5127),
@@ -128,9 +123,33 @@ COORD_SYSTEM_CODES = tuple(code_key(c) for c in (54, 55, 56, 57, 58, 59, 59.1, 5
 
 # --------------------------------------------------------------------------- order of execution
 
-# The steps of one line, in the order the controller executes them (dialect reference, section 9).
-ORDER_OF_EXECUTION = (
-    "message", "feed_mode", "feed", "spindle_speed", "tool_select", "tool_change", "spindle",
-    "coolant", "overrides", "io", "dwell", "plane", "units", "cutter_comp", "length_offset",
-    "coord_system", "path_control", "distance", "return_mode", "non_modal", "motion", "stopping",
+# The actions of one line, in the order the controller executes them (dialect reference, section
+# 9), each with what triggers it: a G group, an M group or a letter word of the line ("always" for
+# the motion, which also runs on axis words alone).  A (MSG) comment and an M-code sub call come
+# before all of these.
+ORDER_OF_EXECUTION: tuple[tuple[str, str, str], ...] = (
+    ("feed_mode", "G", "feed_mode"),
+    ("feed", "word", "F"),
+    ("spindle_speed", "word", "S"),
+    ("tool_select", "word", "T"),
+    ("tool_change", "M", "tool_change"),
+    ("spindle", "M", "spindle"),
+    ("coolant", "M", "coolant"),
+    ("overrides", "M", "overrides"),
+    ("io", "M", "io"),
+    ("m_state", "M", "misc"),
+    ("dwell", "G", "non_modal"),
+    ("plane", "G", "plane"),
+    ("units", "G", "units"),
+    ("cutter_comp", "G", "cutter_comp"),
+    ("length_offset", "G", "length_offset"),
+    ("coord_system", "G", "coord_system"),
+    ("path_control", "G", "path_control"),
+    ("distance", "G", "distance"),
+    ("return_mode", "G", "return_mode"),
+    ("rotation", "G", "rotation"),
+    ("scaling", "G", "scaling"),
+    ("non_modal", "G", "non_modal"),
+    ("motion", "always", ""),
+    ("stopping", "M", "stopping"),
 )
