@@ -13,7 +13,6 @@ import math
 import os
 import re
 import stat
-import tempfile
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -521,6 +520,8 @@ def _update_variables(text: str, values: Mapping[int, float]) -> str:
 
 def _write_atomic(path: Path, data: bytes) -> None:
     """Write beside the target and rename over it, so a failure leaves the old file intact."""
+    import tempfile  # only when writing back (start-up time)
+
     tmp: str | None = None
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)

@@ -14,10 +14,9 @@ from typing import TYPE_CHECKING
 import click
 
 from edingcnc_lang.cli.common import reports_errors
-from edingcnc_lang.kinematics.base import AXES, JOINTS, Pose
 
 if TYPE_CHECKING:
-    from edingcnc_lang.kinematics.base import Kinematics
+    from edingcnc_lang.kinematics.base import Kinematics, Pose
 
 # Let "-5" through as a number instead of an unknown option.
 NUMBERS = {"ignore_unknown_options": True}
@@ -89,6 +88,8 @@ _INI = click.option("--ini", type=click.Path(exists=True, dir_okay=False, path_t
 @reports_errors
 def inverse_cmd(name: str, ini: Path | None, coords: tuple[float, ...]) -> None:
     """Joints for a Cartesian position (missing A B C are 0)."""
+    from edingcnc_lang.kinematics.base import AXES, JOINTS
+
     pos = _pose(coords, AXES)
     _print_pose(_switched_on(name, ini).inverse(pos), JOINTS)
 
@@ -100,6 +101,8 @@ def inverse_cmd(name: str, ini: Path | None, coords: tuple[float, ...]) -> None:
 @reports_errors
 def forward_cmd(name: str, ini: Path | None, joints: tuple[float, ...]) -> None:
     """Cartesian position for joint positions (missing JA JB JC are 0)."""
+    from edingcnc_lang.kinematics.base import AXES, JOINTS
+
     values = _pose(joints, JOINTS)
     _print_pose(_switched_on(name, ini).forward(values), AXES)
 
