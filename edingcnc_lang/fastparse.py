@@ -14,6 +14,10 @@ import re
 from . import nodes as n
 from .markers import Close, LineResult, Open
 
+# A number the fast paths take: at most 300 integer digits, so always a finite double (a longer
+# one is left to the grammar, which reports it).
+FAST_NUMBER = r"(?:\d{1,300}(?:\.\d*)?|\.\d+)(?!\d)"
+
 GIVE_UP = object()
 
 
@@ -21,7 +25,7 @@ class _GiveUp(Exception):
     pass
 
 
-_NUMBER = re.compile(r"\d+\.?\d*|\.\d+")
+_NUMBER = re.compile(FAST_NUMBER)
 _IDENT = re.compile(r"[A-Za-z0-9_]+")
 _STRING = re.compile(r'"[^"\n]*"')
 _FUNC = re.compile(r"(abs|acos|asin|cos|exp|fix|fup|ln|round|sin|sqrt|tan|atan)(?=\s*\[)", re.IGNORECASE)

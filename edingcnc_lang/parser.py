@@ -7,6 +7,7 @@ builds exactly the Block the grammar would.  Lark trees never leave this module.
 """
 from __future__ import annotations
 
+import math
 import os
 import re
 from bisect import bisect_left
@@ -21,7 +22,7 @@ from typing import TYPE_CHECKING
 
 from . import nodes as n
 from .diagnostics import Diagnostic, SyntaxErrors
-from .fastparse import GIVE_UP, parse_fast
+from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
 from .markers import Close, LineResult, Open
 from .source import iter_file_lines, iter_text_lines
 
@@ -35,11 +36,11 @@ KIN_MODES = frozenset({"ON", "OFF", "CTRL", "X2A", "X2XA", "Y2A", "Y2YA", "Z2C",
 UNITS = frozenset({"mm", "inch"})
 
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
-_FAST_WORD = r"[A-Za-z][ \t]*[+-]?(?:\d+\.?\d*|\.\d+)"
+_FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
 _FAST_LINE = re.compile(rf"^[ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$")
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 _EMPTY_LINE = re.compile(r"^\s*(?:\((?!\s*msg\b)[^)\n]*\)\s*)*(?:;.*)?$", re.IGNORECASE)
-_FAST_WORDS = re.compile(r"([A-Za-z])[ \t]*([+-]?(?:\d+\.?\d*|\.\d+))")
+_FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
 
 
 @lru_cache(maxsize=1)
@@ -75,13 +76,19 @@ class _Builder:
     # expressions ------------------------------------------------------------
     def expr(self, item: Tree | Token) -> n.Expr:
         if isinstance(item, str):  # a bare NUMBER inlined by '?' rules
-            return n.Number(float(item), self.span(item))
+            return n.Number(self._finite(item), self.span(item))
         kind = _strip(item.data)
         handler = self._EXPR[kind]
         return handler(self, item)
 
     def _number(self, tree: Tree) -> n.Expr:
-        return n.Number(float(tree.children[0]), self.span(tree))
+        return n.Number(self._finite(tree.children[0]), self.span(tree))
+
+    def _finite(self, token: Token) -> float:
+        value = float(token)
+        if math.isinf(value):
+            raise _LineError("E100", f"the number {str(token)[:12]}... is too large", token.column or 0)
+        return value
 
     def _param(self, tree: Tree) -> n.Expr:
         return n.Param(self.expr(tree.children[0]), self.span(tree))
