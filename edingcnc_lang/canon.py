@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Mapping, Protocol, Sequence
 
-Pose = tuple[float, float, float, float, float, float]
+Pose = tuple[float, ...]  # six values: x y z a b c (or the joints jx .. jc)
 AXES = "XYZABC"
 
 # Arc planes: the two in-plane axis indices and the normal axis index.

@@ -11,6 +11,7 @@ import math
 import re
 import subprocess
 from collections.abc import Callable, Iterable, Mapping
+from typing import Any
 from dataclasses import dataclass
 from pathlib import Path, PureWindowsPath
 
@@ -486,7 +487,7 @@ class Interpreter:
         """
         if self.rotation is not None or self.tanknife or self.modal["feed_mode"] != G_94:
             return first
-        motion = self.modal["motion"]
+        motion: int | None = self.modal["motion"]
         if motion not in (G_0, G_1):
             motion = None  # the line must name G0 or G1 itself
         scale = self.scale
@@ -504,6 +505,8 @@ class Interpreter:
             if done >= room:
                 break
             lineno, text = lines[index]
+            line_motion: int | None
+            new_feed: float | None
             cam = CAM_LINE.match(text)
             if cam is not None:  # the usual shape: [G0|G1] [X] [Y] [Z] [A] [B] [C] [F], in that order
                 g, x, y, z, a, b, c, f = cam.groups()
@@ -1188,7 +1191,7 @@ class Interpreter:
                                        {"m": 5 if step.kind == "spindle_stop" else self.spindle,
                                         "speed": self.speed}))
 
-    _EXECUTE: dict[type, Callable[["Interpreter", n.Stmt], None]] = {}
+    _EXECUTE: dict[type, Callable[["Interpreter", Any], None]] = {}
     _LINE_STEPS: tuple[tuple[Callable[..., None], str, str], ...] = ()
 
 
@@ -1216,4 +1219,4 @@ Interpreter._EXECUTE = {
     n.Dialog: Interpreter._exec_dialog, n.LogFile: Interpreter._exec_logfile, n.Home: Interpreter._exec_home,
     n.PrepareLinDeltaHome: Interpreter._exec_prepare_delta, n.Kin: Interpreter._exec_kin,
     n.Switch: Interpreter._exec_switch, n.Command: Interpreter._exec_command,
-}  # type: ignore[dict-item]
+}
