@@ -18,7 +18,7 @@ if TYPE_CHECKING:
     from .canon import Arc, Event, Move
     from .config import MachineConfig, load_config
     from .diagnostics import Diagnostic, SyntaxErrors
-    from .errors import ConfigError, EcncError, MachineError, PluginError
+    from .errors import ConfigError, EcncError, JobAborted, MachineError, PluginError
     from .host import DialogAnswer, DialogField, Host
     from .nodes import Program
     from .parser import parse_file, parse_text, read_statements
@@ -31,7 +31,7 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(("Arc", "Event", "Move"), ".canon"),
     **dict.fromkeys(("MachineConfig", "load_config"), ".config"),
     **dict.fromkeys(("Diagnostic", "SyntaxErrors"), ".diagnostics"),
-    **dict.fromkeys(("ConfigError", "EcncError", "MachineError", "PluginError"), ".errors"),
+    **dict.fromkeys(("ConfigError", "EcncError", "JobAborted", "MachineError", "PluginError"), ".errors"),
     **dict.fromkeys(("DialogAnswer", "DialogField", "Host"), ".host"),
     "Program": ".nodes",
     **dict.fromkeys(("parse_file", "parse_text", "read_statements"), ".parser"),
@@ -40,7 +40,7 @@ _EXPORTS: dict[str, str] = {
 
 __all__ = [
     "Arc", "ConfigError", "Diagnostic", "DialogAnswer", "DialogField", "EcncError", "Event", "Host",
-    "MachineConfig", "MachineError", "Move", "PluginError", "Program", "Run", "RunOptions", "RunResult",
+    "JobAborted", "MachineConfig", "MachineError", "Move", "PluginError", "Program", "Run", "RunOptions", "RunResult",
     "SyntaxErrors", "load_config", "parse_file", "parse_text", "read_statements", "run_file", "run_string",
 ]
 

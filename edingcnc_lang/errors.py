@@ -60,3 +60,7 @@ class PluginError(EcncError):
 
 class MachineError(EcncError):
     """A runtime error while running a job: errmsg, limits, bad arguments, step budget."""
+
+
+class JobAborted(MachineError):
+    """``errmsg`` stopped the job; its text was already reported as a message when it ran."""

@@ -9,7 +9,8 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
-Pose = tuple[float, float, float, float, float, float]
+from .canon import Pose
+
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,7 @@ from . import tables as t
 from .canon import AXES, PLANES, Arc, Canon, Event, Move, Pose
 from .config import MachineConfig
 from .cycles import CYCLES, NEEDS_Q, CycleError, Step
-from .errors import EcncError, Location, MachineError
+from .errors import EcncError, JobAborted, Location, MachineError
 from .evaluator import Evaluator, param_index
 from .geometry import ArcError, center_from_radius, check_radius, sweep
 from .host import DialogAnswer, DialogField, Host
@@ -314,7 +314,7 @@ class Interpreter:
             self._log(text, stmt.span)
         elif stmt.kind == "errmsg":
             self.message("error", text)
-            raise MachineError(text, Location(self.path, self.line))
+            raise JobAborted(text, Location(self.path, self.line))
         else:
             self.message("warn" if stmt.kind == "warnmsg" else "msg", text)
 

@@ -250,11 +250,16 @@ def _make_block(words: list[n.Word], assigns: list[n.Assign], message: str | Non
     return n.Block(tuple(words), tuple(assigns), message, line_number, block_delete, span)
 
 
+def _word_matches(text: str) -> list[re.Match[str]]:
+    """The ``letter number`` words of a plain line, its ``;`` comment left out."""
+    semicolon = text.find(";")
+    return list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
+
+
 def _fast_block(text: str, path: str, line: int) -> n.Block:
     """The Block for a line of plain ``letter number`` words, without Lark."""
     words = []
-    semicolon = text.find(";")
-    for match in _FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)):
+    for match in _word_matches(text):
         col, end = match.start() + 1, match.end() + 1
         span = n.Span(path, line, col, line, end)
         num_span = n.Span(path, line, match.start(2) + 1, line, end)
@@ -265,8 +270,7 @@ def _fast_block(text: str, path: str, line: int) -> n.Block:
 
 def plain_block(text: str, path: str, line: int) -> n.PlainBlock:
     """The PlainBlock for a line of plain words: one node per line instead of one per word."""
-    semicolon = text.find(";")
-    matches = list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
+    matches = _word_matches(text)
     words = [(m.group(1).upper(), float(m.group(2)), m.start() + 1) for m in matches]
     line_number = None
     if words[0][0] == "N":

@@ -164,12 +164,12 @@ class Run:
             error = MachineError("blocks and sub calls are nested too deeply to run",
                                  Location(interp.path, interp.line))
         except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
-            error = EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
+            error = _write_error(err)
         finally:
             try:
                 self.motion.close()
             except OSError as err:
-                error = error or EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
+                error = error or _write_error(err)
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -199,6 +199,10 @@ class Run:
             ended_by=interp.ended_by,
             error=error.format() if error else None,
         )
+
+
+def _write_error(err: OSError) -> EcncError:
+    return EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
 
 
 def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:

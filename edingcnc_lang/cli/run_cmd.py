@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_RUNTIME, EcncError
+from ..errors import EcncError, JobAborted
 from ..host import DialogAnswer, Host, scripted_dialogs
 from .common import existing_file
 
@@ -70,13 +70,9 @@ def run(job: str, ini: str | None, macro: str | None, user_macro: str | None, as
         partial: RunResult | None = getattr(err, "result", None)
         if as_json and partial is not None:
             click.echo(json.dumps(partial.to_json(), indent=1))
-        if not (err.exit_code == EXIT_RUNTIME and err.format().split(": error: ", 1)[-1] in _errmsg_texts(partial)):
+        if not isinstance(err, JobAborted):  # an errmsg text was shown as it ran (or is in the JSON)
             click.echo(err.format(), err=True)
         sys.exit(err.exit_code)
     if as_json:
         click.echo(json.dumps(result.to_json(), indent=1))
 
-
-def _errmsg_texts(result: RunResult | None) -> set[str]:
-    """Texts of errmsg messages already shown as they happened (so they are not printed twice)."""
-    return set() if result is None else {e.data.get("text", "") for e in result.messages if e.kind == "error"}
