@@ -267,7 +267,9 @@ class Interpreter:
     def execute(self, stmt: n.Stmt) -> None:
         span = stmt.span
         self.path, self.line = span.path, span.line
-        self.spend(1, span)
+        self.steps += 1
+        if self.max_steps is not None and self.steps > self.max_steps:
+            self.spend(0, span)  # reports the exhausted budget
         self._EXECUTE[type(stmt)](self, stmt)
 
     def spend(self, steps: int, span: n.Span | None = None) -> None:
