@@ -6,6 +6,9 @@ included) the Lark grammar builds; property tests compare the two on generated
 lines.  It never reports errors: on anything it is not sure about it gives up
 (returns ``GIVE_UP``) and the caller asks the grammar, which is the reference
 and explains mistakes.
+
+Speed comes from splitting the line into tokens with one regular expression
+pass and then descending over that list: no character-level scanning in Python.
 """
 from __future__ import annotations
 
@@ -25,13 +28,17 @@ class _GiveUp(Exception):
     pass
 
 
-_NUMBER = re.compile(FAST_NUMBER)
-_IDENT = re.compile(r"[A-Za-z0-9_]+")
-_STRING = re.compile(r'"[^"\n]*"')
-_FUNC = re.compile(r"(abs|acos|asin|cos|exp|fix|fup|ln|round|sin|sqrt|tan|atan)(?=\s*\[)", re.IGNORECASE)
-_OPERATOR = re.compile(r"\*\*|==|<>|!=|<=|>=|[-+*/<>]|(?:mod|or|xor|and|eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])",
-                       re.IGNORECASE)
-_OPERATOR_START = frozenset("*=<>!+-/mMoOxXaAeEnNgGlL")
+# The tokens of a line: blanks, a ';' comment, a number, a string, an operator or bracket, or a
+# run of ASCII letters.  Letters only, because a block's words are glued together (G1X10); a name
+# with digits or '_' in an expression is the grammar's.
+_TOKEN = re.compile(rf'[ \t]+|;.*|{FAST_NUMBER}|"[^"\n]*"|\*\*|==|<>|!=|<=|>=|[-+*/<>\[\]#=]|[A-Za-z]+')
+# A token's kind from its first character: "n" number, "s" string, "i" letters, " " blank or
+# comment; an operator's kind is its own text.
+_KIND = {**dict.fromkeys("0123456789.", "n"), '"': "s", **dict.fromkeys(" \t;", " "),
+         **dict.fromkeys("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz", "i")}
+Token = tuple[str, str, int, int]  # kind ("n", "s", "i" or the operator), text, column, end column
+_FUNCTIONS = frozenset({"ABS", "ACOS", "ASIN", "COS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN", "SQRT", "TAN",
+                        "ATAN"})
 # Binding levels, loosest first: comparisons, then + - OR XOR AND, then * / MOD, then **.
 _LEVEL = {op: 1 for op in ("==", "<>", "!=", "<=", ">=", "<", ">", "EQ", "NE", "GT", "GE", "LT", "LE")}
 _LEVEL.update({op: 2 for op in ("+", "-", "OR", "XOR", "AND")})
@@ -39,12 +46,11 @@ _LEVEL.update({op: 3 for op in ("*", "/", "MOD")})
 _LEVEL["**"] = 4
 _COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<": "<", "LT": "<",
                 ">": ">", "GT": ">", "<=": "<=", "LE": "<=", ">=": ">=", "GE": ">="}
-# Names the grammar's lexer prefers to a word letter (they outrank LETTER): "A0 ASIN[0]" is read
-# as the function ASIN, not as the word A, so a line with one is left to the grammar.
-_RESERVED = re.compile(r"(abs|acos|asin|cos|exp|fix|fup|ln|round|sin|sqrt|tan|atan)\s*\[|"
-                       r"(mod|or|xor|and|eq|ne|gt|ge|lt|le)(?![A-Za-z0-9_])", re.IGNORECASE)
-_AXIS = re.compile(r"[xyzabc](?![A-Za-z0-9_])", re.IGNORECASE)
-_FILE_NAME = re.compile(r'[^\s;"]+')
+_BLANK = re.compile(r"[ \t]*(?:;.*)?\Z")
+_HEAD = re.compile(r"[ \t]*([A-Za-z0-9_]+)")
+_NAME = re.compile(r"[ \t]*([A-Za-z0-9_]+)[ \t]*(?:;.*)?\Z")
+_AXIS = re.compile(r"[ \t]*([xyzabc])(?![A-Za-z0-9_])[ \t]*(?:;.*)?\Z", re.IGNORECASE)
+_FILE_NAME = re.compile(r'[ \t]*(?:"([^"\n]*)"|([^\s;"]+))')
 _STRINGS = re.compile(r'"[^"\n]*"')
 _MESSAGES = frozenset({"msg", "warnmsg", "errmsg", "logmsg"})
 _CLOSERS = {"endsub": "EndSub", "endif": "EndIf", "endwhile": "EndWhile", "else": "Else"}
@@ -56,125 +62,120 @@ _KEYWORDS = frozenset({
     "gettoolinfo", "modbus", "getjobdistance", "exec"})
 
 
-class _Line:
-    """Recursive descent over one line; positions are 0-based, spans 1-based like Lark's."""
+def _tokens(text: str, pos: int) -> list[Token]:
+    """The tokens of ``text`` from ``pos`` on, ending with an empty-kind sentinel."""
+    tokens: list[Token] = []
+    for value in _TOKEN.findall(text, pos):
+        start = pos
+        pos += len(value)
+        kind = _KIND.get(value[0], value)
+        if kind != " ":
+            tokens.append((kind, value, start + 1, pos + 1))
+    if pos != len(text):  # findall skipped a character no token covers: the grammar's business
+        raise _GiveUp
+    tokens.append(("", "", pos + 1, pos + 1))
+    return tokens
 
-    def __init__(self, text: str, path: str, line: int) -> None:
-        self.text = text
+
+class _Line:
+    """Recursive descent over the tokens of one line; columns are 1-based like Lark's."""
+
+    __slots__ = ("tokens", "i", "path", "line")
+
+    def __init__(self, tokens: list[Token], path: str, line: int) -> None:
+        self.tokens = tokens
+        self.i = 0
         self.path = path
         self.line = line
-        self.pos = 0
-        self.end = len(text)
-
-    # ---------------------------------------------------------------- scanning
-    def skip(self) -> None:
-        text, pos, end = self.text, self.pos, self.end
-        while pos < end and (text[pos] == " " or text[pos] == "\t"):
-            pos += 1
-        self.pos = end if pos < end and text[pos] == ";" else pos
-
-    def at_end(self) -> bool:
-        self.skip()
-        return self.pos >= self.end
-
-    def peek(self) -> str:
-        self.skip()
-        return self.text[self.pos] if self.pos < self.end else ""
-
-    def take(self, pattern: re.Pattern[str]) -> re.Match[str] | None:
-        self.skip()
-        match = pattern.match(self.text, self.pos)
-        if match:
-            self.pos = match.end()
-        return match
-
-    def expect(self, char: str) -> int:
-        """Consume ``char``; returns its 1-based column."""
-        if self.peek() != char:
-            raise _GiveUp
-        self.pos += 1
-        return self.pos
 
     def span(self, start: int, end: int) -> n.Span:
         return n.Span(self.path, self.line, start, self.line, end)
+
+    def expect(self, kind: str) -> int:
+        """Consume a token of ``kind``; returns its end column."""
+        token = self.tokens[self.i]
+        if token[0] != kind:
+            raise _GiveUp
+        self.i += 1
+        return token[3]
+
+    def at_end(self) -> None:
+        if self.tokens[self.i][0]:
+            raise _GiveUp
 
     # ---------------------------------------------------------------- expressions
     # Each returns (node, start column, end column) where the columns include any
     # brackets around the node: the grammar counts them for the enclosing node only.
     def atom(self) -> tuple[n.Expr, int, int]:
-        ch = self.peek()
-        start = self.pos + 1
-        if ch == "[":
-            self.pos += 1
-            node, _s, _e = self.expr()
-            end = self.expect("]") + 1
-            return node, start, end
-        if ch == "#":
+        kind, text, col, end = self.tokens[self.i]
+        if kind == "[":
+            self.i += 1
+            node = self.expr()[0]
+            return node, col, self.expect("]")
+        if kind == "#":
             return self.param()
-        match = self.take(_NUMBER)
-        if match:
-            return n.Number(float(match.group()), self.span(start, self.pos + 1)), start, self.pos + 1
-        match = self.take(_FUNC)
-        if match:
-            name = match.group().upper()
-            self.expect("[")
-            first, _s, _e = self.expr()
-            end = self.expect("]") + 1
-            if name != "ATAN":
-                return n.Call(name, (first,), self.span(start, end)), start, end
-            if self.peek() != "/":
-                raise _GiveUp
-            self.pos += 1
-            self.expect("[")
-            second, _s, _e = self.expr()
-            end = self.expect("]") + 1
-            return n.Call(name, (first, second), self.span(start, end)), start, end
-        raise _GiveUp
+        if kind == "n":
+            self.i += 1
+            return n.Number(float(text), self.span(col, end)), col, end
+        name = text.upper()
+        if kind != "i" or name not in _FUNCTIONS or self.tokens[self.i + 1][0] != "[":
+            raise _GiveUp
+        self.i += 2
+        first = self.expr()[0]
+        end = self.expect("]")
+        if name != "ATAN":
+            return n.Call(name, (first,), self.span(col, end)), col, end
+        self.expect("/")
+        self.expect("[")
+        second = self.expr()[0]
+        end = self.expect("]")
+        return n.Call(name, (first, second), self.span(col, end)), col, end
 
-    def param(self) -> tuple[n.Expr, int, int]:
-        start = self.expect("#")
-        ch = self.peek()
-        if ch == "#":
+    def param(self) -> tuple[n.Param, int, int]:
+        col = self.tokens[self.i][2]
+        self.i += 1
+        kind, text, index_col, end = self.tokens[self.i]
+        index: n.Expr
+        if kind == "#":
             index, _s, end = self.param()
-        elif ch == "[":
-            self.pos += 1
-            index, _s, _e = self.expr()
-            end = self.expect("]") + 1
+        elif kind == "[":
+            self.i += 1
+            index = self.expr()[0]
+            end = self.expect("]")
+        elif kind == "n":
+            self.i += 1
+            index = n.Number(float(text), self.span(index_col, end))
         else:
-            match = self.take(_NUMBER)
-            if not match:
-                raise _GiveUp
-            end = self.pos + 1
-            index = n.Number(float(match.group()), self.span(match.start() + 1, end))
-        return n.Param(index, self.span(start, end)), start, end
+            raise _GiveUp
+        return n.Param(index, self.span(col, end)), col, end
 
     def signed(self) -> tuple[n.Expr, int, int]:
-        ch = self.peek()
-        if ch in "+-" and ch:
-            start = self.pos + 1
-            self.pos += 1
-            operand, _s, end = self.signed()
-            span = self.span(start, end)
-            if isinstance(operand, n.Number):
-                return n.Number(-operand.value if ch == "-" else operand.value, span), start, end
-            return n.Unary(ch, operand, span), start, end
-        return self.atom()
+        sign, _text, col, _end = self.tokens[self.i]
+        if sign != "-" and sign != "+":
+            return self.atom()
+        self.i += 1
+        operand, _s, end = self.signed()
+        span = self.span(col, end)
+        if isinstance(operand, n.Number):
+            return n.Number(-operand.value if sign == "-" else operand.value, span), col, end
+        return n.Unary(sign, operand, span), col, end
 
     def expr(self, min_level: int = 1) -> tuple[n.Expr, int, int]:
         """Precedence climbing over the grammar's levels; every level is left-associative."""
         left, start, end = self.signed()
+        tokens = self.tokens
         while True:
-            ch = self.peek()
-            if not ch or ch not in _OPERATOR_START:
-                return left, start, end
-            match = _OPERATOR.match(self.text, self.pos)
-            if match is None:
-                return left, start, end
-            op = match.group().upper()
-            level = _LEVEL[op]
+            kind, text, _col, op_end = tokens[self.i]
+            op = kind
+            if kind == "i":
+                op = text.upper()
+                after = tokens[self.i + 1]
+                if after[0] == "n" and after[2] == op_end and after[1][0] != ".":  # MOD2 is a name, MOD.5 is not
+                    return left, start, end
+            level = _LEVEL.get(op, 0)
             if level < min_level:
                 return left, start, end
-            self.pos = match.end()
+            self.i += 1
             right, _s, end = self.expr(level + 1)
             span = self.span(start, end)
             left = n.Compare(_COMPARE_OPS[op], left, right, span) if level == 1 else n.Binary(op, left, right, span)
@@ -183,127 +184,125 @@ class _Line:
     def block(self) -> n.Block:
         words: list[n.Word] = []
         assigns: list[n.Assign] = []
-        block_delete = self.peek() == "/"
-        start = self.pos + 1
+        tokens = self.tokens
+        start = tokens[0][2]
+        block_delete = tokens[0][0] == "/"
         if block_delete:
-            self.pos += 1
-        end = self.pos + 1
-        while not self.at_end():
-            ch = self.text[self.pos]
-            item_start = self.pos + 1
-            if ch == "#":
-                target, _s, _e = self.param()
+            self.i = 1
+        while True:
+            kind, text, col, _end = tokens[self.i]
+            if kind == "#":
+                target = self.param()[0]
                 self.expect("=")
-                if self.peek() == "=":
+                if tokens[self.i][0] == "=":
                     raise _GiveUp
                 value, _s, end = self.expr()
-                assert isinstance(target, n.Param)
-                assigns.append(n.Assign(target, value, self.span(item_start, end)))
-            elif ch.isalpha() and ch.isascii():
-                if _RESERVED.match(self.text, self.pos):
+                assigns.append(n.Assign(target, value, self.span(col, end)))
+            elif kind == "i":
+                if len(text) == 1:
+                    self.i += 1
+                elif text[1:].upper() in _FUNCTIONS and text.upper() not in _FUNCTIONS:
+                    tokens[self.i] = ("i", text[1:], col + 1, _end)  # XSIN[1]: the word X, then SIN
+                else:  # ASIN[ (the function wins), MOD, GX: the grammar's
                     raise _GiveUp
-                self.pos += 1
                 value, _s, end = self.signed()
-                words.append(n.Word(ch.upper(), value, self.span(item_start, end)))
-            else:
+                words.append(n.Word(text[0].upper(), value, self.span(col, end)))
+            elif kind:
                 raise _GiveUp
+            else:
+                break
         if not words and not assigns:
             raise _GiveUp
         line_number = None
-        if words and words[0].letter == "N" and isinstance(words[0].value, n.Number):
-            line_number = int(words[0].value.value)
+        first = words[0] if words else None
+        if first is not None and first.letter == "N" and isinstance(first.value, n.Number):
+            line_number = int(first.value.value)
             words = words[1:]
         return n.Block(tuple(words), tuple(assigns), None, line_number, block_delete, self.span(start, end))
 
     def condition(self, kind: str, start: int) -> Open:
         self.expect("[")
-        cond, _s, end = self.expr()
-        end = self.expect("]") + 1
+        cond = self.expr()[0]
+        end = self.expect("]")
         extra = 0
-        while self.peek() == "]":
-            self.pos += 1
+        while self.tokens[self.i][0] == "]":
+            end = self.expect("]")
             extra += 1
-            end = self.pos + 1
-        if kind == "If":
-            match = self.take(_IDENT)
-            if match:
-                if match.group().lower() != "then":
-                    raise _GiveUp
-                end = self.pos + 1
-        if not self.at_end():
-            raise _GiveUp
+        then = self.tokens[self.i]
+        if kind == "If" and then[0] == "i":
+            if then[1].lower() != "then":
+                raise _GiveUp
+            end = self.expect("i")
+        self.at_end()
         return Open(kind, self.span(start, end), cond=cond, extra=extra)
 
-    def items(self) -> tuple[list[n.MessageItem], int]:
+    def items(self, end: int) -> tuple[list[n.MessageItem], int]:
         """Strings and values up to the end of the line (msg, dlgmsg), and the end column."""
         items: list[n.MessageItem] = []
-        end = self.pos + 1
-        while not self.at_end():
-            if self.text[self.pos] == '"':
-                match = self.take(_STRING)
-                if not match:
-                    raise _GiveUp
-                items.append(match.group()[1:-1])
-                end = self.pos + 1
-            else:
+        while True:
+            kind, text, _col, _end = self.tokens[self.i]
+            if kind == "s":
+                items.append(text[1:-1])
+                end = self.expect("s")
+            elif kind:
                 value, _s, end = self.signed()
                 items.append(value)
-        return items, end
+            else:
+                return items, end
 
-    def logfile(self, start: int) -> n.LogFile:
-        self.skip()
-        if self.peek() == '"':
-            match = self.take(_STRING)
-            name = match.group()[1:-1] if match else None
-        else:
-            match = self.take(_FILE_NAME)
-            name = match.group() if match else None
-        if match is None or name is None:
+
+def _statement(text: str, path: str, line: int) -> LineResult:
+    if _BLANK.match(text):
+        return None
+    head = _HEAD.match(text)
+    word = head.group(1).lower() if head else ""
+    if head is None or word not in _KEYWORDS:
+        return _Line(_tokens(text, 0), path, line).block()
+    start, pos = head.start(1) + 1, head.end()
+    end = pos + 1
+    if word in _CLOSERS:
+        if not _BLANK.match(text, pos):
             raise _GiveUp
-        end = self.pos + 1
-        mode = None
-        if not self.at_end():
-            mode, _s, end = self.signed()
-            if not self.at_end():
-                raise _GiveUp
-        return n.LogFile(name, mode, self.span(start, end))
+        return Close(_CLOSERS[word], n.Span(path, line, start, line, end))
+    if word in ("sub", "gosub"):
+        name = _NAME.match(text, pos)
+        if not name:
+            raise _GiveUp
+        span = n.Span(path, line, start, line, name.end(1) + 1)
+        return Open("Sub", span, name=name.group(1)) if word == "sub" else n.GoSub(name.group(1), span)
+    if word in ("home", "hometandem"):
+        axis = _AXIS.match(text, pos)
+        if not axis:
+            raise _GiveUp
+        return n.Home(axis.group(1).upper(), word == "hometandem", n.Span(path, line, start, line, axis.end(1) + 1))
+    if word == "logfile":
+        return _logfile(text, path, line, start, pos)
+    rest = _Line(_tokens(text, pos), path, line)
+    if word in ("if", "while"):
+        return rest.condition(word.capitalize(), start)
+    if word in _MESSAGES:
+        items, last = rest.items(end)
+        return n.Message(word, tuple(items), rest.span(start, last))
+    if word == "dlgmsg":
+        items, last = rest.items(end)
+        return n.Dialog(tuple(items), rest.span(start, last))
+    raise _GiveUp
 
-    def statement(self) -> LineResult:
-        if self.at_end():
-            return None
-        match = _IDENT.match(self.text, self.pos)
-        word = match.group().lower() if match else ""
-        if word not in _KEYWORDS:
-            return self.block()
-        start = self.pos + 1
-        self.pos = match.end()  # type: ignore[union-attr]
-        end = self.pos + 1
-        if word in _CLOSERS:
-            if not self.at_end():
-                raise _GiveUp
-            return Close(_CLOSERS[word], self.span(start, end))
-        if word in ("if", "while"):
-            return self.condition(word.capitalize(), start)
-        if word in _MESSAGES:
-            items, last = self.items()
-            return n.Message(word, tuple(items), self.span(start, last if items else end))
-        if word == "dlgmsg":
-            items, last = self.items()
-            return n.Dialog(tuple(items), self.span(start, last if items else end))
-        if word == "logfile":
-            return self.logfile(start)
-        if word in ("home", "hometandem"):
-            axis = self.take(_AXIS)
-            if not axis or not self.at_end():
-                raise _GiveUp
-            return n.Home(axis.group().upper(), word == "hometandem", self.span(start, axis.end() + 1))
-        if word in ("sub", "gosub"):
-            name = self.take(_IDENT)
-            if not name or not self.at_end():
-                raise _GiveUp
-            span = self.span(start, name.end() + 1)
-            return Open("Sub", span, name=name.group()) if word == "sub" else n.GoSub(name.group(), span)
+
+def _logfile(text: str, path: str, line: int, start: int, pos: int) -> n.LogFile:
+    """``logfile NAME [mode]``: the name is a quoted string or a bare file name (C:\\temp\\l.txt)."""
+    match = _FILE_NAME.match(text, pos)
+    if match is None:
         raise _GiveUp
+    quoted = match.group(1)
+    name = quoted if quoted is not None else match.group(2)
+    rest = _Line(_tokens(text, match.end()), path, line)
+    end = match.end() + 1
+    mode = None
+    if rest.tokens[0][0]:
+        mode, _s, end = rest.signed()
+        rest.at_end()
+    return n.LogFile(name, mode, rest.span(start, end))
 
 
 def parse_fast(text: str, path: str, line: int) -> LineResult | object:
@@ -311,6 +310,6 @@ def parse_fast(text: str, path: str, line: int) -> LineResult | object:
     if "(" in text and "(" in _STRINGS.sub("", text):  # ( ) comments and MSG comments: the grammar's business
         return GIVE_UP
     try:
-        return _Line(text, path, line).statement()
+        return _statement(text, path, line)
     except (_GiveUp, IndexError, RecursionError):  # RecursionError: absurdly deep nesting, the grammar decides
         return GIVE_UP
