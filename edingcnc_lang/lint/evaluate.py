@@ -95,19 +95,19 @@ def reads_param(expr: n.Expr, index: int) -> bool:
 
 def params_in(expr: n.Expr) -> list[n.Param]:
     """Every parameter reference in ``expr``, outer ones first (``##5`` gives both)."""
-    if isinstance(expr, n.Number):  # most word values: nothing to look into
-        return []
     found: list[n.Param] = []
     stack: list[n.Expr] = [expr]
-    while stack:
+    while stack:  # exact type tests: node classes are final, and this runs for every expression
         node = stack.pop()
-        if isinstance(node, n.Param):
+        if type(node) is n.Number:
+            continue
+        if type(node) is n.Param:
             found.append(node)
             stack.append(node.index)
-        elif isinstance(node, n.Unary):
+        elif type(node) is n.Binary or type(node) is n.Compare:
+            stack += (node.right, node.left)
+        elif type(node) is n.Unary:
             stack.append(node.operand)
-        elif isinstance(node, (n.Binary, n.Compare)):
-            stack.extend((node.right, node.left))
-        elif isinstance(node, n.Call):
-            stack.extend(reversed(node.args))
+        elif type(node) is n.Call:
+            stack += reversed(node.args)
     return found

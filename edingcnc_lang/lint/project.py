@@ -16,6 +16,9 @@ from .model import SourceFile
 from .names import TOOL_CHANGE_SUB, is_entry_point, m_sub_number
 from .walk import Scope, assigned, dialog_fields, literal_index, reads, walk, word_codes
 
+Indexed = tuple[n.Param, "int | None"]  # a parameter read and its index when a whole number known without running
+Code = tuple[int, n.Word]  # a literal G or M number (integer tenths) and its word
+
 SubKey = tuple[str, str]  # (path, lower-case name)
 TOOL_CHANGE = code_key(6)
 # Commands that store a result in the variable whose number they are given.
@@ -50,17 +53,29 @@ class Project:
         self._macros = macros
         self._extra_written = extra_written
         self._walked = {f.path: tuple(walk(f.body)) for f in self.files}
-        self._reads: dict[int, tuple[n.Param, ...]] = {}
+        # Per-statement facts several rules ask for, computed once; keyed by id() because nodes
+        # hash by value, deeply (the AST lives as long as the project).
+        self._reads: dict[int, tuple[Indexed, ...]] = {}
+        self._codes: dict[tuple[int, str], tuple[Code, ...]] = {}
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
         return self._walked[file.path]
 
-    def reads(self, stmt: n.Stmt) -> tuple[n.Param, ...]:
-        """The parameters a statement reads, computed once (several rules ask)."""
-        key = id(stmt)  # nodes hash by value, deeply; the AST lives as long as the project
-        found = self._reads.get(key)
+    def reads(self, stmt: n.Stmt) -> tuple[Indexed, ...]:
+        """The parameters a statement reads, each with its literal index (None if computed)."""
+        found = self._reads.get(id(stmt))
         if found is None:
-            found = self._reads[key] = tuple(reads(stmt))
+            found = self._reads[id(stmt)] = tuple((p, literal_index(p)) for p in reads(stmt))
+        return found
+
+    def codes(self, stmt: n.Stmt, letter: str) -> tuple[Code, ...]:
+        """The literal G or M codes of a block (none for other statements)."""
+        if not isinstance(stmt, n.Block):
+            return ()
+        key = (id(stmt), letter)
+        found = self._codes.get(key)
+        if found is None:
+            found = self._codes[key] = word_codes(stmt, letter)
         return found
 
     # ----------------------------------------------------------------- calls
@@ -80,7 +95,7 @@ class Project:
                 yield found
         elif isinstance(stmt, n.Block):
             own = m_sub_number(scope.sub.name) if scope.sub else None
-            for key in word_codes(stmt, "M"):
+            for key, _word in self.codes(stmt, "M"):
                 whole, tenth = divmod(key, 10)
                 name = TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
                 if tenth or whole == own:
@@ -150,7 +165,7 @@ class Project:
         """Subs that read #5067 themselves (a GoSub to one counts as checking the probe)."""
         return frozenset(sub_key(file, scope.sub) for file in self.files
                          for stmt, scope in self.walked(file)
-                         if scope.sub and any(literal_index(p) == PROBE_TRIPPED for p in self.reads(stmt)))
+                         if scope.sub and any(index == PROBE_TRIPPED for _, index in self.reads(stmt)))
 
     # ----------------------------------------------------------------- variables
     @cached_property

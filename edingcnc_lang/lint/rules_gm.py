@@ -9,12 +9,20 @@ from collections.abc import Iterator, Sequence
 
 from .. import nodes as n
 from ..diagnostics import Diagnostic
-from ..tables import G_GROUPS, M_GROUPS, MAX_M_WORDS, MAX_TOOL, PROBE_TRIPPED, code_key, code_name
+from ..tables import (
+    G_GROUPS,
+    M_GROUPS,
+    MAX_M_WORDS,
+    MAX_TOOL,
+    PROBE_TRIPPED,
+    code_key,
+    code_name,
+)
 from .evaluate import evaluate
 from .model import SourceFile
 from .project import Project, sub_key
 from .registry import at, rule
-from .walk import Scope, literal_index
+from .walk import Scope
 
 PROBE = code_key(38.2)
 ARCS = frozenset(code_key(c) for c in (2, 3))
@@ -23,11 +31,6 @@ G53_MOTIONS = frozenset(code_key(c) for c in (0, 1))
 FEED_MOVES = frozenset(code_key(c) for c in (1, 2, 3, 38.2, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 AXES = frozenset("XYZABC")
 CENTRE = frozenset("IJKR")
-
-
-def _codes(block: n.Block, letter: str) -> list[tuple[int, n.Word]]:
-    return [(code_key(w.value.value), w) for w in block.words
-            if w.letter == letter and isinstance(w.value, n.Number)]
 
 
 def _blocks(file: SourceFile, project: Project) -> Iterator[n.Block]:
@@ -39,7 +42,7 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for block in _blocks(file, project):
         for letter, groups in (("G", G_GROUPS), ("M", M_GROUPS)):
             seen: dict[str, int] = {}
-            for key, word in _codes(block, letter):
+            for key, word in project.codes(block, letter):
                 group = groups.get(key)
                 if group is None:
                     continue
@@ -53,12 +56,11 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 @rule("G501", "G502", "G503", "G506", "G507")
 def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for block in _blocks(file, project):
-        yield from _line_words(block)
+        yield from _line_words(block, project)
 
 
-def _line_words(block: n.Block) -> Iterator[Diagnostic]:
-    g_words = _codes(block, "G")
-    g = {key: word for key, word in g_words}
+def _line_words(block: n.Block, project: Project) -> Iterator[Diagnostic]:
+    g = dict(project.codes(block, "G"))
     letters = {w.letter: w for w in block.words}
     if G53 in g and not G53_MOTIONS & g.keys():
         yield at("G501", "G53 (machine coordinates) needs G0 or G1 on the same line, e.g. G53 G0 Z0",
@@ -82,17 +84,15 @@ def _line_words(block: n.Block) -> Iterator[Diagnostic]:
                  f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
 
 
-def _probe_word(stmt: n.Stmt) -> n.Word | None:
-    if isinstance(stmt, n.Block):
-        return next((w for k, w in _codes(stmt, "G") if k == PROBE), None)
-    return None
+def _probe_word(stmt: n.Stmt, project: Project) -> n.Word | None:
+    return next((w for k, w in project.codes(stmt, "G") if k == PROBE), None)
 
 
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
     for stmt, scope in project.walked(file):
-        word = _probe_word(stmt)
+        word = _probe_word(stmt, project)
         if word is not None and not project.is_guarded(file, scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
                      "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
@@ -115,7 +115,7 @@ def _unchecked_probes(file: SourceFile, project: Project,
     for stmt, scope in statements:
         if pending is not None and _checks_probe(file, project, stmt, scope):
             pending = None
-        word = _probe_word(stmt)
+        word = _probe_word(stmt, project)
         if word is not None:
             if pending is not None:
                 yield _unchecked(pending)
@@ -125,7 +125,7 @@ def _unchecked_probes(file: SourceFile, project: Project,
 
 
 def _checks_probe(file: SourceFile, project: Project, stmt: n.Stmt, scope: Scope) -> bool:
-    if any(literal_index(p) == PROBE_TRIPPED for p in project.reads(stmt)):
+    if any(index == PROBE_TRIPPED for _, index in project.reads(stmt)):
         return True
     return any(sub_key(target, sub) in project.probe_checking_subs
                for target, sub in project.callees(file, stmt, scope))

@@ -39,7 +39,7 @@ def _ending(stmt: n.Stmt) -> str:
     if isinstance(stmt, n.Message):
         return "errmsg"
     assert isinstance(stmt, n.Block)
-    key = next(k for k in word_codes(stmt, "M") if k in END_OF_PROGRAM)
+    key = next(k for k, _word in word_codes(stmt, "M") if k in END_OF_PROGRAM)
     return f"M{key // 10}"
 
 

@@ -9,7 +9,14 @@ from collections.abc import Iterator, Sequence
 
 from .. import nodes as n
 from ..diagnostics import Diagnostic
-from ..tables import ARG_PARAMS, FIRST_PARAM, LAST_PARAM, LETTER_ARGS, VOLATILE_PARAMS, is_read_only
+from ..tables import (
+    ARG_PARAMS,
+    FIRST_PARAM,
+    LAST_PARAM,
+    LETTER_ARGS,
+    VOLATILE_PARAMS,
+    is_read_only,
+)
 from .evaluate import constant_index
 from .model import SourceFile
 from .names import m_sub_number
@@ -20,7 +27,11 @@ from .walk import Scope, assigned, dialog_fields, literal_index
 
 def _indexed(stmt: n.Stmt, project: Project) -> Iterator[tuple[float, n.Span]]:
     """Every index the statement names literally, with where it is written."""
-    for param in (*project.reads(stmt), *assigned(stmt)):
+    for param, literal in project.reads(stmt):
+        index = constant_index(param) if literal is None else float(literal)  # None: computed or not whole
+        if index is not None:
+            yield index, param.span
+    for param in assigned(stmt):
         index = constant_index(param)
         if index is not None:
             yield index, param.span
@@ -57,9 +68,8 @@ def never_written(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """First read in each file of a volatile variable nothing assigns (a typo or a missing setup)."""
     seen: set[int] = set()
     for stmt, _ in project.walked(file):
-        for param in project.reads(stmt):
-            index = literal_index(param)
-            if index in VOLATILE_PARAMS and index not in project.written and index not in seen:
+        for param, index in project.reads(stmt):
+            if index is not None and index in VOLATILE_PARAMS and index not in project.written and index not in seen:
                 seen.add(index)
                 yield at("V302", f"#{index} is read but never assigned in this file or its macro files, "
                          "so it is 0 or left over from an earlier job: assign it first", param.span)
@@ -96,8 +106,7 @@ class _ArgumentFlow:
         return state
 
     def check_reads(self, stmt: n.Stmt, state: Clobbered) -> None:
-        for param in self.project.reads(stmt):
-            index = literal_index(param)
+        for param, index in self.project.reads(stmt):
             if index in state:
                 letter = LETTER_ARGS[index - 1]
                 self.found.append(at(

@@ -93,14 +93,14 @@ def ends_program(stmt: n.Stmt) -> bool:
     if isinstance(stmt, n.Message):
         return stmt.kind == "errmsg"
     if isinstance(stmt, n.Block) and not stmt.block_delete:
-        return any(code in END_OF_PROGRAM for code in word_codes(stmt, "M"))
+        return any(code in END_OF_PROGRAM for code, _word in word_codes(stmt, "M"))
     return False
 
 
-def word_codes(block: n.Block, letter: str) -> list[int]:
-    """The literal G or M numbers of a block as integer tenths (G38.2 -> 382)."""
-    return [code_key(w.value.value) for w in block.words
-            if w.letter == letter and isinstance(w.value, n.Number)]
+def word_codes(block: n.Block, letter: str) -> tuple[tuple[int, n.Word], ...]:
+    """The literal G or M numbers of a block as integer tenths (G38.2 -> 382), with their words."""
+    return tuple((code_key(w.value.value), w) for w in block.words
+                 if w.letter == letter and isinstance(w.value, n.Number))
 
 
 def expressions(stmt: n.Stmt) -> Iterator[n.Expr]:
@@ -127,10 +127,13 @@ def expressions(stmt: n.Stmt) -> Iterator[n.Expr]:
         yield stmt.velocity
 
 
-def reads(stmt: n.Stmt) -> Iterator[n.Param]:
+def reads(stmt: n.Stmt) -> list[n.Param]:
     """Every parameter the statement itself reads."""
+    found: list[n.Param] = []
     for expr in expressions(stmt):
-        yield from params_in(expr)
+        if not isinstance(expr, n.Number):  # most word values
+            found += params_in(expr)
+    return found
 
 
 def assigned(stmt: n.Stmt) -> Iterator[n.Param]:
@@ -149,5 +152,6 @@ def dialog_fields(stmt: n.Dialog) -> Iterator[tuple[int, n.Number]]:
 
 def literal_index(param: n.Param) -> int | None:
     """The index of a parameter when it is a whole number known without running."""
-    index = constant_index(param)
+    literal = param.index
+    index = literal.value if type(literal) is n.Number else constant_index(param)  # #n: most of them
     return int(index) if index is not None and index.is_integer() else None
