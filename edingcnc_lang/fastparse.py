@@ -22,6 +22,7 @@ from .markers import Close, LineResult, Open
 FAST_NUMBER = r"(?:\d{1,300}(?:\.\d*)?|\.\d+)(?!\d)"
 
 GIVE_UP = object()
+_new_span = tuple.__new__  # Span(...) without the named tuple's Python-level __new__: one per node
 
 
 class _GiveUp(Exception):
@@ -80,7 +81,7 @@ def _tokens(text: str, pos: int) -> list[Token]:
 class _Line:
     """Recursive descent over the tokens of one line; columns are 1-based like Lark's."""
 
-    __slots__ = ("tokens", "i", "path", "line")
+    __slots__ = ("i", "line", "path", "tokens")
 
     def __init__(self, tokens: list[Token], path: str, line: int) -> None:
         self.tokens = tokens
@@ -89,7 +90,7 @@ class _Line:
         self.line = line
 
     def span(self, start: int, end: int) -> n.Span:
-        return n.Span(self.path, self.line, start, self.line, end)
+        return _new_span(n.Span, (self.path, self.line, start, self.line, end))
 
     def expect(self, kind: str) -> int:
         """Consume a token of ``kind``; returns its end column."""
