@@ -1,4 +1,6 @@
 """``python -m edingcnc_lang`` is the ``ecnc`` command."""
+import sys
+
 from .cli import main
 
-main(prog_name="ecnc")
+sys.exit(main())

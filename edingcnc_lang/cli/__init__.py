@@ -1,26 +1,62 @@
-"""The ``ecnc`` command line: one click group, one module per subcommand.
+"""The ``ecnc`` command line: one argparse parser, one module per subcommand.
 
-A subcommand module imports its implementation inside the command function, so ``ecnc --help``
+argparse rather than click: importing click took about a quarter of the start-up of a short
+``ecnc run``.  A subcommand module imports its implementation inside its handler, so ``ecnc --help``
 and each command start without loading what the other commands need (the parser, numpy, ...).
 """
 from __future__ import annotations
 
-import click
+import argparse
+import os
+import sys
+from collections.abc import Sequence
 
 from .. import __version__
-from .kins_cmd import kins
-from .lint_cmd import lint
-from .parse_cmd import parse
-from .run_cmd import run
+from ..errors import EXIT_USAGE, EcncError
+from . import kins_cmd, lint_cmd, parse_cmd, run_cmd
+from .common import Command, CommandParser, UsageError
+
+# What click exited with on Ctrl-C and on a closed output pipe; scripts may rely on it.
+EXIT_ABORTED = 1
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
-@click.version_option(__version__, prog_name="ecnc")
-def main() -> None:
-    """Parse, run, lint and simulate EdingCNC G-code and macro files."""
+def build_parser() -> argparse.ArgumentParser:
+    """The whole command line; built for each call, so defaults such as ``$CC`` are read then."""
+    parser = argparse.ArgumentParser(prog="ecnc",
+                                     description="Parse, run, lint and simulate EdingCNC G-code and macro files.")
+    parser.add_argument("--version", action="version", version=f"ecnc, version {__version__}")
+    commands = parser.add_subparsers(title="commands", metavar="COMMAND", parser_class=CommandParser)
+    for module in (kins_cmd, lint_cmd, parse_cmd, run_cmd):
+        module.add_parser(commands)
+    parser.set_defaults(command=Command(parser, None))
+    return parser
 
 
-main.add_command(parse)
-main.add_command(kins)
-main.add_command(lint)
-main.add_command(run)
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run ``ecnc ARGV`` (default: ``sys.argv[1:]``) and return its exit code.
+
+    argparse raises SystemExit itself for ``--help``, ``--version`` (0) and malformed command
+    lines (2, with the usage on stderr).
+    """
+    args, unknown = build_parser().parse_known_args(argv)
+    command: Command = args.command
+    if unknown:  # reported by the command's own parser, with its usage
+        command.parser.error(f"unrecognized arguments: {' '.join(unknown)}")
+    if command.handler is None:  # `ecnc` or `ecnc kins` alone: what there is, as a usage error
+        command.parser.print_help(sys.stderr)
+        return EXIT_USAGE
+    try:
+        code = command.handler(args)
+        sys.stdout.flush()  # so that a closed pipe shows up here
+        return code
+    except UsageError as err:
+        command.parser.error(str(err))
+    except EcncError as err:
+        print(err.format(), file=sys.stderr)
+        return err.exit_code
+    except KeyboardInterrupt:
+        print("\nAborted!", file=sys.stderr)
+        return EXIT_ABORTED
+    except BrokenPipeError:  # `ecnc ... | head` stopped reading: end quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing left to flush at exit
+        return EXIT_ABORTED

@@ -1,25 +1,32 @@
 """``ecnc parse FILE [--json]``: check the syntax of a file, optionally dump its AST."""
 from __future__ import annotations
 
-import json
+import argparse
+from typing import TYPE_CHECKING
 
-import click
+from ..errors import EXIT_OK
+from .common import add_command, existing_file
 
-from .common import existing_file, reports_errors
+if TYPE_CHECKING:
+    from .common import Subcommands
 
 
-@click.command()
-@click.argument("file", type=existing_file())
-@click.option("--json", "as_json", is_flag=True, help="Print the AST as JSON.")
-@click.option("--no-spans", is_flag=True, help="Leave source positions out of the JSON.")
-@reports_errors
-def parse(file: str, as_json: bool, no_spans: bool) -> None:
-    """Parse FILE without running it (exit 65 on syntax errors)."""
+def add_parser(commands: Subcommands) -> None:
+    parser = add_command(commands, "parse", parse, "Parse FILE without running it (exit 65 on syntax errors).")
+    parser.add_argument("file", metavar="FILE", type=existing_file)
+    parser.add_argument("--json", dest="as_json", action="store_true", help="Print the AST as JSON.")
+    parser.add_argument("--no-spans", action="store_true", help="Leave source positions out of the JSON.")
+
+
+def parse(args: argparse.Namespace) -> int:
+    import json
+
     from ..parser import check_file, parse_file
     from ..serialize import to_data
 
-    if as_json:
-        program = parse_file(file)
-        click.echo(json.dumps(to_data(program, with_spans=not no_spans), indent=1))
-        return
-    check_file(file)  # streams: memory stays flat however long the file is
+    if args.as_json:
+        program = parse_file(args.file)
+        print(json.dumps(to_data(program, with_spans=not args.no_spans), indent=1))
+    else:
+        check_file(args.file)  # streams: memory stays flat however long the file is
+    return EXIT_OK

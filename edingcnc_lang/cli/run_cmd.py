@@ -1,78 +1,95 @@
 """``ecnc run JOB``: run a job on the virtual machine and report what it did."""
 from __future__ import annotations
 
+import argparse
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import click
-
-from ..errors import EcncError, JobAborted
-from ..host import DialogAnswer, Host, scripted_dialogs
-from .common import existing_file
+from ..errors import EXIT_OK, EcncError, JobAborted
+from .common import (
+    UsageError,
+    add_command,
+    existing_file,
+    existing_folder,
+    output_file,
+    positive_int,
+)
 
 if TYPE_CHECKING:
+    from ..host import DialogAnswer
     from ..runner import RunResult
+    from .common import Subcommands
 
 MESSAGE_LABEL = {"msg": "msg", "warn": "warning", "error": "error", "log": "log", "dialog": "dialog"}
 
 
-def _answers(values: tuple[str, ...]) -> list[DialogAnswer]:
+def _answer(value: str) -> DialogAnswer:
+    from ..host import DialogAnswer
+
     try:
-        return [DialogAnswer.parse(v) for v in values]
+        return DialogAnswer.parse(value)
     except ValueError as err:
-        raise click.BadParameter(str(err), param_hint="--answer") from None
+        raise argparse.ArgumentTypeError(str(err)) from None
 
 
-@click.command()
-@click.argument("job", type=existing_file())
-@click.option("--ini", type=existing_file(), help="Machine configuration (cnc.ini).")
-@click.option("--macro", type=existing_file(), help="Macro file (default: the ini's, else the packaged one).")
-@click.option("--user-macro", type=existing_file(), help="User macro file.")
-@click.option("--json", "as_json", is_flag=True, help="Print the final machine state as JSON on stdout.")
-@click.option("--trace", type=click.Path(dir_okay=False), help="Write one CSV row per executed move.")
-@click.option("--samples", type=click.Path(dir_okay=False), help="Write the interpolated trajectory (.csv or .npz).")
-@click.option("--answer", "answers", multiple=True, metavar="VALUE",
-              help="Answer for the next dlgmsg: ok, cancel or ok:#N=V,#M=W (repeatable).")
-@click.option("--max-steps", type=click.IntRange(min=1), help="Stop with an error after this many statements.")
-@click.option("--log-dir", type=click.Path(file_okay=False), help="Folder for logfile/logmsg (default: the job's).")
-@click.option("--allow-exec", is_flag=True, help="Let Exec start external programs.")
-@click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
-@click.option("--no-simulation", is_flag=True, help="Run with #5380 = 0 (as if on the real machine).")
-@click.option("--block-delete", is_flag=True, help="Skip lines that start with '/'.")
-def run(job: str, ini: str | None, macro: str | None, user_macro: str | None, as_json: bool,
-        trace: str | None, samples: str | None, answers: tuple[str, ...], max_steps: int | None,
-        log_dir: str | None, allow_exec: bool, save_vars: bool, no_simulation: bool, block_delete: bool) -> None:
-    """Run JOB as the controller would (in simulation) and report what the machine does."""
+def add_parser(commands: Subcommands) -> None:
+    parser = add_command(commands, "run", run,
+                         "Run JOB as the controller would (in simulation) and report what the machine does.")
+    parser.add_argument("job", metavar="JOB", type=existing_file)
+    parser.add_argument("--ini", metavar="FILE", type=existing_file, help="Machine configuration (cnc.ini).")
+    parser.add_argument("--macro", metavar="FILE", type=existing_file,
+                        help="Macro file (default: the ini's, else the packaged one).")
+    parser.add_argument("--user-macro", metavar="FILE", type=existing_file, help="User macro file.")
+    parser.add_argument("--json", dest="as_json", action="store_true",
+                        help="Print the final machine state as JSON on stdout.")
+    parser.add_argument("--trace", metavar="FILE", type=output_file, help="Write one CSV row per executed move.")
+    parser.add_argument("--samples", metavar="FILE", type=output_file,
+                        help="Write the interpolated trajectory (.csv or .npz).")
+    parser.add_argument("--answer", dest="answers", metavar="VALUE", type=_answer, action="append", default=[],
+                        help="Answer for the next dlgmsg: ok, cancel or ok:#N=V,#M=W (repeatable).")
+    parser.add_argument("--max-steps", metavar="N", type=positive_int,
+                        help="Stop with an error after this many statements (at least 1).")
+    parser.add_argument("--log-dir", metavar="DIRECTORY", type=existing_folder,
+                        help="Folder for logfile/logmsg (default: the job's).")
+    parser.add_argument("--allow-exec", action="store_true", help="Let Exec start external programs.")
+    parser.add_argument("--save-vars", action="store_true", help="Write persistent variables back to the ini.")
+    parser.add_argument("--no-simulation", action="store_true", help="Run with #5380 = 0 (as if on the real machine).")
+    parser.add_argument("--block-delete", action="store_true", help="Skip lines that start with '/'.")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Handles its own errors: after a runtime error ``--json`` still prints the state so far."""
     import json
 
+    from ..host import Host, scripted_dialogs
     from ..runner import RunOptions, run_file
 
-    if save_vars and not ini:
-        raise click.UsageError("--save-vars needs --ini (the file to write the variables to)")
-    if log_dir and not Path(log_dir).is_dir():
-        raise click.BadParameter(f"folder {log_dir} does not exist", param_hint="--log-dir")
+    if args.save_vars and not args.ini:
+        raise UsageError("--save-vars needs --ini (the file to write the variables to)")
 
     def show(kind: str, text: str, path: str, line: int) -> None:
-        if not as_json and kind in MESSAGE_LABEL and kind != "dialog":
-            click.echo(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", err=True)
+        if not args.as_json and kind in MESSAGE_LABEL and kind != "dialog":
+            print(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", file=sys.stderr)
+
+    def path(value: str | None) -> Path | None:
+        return Path(value) if value else None
 
     options = RunOptions(
-        ini=Path(ini) if ini else None, macro=Path(macro) if macro else None,
-        user_macro=Path(user_macro) if user_macro else None,
-        host=Host(dialog=scripted_dialogs(_answers(answers)), message=show),
-        max_steps=max_steps, trace=Path(trace) if trace else None, samples=Path(samples) if samples else None,
-        log_dir=Path(log_dir) if log_dir else None, allow_exec=allow_exec, simulation=not no_simulation,
-        block_delete=block_delete, save_vars=save_vars)
+        ini=path(args.ini), macro=path(args.macro), user_macro=path(args.user_macro),
+        host=Host(dialog=scripted_dialogs(args.answers), message=show),
+        max_steps=args.max_steps, trace=path(args.trace), samples=path(args.samples),
+        log_dir=path(args.log_dir), allow_exec=args.allow_exec, simulation=not args.no_simulation,
+        block_delete=args.block_delete, save_vars=args.save_vars)
     try:
-        result = run_file(job, options)
+        result = run_file(args.job, options)
     except EcncError as err:
         partial: RunResult | None = getattr(err, "result", None)
-        if as_json and partial is not None:
-            click.echo(json.dumps(partial.to_json(), indent=1))
+        if args.as_json and partial is not None:
+            print(json.dumps(partial.to_json(), indent=1))
         if not isinstance(err, JobAborted):  # an errmsg text was shown as it ran (or is in the JSON)
-            click.echo(err.format(), err=True)
-        sys.exit(err.exit_code)
-    if as_json:
-        click.echo(json.dumps(result.to_json(), indent=1))
-
+            print(err.format(), file=sys.stderr)
+        return err.exit_code
+    if args.as_json:
+        print(json.dumps(result.to_json(), indent=1))
+    return EXIT_OK

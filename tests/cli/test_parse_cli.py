@@ -6,15 +6,13 @@ import subprocess
 import sys
 from pathlib import Path
 
-from click.testing import CliRunner
-
-from edingcnc_lang.cli import main
+from tests.cli_runner import invoke
 
 
 def test_parse_ok_prints_nothing_and_exits_0(tmp_path: Path) -> None:
     job = tmp_path / "job.nc"
     job.write_text("G0 X1\n")
-    result = CliRunner().invoke(main, ["parse", str(job)])
+    result = invoke("parse", job)
     assert result.exit_code == 0
     assert result.output == ""
 
@@ -22,7 +20,7 @@ def test_parse_ok_prints_nothing_and_exits_0(tmp_path: Path) -> None:
 def test_parse_json_dumps_the_ast(tmp_path: Path) -> None:
     job = tmp_path / "job.nc"
     job.write_text("G1 X[#1 + 2]\n")
-    result = CliRunner().invoke(main, ["parse", "--json", str(job)])
+    result = invoke("parse", "--json", job)
     data = json.loads(result.output)
     word = data["body"][0]["words"][1]
     assert word["letter"] == "X"
@@ -34,7 +32,7 @@ def test_syntax_errors_exit_65_with_every_error_on_stderr(tmp_path: Path) -> Non
     job = tmp_path / "job.nc"
     job.write_text("G0 X10+5\nG0 X1\nEndIf\n")
     result = subprocess.run([sys.executable, "-m", "edingcnc_lang", "parse", str(job)],
-                            capture_output=True, text=True)
+                            check=False, capture_output=True, text=True)
     assert result.returncode == 65
     assert result.stdout == ""
     assert f"{job}:1:4: error: expression needs brackets: X10+5" in result.stderr
@@ -43,5 +41,5 @@ def test_syntax_errors_exit_65_with_every_error_on_stderr(tmp_path: Path) -> Non
 
 
 def test_missing_file_is_a_usage_error(tmp_path: Path) -> None:
-    result = CliRunner().invoke(main, ["parse", str(tmp_path / "nope.nc")])
+    result = invoke("parse", tmp_path / "nope.nc")
     assert result.exit_code == 2

@@ -9,9 +9,8 @@ import sys
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner, Result
 
-from edingcnc_lang.cli import main
+from tests.cli_runner import Result, invoke
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 DATA = ROOT / "tests" / "interpreter" / "data"
@@ -26,7 +25,7 @@ def write(folder: Path, name: str, text: str) -> Path:
 
 
 def ecnc(*args: object) -> Result:
-    return CliRunner().invoke(main, ["run", *map(str, args)])
+    return invoke("run", *args)
 
 
 def run_job(tmp_path: Path, source: str, *args: object, macro: Path | None = EMPTY_MACRO) -> Result:
@@ -107,7 +106,7 @@ def test_subprocess_exit_codes_and_streams(tmp_path: Path) -> None:
 
     def run(job: Path) -> subprocess.CompletedProcess[str]:
         return subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", str(job), "--macro", str(EMPTY_MACRO)],
-                              capture_output=True, text=True, cwd=tmp_path)
+                              check=False, capture_output=True, text=True, cwd=tmp_path)
 
     results = [run(job) for job in (ok, bad, stop)]
     assert [r.returncode for r in results] == [0, 65, 70]
@@ -286,7 +285,6 @@ BAD_JOBS = [
 @pytest.mark.parametrize("source", BAD_JOBS, ids=[repr(s)[:30] for s in BAD_JOBS])
 def test_bad_jobs_give_a_message_and_no_traceback(tmp_path: Path, source: str) -> None:
     result = run_job(tmp_path, source, "--max-steps", "1000")
-    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
     assert "Traceback" not in result.output
     assert result.exit_code in (0, 65, 70)
     if result.exit_code:
@@ -334,7 +332,6 @@ def test_inputs_that_crashed_give_a_message(tmp_path: Path, source: str) -> None
     logs = tmp_path / "logs"
     logs.mkdir()
     result = run_job(tmp_path, source, "--log-dir", logs)
-    assert result.exception is None or isinstance(result.exception, SystemExit), repr(result.exception)
     assert result.exit_code == 70
     assert "error:" in result.output and "Traceback" not in result.output
 
@@ -355,7 +352,7 @@ def test_examples_run(example: str, options: list[str], moves: bool) -> None:
 def test_pocket_example_from_a_subprocess(tmp_path: Path) -> None:
     trace = tmp_path / "pocket.csv"
     result = subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", str(ROOT / "examples" / "pocket.nc"),
-                             "--trace", str(trace)], capture_output=True, text=True)
+                             "--trace", str(trace)], check=False, capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     rows = trace_rows(trace)
     kinds = {r[1] for r in rows}

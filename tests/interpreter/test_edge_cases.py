@@ -7,10 +7,9 @@ import sys
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner
 
 from edingcnc_lang import EcncError, Move, RunOptions, run_file, run_string
-from edingcnc_lang.cli import main
+from tests.cli_runner import invoke
 
 INI = "[JOINT_0]\npositiveLimit = 600\nnegativeLimit = 0\n"
 
@@ -21,7 +20,7 @@ def test_a_move_out_of_limits_leaves_the_machine_where_it_was(tmp_path: Path, so
     (tmp_path / "cnc.ini").write_text(INI)
     job = tmp_path / "job.nc"
     job.write_text(source)
-    result = CliRunner().invoke(main, ["run", "--ini", str(tmp_path / "cnc.ini"), "--json", str(job)])
+    result = invoke("run", "--ini", tmp_path / "cnc.ini", "--json", job)
     assert result.exit_code == 70
     state = json.loads(result.stdout[: result.stdout.rindex("}") + 1])
     assert state["machine"]["x"] == state["joints"]["x"] == 10.0
@@ -77,7 +76,7 @@ def test_an_unwritable_trace_is_an_error_not_a_traceback(tmp_path: Path) -> None
     job = tmp_path / "job.nc"
     job.write_text("G0 X1\n")
     result = subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", str(job), "--trace", "/dev/full"],
-                            capture_output=True, text=True)
+                            check=False, capture_output=True, text=True)
     assert result.returncode == 70
     assert "error: cannot write" in result.stderr and "Traceback" not in result.stderr
 
@@ -85,5 +84,5 @@ def test_an_unwritable_trace_is_an_error_not_a_traceback(tmp_path: Path) -> None
 def test_absurdly_deep_brackets_are_parsed_by_the_grammar(tmp_path: Path) -> None:
     job = tmp_path / "deep.nc"
     job.write_text("#1000=" + "[" * 400 + "1" + "]" * 400 + "\n")
-    result = CliRunner().invoke(main, ["parse", str(job)])
+    result = invoke("parse", job)
     assert result.exit_code == 0, result.output

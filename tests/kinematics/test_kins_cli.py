@@ -1,4 +1,4 @@
-"""``ecnc kins ...`` through click's CliRunner."""
+"""``ecnc kins ...`` run in-process."""
 from __future__ import annotations
 
 import json
@@ -7,16 +7,14 @@ import shutil
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner
 
-from edingcnc_lang.cli.kins_cmd import kins
+from tests.cli_runner import invoke
 
 DELTA_INI = "[KINEMATICS]\r\nkinematicsDLLName = deltakins.dll\r\nlinDeltaRadius = 100.000000\r\nlinDeltaArmLength = 200.0\r\n"
 
 
 def run(*args: str) -> tuple[int, str, str]:
-    result = CliRunner().invoke(kins, list(args))
-    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception  # no traceback
+    result = invoke("kins", *args)  # an exception (a traceback) fails the test
     return result.exit_code, result.stdout, result.stderr
 
 

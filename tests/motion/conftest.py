@@ -1,14 +1,13 @@
-"""Fixtures of the motion tests: ``ecnc run`` through click's CliRunner, the compiled C plug-in."""
+"""Fixtures of the motion tests: ``ecnc run`` in-process, the compiled C plug-in."""
 from __future__ import annotations
 
 import shutil
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner
 from motion_helpers import REPO, Outcome, Sections, ini_text
 
-from edingcnc_lang.cli import main
+from tests.cli_runner import invoke
 
 
 @pytest.fixture
@@ -21,8 +20,7 @@ def run_job(tmp_path: Path):  # type: ignore[no-untyped-def]
         if sections is not None:
             (tmp_path / "cnc.ini").write_text(ini_text(sections), newline="")
             args += ["--ini", str(tmp_path / "cnc.ini")]
-        result = CliRunner().invoke(main, args)
-        assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
+        result = invoke(*args)  # an exception (a traceback) fails the test
         assert "Traceback" not in result.stderr
         return Outcome(result.exit_code, result.stdout, result.stderr)
     return run
@@ -35,6 +33,6 @@ def compiled_rotatekins(tmp_path_factory: pytest.TempPathFactory) -> Path:
         pytest.skip("no C compiler (cc) on PATH")
     source = tmp_path_factory.mktemp("cplugin") / "rotatekins.c"
     shutil.copy(REPO / "kins" / "c" / "rotatekins.c", source)
-    result = CliRunner().invoke(main, ["kins", "build", str(source)])
+    result = invoke("kins", "build", source)
     assert result.exit_code == 0, result.output
     return source.with_suffix(".so")

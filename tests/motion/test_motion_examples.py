@@ -5,10 +5,9 @@ import shutil
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner
 from motion_helpers import REPO
 
-from edingcnc_lang.cli import main
+from tests.cli_runner import invoke
 
 FOLDERS = sorted(p.parent for p in (REPO / "examples").glob("*/job.nc"))
 
@@ -22,14 +21,12 @@ def test_every_required_example_exists() -> None:
 @pytest.mark.parametrize("folder", FOLDERS, ids=lambda p: p.name)
 def test_example_runs(folder: Path, tmp_path: Path) -> None:
     work = shutil.copytree(folder, tmp_path / folder.name)
-    runner = CliRunner()
     for source in work.glob("*.c"):
         if shutil.which("cc") is None:
             pytest.skip("no C compiler (cc) on PATH")
-        built = runner.invoke(main, ["kins", "build", str(source)])
+        built = invoke("kins", "build", source)
         assert built.exit_code == 0, built.output
-    result = runner.invoke(main, ["run", "--ini", str(work / "cnc.ini"), str(work / "job.nc"), "--json",
-                                  "--samples", str(tmp_path / "samples.npz")])
+    result = invoke("run", "--ini", work / "cnc.ini", work / "job.nc", "--json", "--samples", tmp_path / "samples.npz")
     assert result.exit_code == 0, result.stderr
     assert "Traceback" not in result.stderr
     assert (tmp_path / "samples.npz").stat().st_size > 0

@@ -97,15 +97,13 @@ def test_plugin_batch_result_is_checked(run_job, tmp_path: Path, nan: int, messa
 
 
 def test_an_unbuilt_c_plugin_says_how_to_build_it(tmp_path) -> None:
-    from click.testing import CliRunner
-
-    from edingcnc_lang.cli import main
+    from tests.cli_runner import invoke
 
     (tmp_path / "mykins.c").write_text("/* source only */\n")
     ini = tmp_path / "cnc.ini"
     ini.write_text("[KINEMATICS]\nkinematicsDLLName = mykins.dll\n")
     job = tmp_path / "job.nc"
     job.write_text("G0 X1\n")
-    result = CliRunner().invoke(main, ["run", "--ini", str(ini), str(job)])
+    result = invoke("run", "--ini", ini, job)
     assert result.exit_code == 70
     assert "build it first with `ecnc kins build" in result.output

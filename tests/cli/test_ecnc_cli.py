@@ -1,0 +1,156 @@
+"""The command line itself: help and version, usage errors (exit 2) on every command, how
+arguments are read, and the exit status of ``python -m edingcnc_lang`` and the ``ecnc`` script."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import edingcnc_lang
+import edingcnc_lang.runner
+from tests.cli_runner import invoke
+
+COMMANDS = [[], ["run"], ["parse"], ["lint"], ["kins"], ["kins", "list"], ["kins", "inverse"], ["kins", "forward"],
+            ["kins", "build"]]
+
+
+@pytest.fixture
+def job(tmp_path: Path) -> Path:
+    path = tmp_path / "job.nc"
+    path.write_text("G0 X1\nG1 X5 F0\n")
+    return path
+
+
+def test_version() -> None:
+    result = invoke("--version")
+    assert (result.exit_code, result.stdout, result.stderr) == (0, f"ecnc, version {edingcnc_lang.__version__}\n", "")
+
+
+@pytest.mark.parametrize("command", COMMANDS, ids=lambda c: " ".join(["ecnc", *c]))
+@pytest.mark.parametrize("flag", ["-h", "--help"])
+def test_help_on_every_level(command: list[str], flag: str) -> None:
+    result = invoke(*command, flag)
+    assert result.exit_code == 0 and result.stderr == ""
+    assert result.stdout.startswith(" ".join(["usage: ecnc", *command]))
+
+
+@pytest.mark.parametrize(("command", "names"), [([], ["kins", "lint", "parse", "run"]),
+                                                (["kins"], ["list", "inverse", "forward", "build"])])
+def test_a_group_alone_prints_its_help_as_a_usage_error(command: list[str], names: list[str]) -> None:
+    result = invoke(*command)
+    assert result.exit_code == 2 and result.stdout == ""
+    assert result.stderr.startswith(" ".join(["usage: ecnc", *command]))
+    assert all(f"\n    {name} " in result.stderr for name in names)
+
+
+@pytest.mark.parametrize(("command", "arguments"), [
+    ([], []), (["run"], ["{job}"]), (["parse"], ["{job}"]), (["lint"], ["{job}"]), (["kins", "list"], []),
+    (["kins", "inverse"], ["trivial", "1", "2", "3"]), (["kins", "forward"], ["trivial", "1", "2", "3"]),
+    (["kins", "build"], ["{job}"]),
+], ids=["ecnc", "run", "parse", "lint", "kins list", "kins inverse", "kins forward", "kins build"])
+def test_an_unknown_option_is_a_usage_error_of_that_command(command: list[str], arguments: list[str],
+                                                            job: Path) -> None:
+    result = invoke(*command, *(a.format(job=job) for a in arguments), "--bogus")
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert result.stderr.startswith(" ".join(["usage: ecnc", *command]))
+    assert result.stderr.endswith(": error: unrecognized arguments: --bogus\n")
+
+
+@pytest.mark.parametrize("command", [
+    ["run", "{missing}"], ["run", "{job}", "--ini", "{missing}"], ["run", "{job}", "--macro", "{missing}"],
+    ["run", "{job}", "--user-macro", "{missing}"], ["parse", "{missing}"], ["lint", "{missing}"],
+    ["lint", "{job}", "--macro", "{missing}"], ["lint", "--ini", "{missing}"],
+    ["kins", "inverse", "trivial", "--ini", "{missing}", "1", "2", "3"], ["kins", "build", "{missing}"],
+], ids=" ".join)
+def test_a_missing_input_file_is_a_usage_error_naming_it(command: list[str], job: Path, tmp_path: Path) -> None:
+    missing = tmp_path / "no-such-file.nc"
+    result = invoke(*(a.format(job=job, missing=missing) for a in command))
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert result.stderr.startswith(f"usage: ecnc {command[0]}")
+    assert ": error: argument " in result.stderr and f"'{missing}' does not exist" in result.stderr
+
+
+def test_a_folder_where_a_file_belongs_is_a_usage_error(tmp_path: Path) -> None:
+    result = invoke("run", tmp_path)
+    assert result.exit_code == 2
+    assert f"argument JOB: '{tmp_path}' is a folder, not a file" in result.stderr
+
+
+def test_log_dir_must_be_an_existing_folder(job: Path) -> None:
+    result = invoke("run", job, "--log-dir", job)
+    assert result.exit_code == 2
+    assert f"argument --log-dir: '{job}' is a file, not a folder" in result.stderr
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["--max-steps", "0"], "argument --max-steps: 0 is less than 1"),
+    (["--max-steps", "x"], "argument --max-steps: 'x' is not a whole number"),
+    (["--answer", "maybe"], "argument --answer: answer 'maybe': expected ok, cancel or ok:#N=V,..."),
+    (["--save-vars"], "error: --save-vars needs --ini (the file to write the variables to)"),
+])
+def test_run_option_errors_say_what_is_wrong(job: Path, args: list[str], message: str) -> None:
+    result = invoke("run", job, *args)
+    assert result.exit_code == 2
+    assert result.stderr.startswith("usage: ecnc run") and message in result.stderr
+
+
+def test_an_unknown_lint_code_points_to_list_codes(job: Path) -> None:
+    result = invoke("lint", job, "--select", "E,Q9")
+    assert result.exit_code == 2
+    assert "argument --select: no code starts with Q9 (see --list-codes)" in result.stderr
+
+
+@pytest.mark.parametrize("coords", [["-5", "1", "2"], ["-.5", "-2.5e-3", "1E3"], ["-inf", "0", "0"]])
+def test_negative_numbers_are_coordinates(coords: list[str]) -> None:
+    result = invoke("kins", "inverse", "trivial", *coords)
+    assert result.exit_code == 0, result.stderr
+    assert list(json.loads(result.stdout).values()) == [float(c) for c in coords] + [0.0, 0.0, 0.0]
+
+
+def test_options_may_stand_between_arguments(job: Path, tmp_path: Path) -> None:
+    other = tmp_path / "other.nc"
+    other.write_text("G1 X1 F0\n")
+    result = invoke("lint", job, "--format", "json", other, "--select", "G503")
+    assert [d["path"] for d in json.loads(result.stdout)] == [str(job), str(other)]
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[KINEMATICS]\n")
+    result = invoke("kins", "forward", "trivial", "1", "--ini", ini, "-2", "3")
+    assert json.loads(result.stdout) == {"x": 1.0, "y": -2.0, "z": 3.0, "a": 0.0, "b": 0.0, "c": 0.0}
+
+
+def test_ctrl_c_aborts_with_exit_1(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    def interrupted(*_args: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(edingcnc_lang.runner, "run_file", interrupted)
+    result = invoke("run", job)
+    assert (result.exit_code, result.stdout, result.stderr) == (1, "", "\nAborted!\n")
+
+
+def test_a_closed_pipe_ends_quietly(tmp_path: Path) -> None:
+    big = tmp_path / "big.nc"
+    big.write_text("G1 X[#1 + 2] Y3 F100\n" * 2000)  # far more JSON than a pipe holds
+    process = subprocess.Popen([sys.executable, "-m", "edingcnc_lang", "parse", "--json", str(big)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert process.stdout is not None and process.stderr is not None
+    process.stdout.close()
+    stderr = process.stderr.read()
+    assert (process.wait(), stderr) == (1, b"")
+
+
+@pytest.mark.parametrize("program", [[sys.executable, "-m", "edingcnc_lang"],
+                                     [str(Path(sys.executable).parent / "ecnc")]],
+                         ids=["python -m edingcnc_lang", "ecnc script"])
+def test_exit_status_of_the_programs(program: list[str], tmp_path: Path) -> None:
+    if not Path(program[0]).exists():
+        pytest.skip("the ecnc script is not installed beside this Python")
+    bad = tmp_path / "bad.nc"
+    bad.write_text("G0 X[1\n")
+
+    def status(*args: str) -> int:
+        return subprocess.run([*program, *args], check=False, capture_output=True, cwd=tmp_path).returncode
+
+    assert [status("--version"), status(), status("run", "missing.nc"), status("parse", str(bad))] == [0, 2, 2, 65]
