@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 import re
-import subprocess
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 from dataclasses import dataclass
@@ -439,6 +438,8 @@ class Interpreter:
         if not self.allow_exec:
             self.message("warn", f"Exec {stmt.args} was not run: running programs needs --allow-exec")
             return
+        import subprocess  # only for Exec: not worth its import time on every run
+
         argv = [quoted or bare for quoted, bare in _EXEC_ARG.findall(stmt.args)]
         try:
             result = subprocess.run(argv, check=False)

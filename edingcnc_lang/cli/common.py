@@ -2,9 +2,11 @@
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import re
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -68,6 +70,23 @@ def add_command(commands: Subcommands, name: str, handler: Handler | None, summa
     parser = commands.add_parser(name, help=summary, description=summary, **kwargs)
     parser.set_defaults(command=Command(parser, handler))
     return parser
+
+
+@contextmanager
+def whole_trees() -> Iterator[None]:
+    """Pause the cyclic garbage collector while a command builds whole syntax trees.
+
+    A tree is hundreds of thousands of small acyclic objects that all stay alive; the collector
+    would walk them again and again as they pile up (it took about 40 % of ``ecnc lint`` on a
+    big macro file) and free nothing: reference counting frees everything they hold.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
 
 
 def existing_path(value: str) -> str:

@@ -5,7 +5,7 @@ import argparse
 from typing import TYPE_CHECKING
 
 from ..errors import EXIT_FINDINGS, EXIT_OK
-from .common import UsageError, add_command, existing_file, existing_path
+from .common import UsageError, add_command, existing_file, existing_path, whole_trees
 
 if TYPE_CHECKING:
     from .common import Subcommands
@@ -55,7 +55,8 @@ def lint(args: argparse.Namespace) -> int:
         return EXIT_OK
     if not args.paths and not args.ini:
         raise UsageError("give at least one file or folder to lint")
-    findings = lint_paths(args.paths, LintOptions(args.macro, args.user_macro, args.ini, args.select, args.ignore))
+    with whole_trees():
+        findings = lint_paths(args.paths, LintOptions(args.macro, args.user_macro, args.ini, args.select, args.ignore))
     output = FORMATS[args.fmt](findings, not args.no_source)
     if output or args.fmt != "text":
         print(output)

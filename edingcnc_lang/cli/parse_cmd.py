@@ -5,7 +5,7 @@ import argparse
 from typing import TYPE_CHECKING
 
 from ..errors import EXIT_OK
-from .common import add_command, existing_file
+from .common import add_command, existing_file, whole_trees
 
 if TYPE_CHECKING:
     from .common import Subcommands
@@ -25,8 +25,9 @@ def parse(args: argparse.Namespace) -> int:
     from ..serialize import to_data
 
     if args.as_json:
-        program = parse_file(args.file)
-        print(json.dumps(to_data(program, with_spans=not args.no_spans), indent=1))
+        with whole_trees():
+            program = parse_file(args.file)
+            print(json.dumps(to_data(program, with_spans=not args.no_spans), indent=1))
     else:
         check_file(args.file)  # streams: memory stays flat however long the file is
     return EXIT_OK

@@ -60,8 +60,6 @@ def add_parser(commands: Subcommands) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Handles its own errors: after a runtime error ``--json`` still prints the state so far."""
-    import json
-
     from ..host import Host, scripted_dialogs
     from ..runner import RunOptions, run_file
 
@@ -86,10 +84,16 @@ def run(args: argparse.Namespace) -> int:
     except EcncError as err:
         partial: RunResult | None = getattr(err, "result", None)
         if args.as_json and partial is not None:
-            print(json.dumps(partial.to_json(), indent=1))
+            _print_json(partial.to_json())
         if not isinstance(err, JobAborted):  # an errmsg text was shown as it ran (or is in the JSON)
             print(err.format(), file=sys.stderr)
         return err.exit_code
     if args.as_json:
-        print(json.dumps(result.to_json(), indent=1))
+        _print_json(result.to_json())
     return EXIT_OK
+
+
+def _print_json(data: object) -> None:
+    import json  # only with --json: a short run starts faster without it
+
+    print(json.dumps(data, indent=1))
