@@ -12,12 +12,10 @@ from functools import cached_property
 
 from .. import nodes as n
 from ..tables import ARG_PARAMS, PROBE_TRIPPED, code_key
+from .facts import Code, FileFacts, gather
 from .model import SourceFile
 from .names import TOOL_CHANGE_SUB, is_entry_point, m_sub_number
-from .walk import Scope, assigned, dialog_fields, literal_index, reads, walk, word_codes
-
-Indexed = tuple[n.Param, "int | None"]  # a parameter read and its index when a whole number known without running
-Code = tuple[int, n.Word]  # a literal G or M number (integer tenths) and its word
+from .walk import Scope, dialog_fields, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 TOOL_CHANGE = code_key(6)
@@ -53,30 +51,28 @@ class Project:
         self._macros = macros
         self._extra_written = extra_written
         self._walked = {f.path: tuple(walk(f.body)) for f in self.files}
-        # Per-statement facts several rules ask for, computed once; keyed by id() because nodes
-        # hash by value, deeply (the AST lives as long as the project).
-        self._reads: dict[int, tuple[Indexed, ...]] = {}
-        self._codes: dict[tuple[int, str], tuple[Code, ...]] = {}
+        self._facts = {path: gather(walked) for path, walked in self._walked.items()}
+        # Statement facts of every file, keyed by id() (nodes hash by value, deeply; the AST lives
+        # as long as the project).
+        self._reads = {k: v for facts in self._facts.values() for k, v in facts.reads_of.items()}
+        self._codes = {k: v for facts in self._facts.values() for k, v in facts.codes_of.items()}
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
         return self._walked[file.path]
 
-    def reads(self, stmt: n.Stmt) -> tuple[Indexed, ...]:
+    def facts(self, file: SourceFile) -> FileFacts:
+        return self._facts[file.path]
+
+    def reads(self, stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
         """The parameters a statement reads, each with its literal index (None if computed)."""
-        found = self._reads.get(id(stmt))
-        if found is None:
-            found = self._reads[id(stmt)] = tuple((p, literal_index(p)) for p in reads(stmt))
-        return found
+        return self._reads[id(stmt)]
 
     def codes(self, stmt: n.Stmt, letter: str) -> tuple[Code, ...]:
         """The literal G or M codes of a block (none for other statements)."""
-        if not isinstance(stmt, n.Block):
-            return ()
-        key = (id(stmt), letter)
-        found = self._codes.get(key)
+        found = self._codes.get(id(stmt))
         if found is None:
-            found = self._codes[key] = word_codes(stmt, letter)
-        return found
+            return ()
+        return found.g if letter == "G" else found.m
 
     # ----------------------------------------------------------------- calls
     def resolve(self, file: SourceFile, name: str) -> tuple[SourceFile, n.Sub] | None:
@@ -107,7 +103,7 @@ class Project:
     @cached_property
     def calls(self) -> tuple[Call, ...]:
         return tuple(Call(file, scope, stmt, *target)
-                     for file in self.files for stmt, scope in self.walked(file)
+                     for file in self.files for stmt, scope in self.facts(file).callers
                      for target in self.callees(file, stmt, scope))
 
     @cached_property
@@ -141,8 +137,8 @@ class Project:
         """Subs that may overwrite #1..#26: they assign them, call an M-code sub, or GoSub one that does."""
         clobbering = {call.key for call in self.calls if m_sub_number(call.sub.name) is not None}
         for file in self.files:
-            for stmt, scope in self.walked(file):
-                if scope.sub and any(literal_index(t) in ARG_PARAMS for t in assigned(stmt)):
+            for _param, index, scope in self.facts(file).targets:
+                if scope.sub and index in ARG_PARAMS:
                     clobbering.add(sub_key(file, scope.sub))
         changed = True
         while changed:
@@ -164,8 +160,8 @@ class Project:
     def probe_checking_subs(self) -> frozenset[SubKey]:
         """Subs that read #5067 themselves (a GoSub to one counts as checking the probe)."""
         return frozenset(sub_key(file, scope.sub) for file in self.files
-                         for stmt, scope in self.walked(file)
-                         if scope.sub and any(index == PROBE_TRIPPED for _, index in self.reads(stmt)))
+                         for _param, index, scope in self.facts(file).reads
+                         if scope.sub and index == PROBE_TRIPPED)
 
     # ----------------------------------------------------------------- variables
     @cached_property
@@ -173,10 +169,11 @@ class Project:
         """Parameters assigned by number anywhere, set by a dlgmsg field or a command, or by the ini."""
         found = set(self._extra_written)
         for file in self.files:
-            for stmt, _ in self.walked(file):
-                found.update(i for i in map(literal_index, assigned(stmt)) if i is not None)
-                if isinstance(stmt, n.Dialog):
-                    found.update(index for index, _ in dialog_fields(stmt))
-                elif isinstance(stmt, n.Command) and stmt.name in _WRITING_COMMANDS:
-                    found.update(int(word) for word in stmt.args.split() if word.isdigit())
+            facts = self.facts(file)
+            found.update(index for _param, index, _scope in facts.targets if index is not None)
+            for dialog, _scope in facts.dialogs:
+                found.update(index for index, _ in dialog_fields(dialog))
+            for command in facts.commands:
+                if command.name in _WRITING_COMMANDS:
+                    found.update(int(word) for word in command.args.split() if word.isdigit())
         return frozenset(found)

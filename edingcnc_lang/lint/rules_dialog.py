@@ -30,9 +30,8 @@ def _value_span(item: n.MessageItem, dialog: n.Dialog) -> n.Span:
 
 @rule("D400", "D401", "D402", "D403")
 def dialog_shape(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for stmt, _ in project.walked(file):
-        if isinstance(stmt, n.Dialog):
-            yield from _check(file, stmt)
+    for dialog, _scope in project.facts(file).dialogs:
+        yield from _check(file, dialog)
 
 
 def _check(file: SourceFile, dialog: n.Dialog) -> Iterator[Diagnostic]:

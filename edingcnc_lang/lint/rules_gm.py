@@ -5,7 +5,7 @@ Only literal G/M numbers are checked (``G[#1]`` is decided at run time).
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 
 from .. import nodes as n
 from ..diagnostics import Diagnostic
@@ -19,6 +19,7 @@ from ..tables import (
     code_name,
 )
 from .evaluate import evaluate
+from .facts import BlockCodes, Code
 from .model import SourceFile
 from .project import Project, sub_key
 from .registry import at, rule
@@ -33,16 +34,12 @@ AXES = frozenset("XYZABC")
 CENTRE = frozenset("IJKR")
 
 
-def _blocks(file: SourceFile, project: Project) -> Iterator[n.Block]:
-    return (stmt for stmt, _ in project.walked(file) if isinstance(stmt, n.Block))
-
-
 @rule("G500")
 def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for block in _blocks(file, project):
-        for letter, groups in (("G", G_GROUPS), ("M", M_GROUPS)):
+    for block in project.facts(file).blocks:
+        for letter, codes, groups in (("G", block.g, G_GROUPS), ("M", block.m, M_GROUPS)):
             seen: dict[str, int] = {}
-            for key, word in project.codes(block, letter):
+            for key, word in codes:
                 group = groups.get(key)
                 if group is None:
                     continue
@@ -55,22 +52,22 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 
 @rule("G501", "G502", "G503", "G506", "G507")
 def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for block in _blocks(file, project):
-        yield from _line_words(block, project)
+    for codes in project.facts(file).blocks:
+        yield from _line_words(codes)
 
 
-def _line_words(block: n.Block, project: Project) -> Iterator[Diagnostic]:
-    g = dict(project.codes(block, "G"))
+def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
+    block, g = codes.block, dict(codes.g)
     letters = {w.letter: w for w in block.words}
     if G53 in g and not G53_MOTIONS & g.keys():
         yield at("G501", "G53 (machine coordinates) needs G0 or G1 on the same line, e.g. G53 G0 Z0",
                  g[G53].span)
-    arc = next((k for k in ARCS if k in g), None)
+    arc = next((k for k in g if k in ARCS), None)
     if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
         yield at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
                  g[arc].span)
     feed = letters.get("F")
-    move = next((k for k in FEED_MOVES if k in g), None)
+    move = next((k for k in g if k in FEED_MOVES), None)
     if feed is not None and move is not None and evaluate(feed.value) == 0:
         yield at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
                  "(EdingCNC G1516: incorrect feed rate)", feed.span)
@@ -84,16 +81,16 @@ def _line_words(block: n.Block, project: Project) -> Iterator[Diagnostic]:
                  f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
 
 
-def _probe_word(stmt: n.Stmt, project: Project) -> n.Word | None:
-    return next((w for k, w in project.codes(stmt, "G") if k == PROBE), None)
+def _probe_word(g: Iterable[Code]) -> n.Word | None:
+    return next((w for k, w in g if k == PROBE), None)
 
 
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
-    for stmt, scope in project.walked(file):
-        word = _probe_word(stmt, project)
-        if word is not None and not project.is_guarded(file, scope):
+    for block in project.facts(file).blocks:
+        word = _probe_word(block.g)
+        if word is not None and not project.is_guarded(file, block.scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
                      "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
 
@@ -101,9 +98,12 @@ def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 @rule("G505")
 def probe_checked(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """Each G38.2 needs a read of #5067 later in its sub (or file), before the next G38.2."""
+    probing = {id(b.scope.sub) for b in project.facts(file).blocks if _probe_word(b.g)}  # subs (or None)
+    if not probing:
+        return
     scopes: dict[int, list[tuple[n.Stmt, Scope]]] = defaultdict(list)  # by id() of the sub: nodes hash deeply
     for stmt, scope in project.walked(file):
-        if not isinstance(stmt, n.Sub):
+        if id(scope.sub) in probing and not isinstance(stmt, n.Sub):
             scopes[id(scope.sub)].append((stmt, scope))
     for statements in scopes.values():
         yield from _unchecked_probes(file, project, statements)
@@ -115,7 +115,7 @@ def _unchecked_probes(file: SourceFile, project: Project,
     for stmt, scope in statements:
         if pending is not None and _checks_probe(file, project, stmt, scope):
             pending = None
-        word = _probe_word(stmt, project)
+        word = _probe_word(project.codes(stmt, "G"))
         if word is not None:
             if pending is not None:
                 yield _unchecked(pending)

@@ -13,7 +13,7 @@ from .model import SourceFile
 from .names import is_entry_point
 from .project import Project, sub_key
 from .registry import at, rule
-from .walk import END_OF_PROGRAM, ends_program, statement_lists, word_codes
+from .walk import END_OF_PROGRAM, block_codes, ends_program, statement_lists
 
 
 @rule("S207")
@@ -39,7 +39,7 @@ def _ending(stmt: n.Stmt) -> str:
     if isinstance(stmt, n.Message):
         return "errmsg"
     assert isinstance(stmt, n.Block)
-    key = next(k for k, _word in word_codes(stmt, "M") if k in END_OF_PROGRAM)
+    key = next(k for k, _word in block_codes(stmt)[1] if k in END_OF_PROGRAM)
     return f"M{key // 10}"
 
 

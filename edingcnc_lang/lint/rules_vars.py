@@ -25,54 +25,50 @@ from .registry import at, rule
 from .walk import Scope, assigned, dialog_fields, literal_index
 
 
-def _indexed(stmt: n.Stmt, project: Project) -> Iterator[tuple[float, n.Span]]:
-    """Every index the statement names literally, with where it is written."""
-    for param, literal in project.reads(stmt):
-        index = constant_index(param) if literal is None else float(literal)  # None: computed or not whole
-        if index is not None:
-            yield index, param.span
-    for param in assigned(stmt):
-        index = constant_index(param)
-        if index is not None:
-            yield index, param.span
-    if isinstance(stmt, n.Dialog):
-        for item in stmt.items[1:]:
+def _indexed(file: SourceFile, project: Project) -> Iterator[tuple[float, n.Span]]:
+    """Every parameter index the file names literally, with where it is written."""
+    facts = project.facts(file)
+    for param, literal, _scope in (*facts.reads, *facts.targets):
+        if literal is None or not FIRST_PARAM <= literal <= LAST_PARAM:
+            index = constant_index(param)  # computed, not a whole number, or out of range
+            if index is not None:
+                yield index, param.span
+    for dialog, _scope in facts.dialogs:
+        for item in dialog.items[1:]:
             if isinstance(item, n.Number):
                 yield item.value, item.span
 
 
 @rule("V300")
 def index_range(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for stmt, _ in project.walked(file):
-        for index, span in _indexed(stmt, project):
-            if not index.is_integer() or not FIRST_PARAM <= index <= LAST_PARAM:
-                shown = int(index) if index.is_integer() else index
-                yield at("V300", f"#{shown} does not exist: parameters are numbered "
-                         f"{FIRST_PARAM}..{LAST_PARAM}", span)
+    for index, span in _indexed(file, project):
+        if not index.is_integer() or not FIRST_PARAM <= index <= LAST_PARAM:
+            shown = int(index) if index.is_integer() else index
+            yield at("V300", f"#{shown} does not exist: parameters are numbered "
+                     f"{FIRST_PARAM}..{LAST_PARAM}", span)
 
 
 @rule("V301")
 def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for stmt, _ in project.walked(file):
-        targets = [(literal_index(t), t.span) for t in assigned(stmt)]
-        if isinstance(stmt, n.Dialog):
-            targets += [(index, node.span) for index, node in dialog_fields(stmt)]
-        for index, span in targets:
-            if index is not None and is_read_only(index):
-                yield at("V301", f"#{index} is read-only: the controller sets it, a macro cannot "
-                         "(use a variable of your own, e.g. one of #27..#3999)", span)
+    facts = project.facts(file)
+    targets = [(index, param.span) for param, index, _scope in facts.targets]
+    for dialog, _scope in facts.dialogs:
+        targets += [(index, node.span) for index, node in dialog_fields(dialog)]
+    for index, span in targets:
+        if index is not None and is_read_only(index):
+            yield at("V301", f"#{index} is read-only: the controller sets it, a macro cannot "
+                     "(use a variable of your own, e.g. one of #27..#3999)", span)
 
 
 @rule("V302")
 def never_written(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """First read in each file of a volatile variable nothing assigns (a typo or a missing setup)."""
     seen: set[int] = set()
-    for stmt, _ in project.walked(file):
-        for param, index in project.reads(stmt):
-            if index is not None and index in VOLATILE_PARAMS and index not in project.written and index not in seen:
-                seen.add(index)
-                yield at("V302", f"#{index} is read but never assigned in this file or its macro files, "
-                         "so it is 0 or left over from an earlier job: assign it first", param.span)
+    for param, index, _scope in project.facts(file).reads:
+        if index is not None and index in VOLATILE_PARAMS and index not in project.written and index not in seen:
+            seen.add(index)
+            yield at("V302", f"#{index} is read but never assigned in this file or its macro files, "
+                     "so it is 0 or left over from an earlier job: assign it first", param.span)
 
 
 # ----------------------------------------------------------------------- M-code arguments

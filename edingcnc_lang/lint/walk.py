@@ -14,6 +14,7 @@ from ..tables import SIMULATION, code_key
 from .evaluate import constant_index, evaluate, params_in, reads_param
 
 END_OF_PROGRAM = frozenset(code_key(c) for c in (2, 30))
+Code = tuple[int, n.Word]  # a literal G or M number as integer tenths (G38.2 -> 382) and its word
 
 
 @dataclass(frozen=True)
@@ -93,14 +94,19 @@ def ends_program(stmt: n.Stmt) -> bool:
     if isinstance(stmt, n.Message):
         return stmt.kind == "errmsg"
     if isinstance(stmt, n.Block) and not stmt.block_delete:
-        return any(code in END_OF_PROGRAM for code, _word in word_codes(stmt, "M"))
+        return any(code in END_OF_PROGRAM for code, _word in block_codes(stmt)[1])
     return False
 
 
-def word_codes(block: n.Block, letter: str) -> tuple[tuple[int, n.Word], ...]:
-    """The literal G or M numbers of a block as integer tenths (G38.2 -> 382), with their words."""
-    return tuple((code_key(w.value.value), w) for w in block.words
-                 if w.letter == letter and isinstance(w.value, n.Number))
+def block_codes(block: n.Block) -> tuple[tuple[Code, ...], tuple[Code, ...]]:
+    """The literal G and the literal M numbers of a block, with their words, in line order."""
+    g: list[Code] = []
+    m: list[Code] = []
+    for word in block.words:
+        letter = word.letter
+        if (letter == "G" or letter == "M") and isinstance(word.value, n.Number):
+            (g if letter == "G" else m).append((code_key(word.value.value), word))
+    return tuple(g), tuple(m)
 
 
 def expressions(stmt: n.Stmt) -> Iterator[n.Expr]:
