@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import importlib
 from contextlib import AbstractContextManager
-from importlib import resources
 from pathlib import Path
 from types import ModuleType
 
@@ -30,4 +29,6 @@ def import_shipped(module: str = "") -> ModuleType:
 
 def header_dir() -> AbstractContextManager[Path]:
     """A context giving a real folder holding ``edingcnc_kins.h`` (package data ``kins/c``)."""
+    from importlib import resources  # only to build C plug-ins: every run imports this module
+
     return resources.as_file(resources.files(import_shipped()) / "c")
