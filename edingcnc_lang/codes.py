@@ -17,6 +17,8 @@ class Severity(str, Enum):
 
 @dataclass(frozen=True)
 class Code:
+    """One diagnostic code of the registry: the stable code, its severity and a one-line summary."""
+
     code: str
     severity: Severity
     summary: str

@@ -13,6 +13,8 @@ from .errors import EXIT_SYNTAX, EcncError, Location
 
 @dataclass(frozen=True)
 class Diagnostic:
+    """One finding at a place in a file: a plain record, so any output format can show it."""
+
     path: str
     line: int
     col: int

@@ -15,6 +15,8 @@ from .canon import Pose
 
 @dataclass(frozen=True)
 class DialogField:
+    """One input field of a dlgmsg dialog, as a host callback is shown it."""
+
     label: str
     index: int   # the parameter the field edits
     value: float  # its current value

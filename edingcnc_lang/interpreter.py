@@ -94,6 +94,8 @@ class ProgramEnd(Exception):
 
 @dataclass
 class CallFrame:
+    """A sub being run, kept so that errors can show the GoSub chain that led to them."""
+
     name: str  # lower-case sub name
     path: str
     line: int

@@ -24,6 +24,8 @@ class Open:
 
 @dataclass(frozen=True)
 class Close:
+    """A line that ends a block (EndSub, EndIf, EndWhile) or switches an If to its Else part."""
+
     kind: str  # "EndSub" | "EndIf" | "EndWhile" | "Else"
     span: n.Span
 

@@ -30,6 +30,8 @@ NO_SPAN = Span("<none>", 0, 0, 0, 0)
 
 @dataclass(frozen=True, slots=True)
 class Number:
+    """A numeric literal; a leading sign is folded into the value."""
+
     value: float
     span: Span = field(default=NO_SPAN, compare=False)
 
@@ -44,6 +46,8 @@ class Param:
 
 @dataclass(frozen=True, slots=True)
 class Unary:
+    """A sign in front of a non-literal operand: ``-#1``, ``+[#2 * 3]``."""
+
     op: str  # "-" or "+"
     operand: "Expr"
     span: Span = field(default=NO_SPAN, compare=False)
@@ -172,6 +176,8 @@ class Dialog:
 
 @dataclass(frozen=True, slots=True)
 class LogFile:
+    """``logfile NAME [mode]``: where logmsg writes (mode 0 starts the file afresh, 1 appends)."""
+
     name: str
     mode: Expr | None
     span: Span = field(default=NO_SPAN, compare=False)
@@ -206,6 +212,8 @@ class Kin:
 
 @dataclass(frozen=True, slots=True)
 class PrepareLinDeltaHome:
+    """``PrepareLinDeltaHome [velocity]``: moves the three delta joints home together, before ``home x`` etc."""
+
     velocity: Expr | None = None
     span: Span = field(default=NO_SPAN, compare=False)
 
@@ -221,12 +229,16 @@ class Command:
 
 @dataclass(frozen=True, slots=True)
 class GoSub:
+    """``GoSub name``: calls a Sub of the file or its macro files."""
+
     name: str  # as written; lookups are case-insensitive
     span: Span = field(default=NO_SPAN, compare=False)
 
 
 @dataclass(frozen=True, slots=True)
 class If:
+    """``If [cond] ... [Else ...] EndIf``; ``end_span`` is the EndIf line."""
+
     cond: Expr
     then: tuple["Stmt", ...]
     orelse: tuple["Stmt", ...] = ()
@@ -238,6 +250,8 @@ class If:
 
 @dataclass(frozen=True, slots=True)
 class While:
+    """``While [cond] ... EndWhile``; ``end_span`` is the EndWhile line."""
+
     cond: Expr
     body: tuple["Stmt", ...]
     extra_brackets: int = 0
@@ -247,6 +261,8 @@ class While:
 
 @dataclass(frozen=True, slots=True)
 class Sub:
+    """``Sub name ... EndSub``: a subroutine, also the way M codes and controller events are defined."""
+
     name: str
     body: tuple["Stmt", ...]
     span: Span = field(default=NO_SPAN, compare=False)

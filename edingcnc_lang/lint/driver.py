@@ -34,6 +34,8 @@ class UnknownCode(ValueError):
 
 @dataclass(frozen=True)
 class LintOptions:
+    """What ``ecnc lint`` was asked for besides the paths: macro files, ini, selected codes."""
+
     macro: str | None = None
     user_macro: str | None = None
     ini: str | None = None

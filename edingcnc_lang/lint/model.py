@@ -21,6 +21,8 @@ class UnreadableFile(EcncError):
 
 @dataclass(frozen=True, eq=False)  # one object per file: compared and hashed by identity
 class SourceFile:
+    """One parsed file as the rules see it: its lines, statements, subs and syntax findings."""
+
     path: str
     lines: tuple[str, ...]
     body: tuple[n.Stmt, ...]

@@ -20,6 +20,8 @@ Check = Callable[[SourceFile, Project], Iterable[Diagnostic]]
 
 @dataclass(frozen=True)
 class Rule:
+    """A check and the codes it reports (the driver skips it when all of them are deselected)."""
+
     codes: tuple[str, ...]
     check: Check
 
