@@ -176,3 +176,22 @@ def test_ini_is_checked_and_its_user_outputs_count_as_written(tmp_path: Path) ->
     ini.write_text("[KINEMATICS]\nuserOutputStartVariable = 5000\nuserOutputNumVariables = 2\n")
     result = run(job, "--ini", ini, "--format", "json", "--select", "C")
     assert [(d["path"], d["line"], d["code"]) for d in json.loads(result.output)] == [(str(ini), 2, "C700")]
+
+
+def test_the_garbage_collector_is_paused_only_while_linting(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import gc
+
+    from edingcnc_lang.lint import driver
+
+    seen: list[bool] = []
+    real = driver.lint_paths
+
+    def spy(*args: object, **kwargs: object) -> object:
+        seen.append(gc.isenabled())
+        return real(*args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr("edingcnc_lang.lint.lint_paths", spy)
+    assert gc.isenabled()
+    assert run(job).exit_code == 1
+    assert seen == [False]  # big acyclic trees: the collector would only waste time on them
+    assert gc.isenabled()  # and an embedding program gets it back as it was
