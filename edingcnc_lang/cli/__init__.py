@@ -20,13 +20,21 @@ from .common import Command, CommandParser, UsageError
 EXIT_ABORTED = 1
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The whole command line; built for each call, so defaults such as ``$CC`` are read then."""
+COMMANDS = {"kins": kins_cmd, "lint": lint_cmd, "parse": parse_cmd, "run": run_cmd}
+
+
+def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
+    """The command line; built for each call, so defaults such as ``$CC`` are read then.
+
+    When ``argv`` names a command, only that command's parser is built (each costs about a
+    millisecond, mostly argparse looking up translations); otherwise all of them, for the help.
+    """
     parser = argparse.ArgumentParser(prog="ecnc",
                                      description="Parse, run, lint and simulate EdingCNC G-code and macro files.")
     parser.add_argument("--version", action="version", version=f"ecnc, version {__version__}")
     commands = parser.add_subparsers(title="commands", metavar="COMMAND", parser_class=CommandParser)
-    for module in (kins_cmd, lint_cmd, parse_cmd, run_cmd):
+    named = COMMANDS.get(argv[0]) if argv else None
+    for module in [named] if named else COMMANDS.values():
         module.add_parser(commands)
     parser.set_defaults(command=Command(parser, None))
     return parser
@@ -38,7 +46,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     argparse raises SystemExit itself for ``--help``, ``--version`` (0) and malformed command
     lines (2, with the usage on stderr).
     """
-    args, unknown = build_parser().parse_known_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    args, unknown = build_parser(argv).parse_known_args(argv)
     command: Command = args.command
     if unknown:  # reported by the command's own parser, with its usage
         command.parser.error(f"unrecognized arguments: {' '.join(unknown)}")
