@@ -107,17 +107,25 @@ class _Line:
     # ---------------------------------------------------------------- expressions
     # Each returns (node, start column, end column) where the columns include any
     # brackets around the node: the grammar counts them for the enclosing node only.
-    def atom(self) -> tuple[n.Expr, int, int]:
+    def operand(self) -> tuple[n.Expr, int, int]:
+        """A signed operand: ``-x``, ``[expr]``, ``#n``, a number or a function call."""
         kind, text, col, end = self.tokens[self.i]
+        if kind == "n":  # first: most operands are numbers
+            self.i += 1
+            return n.Number(float(text), _new_span(n.Span, (self.path, self.line, col, self.line, end))), col, end
+        if kind == "#":
+            return self.param()
+        if kind == "-" or kind == "+":
+            self.i += 1
+            operand, _s, end = self.operand()
+            span = self.span(col, end)
+            if isinstance(operand, n.Number):
+                return n.Number(-operand.value if kind == "-" else operand.value, span), col, end
+            return n.Unary(kind, operand, span), col, end
         if kind == "[":
             self.i += 1
             node = self.expr()[0]
             return node, col, self.expect("]")
-        if kind == "#":
-            return self.param()
-        if kind == "n":
-            self.i += 1
-            return n.Number(float(text), self.span(col, end)), col, end
         name = text.upper()
         if kind != "i" or name not in _FUNCTIONS or self.tokens[self.i + 1][0] != "[":
             raise _GiveUp
@@ -150,20 +158,9 @@ class _Line:
             raise _GiveUp
         return n.Param(index, self.span(col, end)), col, end
 
-    def signed(self) -> tuple[n.Expr, int, int]:
-        sign, _text, col, _end = self.tokens[self.i]
-        if sign != "-" and sign != "+":
-            return self.atom()
-        self.i += 1
-        operand, _s, end = self.signed()
-        span = self.span(col, end)
-        if isinstance(operand, n.Number):
-            return n.Number(-operand.value if sign == "-" else operand.value, span), col, end
-        return n.Unary(sign, operand, span), col, end
-
     def expr(self, min_level: int = 1) -> tuple[n.Expr, int, int]:
         """Precedence climbing over the grammar's levels; every level is left-associative."""
-        left, start, end = self.signed()
+        left, start, end = self.operand()
         tokens = self.tokens
         while True:
             kind, text, _col, op_end = tokens[self.i]
@@ -206,7 +203,7 @@ class _Line:
                     tokens[self.i] = ("i", text[1:], col + 1, _end)  # XSIN[1]: the word X, then SIN
                 else:  # ASIN[ (the function wins), MOD, GX: the grammar's
                     raise _GiveUp
-                value, _s, end = self.signed()
+                value, _s, end = self.operand()
                 words.append(n.Word(text[0].upper(), value, self.span(col, end)))
             elif kind:
                 raise _GiveUp
@@ -246,7 +243,7 @@ class _Line:
                 items.append(text[1:-1])
                 end = self.expect("s")
             elif kind:
-                value, _s, end = self.signed()
+                value, _s, end = self.operand()
                 items.append(value)
             else:
                 return items, end
@@ -301,7 +298,7 @@ def _logfile(text: str, path: str, line: int, start: int, pos: int) -> n.LogFile
     end = match.end() + 1
     mode = None
     if rest.tokens[0][0]:
-        mode, _s, end = rest.signed()
+        mode, _s, end = rest.operand()
         rest.at_end()
     return n.LogFile(name, mode, rest.span(start, end))
 
