@@ -134,14 +134,15 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
         loader.macros_for(Path(file.path))
     macros = {file.path: loader.macros_for(Path(file.path)) for file in loader.files.values()}
     active = [r for r in RULES if any(wanted(c, options) for c in r.codes)]
-    try:
-        project = Project(list(loader.files.values()), macros, written)
-        for file in dict.fromkeys(targets):
-            for rule in active:
+    project = Project(list(loader.files.values()), macros, written)
+    for file in dict.fromkeys(targets):
+        for rule in active:
+            try:
                 found.extend(rule.check(file, project))
-    except RecursionError:  # thousands of nested blocks: report it instead of analysing further
-        found.extend(Diagnostic.make("E100", "blocks are nested too deeply to analyse", file.path, 1, 1)
-                     for file in dict.fromkeys(targets))
+            except RecursionError:  # thousands of nested blocks: this rule cannot analyse this file
+                project.too_deep.add(file.path)
+        if file.path in project.too_deep:
+            found.append(Diagnostic.make("E100", "blocks are nested too deeply to analyse", file.path, 1, 1))
     return _finish(found, options, {f.path: f.lines for f in loader.files.values()})
 
 

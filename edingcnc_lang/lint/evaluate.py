@@ -85,7 +85,10 @@ def _binary(expr: n.Binary, lookup: Lookup) -> float | None:
 
 def constant_index(param: n.Param) -> float | None:
     """The index of ``#n`` or ``#[literal expression]``; None when it depends on parameters."""
-    return evaluate(param.index)
+    try:
+        return evaluate(param.index)
+    except RecursionError:  # hundreds of chained operators: not worth folding, treated as computed
+        return None
 
 
 def reads_param(expr: n.Expr, index: int) -> bool:

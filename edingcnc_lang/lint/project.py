@@ -15,7 +15,7 @@ from ..tables import ARG_PARAMS, PROBE_TRIPPED, code_key
 from .facts import Code, FileFacts, gather
 from .model import SourceFile
 from .names import TOOL_CHANGE_SUB, is_entry_point, m_sub_number
-from .walk import Scope, dialog_fields, walk
+from .walk import Scope, dialog_fields, literal_index, reads, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 TOOL_CHANGE = code_key(6)
@@ -50,29 +50,39 @@ class Project:
         self.files = tuple(files)
         self._macros = macros
         self._extra_written = extra_written
-        self._walked = {f.path: tuple(walk(f.body)) for f in self.files}
-        self._facts = {path: gather(walked) for path, walked in self._walked.items()}
-        # Statement facts of every file, keyed by id() (nodes hash by value, deeply; the AST lives
-        # as long as the project).
-        self._reads = {k: v for facts in self._facts.values() for k, v in facts.reads_of.items()}
-        self._codes = {k: v for facts in self._facts.values() for k, v in facts.codes_of.items()}
+        self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}
+        self._facts: dict[str, FileFacts] = {}
+        self.too_deep: set[str] = set()  # paths of files nested too deeply to walk
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
-        return self._walked[file.path]
+        """Every statement of the file with its scope; none for a file nested too deeply to walk."""
+        found = self._walked.get(file.path)
+        if found is None:
+            try:
+                found = tuple(walk(file.body))
+            except RecursionError:  # thousands of nested blocks: reported by the driver, not analysed
+                self.too_deep.add(file.path)
+                found = ()
+            self._walked[file.path] = found
+        return found
 
     def facts(self, file: SourceFile) -> FileFacts:
-        return self._facts[file.path]
+        found = self._facts.get(file.path)
+        if found is None:
+            found = self._facts[file.path] = gather(self.walked(file))
+        return found
 
-    def reads(self, stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
-        """The parameters a statement reads, each with its literal index (None if computed)."""
-        return self._reads[id(stmt)]
+    def reads(self, file: SourceFile, stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
+        """The parameters a statement of ``file`` reads, each with its literal index (None if computed)."""
+        found = self.facts(file).reads_of.get(id(stmt))
+        return found if found is not None else tuple((p, literal_index(p)) for p in reads(stmt))
 
-    def codes(self, stmt: n.Stmt, letter: str) -> tuple[Code, ...]:
-        """The literal G or M codes of a block (none for other statements)."""
-        found = self._codes.get(id(stmt))
+    def codes(self, file: SourceFile, stmt: n.Stmt, letter: str) -> tuple[Code, ...]:
+        """The literal G or M codes of a block of ``file`` (none for other statements)."""
+        found = self.facts(file).codes_of.get(id(stmt))
         if found is None:
             return ()
-        return found.g if letter == "G" else found.m
+        return {"G": found.g, "M": found.m}[letter]
 
     # ----------------------------------------------------------------- calls
     def resolve(self, file: SourceFile, name: str) -> tuple[SourceFile, n.Sub] | None:
@@ -91,7 +101,7 @@ class Project:
                 yield found
         elif isinstance(stmt, n.Block):
             own = m_sub_number(scope.sub.name) if scope.sub else None
-            for key, _word in self.codes(stmt, "M"):
+            for key, _word in self.codes(file, stmt, "M"):
                 whole, tenth = divmod(key, 10)
                 name = TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
                 if tenth or whole == own:

@@ -115,7 +115,7 @@ def _unchecked_probes(file: SourceFile, project: Project,
     for stmt, scope in statements:
         if pending is not None and _checks_probe(file, project, stmt, scope):
             pending = None
-        word = _probe_word(project.codes(stmt, "G"))
+        word = _probe_word(project.codes(file, stmt, "G"))
         if word is not None:
             if pending is not None:
                 yield _unchecked(pending)
@@ -125,7 +125,7 @@ def _unchecked_probes(file: SourceFile, project: Project,
 
 
 def _checks_probe(file: SourceFile, project: Project, stmt: n.Stmt, scope: Scope) -> bool:
-    if any(index == PROBE_TRIPPED for _, index in project.reads(stmt)):
+    if any(index == PROBE_TRIPPED for _, index in project.reads(file, stmt)):
         return True
     return any(sub_key(target, sub) in project.probe_checking_subs
                for target, sub in project.callees(file, stmt, scope))

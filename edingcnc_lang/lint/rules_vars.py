@@ -102,7 +102,7 @@ class _ArgumentFlow:
         return state
 
     def check_reads(self, stmt: n.Stmt, state: Clobbered) -> None:
-        for param, index in self.project.reads(stmt):
+        for param, index in self.project.reads(self.file, stmt):
             if index in state:
                 letter = LETTER_ARGS[index - 1]
                 self.found.append(at(

@@ -53,3 +53,14 @@ def test_statements_of_each_kind_and_the_possible_callers() -> None:
     assert callers == ["Block", "GoSub"]  # the block with M3 M8 may run Sub m3 / m8
     every = [stmt for stmt, _ in walk(parse_text(SOURCE, "job.nc").body)]
     assert len(facts.reads_of) == len(every)  # every statement has its reads, most of them none
+
+
+def test_rules_name_the_first_matching_code_of_a_line(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """With two motion codes on a line (a G500 of its own) G502/G503 speak of the first one."""
+    from edingcnc_lang.lint import lint_paths
+
+    job = tmp_path / "t.nc"
+    job.write_text("G3 G2 X1 Y1\nG2 G1 X1 F0\n")
+    found = {(d.line, d.col, d.code): d.message for d in lint_paths([job])}
+    assert found[(1, 1, "G502")].startswith("G3 arc needs")
+    assert found[(2, 10, "G503")].startswith("F0 on a G2 move")

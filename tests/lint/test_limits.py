@@ -1,0 +1,28 @@
+"""Inputs too deep for the analysis: what cannot be analysed is reported, everything else still is."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from edingcnc_lang.lint import lint_paths
+
+
+def _codes(found: list, path: Path) -> list[tuple[int, str]]:  # type: ignore[type-arg]
+    return [(d.line, d.code) for d in found if d.path == str(path)]
+
+
+def test_a_file_nested_too_deeply_is_reported_and_the_others_keep_their_findings(tmp_path: Path) -> None:
+    deep = tmp_path / "deep.nc"
+    deep.write_text("If [1]\n" * 3000 + "G0 G1 X1\n" + "EndIf\n" * 3000 + "G0 X1 ; " + "x" * 300 + "\n")
+    plain = tmp_path / "plain.nc"
+    plain.write_text("G0 G1 X1\nM30\n")
+    found = lint_paths([tmp_path])
+    assert (1, "E100") in _codes(found, deep)
+    assert (6002, "F601") in _codes(found, deep)  # rules that need no statement walk still run
+    assert _codes(found, plain) == [(1, "G500")]
+
+
+def test_a_long_chain_of_operators_is_left_unfolded_not_an_error(tmp_path: Path) -> None:
+    job = tmp_path / "chain.nc"
+    job.write_text("G0 G1 X1\n#1 = #[" + "+".join(["1"] * 500) + "]\nM30\n")
+    found = lint_paths([job])
+    assert [(d.line, d.code) for d in found] == [(1, "G500"), (2, "F601")]
