@@ -61,6 +61,9 @@ _KEYWORDS = frozenset({
     "logmsg", "dlgmsg", "logfile", "home", "hometandem", "tanknife", "homeisestop", "tcaguard", "zhc",
     "laserengrave", "kin", "preparelindeltahome", "zhcinitex", "zhcinit", "zhcaddpoint", "zhcs",
     "gettoolinfo", "modbus", "getjobdistance", "exec"})
+# The keywords handled here; a line starting with another one goes to Lark untokenized.
+_HANDLED = frozenset({*_CLOSERS, *_MESSAGES, "sub", "gosub", "home", "hometandem", "logfile", "if", "while",
+                      "dlgmsg"})
 
 
 def _tokens(text: str, pos: int) -> list[Token]:
@@ -256,6 +259,8 @@ def _statement(text: str, path: str, line: int) -> LineResult:
     word = head.group(1).lower() if head else ""
     if head is None or word not in _KEYWORDS:
         return _Line(_tokens(text, 0), path, line).block()
+    if word not in _HANDLED:  # kin, exec, tanknife, ...: the grammar's
+        raise _GiveUp
     start, pos = head.start(1) + 1, head.end()
     end = pos + 1
     if word in _CLOSERS:

@@ -29,7 +29,7 @@ def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
     When ``argv`` names a command, only that command's parser is built (each costs about a
     millisecond, mostly argparse looking up translations); otherwise all of them, for the help.
     """
-    parser = argparse.ArgumentParser(prog="ecnc",
+    parser = argparse.ArgumentParser(prog="ecnc", allow_abbrev=False,
                                      description="Parse, run, lint and simulate EdingCNC G-code and macro files.")
     parser.add_argument("--version", action="version", version=f"ecnc, version {__version__}")
     commands = parser.add_subparsers(title="commands", metavar="COMMAND", parser_class=CommandParser)
@@ -47,6 +47,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     lines (2, with the usage on stderr).
     """
     argv = sys.argv[1:] if argv is None else list(argv)
+    reconfigure = getattr(sys.stdout, "reconfigure", None)
+    if reconfigure is not None:  # a source line with 'é' on an ASCII console: \xe9, not a traceback
+        reconfigure(errors="backslashreplace")
     args, unknown = build_parser(argv).parse_known_args(argv)
     command: Command = args.command
     if unknown:  # reported by the command's own parser, with its usage

@@ -39,23 +39,28 @@ class CommandParser(argparse.ArgumentParser):
     """argparse, reading command lines the way scripts wrote them for the click-based ``ecnc``.
 
     Options may stand between a command's arguments (``ecnc lint a.nc --select E b.nc``,
-    ``ecnc kins inverse NAME --ini FILE X Y Z``), and an argument such as ``-2.5e-3`` is a number,
-    not an unknown option.  A parser with subcommands (``intermixed=False``) cannot intermix.
+    ``ecnc kins inverse NAME --ini FILE X Y Z``), an argument such as ``-2.5e-3`` is a number,
+    not an unknown option, and options must be spelt out (``--no`` is not ``--no-simulation``:
+    an abbreviation would change meaning when an option is added).  A parser with subcommands
+    (``intermixed=False``) cannot intermix.
     """
 
     def __init__(self, *, intermixed: bool = True, **kwargs: Any) -> None:
-        super().__init__(**kwargs)
+        super().__init__(allow_abbrev=False, **kwargs)
         self._negative_number_matcher = NEGATIVE_NUMBER
         self._intermixes = intermixed
         self._intermixing = False
 
     def parse_known_args(self, args: Iterable[str] | None = None, namespace: Any = None) -> tuple[Any, list[str]]:
-        if not self._intermixes or self._intermixing:
-            return super().parse_known_args(args, namespace)
+        arguments = list(args) if args is not None else None
+        # After "--" everything is an argument (ecnc run -- -x.nc); argparse's intermixed parsing
+        # loses that between its two passes, so such a command line is read the plain way.
+        if not self._intermixes or self._intermixing or (arguments is not None and "--" in arguments):
+            return super().parse_known_args(arguments, namespace)
         # parse_known_intermixed_args calls parse_known_args for its two passes (3.10 to 3.13 at least)
         self._intermixing = True
         try:
-            return self.parse_known_intermixed_args(args, namespace)
+            return self.parse_known_intermixed_args(arguments, namespace)
         finally:
             self._intermixing = False
 

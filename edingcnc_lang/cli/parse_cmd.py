@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
-from ..errors import EXIT_OK
+from ..errors import EXIT_OK, EcncError, Location
 from .common import add_command, existing_file, whole_trees
 
 if TYPE_CHECKING:
@@ -27,7 +27,12 @@ def parse(args: argparse.Namespace) -> int:
     if args.as_json:
         with whole_trees():
             program = parse_file(args.file)
-            print(json.dumps(to_data(program, with_spans=not args.no_spans), indent=1))
+            try:
+                text = json.dumps(to_data(program, with_spans=not args.no_spans), indent=1)
+            except RecursionError:  # thousands of nested blocks: parsed fine, too deep to write out
+                raise EcncError("blocks are nested too deeply to write the tree as JSON",
+                                Location(args.file)) from None
+        print(text)
     else:
         check_file(args.file)  # streams: memory stays flat however long the file is
     return EXIT_OK

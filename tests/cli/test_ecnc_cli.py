@@ -3,6 +3,7 @@ arguments are read, and the exit status of ``python -m edingcnc_lang`` and the `
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -119,6 +120,41 @@ def test_options_may_stand_between_arguments(job: Path, tmp_path: Path) -> None:
     ini.write_text("[KINEMATICS]\n")
     result = invoke("kins", "forward", "trivial", "1", "--ini", ini, "-2", "3")
     assert json.loads(result.stdout) == {"x": 1.0, "y": -2.0, "z": 3.0, "a": 0.0, "b": 0.0, "c": 0.0}
+
+
+def test_after_a_double_dash_everything_is_an_argument(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    Path("-x.nc").write_text("G0 G1 X1\nM30\n")
+    assert invoke("parse", "--", "-x.nc").exit_code == 0
+    linted = invoke("lint", "--no-source", "--", "-x.nc")
+    assert linted.exit_code == 1
+    assert linted.stdout.startswith("-x.nc:1:4: G500 G0 and G1 are both in the motion group")
+    ran = invoke("run", "--json", "--", "-x.nc")
+    assert ran.exit_code == 70 and "same modal group" in ran.stderr
+
+
+@pytest.mark.parametrize("abbreviation", ["--no", "--js", "--max"])
+def test_options_must_be_spelt_out(job: Path, abbreviation: str) -> None:
+    result = invoke("run", job, abbreviation)
+    assert result.exit_code == 2 and f"unrecognized arguments: {abbreviation}" in result.stderr
+
+
+def test_text_the_console_cannot_show_is_escaped_not_a_traceback(tmp_path: Path) -> None:
+    job = tmp_path / "uni.nc"
+    job.write_text("G0 G1 X1 ; caf\u00e9\n", encoding="utf-8")
+    result = subprocess.run([sys.executable, "-m", "edingcnc_lang", "lint", str(job)], capture_output=True,
+                            env={**os.environ, "PYTHONIOENCODING": "ascii"}, check=False)
+    assert (result.returncode, result.stderr) == (1, b"")
+    assert b"    G0 G1 X1 ; caf\\xe9\n" in result.stdout
+
+
+def test_a_tree_too_deep_for_json_is_an_error_not_a_traceback(tmp_path: Path) -> None:
+    deep = tmp_path / "deep.nc"
+    deep.write_text("If [1]\n" * 3000 + "G0 X1\n" + "EndIf\n" * 3000)
+    assert invoke("parse", deep).exit_code == 0  # parsing itself is fine
+    result = invoke("parse", "--json", deep)
+    assert (result.exit_code, result.stdout) == (70, "")
+    assert result.stderr == f"{deep}: error: blocks are nested too deeply to write the tree as JSON\n"
 
 
 def test_ctrl_c_aborts_with_exit_1(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:

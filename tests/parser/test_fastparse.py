@@ -87,3 +87,13 @@ def test_fast_parser_gives_up_on_what_it_does_not_cover() -> None:
     for line in ["G0 X1 (comment)", "kin on", "tanknife off", "G0 X1+2", "If [1] AND [2]",
                  "#1 == 2", "msg \"open", "Sub a b", "KIN ON", "G1 X"]:
         assert parse_fast(line, "f", 1) is GIVE_UP, line
+
+
+def test_spans_have_every_field() -> None:
+    """The fast parser builds spans with tuple.__new__ (no field check): they must stay complete."""
+    from edingcnc_lang.nodes import Block, Span
+
+    block = parse_fast("G1 X[#1 * -2] Y[SIN[30]]", "f", 4)
+    assert isinstance(block, Block)
+    spans = [block.span, *(w.span for w in block.words), *(w.value.span for w in block.words)]
+    assert all(len(span) == len(Span._fields) and span.path == "f" and span.line == 4 for span in spans)
