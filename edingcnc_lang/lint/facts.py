@@ -42,6 +42,11 @@ class FileFacts:
     codes_of: dict[int, BlockCodes]
 
 
+def indexed_reads(stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
+    """The parameters a statement reads, each with its literal index (None if computed)."""
+    return tuple((param, literal_index(param)) for param in reads(stmt))
+
+
 def gather(walked: Sequence[tuple[n.Stmt, Scope]]) -> FileFacts:
     """Everything the rules look up about a file's statements (as ``walk`` yields them)."""
     blocks: list[BlockCodes] = []
@@ -53,8 +58,7 @@ def gather(walked: Sequence[tuple[n.Stmt, Scope]]) -> FileFacts:
     reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]] = {}
     codes_of: dict[int, BlockCodes] = {}
     for stmt, scope in walked:
-        found = tuple((param, literal_index(param)) for param in reads(stmt))
-        reads_of[id(stmt)] = found
+        found = reads_of[id(stmt)] = indexed_reads(stmt)
         all_reads += [(param, index, scope) for param, index in found]
         if isinstance(stmt, n.Block):
             codes = BlockCodes(stmt, scope, *block_codes(stmt))

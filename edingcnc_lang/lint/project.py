@@ -12,10 +12,10 @@ from functools import cached_property
 
 from .. import nodes as n
 from ..tables import ARG_PARAMS, PROBE_TRIPPED, code_key
-from .facts import Code, FileFacts, gather
+from .facts import Code, FileFacts, gather, indexed_reads
 from .model import SourceFile
 from .names import TOOL_CHANGE_SUB, is_entry_point, m_sub_number
-from .walk import Scope, dialog_fields, literal_index, reads, walk
+from .walk import Scope, dialog_fields, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 TOOL_CHANGE = code_key(6)
@@ -75,7 +75,7 @@ class Project:
     def reads(self, file: SourceFile, stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
         """The parameters a statement of ``file`` reads, each with its literal index (None if computed)."""
         found = self.facts(file).reads_of.get(id(stmt))
-        return found if found is not None else tuple((p, literal_index(p)) for p in reads(stmt))
+        return found if found is not None else indexed_reads(stmt)
 
     def codes(self, file: SourceFile, stmt: n.Stmt, letter: str) -> tuple[Code, ...]:
         """The literal G or M codes of a block of ``file`` (none for other statements)."""
