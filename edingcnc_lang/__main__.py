@@ -1,6 +1,4 @@
 """``python -m edingcnc_lang`` is the ``ecnc`` command."""
-import sys
+from .cli import entry
 
-from .cli import main
-
-sys.exit(main())
+entry()

@@ -10,6 +10,7 @@ import argparse
 import os
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
 from .. import __version__
 from ..errors import EXIT_USAGE, EcncError
@@ -72,3 +73,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:  # `ecnc ... | head` stopped reading: end quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing left to flush at exit
         return EXIT_ABORTED
+
+
+def entry() -> NoReturn:
+    """The ``ecnc`` program: ``main()``, then the end of the process at once.
+
+    By then every file the command wrote is closed, and stdout and stderr are flushed here, so
+    the interpreter's own teardown (clearing every module, a last full garbage collection) can be
+    skipped: it took ~20 ms of a short run. ``atexit`` handlers do not run. Code that embeds the
+    command line calls ``main()``, which returns.
+    """
+    try:
+        code = main()
+    except SystemExit as exc:  # argparse's --help, --version and usage errors
+        if not isinstance(exc.code, int):
+            raise
+        code = exc.code
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a reader that went away: nothing more to tell it
+            pass
+    os._exit(code)

@@ -177,6 +177,20 @@ def test_a_closed_pipe_ends_quietly(tmp_path: Path) -> None:
     assert (process.wait(), stderr) == (1, b"")
 
 
+def test_the_program_ends_at_once_with_all_its_output(tmp_path: Path) -> None:
+    """``entry()`` skips the interpreter's teardown: what was written must be complete anyway."""
+    job = tmp_path / "big.nc"
+    job.write_text("G1 X[#1 + 2] Y3 F100\n" * 3000 + "errmsg \"stop\"\n")
+    trace = tmp_path / "trace.csv"
+    done = subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", str(job), "--json", "--trace", str(trace)],
+                          capture_output=True, check=False)
+    assert done.returncode == 70 and json.loads(done.stdout)["messages"][-1]["text"] == "stop"
+    assert len(trace.read_text().splitlines()) == 3001  # header and every move, flushed and closed
+    parsed = subprocess.run([sys.executable, "-m", "edingcnc_lang", "parse", "--json", str(job)],
+                            capture_output=True, check=False)
+    assert (parsed.returncode, parsed.stdout.decode()) == (0, invoke("parse", "--json", job).stdout)
+
+
 @pytest.mark.parametrize("program", [[sys.executable, "-m", "edingcnc_lang"],
                                      [str(Path(sys.executable).parent / "ecnc")]],
                          ids=["python -m edingcnc_lang", "ecnc script"])
