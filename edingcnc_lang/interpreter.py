@@ -12,19 +12,21 @@ import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path, PureWindowsPath
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from . import nodes as n
 from . import tables as t
 from .canon import AXES, PLANES, Arc, Canon, Event, Move, Pose
 from .config import MachineConfig
-from .cycles import CYCLES, NEEDS_Q, CycleError, Step
 from .errors import EcncError, JobAborted, Location, MachineError
 from .evaluator import Evaluator, param_index
 from .geometry import ArcError, center_from_radius, check_radius, sweep
 from .host import DialogAnswer, DialogField, Host
 from .params import Parameters
 from .parser import plain_block, plain_words
+
+if TYPE_CHECKING:
+    from .cycles import Step
 
 INCH = 25.4
 MAX_CALL_DEPTH = 64
@@ -82,7 +84,7 @@ G_99 = G(99)
 PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
 # Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
 CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
-MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | frozenset(CYCLES)
+MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | t.CANNED_CYCLES
 DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
                  "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
@@ -449,7 +451,7 @@ class Interpreter:
             raise self.fail(f"Exec {stmt.args}: {err.strerror}", stmt.span) from None
         self.canon.event(Event("exec", self.path, self.line, {"args": stmt.args, "status": result.returncode}))
 
-    _COMMANDS: dict[str, Callable[["Interpreter", n.Command], None]] = {
+    _COMMANDS: dict[str, Callable[[Interpreter, n.Command], None]] = {
         "gettoolinfo": _get_tool_info, "exec": _exec_program,
     }
 
@@ -928,7 +930,7 @@ class Interpreter:
         self.g92_active = True
         self._offset = None
 
-    _NON_MODAL: dict[int, Callable[["Interpreter", int, Mapping[str, float], n.Span], None]] = {
+    _NON_MODAL: dict[int, Callable[[Interpreter, int, Mapping[str, float], n.Span], None]] = {
         G_10: _g10, G_28: _g28_g30, G_30: _g28_g30, G_92: _g92, G_92_1: _g92_1,
         G_92_2: _g92_2, G_92_3: _g92_3,
     }
@@ -1016,7 +1018,7 @@ class Interpreter:
             raise self.fail("G53 moves in machine coordinates only with G0 or G1", span)
         if g53 and self.modal["cutter_comp"] != G_40:
             raise self.fail("G53 is not allowed while cutter compensation (G41/G42) is on", span)
-        if motion in CYCLES:
+        if motion in t.CANNED_CYCLES:
             self._cycle(motion, words, span, new_sequence=previous != motion)
         elif motion in (G_2, G_3):
             self._arc(motion, words, span)
@@ -1125,6 +1127,12 @@ class Interpreter:
         self.params.set(t.PROBE_TRIPPED, 1.0 if trip is not None else 0.0)
 
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
+        from .cycles import (  # most jobs drill nothing: not worth its import time
+            CYCLES,
+            NEEDS_Q,
+            CycleError,
+        )
+
         plane = PLANE_OF[self.modal["plane"]]
         first, second, normal = PLANES[plane]
         drill = AXES[normal]
@@ -1196,7 +1204,7 @@ class Interpreter:
                                        {"m": 5 if step.kind == "spindle_stop" else self.spindle,
                                         "speed": self.speed}))
 
-    _EXECUTE: dict[type, Callable[["Interpreter", Any], None]] = {}
+    _EXECUTE: dict[type, Callable[[Interpreter, Any], None]] = {}
     _LINE_STEPS: tuple[tuple[Callable[..., None], str, str], ...] = ()
 
 

@@ -15,10 +15,10 @@ from typing import Any
 from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
-from .config import MachineConfig, load_config, save_variables, is_persisted
+from .config import MachineConfig, is_persisted, load_config, save_variables
 from .errors import EcncError, Location, MachineError
 from .host import Host
-from .interpreter import CYCLES, Interpreter
+from .interpreter import Interpreter
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
@@ -184,7 +184,7 @@ class Run:
         motion = interp.modal["motion"]
         modal_codes = [code for group, code in interp.modal.items() if group not in ("motion", "rotation")]
         modal_codes.append(motion if motion in PLAIN_MOTION else t.code_key(0))
-        modal_codes.append(motion if motion in CYCLES else t.code_key(80))
+        modal_codes.append(motion if motion in t.CANNED_CYCLES else t.code_key(80))
         kin = self.kinematics
         return RunResult(
             position=tuple(interp.work_position()),  # type: ignore[arg-type]

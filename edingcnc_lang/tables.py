@@ -6,8 +6,8 @@ its own copy.
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from types import MappingProxyType
-from typing import Mapping
 
 
 def code_key(value: float) -> int:
@@ -40,6 +40,9 @@ G_GROUPS: Mapping[int, str] = _groups({
     "scaling": (50, 51),
     "non_modal": (4, 10, 28, 30, 53, 92, 92.1, 92.2, 92.3),
 })
+# The canned cycles the interpreter runs (cycles.py expands each into moves; G74/G76/G87 are
+# reported as unsupported).
+CANNED_CYCLES = frozenset(code_key(c) for c in (73, 81, 82, 83, 84, 85, 86, 88, 89))
 
 M_GROUPS: Mapping[int, str] = _groups({
     "stopping": (0, 1, 2, 30, 60),

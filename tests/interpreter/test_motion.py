@@ -301,6 +301,13 @@ def test_g43_h_out_of_range_is_an_error() -> None:
 
 # ------------------------------------------------------------------ canned cycles
 
+def test_every_canned_cycle_the_tables_name_has_an_expansion() -> None:
+    from edingcnc_lang.cycles import CYCLES, NEEDS_Q
+    from edingcnc_lang.tables import CANNED_CYCLES
+
+    assert set(CYCLES) == CANNED_CYCLES and NEEDS_Q <= CANNED_CYCLES
+
+
 def test_g81_with_g98_sticky_words_and_g99_repeats() -> None:
     assert ends("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nX10\nG99 X15 L2\nG80\nG0 X0\n")[1:] == [
         (2, "rapid", (5.0, 5.0, 10.0)), (2, "rapid", (5.0, 5.0, 2.0)), (2, "linear", (5.0, 5.0, -3.0)),
