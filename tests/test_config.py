@@ -10,16 +10,16 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang import config as config_module
+from edingcnc_lang import ini as ini_module
 from edingcnc_lang.config import (
     PERSISTED,
     MachineConfig,
     is_persisted,
     load_config,
-    read_ini,
     save_variables,
 )
 from edingcnc_lang.errors import ConfigError
+from edingcnc_lang.ini import read_ini
 
 SAMPLE = Path("/work/shared/samples/cnc.ini")
 DATA = Path(__file__).parent / "data" / "config"
@@ -299,7 +299,7 @@ def test_save_variables_is_atomic(tmp_path: Path, monkeypatch: pytest.MonkeyPatc
     def fail(src: str, dst: str) -> None:
         raise OSError(28, "No space left on device")
 
-    monkeypatch.setattr(config_module.os, "replace", fail)
+    monkeypatch.setattr(ini_module.os, "replace", fail)
     with pytest.raises(ConfigError, match="No space left on device"):
         save_variables(path, {4000: 5.0})
     assert path.read_bytes() == before

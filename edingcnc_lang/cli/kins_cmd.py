@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
     """The ``[KINEMATICS]`` section and the ini's folder (where plug-in files are looked for)."""
-    from ..config import read_ini
+    from ..ini import read_ini
 
     if ini is None:
         return {}, ()

@@ -1,0 +1,261 @@
+"""The ``cnc.ini`` file format: a lenient reader that keeps each value's line, and a rewrite of
+``[VARIABLES]`` lines that leaves every other byte of the file as it was.
+
+Users bring the ``cnc.ini`` of their real controller: thousands of lines written by a Windows
+program, full of keys this project never uses.  The reader is therefore lenient about the file
+as a whole (unknown sections, keys and odd lines are ignored) and strict only about the values
+asked for, which are reported at their ini line when they do not parse.  What the keys mean is
+``config.py``'s business.
+"""
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import re
+import stat
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from types import MappingProxyType
+
+from edingcnc_lang.errors import ConfigError, Location
+
+_BOM = b"\xef\xbb\xbf"
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_INTEGER = re.compile(r"[+-]?\d+")
+_SECTION = re.compile(r"\[([^\]]*)\]")
+VARIABLE_KEY = re.compile(r"#(\d+)")  # a [VARIABLES] key: the parameter number
+
+
+@dataclass(frozen=True)
+class IniValue:
+    """A value as written in the ini (quotes and trailing comment removed) and its 1-based line."""
+
+    text: str
+    line: int
+
+
+@dataclass(frozen=True)
+class _Entry:
+    """A ``key = value`` line; ``start:end`` is where the raw value (quotes included) sits."""
+
+    key: str
+    value: str
+    start: int
+    end: int
+
+
+def _split_lines(text: str) -> list[tuple[str, str]]:
+    """Split into (body, line ending) pairs whose concatenation is exactly ``text``."""
+    pieces = text.split("\n")
+    lines = [(p[:-1], "\r\n") if p.endswith("\r") else (p, "\n") for p in pieces[:-1]]
+    if pieces[-1]:
+        lines.append((pieces[-1], ""))
+    return lines
+
+
+def _parse_entry(body: str) -> _Entry | None:
+    """Parse ``key = value ;comment``; a ``;`` inside a double-quoted value is text."""
+    if body.lstrip().startswith(";") or "=" not in body:
+        return None
+    eq = body.index("=")
+    key = body[:eq].strip()
+    if not key:
+        return None
+    start = eq + 1
+    while start < len(body) and body[start] in " \t":
+        start += 1
+    if body.startswith('"', start):
+        close = body.find('"', start + 1)
+        end = close + 1 if close >= 0 else len(body.rstrip())
+        return _Entry(key, body[start + 1:close if close >= 0 else end], start, end)
+    comment = body.find(";", start)
+    end = max(start, len(body[:comment if comment >= 0 else len(body)].rstrip()))
+    return _Entry(key, body[start:end], start, end)
+
+
+def _classify(lines: list[tuple[str, str]]) -> list[tuple[str | None, _Entry | None]]:
+    """For every line: the lower-cased section it belongs to and its entry, if any."""
+    section: str | None = None
+    result: list[tuple[str | None, _Entry | None]] = []
+    for body, _ in lines:
+        stripped = body.strip()
+        header = _SECTION.match(stripped) if stripped.startswith("[") else None
+        if header:
+            section = header.group(1).strip().lower()
+            result.append((section, None))
+        else:
+            result.append((section, _parse_entry(body)))
+    return result
+
+
+def _read_bytes(path: Path) -> bytes:
+    try:
+        return path.read_bytes()
+    except OSError as exc:
+        raise ConfigError(f"cannot read machine configuration: {exc.strerror or exc}",
+                          Location(str(path))) from exc
+
+
+def _decode(raw: bytes) -> str:
+    """UTF-8 (BOM stripped), else Latin-1, which decodes any byte string."""
+    raw = raw.removeprefix(_BOM)
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return raw.decode("latin-1")
+
+
+def display_section(section: str) -> str:
+    return f"[{section.upper()}]"
+
+
+@dataclass(frozen=True)
+class IniFile:
+    """A parsed ini: section and key names lower-cased; the last of duplicate keys wins."""
+
+    path: str
+    sections: Mapping[str, Mapping[str, IniValue]]
+
+    def get(self, section: str, key: str) -> IniValue | None:
+        return self.sections.get(section.lower(), {}).get(key.lower())
+
+    def get_str(self, section: str, key: str, default: str) -> str:
+        value = self.get(section, key)
+        return default if value is None else value.text
+
+    def get_float(self, section: str, key: str, default: float) -> float:
+        """An empty value counts as absent; anything but a plain decimal number is an error."""
+        value = self._present(section, key)
+        if value is None:
+            return default
+        if not _NUMBER.fullmatch(value.text):
+            raise self._bad(section, key, value, "a number")
+        return float(value.text)
+
+    def get_int(self, section: str, key: str, default: int) -> int:
+        """Whole numbers; ``2.000000`` is accepted as 2 since Eding writes some counts that way."""
+        value = self._present(section, key)
+        if value is None:
+            return default
+        if _INTEGER.fullmatch(value.text):
+            return int(value.text)
+        if _NUMBER.fullmatch(value.text) and float(value.text).is_integer():
+            return int(float(value.text))
+        raise self._bad(section, key, value, "a whole number")
+
+    def get_bool(self, section: str, key: str, default: bool) -> bool:
+        """Flags are written as 0/1; any non-zero whole number is true."""
+        return self.get_int(section, key, int(default)) != 0
+
+    def section(self, name: str) -> Mapping[str, str]:
+        """The raw texts of one section by lower-cased key (empty if the section is absent)."""
+        values = self.sections.get(name.lower(), {})
+        return MappingProxyType({key: value.text for key, value in values.items()})
+
+    def location(self, section: str, key: str) -> Location:
+        """Where a key is written (the file alone if it is not)."""
+        value = self.get(section, key)
+        return Location(self.path, value.line if value else 0)
+
+    def _present(self, section: str, key: str) -> IniValue | None:
+        value = self.get(section, key)
+        return value if value is not None and value.text.strip() else None
+
+    def _bad(self, section: str, key: str, value: IniValue, expected: str) -> ConfigError:
+        return ConfigError(f"{key} in {display_section(section)}: expected {expected}, got {value.text!r}",
+                           Location(self.path, value.line))
+
+
+def read_ini(path: str | os.PathLike[str]) -> IniFile:
+    """Read an ini file; a missing or unreadable file is a ConfigError."""
+    text = _decode(_read_bytes(Path(path)))
+    lines = _split_lines(text)
+    sections: dict[str, dict[str, IniValue]] = {}
+    for number, (section, entry) in enumerate(_classify(lines), start=1):
+        if section is None:
+            continue  # keys before the first section header belong to nothing
+        values = sections.setdefault(section, {})
+        if entry is not None:
+            values[entry.key.lower()] = IniValue(entry.value, number)
+    frozen = {name: MappingProxyType(values) for name, values in sections.items()}
+    return IniFile(os.fspath(path), MappingProxyType(frozen))
+
+
+# --------------------------------------------------------------------------- write-back
+
+def _line_ending(lines: list[tuple[str, str]]) -> str:
+    """The file's own line ending; CRLF (what EdingCNC writes) if it has none yet."""
+    return next((end for _, end in lines if end), "\r\n")
+
+
+def _format(value: float) -> str:
+    if not math.isfinite(value):
+        raise ValueError(f"cannot persist a non-finite value: {value}")
+    return f"{value:.6f}"
+
+
+def _update_variables(text: str, values: Mapping[int, float]) -> str:
+    """Rewrite the value text of known ``#n`` lines; append the others to ``[VARIABLES]``."""
+    lines = _split_lines(text)
+    classes = _classify(lines)
+    written: set[int] = set()
+    for i, (section, entry) in enumerate(classes):
+        match = VARIABLE_KEY.fullmatch(entry.key) if entry and section == "variables" else None
+        if entry and match and int(match.group(1)) in values:
+            number = int(match.group(1))
+            body, end = lines[i]
+            lines[i] = (body[:entry.start] + _format(values[number]) + body[entry.end:], end)
+            written.add(number)
+    missing = [f"#{n} = {_format(values[n])}" for n in sorted(set(values) - written)]
+    if not missing:
+        return "".join(body + end for body, end in lines)
+    eol = _line_ending(lines)
+    in_section = [i for i, (section, _) in enumerate(classes) if section == "variables"]
+    if in_section:
+        at = max(i for i in in_section if lines[i][0].strip()) + 1
+        added = []
+    else:
+        at = len(lines)
+        added = ([("", eol)] if lines and lines[-1][0].strip() else []) + [("[VARIABLES]", eol)]
+    if at > 0 and not lines[at - 1][1]:
+        lines[at - 1] = (lines[at - 1][0], eol)  # the last line had no ending
+    lines[at:at] = added + [(line, eol) for line in missing]
+    return "".join(body + end for body, end in lines)
+
+
+def _write_atomic(path: Path, data: bytes) -> None:
+    """Write beside the target and rename over it, so a failure leaves the old file intact."""
+    import tempfile  # only when writing back (start-up time)
+
+    tmp: str | None = None
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.chmod(tmp, stat.S_IMODE(path.stat().st_mode))
+        os.replace(tmp, path)
+    except BaseException as exc:
+        if tmp is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+        if isinstance(exc, OSError):
+            raise ConfigError(f"cannot write variables back: {exc.strerror or exc}",
+                              Location(str(path))) from exc
+        raise
+
+
+def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -> None:
+    """Store ``values`` as ``#n = value`` lines in ``[VARIABLES]``, changing nothing else in the file.
+
+    The file is handled as Latin-1, which maps each byte to one character and back, so text in
+    any encoding survives byte for byte (the ini syntax itself is ASCII).
+    """
+    target = Path(os.path.realpath(path))
+    raw = _read_bytes(target)
+    bom = _BOM if raw.startswith(_BOM) else b""
+    text = _update_variables(raw[len(bom):].decode("latin-1"), values)
+    _write_atomic(target, bom + text.encode("latin-1"))
