@@ -329,26 +329,28 @@ class _LineError(Exception):
         self.code, self.message, self.col = code, message, col
 
 
+# What is skipped whole while scanning delimiters: (closing character, code, message if it is missing).
+_ENCLOSED = {
+    '"': ('"', "E104", "unterminated string: the '\"' at column {col} has no closing '\"'"),
+    "(": (")", "E103", "unclosed '(' comment opened at column {col}"),
+}
+
+
 def _scan_delimiters(text: str) -> _LineError | None:
     """Explain unbalanced quotes, comments and brackets, which Lark reports poorly."""
     opens: list[int] = []
     i = 0
     while i < len(text):
         ch = text[i]
-        if ch == '"':
-            close = text.find('"', i + 1)
+        if ch in _ENCLOSED:
+            end, code, message = _ENCLOSED[ch]
+            close = text.find(end, i + 1)
             if close < 0:
-                return _LineError("E104", f"unterminated string: the '\"' at column {i + 1} has no closing '\"'", i + 1)
+                return _LineError(code, message.format(col=i + 1), i + 1)
             i = close + 1
             continue
         if ch == ";":
             break
-        if ch == "(":
-            close = text.find(")", i + 1)
-            if close < 0:
-                return _LineError("E103", f"unclosed '(' comment opened at column {i + 1}", i + 1)
-            i = close + 1
-            continue
         if ch == "[":
             opens.append(i + 1)
         elif ch == "]":

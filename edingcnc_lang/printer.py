@@ -118,10 +118,14 @@ def _(stmt: n.Dialog, depth: int = 0) -> list[str]:
     return _line(depth, f"dlgmsg {items_text(stmt.items)}".rstrip())
 
 
+def _optional(value: n.Expr | None) -> str:
+    """An optional trailing argument: " value", or nothing."""
+    return f" {value_text(value)}" if value is not None else ""
+
+
 @stmt_lines.register
 def _(stmt: n.LogFile, depth: int = 0) -> list[str]:
-    mode = f" {value_text(stmt.mode)}" if stmt.mode is not None else ""
-    return _line(depth, f'logfile "{stmt.name}"{mode}')
+    return _line(depth, f'logfile "{stmt.name}"{_optional(stmt.mode)}')
 
 
 @stmt_lines.register
@@ -142,8 +146,7 @@ def _(stmt: n.Kin, depth: int = 0) -> list[str]:
 
 @stmt_lines.register
 def _(stmt: n.PrepareLinDeltaHome, depth: int = 0) -> list[str]:
-    vel = f" {value_text(stmt.velocity)}" if stmt.velocity is not None else ""
-    return _line(depth, f"PrepareLinDeltaHome{vel}")
+    return _line(depth, f"PrepareLinDeltaHome{_optional(stmt.velocity)}")
 
 
 @stmt_lines.register
