@@ -1,11 +1,21 @@
-"""Shared pytest options: ``--regen-goldens`` rewrites golden files instead of comparing."""
+"""Shared pytest options: ``--regen-goldens`` rewrites golden files instead of comparing.
+
+Hypothesis profiles: ``ci`` (the default, and what ``.ci/run`` selects) derandomizes every property
+test so a run is repeatable; ``dev`` draws fresh random examples, ten times as many, for local
+hunting: ``python -m pytest --hypothesis-profile=dev``.
+"""
 from __future__ import annotations
 
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
 
 ROOT = Path(__file__).resolve().parent.parent
+
+settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
+settings.register_profile("dev", deadline=None, max_examples=1000)
+settings.load_profile("ci")
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
