@@ -104,8 +104,14 @@ def _(stmt: n.Block, depth: int = 0) -> list[str]:
     if stmt.message is not None:
         parts.append(f"(MSG {stmt.message})")
     parts += [f"{expr_text(a.target)} = {value_text(a.value)}" for a in stmt.assigns]
-    parts += [w.letter + value_text(w.value) for w in stmt.words]
+    parts += [word_text(w) for w in stmt.words]
     return _line(depth, " ".join(parts))
+
+
+def word_text(word: n.Word) -> str:
+    """A word; a call stands apart from its letter, as ``A SIN[0]`` would read as ``ASIN[0]`` glued."""
+    value = value_text(word.value)
+    return f"{word.letter} {value}" if isinstance(word.value, n.Call) else word.letter + value
 
 
 @stmt_lines.register
