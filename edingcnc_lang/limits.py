@@ -14,8 +14,8 @@ from itertools import islice
 # lines are still parsed up to this limit so that generated files can be checked and run.
 MAX_LINE_LENGTH = 65_536
 
-# Operators in the code of one line: signs, '#', arithmetic, comparisons, logic, and each
-# function call or bracketed word value ('SQRT[', 'X['), each counted once.  Every level of an
+# Operators in the code of one line: signs, '#', arithmetic, comparisons, logic, and function
+# calls ('SQRT['), each counted once.  Every level of an
 # expression tree needs one of them, so this bounds how deeply expressions nest, and printing a
 # tree back never adds any (the printer's extra brackets are not operators).
 MAX_LINE_OPERATORS = 100
@@ -34,7 +34,7 @@ MAX_NUMBER_DIGITS = 400
 # What counts towards MAX_LINE_OPERATORS: two-character operators once, word operators wherever
 # they stand (also inside names: the count only has to be an upper bound).  Strings and
 # comments do not count.
-_OPERATOR = re.compile(r"==|<>|!=|<=|>=|\*\*|[#+\-*/<>=!]|[A-Za-z][ \t]*\[|and|or|xor|mod|eq|ne|gt|ge|lt|le",
+_OPERATOR = re.compile(r"==|<>|!=|<=|>=|\*\*|[#+\-*/<>=!]|[A-Za-z]{2,}[ \t]*\[|and|or|xor|mod|eq|ne|gt|ge|lt|le",
                        re.IGNORECASE)
 _BRACKET = re.compile(r"[\[\]]")
 _DIGITS = re.compile(r"\d+")
