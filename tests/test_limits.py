@@ -70,6 +70,13 @@ def test_input_at_every_limit_goes_through_every_stage(tmp_path: Path, expressio
     assert {d.code for d in lint_paths([job])} <= {"F601"}  # long lines: the only finding
 
 
+def test_a_word_with_calls_at_the_limit_prints_back_within_it() -> None:
+    text = "G1 A " + "SIN[" * MAX_LINE_OPERATORS + "0" + "]" * MAX_LINE_OPERATORS + "\n"
+    printed = program_text(parse_text(text))
+    assert printed.startswith("G1 A[SIN[")  # the printer's bracket is not an operator
+    assert program_text(parse_text(printed)) == printed
+
+
 def test_a_huge_line_is_read_only_up_to_the_limit(tmp_path: Path) -> None:
     job = tmp_path / "job.nc"
     job.write_bytes(b"G0 X1\n" + b"x" * (8 << 20) + b"\r\nG0 X2\n" + b"y" * (3 << 20))
