@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..errors import EXIT_USAGE, EcncError
+from ..errors import EcncError, MissingExtra
 from . import views as v
 from .toolpath import FEED_KINDS, KINDS, Toolpath
 
@@ -29,12 +29,6 @@ DPI = 100
 MARGIN = 0.06        # of the drawing's span, around what is fitted
 FEED_WIDTH = 1.3
 RAPID_WIDTH = 0.8
-
-
-class MissingExtra(EcncError):
-    """matplotlib is not installed: the ``plot`` extra is needed."""
-
-    exit_code = EXIT_USAGE
 
 
 def require_matplotlib() -> None:

@@ -16,10 +16,10 @@ pytest.importorskip("matplotlib")
 from matplotlib.image import imread  # noqa: E402
 
 from edingcnc_lang import RunOptions  # noqa: E402
-from edingcnc_lang.errors import EcncError  # noqa: E402
+from edingcnc_lang.errors import EcncError, MissingExtra  # noqa: E402
 from edingcnc_lang.plot import views  # noqa: E402
 from edingcnc_lang.plot.joints import plot_joints  # noqa: E402
-from edingcnc_lang.plot.render import MissingExtra, plot_toolpath, require_matplotlib  # noqa: E402
+from edingcnc_lang.plot.render import plot_toolpath, require_matplotlib  # noqa: E402
 from edingcnc_lang.plot.toolpath import record_job  # noqa: E402
 from tests.plot.jobs import CIRCLE, SQUARE, TWO_TOOLS, write  # noqa: E402
 
