@@ -133,10 +133,13 @@ class Toolpath:
         stacked = np.vstack(points)
         return stacked.min(axis=0), stacked.max(axis=0)
 
-    def source_lines(self, context: int = 3, limit: int = 200_000) -> dict[str, dict[int, str]]:
-        """The text of the source lines that made moves, with ``context`` lines around each."""
+    def source_lines(self, moves: np.ndarray | None = None, context: int = 3,
+                     limit: int = 2_000) -> dict[str, dict[int, str]]:
+        """The text of the source lines that made ``moves`` (default: all), with ``context`` lines
+        around each, cut at ``limit`` characters."""
+        chosen_moves = slice(None) if moves is None else moves
         wanted: dict[int, set[int]] = {}
-        for file_index, line in set(zip(self.files.tolist(), self.lines.tolist())):
+        for file_index, line in set(zip(self.files[chosen_moves].tolist(), self.lines[chosen_moves].tolist())):
             wanted.setdefault(file_index, set()).update(range(line - context, line + context + 1))
         texts: dict[str, dict[int, str]] = {}
         for file_index, numbers in wanted.items():

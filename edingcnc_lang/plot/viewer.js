@@ -31,7 +31,8 @@
   const file = decode(D.file, Uint16Array);
   const feed = decode(D.feed, Float32Array);
   const merged = decode(D.merged, Int32Array);
-  const index = decode(D.index, Int32Array);
+  const index = new Int32Array(merged.length);  // the job's move number (from 0) each shown move ends at
+  for (let i = 0, total = -1; i < merged.length; i++) index[i] = total += merged[i];
   const abc = decode(D.abc, Float32Array);
   const joints = decode(D.joints, Float32Array);
   const count = kind.length;

@@ -94,7 +94,6 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "kind": _b64(path.kinds[keep], "u1"), "tool": _b64(path.tools[keep], "i4"),
         "line": _b64(path.lines[keep], "i4"), "file": _b64(path.files[keep], "u2"),
         "feed": _b64(path.feeds[keep], "f4"), "merged": _b64(thinned.count, "i4"),
-        "index": _b64(keep, "i4"),
         "abc": _b64(abc, "f4") if np.any(abc) else None,
         "joints": _b64(path.joints[keep], "f4") if path.kinematics.lower() not in ("trivial", "") else None,
         "jointNames": list(path.joint_names), "kinematics": path.kinematics,
@@ -102,7 +101,7 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "part": [bounds[0].tolist(), bounds[1].tolist()] if bounds is not None else None,
         "limits": [path.limits[0].tolist(), path.limits[1].tolist()] if path.limits is not None else None,
         "source": {name: {str(k): text for k, text in lines.items()}
-                   for name, lines in path.source_lines().items()},
+                   for name, lines in path.source_lines(keep, context=3 if len(keep) == len(path) else 0).items()},
         "error": path.error.format() if path.error is not None else None,
         "seconds": path.seconds,
     }
