@@ -17,7 +17,7 @@ import numpy as np
 
 from ..errors import EcncError, MissingExtra
 from . import views as v
-from .toolpath import FEED_KINDS, KINDS, Toolpath
+from .toolpath import KINDS, Toolpath
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -108,6 +108,7 @@ def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> 
     from matplotlib.collections import LineCollection
 
     project = v.projection(view)
+    cutting = v.feed_tools(path)
     fitted: list[np.ndarray] = []
     if color in ("tool", "kind"):
         key = path.tools if color == "tool" else path.kinds.astype(np.int32)
@@ -117,7 +118,7 @@ def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> 
             if color == "kind":
                 shade = v.KIND_COLORS[v.kind_name(line.kind)]
             else:
-                shade = v.RAPID_COLOR if rapid else v.tool_color(path.tools.tolist(), line.tool)
+                shade = v.RAPID_COLOR if rapid else v.tool_color(cutting, line.tool)
             groups.setdefault((rapid, shade), []).append(_segments(line.points, project))
         for (rapid, shade), pieces in sorted(groups.items(), key=lambda item: not item[0][0]):
             segments = np.concatenate(pieces)
@@ -175,9 +176,9 @@ def _legend_entries(path: Toolpath, color: str, groups: dict[tuple[bool, str], A
         for kind in sorted(present):
             entries.append((KINDS[kind], (v.is_rapid(kind), v.KIND_COLORS[KINDS[kind]])))
         return entries
-    feed_tools = sorted({int(t) for t, k in zip(path.tools.tolist(), path.kinds.tolist()) if k in FEED_KINDS})
-    for tool in feed_tools:
-        entries.append((f"T{tool}" if tool else "no tool", (False, v.tool_color(path.tools.tolist(), tool))))
+    cutting = v.feed_tools(path)
+    for tool in cutting:
+        entries.append((f"T{tool}" if tool else "no tool", (False, v.tool_color(cutting, tool))))
     if any(rapid for rapid, _ in groups):
         entries.append(("rapid", (True, v.RAPID_COLOR)))
     return entries

@@ -108,7 +108,7 @@
   let groups = [];
 
   function toolColor(t) {
-    return D.toolColors[D.tools.indexOf(t) % D.toolColors.length];
+    return D.toolColors[Math.max(D.tools.indexOf(t), 0) % D.toolColors.length];
   }
 
   function feedBuckets() {

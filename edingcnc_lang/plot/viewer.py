@@ -88,7 +88,7 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "job": path.job, "title": v.title_text(path), "moves": len(path), "shown": len(keep),
         "maxMoves": max_moves, "view": view, "kinds": list(KINDS), "rapidKinds": sorted(RAPID_KINDS),
         "files": list(path.paths), "toolColors": list(v.TOOL_COLORS), "kindColors": v.KIND_COLORS,
-        "tools": sorted({int(t) for t in np.unique(path.tools)}),
+        "tools": v.feed_tools(path),
         "points": _b64(np.vstack(points) if points else np.zeros((0, 3)), "f4"),
         "first": _b64(first, "i4"), "last": _b64(last, "i4"),
         "kind": _b64(path.kinds[keep], "u1"), "tool": _b64(path.tools[keep], "i4"),

@@ -9,7 +9,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .toolpath import KINDS, RAPID_KINDS, Toolpath
+from .toolpath import FEED_KINDS, KINDS, RAPID_KINDS, Toolpath
 
 _C, _S = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
 
@@ -53,9 +53,16 @@ def box_edges(lower: Sequence[float], upper: Sequence[float]) -> np.ndarray:
     return np.array([[corners[i], corners[j]] for i, j in pairs])
 
 
+def feed_tools(path: Toolpath) -> list[int]:
+    """The tools that cut (made feed moves), in order of their numbers: the ones that get colours."""
+    cutting = np.isin(path.kinds, list(FEED_KINDS))
+    return sorted({int(t) for t in np.unique(path.tools[cutting])})
+
+
 def tool_color(tools: Sequence[int], tool: int) -> str:
-    """The colour of ``tool`` among the job's tools (in order of their numbers)."""
-    return TOOL_COLORS[sorted(set(tools)).index(tool) % len(TOOL_COLORS)]
+    """The colour of ``tool`` among the cutting ``tools`` (the first colour for a tool not among them)."""
+    position = list(tools).index(tool) if tool in tools else 0
+    return TOOL_COLORS[position % len(TOOL_COLORS)]
 
 
 def kind_name(kind: int) -> str:

@@ -56,7 +56,7 @@ def test_the_page_draws_the_job_and_logs_nothing(pocket_page: Path, tmp_path: Pa
     colours = np.unique((image * 255).astype(np.uint8).reshape(-1, 3), axis=0)
     assert len(colours) > 50, "the screenshot is blank"
     canvas = image[100:700, 50:900]  # left of the side panel, below the header
-    t1 = np.linalg.norm(canvas - np.array([int(views.TOOL_COLORS[1][i:i + 2], 16) / 255 for i in (1, 3, 5)]),
+    t1 = np.linalg.norm(canvas - np.array([int(views.TOOL_COLORS[0][i:i + 2], 16) / 255 for i in (1, 3, 5)]),
                         axis=2) < 0.15
     assert t1.sum() > 500, "the T1 pocket contour is not on the screenshot"
 

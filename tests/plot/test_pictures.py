@@ -58,7 +58,7 @@ def test_the_square_is_drawn_along_its_contour_and_nowhere_else(square, tmp_path
     picture = plot_toolpath(square, tmp_path / "square.png", view="top")
     image = imread(picture.path)
     assert image.shape[:2] == (picture.height, picture.width)
-    feed = matches(image, views.TOOL_COLORS[1])  # tools 0 and 1 in the job: T1 is the second colour
+    feed = matches(image, views.tool_color(views.feed_tools(square), 1))
     pixels = picture.to_pixels(contour([(10, 10), (60, 10), (60, 60), (10, 60), (10, 10)], -1.0))
     missing = [tuple(p) for p in pixels if not near(feed, p)]
     assert not missing, f"{len(missing)} of {len(pixels)} contour points not drawn, first {missing[:3]}"
@@ -76,7 +76,7 @@ def test_a_circle_is_drawn_as_a_circle_and_a_rapid_dashed(tmp_path: Path) -> Non
     path = record_job(write(tmp_path, "circle.nc", CIRCLE))
     picture = plot_toolpath(path, tmp_path / "circle.png", view="top")
     image = imread(picture.path)
-    feed = matches(image, views.TOOL_COLORS[1])
+    feed = matches(image, views.TOOL_COLORS[0])  # T3, the only tool that cuts: the first colour
     angles = np.linspace(0.0, 2 * np.pi, 90, endpoint=False)
     ring = np.column_stack((40 + 30 * np.cos(angles), 40 + 30 * np.sin(angles), np.zeros_like(angles)))
     assert all(near(feed, p) for p in picture.to_pixels(ring))
@@ -100,7 +100,7 @@ def test_each_view_puts_the_depth_where_it_belongs(square, tmp_path: Path) -> No
     assert y_low < y_high  # seen from +X, Y grows to the right
     iso = plot_toolpath(square, tmp_path / "iso.png", view="iso")
     image = imread(iso.path)
-    feed = matches(image, views.TOOL_COLORS[1])
+    feed = matches(image, views.TOOL_COLORS[0])
     assert all(near(feed, p) for p in iso.to_pixels(contour([(10, 10), (60, 10), (60, 60)], -1.0, step=5.0)))
 
 
@@ -108,7 +108,9 @@ def test_colour_by_tool_gives_each_tool_its_colour(tmp_path: Path) -> None:
     path = record_job(write(tmp_path, "two.nc", TWO_TOOLS))
     picture = plot_toolpath(path, tmp_path / "two.png", view="top")
     image = imread(picture.path)
-    first, second = views.tool_color([0, 1, 2], 1), views.tool_color([0, 1, 2], 2)
+    assert views.feed_tools(path) == [1, 2]
+    first, second = views.tool_color([1, 2], 1), views.tool_color([1, 2], 2)
+    assert first != second
     assert near(matches(image, first), picture.to_pixels([[10, 0, 0]])[0])
     assert near(matches(image, second), picture.to_pixels([[40, 10, 0]])[0])
     assert not near(matches(image, first), picture.to_pixels([[40, 10, 0]])[0])
