@@ -94,13 +94,16 @@ class Project:
         return None
 
     def callees(self, file: SourceFile, stmt: n.Stmt, scope: Scope) -> Iterator[tuple[SourceFile, n.Sub]]:
-        """The subs a statement runs (inside ``Sub m3`` an M3 is the built-in, not a call)."""
+        """The subs a statement runs (inside ``Sub m3`` an M3 is the built-in, not a call; so is M6
+        inside ``change_tool``, where it commits the tool)."""
         if isinstance(stmt, n.GoSub):
             found = self.resolve(file, stmt.name)
             if found:
                 yield found
         elif isinstance(stmt, n.Block):
             own = m_sub_number(scope.sub.name) if scope.sub else None
+            if scope.sub and scope.sub.name.lower() == TOOL_CHANGE_SUB:
+                own = TOOL_CHANGE // 10
             for key, _word in self.codes(file, stmt, "M"):
                 whole, tenth = divmod(key, 10)
                 name = TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
