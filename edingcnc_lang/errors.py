@@ -50,6 +50,16 @@ class EcncError(Exception):
         return "\n".join([head, *(f"  {n}" for n in self.notes)])
 
 
+class UnreadableFile(EcncError):
+    """An input file that cannot be read (missing, a folder, no permission): a usage error."""
+
+    exit_code = EXIT_USAGE
+
+    @classmethod
+    def of(cls, path: object, exc: OSError) -> "UnreadableFile":
+        return cls(f"cannot read: {exc.strerror or exc}", Location(str(path)))
+
+
 class ConfigError(EcncError):
     """A bad value in cnc.ini (location names the ini file and line)."""
 
