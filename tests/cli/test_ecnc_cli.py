@@ -153,17 +153,22 @@ def test_a_tree_too_deep_for_json_is_an_error_not_a_traceback(tmp_path: Path) ->
     deep.write_text("If [1]\n" * 3000 + "G0 X1\n" + "EndIf\n" * 3000)
     assert invoke("parse", deep).exit_code == 0  # parsing itself is fine
     result = invoke("parse", "--json", deep)
-    assert (result.exit_code, result.stdout) == (70, "")
+    assert result.exit_code == 70
     assert result.stderr == f"{deep}: error: blocks are nested too deeply to write the tree as JSON\n"
+    assert json.loads(result.stdout)["error"] == {
+        "kind": "error", "message": "blocks are nested too deeply to write the tree as JSON", "file": str(deep),
+        "line": None, "column": None, "text": result.stderr.rstrip("\n")}
 
 
-def test_ctrl_c_aborts_with_exit_1(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_ctrl_c_outside_a_run_exits_130(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     def interrupted(*_args: object) -> None:
         raise KeyboardInterrupt
 
     monkeypatch.setattr(edingcnc_lang.runner, "run_file", interrupted)
     result = invoke("run", job)
-    assert (result.exit_code, result.stdout, result.stderr) == (1, "", "\nAborted!\n")
+    assert (result.exit_code, result.stdout, result.stderr) == (130, "", "\nerror: interrupted (Ctrl-C)\n")
+    result = invoke("run", "--json", job)
+    assert result.exit_code == 130 and json.loads(result.stdout)["error"]["kind"] == "interrupted"
 
 
 def test_a_closed_pipe_ends_quietly(tmp_path: Path) -> None:
