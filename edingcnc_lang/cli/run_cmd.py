@@ -8,7 +8,8 @@ import click
 from ..errors import EXIT_OK
 from .base import Command, usage_error
 from .options import MachineOptions, job_argument, json_option, machine_options
-from .params import OUTPUT_FILE
+from .params import OUTPUT_FILE, STDIN
+from .streams import STDIN_NAME, read_stdin
 
 
 @click.command("run", cls=Command, short_help="Run JOB as the controller would (in simulation).")
@@ -20,14 +21,18 @@ from .params import OUTPUT_FILE
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
         save_vars: bool) -> int:
-    """Run JOB as the controller would (in simulation) and report what the machine does."""
-    from ..runner import run_file
+    """Run JOB as the controller would (in simulation) and report what the machine does.
+
+    JOB - reads the job from standard input.
+    """
+    from ..runner import run_file, run_string
 
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
                                   samples=Path(samples) if samples else None, save_vars=save_vars)
-    result = run_file(job, options)  # an error carries the state so far: main() prints it with --json
+    # an error carries the state so far: main() prints it with --json
+    result = run_string(read_stdin(), options, STDIN_NAME) if job == STDIN else run_file(job, options)
     if as_json:
         import json  # only with --json: a short run starts faster without it
 

@@ -14,6 +14,9 @@ import os
 import sys
 
 
+STDIN_NAME = "<stdin>"  # how messages name a file read from standard input
+
+
 class ClosedStream(io.TextIOBase):
     """Stands for a closed standard stream: every write fails with EBADF."""
 
@@ -33,6 +36,21 @@ def make_streams_usable() -> None:
     reconfigure = getattr(sys.stdout, "reconfigure", None)
     if reconfigure is not None:  # a source line with 'é' on an ASCII console: \xe9, not a traceback
         reconfigure(errors="backslashreplace")
+
+
+def read_stdin() -> str:
+    """All of standard input as text, decoded as files are: UTF-8 (BOM dropped), Latin-1 line by line if not."""
+    from ..source import BOM, decode_line
+
+    buffer = getattr(sys.stdin, "buffer", None)
+    if buffer is None:  # already text (an embedding program's StringIO)
+        return sys.stdin.read() if sys.stdin else ""
+    data = buffer.read()
+    data = data[len(BOM):] if data.startswith(BOM) else data
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return "\n".join(decode_line(raw) for raw in data.split(b"\n"))
 
 
 def flush_quietly() -> None:

@@ -227,3 +227,17 @@ def test_an_option_without_its_value_names_the_command(job: Path) -> None:
     assert result.exit_code == 2
     assert result.stderr.startswith("usage: ecnc run [OPTIONS] JOB\necnc run: error: ")
     assert "--trace" in result.stderr
+
+
+def test_a_dash_reads_standard_input() -> None:
+    latin1 = "G0 X1 (caf\u00e9)\r\nG1 X2 F100\r\nmsg \"done\"\r\n".encode("latin-1").decode("latin-1")
+    ran = invoke("run", "--json", "-", input=latin1)
+    assert ran.exit_code == 0 and json.loads(ran.stdout)["messages"][0]["file"] == "<stdin>"
+    parsed = invoke("parse", "-", input="G0 X[1\n")
+    assert parsed.exit_code == 65 and parsed.stderr.startswith("<stdin>:1:5: error: unclosed '['")
+    linted = invoke("lint", "--no-source", "-", input="G0 G1 X1\n")
+    assert linted.exit_code == 1 and linted.stdout.startswith("<stdin>:1:4: G500 ")
+
+
+def test_a_dash_after_double_dash_is_still_standard_input() -> None:
+    assert invoke("parse", "--", "-", input="G0 X1\n").exit_code == 0
