@@ -47,7 +47,12 @@ def json_option(help: str) -> Callable[[F], F]:  # noqa: A002 - click's name
 
 
 def job_argument(func: F) -> F:
-    """``JOB``: the file to run (``-``: standard input), passed as ``job``."""
+    """``JOB``: the file to run, passed as ``job``."""
+    return click.argument("job", metavar="JOB", type=EXISTING_FILE)(func)
+
+
+def job_or_stdin_argument(func: F) -> F:
+    """``JOB``: the file to run, or ``-`` for standard input (the command handles ``STDIN``)."""
     return click.argument("job", metavar="JOB", type=INPUT_FILE)(func)
 
 

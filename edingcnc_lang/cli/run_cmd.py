@@ -7,13 +7,13 @@ import click
 
 from ..errors import EXIT_OK
 from .base import Command, usage_error
-from .options import MachineOptions, job_argument, json_option, machine_options
+from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options
 from .params import OUTPUT_FILE, STDIN
 from .streams import STDIN_NAME, read_stdin
 
 
 @click.command("run", cls=Command, short_help="Run JOB as the controller would (in simulation).")
-@job_argument
+@job_or_stdin_argument
 @machine_options
 @json_option("Print the final machine state as JSON on stdout.")
 @click.option("--trace", metavar="FILE", type=OUTPUT_FILE, help="Write one CSV row per executed move.")

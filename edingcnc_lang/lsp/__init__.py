@@ -1,0 +1,27 @@
+"""``ecnc lsp``: a Language Server for EdingCNC macro files and jobs, over stdio.
+
+Needs the ``lsp`` extra (pygls).  One feature module per LSP request (``hover``,
+``completion``, ``navigation``, ``actions``, ``formatting``) over one shared language
+model (``model``), with the explanations from ``edingcnc_lang.knowledge`` and the
+findings from ``ecnc lint``.
+"""
+from __future__ import annotations
+
+from ..errors import EXIT_USAGE, EcncError
+
+
+class MissingExtra(EcncError):
+    """pygls is not installed: the user needs ``pip install 'edingcnc-lang[lsp]'`` (exit 2)."""
+
+    exit_code = EXIT_USAGE
+
+
+def main() -> int:
+    """Serve LSP on stdin/stdout until the client says exit."""
+    try:
+        from .server import server
+    except ImportError as err:  # only pygls/lsprotocol can be missing here
+        raise MissingExtra(f"the language server needs pygls ({err.name} is missing): "
+                           "pip install 'edingcnc-lang[lsp]'") from None
+    server.start_io()
+    return 0
