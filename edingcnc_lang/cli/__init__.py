@@ -23,8 +23,15 @@ from .streams import flush_quietly, make_streams_usable, quiet_stdout
 EXIT_ABORTED = 1
 
 # Every command: its name and "module:attribute" in this package (see docs/cli.md, "Adding a command").
-COMMANDS = {"kins": "kins_cmd:kins", "lint": "lint_cmd:lint", "parse": "parse_cmd:parse", "plot": "plot_cmd:plot",
-            "run": "run_cmd:run", "view": "view_cmd:view"}
+COMMANDS = {
+    "kins": "kins_cmd:kins",
+    "lint": "lint_cmd:lint",
+    "lsp": "lsp_cmd:lsp",
+    "parse": "parse_cmd:parse",
+    "plot": "plot_cmd:plot",
+    "run": "run_cmd:run",
+    "view": "view_cmd:view",
+}
 
 COMPLETE_VAR = "_ECNC_COMPLETE"
 
