@@ -52,18 +52,12 @@ class Project:
         self._extra_written = extra_written
         self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}
         self._facts: dict[str, FileFacts] = {}
-        self.too_deep: set[str] = set()  # paths of files nested too deeply to walk
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
-        """Every statement of the file with its scope; none for a file nested too deeply to walk."""
+        """Every statement of the file with its scope."""
         found = self._walked.get(file.path)
         if found is None:
-            try:
-                found = tuple(walk(file.body))
-            except RecursionError:  # thousands of nested blocks: reported by the driver, not analysed
-                self.too_deep.add(file.path)
-                found = ()
-            self._walked[file.path] = found
+            found = self._walked[file.path] = tuple(walk(file.body))
         return found
 
     def facts(self, file: SourceFile) -> FileFacts:
