@@ -35,6 +35,7 @@ class EcncServer(LanguageServer):
         super().__init__("ecnc", __version__, text_document_sync_kind=t.TextDocumentSyncKind.Incremental)
         self.model = LanguageModel()
         self.pending: dict[str, asyncio.TimerHandle] = {}
+        self.shut_down = False  # the client asked for a shutdown before exit (exit code 0)
 
     # ----------------------------------------------------------------- helpers
     def path(self, uri: str) -> str:
@@ -102,6 +103,11 @@ server = EcncServer()
 @server.feature(t.INITIALIZED)
 def _initialized(ls: EcncServer, _params: t.InitializedParams) -> None:
     ls.model.roots = [to_fs_path(folder.uri) or folder.uri for folder in ls.workspace.folders.values()]
+
+
+@server.feature(t.SHUTDOWN)
+def _shutdown(ls: EcncServer, _params: None) -> None:
+    ls.shut_down = True
 
 
 @server.feature(t.TEXT_DOCUMENT_DID_OPEN)
