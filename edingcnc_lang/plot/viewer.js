@@ -306,7 +306,7 @@
     ["X", "Y", "Z"].forEach((a, k) => row(a, fmt(points[3 * p + k])));
     if (abc) ["A", "B", "C"].forEach((a, k) => row(a, fmt(abc[3 * i + k])));
     if (joints) {
-      D.jointNames.forEach((name, k) => { if (k < 6) row("joint " + k + " (" + name + ")", fmt(joints[6 * i + k])); });
+      D.jointRows.forEach(([k, name]) => row("joint " + k + " (" + name + ")", fmt(joints[6 * i + k])));
     }
   }
 
