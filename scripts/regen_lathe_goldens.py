@@ -19,12 +19,8 @@ Run with the rs274 lock held: ``flock /tmp/rs274.lock python3 scripts/regen_lath
 
 from __future__ import annotations
 
-import argparse
 import importlib.util
-import json
-import subprocess
 import sys
-import tempfile
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable
@@ -161,80 +157,13 @@ def lathe_source(program: Path) -> str:
     return "".join(line + "\n" for line in lines)
 
 
-def run_rs274(rs274: str, program: Path) -> subprocess.CompletedProcess[str]:
-    with tempfile.TemporaryDirectory(prefix="rs274-lathe-") as tmp:
-        work = Path(tmp)
-        (work / "program.ngc").write_text(lathe_source(program))
-        (work / "golden.var").write_text(base.var_file())
-        (work / "golden.tbl").write_text(TOOL_TABLE)
-        return subprocess.run([rs274, "-g", "-v", "golden.var", "-t", "golden.tbl", "program.ngc"],
-                              cwd=work, capture_output=True, text=True, timeout=60, check=False)
+def document(program: Path, golden: LatheGolden, version: str) -> dict[str, Any]:
+    return {**base.document(program, golden, version), "diameter_mode": program.stem.startswith("dia_"),
+            "spindle": golden.spindle}
 
 
-def canon_output(rs274: str, program: Path) -> str:
-    result = run_rs274(rs274, program)
-    stray = [t for t in result.stdout.splitlines() if t.strip() and not base.CANON_LINE.match(t)]
-    if result.returncode != 0 or stray:
-        raise base.GoldenError(f"rs274 failed (exit {result.returncode}): {' | '.join(stray) or result.stderr.strip()}")
-    return result.stdout
-
-
-def expected_json(program: Path, golden: LatheGolden, version: str) -> str:
-    data = {"program": program.name, "source": f"rs274 -g (LinuxCNC {version})",
-            "diameter_mode": program.stem.startswith("dia_"),
-            "moves": golden.moves, "dwells": golden.dwells, "spindle": golden.spindle}
-    return json.dumps(data, indent=1, sort_keys=True) + "\n"
-
-
-def regenerate(rs274: str, programs: list[Path]) -> int:
-    version = base.linuxcnc_version()
-    EXPECTED.mkdir(parents=True, exist_ok=True)
-    failures = changed = moves = synced = 0
-    for program in programs:
-        try:
-            golden = fold(base.parse_canon(canon_output(rs274, program)))
-            if not golden.moves:
-                raise base.GoldenError("no moves")
-        except base.GoldenError as error:
-            print(f"FAILED {program.name}: {error}", file=sys.stderr)
-            failures += 1
-            continue
-        target = EXPECTED / f"{program.stem}.json"
-        text = expected_json(program, golden, version)
-        if not target.exists() or target.read_text() != text:
-            target.write_text(text)
-            changed += 1
-        moves += len(golden.moves)
-        synced += sum("sync" in move for move in golden.moves)
-    stale = sorted({p.stem for p in EXPECTED.glob("*.json")} - {p.stem for p in PROGRAMS.glob("*.ngc")})
-    for name in stale:
-        (EXPECTED / f"{name}.json").unlink()
-    print(f"{len(programs) - failures}/{len(programs)} programs ok ({moves} moves, {synced} synchronised); "
-          f"{changed} expected files written, {len(stale)} stale removed; LinuxCNC {version}")
-    return failures
-
-
-def program_path(name: str) -> Path:
-    path = PROGRAMS / (name if name.endswith(".ngc") else f"{name}.ngc")
-    if not path.is_file():
-        sys.exit(f"no such program: {path}")
-    return path
-
-
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("names", nargs="*", help="programs to regenerate (default: all)")
-    parser.add_argument("--raw", metavar="NAME", help="print rs274's full output for one program and exit")
-    args = parser.parse_args()
-    rs274 = base.find_rs274()
-    if args.raw:
-        result = run_rs274(rs274, program_path(args.raw))
-        print(result.stdout, end="")
-        print(result.stderr, end="", file=sys.stderr)
-        sys.exit(result.returncode)
-    programs = [program_path(n) for n in args.names] or sorted(PROGRAMS.glob("*.ngc"))
-    sys.exit(1 if regenerate(rs274, programs) else 0)
+LATHE = base.GoldenSet(PROGRAMS, EXPECTED, lathe_source, fold, document, TOOL_TABLE)  # type: ignore[arg-type]
 
 
 if __name__ == "__main__":
-    main()
+    base.main(LATHE, __doc__.splitlines()[0])
