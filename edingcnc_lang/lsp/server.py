@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import asyncio
 import os
+from pathlib import Path
 from collections.abc import Sequence
 
 from lsprotocol import types as t
@@ -15,8 +16,10 @@ from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
 from .. import __version__
+from ..cli.common import whole_trees
 from ..codes import Severity
 from ..diagnostics import Diagnostic
+from ..lint.driver import is_macro_name
 from . import actions, completion, formatting, hover, navigation
 from .lexer import token_at
 from .model import LanguageModel, Place
@@ -99,6 +102,8 @@ class EcncServer(LanguageServer):
 
     def relint_folder(self, path: str) -> None:
         """After a change to a macro file, the open files beside it may resolve differently."""
+        if not is_macro_name(Path(path)):
+            return
         for other in self.model.texts:
             if other != path and os.path.dirname(other) == os.path.dirname(path):
                 self.schedule_lint(self.uri(other))
@@ -220,9 +225,14 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
 @server.feature(t.TEXT_DOCUMENT_FORMATTING)
 def _formatting(ls: EcncServer, params: t.DocumentFormattingParams) -> list[t.TextEdit] | None:
     path = ls.path(params.text_document.uri)
-    lines = ls.lines(path)
+    file = ls.model.source(path)
+    if file is None or file.parse_errors:  # only a file that parses is formatted
+        return None
+    lines = file.lines
     options = params.options
-    formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t")
+    with whole_trees():
+        formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t",
+                                            (file.body, file.unit))
     if formatted is None:
         return None
     return [t.TextEdit(range=ls.client_range(path, number, 0, len(old)), new_text=new)
