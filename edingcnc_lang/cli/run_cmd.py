@@ -23,10 +23,12 @@ if TYPE_CHECKING:
 @json_option("Print the final machine state as JSON on stdout.")
 @click.option("--trace", metavar="FILE", type=OUTPUT_FILE, help="Write one CSV row per executed move.")
 @click.option("--samples", metavar="FILE", type=OUTPUT_FILE, help="Write the interpolated trajectory (.csv or .npz).")
+@click.option("--events", metavar="FILE", type=OUTPUT_FILE,
+              help="Write every move (with its spindle speed) and event as JSON Lines.")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
 @click.option("-q", "--quiet", is_flag=True, help="No progress line on stderr (shown on a terminal after a second).")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
-        save_vars: bool, quiet: bool) -> int:
+        events: str | None, save_vars: bool, quiet: bool) -> int:
     """Run JOB as the controller would (in simulation) and report what the machine does.
 
     JOB - reads the job from standard input.
@@ -36,7 +38,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
-                                  samples=Path(samples) if samples else None, save_vars=save_vars)
+                                  samples=Path(samples) if samples else None,
+                                  events=Path(events) if events else None, save_vars=save_vars)
     # an error carries the state so far: main() prints it with --json
     run = Run(options)
     if job == STDIN:
