@@ -4,7 +4,8 @@
 Each program in tests/golden/linuxcnc/programs is copied into a fresh temporary directory with
 every line prefixed by ``N<line number>`` (rs274 reports a block's N word, not its source line)
 and assignments to machine-unit parameters rescaled from mm to rs274's inches, next to a zeroed
-parameter file and an empty tool table, so no state leaks between programs.
+parameter file and the tool table of tests/golden/linuxcnc/tools.ini (diameters in mm there,
+written in inches for rs274, which has no ini), so no state leaks between programs.
 The canonical commands are folded into machine-coordinate moves in millimetres. The committed
 JSON is what the test suite uses; LinuxCNC is only needed to regenerate it.
 """
@@ -25,6 +26,9 @@ from typing import Any, Callable
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAMS = ROOT / "tests" / "golden" / "linuxcnc" / "programs"
 EXPECTED = ROOT / "tests" / "golden" / "linuxcnc" / "expected"
+TOOLS = ROOT / "tests" / "golden" / "linuxcnc" / "tools.ini"
+TOOL_SECTION = re.compile(r"^\s*\[TOOL_(\d+)\]\s*$", re.IGNORECASE)
+DIAMETER = re.compile(r"^\s*diameter\s*=\s*([-+0-9.eE]+)\s*$", re.IGNORECASE)
 MM_PER_INCH = 25.4
 DIGITS = 6
 
@@ -249,13 +253,26 @@ def var_file() -> str:
     return "".join(f"{number}\t{value:.6f}\n" for number, value in sorted(values.items()))
 
 
+def tool_table() -> str:
+    """rs274's tool table (``T<n> P<n> D<inches>``) from the [TOOL_n] diameters (mm) of tools.ini."""
+    diameters: dict[int, float] = {}
+    tool = None
+    for text in TOOLS.read_text().splitlines():
+        section, diameter = TOOL_SECTION.match(text), DIAMETER.match(text)
+        if section:
+            tool = int(section[1])
+        elif diameter and tool is not None:
+            diameters[tool] = float(diameter[1])
+    return "".join(f"T{n} P{n} D{d / MM_PER_INCH:.12f} ;\n" for n, d in sorted(diameters.items()))
+
+
 def run_rs274(rs274: str, program: Path) -> subprocess.CompletedProcess[str]:
     """Run rs274 on the numbered copy of ``program`` in a throw-away directory."""
     with tempfile.TemporaryDirectory(prefix="rs274-golden-") as tmp:
         work = Path(tmp)
         (work / "program.ngc").write_text(rs274_source(program.read_text()))
         (work / "golden.var").write_text(var_file())
-        (work / "golden.tbl").write_text("")
+        (work / "golden.tbl").write_text(tool_table())
         result = subprocess.run(
             [rs274, "-g", "-v", "golden.var", "-t", "golden.tbl", "program.ngc"],
             cwd=work,

@@ -43,6 +43,7 @@ class LineSteps(MachineState):
         self.selected_tool = int(value)
 
     def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.refuse_with_comp("a tool change (M6)", span)
         self._tool_change(span)
 
     def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -70,7 +71,7 @@ class LineSteps(MachineState):
             self._dwell(words, span)
 
     def _step_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        """Plane, units, cutter compensation, path control, distance and return mode: state only."""
+        """Units, path control, distance and return mode: state only."""
         self.modal[t.G_GROUPS[code]] = code
 
     def _step_length_offset(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
@@ -79,6 +80,8 @@ class LineSteps(MachineState):
 
     def _step_coord_system(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
+        if code != self.modal["coord_system"]:
+            self.refuse_with_comp(f"changing the coordinate system ({t.code_name('G', code)})", span)
         self._select_coord_system(code)
 
     def _step_rotation(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -135,6 +138,7 @@ class LineSteps(MachineState):
         self.canon.event(Event("dwell", self.path, self.line, {"seconds": seconds}))
 
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp(f"changing the tool length offset ({t.code_name('G', code)})", span)
         if code == G_49:
             self.tool_z = 0.0
         else:
