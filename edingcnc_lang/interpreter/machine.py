@@ -21,11 +21,12 @@ from .line import LineWords
 from .messages import Messages
 from .moves import Moves
 from .offsets import CoordinateSystems
+from .scaling import Scaling
 from .steps import LineSteps
 
 
-class Interpreter(ControlFlow, LineWords, LineSteps, CompensationSteps, CoordinateSystems, Moves, CannedCycles,
-                  BulkPath, Messages, Commands):
+class Interpreter(ControlFlow, LineWords, LineSteps, CompensationSteps, Scaling, CoordinateSystems, Moves,
+                  CannedCycles, BulkPath, Messages, Commands):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 

@@ -9,7 +9,7 @@ from .. import tables as t
 from ..canon import PLANES, Arc
 from ..geometry import ArcError, center_from_radius, check_radius, sweep
 from .state import (
-    AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
+    AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_51, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
     MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
 )
 
@@ -33,7 +33,8 @@ class Moves(MachineState):
             if motion in UNSUPPORTED_MOTION:
                 raise self.fail(f"{t.code_name('G', motion)} is not supported by this simulator", span)
             self.modal["motion"] = motion
-        elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68:
+        elif (not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68
+              or g.get("scaling") == G_51):  # their X Y are a pivot or factors, not a target
             if g53:
                 raise self.fail("G53 needs an axis word and G0 or G1", span)
             return

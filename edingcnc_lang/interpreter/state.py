@@ -146,6 +146,7 @@ class MachineState:
         self.tool_z = 0.0                  # active G43 length
         self.g92_active = False
         self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
+        self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}

@@ -8,7 +8,7 @@ from .. import tables as t
 from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
-    G_0, G_17, G_4, G_40, G_43_1, G_49, G_51, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    G_0, G_17, G_4, G_40, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
     format_value,
 )
 
@@ -87,10 +87,6 @@ class LineSteps(MachineState):
     def _step_rotation(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._rotation(code, words, span)
 
-    def _step_scaling(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        if code == G_51:
-            raise self.fail("G51 scaling is not supported", span)
-
     def _step_non_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         handler = NON_MODAL.get(code)
         if handler is not None:
@@ -163,6 +159,7 @@ class LineSteps(MachineState):
         self.spindle = 5
         self.coolant = set()
         self.params.set(t.SPINDLE_ON, 0.0)
+        self.scaling_off()
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()
