@@ -1,4 +1,4 @@
-"""Output sinks behind the motion stage: the trace CSV, the samples file and the event recorder.
+"""Output sinks behind the planner: the trace CSV, the samples file and the event recorder.
 
 Each writes incrementally, so memory stays flat however long the job is
 (the .npz samples format is the exception: numpy writes it in one go at the end).
@@ -17,13 +17,14 @@ from typing import TYPE_CHECKING
 from .canon import Event, Move, Pose
 from .errors import EcncError
 from .motion import Samples
+from .planner.estimate import Timing
 
 if TYPE_CHECKING:
     import numpy as np
 
 SIX_REPR = ",".join(["%r"] * 6)
-TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc\n"
-SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc")
+TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,t\n"
+SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "v", "acc")
 
 
 def _open_for_writing(path: Path) -> io.TextIOWrapper:
@@ -34,21 +35,23 @@ def _open_for_writing(path: Path) -> io.TextIOWrapper:
 
 
 class TraceWriter:
-    """One CSV row per executed move: source line, kind, machine end point, joints there."""
+    """One CSV row per executed move: source line, kind, machine end point, joints there, and ``t``,
+    the planned time (seconds from the job start) at which the move ends."""
 
     def __init__(self, path: Path) -> None:
         self._file = _open_for_writing(path)
         self._file.write(TRACE_HEADER)
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
-        self._file.write(f"{move.line},{move.kind},{','.join(map(repr, move.end))},{','.join(map(repr, joints))}\n")
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        self._file.write(f"{move.line},{move.kind},{SIX_REPR % move.end},{SIX_REPR % tuple(joints)},{timing.end!r}\n")
 
-    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        """Rows of straight moves whose joints equal their end points."""
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float]) -> None:
+        """Rows of straight moves whose joints equal their end points; ``times[i + 1]`` is when move i ends."""
         rows = []
-        for kind, line, end, _feed in batch:
+        for (kind, line, end, _feed), t in zip(batch, times[1:]):
             coords = SIX_REPR % end
-            rows.append(f"{line},{kind},{coords},{coords}\n")
+            rows.append(f"{line},{kind},{coords},{coords},{t!r}\n")
         self._file.write("".join(rows))
 
     def event(self, event: Event) -> None:
@@ -59,10 +62,11 @@ class TraceWriter:
 
 
 class SamplesWriter:
-    """The interpolated trajectory: CSV rows as moves arrive, or one .npz array at the end.
+    """The time-true trajectory: CSV rows as moves arrive, or one .npz array at the end.
 
-    Rows are strictly increasing in time: a move that takes no time (its single sample repeats
-    the previous end point) adds no row.  The .npz file holds one 1-D array per column name.
+    Rows are strictly increasing in time, one every ``interpolationTime`` along the planned
+    profile, with the path speed ``v`` and acceleration ``acc``.  The .npz file holds one 1-D
+    array per column name.
     """
 
     def __init__(self, path: Path) -> None:
@@ -74,12 +78,13 @@ class SamplesWriter:
         if self._file is not None:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         if samples is None:
             return
         import numpy as np
 
-        rows = np.column_stack([samples.t, samples.pos, samples.joints])[samples.t > self._last_time]
+        rows = np.column_stack([samples.t, samples.pos, samples.joints, samples.speed, samples.accel])
+        rows = rows[samples.t > self._last_time]
         if not len(rows):
             return
         self._last_time = float(rows[-1, 0])
@@ -87,6 +92,10 @@ class SamplesWriter:
             self._chunks.append(rows)
         else:
             self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
+
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float]) -> None:
+        pass  # batches come only when no samples are written
 
     def event(self, event: Event) -> None:
         pass
@@ -103,16 +112,32 @@ class SamplesWriter:
 
 
 class CallbackSink:
-    """Forwards moves and events to callables (the embedding API's streaming interface)."""
+    """Forwards moves and events to callables (the embedding API's streaming interface).
+
+    ``on_timed_move(move, joints, start, end)`` also gets the planned start and end times.
+    """
 
     def __init__(self, on_move: Callable[[Move, Pose], None] | None = None,
-                 on_event: Callable[[Event], None] | None = None) -> None:
+                 on_event: Callable[[Event], None] | None = None,
+                 on_timed_move: Callable[[Move, Pose, float, float], None] | None = None) -> None:
         self.on_move = on_move
         self.on_event = on_event
+        self.on_timed_move = on_timed_move
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         if self.on_move:
             self.on_move(move, joints)
+        if self.on_timed_move:
+            self.on_timed_move(move, joints, timing.start, timing.end)
+
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float]) -> None:
+        """Straight moves in bulk, each a ``Move`` again for the callables."""
+        if not (self.on_move or self.on_timed_move):
+            return
+        for (kind, line, end, feed), t0, t1 in zip(batch, times, times[1:]):
+            self.move(Move(kind, path, line, start, end, feed), end, None, Timing(t0, t1))
+            start = end
 
     def event(self, event: Event) -> None:
         if self.on_event:

@@ -22,9 +22,12 @@ from .interpreter import Interpreter
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
-from .motion import MotionStage, MoveSink
+from .motion import MotionStage
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
 from .parser import check_file, parse_file, parse_text, read_statements
+from .planner.estimate import Estimate
+from .planner.overrides import Overrides
+from .planner.stage import Planner, TimedSink
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
 
@@ -44,6 +47,8 @@ class RunResult:
     modal: list[str]
     ended_by: str = "end of file"   # "M2", "M30" or "end of file"
     error: str | None = None
+    estimate: Estimate = field(default_factory=Estimate)
+    limits: dict[str, Any] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -59,6 +64,8 @@ class RunResult:
             "moves": self.moves,
             "modal": self.modal,
             "ended_by": self.ended_by,
+            "estimate": self.estimate.to_json(),
+            "limits": self.limits,
             **({"error": self.error} if self.error else {}),
         }
 
@@ -81,6 +88,9 @@ class RunOptions:
     save_vars: bool = False
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
+    on_timed_move: Callable[[Move, Pose, float, float], None] | None = None  # (move, joints, start s, end s)
+    feed_override: float = 100.0   # percent
+    rapid_override: float = 100.0  # percent, at most 100
 
 
 def packaged_macro() -> Path:
@@ -95,20 +105,24 @@ class Run:
         self.options = options
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         self.kinematics = self._load_kinematics()
-        sinks: list[MoveSink] = []
+        overrides = Overrides(options.feed_override, options.rapid_override)
+        sinks: list[TimedSink] = []
         if options.trace:
             sinks.append(TraceWriter(ensure_parent(options.trace)))
         if options.samples:
             sinks.append(SamplesWriter(ensure_parent(options.samples)))
-        if options.on_move or options.on_event:
-            sinks.append(CallbackSink(options.on_move, options.on_event))
-        self.motion = MotionStage(self.config, self.kinematics, sinks, self._write_param,
+        if options.on_move or options.on_event or options.on_timed_move:
+            sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
+        self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
+        self.motion = MotionStage(self.config, self.kinematics, self.planner, self._write_param,
                                   sample_always=options.samples is not None)
+        self.planner.joints_of = self.motion.joints_at
         self.interpreter = Interpreter(self.motion, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
+        self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)
@@ -198,6 +212,8 @@ class Run:
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
             ended_by=interp.ended_by,
             error=error.format() if error else None,
+            estimate=self.planner.estimate,
+            limits=self.planner.limits.to_json(),
         )
 
 

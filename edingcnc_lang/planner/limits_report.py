@@ -1,0 +1,92 @@
+"""The limits report: how close the job came to the machine's soft limits, per axis and per joint.
+
+Axes are machine coordinates, measured against ``[KINEMATICS]`` limits on a machine with
+kinematics other than trivial and against the joints' limits otherwise; joints against
+``[JOINT_n]``.  Arcs count with their extremes, and with kinematics on the joints count at every
+sample the motion stage evaluated, so the minimum and maximum are those of the whole path.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from ..canon import AXES
+from ..config import MachineConfig
+from ..geometry import arc_extremes
+from ..kinematics.trajectory import Geometry
+
+if TYPE_CHECKING:
+    import numpy as np
+
+
+class LimitsReport:
+    """Running minimum and maximum of every axis and joint (plain lists: a job that does not move needs no numpy)."""
+
+    def __init__(self, config: MachineConfig) -> None:
+        self.config = config
+        self.axis_low, self.axis_high = [math.inf] * 6, [-math.inf] * 6
+        self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
+
+    def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any]) -> None:
+        """Moves from ``starts`` to ``ends``; ``joints[i]`` is move i's sampled joints or None (joints = position)."""
+        import numpy as np
+
+        if not len(ends):
+            return
+        points = [starts[:1], ends]
+        for geometry in arcs.values():
+            points.append(_arc_extremes(geometry))
+        pos = np.vstack(points)
+        self._widen(pos, "axis")
+        identity = [i for i, j in enumerate(joints) if j is None]
+        joint_points = [np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None]
+        if len(identity) == len(joints):
+            joint_points.append(pos)
+        elif identity:
+            joint_points.append(ends[identity])
+        if joint_points:
+            self._widen(np.vstack(joint_points), "joint")
+
+    def _widen(self, rows: np.ndarray, which: str) -> None:
+        low, high = getattr(self, f"{which}_low"), getattr(self, f"{which}_high")
+        setattr(self, f"{which}_low", [min(a, b) for a, b in zip(low, rows.min(axis=0).tolist())])
+        setattr(self, f"{which}_high", [max(a, b) for a, b in zip(high, rows.max(axis=0).tolist())])
+
+    def to_json(self) -> dict[str, Any]:
+        """``{"axes": {"x": {...}}, "joints": {"x": {...}}}``; each ``{"min", "max", "lower", "upper", "margin"}``.
+
+        ``margin`` is the smaller distance left to either limit (negative: beyond it); axes that
+        never moved report ``null`` values.
+        """
+        cfg = self.config
+        joints_lower = [j.negative_limit for j in cfg.joints]
+        joints_upper = [j.positive_limit for j in cfg.joints]
+        cartesian = cfg.kinematics_name.lower() not in ("", "trivial")
+        axes_lower = list(cfg.cartesian_negative_limits) if cartesian else joints_lower
+        axes_upper = list(cfg.cartesian_positive_limits) if cartesian else joints_upper
+        return {"axes": _table(self.axis_low, self.axis_high, axes_lower, axes_upper),
+                "joints": _table(self.joint_low, self.joint_high, joints_lower, joints_upper)}
+
+
+def _table(low: list[float], high: list[float], lower: list[float], upper: list[float]) -> dict[str, Any]:
+    table = {}
+    for axis, lo, hi, limit_lo, limit_hi in zip(AXES.lower(), low, high, lower, upper):
+        seen = math.isfinite(lo)
+        table[axis] = {"min": lo if seen else None, "max": hi if seen else None, "lower": limit_lo, "upper": limit_hi,
+                       "margin": min(lo - limit_lo, limit_hi - hi) if seen else None}
+    return table
+
+
+def _arc_extremes(geometry: Geometry) -> np.ndarray:
+    """Points where an arc reaches its extremes in its plane (its ends are counted already)."""
+    import numpy as np
+
+    frame = geometry.arc_frame()
+    radius = max(frame.r0, frame.r1)
+    sweep = abs(frame.sweep)
+    clockwise = frame.sweep < 0.0
+    found = arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise)
+    rows = np.tile(np.asarray(geometry.end, dtype=float), (len(found), 1))
+    for row, (p1, p2) in zip(rows, found):
+        row[frame.u], row[frame.v] = p1, p2
+    return rows.reshape(-1, 6)
