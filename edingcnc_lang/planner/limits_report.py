@@ -27,8 +27,9 @@ class LimitsReport:
         self.axis_low, self.axis_high = [math.inf] * 6, [-math.inf] * 6
         self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
 
-    def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any]) -> None:
-        """Moves from ``starts`` to ``ends``; ``joints[i]`` is move i's sampled joints or None (joints = position)."""
+    def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any] | None) -> None:
+        """Moves from ``starts`` to ``ends``; ``joints[i]`` is move i's sampled joints or None (joints = position);
+        ``joints`` None: the joints are the position for every move."""
         import numpy as np
 
         if not len(ends):
@@ -37,20 +38,19 @@ class LimitsReport:
         for geometry in arcs.values():
             points.append(_arc_extremes(geometry))
         pos = np.vstack(points)
-        self._widen(pos, "axis")
+        low, high = pos.min(axis=0).tolist(), pos.max(axis=0).tolist()
+        self._widen("axis", low, high)
+        if joints is None:  # the usual case: joints = position everywhere
+            self._widen("joint", low, high)
+            return
         identity = [i for i, j in enumerate(joints) if j is None]
-        joint_points = [np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None]
-        if len(identity) == len(joints):
-            joint_points.append(pos)
-        elif identity:
-            joint_points.append(ends[identity])
-        if joint_points:
-            self._widen(np.vstack(joint_points), "joint")
+        joint_points = np.vstack([*(np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None),
+                                  starts[:1], ends[identity]])
+        self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
 
-    def _widen(self, rows: np.ndarray, which: str) -> None:
-        low, high = getattr(self, f"{which}_low"), getattr(self, f"{which}_high")
-        setattr(self, f"{which}_low", [min(a, b) for a, b in zip(low, rows.min(axis=0).tolist())])
-        setattr(self, f"{which}_high", [max(a, b) for a, b in zip(high, rows.max(axis=0).tolist())])
+    def _widen(self, which: str, low: list[float], high: list[float]) -> None:
+        setattr(self, f"{which}_low", [min(a, b) for a, b in zip(getattr(self, f"{which}_low"), low)])
+        setattr(self, f"{which}_high", [max(a, b) for a, b in zip(getattr(self, f"{which}_high"), high)])
 
     def to_json(self) -> dict[str, Any]:
         """``{"axes": {"x": {...}}, "joints": {"x": {...}}}``; each ``{"min", "max", "lower", "upper", "margin"}``.

@@ -59,26 +59,31 @@ def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.nda
 
     ``speed`` is each move's own speed limit (the programmed feed with its override, a plug-in's or
     the joints' limit; inf for rapids); ``vlim``/``alim`` (n, 6) the axis limits each move runs
-    against.  Arcs also keep v^2 / r within the in-plane acceleration (times ``arc_accel_factor``),
+    against, or (6,) when they are the same for all.  Arcs also keep v^2 / r within the in-plane acceleration (times ``arc_accel_factor``),
     except arcs shorter than ``min_arc_length``, which the controller runs as one straight chord.
     """
     delta = end - start
-    linear = np.linalg.norm(delta[:, :3], axis=1)
-    length = np.where(linear > 0.0, linear, np.linalg.norm(delta[:, 3:], axis=1))
+    square = delta * delta
+    linear2, rotary2 = square[:, :3].sum(axis=1), square[:, 3:].sum(axis=1)
+    linear = np.sqrt(linear2)
+    length = np.where(linear2 > 0.0, linear, np.sqrt(rotary2))
+    span = np.abs(delta)
     with np.errstate(invalid="ignore", divide="ignore"):
-        fraction = np.where(length[:, None] > 0.0, np.abs(delta) / length[:, None], 0.0)
-    tangent_in = _unit(delta)
-    tangent_out = tangent_in.copy()
+        tangent_in = np.nan_to_num(delta / np.sqrt(linear2 + rotary2)[:, None])
+        # min over the axes of limit / fraction (fraction = span / length), as length / max(span / limit)
+        vmax = length / np.max(span / vlim, axis=-1)
+        accel = length / np.max(span / alim, axis=-1)
+    tangent_out = tangent_in.copy() if arcs else tangent_in
     speed = speed.copy()
-    xyz_length = linear.copy()
+    xyz_length = linear.copy() if arcs else linear
     for index, geometry in arcs.items():
-        arc_len, linear_len, arc_fraction, t_in, t_out, radius, (u, v) = _arc(start[index], end[index], geometry)
-        length[index], xyz_length[index], fraction[index] = arc_len, linear_len, arc_fraction
+        arc_len, linear_len, fraction, t_in, t_out, radius, (u, v) = _arc(start[index], end[index], geometry)
+        length[index], xyz_length[index] = arc_len, linear_len
         tangent_in[index], tangent_out[index] = _unit(t_in[None])[0], _unit(t_out[None])[0]
+        row_v, row_a = vlim[index] if vlim.ndim == 2 else vlim, alim[index] if alim.ndim == 2 else alim
+        with np.errstate(divide="ignore"):
+            vmax[index], accel[index] = 1.0 / np.max(fraction / row_v), 1.0 / np.max(fraction / row_a)
         if arc_len >= min_arc_length and radius > 0.0:
-            centripetal = min(alim[index, u], alim[index, v]) * arc_accel_factor
+            centripetal = min(row_a[u], row_a[v]) * arc_accel_factor
             speed[index] = min(speed[index], math.sqrt(centripetal * radius))
-    with np.errstate(divide="ignore"):
-        vmax = np.min(np.where(fraction > 0.0, vlim / np.where(fraction > 0.0, fraction, 1.0), np.inf), axis=1)
-        accel = np.min(np.where(fraction > 0.0, alim / np.where(fraction > 0.0, fraction, 1.0), np.inf), axis=1)
     return Segments(length, xyz_length, tangent_in, tangent_out, np.minimum(vmax, speed), accel)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from collections import deque
 from collections.abc import Callable, Sequence
+from itertools import chain
 from typing import TYPE_CHECKING, Any, Protocol
 
 from ..canon import Event, Move, Pose
@@ -29,13 +30,13 @@ if TYPE_CHECKING:
 # Move kinds as small integers (the window keeps one per move).
 RAPID, LINEAR, ARC, PROBE, HOME = range(5)
 KIND_CODES = {"rapid": RAPID, "linear": LINEAR, "arc": ARC, "probe": PROBE, "home": HOME}
+STRAIGHT = -1  # a move of the fast path: rapid if its feed is 0, else linear
 
 WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
 # to reach its speed, an external program or an operator's answer.
 STOPPING_EVENTS = frozenset({"dwell", "tool_change", "pause", "end", "spindle", "exec", "dialog"})
-STOPPING_KINDS = frozenset({RAPID, PROBE, HOME})  # moves that start and end at rest
 
 
 class TimedSink(Protocol):
@@ -69,6 +70,8 @@ class Planner:
         self.tolerance = config.g64_p
         self._limit_sets: list[tuple[np.ndarray, np.ndarray]] = []
         self._limit_index: dict[tuple[bytes, bytes], int] = {}
+        self._states: list[tuple[bool, float, float, int, int]] = []
+        self._state_index: dict[tuple[bool, float, float, int, int], int] = {}
         self._start2 = 0.0
         self._clear()
 
@@ -79,39 +82,37 @@ class Planner:
             self.flush()  # the position jumped (a kinematics switch): nothing to blend
         if not self._ends:
             self._origin = move.start
-        kind = KIND_CODES[move.kind]
-        speed = cap
-        if kind != RAPID and kind != HOME:
-            speed = min(cap, move.feed / 60.0 * self.overrides.feed_factor)
         if move.arc is not None:
             self._arcs[len(self._ends)] = geometry_of(move, self.config.full_circle_theta_epsilon)
+        limit = self._limit_id(limits)
         self._ends.append(move.end)
-        self._speed.append(speed)
-        self._kind.append(kind)
-        self._exact.append(self.exact_stop or kind in STOPPING_KINDS)
-        self._tol.append(self.tolerance)
-        self._lim.append(self._limit_id(limits))
+        self._feed.append(move.feed)
+        self._kind.append(KIND_CODES[move.kind])
+        self._cap.append(cap)
+        self._state.append(self._state_id(limit, limit))
         self._joints.append(None if samples is None else samples.joints)
+        self._sampled += samples is not None
         self._queue.append(("move", move, joints))
         self._after_add()
 
     def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
                        limits: dict[str, AxisLimits]) -> None:
-        """Straight moves in bulk whose joints are their positions (the interpreter's fast path)."""
+        """Straight moves in bulk whose joints are their positions (the interpreter's fast path).
+
+        Per move only the end and the feed are kept (a rapid is a move with feed 0); the rest is
+        the same for the whole batch.
+        """
         if self._ends and start != self._ends[-1]:
             self.flush()
         if not self._ends:
             self._origin = start
-        factor = self.overrides.feed_factor / 60.0
-        exact = self.exact_stop
-        ids = {kind: self._limit_id(lim) for kind, lim in limits.items()}
-        self._ends.extend(item[2] for item in batch)
-        self._speed.extend(math.inf if item[0] == "rapid" else item[3] * factor for item in batch)
-        self._kind.extend(RAPID if item[0] == "rapid" else LINEAR for item in batch)
-        self._exact.extend(exact or item[0] == "rapid" for item in batch)
-        self._tol.extend([self.tolerance] * len(batch))
-        self._lim.extend(ids[item[0]] for item in batch)
-        self._joints.extend([None] * len(batch))
+        count = len(batch)
+        self._ends.extend([item[2] for item in batch])
+        self._feed.extend([item[3] for item in batch])
+        self._kind.extend([STRAIGHT] * count)
+        self._cap.extend([math.inf] * count)
+        self._state.extend([self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]))] * count)
+        self._joints.extend([None] * count)
         self._queue.append(("batch", path, list(batch)))
         self._after_add()
 
@@ -149,13 +150,14 @@ class Planner:
     # ------------------------------------------------------------------ planning
     def _clear(self) -> None:
         self._origin: Pose = (0.0,) * 6  # type: ignore[assignment]
+        # one entry per collected move
         self._ends: list[Pose] = []
-        self._speed: list[float] = []
-        self._kind: list[int] = []
-        self._exact: list[bool] = []
-        self._tol: list[float] = []
-        self._lim: list[int] = []
-        self._joints: list[Any] = []   # the joints sampled along each move, None where they are the position
+        self._feed: list[float] = []    # mm/min as programmed (0 for rapids)
+        self._kind: list[int] = []      # a KIND_CODES value, or STRAIGHT: rapid if the feed is 0, else linear
+        self._cap: list[float] = []     # the speed the kinematics' joints allow
+        self._state: list[int] = []     # index into self._states
+        self._joints: list[Any] = []    # the joints sampled along the move, None where they are the position
+        self._sampled = 0               # how many of them are not None
         self._arcs: dict[int, Geometry] = {}
         self._queue: deque[tuple[Any, ...]] = deque()
 
@@ -165,6 +167,18 @@ class Planner:
         if index is None:
             index = self._limit_index[key] = len(self._limit_sets)
             self._limit_sets.append((limits.velocity, limits.acceleration))
+        return index
+
+    def _state_id(self, rapid_limits: int, other_limits: int) -> int:
+        """The index of the machine state a move runs in: path control, tolerance, feed override, limits.
+
+        It changes rarely, so moves keep an index into a small table instead of five values each.
+        """
+        state = (self.exact_stop, self.tolerance, self.overrides.feed_factor, rapid_limits, other_limits)
+        index = self._state_index.get(state)
+        if index is None:
+            index = self._state_index[state] = len(self._states)
+            self._states.append(state)
         return index
 
     def _after_add(self) -> None:
@@ -184,20 +198,29 @@ class Planner:
         from .segments import segments
 
         n = len(self._ends)
-        ends = np.array(self._ends, dtype=float)
+        ends = np.fromiter(chain.from_iterable(self._ends), float, 6 * n).reshape(n, 6)
         starts = np.vstack((np.asarray(self._origin, dtype=float)[None], ends[:-1]))
-        ids = np.array(self._lim)
+        feed, kind, state = np.array(self._feed), np.array(self._kind), np.array(self._state)
+        kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
+        exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
+        limit = np.where(kind == RAPID, rapid_limits[state], other_limits[state])
+        exact = exact_mode[state] | (kind == RAPID) | (kind == PROBE) | (kind == HOME)
+        fastest = (kind == RAPID) | (kind == HOME)
+        speed = np.minimum(np.array(self._cap), np.where(fastest, np.inf, feed * factor[state] / 60.0))
         cfg = self.config
-        seg = segments(starts, ends, np.array(self._speed), np.array([v for v, _ in self._limit_sets])[ids],
-                       np.array([a for _, a in self._limit_sets])[ids], self._arcs,
-                       cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
+        if (limit == limit[0]).all():  # the usual case: one set of limits for the whole window
+            vlim, alim = self._limit_sets[int(limit[0])]
+        else:
+            vlim = np.array([v for v, _ in self._limit_sets])[limit]
+            alim = np.array([a for _, a in self._limit_sets])[limit]
+        seg = segments(starts, ends, speed, vlim, alim, self._arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
         moving = np.flatnonzero(seg.length > 0.0)  # moves of zero length take no time and do not stop the machine
-        exact = np.array(self._exact)[moving]
+        exact = exact[moving]
         length, vmax, accel = seg.length[moving], seg.vmax[moving], seg.accel[moving]
         before, after = moving[:-1], moving[1:]
         corner = corner_speeds2(seg.tangent_out[before], seg.tangent_in[after], seg.length[before],
                                 seg.length[after], np.minimum(seg.accel[before], seg.accel[after]),
-                                np.array(self._tol)[after], cfg.laf_angle)
+                                tolerance[state[after]], cfg.laf_angle)
         corner = np.where(exact[:-1] | exact[1:], 0.0, np.minimum(corner, np.minimum(vmax[:-1], vmax[1:]) ** 2))
         first = 0.0 if len(exact) and exact[0] else self._start2
         node2 = plan_nodes(length, accel, np.concatenate(([first], corner, [0.0]))[:len(moving) + 1], first)
@@ -207,9 +230,9 @@ class Planner:
         done = int(np.searchsorted(moving, count))  # moving moves among the committed ones
         self._start2 = float(node2[done]) if count < n else 0.0
         t_end = self.time + np.cumsum(duration[:count])
-        self._account(np.array(self._kind[:count]), duration[:count], seg.xyz_length[:count])
+        self._account(kind[:count], duration[:count], seg.xyz_length[:count])
         self.limits.add(starts[:count], ends[:count], {i: g for i, g in self._arcs.items() if i < count},
-                        self._joints[:count])
+                        self._joints[:count] if self._sampled else None)
         samples = None
         if self.want_samples and self.joints_of is not None:
             samples = time_true_samples(starts[:count], ends[:count], self._arcs, moving[:done], planned, t_end,
@@ -228,8 +251,10 @@ class Planner:
         """Forget the first ``count`` collected moves (already committed)."""
         if count:
             self._origin = self._ends[count - 1]
-        for values in (self._ends, self._speed, self._kind, self._exact, self._tol, self._lim, self._joints):
+        for values in (self._ends, self._feed, self._kind, self._cap, self._state, self._joints):
             del values[:count]
+        if self._sampled:
+            self._sampled = sum(j is not None for j in self._joints)
         self._arcs = {i - count: g for i, g in self._arcs.items() if i >= count}
 
     # ------------------------------------------------------------------ output
