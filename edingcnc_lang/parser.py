@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 from . import nodes as n
 from .diagnostics import Diagnostic, SyntaxErrors
 from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
+from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, line_problem
 from .markers import Close, LineResult, Open
 from .source import iter_file_lines, iter_text_lines
 
@@ -304,6 +305,8 @@ def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
 
 def _non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines, found in one regex pass."""
+    if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
+        return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not _FAST_LINE.match(text)]
     joined = "\n".join(chunk)
     found = []
     index, position = 0, 0
@@ -410,11 +413,17 @@ def _explain(text: str, exc: UnexpectedInput) -> _LineError:
 # --------------------------------------------------------------------------- one line
 
 def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
-    """Parse one source line; raises _LineError on a syntax error."""
+    """Parse one source line; raises _LineError on a syntax error or a line past the limits."""
+    if len(text) > MAX_LINE_LENGTH:
+        raise _LineError("E110", f"line is longer than {MAX_LINE_LENGTH} characters, the limit for one line "
+                         "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)
     if _FAST_LINE.match(text):
         return _fast_block(text, path, line)
     if _EMPTY_LINE.match(text):  # blank or comments only
         return None
+    problem = line_problem(text)
+    if problem is not None:
+        raise _LineError(*problem)
     result = parse_fast(text, path, line)
     return parse_line_grammar(text, path, line) if result is GIVE_UP else result  # type: ignore[return-value]
 
@@ -484,6 +493,7 @@ class StatementReader:
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self._lines = lines
+        self._skipped = 0  # blocks open beyond MAX_BLOCK_DEPTH, whose lines are dropped
 
     def _error(self, code: str, message: str, line: int, col: int, source: str = "") -> None:
         self.diagnostics.append(Diagnostic.make(code, message, self.path, line, col, source))
@@ -529,7 +539,8 @@ class StatementReader:
         path = self.path
         if lineno == 1 and self._read_unit(text):
             return
-        if bulk and stack and self.mode == "run" and _FAST_LINE.match(text):
+        if bulk and stack and self.mode == "run" and not self._skipped and len(text) <= MAX_LINE_LENGTH \
+                and _FAST_LINE.match(text):
             stack[-1].add(plain_block(text, path, lineno))
             return
         try:
@@ -539,16 +550,20 @@ class StatementReader:
             opener = _CONDITION_LINE.match(text)
             if opener:  # keep the block structure so its EndIf/EndWhile still matches
                 span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
-                stack.append(_Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
+                self._push(stack, Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text)
             return
         if result is None:
             return
+        if self._skipped and not isinstance(result, Open):  # inside blocks nested too deeply: dropped
+            if isinstance(result, Close) and result.kind != "Else":
+                self._skipped -= 1
+            return
         if isinstance(result, Open):
-            if result.kind == "Sub" and stack:
+            if result.kind == "Sub" and stack and not self._skipped:
                 self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
                             f"close that first (subs cannot be nested)", lineno, result.span.col, text)
                 yield from self._unwind(stack, lineno, report=False)
-            stack.append(_Frame(result, text))
+            self._push(stack, result, text)
         elif isinstance(result, Close):
             done = self._close(stack, result, text)
             if done is not None:
@@ -557,6 +572,17 @@ class StatementReader:
             stack[-1].add(result)
         else:
             yield result
+
+    def _push(self, stack: list[_Frame], opener: Open, text: str) -> None:
+        """Open a block; one nested deeper than MAX_BLOCK_DEPTH is reported and skipped to its end."""
+        if len(stack) < MAX_BLOCK_DEPTH:
+            stack.append(_Frame(opener, text))
+            return
+        if not self._skipped:
+            self._error("E112", f"blocks nested more than {MAX_BLOCK_DEPTH} deep (If, While and Sub inside "
+                        "each other, the nesting limit): move the inner part into a Sub", opener.span.line,
+                        opener.span.col, text)
+        self._skipped += 1
 
     def raise_errors(self) -> None:
         """Raise SyntaxErrors with every diagnostic, in line order, if there is any."""

@@ -1,0 +1,93 @@
+"""Messages, dialogs and the log file (msg, warnmsg, errmsg, dlgmsg, logmsg, logfile)."""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path, PureWindowsPath
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import Event
+from ..errors import JobAborted, Location
+from ..evaluator import param_index
+from ..host import DialogAnswer, DialogField
+from .state import MAX_DIALOG_FIELDS, MachineState, format_value
+
+
+class Messages(MachineState):
+    """What the job tells the operator or asks of them; each message is also an event on the canon."""
+
+    def _text(self, items: tuple[n.MessageItem, ...]) -> str:
+        return "".join(item if isinstance(item, str) else format_value(self.evaluator.value(item))
+                       for item in items)
+
+    def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None:
+        event = Event(kind, self.path, self.line, {"text": text, **(data or {})})
+        self.messages.append(event)
+        self.canon.event(event)
+        if self.host.message:
+            self.host.message(kind, text, self.path, self.line)
+
+    def _exec_message(self, stmt: n.Message) -> None:
+        text = self._text(stmt.items)
+        if stmt.kind == "logmsg":
+            self._log(text, stmt.span)
+        elif stmt.kind == "errmsg":
+            self.message("error", text)
+            raise JobAborted(text, Location(self.path, self.line))
+        else:
+            self.message("warn" if stmt.kind == "warnmsg" else "msg", text)
+
+    def _exec_dialog(self, stmt: n.Dialog) -> None:
+        items = stmt.items
+        if not items or not isinstance(items[0], str):
+            raise self.fail("dlgmsg needs a title string first", stmt.span)
+        fields: list[DialogField] = []
+        rest = list(items[1:])
+        while rest:
+            label = rest.pop(0)
+            if not isinstance(label, str):
+                raise self.fail("dlgmsg expects \"label\" number pairs after the title (EdingCNC error G1167)",
+                                label.span)
+            if not rest or not isinstance(rest[0], n.Number):
+                where = rest[0].span if rest and not isinstance(rest[0], str) else stmt.span
+                raise self.fail(f"dlgmsg field \"{label}\" needs a parameter number written without '#' "
+                                "(EdingCNC error G1167)", where)
+            number = rest.pop(0)
+            index = param_index(number.value, number.span)  # type: ignore[union-attr]
+            fields.append(DialogField(label, index, self.params.read(index)))
+        if len(fields) > MAX_DIALOG_FIELDS:
+            raise self.fail(f"dlgmsg has {len(fields)} fields; at most {MAX_DIALOG_FIELDS} fit", stmt.span)
+        answer = (self.host.dialog(items[0], fields) if self.host.dialog else None) or DialogAnswer()
+        unknown = set(answer.values) - {f.index for f in fields}
+        if unknown:
+            raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)
+        if answer.ok:
+            for index, value in answer.values.items():
+                self.params.write(index, value, self.where(stmt.span))
+        self.params.set(t.DIALOG_RESULT, 1.0 if answer.ok else -1.0)
+        self.message("dialog", items[0], {"ok": answer.ok,
+                                          "fields": {f.label: self.params.read(f.index) for f in fields}})
+
+    def _exec_logfile(self, stmt: n.LogFile) -> None:
+        mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
+        name = PureWindowsPath(stmt.name).name  # never outside the log folder, whatever the path says
+        if name in ("", ".", ".."):
+            raise self.fail(f"logfile {stmt.name!r} names no file", stmt.span)
+        folder = self.log_dir or Path(self.path).resolve().parent
+        self._log_file = folder / name
+        if mode == 0:
+            self._log_file.parent.mkdir(parents=True, exist_ok=True)
+            self._log_file.write_text("", encoding="utf-8")
+
+    def _log(self, text: str, span: n.Span) -> None:
+        if self._log_file is None:
+            self._exec_logfile(n.LogFile("log.txt", None, span))
+        assert self._log_file is not None
+        self._log_file.parent.mkdir(parents=True, exist_ok=True)
+        with open(self._log_file, "a", encoding="utf-8") as handle:
+            handle.write(text + "\n")
+        self.message("log", text, {"file": str(self._log_file)})
+
+
+# The statements this part executes, by method name (machine.py builds the dispatch table).
+STATEMENTS = {n.Message: "_exec_message", n.Dialog: "_exec_dialog", n.LogFile: "_exec_logfile"}
