@@ -23,8 +23,12 @@ if TYPE_CHECKING:
 @click.option("--trace", metavar="FILE", type=OUTPUT_FILE, help="Write one CSV row per executed move.")
 @click.option("--samples", metavar="FILE", type=OUTPUT_FILE, help="Write the interpolated trajectory (.csv or .npz).")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
+@click.option("--feed-override", metavar="PCT", type=click.FloatRange(0, 1000, min_open=True), default=100.0,
+              help="Feed override knob in percent (default 100; M48/M49/M50 in the job switch it).")
+@click.option("--rapid-override", metavar="PCT", type=click.FloatRange(0, 100, min_open=True), default=100.0,
+              help="Rapid override knob in percent, at most 100 (default 100).")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
-        save_vars: bool) -> int:
+        save_vars: bool, feed_override: float, rapid_override: float) -> int:
     """Run JOB as the controller would (in simulation) and report what the machine does."""
     # Handles its own errors: after a runtime error --json still prints the state so far.
     from ..runner import run_file
@@ -32,7 +36,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
-                                  samples=Path(samples) if samples else None, save_vars=save_vars)
+                                  samples=Path(samples) if samples else None, save_vars=save_vars,
+                                  feed_override=feed_override, rapid_override=rapid_override)
     try:
         result = run_file(job, options)
     except EcncError as err:
@@ -44,6 +49,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
         return err.exit_code
     if as_json:
         _print_json(result.to_json())
+    if sys.stderr.isatty():  # for people at a terminal; scripts read --json
+        print(result.estimate.summary(), file=sys.stderr)
     return EXIT_OK
 
 

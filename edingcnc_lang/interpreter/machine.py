@@ -34,7 +34,7 @@ Interpreter._EXECUTE = {kind: getattr(Interpreter, name)
                         for kind, name in part.STATEMENTS.items()}
 
 # Steps that share one method: the modal groups whose step only records the code.
-_STEP_ALIASES = {"plane": "modal", "units": "modal", "cutter_comp": "modal", "path_control": "modal",
+_STEP_ALIASES = {"plane": "modal", "units": "modal", "cutter_comp": "modal",
                  "distance": "modal", "return_mode": "modal"}
 Interpreter._LINE_STEPS = tuple(
     (getattr(Interpreter, f"_step_{_STEP_ALIASES.get(name, name)}"), source, key)

@@ -15,9 +15,9 @@ import numpy as np
 def plan_nodes(length: np.ndarray, accel: np.ndarray, cap2: np.ndarray, start2: float) -> np.ndarray:
     """Squared speeds at the n + 1 nodes of a chain of n moves.
 
-    ``cap2`` holds the squared speed allowed at each node (the corner speed, 0 where the machine
-    must stop; the last node is 0 so that the machine can always stop at the end of what it has
-    seen); ``start2`` is the squared speed already reached at node 0.  The backward pass makes
+    ``cap2`` holds the squared speed allowed at each node (the corner speed, never above the speed
+    limits of the moves on either side; 0 where the machine must stop; the last node is 0 so that
+    the machine can always stop at the end of what it has seen); ``start2`` is the squared speed already reached at node 0.  The backward pass makes
     every node slow enough to stop in time, w_i = min(cap_i, w_{i+1} + 2 a_i L_i); the forward pass
     makes it reachable, u_{i+1} = min(w_{i+1}, u_i + 2 a_i L_i).  With D_i the running sum of
     2 a L, both recurrences are running minima of offset sequences, which numpy does in one call.
