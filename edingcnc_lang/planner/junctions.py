@@ -17,12 +17,13 @@ import numpy as np
 
 def corner_speeds2(tangent_out: np.ndarray, tangent_in: np.ndarray, length_before: np.ndarray,
                    length_after: np.ndarray, accel: np.ndarray, tolerance: np.ndarray, laf_angle: float) -> np.ndarray:
-    """Squared corner speeds for k corners: the direction leaving the move before and entering the one after.
+    """Squared corner speeds for k corners: the direction leaving the move before and entering the one after
+    (unit vectors as columns, (6, k)).
 
     ``tolerance`` is the G64 P in force for the move after the corner (0 = no tolerance: only the
     room on both moves limits the blend); ``laf_angle`` in degrees.
     """
-    cos_phi = np.clip(np.einsum("ij,ij->i", tangent_out, tangent_in), -1.0, 1.0)
+    cos_phi = np.clip((tangent_out * tangent_in).sum(axis=0), -1.0, 1.0)
     half = np.arccos(cos_phi) / 2.0
     cos_half = np.cos(half)
     with np.errstate(divide="ignore", invalid="ignore"):

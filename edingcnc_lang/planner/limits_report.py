@@ -28,24 +28,24 @@ class LimitsReport:
         self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
 
     def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any] | None) -> None:
-        """Moves from ``starts`` to ``ends``; ``joints[i]`` is move i's sampled joints or None (joints = position);
-        ``joints`` None: the joints are the position for every move."""
+        """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints
+        or None (joints = position); ``joints`` None: the joints are the position for every move."""
         import numpy as np
 
-        if not len(ends):
+        if not ends.shape[1]:
             return
-        points = [starts[:1], ends]
+        low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
         for geometry in arcs.values():
-            points.append(_arc_extremes(geometry))
-        pos = np.vstack(points)
-        low, high = pos.min(axis=0).tolist(), pos.max(axis=0).tolist()
-        self._widen("axis", low, high)
+            extremes = _arc_extremes(geometry)
+            if len(extremes):
+                low, high = np.minimum(low, extremes.min(axis=0)), np.maximum(high, extremes.max(axis=0))
+        self._widen("axis", low.tolist(), high.tolist())
         if joints is None:  # the usual case: joints = position everywhere
-            self._widen("joint", low, high)
+            self._widen("joint", low.tolist(), high.tolist())
             return
         identity = [i for i, j in enumerate(joints) if j is None]
         joint_points = np.vstack([*(np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None),
-                                  starts[:1], ends[identity]])
+                                  starts[:, :1].T, ends[:, identity].T])
         self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
 
     def _widen(self, which: str, low: list[float], high: list[float]) -> None:

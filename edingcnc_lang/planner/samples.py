@@ -25,7 +25,8 @@ _GRID_SLACK = 1e-9  # a tick this close (in dt) to a move's end counts as on it
 def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], moving: np.ndarray,
                       planned: Profiles, t_end: np.ndarray, duration: np.ndarray, dt: float,
                       joints_of: Callable[[np.ndarray], np.ndarray]) -> list[Samples | None]:
-    """Samples of committed moves ``0..len(t_end)-1``, None for moves that take no time.
+    """Samples of committed moves ``0..len(t_end)-1`` (``starts``/``ends`` as columns), None for moves
+    that take no time.
 
     ``moving[k]`` is the move whose profile is ``planned``'s entry k (moves of zero length have none).
     """
@@ -47,7 +48,7 @@ def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geom
         dist, speed, accel = distance_at(planned, np.full(len(times), k), tau)
         length = planned.length[k]
         fraction = np.where(times >= t1, 1.0, dist / length if length > 0.0 else 1.0)  # the end point exactly
-        geometry = arcs.get(index) or Geometry(tuple(starts[index]), tuple(ends[index]))
+        geometry = arcs.get(index) or Geometry(tuple(starts[:, index]), tuple(ends[:, index]))
         pos = geometry.points_at(fraction)
         result[index] = Samples(times, pos, joints_of(pos), speed=speed, accel=accel)
     return result

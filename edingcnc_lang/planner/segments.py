@@ -17,20 +17,22 @@ from ..kinematics.trajectory import Geometry
 
 @dataclass(frozen=True)
 class Segments:
-    """A window of moves as arrays: path length, unit directions at both ends, limits."""
+    """A window of n moves as arrays: path length, unit directions at both ends, limits.
 
-    length: np.ndarray     # (n,) mm, or degrees for moves of the rotary axes only
-    xyz_length: np.ndarray  # (n,) mm along XYZ (0 for rotary-only moves): what distances add up
-    tangent_in: np.ndarray   # (n, 6) unit direction at the start
-    tangent_out: np.ndarray  # (n, 6) unit direction at the end
-    vmax: np.ndarray       # (n,) path speed limit, units/s
-    accel: np.ndarray      # (n,) path acceleration limit, units/s^2
+    Poses are columns, (6, n): numpy reduces over the six axes far faster that way round.
+    """
+
+    length: np.ndarray       # (n,) mm, or degrees for moves of the rotary axes only
+    xyz_length: np.ndarray   # (n,) mm along XYZ (0 for rotary-only moves): what distances add up
+    tangent_in: np.ndarray   # (6, n) unit direction at the start (undefined for moves of zero length)
+    tangent_out: np.ndarray  # (6, n) unit direction at the end
+    vmax: np.ndarray         # (n,) path speed limit, units/s
+    accel: np.ndarray        # (n,) path acceleration limit, units/s^2
 
 
-def _unit(rows: np.ndarray) -> np.ndarray:
-    norm = np.linalg.norm(rows, axis=1)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(norm[:, None] > 0.0, rows / norm[:, None], 0.0)
+def _unit(vector: np.ndarray) -> np.ndarray:
+    norm = float(np.linalg.norm(vector))
+    return vector / norm if norm > 0.0 else vector
 
 
 def _arc(start: np.ndarray, end: np.ndarray, geometry: Geometry
@@ -55,32 +57,35 @@ def _arc(start: np.ndarray, end: np.ndarray, geometry: Geometry
 
 def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.ndarray, alim: np.ndarray,
              arcs: dict[int, Geometry], arc_accel_factor: float, min_arc_length: float) -> Segments:
-    """Arrays for a window of n moves.
+    """Arrays for a window of n moves from ``start`` to ``end`` (columns, (6, n)).
 
     ``speed`` is each move's own speed limit (the programmed feed with its override, a plug-in's or
-    the joints' limit; inf for rapids); ``vlim``/``alim`` (n, 6) the axis limits each move runs
-    against, or (6,) when they are the same for all.  Arcs also keep v^2 / r within the in-plane acceleration (times ``arc_accel_factor``),
-    except arcs shorter than ``min_arc_length``, which the controller runs as one straight chord.
+    the joints' limit; inf for rapids); ``vlim``/``alim`` (6, n) the axis limits each move runs
+    against, or (6,) when they are the same for all.  Arcs also keep v^2 / r within the in-plane
+    acceleration (times ``arc_accel_factor``), except arcs shorter than ``min_arc_length``, which
+    the controller runs as one straight chord.
     """
+    vlim = vlim if vlim.ndim == 2 else vlim[:, None]
+    alim = alim if alim.ndim == 2 else alim[:, None]
     delta = end - start
     square = delta * delta
-    linear2, rotary2 = square[:, :3].sum(axis=1), square[:, 3:].sum(axis=1)
+    linear2, rotary2 = square[:3].sum(axis=0), square[3:].sum(axis=0)
     linear = np.sqrt(linear2)
     length = np.where(linear2 > 0.0, linear, np.sqrt(rotary2))
     span = np.abs(delta)
     with np.errstate(invalid="ignore", divide="ignore"):
-        tangent_in = np.nan_to_num(delta / np.sqrt(linear2 + rotary2)[:, None])
+        tangent_in = delta / np.sqrt(linear2 + rotary2)
         # min over the axes of limit / fraction (fraction = span / length), as length / max(span / limit)
-        vmax = length / np.max(span / vlim, axis=-1)
-        accel = length / np.max(span / alim, axis=-1)
+        vmax = length / np.max(span / vlim, axis=0)
+        accel = length / np.max(span / alim, axis=0)
     tangent_out = tangent_in.copy() if arcs else tangent_in
     speed = speed.copy()
     xyz_length = linear.copy() if arcs else linear
     for index, geometry in arcs.items():
-        arc_len, linear_len, fraction, t_in, t_out, radius, (u, v) = _arc(start[index], end[index], geometry)
+        arc_len, linear_len, fraction, t_in, t_out, radius, (u, v) = _arc(start[:, index], end[:, index], geometry)
         length[index], xyz_length[index] = arc_len, linear_len
-        tangent_in[index], tangent_out[index] = _unit(t_in[None])[0], _unit(t_out[None])[0]
-        row_v, row_a = vlim[index] if vlim.ndim == 2 else vlim, alim[index] if alim.ndim == 2 else alim
+        tangent_in[:, index], tangent_out[:, index] = _unit(t_in), _unit(t_out)
+        row_v, row_a = vlim[:, index if vlim.shape[1] > 1 else 0], alim[:, index if alim.shape[1] > 1 else 0]
         with np.errstate(divide="ignore"):
             vmax[index], accel[index] = 1.0 / np.max(fraction / row_v), 1.0 / np.max(fraction / row_a)
         if arc_len >= min_arc_length and radius > 0.0:

@@ -198,8 +198,9 @@ class Planner:
         from .segments import segments
 
         n = len(self._ends)
-        ends = np.fromiter(chain.from_iterable(self._ends), float, 6 * n).reshape(n, 6)
-        starts = np.vstack((np.asarray(self._origin, dtype=float)[None], ends[:-1]))
+        ends = np.fromiter(chain.from_iterable(self._ends), float, 6 * n).reshape(n, 6).T.copy()  # columns
+        starts = np.empty_like(ends)
+        starts[:, 0], starts[:, 1:] = self._origin, ends[:, :-1]
         feed, kind, state = np.array(self._feed), np.array(self._kind), np.array(self._state)
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
         exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
@@ -211,14 +212,14 @@ class Planner:
         if (limit == limit[0]).all():  # the usual case: one set of limits for the whole window
             vlim, alim = self._limit_sets[int(limit[0])]
         else:
-            vlim = np.array([v for v, _ in self._limit_sets])[limit]
-            alim = np.array([a for _, a in self._limit_sets])[limit]
+            vlim = np.array([v for v, _ in self._limit_sets])[limit].T
+            alim = np.array([a for _, a in self._limit_sets])[limit].T
         seg = segments(starts, ends, speed, vlim, alim, self._arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
         moving = np.flatnonzero(seg.length > 0.0)  # moves of zero length take no time and do not stop the machine
         exact = exact[moving]
         length, vmax, accel = seg.length[moving], seg.vmax[moving], seg.accel[moving]
         before, after = moving[:-1], moving[1:]
-        corner = corner_speeds2(seg.tangent_out[before], seg.tangent_in[after], seg.length[before],
+        corner = corner_speeds2(seg.tangent_out[:, before], seg.tangent_in[:, after], seg.length[before],
                                 seg.length[after], np.minimum(seg.accel[before], seg.accel[after]),
                                 tolerance[state[after]], cfg.laf_angle)
         corner = np.where(exact[:-1] | exact[1:], 0.0, np.minimum(corner, np.minimum(vmax[:-1], vmax[1:]) ** 2))
@@ -231,11 +232,11 @@ class Planner:
         self._start2 = float(node2[done]) if count < n else 0.0
         t_end = self.time + np.cumsum(duration[:count])
         self._account(kind[:count], duration[:count], seg.xyz_length[:count])
-        self.limits.add(starts[:count], ends[:count], {i: g for i, g in self._arcs.items() if i < count},
+        self.limits.add(starts[:, :count], ends[:, :count], {i: g for i, g in self._arcs.items() if i < count},
                         self._joints[:count] if self._sampled else None)
         samples = None
         if self.want_samples and self.joints_of is not None:
-            samples = time_true_samples(starts[:count], ends[:count], self._arcs, moving[:done], planned, t_end,
+            samples = time_true_samples(starts[:, :count], ends[:, :count], self._arcs, moving[:done], planned, t_end,
                                         duration[:count], cfg.interpolation_time, self.joints_of)
         self._emit(count, t_end, samples)
         if count:

@@ -68,7 +68,7 @@ def test_distance_at_follows_the_three_phases() -> None:
 
 
 def test_right_angle_corner_speed_within_a_tolerance() -> None:
-    x, y = np.array([[1.0, 0, 0, 0, 0, 0]]), np.array([[0.0, 1, 0, 0, 0, 0]])
+    x, y = np.array([[1.0, 0, 0, 0, 0, 0]]).T, np.array([[0.0, 1, 0, 0, 0, 0]]).T  # directions as columns
     tolerance = 0.01
     half = math.pi / 4
     radius = tolerance * math.cos(half) / (1 - math.cos(half))
@@ -77,15 +77,15 @@ def test_right_angle_corner_speed_within_a_tolerance() -> None:
 
 
 def test_corner_without_tolerance_is_limited_by_the_room_on_the_moves() -> None:
-    x, y = np.array([[1.0, 0, 0, 0, 0, 0]]), np.array([[0.0, 1, 0, 0, 0, 0]])
+    x, y = np.array([[1.0, 0, 0, 0, 0, 0]]).T, np.array([[0.0, 1, 0, 0, 0, 0]]).T  # directions as columns
     speed2 = corner_speeds2(x, y, np.array([2.0]), np.array([100.0]), np.array([1000.0]), np.array([0.0]), 5.0)
     assert speed2[0] == pytest.approx(1000.0 * 1.0)  # blend in half the shorter move: R = 1 / tan(45 deg)
 
 
 def test_straight_on_is_not_a_corner_and_a_reversal_is_a_stop() -> None:
-    x = np.array([[1.0, 0, 0, 0, 0, 0]] * 3)
+    x = np.array([[1.0, 0, 0, 0, 0, 0]] * 3).T
     after = np.array([[1.0, 0, 0, 0, 0, 0], [-1.0, 0, 0, 0, 0, 0],
-                      [-math.cos(math.radians(4)), math.sin(math.radians(4)), 0, 0, 0, 0]])
+                      [-math.cos(math.radians(4)), math.sin(math.radians(4)), 0, 0, 0, 0]]).T
     speed2 = corner_speeds2(x, after, np.full(3, 10.0), np.full(3, 10.0), np.full(3, 1000.0), np.full(3, 0.01), 5.0)
     assert speed2[0] == math.inf
     assert speed2[1] == 0.0 and speed2[2] == 0.0  # 4 degrees between the moves is below lafAngle 5
