@@ -23,7 +23,7 @@ if TYPE_CHECKING:
     import numpy as np
 
 SIX_REPR = ",".join(["%r"] * 6)
-TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,t\n"
+TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "v", "acc")
 
 
@@ -34,24 +34,33 @@ def _open_for_writing(path: Path) -> io.TextIOWrapper:
         raise EcncError(f"cannot write {path}: {err.strerror}") from None
 
 
+def csv_field(text: str) -> str:
+    """A CSV field: quoted (quotes doubled) only when it holds a comma, quote or line end."""
+    if any(ch in text for ch in ',"\r\n'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
 class TraceWriter:
-    """One CSV row per executed move: source line, kind, machine end point, joints there, and ``t``,
-    the planned time (seconds from the job start) at which the move ends."""
+    """One CSV row per executed move: source line, kind, machine end point, joints there, the file
+    the line belongs to, and ``t``, the planned time (seconds from the job start) at which the move ends."""
 
     def __init__(self, path: Path) -> None:
         self._file = _open_for_writing(path)
         self._file.write(TRACE_HEADER)
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
-        self._file.write(f"{move.line},{move.kind},{SIX_REPR % move.end},{SIX_REPR % tuple(joints)},{timing.end!r}\n")
+        self._file.write(f"{move.line},{move.kind},{SIX_REPR % move.end},{SIX_REPR % tuple(joints)},"
+                         f"{csv_field(move.path)},{timing.end!r}\n")
 
     def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float]) -> None:
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
         """Rows of straight moves whose joints equal their end points; ``times[i + 1]`` is when move i ends."""
         rows = []
+        name = csv_field(path)
         for (kind, line, end, _feed), t in zip(batch, times[1:]):
             coords = SIX_REPR % end
-            rows.append(f"{line},{kind},{coords},{coords},{t!r}\n")
+            rows.append(f"{line},{kind},{coords},{coords},{name},{t!r}\n")
         self._file.write("".join(rows))
 
     def event(self, event: Event) -> None:
@@ -94,7 +103,7 @@ class SamplesWriter:
             self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
 
     def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float]) -> None:
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
         pass  # batches come only when no samples are written
 
     def event(self, event: Event) -> None:
@@ -114,12 +123,13 @@ class SamplesWriter:
 class CallbackSink:
     """Forwards moves and events to callables (the embedding API's streaming interface).
 
-    ``on_timed_move(move, joints, start, end)`` also gets the planned start and end times.
+    ``on_timed_move(move, joints, timing)`` also gets the move's ``Timing``: planned start and end
+    times and top speed.
     """
 
     def __init__(self, on_move: Callable[[Move, Pose], None] | None = None,
                  on_event: Callable[[Event], None] | None = None,
-                 on_timed_move: Callable[[Move, Pose, float, float], None] | None = None) -> None:
+                 on_timed_move: Callable[[Move, Pose, Timing], None] | None = None) -> None:
         self.on_move = on_move
         self.on_event = on_event
         self.on_timed_move = on_timed_move
@@ -128,15 +138,15 @@ class CallbackSink:
         if self.on_move:
             self.on_move(move, joints)
         if self.on_timed_move:
-            self.on_timed_move(move, joints, timing.start, timing.end)
+            self.on_timed_move(move, joints, timing)
 
     def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float]) -> None:
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
         """Straight moves in bulk, each a ``Move`` again for the callables."""
         if not (self.on_move or self.on_timed_move):
             return
-        for (kind, line, end, feed), t0, t1 in zip(batch, times, times[1:]):
-            self.move(Move(kind, path, line, start, end, feed), end, None, Timing(t0, t1))
+        for (kind, line, end, feed), t0, t1, speed in zip(batch, times, times[1:], speeds):
+            self.move(Move(kind, path, line, start, end, feed), end, None, Timing(t0, t1, speed))
             start = end
 
     def event(self, event: Event) -> None:

@@ -16,7 +16,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, is_persisted, load_config, save_variables
-from .errors import EcncError, Location, MachineError
+from .errors import EcncError, Interrupted, Location, MachineError
 from .host import Host
 from .interpreter import Interpreter
 from .kinematics.base import Kinematics
@@ -25,7 +25,7 @@ from .kinematics.loader import load_kinematics
 from .motion import MotionStage
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
 from .parser import check_file, parse_file, parse_text, read_statements
-from .planner.estimate import Estimate
+from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
 from .stages import STAGES, Pipeline
@@ -47,9 +47,10 @@ class RunResult:
     moves: int
     modal: list[str]
     ended_by: str = "end of file"   # "M2", "M30" or "end of file"
-    error: str | None = None
-    estimate: Estimate = field(default_factory=Estimate)
-    limits: dict[str, Any] = field(default_factory=dict)
+    error: str | None = None  # the formatted message of the error that stopped the run
+    error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
+    estimate: Estimate = field(default_factory=Estimate)  # how long the run took, as planned
+    limits: dict[str, Any] = field(default_factory=dict)  # the limits report (see docs/planner.md)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -67,7 +68,7 @@ class RunResult:
             "ended_by": self.ended_by,
             "estimate": self.estimate.to_json(),
             "limits": self.limits,
-            **({"error": self.error} if self.error else {}),
+            **({"error": self.error_record or {"text": self.error}} if self.error else {}),
         }
 
 
@@ -89,7 +90,7 @@ class RunOptions:
     save_vars: bool = False
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
-    on_timed_move: Callable[[Move, Pose, float, float], None] | None = None  # (move, joints, start s, end s)
+    on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
     feed_override: float = 100.0   # percent
     rapid_override: float = 100.0  # percent, at most 100
 
@@ -180,13 +181,15 @@ class Run:
             error = MachineError("blocks and sub calls are nested too deeply to run",
                                  Location(interp.path, interp.line))
         except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
-            error = _write_error(err)
+            error = _write_error(err, (self.options.trace, self.options.samples))
+        except KeyboardInterrupt:  # Ctrl-C: say where the job was, report the state so far (exit 130)
+            error = Interrupted("interrupted (Ctrl-C)", Location(interp.path, interp.line))
         finally:
             error = self._flush(error)
             try:
                 self.motion.close()
             except OSError as err:
-                error = error or _write_error(err)
+                error = error or _write_error(err, (self.options.trace, self.options.samples))
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -225,13 +228,19 @@ class Run:
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
             ended_by=interp.ended_by,
             error=error.format() if error else None,
+            error_record=error.to_json() if error else None,
             estimate=self.planner.estimate,
             limits=self.planner.limits.to_json(),
         )
 
 
-def _write_error(err: OSError) -> EcncError:
-    return EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
+def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError:
+    """A failed write, naming the file: the error's own, else the output files the run writes.
+
+    A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
+    """
+    names = [str(p) for p in outputs if p is not None]
+    return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 
 
 def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:

@@ -10,10 +10,12 @@ from typing import Any
 
 @dataclass(frozen=True)
 class Timing:
-    """When one move runs: seconds from the start of the job."""
+    """When one move runs (seconds from the start of the job) and the top speed the planner gave it
+    (mm/s along XYZ, or deg/s for a move of the rotary axes only; 0 for a move of zero length)."""
 
     start: float
     end: float
+    speed: float
 
 
 @dataclass

@@ -45,7 +45,7 @@ class TimedSink(Protocol):
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None: ...
 
     def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float]) -> None: ...
+                    times: Sequence[float], speeds: Sequence[float]) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -226,8 +226,8 @@ class Planner:
         first = 0.0 if len(exact) and exact[0] else self._start2
         node2 = plan_nodes(length, accel, np.concatenate(([first], corner, [0.0]))[:len(moving) + 1], first)
         planned = profiles(length, vmax, accel, node2)
-        duration = np.zeros(n)
-        duration[moving] = planned.duration
+        duration, peak = np.zeros(n), np.zeros(n)
+        duration[moving], peak[moving] = planned.duration, planned.peak
         done = int(np.searchsorted(moving, count))  # moving moves among the committed ones
         self._start2 = float(node2[done]) if count < n else 0.0
         t_end = self.time + np.cumsum(duration[:count])
@@ -238,7 +238,7 @@ class Planner:
         if self.want_samples and self.joints_of is not None:
             samples = time_true_samples(starts[:, :count], ends[:, :count], self._arcs, moving[:done], planned, t_end,
                                         duration[:count], cfg.interpolation_time, self.joints_of)
-        self._emit(count, t_end, samples)
+        self._emit(count, t_end, peak[:count], samples)
         if count:
             self.time = float(t_end[-1])
         self._drop(count)
@@ -259,9 +259,9 @@ class Planner:
         self._arcs = {i - count: g for i, g in self._arcs.items() if i >= count}
 
     # ------------------------------------------------------------------ output
-    def _emit(self, count: int, t_end: np.ndarray, samples: list[Samples | None] | None) -> None:
+    def _emit(self, count: int, t_end: np.ndarray, peak: np.ndarray, samples: list[Samples | None] | None) -> None:
         """Hand the first ``count`` collected moves, and the events between them, to the sinks."""
-        ends = t_end.tolist()
+        ends, speeds = t_end.tolist(), peak.tolist()
         index = 0
         queue = self._queue
         while queue and index < count:
@@ -269,7 +269,7 @@ class Planner:
             if item[0] == "event":
                 self._emit_event(item[1])
             elif item[0] == "move":
-                timing = Timing(ends[index - 1] if index else self.time, ends[index])
+                timing = Timing(ends[index - 1] if index else self.time, ends[index], speeds[index])
                 for sink in self.sinks:
                     sink.move(item[1], item[2], samples[index] if samples else None, timing)
                 index += 1
@@ -279,7 +279,8 @@ class Planner:
                 start = self._ends[index - 1] if index else self._origin
                 times = [ends[index - 1] if index else self.time, *ends[index:index + take]]
                 for sink in self.sinks:
-                    sink.write_batch(path, start, batch if take == len(batch) else batch[:take], times)
+                    sink.write_batch(path, start, batch if take == len(batch) else batch[:take], times,
+                                     speeds[index:index + take])
                 index += take
                 if take < len(batch):
                     queue[0] = ("batch", path, batch[take:])

@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang import RunOptions, run_string
+from edingcnc_lang.planner.estimate import Timing
 from edingcnc_lang.runner import RunResult
 from tests.cli_runner import invoke
 
@@ -154,11 +155,15 @@ def test_trace_column_t_is_when_each_move_ends(tmp_path: Path) -> None:
 
 
 def test_timed_move_callback(tmp_path: Path) -> None:
-    seen: list[tuple[int, float, float]] = []
-    run(tmp_path, "G1 X10 F3000\nX20\n", on_timed_move=lambda move, joints, start, end: seen.append(
-        (move.line, start, end)))
-    assert [line for line, _, _ in seen] == [1, 2]
-    assert seen[0][1] == 0.0 and seen[0][2] == seen[1][1] and seen[1][2] == pytest.approx(rest_to_rest(20.0, 50.0))
+    seen: list[tuple[int, Timing]] = []
+    run(tmp_path, "G1 X10 F3000\nX20\nG1 X20.01 F6000\n",
+        on_timed_move=lambda move, joints, timing: seen.append((move.line, timing)))
+    assert [line for line, _ in seen] == [1, 2, 3]
+    first, second, third = (timing for _, timing in seen)
+    assert first.start == 0.0 and first.end == second.start and first.speed == 50.0 == second.speed
+    # the last 0.01 mm: the machine arrives as fast as it can still stop in it, and cannot speed up
+    assert third.speed == pytest.approx(math.sqrt(2 * ACCEL * 0.01))
+    assert third.end == pytest.approx(rest_to_rest(20.01, 50.0), rel=1e-3)
 
 
 def test_limits_report(tmp_path: Path) -> None:
