@@ -24,6 +24,7 @@ from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
+from .limits import DEFAULT_MAX_STEPS
 from .parser import check_file, parse_file, parse_text, read_statements
 from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
@@ -80,7 +81,7 @@ class RunOptions:
     macro: Path | None = None
     user_macro: Path | None = None
     host: Host = field(default_factory=Host)
-    max_steps: int | None = None
+    max_steps: int | None = DEFAULT_MAX_STEPS  # None: no budget at all
     trace: Path | None = None
     samples: Path | None = None
     log_dir: Path | None = None
