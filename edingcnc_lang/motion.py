@@ -375,7 +375,7 @@ class MotionStage:
         fastest = move.feed <= 0.0 or move.kind == "home"
         joint_timed = not self._identity() and move.kind != "home"
         joint_velocity = self._joint_limits.velocity * (self._rapid_velocity_factor if fastest else 1.0)
-        feed = move.feed / 60.0 * self.planner.overrides.feed_factor
+        feed = move.feed / 60.0 * (1.0 if move.sync > 0.0 else self.planner.overrides.feed_factor)
         speed = feed if not fastest else _first_guess(geo, limits.velocity)
         for attempt in range(PLAN_PASSES + 1):
             t, pos = geo.sample(speed, dt)

@@ -23,7 +23,7 @@ from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage
-from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
+from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
 from .limits import DEFAULT_MAX_STEPS
 from .parser import check_file, parse_file, parse_text, read_statements
 from .planner.estimate import Estimate, Timing
@@ -31,7 +31,7 @@ from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
 from .stages import STAGES, Pipeline
 
-PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
+PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
 
 @dataclass
@@ -50,6 +50,7 @@ class RunResult:
     ended_by: str = "end of file"   # "M2", "M30" or "end of file"
     error: str | None = None  # the formatted message of the error that stopped the run
     error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
+    spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
     estimate: Estimate = field(default_factory=Estimate)  # how long the run took, as planned
     limits: dict[str, Any] = field(default_factory=dict)  # the limits report (see docs/planner.md)
 
@@ -67,6 +68,7 @@ class RunResult:
             "moves": self.moves,
             "modal": self.modal,
             "ended_by": self.ended_by,
+            "spindle": self.spindle,
             "estimate": self.estimate.to_json(),
             "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
@@ -84,6 +86,7 @@ class RunOptions:
     max_steps: int | None = DEFAULT_MAX_STEPS  # None: no budget at all
     trace: Path | None = None
     samples: Path | None = None
+    events: Path | None = None
     log_dir: Path | None = None
     allow_exec: bool = False
     simulation: bool = True
@@ -114,6 +117,8 @@ class Run:
             sinks.append(TraceWriter(ensure_parent(options.trace)))
         if options.samples:
             sinks.append(SamplesWriter(ensure_parent(options.samples)))
+        if options.events:
+            sinks.append(EventsWriter(ensure_parent(options.events)))
         if options.on_move or options.on_event or options.on_timed_move:
             sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
         self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
@@ -218,7 +223,7 @@ class Run:
         modal_codes.append(motion if motion in t.CANNED_CYCLES else t.code_key(80))
         kin = self.kinematics
         return RunResult(
-            position=tuple(interp.work_position()),  # type: ignore[arg-type]
+            position=tuple(interp.reported_position()),  # type: ignore[arg-type]
             machine=tuple(interp.pos),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
@@ -230,6 +235,7 @@ class Run:
             ended_by=interp.ended_by,
             error=error.format() if error else None,
             error_record=error.to_json() if error else None,
+            spindle=interp.spindle_state(),
             estimate=self.planner.estimate,
             limits=self.planner.limits.to_json(),
         )

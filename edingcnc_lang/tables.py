@@ -30,6 +30,7 @@ G_GROUPS: Mapping[int, str] = _groups({
     "plane": (17, 18, 19),
     "distance": (90, 91),
     "feed_mode": (93, 94, 95),
+    "spindle_mode": (96, 97),
     "units": (20, 21, 70, 71),
     "cutter_comp": (40, 41, 42, 41.1, 42.1),
     "length_offset": (43, 43.1, 49),
@@ -52,6 +53,14 @@ M_GROUPS: Mapping[int, str] = _groups({
     "overrides": (48, 49, 50, 51),
     "io": (54, 55, 56, 57),
     "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97),
+})
+
+# G codes other controllers know, with what to use on EdingCNC (shown with "unknown G code").
+UNKNOWN_G_HINTS: Mapping[int, str] = MappingProxyType({
+    code_key(7): "LinuxCNC's diameter mode is not an EdingCNC code; a lathe takes X as a diameter "
+                 "when cnc.ini sets [INTERPRETER] diameterProgramming = 1",
+    code_key(8): "LinuxCNC's radius mode is not an EdingCNC code; a lathe takes X as a radius "
+                 "when cnc.ini sets [INTERPRETER] diameterProgramming = 0",
 })
 
 # G codes that take the axis words of their line (so a motion on the same line may not).
@@ -133,6 +142,7 @@ COORD_SYSTEM_CODES = tuple(code_key(c) for c in (54, 55, 56, 57, 58, 59, 59.1, 5
 ORDER_OF_EXECUTION: tuple[tuple[str, str, str], ...] = (
     ("feed_mode", "G", "feed_mode"),
     ("feed", "word", "F"),
+    ("spindle_mode", "G", "spindle_mode"),
     ("spindle_speed", "word", "S"),
     ("tool_select", "word", "T"),
     ("tool_change", "M", "tool_change"),

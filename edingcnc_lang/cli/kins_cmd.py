@@ -15,7 +15,7 @@ import click
 from ..errors import EXIT_OK
 from .base import Argument, Command, LazyGroup, usage_error
 from .options import ini_option, json_option
-from .params import EXISTING_FILE, OUTPUT_FILE
+from .params import EXISTING_FILE, KINEMATICS_NAME, OUTPUT_FILE
 
 if TYPE_CHECKING:
     from ..kinematics.base import Kinematics, Pose
@@ -95,7 +95,7 @@ def _conversion(name: str, summary: str, values: str) -> click.Command:
     def decorate(func: click.decorators.FC) -> click.Command:
         func = click.argument("values", metavar=values, nargs=-1, required=True, type=float, cls=Argument)(func)
         func = ini_option("cnc.ini whose [KINEMATICS] section configures the plug-in.")(func)
-        func = click.argument("name", metavar="NAME")(func)
+        func = click.argument("name", metavar="NAME", type=KINEMATICS_NAME)(func)
         return click.command(name, cls=Command, short_help=summary,
                              help=f"{summary}\n\nNAME is a registered name (see list) or the path of a .so or .py "
                                   "plug-in.")(func)

@@ -89,7 +89,8 @@ class Planner:
         self._feed.append(move.feed)
         self._kind.append(KIND_CODES[move.kind])
         self._cap.append(cap)
-        self._state.append(self._state_id(limit, limit))
+        # a spindle-synchronised cut (G33, G76) follows the spindle: the feed override does not act on it
+        self._state.append(self._state_id(limit, limit, 1.0 if move.sync > 0.0 else self.overrides.feed_factor))
         self._joints.append(None if samples is None else samples.joints)
         self._sampled += samples is not None
         self._queue.append(("move", move, joints))
@@ -111,7 +112,9 @@ class Planner:
         self._feed.extend([item[3] for item in batch])
         self._kind.extend([STRAIGHT] * count)
         self._cap.extend([math.inf] * count)
-        self._state.extend([self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]))] * count)
+        state = self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]),
+                               self.overrides.feed_factor)
+        self._state.extend([state] * count)
         self._joints.extend([None] * count)
         self._queue.append(("batch", path, list(batch)))
         self._after_add()
@@ -169,12 +172,12 @@ class Planner:
             self._limit_sets.append((limits.velocity, limits.acceleration))
         return index
 
-    def _state_id(self, rapid_limits: int, other_limits: int) -> int:
+    def _state_id(self, rapid_limits: int, other_limits: int, feed_factor: float) -> int:
         """The index of the machine state a move runs in: path control, tolerance, feed override, limits.
 
         It changes rarely, so moves keep an index into a small table instead of five values each.
         """
-        state = (self.exact_stop, self.tolerance, self.overrides.feed_factor, rapid_limits, other_limits)
+        state = (self.exact_stop, self.tolerance, feed_factor, rapid_limits, other_limits)
         index = self._state_index.get(state)
         if index is None:
             index = self._state_index[state] = len(self._states)

@@ -37,7 +37,7 @@ def test_feed_move_is_sampled_every_interpolation_time(run_job, tmp_path: Path) 
     assert data[-1, 0] == pytest.approx(1.001) and data[-1, 1] == 10.0
     cruise = data[:200]                                                # speeding up takes 0.001 s, 0.005 mm
     np.testing.assert_allclose(cruise[:, 1], 10.0 * cruise[:, 0] - 0.005, atol=1e-12)
-    np.testing.assert_allclose(cruise[:, 13], 10.0)                    # v: the feed
+    np.testing.assert_allclose(cruise[:, 14], 10.0)                    # v: the feed
     np.testing.assert_array_equal(data[:, 7:13], data[:, 1:7])         # trivial: joints = position
 
 
