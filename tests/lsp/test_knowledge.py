@@ -19,7 +19,7 @@ def test_every_named_system_parameter_has_a_name() -> None:
     named = {name: value for name, value in vars(tables).items()
              if name.isupper() and isinstance(value, int) and 5000 < value < 6000}
     for name, number in named.items():
-        if number % 100 == 0:  # the tool tables: the base plus the tool number 1..99
+        if name.startswith("TOOL_") and number % 100 == 0:  # the tool tables: the base plus the tool number
             assert knowledge.variable(number + 1) and knowledge.variable(number + tables.MAX_TOOL), name
         else:
             assert knowledge.variable(number) is not None, name
@@ -68,4 +68,15 @@ def test_every_grammar_command_is_in_the_table() -> None:
         names |= set(alternatives.group(1).split("|"))
     names |= {"dlgmsg", "logfile", "home", "hometandem", "kin", "preparelindeltahome"}
     for name in names:
-        assert knowledge.word(name) is not None, name
+        assert knowledge.word(name) is not None, f"add a row for {name} to edingcnc_lang/knowledge/commands.py"
+
+
+def test_ecnc_help_explains_language_words_from_the_table() -> None:
+    from tests.cli_runner import invoke
+
+    for topic in ("G38.2", "m6", "#5067", "dlgmsg"):
+        result = invoke("help", topic)
+        assert result.exit_code == 0 and result.stdout.strip() == knowledge.describe(topic)
+    assert invoke("lint", "--explain", "G1").stdout.startswith("G1: straight feed move")
+    assert invoke("help", "G503").stdout.startswith("G503 (error)")  # the lint code wins
+    assert invoke("help", "G999").exit_code == 2
