@@ -9,7 +9,10 @@ from edingcnc_lang.kinematics.shipped import header_dir
 
 
 def build_plugin(source: Path, output: Path | None = None, cc: str = "cc") -> Path:
-    """Run ``cc -shared -fPIC -O2 -I<header dir> SOURCE -o OUTPUT -lm``; OUTPUT defaults to SOURCE.so."""
+    """Run ``cc -shared -fPIC -O2 -I<header dir> SOURCE -o OUTPUT -lm``; OUTPUT defaults to SOURCE.so.
+
+    The library is then checked for every required export, so a missing function fails the build.
+    """
     source = Path(source)
     target = Path(output) if output is not None else source.with_suffix(".so")
     if not source.is_file():
@@ -23,4 +26,10 @@ def build_plugin(source: Path, output: Path | None = None, cc: str = "cc") -> Pa
     if result.returncode != 0:
         raise PluginError(f"compiling {source} failed (exit {result.returncode}):\n"
                           f"{(result.stderr or result.stdout).strip()}")
+    from edingcnc_lang.kinematics.ctypes_plugin import missing_exports
+
+    missing = missing_exports(target)
+    if missing:
+        raise PluginError(f"{target} was built but does not export {', '.join(missing)}: a kinematics plug-in "
+                          "must define every function of kinematics.h (see docs/kinematics.md)")
     return target
