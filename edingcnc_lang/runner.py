@@ -234,7 +234,7 @@ class Run:
         kin = self.kinematics
         return RunResult(
             position=tuple(interp.reported_position()),  # type: ignore[arg-type]
-            machine=tuple(interp.pos),  # type: ignore[arg-type]
+            machine=interp.machine_frame(interp.pos),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
             messages=list(interp.messages),
