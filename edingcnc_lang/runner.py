@@ -141,29 +141,39 @@ class Run:
         user = opts.user_macro or cfg.user_macro_file
         return [p for p in (user, main) if p is not None]
 
+    def load_macros(self) -> list[tuple[Path, n.Program]]:
+        """The macro files, parsed, in lookup order."""
+        return [(path, parse_file(path)) for path in self.macro_files()]
+
+    def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
+        """What happens before a job's first line (and before an MDI session's): the macro files'
+        subs are defined and their top-level lines run, then the ini's initialString."""
+        interp = self.interpreter
+        for _path, program in macros:
+            interp.define_subs(program.subs.values())
+        for _path, program in reversed(macros):  # top-level statements of macro files run once at load
+            interp.run(program.body)
+        if self.config.initial_string:
+            interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+
     def execute_file(self, job: Path) -> RunResult:
         checked = check_file(job)
-        macros = [(path, parse_file(path)) for path in self.macro_files()]
+        macros = self.load_macros()
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
                              checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
         program = parse_text(text, path)
-        macros = [(p, parse_file(p)) for p in self.macro_files()]
+        macros = self.load_macros()
         return self._execute(lambda: program.body, program.subs, macros)
 
     def _execute(self, statements: Callable[[], Iterable[n.Stmt]], job_subs: dict[str, n.Sub],
                  macros: Sequence[tuple[Path, n.Program]]) -> RunResult:
         interp = self.interpreter
         interp.define_subs(job_subs.values())
-        for _path, program in macros:
-            interp.define_subs(program.subs.values())
         error: EcncError | None = None
         try:
-            for _path, program in reversed(macros):  # top-level statements of macro files run once at load
-                interp.run(program.body)
-            if self.config.initial_string:
-                interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+            self.start(macros)
             if "start" in interp.subs:
                 interp.call_sub("start")
             interp.run(statements())
