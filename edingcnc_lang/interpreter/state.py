@@ -74,7 +74,6 @@ G_93 = G(93)
 G_94 = G(94)
 G_95 = G(95)
 G_96 = G(96)
-G_97 = G(97)
 G_98 = G(98)
 G_99 = G(99)
 
@@ -140,6 +139,8 @@ class MachineState:
         self.params = Parameters(self._live_param, self._offsets_changed)
         self.evaluator = Evaluator(self.params)
         self.modal: dict[str, int] = dict(DEFAULT_MODAL)
+        if not self.config.g64_active:  # [INTERPRETER] g64Active = 0: the machine starts in exact stop
+            self.modal["path_control"] = t.code_key(61)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
         self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
@@ -155,6 +156,8 @@ class MachineState:
         self.g92_active = False
         self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
+        self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
+        self._sent_pivot: tuple[float, float] | None = None     # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}
