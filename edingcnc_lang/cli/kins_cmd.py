@@ -54,19 +54,24 @@ def _switched_on(name: str, ini: str | None) -> Kinematics:
 def _pose(values: Sequence[float], names: Sequence[str]) -> Pose:
     if not 3 <= len(values) <= 6:
         raise usage_error(f"expected 3 to 6 numbers ({' '.join(n.upper() for n in names)}), got {len(values)}")
+    import math
+
+    for name, value in zip(names, values):
+        if not math.isfinite(value):
+            raise usage_error(f"{name.upper()} must be a finite number, not {value}")
     x, y, z, a, b, c = (*values, *[0.0] * (6 - len(values)))
     return (x, y, z, a, b, c)
 
 
-def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str, given: Pose) -> None:
-    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity out of finite input is the
-    plug-in's error."""
+def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str) -> None:
+    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity (from finite input, which
+    ``_pose`` ensures) is the plug-in's error."""
     import json
     import math
 
     from ..errors import PluginError
 
-    if all(math.isfinite(v) for v in given) and not all(math.isfinite(v) for v in values):
+    if not all(math.isfinite(v) for v in values):
         shown = " ".join(f"{n}={v}" for n, v in zip(names, values))
         raise PluginError(f"kinematics plug-in {plugin!r}: {call} returned a value that is not a finite number "
                           f"({shown}); a plug-in must raise KinematicsDomainError for a pose out of reach")
@@ -75,19 +80,39 @@ def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str, give
 
 @click.command("list", cls=Command, short_help="Registered kinematics: name, type and version (tab separated).")
 @json_option("Print a JSON array instead of a table.")
-def list_kinematics(as_json: bool) -> int:
-    """Registered kinematics: name, type and version (tab separated)."""
+@ini_option("Also list the plug-in this cnc.ini names (kinematicsDLLName), loaded with its settings.")
+def list_kinematics(as_json: bool, ini: str | None) -> int:
+    """Registered kinematics: name, type and version (tab separated); with --ini also the ini's plug-in."""
     import json
 
     from ..kinematics.loader import available_kinematics
 
     rows = available_kinematics()
+    if ini:
+        rows.append(_ini_plugin(Path(ini)))
     if as_json:
         print(json.dumps([{"name": n, "type": t, "version": v} for n, t, v in rows]))
     else:
         for name, kin_type, version in rows:
             print(f"{name}\t{kin_type}\t{version}")
     return EXIT_OK
+
+
+def _ini_plugin(ini: Path) -> tuple[str, int, str]:
+    """(name as the ini writes it, type, version) of the ini's plug-in; a broken one says why, as in the list."""
+    from ..errors import PluginError
+    from ..ini import read_ini
+    from ..kinematics.loader import load_kinematics
+
+    name = read_ini(ini).get_str("KINEMATICS", "kinematicsDLLName", "").strip()
+    if not name:
+        raise usage_error(f"{ini} names no kinematics plug-in ([KINEMATICS] kinematicsDLLName)")
+    settings, search_dirs = _settings(ini)
+    try:
+        kins = load_kinematics(name, settings, search_dirs)
+    except PluginError as err:
+        return name, 0, f"failed to load: {err.message}"
+    return name, kins.kin_type(), kins.version()
 
 
 def _conversion(name: str, summary: str, values: str) -> click.Command:
@@ -107,7 +132,7 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
-    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse", pos)
+    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse")
     return EXIT_OK
 
 
@@ -116,7 +141,7 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
-    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward", joints)
+    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward")
     return EXIT_OK
 
 
