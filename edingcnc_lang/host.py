@@ -6,6 +6,7 @@ target).  Nothing here is global: each run gets its own Host.
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -45,6 +46,8 @@ class DialogAnswer:
                 values[int(name.strip()[1:])] = float(value)
             except ValueError:
                 raise ValueError(f"answer {text!r}: field {item!r} is not #N=V") from None
+            if not math.isfinite(values[int(name.strip()[1:])]):
+                raise ValueError(f"answer {text!r}: field {item!r} is not a finite number")
         return cls(head == "ok", values)
 
 

@@ -1,6 +1,7 @@
 """Messages, dialogs and the log file (msg, warnmsg, errmsg, dlgmsg, logmsg, logfile)."""
 from __future__ import annotations
 
+import math
 import os
 import stat
 from collections.abc import Mapping
@@ -64,6 +65,10 @@ class Messages(MachineState):
         unknown = set(answer.values) - {f.index for f in fields}
         if unknown:
             raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)
+        endless = sorted(i for i, v in answer.values.items() if not math.isfinite(v))
+        if endless:  # a host's answer; the CLI refuses these already
+            raise self.fail(f"the answer sets #{endless[0]} to {answer.values[endless[0]]}, not a finite number",
+                            stmt.span)
         if answer.ok:
             for index, value in answer.values.items():
                 self.params.write(index, value, self.where(stmt.span))

@@ -100,7 +100,10 @@ class CallFrame:
 
 
 def format_value(value: float) -> str:
-    """How numbers appear in messages: integers plainly, others with up to 4 decimals."""
+    """How numbers appear in messages: integers plainly, others with up to 4 decimals; an infinite
+    or NaN value (only an embedding program can make one) as ``inf``, ``-inf`` or ``nan``."""
+    if not math.isfinite(value):
+        return str(value)
     if value == int(value) and abs(value) < 1e15:
         return str(int(value))
     return f"{value:.4f}".rstrip("0").rstrip(".")

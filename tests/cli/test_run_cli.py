@@ -217,6 +217,19 @@ def test_answers_in_order(tmp_path: Path) -> None:
     assert (v["27"], v["28"], v["100"], v["101"], v["102"]) == (5.0, 2.0, 1.0, -1.0, 1.0)
 
 
+@pytest.mark.parametrize("answer", ["ok:#27=1e400", "ok:#27=nan", "ok:#27=-inf"])
+def test_a_non_finite_answer_is_a_usage_error(tmp_path: Path, answer: str) -> None:
+    result = run_job(tmp_path, 'dlgmsg "Maße" "Breite" 27 "Höhe" 28\nmsg "b=" #27\n', "--answer", answer)
+    assert result.exit_code == 2 and "not a finite number" in result.stderr and "Traceback" not in result.output
+
+
+def test_an_infinite_ini_variable_is_a_located_config_error(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[VARIABLES]\r\n#4002 = 1e999\r\n")
+    result = run_job(tmp_path, 'msg "v=" #4002\n', "--ini", ini)
+    assert result.exit_code == 70 and result.stderr.startswith(f"{ini}:2: error: #4002 in [VARIABLES]")
+
+
 def test_max_steps(tmp_path: Path) -> None:
     result = run_job(tmp_path, "While [1]\n  G4 P0.1\nEndWhile\n", "--max-steps", "100")
     assert result.exit_code == 70

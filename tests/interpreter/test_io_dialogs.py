@@ -9,6 +9,7 @@ import pytest
 
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.host import DialogAnswer, DialogField, Host, scripted_dialogs
+from edingcnc_lang.interpreter.state import format_value
 from edingcnc_lang.runner import RunOptions, RunResult, run_file, run_string
 
 EMPTY_MACRO = Path(__file__).parent / "data" / "empty_macro.cnc"
@@ -107,6 +108,18 @@ def test_dialog_answer_for_a_parameter_that_is_not_a_field_is_an_error() -> None
     assert "#29" in error_of(DIALOG, host=answering("ok:#29=1")).message
 
 
+@pytest.mark.parametrize("value", [float("inf"), float("nan")])
+def test_a_host_answering_a_non_finite_value_is_an_error_at_the_dlgmsg(value: float) -> None:
+    host = Host(dialog=scripted_dialogs([DialogAnswer(True, {27: value})]))
+    err = error_of(DIALOG, host=host)
+    assert "#27" in err.message and "not a finite number" in err.message and str(err.location) == "job.nc:3:1"
+
+
+def test_non_finite_values_format_as_inf_and_nan() -> None:
+    assert [format_value(v) for v in (float("inf"), float("-inf"), float("nan"), 2.0, 0.5)] == [
+        "inf", "-inf", "nan", "2", "0.5"]
+
+
 def test_dialog_with_15_fields_is_fine_and_16_is_an_error() -> None:
     fields = " ".join(f'"f{i}" {30 + i}' for i in range(16))
     run(f'dlgmsg "T" {" ".join(fields.split(" ")[:30])}\n')
@@ -124,7 +137,8 @@ def test_answer_texts_parse(text: str) -> None:
     DialogAnswer.parse(text)
 
 
-@pytest.mark.parametrize("text", ["yes", "cancel:#27=1", "ok:27=5", "ok:#27", "ok:#x=1", "ok:#27=abc"])
+@pytest.mark.parametrize("text", ["yes", "cancel:#27=1", "ok:27=5", "ok:#27", "ok:#x=1", "ok:#27=abc",
+                                  "ok:#27=1e400", "ok:#27=nan", "ok:#27=-inf"])
 def test_bad_answer_texts_are_refused(text: str) -> None:
     with pytest.raises(ValueError):
         DialogAnswer.parse(text)
