@@ -254,7 +254,11 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
     """A failed write, naming the file: the error's own, else the output files the run writes.
 
     A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
+    A closed pipe (``ecnc run --trace - | head``) is no failure of the run: it is raised again, so
+    the CLI ends quietly with exit 1 as after any closed pipe.
     """
+    if isinstance(err, BrokenPipeError):
+        raise err
     names = ["standard output" if str(p) == "-" else str(p) for p in outputs if p is not None]
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 
