@@ -22,10 +22,18 @@ class Code:
     code: str
     severity: Severity
     summary: str
+    versions: frozenset[str] = frozenset()  # the controller versions it describes (empty: all)
 
 
 def _table(*rows: tuple[str, Severity, str]) -> dict[str, Code]:
-    return {code: Code(code, severity, summary) for code, severity, summary in rows}
+    return {code: Code(code, severity, summary, VERSIONS.get(code, frozenset()))
+            for code, severity, summary in rows}
+
+
+# Findings that describe one controller version's behaviour (ecnc lint --target).
+VERSIONS: dict[str, frozenset[str]] = {
+    "F600": frozenset({"5"}),  # G1290 "Macro does not specify unit" is EdingCNC 5's
+}
 
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -62,13 +70,14 @@ CODES: dict[str, Code] = _table(
     ("D402", E, "dlgmsg items out of order: a value where a label belongs (EdingCNC G1167)"),
     ("D403", E, "dlgmsg field index written with '#' (EdingCNC G1167)"),
     ("G500", E, "two words of one modal group on a line"),
-    ("G501", E, "G53 without G0 or G1 on the line"),
+    ("G501", E, "G53 without G0, G1 or G38.2 on the line"),
     ("G502", E, "G2/G3 arc without I, J, K or R"),
     ("G503", E, "feed rate 0 on a feed or probe move (EdingCNC G1516)"),
     ("G504", W, "G38.2 outside the simulation guard"),
     ("G505", W, "G38.2 without a #5067 check after it"),
     ("G506", E, "tool number over 99"),
     ("G507", E, "more than 4 M words on a line"),
+    ("G508", E, "G or M code the controller does not know (e.g. lathe G7 on a mill)"),
     ("F600", E, "macro file without an @unit directive on its first line (EdingCNC G1290)"),
     ("F601", W, "line longer than 256 characters"),
     ("F602", E, "line longer than 1055 characters"),

@@ -14,14 +14,16 @@ from bisect import bisect_left
 from array import array
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import islice
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 
 from . import nodes as n
+from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
+from .dialogs import SYNTAX_CODES, dialog_fields
 from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
 from .markers import Close, LineResult, Open
 from .source import iter_file_lines, iter_text_lines
@@ -117,9 +119,12 @@ class _Builder:
         _, y, _slash, x = tree.children
         return n.Call("ATAN", (self.expr(y), self.expr(x)), self.span(tree))
 
+    def _atan1(self, tree: Tree) -> n.Expr:
+        return n.Call("ATAN", (self.expr(tree.children[1]),), self.span(tree))
+
     _EXPR: dict[str, Callable[["_Builder", Tree], n.Expr]] = {
         "number": _number, "param": _param, "unary": _unary, "binary": _binary,
-        "compare": _compare, "call": _call, "atan": _atan,
+        "compare": _compare, "call": _call, "atan": _atan, "atan1": _atan1,
     }
 
     # statements -------------------------------------------------------------
@@ -174,8 +179,15 @@ class _Builder:
         return n.GoSub(str(tree.children[1]), self.span(tree))
 
     def _items(self, children: list[Tree | Token]) -> tuple[n.MessageItem, ...]:
-        return tuple(str(c)[1:-1] if isinstance(c, str) and _strip(c.type) == "STRING"
-                     else self.expr(c) for c in children)
+        return tuple(self._item(c) for c in children)
+
+    def _item(self, child: Tree | Token) -> n.MessageItem:
+        kind = _strip(child.type) if isinstance(child, str) else ""
+        if kind == "STRING":
+            return str(child)[1:-1]
+        if kind == "STAMP":
+            return n.Stamp(self.span(child))
+        return self.expr(child)
 
     def _message(self, tree: Tree) -> n.Stmt:
         kind = str(tree.children[0]).lower()
@@ -365,6 +377,9 @@ def _scan_delimiters(text: str) -> _LineError | None:
 
 _WORD_BEFORE = re.compile(r"([A-Za-z])[ \t]*[^\sA-Za-z;(]*$")
 _CONDITION_LINE = re.compile(r"^\s*(if|while)(?![a-z0-9_])", re.IGNORECASE)
+# In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
+# such as "If the probe does not trip, ..." must not open a block.
+_TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
 
 
 def _explain(text: str, exc: UnexpectedInput) -> _LineError:
@@ -472,8 +487,16 @@ class StatementReader:
     """
 
     def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree",
-                 non_plain: Sequence[int] | None = None) -> None:
+                 non_plain: Sequence[int] | None = None, tolerant: bool = False,
+                 check_dialogs: bool | None = None) -> None:
         self.path = path
+        # A tolerant read (macro files) keeps a line that does not parse as a BadLine statement and
+        # lists it in ``warnings``: the controller only fails on the lines it executes.
+        self.tolerant = tolerant
+        self.warnings: list[Diagnostic] = []
+        # The dlgmsg shapes the controller calls a syntax error although the grammar takes them (G1167):
+        # a job's check reports them before anything moves.
+        self.check_dialogs = mode == "check" if check_dialogs is None else check_dialogs
         # How plain word lines (most of a CAM job) are delivered: "tree" as Block nodes like any
         # line; "check" not at all at the top level (checking keeps nothing); "run" as PlainRun
         # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute.
@@ -535,14 +558,12 @@ class StatementReader:
         try:
             result = parse_line(text, path, lineno)
         except _LineError as err:
-            self._error(err.code, err.message, lineno, err.col, text)
-            opener = _CONDITION_LINE.match(text)
-            if opener:  # keep the block structure so its EndIf/EndWhile still matches
-                span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
-                stack.append(_Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text))
+            yield from self._bad_line(stack, err, text, lineno)
             return
         if result is None:
             return
+        if self.check_dialogs and isinstance(result, n.Dialog):
+            self._check_dialog(result, text)
         if isinstance(result, Open):
             if result.kind == "Sub" and stack:
                 self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
@@ -557,6 +578,37 @@ class StatementReader:
             stack[-1].add(result)
         else:
             yield result
+
+    def _bad_line(self, stack: list[_Frame], err: _LineError, text: str, lineno: int) -> Iterator[n.Stmt]:
+        """A line that does not parse: an error, or (tolerant) a warning and a BadLine in its place."""
+        path = self.path
+        opener = (_TOLERANT_CONDITION if self.tolerant else _CONDITION_LINE).match(text)
+        if self.tolerant:
+            self.warnings.append(replace(Diagnostic.make(err.code, err.message, path, lineno, err.col, text),
+                                         severity=Severity.WARNING))
+            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1))
+            if opener is None and stack:
+                stack[-1].add(bad)
+            elif opener is None:
+                yield bad
+        else:
+            self._error(err.code, err.message, lineno, err.col, text)
+        if opener:  # keep the block structure so its EndIf/EndWhile still matches
+            span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
+            frame = _Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0)),
+                           text)
+            if self.tolerant:  # the block is there, but reaching its head is the error
+                frame.add(n.BadLine(err.code, err.message, err.col, span))
+            stack.append(frame)
+
+    def _check_dialog(self, dialog: n.Dialog, text: str) -> None:
+        """Report the dlgmsg shapes the controller refuses when it reads the line (G1167)."""
+        for problem in dialog_fields(dialog)[1]:
+            if problem.code in SYNTAX_CODES:
+                item = problem.item
+                col = (text.find(f'"{item}"') + 1 or dialog.span.col) if isinstance(item, str) \
+                    else (item.span.col if item is not None else dialog.span.col)
+                self._error(problem.code, problem.message, dialog.span.line, col, text)
 
     def raise_errors(self) -> None:
         """Raise SyntaxErrors with every diagnostic, in line order, if there is any."""
@@ -622,9 +674,10 @@ class StatementReader:
 # --------------------------------------------------------------------------- whole files
 
 def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
-                    non_plain: Sequence[int] | None = None) -> StatementReader:
+                    non_plain: Sequence[int] | None = None, tolerant: bool = False) -> StatementReader:
     """A streaming reader over a file (statements are parsed as you iterate); see StatementReader."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain)
+    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain,
+                           tolerant=tolerant)
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,9 @@ from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage, MoveSink
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
-from .parser import check_file, parse_file, parse_text, read_statements
+from .diagnostics import Diagnostic
+from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
+from .source import iter_text_lines
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
 
@@ -44,6 +46,7 @@ class RunResult:
     modal: list[str]
     ended_by: str = "end of file"   # "M2", "M30" or "end of file"
     error: str | None = None
+    warnings: list[Diagnostic] = field(default_factory=list)  # macro lines that do not parse (tolerant load)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -60,6 +63,7 @@ class RunResult:
             "modal": self.modal,
             "ended_by": self.ended_by,
             **({"error": self.error} if self.error else {}),
+            **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
         }
 
 
@@ -81,6 +85,8 @@ class RunOptions:
     save_vars: bool = False
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
+    strict: bool = False  # macro lines that do not parse are errors at load, not warnings
+    on_warning: Callable[[Diagnostic], None] | None = None  # each load warning, once, as it is found
 
 
 def packaged_macro() -> Path:
@@ -93,6 +99,7 @@ class Run:
 
     def __init__(self, options: RunOptions) -> None:
         self.options = options
+        self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         self.kinematics = self._load_kinematics()
         sinks: list[MoveSink] = []
@@ -132,15 +139,31 @@ class Run:
         user = opts.user_macro or cfg.user_macro_file
         return [p for p in (user, main) if p is not None]
 
+    def load_macro(self, path: Path) -> n.Program:
+        """A macro file as the controller loads it: lines that do not parse wait (as BadLine) until
+        a run reaches them, each reported once as a warning; ``strict`` makes them errors here."""
+        if self.options.strict:
+            return parse_file(path)
+        reader = read_statements(path, tolerant=True)
+        body = tuple(reader)
+        reader.raise_errors()  # block structure (Sub/EndSub, If/EndIf) must still be right
+        for warning in reader.warnings:
+            self.warnings.append(warning)
+            if self.options.on_warning:
+                self.options.on_warning(warning)
+        return n.Program(reader.path, body, reader.unit)
+
     def execute_file(self, job: Path) -> RunResult:
         checked = check_file(job)
-        macros = [(path, parse_file(path)) for path in self.macro_files()]
+        macros = [(path, self.load_macro(path)) for path in self.macro_files()]
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
                              checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
-        program = parse_text(text, path)
-        macros = [(p, parse_file(p)) for p in self.macro_files()]
+        reader = StatementReader(iter_text_lines(text), path, check_dialogs=True)
+        program = n.Program(path, tuple(reader), reader.unit)
+        reader.raise_errors()
+        macros = [(p, self.load_macro(p)) for p in self.macro_files()]
         return self._execute(lambda: program.body, program.subs, macros)
 
     def _execute(self, statements: Callable[[], Iterable[n.Stmt]], job_subs: dict[str, n.Sub],
@@ -152,7 +175,8 @@ class Run:
         error: EcncError | None = None
         try:
             for _path, program in reversed(macros):  # top-level statements of macro files run once at load
-                interp.run(program.body)
+                # (prose between subs is never executed: the controller only runs a macro file's subs)
+                interp.run(stmt for stmt in program.body if not isinstance(stmt, n.BadLine))
             if self.config.initial_string:
                 interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
             if "start" in interp.subs:
@@ -198,6 +222,7 @@ class Run:
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
             ended_by=interp.ended_by,
             error=error.format() if error else None,
+            warnings=list(self.warnings),
         )
 
 

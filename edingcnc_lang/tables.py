@@ -54,6 +54,14 @@ M_GROUPS: Mapping[int, str] = _groups({
     "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97),
 })
 
+# G codes from other controllers that turn up in EdingCNC files, and what they mean there: the
+# controller stops on any G code it does not know, these get a name in the message.
+FOREIGN_G: Mapping[int, str] = MappingProxyType({code_key(c): what for c, what in (
+    (7, "lathe diameter mode"), (8, "lathe radius mode"), (96, "lathe constant surface speed"),
+    (97, "lathe constant spindle speed"), (90.1, "absolute arc centres of LinuxCNC"),
+    (91.1, "incremental arc centres of LinuxCNC"), (15, "polar coordinates off"), (16, "polar coordinates on"),
+)})
+
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
 

@@ -41,6 +41,9 @@ def add_parser(commands: Subcommands) -> None:
                         help="Only these codes or prefixes (E,S208,G5).")
     parser.add_argument("--ignore", metavar="CODES", type=_codes, default=(),
                         help="Leave out these codes or prefixes.")
+    parser.add_argument("--target", metavar="VERSION", choices=("4.03", "5"),
+                        help="Controller version the findings describe: 4.03 or 5 (default: [tool.ecnc] target "
+                             "in pyproject.toml/ecnc.toml, else the --ini's version line, else 5).")
     parser.add_argument("--no-source", action="store_true", help="Text format: leave out the source line and caret.")
     parser.add_argument("--list-codes", dest="show_codes", action="store_true",
                         help="Print every code with its severity and summary.")
@@ -56,7 +59,8 @@ def lint(args: argparse.Namespace) -> int:
     if not args.paths and not args.ini:
         raise UsageError("give at least one file or folder to lint")
     with whole_trees():
-        findings = lint_paths(args.paths, LintOptions(args.macro, args.user_macro, args.ini, args.select, args.ignore))
+        findings = lint_paths(args.paths, LintOptions(args.macro, args.user_macro, args.ini, args.select, args.ignore,
+                                                    args.target))
     output = FORMATS[args.fmt](findings, not args.no_source)
     if output or args.fmt != "text":
         print(output)

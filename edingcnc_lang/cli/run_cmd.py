@@ -56,6 +56,9 @@ def add_parser(commands: Subcommands) -> None:
     parser.add_argument("--save-vars", action="store_true", help="Write persistent variables back to the ini.")
     parser.add_argument("--no-simulation", action="store_true", help="Run with #5380 = 0 (as if on the real machine).")
     parser.add_argument("--block-delete", action="store_true", help="Skip lines that start with '/'.")
+    parser.add_argument("--strict", action="store_true",
+                        help="Macro-file lines that do not parse are errors at load (default: warnings, "
+                             "an error only if the run reaches them).")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -78,7 +81,8 @@ def run(args: argparse.Namespace) -> int:
         host=Host(dialog=scripted_dialogs(args.answers), message=show),
         max_steps=args.max_steps, trace=path(args.trace), samples=path(args.samples),
         log_dir=path(args.log_dir), allow_exec=args.allow_exec, simulation=not args.no_simulation,
-        block_delete=args.block_delete, save_vars=args.save_vars)
+        block_delete=args.block_delete, save_vars=args.save_vars, strict=args.strict,
+        on_warning=lambda d: print(d.format(), file=sys.stderr))
     try:
         result = run_file(args.job, options)
     except EcncError as err:

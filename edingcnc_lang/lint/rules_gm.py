@@ -10,6 +10,7 @@ from collections.abc import Iterable, Iterator, Sequence
 from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..tables import (
+    FOREIGN_G,
     G_GROUPS,
     M_GROUPS,
     MAX_M_WORDS,
@@ -28,7 +29,7 @@ from .walk import Scope
 PROBE = code_key(38.2)
 ARCS = frozenset(code_key(c) for c in (2, 3))
 G53 = code_key(53)
-G53_MOTIONS = frozenset(code_key(c) for c in (0, 1))
+G53_MOTIONS = frozenset(code_key(c) for c in (0, 1, 38.2))  # G53 G38.2: probing in machine coordinates
 FEED_MOVES = frozenset(code_key(c) for c in (1, 2, 3, 38.2, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 AXES = frozenset("XYZABC")
 CENTRE = frozenset("IJKR")
@@ -50,6 +51,17 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
                              "put them on separate lines", word.span)
 
 
+@rule("G508")
+def unknown_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """What ``run`` stops on at the first unknown G code, found at the desk."""
+    for block in project.facts(file).blocks:
+        for key, word in block.g:
+            if key not in G_GROUPS:
+                what = f" ({FOREIGN_G[key]})" if key in FOREIGN_G else ""
+                yield at("G508", f"{code_name('G', key)}{what} is not an EdingCNC code: the controller stops "
+                         "here with 'unknown G code'", word.span)
+
+
 @rule("G501", "G502", "G503", "G506", "G507")
 def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for codes in project.facts(file).blocks:
@@ -60,7 +72,7 @@ def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
     block, g = codes.block, dict(codes.g)
     letters = {w.letter: w for w in block.words}
     if G53 in g and not G53_MOTIONS & g.keys():
-        yield at("G501", "G53 (machine coordinates) needs G0 or G1 on the same line, e.g. G53 G0 Z0",
+        yield at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. G53 G0 Z0",
                  g[G53].span)
     arc = next((k for k in g if k in ARCS), None)
     if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
