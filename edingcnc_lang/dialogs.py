@@ -58,7 +58,9 @@ def _problems(dialog: n.Dialog, fields: list[Field]) -> Iterator[Problem]:
             label = item
             labels += 1
             if labels == MAX_FIELDS + 1:
-                yield Problem("D400", f"dlgmsg has more than {MAX_FIELDS} fields: split it into two dialogs", item)
+                total = sum(isinstance(other, str) for other in items[1:])
+                yield Problem("D400", f"dlgmsg has {total} fields; at most {MAX_FIELDS} fit: split it into two dialogs",
+                              item)
             if len(item) > MAX_LABEL:
                 yield Problem("D401", f'label "{item}" is {len(item)} characters; the controller allows '
                               f"{MAX_LABEL} (unnamed string too long): shorten it", item)

@@ -58,6 +58,12 @@ class PluginError(EcncError):
     """A kinematics plug-in that failed to load or raised while running."""
 
 
+class MissingExtra(EcncError):
+    """An optional dependency (an extra such as ``plot``) is not installed: say how to install it."""
+
+    exit_code = EXIT_USAGE
+
+
 class MachineError(EcncError):
     """A runtime error while running a job: errmsg, limits, bad arguments, step budget."""
 

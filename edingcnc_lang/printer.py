@@ -108,8 +108,13 @@ def _(stmt: n.Block, depth: int = 0) -> list[str]:
     if stmt.message is not None:
         parts.append(f"(MSG {stmt.message})")
     parts += [f"{expr_text(a.target)} = {value_text(a.value)}" for a in stmt.assigns]
-    parts += [w.letter + value_text(w.value) for w in stmt.words]
+    parts += [w.letter + word_value_text(w.value) for w in stmt.words]
     return _line(depth, " ".join(parts))
+
+
+def word_value_text(expr: n.Expr) -> str:
+    """A call is bracketed after a word letter: ``A SIN[0]`` printed as ``ASIN[0]`` would read as ASIN."""
+    return bracketed(expr) if isinstance(expr, n.Call) else value_text(expr)
 
 
 @stmt_lines.register

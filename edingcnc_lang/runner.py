@@ -27,6 +27,7 @@ from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
 from .diagnostics import Diagnostic
 from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
 from .source import iter_text_lines
+from .stages import STAGES, Pipeline
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
 
@@ -111,7 +112,8 @@ class Run:
             sinks.append(CallbackSink(options.on_move, options.on_event))
         self.motion = MotionStage(self.config, self.kinematics, sinks, self._write_param,
                                   sample_always=options.samples is not None)
-        self.interpreter = Interpreter(self.motion, self.config, options.host, max_steps=options.max_steps,
+        self.pipeline = Pipeline(STAGES, self.motion, self.config)
+        self.interpreter = Interpreter(self.pipeline.head, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
         # the configured kinematics' type is there from the start; it is not something the job wrote
@@ -190,6 +192,7 @@ class Run:
         except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
             error = _write_error(err)
         finally:
+            error = self._flush(error)
             try:
                 self.motion.close()
             except OSError as err:
@@ -202,6 +205,16 @@ class Run:
             save_variables(self.config.path, {i: v for i, v in interp.params.snapshot_written().items()
                                               if is_persisted(i)})
         return result
+
+    def _flush(self, error: EcncError | None) -> EcncError | None:
+        """Emit the moves the pipeline still holds; on a failed run the first error is the one reported."""
+        try:
+            self.pipeline.flush()
+        except EcncError as err:
+            return error or err
+        except OSError as err:
+            return error or _write_error(err)
+        return error
 
     def result(self, error: EcncError | None = None) -> RunResult:
         interp = self.interpreter

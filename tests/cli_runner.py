@@ -1,11 +1,12 @@
-"""``ecnc`` run in-process for tests: the exit code, and stdout and stderr apart as a script sees them."""
+"""``ecnc`` run in-process for tests with click's ``CliRunner``: the exit code, and stdout and
+stderr apart as a script sees them."""
 from __future__ import annotations
 
-import contextlib
-import io
 from dataclasses import dataclass
 
-from edingcnc_lang.cli import main
+from click.testing import CliRunner
+
+from edingcnc_lang.cli import ecnc
 
 
 @dataclass(frozen=True)
@@ -20,14 +21,9 @@ class Result:
         return self.stdout + self.stderr
 
 
-def invoke(*args: object) -> Result:
-    """``ecnc ARGS...``.  An exception other than SystemExit is not caught: a CLI that would end
-    in a traceback fails the test right there."""
-    stdout, stderr = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
-        try:
-            code = main([str(arg) for arg in args])
-        except SystemExit as stop:  # argparse's own exit: --help, --version, usage errors
-            assert isinstance(stop.code, int), stop.code
-            code = stop.code
-    return Result(code, stdout.getvalue(), stderr.getvalue())
+def invoke(*args: object, input: str | None = None, env: dict[str, str] | None = None) -> Result:  # noqa: A002
+    """``ecnc ARGS...``.  An exception is not caught: a CLI that would end in a traceback fails
+    the test right there."""
+    result = CliRunner().invoke(ecnc, [str(arg) for arg in args], input=input, env=env, catch_exceptions=False,
+                                prog_name="ecnc")
+    return Result(result.exit_code, result.stdout, result.stderr)

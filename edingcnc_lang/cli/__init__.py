@@ -1,78 +1,82 @@
-"""The ``ecnc`` command line: one argparse parser, one module per subcommand.
+"""The ``ecnc`` command line, on click: one module per command, loaded when that command runs.
 
-argparse rather than click: importing click took about a quarter of the start-up of a short
-``ecnc run``.  A subcommand module imports its implementation inside its handler, so ``ecnc --help``
-and each command start without loading what the other commands need (the parser, numpy, ...).
+``COMMANDS`` names each command's module; ``ecnc --help`` and each command start without what the
+other commands need (the parser, numpy, ...), since command modules import their implementation
+inside the command.  ``main()`` reads the command line and turns every outcome into an exit code
+(docs/cli.md): usage errors 2, ``EcncError``s their own code, never a traceback.
 """
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 from collections.abc import Sequence
-from typing import NoReturn
+from typing import Any, NoReturn
+
+import click
 
 from .. import __version__
-from ..errors import EXIT_USAGE, EcncError
-from . import kins_cmd, lint_cmd, parse_cmd, run_cmd
-from .common import Command, CommandParser, UsageError
+from ..errors import EXIT_OK, EXIT_USAGE, EcncError
+from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error
 
 # What click exited with on Ctrl-C and on a closed output pipe; scripts may rely on it.
 EXIT_ABORTED = 1
 
+# Every command: its name and "module:attribute" in this package (see docs/cli.md, "Adding a command").
+COMMANDS = {"kins": "kins_cmd:kins", "lint": "lint_cmd:lint", "parse": "parse_cmd:parse", "run": "run_cmd:run"}
 
-COMMANDS = {"kins": kins_cmd, "lint": lint_cmd, "parse": parse_cmd, "run": run_cmd}
-
-
-def build_parser(argv: Sequence[str] = ()) -> argparse.ArgumentParser:
-    """The command line; built for each call, so defaults such as ``$CC`` are read then.
-
-    When ``argv`` names a command, only that command's parser is built (each costs about a
-    millisecond, mostly argparse looking up translations); otherwise all of them, for the help.
-    """
-    parser = argparse.ArgumentParser(prog="ecnc", allow_abbrev=False,
-                                     description="Parse, run, lint and simulate EdingCNC G-code and macro files.")
-    parser.add_argument("--version", action="version", version=f"ecnc, version {__version__}")
-    commands = parser.add_subparsers(title="commands", metavar="COMMAND", parser_class=CommandParser)
-    named = COMMANDS.get(argv[0]) if argv else None
-    for module in [named] if named else COMMANDS.values():
-        module.add_parser(commands)
-    parser.set_defaults(command=Command(parser, None))
-    return parser
+COMPLETE_VAR = "_ECNC_COMPLETE"
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    """Run ``ecnc ARGV`` (default: ``sys.argv[1:]``) and return its exit code.
+class Ecnc(LazyGroup):
+    """The ``ecnc`` group; its ``main`` (which click's ``CliRunner`` calls too) is ``run_command_line``."""
 
-    argparse raises SystemExit itself for ``--help``, ``--version`` (0) and malformed command
-    lines (2, with the usage on stderr).
-    """
-    argv = sys.argv[1:] if argv is None else list(argv)
+    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None, complete_var: str | None = None,
+             standalone_mode: bool = True, **extra: Any) -> Any:
+        code = run_command_line(sys.argv[1:] if args is None else list(args))
+        if standalone_mode:
+            sys.exit(code)
+        return code
+
+
+ecnc = Ecnc("ecnc", lazy=COMMANDS, context_settings=CONTEXT_SETTINGS,
+            help="Parse, run, lint and simulate EdingCNC G-code and macro files.")
+ecnc = click.version_option(__version__, "--version", prog_name="ecnc",
+                            message="%(prog)s, version %(version)s")(ecnc)
+
+
+def run_command_line(argv: list[str]) -> int:
+    """Run ``ecnc ARGV`` and return its exit code; every error is reported here, on stderr."""
+    if os.environ.get(COMPLETE_VAR):
+        from click.shell_completion import shell_complete
+
+        return shell_complete(ecnc, {}, "ecnc", COMPLETE_VAR, os.environ[COMPLETE_VAR])
     reconfigure = getattr(sys.stdout, "reconfigure", None)
     if reconfigure is not None:  # a source line with 'é' on an ASCII console: \xe9, not a traceback
         reconfigure(errors="backslashreplace")
-    args, unknown = build_parser(argv).parse_known_args(argv)
-    command: Command = args.command
-    if unknown:  # reported by the command's own parser, with its usage
-        command.parser.error(f"unrecognized arguments: {' '.join(unknown)}")
-    if command.handler is None:  # `ecnc` or `ecnc kins` alone: what there is, as a usage error
-        command.parser.print_help(sys.stderr)
-        return EXIT_USAGE
     try:
-        code = command.handler(args)
+        with ecnc.make_context("ecnc", argv) as ctx:
+            code = ecnc.invoke(ctx)
         sys.stdout.flush()  # so that a closed pipe shows up here
-        return code
-    except UsageError as err:
-        command.parser.error(str(err))
+        return code if isinstance(code, int) else EXIT_OK
+    except click.exceptions.Exit as done:  # --help, --version
+        return done.exit_code
+    except click.UsageError as err:
+        show_usage_error(err)
+        return EXIT_USAGE
     except EcncError as err:
         print(err.format(), file=sys.stderr)
         return err.exit_code
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, click.Abort):
         print("\nAborted!", file=sys.stderr)
         return EXIT_ABORTED
     except BrokenPipeError:  # `ecnc ... | head` stopped reading: end quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing left to flush at exit
         return EXIT_ABORTED
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run ``ecnc ARGV`` (default: ``sys.argv[1:]``) and return its exit code."""
+    return run_command_line(sys.argv[1:] if argv is None else list(argv))
 
 
 def entry() -> NoReturn:
@@ -83,15 +87,10 @@ def entry() -> NoReturn:
     skipped: it took ~20 ms of a short run. ``atexit`` handlers do not run. Code that embeds the
     command line calls ``main()``, which returns.
     """
-    try:
-        code = main()
-    except SystemExit as exc:  # argparse's --help, --version and usage errors
-        if not isinstance(exc.code, int):
-            raise
-        code = exc.code
+    code = main()
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()
-        except (OSError, ValueError):  # a reader that went away: nothing more to tell it
+        except (OSError, ValueError, AttributeError):  # a reader that went away, a closed stream
             pass
     os._exit(code)

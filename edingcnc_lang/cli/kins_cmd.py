@@ -5,18 +5,27 @@ dData all zero), as ``KIN ON`` would at X0 Y0 Z0: rotatekins, for one, only tran
 """
 from __future__ import annotations
 
-import argparse
 import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import click
+
 from ..errors import EXIT_OK
-from .common import UsageError, add_command, existing_file, output_file
+from .base import Argument, Command, LazyGroup, usage_error
+from .options import ini_option, json_option
+from .params import EXISTING_FILE, OUTPUT_FILE
 
 if TYPE_CHECKING:
     from ..kinematics.base import Kinematics, Pose
-    from .common import Subcommands
+
+# The subcommands, "module:attribute" in this package (a new one is one line here).
+SUBCOMMANDS = {"list": "kins_cmd:list_kinematics", "inverse": "kins_cmd:inverse", "forward": "kins_cmd:forward",
+               "build": "kins_cmd:build_library"}
+
+kins = LazyGroup("kins", lazy=SUBCOMMANDS, short_help="List, evaluate and build kinematics plug-ins.",
+                 help="List, evaluate and build kinematics plug-ins.")
 
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
@@ -43,7 +52,7 @@ def _switched_on(name: str, ini: str | None) -> Kinematics:
 
 def _pose(values: Sequence[float], names: Sequence[str]) -> Pose:
     if not 3 <= len(values) <= 6:
-        raise UsageError(f"expected 3 to 6 numbers ({' '.join(n.upper() for n in names)}), got {len(values)}")
+        raise usage_error(f"expected 3 to 6 numbers ({' '.join(n.upper() for n in names)}), got {len(values)}")
     x, y, z, a, b, c = (*values, *[0.0] * (6 - len(values)))
     return (x, y, z, a, b, c)
 
@@ -55,42 +64,16 @@ def _print_pose(values: Pose, names: Sequence[str]) -> None:
     print(json.dumps(dict(zip(names, values))))
 
 
-def add_parser(commands: Subcommands) -> None:
-    kins = add_command(commands, "kins", None, "List, evaluate and build kinematics plug-ins.", intermixed=False)
-    subcommands = kins.add_subparsers(title="commands", metavar="COMMAND")
-
-    listing = add_command(subcommands, "list", list_kinematics,
-                          "Registered kinematics: name, type and version (tab separated).")
-    listing.add_argument("--json", dest="as_json", action="store_true", help="Print a JSON array instead of a table.")
-
-    for name, handler, summary, values in (
-            ("inverse", inverse, "Joints for a Cartesian position (missing A B C are 0).", "X Y Z [A B C]"),
-            ("forward", forward, "Cartesian position for joint positions (missing JA JB JC are 0).",
-             "JX JY JZ [JA JB JC]")):
-        # argparse would write the values as "X Y Z [A B C] [X Y Z [A B C] ...]"
-        parser = add_command(subcommands, name, handler, summary,
-                             usage=f"%(prog)s [-h] [--ini FILE] NAME {values}")
-        parser.add_argument("name", metavar="NAME",
-                            help="A registered name (see list) or the path of a .so or .py plug-in.")
-        parser.add_argument("--ini", metavar="FILE", type=existing_file,
-                            help="cnc.ini whose [KINEMATICS] section configures the plug-in.")
-        parser.add_argument("values", metavar=values, nargs="+", type=float, help="3 to 6 numbers.")
-
-    build = add_command(subcommands, "build", build_library,
-                        "Compile a C plug-in against edingcnc_kins.h; prints the library's path.")
-    build.add_argument("source", metavar="SOURCE", type=existing_file)
-    build.add_argument("-o", "--output", metavar="FILE", type=output_file,
-                       help="Library to write (default: SOURCE with .so).")
-    build.add_argument("--cc", default=os.environ.get("CC", "cc"), help="C compiler to run (default: $CC or cc).")
-
-
-def list_kinematics(args: argparse.Namespace) -> int:
+@click.command("list", cls=Command, short_help="Registered kinematics: name, type and version (tab separated).")
+@json_option("Print a JSON array instead of a table.")
+def list_kinematics(as_json: bool) -> int:
+    """Registered kinematics: name, type and version (tab separated)."""
     import json
 
     from ..kinematics.loader import available_kinematics
 
     rows = available_kinematics()
-    if args.as_json:
+    if as_json:
         print(json.dumps([{"name": n, "type": t, "version": v} for n, t, v in rows]))
     else:
         for name, kin_type, version in rows:
@@ -98,24 +81,44 @@ def list_kinematics(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def inverse(args: argparse.Namespace) -> int:
+def _conversion(name: str, summary: str, values: str) -> click.Command:
+    """``inverse`` or ``forward``: NAME, --ini and 3 to 6 numbers."""
+    def decorate(func: click.decorators.FC) -> click.Command:
+        func = click.argument("values", metavar=values, nargs=-1, required=True, type=float, cls=Argument)(func)
+        func = ini_option("cnc.ini whose [KINEMATICS] section configures the plug-in.")(func)
+        func = click.argument("name", metavar="NAME")(func)
+        return click.command(name, cls=Command, short_help=summary,
+                             help=f"{summary}\n\nNAME is a registered name (see list) or the path of a .so or .py "
+                                  "plug-in.")(func)
+    return decorate  # type: ignore[return-value]
+
+
+@_conversion("inverse", "Joints for a Cartesian position (missing A B C are 0).", "X Y Z [A B C]")
+def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
-    pos = _pose(args.values, AXES)
-    _print_pose(_switched_on(args.name, args.ini).inverse(pos), JOINTS)
+    pos = _pose(values, AXES)
+    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS)
     return EXIT_OK
 
 
-def forward(args: argparse.Namespace) -> int:
+@_conversion("forward", "Cartesian position for joint positions (missing JA JB JC are 0).", "JX JY JZ [JA JB JC]")
+def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
-    joints = _pose(args.values, JOINTS)
-    _print_pose(_switched_on(args.name, args.ini).forward(joints), AXES)
+    joints = _pose(values, JOINTS)
+    _print_pose(_switched_on(name, ini).forward(joints), AXES)
     return EXIT_OK
 
 
-def build_library(args: argparse.Namespace) -> int:
+@click.command("build", cls=Command,
+               short_help="Compile a C plug-in against edingcnc_kins.h; prints the library's path.")
+@click.argument("source", metavar="SOURCE", type=EXISTING_FILE)
+@click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE, help="Library to write (default: SOURCE with .so).")
+@click.option("--cc", default=lambda: os.environ.get("CC", "cc"), show_default="$CC or cc", help="C compiler to run.")
+def build_library(source: str, output: str | None, cc: str) -> int:
+    """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
     from ..kinematics.build import build_plugin
 
-    print(build_plugin(Path(args.source), Path(args.output) if args.output else None, args.cc))
+    print(build_plugin(Path(source), Path(output) if output else None, cc))
     return EXIT_OK

@@ -44,7 +44,7 @@ def test_a_group_alone_prints_its_help_as_a_usage_error(command: list[str], name
     result = invoke(*command)
     assert result.exit_code == 2 and result.stdout == ""
     assert result.stderr.startswith(" ".join(["usage: ecnc", *command]))
-    assert all(f"\n    {name} " in result.stderr for name in names)
+    assert all(f"\n  {name} " in result.stderr for name in names)
 
 
 @pytest.mark.parametrize(("command", "arguments"), [
@@ -204,3 +204,21 @@ def test_exit_status_of_the_programs(program: list[str], tmp_path: Path) -> None
         return subprocess.run([*program, *args], check=False, capture_output=True, cwd=tmp_path).returncode
 
     assert [status("--version"), status(), status("run", "missing.nc"), status("parse", str(bad))] == [0, 2, 2, 65]
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["rn"], "ecnc: error: unknown command 'rn' (did you mean run?)"),
+    (["kins", "inverce"], "ecnc kins: error: unknown command 'inverce' (did you mean inverse?)"),
+    (["run", "{job}", "--jsn"], "ecnc run: error: unrecognized arguments: --jsn (did you mean --json"),
+])
+def test_a_mistyped_command_or_option_gets_a_suggestion(args: list[str], message: str, job: Path) -> None:
+    result = invoke(*(a.format(job=job) for a in args))
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert message in result.stderr
+
+
+def test_an_option_without_its_value_names_the_command(job: Path) -> None:
+    result = invoke("run", job, "--trace")
+    assert result.exit_code == 2
+    assert result.stderr.startswith("usage: ecnc run [OPTIONS] JOB\necnc run: error: ")
+    assert "--trace" in result.stderr

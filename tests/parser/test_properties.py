@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import nodes as n
@@ -61,6 +61,7 @@ programs = st.builds(lambda body: n.Program("<gen>", tuple(body)),
 
 @settings(max_examples=60, deadline=None)
 @given(programs)
+@example(parse_text("A0 A SIN[0] X ATAN[1]/[2]\n", "<gen>"))  # a call glued to its word letter read as ASIN
 def test_print_parse_print_is_stable(program: n.Program) -> None:
     first = parse_text(program_text(program), "<gen>")  # the printed text always parses
     text = program_text(first)

@@ -1,0 +1,137 @@
+"""Options shared by the commands, as decorators, so every command spells and checks them alike.
+
+``@machine_options`` gives a command the virtual machine a job runs on (``--ini``, ``--macro``,
+``--user-macro``, ``--answer``, ``--max-steps``, ``--log-dir``, ``--allow-exec``,
+``--no-simulation``, ``--block-delete``, ``--strict``, ``--probe-surface``) and hands the command one ``machine: MachineOptions``
+argument, which builds the ``RunOptions`` of the Python API.  See docs/cli.md, "Adding a command".
+"""
+from __future__ import annotations
+
+import functools
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, TypeVar
+
+import click
+
+from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, POSITIVE_INT
+
+if TYPE_CHECKING:
+    from ..diagnostics import Diagnostic
+    from ..host import DialogAnswer
+    from ..runner import RunOptions
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+# How a message of the job is labelled on stderr (``PATH:LINE: LABEL: TEXT``); dialogs are not shown.
+MESSAGE_LABEL = {"msg": "msg", "warn": "warning", "error": "error", "log": "log"}
+
+
+def ini_option(help: str = "Machine configuration (cnc.ini).") -> Callable[[F], F]:  # noqa: A002 - click's name
+    return click.option("--ini", metavar="FILE", type=EXISTING_FILE, help=help)
+
+
+def macro_options(macro_help: str = "Macro file (default: the ini's, else the packaged one).",
+                  user_macro_help: str = "User macro file.") -> Callable[[F], F]:
+    """``--macro FILE`` and ``--user-macro FILE``, both files that must exist."""
+    def decorate(func: F) -> F:
+        func = click.option("--user-macro", metavar="FILE", type=EXISTING_FILE, help=user_macro_help)(func)
+        return click.option("--macro", metavar="FILE", type=EXISTING_FILE, help=macro_help)(func)
+    return decorate
+
+
+def json_option(help: str) -> Callable[[F], F]:  # noqa: A002 - click's name
+    """``--json``, passed to the command as ``as_json``."""
+    return click.option("--json", "as_json", is_flag=True, help=help)
+
+
+def job_argument(func: F) -> F:
+    """``JOB``: the file to run, passed as ``job``."""
+    return click.argument("job", metavar="JOB", type=EXISTING_FILE)(func)
+
+
+@dataclass(frozen=True)
+class MachineOptions:
+    """The machine options of one command line, as given."""
+
+    ini: str | None = None
+    macro: str | None = None
+    user_macro: str | None = None
+    answers: tuple[DialogAnswer, ...] = ()
+    max_steps: int | None = None
+    log_dir: str | None = None
+    allow_exec: bool = False
+    no_simulation: bool = False
+    block_delete: bool = False
+    strict: bool = False
+    probe_surface: str | None = None
+
+    def run_options(self, show_messages: bool = True, **extra: Any) -> RunOptions:
+        """``RunOptions`` for these options; ``extra`` sets the rest (``trace=Path(...)``, ...).
+
+        With ``show_messages`` the job's ``msg``/``warnmsg``/``errmsg`` print on stderr as they happen.
+        """
+        from ..host import Host, scripted_dialogs
+        from ..runner import RunOptions
+
+        probe = None
+        if self.probe_surface:
+            from ..heightmap import ProbeAt, read_surface
+
+            probe = ProbeAt(read_surface(self.probe_surface))
+
+        def path(value: str | None) -> Path | None:
+            return Path(value) if value else None
+
+        message = print_message if show_messages else None
+        return RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro),
+                          host=Host(dialog=scripted_dialogs(list(self.answers)), message=message, probe=probe),
+                          max_steps=self.max_steps, log_dir=path(self.log_dir), allow_exec=self.allow_exec,
+                          simulation=not self.no_simulation, block_delete=self.block_delete,
+                          strict=self.strict, on_warning=print_warning, **extra)
+
+
+def print_message(kind: str, text: str, path: str, line: int) -> None:
+    """A message of the job on stderr: ``PATH:LINE: msg|warning|error|log: TEXT``."""
+    if kind in MESSAGE_LABEL:
+        print(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", file=sys.stderr)
+
+
+def print_warning(diagnostic: Diagnostic) -> None:
+    """A macro-file line that does not parse, reported once at load: ``PATH:LINE:COL: warning: ...``."""
+    print(diagnostic.format(), file=sys.stderr)
+
+
+_MACHINE_OPTIONS = (
+    ini_option(),
+    macro_options(),
+    click.option("--answer", "answers", metavar="VALUE", type=ANSWER, multiple=True,
+                 help="Answer for the next dlgmsg: ok, cancel or ok:#N=V,#M=W (repeatable)."),
+    click.option("--max-steps", metavar="N", type=POSITIVE_INT,
+                 help="Stop with an error after this many statements (at least 1)."),
+    click.option("--log-dir", metavar="DIRECTORY", type=EXISTING_FOLDER,
+                 help="Folder for logfile/logmsg (default: the job's)."),
+    click.option("--allow-exec", is_flag=True, help="Let Exec start external programs."),
+    click.option("--no-simulation", is_flag=True, help="Run with #5380 = 0 (as if on the real machine)."),
+    click.option("--block-delete", is_flag=True, help="Skip lines that start with '/'."),
+    click.option("--strict", is_flag=True, help="Macro-file lines that do not parse are errors at load "
+                 "(default: a warning each, and an error only if the run reaches the line)."),
+    click.option("--probe-surface", metavar="FILE", type=EXISTING_FILE,
+                 help="CSV height map x,y,z (machine coordinates): G38.2 trips where the probe meets it."),
+)
+_MACHINE_NAMES = tuple(MachineOptions.__dataclass_fields__)
+
+
+def machine_options(func: F) -> F:
+    """Add the machine options; the command receives them as one ``machine: MachineOptions``."""
+    @functools.wraps(func)
+    def command(*args: Any, **kwargs: Any) -> Any:
+        machine = MachineOptions(**{name: kwargs.pop(name) for name in _MACHINE_NAMES})
+        return func(*args, machine=machine, **kwargs)
+
+    decorated: Any = command
+    for option in reversed(_MACHINE_OPTIONS):
+        decorated = option(decorated)
+    return decorated  # type: ignore[no-any-return]

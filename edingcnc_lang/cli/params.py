@@ -1,0 +1,150 @@
+"""Parameter types of the command line: files that must exist, counts, lint codes, dialog answers.
+
+A value click rejects is a usage error (exit 2) naming the option, before anything runs.  The
+lint and host modules are imported only when a value of theirs is read, so the other commands
+start without them.
+"""
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING, Any
+
+import click
+from click.shell_completion import CompletionItem
+
+if TYPE_CHECKING:
+    from ..host import DialogAnswer
+
+
+class _PathType(click.ParamType):
+    """A path given as text (commands take ``str`` and make ``Path``s where they need them)."""
+
+    name = "path"
+    completion = "file"
+
+    def check(self, value: str) -> str | None:
+        """What is wrong with ``value``, or None."""
+        raise NotImplementedError
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        text = os.fspath(value)
+        problem = self.check(text)
+        if problem:
+            self.fail(problem, param, ctx)
+        return text
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        return [CompletionItem(incomplete, type=self.completion)]
+
+
+def _unreadable(value: str) -> str | None:
+    if not os.path.exists(value):
+        return f"{value!r} does not exist"
+    if not os.access(value, os.R_OK):
+        return f"{value!r} is not readable"
+    return None
+
+
+class ExistingPath(_PathType):
+    """An input file or folder that must exist and be readable."""
+
+    def check(self, value: str) -> str | None:
+        return _unreadable(value)
+
+
+class ExistingFile(_PathType):
+    """An input file that must exist, and not be a folder."""
+
+    name = "file"
+
+    def check(self, value: str) -> str | None:
+        if not os.path.exists(value):
+            return f"file {value!r} does not exist"
+        if os.path.isdir(value):
+            return f"{value!r} is a folder, not a file"
+        return _unreadable(value)
+
+
+class ExistingFolder(_PathType):
+    """A folder that must exist (``--log-dir``: the job's log files go nowhere else)."""
+
+    name = "directory"
+    completion = "dir"
+
+    def check(self, value: str) -> str | None:
+        if not os.path.exists(value):
+            return f"folder {value} does not exist"
+        if not os.path.isdir(value):
+            return f"{value!r} is a file, not a folder"
+        return None
+
+
+class OutputFile(_PathType):
+    """A file to write: it need not exist, but a folder there is a mistake to report up front."""
+
+    name = "file"
+
+    def check(self, value: str) -> str | None:
+        return f"{value!r} is a folder, not a file" if os.path.isdir(value) else None
+
+
+class PositiveInt(click.ParamType):
+    """A whole number of at least 1 (``--max-steps``)."""
+
+    name = "integer"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> int:
+        if isinstance(value, int):
+            number = value
+        else:
+            try:
+                number = int(value)
+            except ValueError:
+                self.fail(f"{value!r} is not a whole number", param, ctx)
+        if number < 1:
+            self.fail(f"{number} is less than 1", param, ctx)
+        return number
+
+
+class LintCodes(click.ParamType):
+    """``E,S208,G5``: lint codes or prefixes of codes, checked against the registry."""
+
+    name = "codes"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[str, ...]:
+        from ..lint import UnknownCode, parse_codes
+
+        if isinstance(value, tuple):
+            return value
+        try:
+            return parse_codes(value)
+        except UnknownCode as err:
+            self.fail(f"no code starts with {err} (see --list-codes)", param, ctx)
+
+
+class Answer(click.ParamType):
+    """An answer for the next ``dlgmsg``: ``ok``, ``cancel`` or ``ok:#N=V,#M=W``."""
+
+    name = "answer"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> DialogAnswer:
+        from ..host import DialogAnswer
+
+        if isinstance(value, DialogAnswer):
+            return value
+        try:
+            return DialogAnswer.parse(value)
+        except ValueError as err:
+            self.fail(str(err), param, ctx)
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        return [CompletionItem(word) for word in ("ok", "cancel", "ok:#") if word.startswith(incomplete)]
+
+
+EXISTING_PATH = ExistingPath()
+EXISTING_FILE = ExistingFile()
+EXISTING_FOLDER = ExistingFolder()
+OUTPUT_FILE = OutputFile()
+POSITIVE_INT = PositiveInt()
+LINT_CODES = LintCodes()
+ANSWER = Answer()

@@ -1,0 +1,95 @@
+"""Canned cycles (G73, G81..G89): sticky words, levels and holes; cycles.py expands each hole."""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import AXES, PLANES, Event
+from .state import G_40, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
+
+if TYPE_CHECKING:
+    from ..cycles import Step
+
+
+class CannedCycles(MachineState):
+    """Every hole and peck counts against the step budget."""
+
+    def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
+        from ..cycles import (  # most jobs drill nothing: not worth its import time
+            CYCLES,
+            NEEDS_Q,
+            CycleError,
+        )
+
+        plane = PLANE_OF[self.modal["plane"]]
+        first, second, normal = PLANES[plane]
+        drill = AXES[normal]
+        sticky = self.cycle_words
+        for letter, key in (("R", "R"), (drill, "Z"), ("P", "P"), ("Q", "Q")):
+            if letter in words:
+                sticky[key] = words[letter]
+        if any(a in words for a in "ABC"):
+            raise self.fail("canned cycles cannot move rotary axes", span)
+        if self.modal["feed_mode"] == G_93:
+            raise self.fail("canned cycles are not allowed in inverse time mode (G93)", span)
+        if self.modal["cutter_comp"] != G_40:
+            raise self.fail("canned cycles are not allowed with cutter compensation on (G41/G42)", span)
+        for needed in ("R", "Z"):
+            if needed not in sticky:
+                raise self.fail(f"{t.code_name('G', motion)} needs {needed if needed == 'R' else drill}", span)
+        if motion in NEEDS_Q and sticky.get("Q", 0) <= 0:
+            raise self.fail(f"{t.code_name('G', motion)} needs a peck depth Q greater than 0", span)
+        repeats = words.get("L", 1)
+        if repeats != int(repeats) or repeats < 1:
+            raise self.fail("L (repeat count) must be a whole number of at least 1", span)
+        scale = self.scale
+        work = self.work_position()
+        if new_sequence:  # a new cycle sequence: G98 returns to the level it started from
+            self.cycle_initial = work[normal]
+        old = work[normal] if self.modal["return_mode"] == G_99 else self.cycle_initial
+        incremental = self.modal["distance"] == G_91
+        r_level = (old if incremental else 0.0) + sticky["R"] * scale
+        bottom = (r_level if incremental else 0.0) + sticky["Z"] * scale
+        if r_level < bottom:
+            raise self.fail(f"R ({format_value(r_level / scale)}) is below the hole bottom "
+                            f"{drill} ({format_value(bottom / scale)})", span)
+        feed = self._feed_for(1.0, words, span)
+        if old < r_level:  # start below R: climb to R first
+            self._cycle_move("rapid", work, normal, r_level, feed)
+            old = self.cycle_initial = r_level
+        clear = r_level if self.modal["return_mode"] == G_99 else old
+        dwell = sticky.get("P", 0.0) / (1000.0 if self.config.g4_in_milliseconds else 1.0)
+        try:
+            steps = CYCLES[motion](r_level, bottom, clear, dwell, sticky.get("Q", 0.0) * scale)
+        except CycleError as err:
+            raise self.fail(str(err), span) from None
+        hole = list(work)
+        for _ in range(int(repeats)):
+            self.spend(1 + len(steps), span)
+            for axis, letter in ((first, AXES[first]), (second, AXES[second])):
+                if letter in words:
+                    hole[axis] = (hole[axis] + words[letter] * scale) if incremental else words[letter] * scale
+            hole[normal] = old
+            self._cycle_move("rapid", hole, normal, old, feed)
+            if old != r_level:
+                self._cycle_move("rapid", hole, normal, r_level, feed)
+            self._cycle_steps(steps, hole, normal, feed)
+            old = clear
+
+    def _cycle_move(self, kind: str, work: list[float], normal: int, level: float, feed: float) -> None:
+        point = list(work)
+        point[normal] = level
+        self._move("rapid" if kind == "rapid" else "linear", self.to_machine(point), feed if kind == "feed" else 0.0)
+
+    def _cycle_steps(self, steps: list[Step], hole: list[float], normal: int, feed: float) -> None:
+        for step in steps:
+            if step.kind in ("rapid", "feed"):
+                self._cycle_move(step.kind, hole, normal, step.level, feed)
+            elif step.kind == "dwell":
+                self.canon.event(Event("dwell", self.path, self.line, {"seconds": step.level}))
+            else:
+                self.canon.event(Event("spindle", self.path, self.line,
+                                       {"m": 5 if step.kind == "spindle_stop" else self.spindle,
+                                        "speed": self.speed}))

@@ -1,0 +1,101 @@
+"""Machine commands that are statements of their own: homing, KIN, switches, GetToolInfo, Exec."""
+from __future__ import annotations
+
+import re
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import AXES, Event
+from ..evaluator import param_index
+from .state import MachineState
+
+_EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
+
+
+class Commands(MachineState):
+    """Add a named command by writing a method and a row in ``COMMANDS``."""
+
+    def _exec_home(self, stmt: n.Home) -> None:
+        self._kinematics_off()
+        axis = AXES.index(stmt.axis)
+        end = list(self.pos)
+        end[axis] = self.config.joints[axis].home_position
+        self._move("home", end)
+
+    def _exec_prepare_delta(self, stmt: n.PrepareLinDeltaHome) -> None:
+        self._kinematics_off()
+        velocity = self.evaluator.value(stmt.velocity) if stmt.velocity is not None \
+            else abs(self.config.joints[0].home_velocity)
+        if velocity <= 0:
+            raise self.fail("PrepareLinDeltaHome needs a positive velocity", stmt.span)
+        end = list(self.pos)
+        for axis in range(3):
+            end[axis] = self.config.joints[axis].home_position
+        self._move("home", end, velocity * 60.0)
+
+    def _kinematics_off(self) -> None:
+        if self.kinematics_active:
+            self.pos = list(self.canon.kinematics("OFF", (), tuple(self.pos), self.path, self.line))
+            self.kinematics_active = False
+
+    def _exec_kin(self, stmt: n.Kin) -> None:
+        args = tuple(self.evaluator.value(a) for a in stmt.args)
+        if stmt.mode not in ("ON", "OFF", "CTRL"):
+            off = self.offset()
+            args = (off[0], off[1])  # a mapping's rotation point defaults to the work zero
+        self.pos = list(self.canon.kinematics(stmt.mode, args, tuple(self.pos), self.path, self.line))
+        if stmt.mode != "CTRL":
+            self.kinematics_active = stmt.mode != "OFF"
+
+    def _exec_switch(self, stmt: n.Switch) -> None:
+        if stmt.name == "tanknife":
+            self.tanknife = stmt.on
+            work_zero = tuple(self.offset()[:3])  # the bend knife's Z band is in work coordinates
+            self.pos = list(self.canon.kinematics("TANKNIFE_ON" if stmt.on else "TANKNIFE_OFF", work_zero,
+                                                  tuple(self.pos), self.path, self.line))
+        self.canon.event(Event(stmt.name, self.path, self.line, {"on": stmt.on}))
+
+    def _exec_command(self, stmt: n.Command) -> None:
+        handler = COMMANDS.get(stmt.name)
+        if handler is not None:
+            getattr(self, handler)(stmt)
+        else:
+            self.canon.event(Event(stmt.name, self.path, self.line, {"args": stmt.args}))
+
+    def _get_tool_info(self, stmt: n.Command) -> None:
+        parts = stmt.args.split()
+        if len(parts) != 2 or parts[0].lower() not in ("first", "next", "num") or not parts[1].isdigit():
+            raise self.fail("GetToolInfo expects first|next|num and a parameter number, e.g. "
+                            "GetToolInfo first 100", stmt.span)
+        tools = sorted(k for k, tool in self.config.tools.items() if tool.length or tool.diameter)
+        kind, index = parts[0].lower(), param_index(float(parts[1]), stmt.span)
+        if kind == "num":
+            value = float(len(tools))
+        else:
+            after = 0 if kind == "first" else self._tool_cursor
+            following = [k for k in tools if k > after]
+            value = float(following[0]) if following else -1.0
+            self._tool_cursor = int(value) if following else t.MAX_TOOL
+        self.params.write(index, value, self.where(stmt.span))
+
+    def _exec_program(self, stmt: n.Command) -> None:
+        if not self.allow_exec:
+            self.message("warn", f"Exec {stmt.args} was not run: running programs needs --allow-exec")
+            return
+        import subprocess  # only for Exec: not worth its import time on every run
+
+        argv = [quoted or bare for quoted, bare in _EXEC_ARG.findall(stmt.args)]
+        try:
+            result = subprocess.run(argv, check=False)
+        except OSError as err:
+            raise self.fail(f"Exec {stmt.args}: {err.strerror}", stmt.span) from None
+        self.canon.event(Event("exec", self.path, self.line, {"args": stmt.args, "status": result.returncode}))
+
+
+# Named commands with a meaning of their own, by lower-case name; any other command is an event.
+COMMANDS: dict[str, str] = {"gettoolinfo": "_get_tool_info", "exec": "_exec_program"}
+
+
+# The statements this part executes, by method name (machine.py builds the dispatch table).
+STATEMENTS = {n.Home: "_exec_home", n.PrepareLinDeltaHome: "_exec_prepare_delta", n.Kin: "_exec_kin",
+              n.Switch: "_exec_switch", n.Command: "_exec_command"}

@@ -1,0 +1,42 @@
+"""The interpreter, assembled from its parts; each part is a mixin in a module of its own.
+
+Reading order for a newcomer: ``state`` (what the machine knows), ``flow`` (statements, subs),
+``line`` and ``steps`` (one G-code line in the order of execution), ``offsets`` (work and
+machine coordinates), ``moves`` and ``canned`` (what a line moves), ``bulk`` (the fast path
+for plain CAM lines), ``messages`` and ``commands``.  The interpreter emits every move and
+event to a ``Canon``: in a run that is the head of the pipeline (``stages/``), whose last
+stage is the motion stage.
+"""
+from __future__ import annotations
+
+
+from .. import tables as t
+from . import bulk, commands, flow, line, messages
+from .bulk import BulkPath
+from .canned import CannedCycles
+from .commands import Commands
+from .flow import ControlFlow
+from .line import LineWords
+from .messages import Messages
+from .moves import Moves
+from .offsets import CoordinateSystems
+from .steps import LineSteps
+
+
+class Interpreter(ControlFlow, LineWords, LineSteps, CoordinateSystems, Moves, CannedCycles, BulkPath,
+                  Messages, Commands):
+    """Runs EdingCNC statements against one virtual machine; create one per job run."""
+
+
+# Statement type -> the method that executes it, from each part's STATEMENTS table.
+Interpreter._EXECUTE = {kind: getattr(Interpreter, name)
+                        for part in (flow, line, bulk, messages, commands)
+                        for kind, name in part.STATEMENTS.items()}
+
+# Steps that share one method: the modal groups whose step only records the code.
+_STEP_ALIASES = {"plane": "modal", "units": "modal", "cutter_comp": "modal", "path_control": "modal",
+                 "distance": "modal", "return_mode": "modal"}
+Interpreter._LINE_STEPS = tuple(
+    (getattr(Interpreter, f"_step_{_STEP_ALIASES.get(name, name)}"), source, key)
+    for name, source, key in t.ORDER_OF_EXECUTION)
+

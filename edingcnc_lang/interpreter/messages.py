@@ -1,0 +1,90 @@
+"""Messages, dialogs and the log file (msg, warnmsg, errmsg, dlgmsg, logmsg, logfile)."""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from datetime import datetime
+from pathlib import Path, PureWindowsPath
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import Event
+from ..errors import JobAborted, Location
+from ..evaluator import param_index
+from ..host import DialogAnswer, DialogField
+from ..dialogs import dialog_fields
+from .state import MachineState, format_value
+
+STAMP_FORMAT = "%Y-%m-%d %H:%M:%S"
+
+
+class Messages(MachineState):
+    """What the job tells the operator or asks of them; each message is also an event on the canon."""
+
+    def _text(self, items: tuple[n.MessageItem, ...]) -> str:
+        return "".join(item if isinstance(item, str) else self._stamp() if isinstance(item, n.Stamp)
+                       else format_value(self.evaluator.value(item)) for item in items)
+
+    def _stamp(self) -> str:
+        """``%d``: the date and time now, as ``YYYY-MM-DD HH:MM:SS`` (sortable, the same everywhere)."""
+        return (self.host.clock or datetime.now)().strftime(STAMP_FORMAT)
+
+    def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None:
+        event = Event(kind, self.path, self.line, {"text": text, **(data or {})})
+        self.messages.append(event)
+        self.canon.event(event)
+        if self.host.message:
+            self.host.message(kind, text, self.path, self.line)
+
+    def _exec_message(self, stmt: n.Message) -> None:
+        text = self._text(stmt.items)
+        if stmt.kind == "logmsg":
+            self._log(text, stmt.span)
+        elif stmt.kind == "errmsg":
+            self.message("error", text)
+            raise JobAborted(text, Location(self.path, self.line))
+        else:
+            self.message("warn" if stmt.kind == "warnmsg" else "msg", text)
+
+    def _exec_dialog(self, stmt: n.Dialog) -> None:
+        items = stmt.items
+        shape, problems = dialog_fields(stmt)
+        if problems:  # the first one, as the controller stops at it
+            problem = problems[0]
+            item = problem.item
+            raise self.fail(problem.message, stmt.span if item is None or isinstance(item, str) else item.span)
+        indices = [param_index(f.index.value, f.index.span) for f in shape]
+        fields = [DialogField(f.label, index, self.params.read(index)) for f, index in zip(shape, indices)]
+        answer = (self.host.dialog(items[0], fields) if self.host.dialog else None) or DialogAnswer()
+        unknown = set(answer.values) - {f.index for f in fields}
+        if unknown:
+            raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)
+        if answer.ok:
+            for index, value in answer.values.items():
+                self.params.write(index, value, self.where(stmt.span))
+        self.params.set(t.DIALOG_RESULT, 1.0 if answer.ok else -1.0)
+        self.message("dialog", items[0], {"ok": answer.ok,
+                                          "fields": {f.label: self.params.read(f.index) for f in fields}})
+
+    def _exec_logfile(self, stmt: n.LogFile) -> None:
+        mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
+        name = PureWindowsPath(stmt.name).name  # never outside the log folder, whatever the path says
+        if name in ("", ".", ".."):
+            raise self.fail(f"logfile {stmt.name!r} names no file", stmt.span)
+        folder = self.log_dir or Path(self.path).resolve().parent
+        self._log_file = folder / name
+        if mode == 0:
+            self._log_file.parent.mkdir(parents=True, exist_ok=True)
+            self._log_file.write_text("", encoding="utf-8")
+
+    def _log(self, text: str, span: n.Span) -> None:
+        if self._log_file is None:
+            self._exec_logfile(n.LogFile("log.txt", None, span))
+        assert self._log_file is not None
+        self._log_file.parent.mkdir(parents=True, exist_ok=True)
+        with open(self._log_file, "a", encoding="utf-8") as handle:
+            handle.write(text + "\n")
+        self.message("log", text, {"file": str(self._log_file)})
+
+
+# The statements this part executes, by method name (machine.py builds the dispatch table).
+STATEMENTS = {n.Message: "_exec_message", n.Dialog: "_exec_dialog", n.LogFile: "_exec_logfile"}

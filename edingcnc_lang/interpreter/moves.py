@@ -1,0 +1,154 @@
+"""The motion step of a line: straight moves, arcs, probing and the tangential knife."""
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import PLANES, Arc
+from ..geometry import ArcError, center_from_radius, check_radius, sweep
+from .state import (
+    AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_40, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
+    MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
+)
+
+
+class Moves(MachineState):
+    """Decides what is programmed and hands each move to the canon; the pipeline's stages do the rest."""
+
+    def _motion(self, words: Mapping[str, float], g: Mapping[str, int], non_modal: int | None,
+                span: n.Span) -> None:
+        motion = g.get("motion")
+        g53 = non_modal == G_53
+        has_axes = not AXIS_SET.isdisjoint(words)
+        if motion == G_80:
+            if has_axes:
+                raise self.fail("G80 cancels the canned cycle; it takes no axis words", span)
+            self.modal["motion"] = G_80
+            self.cycle_words.clear()
+            return
+        previous = self.modal["motion"]
+        if motion is not None:
+            if motion in UNSUPPORTED_MOTION:
+                raise self.fail(f"{t.code_name('G', motion)} is not supported by this simulator", span)
+            self.modal["motion"] = motion
+        elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68:
+            if g53:
+                raise self.fail("G53 needs an axis word and G0 or G1", span)
+            return
+        motion = self.modal["motion"]
+        if motion == G_80:
+            raise self.fail("axis words without a motion mode: G80 is active, add G0 or G1", span)
+        if g53 and motion not in (G_0, G_1):
+            raise self.fail("G53 moves in machine coordinates only with G0 or G1", span)
+        if g53 and self.modal["cutter_comp"] != G_40:
+            raise self.fail("G53 is not allowed while cutter compensation (G41/G42) is on", span)
+        if motion in t.CANNED_CYCLES:
+            self._cycle(motion, words, span, new_sequence=previous != motion)
+        elif motion in (G_2, G_3):
+            self._arc(motion, words, span)
+        elif has_axes:
+            target = self._target(words, g53)
+            if motion == G_0:
+                self._move("rapid", target)
+            elif motion == G_1:
+                feed = self._feed_for(xyz_distance(self.pos, target), words, span)
+                if self.tanknife and math.hypot(target[0] - self.pos[0], target[1] - self.pos[1]) > 1e-9:
+                    target[5] = self._knife_align(math.degrees(math.atan2(target[1] - self.pos[1],
+                                                                          target[0] - self.pos[0])))
+                self._move("linear", target, feed)
+            else:
+                self._probe(target, words, span)
+        elif motion == G_38_2:
+            raise self.fail("G38.2 needs at least one of X, Y, Z", span)
+
+    def _arc(self, motion: int, words: Mapping[str, float], span: n.Span) -> None:
+        plane = PLANE_OF[self.modal["plane"]]
+        first, second, normal = PLANES[plane]
+        clockwise = (motion == G_2) != self.config.reverse_g2g3
+        end = self._target(words)
+        start = self.pos
+        s = (start[first], start[second])
+        e = (end[first], end[second])
+        scale = self.scale
+        center: tuple[float, float] | None = None
+        try:
+            if "R" in words:
+                center = center_from_radius(s, e, words["R"] * scale, clockwise)
+            else:
+                w1, w2 = CENTER_WORDS[plane]
+                if w1 not in words and w2 not in words:
+                    raise ArcError(f"an arc needs R or centre words {w1}/{w2} in the {plane} plane")
+                if self.config.absolute_center_coords:
+                    work = self.work_position()
+                    work[first], work[second] = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
+                    machine = self.to_machine(work)
+                    center = (machine[first], machine[second])
+                else:
+                    d1, d2 = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
+                    if self.rotation and plane == "XY":
+                        c, sn = math.cos(math.radians(self.rotation[2])), math.sin(math.radians(self.rotation[2]))
+                        d1, d2 = c * d1 - sn * d2, sn * d1 + c * d2
+                    center = (s[0] + d1, s[1] + d2)
+                check_radius(s, center, e)
+        except ArcError as err:
+            where = (f"start ({fmt_point(s)})" + (f", centre ({fmt_point(center)})" if center else "")
+                     + f", end ({fmt_point(e)})")
+            raise self.fail(f"{err}; {where} in the {plane} plane", span) from None
+        assert center is not None
+        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
+        radius = math.hypot(s[0] - center[0], s[1] - center[1])
+        along = end[normal] - start[normal]
+        length = math.hypot(radius * angle, along)
+        feed = self._feed_for(length, words, span)
+        named = (center[1], center[0]) if plane == "XZ" else center
+        if self.tanknife and plane == "XY":  # the knife follows the tangent all along the arc
+            normal_deg = -90.0 if clockwise else 90.0
+            start_tangent = math.degrees(math.atan2(s[1] - center[1], s[0] - center[0])) + normal_deg
+            c_start = self._knife_align(start_tangent)
+            end[5] = c_start + math.degrees(angle) * (-1.0 if clockwise else 1.0)
+        self._move("arc", end, feed, Arc(named, plane, -1 if clockwise else 1, full))
+
+    def _knife_align(self, direction: float) -> float:
+        """Turn C to ``direction`` (the equivalent angle nearest the current C) before a cut.
+
+        A turn larger than tanKnifeAngleForLiftUp lifts the knife, turns it and lowers it
+        again (three moves); a smaller one turns in place.  Returns the new C.
+        """
+        current = self.pos[5]
+        target = current + ((direction - current + 180.0) % 360.0 - 180.0)
+        turn = abs(target - current)
+        if turn < 1e-9:
+            return current
+        knife = self.config.tanknife
+        if turn > knife.angle_for_lift_up:
+            down = self.pos[2]
+            self._move("rapid", self.pos[:2] + [down + knife.lift_up_distance] + self.pos[3:])
+            self._move("rapid", self.pos[:5] + [target])
+            self._move("rapid", self.pos[:2] + [down] + self.pos[3:])
+        else:
+            self._move("rapid", self.pos[:5] + [target])
+        return target
+
+    def _probe(self, target: list[float], words: Mapping[str, float], span: n.Span) -> None:
+        if any(abs(target[i] - self.pos[i]) > 1e-9 for i in range(3, 6)):
+            raise self.fail("G38.2 cannot move a rotary axis", span)
+        if self.modal["feed_mode"] == G_93:
+            raise self.fail("G38.2 is not allowed in inverse time mode (G93)", span)
+        distance = xyz_distance(self.pos, target)
+        if distance < MIN_PROBE_DISTANCE:
+            raise self.fail(f"G38.2 target is {distance:.4f} mm away; it must be at least {MIN_PROBE_DISTANCE} mm",
+                            span)
+        feed = self._feed_for(distance, words, span)
+        start = tuple(self.pos)
+        trip = self.host.probe(start, tuple(target)) if self.host.probe else tuple(target)  # type: ignore[arg-type]
+        end = list(trip) if trip is not None else target
+        self._move("probe", end, feed)
+        if trip is not None:
+            work = self.work_position()
+            for axis in range(6):
+                self.params.set(t.PROBE_MACHINE + axis, end[axis])
+                self.params.set(t.PROBE_WORK + axis, work[axis])
+                self.params.set(t.PROBE_JOINTS + axis, end[axis])
+        self.params.set(t.PROBE_TRIPPED, 1.0 if trip is not None else 0.0)

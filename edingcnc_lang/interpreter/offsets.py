@@ -1,0 +1,181 @@
+"""Coordinate systems and offsets: G54..G59.3, G92, G10, G28/G30, G53, G68, tool length."""
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+from .. import nodes as n
+from .. import tables as t
+from .state import (
+    AXIS_INDEX, G_10, G_28, G_30, G_69, G_91, G_92, G_92_1, G_92_2, G_92_3, LINEAR_AXES, MachineState,
+)
+
+
+class CoordinateSystems(MachineState):
+    """Turns the axis words of a line into machine positions and back; ``offset()`` is cached until
+    a parameter it depends on changes."""
+
+    def _offsets_changed(self) -> None:
+        self._offset = None
+        system = self.params.values[t.COORD_SYSTEM]  # a macro may select the system by writing #5220
+        if system == int(system) and 1 <= system <= 9:
+            self.modal["coord_system"] = t.COORD_SYSTEM_CODES[int(system) - 1]
+
+    def offset(self) -> list[float]:
+        """Machine minus work position: G5x + G92 (if active) + tool length on Z (if G43)."""
+        if self._offset is None:
+            values = self.params.values
+            system = int(values[t.COORD_SYSTEM]) if 1 <= values[t.COORD_SYSTEM] <= 9 else 1
+            off = [values[t.coord_offset_param(system, i)] for i in range(6)]
+            if self.g92_active:
+                off = [o + values[t.G92_OFFSET + i] for i, o in enumerate(off)]
+            off[2] += self.tool_z
+            self._offset = off
+        return self._offset
+
+    def to_machine(self, work: list[float]) -> list[float]:
+        if self.rotation:
+            work = list(work)
+            px, py, angle = self.rotation
+            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+            dx, dy = work[0] - px, work[1] - py
+            work[0], work[1] = px + c * dx - s * dy, py + s * dx + c * dy
+        return [w + o for w, o in zip(work, self.offset())]
+
+    def work_position(self, machine: list[float] | None = None) -> list[float]:
+        """Work coordinates (mm) of a machine position, in the program's (G68-rotated) frame."""
+        work = [m - o for m, o in zip(machine or self.pos, self.offset())]
+        if self.rotation:
+            px, py, angle = self.rotation
+            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+            dx, dy = work[0] - px, work[1] - py
+            work[0], work[1] = px + c * dx + s * dy, py - s * dx + c * dy
+        return work
+
+    def _live_param(self, index: int) -> float:
+        if index >= t.POS_MACHINE:
+            return self.pos[index - t.POS_MACHINE]
+        return self.work_position()[index - t.POS_WORK]
+
+    def _axis_values(self, words: Mapping[str, float]) -> dict[int, float]:
+        """The axis words of a line, in mm / degrees."""
+        scale = self.scale
+        return {AXIS_INDEX[a]: v * (scale if a in LINEAR_AXES else 1.0) for a, v in words.items() if a in AXIS_INDEX}
+
+    def _target(self, words: Mapping[str, float], machine: bool = False) -> list[float]:
+        """Machine position the axis words of a line point at."""
+        axes = self._axis_values(words)
+        if machine:  # G53: machine coordinates, absolute
+            return [axes.get(i, p) for i, p in enumerate(self.pos)]
+        if self.rotation is None:  # the common case, without converting the whole position
+            target = list(self.pos)
+            if self.modal["distance"] == G_91:
+                for axis, number in axes.items():
+                    target[axis] += number
+            else:
+                offset = self.offset()
+                for axis, number in axes.items():
+                    target[axis] = number + offset[axis]
+            return target
+        work = self.work_position()
+        if self.modal["distance"] == G_91:
+            for axis, number in axes.items():
+                work[axis] += number
+        else:
+            work = [axes.get(i, w) for i, w in enumerate(work)]
+        return self.to_machine(work)
+
+    def _select_coord_system(self, code: int) -> None:
+        self.modal["coord_system"] = code
+        self.params.set(t.COORD_SYSTEM, float(t.COORD_SYSTEM_CODES.index(code) + 1))
+
+    def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        if code == G_69:
+            self.rotation = None
+            self.params.set(t.G68_ACTIVE, 0.0)
+        else:
+            work = self.work_position()
+            px = words.get("X", work[0] / self.scale) * self.scale
+            py = words.get("Y", work[1] / self.scale) * self.scale
+            angle = words.get("R", 0.0)
+            self.rotation = (px, py, angle)
+            for offset, number in enumerate((1.0, px, py, 0.0, 0.0, 0.0, angle)):
+                self.params.set(t.G68_ACTIVE + offset, number)
+        self.modal["rotation"] = code
+
+    def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        level = int(words.get("L", -1))
+        p = words.get("P")
+        if level == 1:
+            tool = int(p) if p is not None else -1
+            if not 1 <= tool <= t.MAX_TOOL:
+                raise self.fail("G10 L1 needs a tool number P1..P99", span)
+            if "Z" in words:
+                self.params.set(t.TOOL_LENGTH + tool, words["Z"] * self.scale)
+            if "R" in words:
+                self.params.set(t.TOOL_DIAMETER + tool, 2 * words["R"] * self.scale)
+            return
+        if level not in (2, 20):
+            raise self.fail("G10 needs L1 (tool table), L2 or L20 (coordinate system)", span)
+        system = int(p) if p is not None else -1
+        if p is None or p != system or not 0 <= system <= 9:
+            raise self.fail(f"G10 L{level} needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)", span)
+        if system == 0:
+            system = int(self.params.read(t.COORD_SYSTEM))
+        for axis, number in self._axis_values(words).items():
+            if level == 20:
+                others = self.offset()[axis] - self.params.read(t.coord_offset_param(
+                    int(self.params.read(t.COORD_SYSTEM)), axis))
+                number = self.pos[axis] - number - others
+            self.params.set(t.coord_offset_param(system, axis), number)
+
+    def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        base = t.G28_HOME if code == G_28 else t.G30_HOME
+        axes = self._axis_values(words)
+        if axes:  # the intermediate point, in the current coordinates
+            self._move("rapid", self._target(words))
+        chosen = sorted(axes) if axes else list(range(6))
+        home = list(self.pos)
+        for axis in chosen:
+            home[axis] = self.params.read(base + axis)
+        z_first = home[2] > self.pos[2]
+        if z_first and 2 in chosen:
+            self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
+        if any(axis != 2 for axis in chosen):
+            self._move("rapid", [home[i] if i != 2 else self.pos[i] for i in range(6)])
+        if not z_first and 2 in chosen:
+            self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
+
+    def _g92(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        axes = self._axis_values(words)
+        if not axes:
+            raise self.fail("G92 needs at least one axis word", span)
+        system = int(self.params.read(t.COORD_SYSTEM))
+        for axis, number in axes.items():
+            tool = self.tool_z if axis == 2 else 0.0
+            g5x = self.params.read(t.coord_offset_param(system, axis))
+            self.params.set(t.G92_OFFSET + axis, self.pos[axis] - g5x - tool - number)
+        for axis in range(6):
+            if axis not in axes and not self.g92_active:
+                self.params.set(t.G92_OFFSET + axis, 0.0)
+        self.g92_active = True
+        self._offset = None
+
+    def _g92_1(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        for axis in range(6):
+            self.params.set(t.G92_OFFSET + axis, 0.0)
+        self.g92_active = False
+        self._offset = None
+
+    def _g92_2(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.g92_active = False
+        self._offset = None
+
+    def _g92_3(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.g92_active = True
+        self._offset = None
+
+
+# The non-modal G codes this part runs (G4 and G53 belong to other steps), by method name.
+NON_MODAL: dict[int, str] = {G_10: "_g10", G_28: "_g28_g30", G_30: "_g28_g30", G_92: "_g92", G_92_1: "_g92_1",
+                             G_92_2: "_g92_2", G_92_3: "_g92_3"}

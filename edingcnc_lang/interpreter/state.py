@@ -1,0 +1,214 @@
+"""The interpreter's machine state and the constants its parts share.
+
+``MachineState`` holds what one virtual machine knows (modal state, position, feed, tools,
+parameters, the call stack) and the few helpers every part needs: errors that name the line,
+the step budget and handing a move to the canon.  The parts of the interpreter (control flow,
+line steps, offsets, motion, ...) are mixins on top of it, assembled in ``machine.py``.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, ClassVar
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import AXES, Arc, Canon, Event, Move, Pose
+from ..config import MachineConfig
+from ..errors import Location, MachineError
+from ..evaluator import Evaluator
+from ..host import Host
+from ..params import Parameters
+
+INCH = 25.4
+MAX_CALL_DEPTH = 64
+MIN_PROBE_DISTANCE = 0.254
+G = t.code_key  # G(38.2) -> 382
+
+AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
+AXIS_SET = frozenset(AXES)
+LINEAR_AXES = frozenset("XYZ")
+UNSUPPORTED_MOTION = frozenset(t.code_key(c) for c in (33, 33.1, 74, 76, 87))  # threading, back boring
+PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1, 60))  # M0, M1, M60
+
+# G codes as integer tenths, computed once (they are compared on every line).
+G_0 = G(0)
+G_1 = G(1)
+G_2 = G(2)
+G_3 = G(3)
+G_4 = G(4)
+G_10 = G(10)
+G_17 = G(17)
+G_18 = G(18)
+G_19 = G(19)
+G_20 = G(20)
+G_21 = G(21)
+G_28 = G(28)
+G_30 = G(30)
+G_38_2 = G(38.2)
+G_40 = G(40)
+G_43_1 = G(43.1)
+G_49 = G(49)
+G_51 = G(51)
+G_53 = G(53)
+G_54 = G(54)
+G_64 = G(64)
+G_68 = G(68)
+G_69 = G(69)
+G_70 = G(70)
+G_80 = G(80)
+G_90 = G(90)
+G_91 = G(91)
+G_92 = G(92)
+G_92_1 = G(92.1)
+G_92_2 = G(92.2)
+G_92_3 = G(92.3)
+G_93 = G(93)
+G_94 = G(94)
+G_95 = G(95)
+G_98 = G(98)
+G_99 = G(99)
+
+PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
+# Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
+CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
+MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | t.CANNED_CYCLES
+DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
+                 "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
+                 "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
+
+
+class ProgramEnd(Exception):
+    """M2/M30 (or the end of the file): stops execution wherever it is."""
+
+
+@dataclass
+class CallFrame:
+    """A sub being run, kept so that errors can show the GoSub chain that led to them."""
+
+    name: str  # lower-case sub name
+    path: str
+    line: int
+
+
+def format_value(value: float) -> str:
+    """How numbers appear in messages: integers plainly, others with up to 4 decimals."""
+    if value == int(value) and abs(value) < 1e15:
+        return str(int(value))
+    return f"{value:.4f}".rstrip("0").rstrip(".")
+
+
+
+def xyz_distance(a: list[float] | Pose, b: list[float] | Pose) -> float:
+    """Length of a move in XYZ (mm)."""
+    return math.dist(a[:3], b[:3])
+
+
+def fmt_point(point: tuple[float, float]) -> str:
+    return ", ".join(f"{v:.4f}" for v in point)
+
+
+class MachineState:
+    """What one virtual machine knows; create one Interpreter per job run."""
+
+    # Built by machine.py from the parts: statement type -> method, and the steps of a line in order.
+    _EXECUTE: ClassVar[dict[type, Callable[[Any, Any], None]]]
+    _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
+
+    def __init__(self, canon: Canon, config: MachineConfig | None = None, host: Host | None = None, *,
+                 max_steps: int | None = None, log_dir: Path | None = None, allow_exec: bool = False,
+                 simulation: bool = True, block_delete: bool = False) -> None:
+        self.canon = canon
+        self.config = config or MachineConfig.default()
+        self.host = host or Host()
+        self.max_steps = max_steps
+        self.log_dir = log_dir
+        self.allow_exec = allow_exec
+        self.block_delete = block_delete
+        self.steps = 0
+        self.subs: dict[str, n.Sub] = {}
+        self.stack: list[CallFrame] = []
+        self.params = Parameters(self._live_param, self._offsets_changed)
+        self.evaluator = Evaluator(self.params)
+        self.modal: dict[str, int] = dict(DEFAULT_MODAL)
+        self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
+        self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
+        self.speed = 0.0
+        self.spindle = 5                   # M3, M4 or M5
+        self.coolant: set[int] = set()
+        self.selected_tool = 0
+        self.tool_z = 0.0                  # active G43 length
+        self.g92_active = False
+        self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
+        self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
+        self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
+        self.outputs: dict[int, bool] = {}
+        self.kinematics_active = False
+        self.tanknife = False
+        self.ended_by = "end of file"
+        self.messages: list[Event] = []
+        self.path = "<string>"
+        self.line = 0
+        self._offset: list[float] | None = None
+        self._tool_cursor = 0
+        self._log_file: Path | None = None
+        self._init_params(simulation)
+
+    def _init_params(self, simulation: bool) -> None:
+        initial: dict[int, float] = dict(self.config.variables)
+        for number, tool in self.config.tools.items():
+            initial[t.TOOL_LENGTH + number] = tool.length
+            initial[t.TOOL_DIAMETER + number] = tool.diameter
+            initial[t.TOOL_X_OFFSET + number] = tool.x_delta
+            initial[t.TOOL_ORIENTATION + number] = float(tool.orientation)
+        for axis, joint in enumerate(self.config.joints):
+            initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
+            initial[t.SOFT_LIMIT_POS + axis] = joint.positive_limit
+            initial[t.HOME_POSITION + axis] = joint.home_position
+        initial.setdefault(t.COORD_SYSTEM, 1.0)
+        initial[t.SIMULATION] = 1.0 if simulation else 0.0
+        initial[t.KIN_TYPE] = 1.0
+        self.params.load(initial)
+        system = int(self.params.values[t.COORD_SYSTEM])
+        self.modal["coord_system"] = t.COORD_SYSTEM_CODES[system - 1] if 1 <= system <= 9 else G_54
+        self.params.values[t.COORD_SYSTEM] = float(t.COORD_SYSTEM_CODES.index(self.modal["coord_system"]) + 1)
+        self.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
+
+    @property
+    def scale(self) -> float:
+        return INCH if self.modal["units"] in (G_20, G_70) else 1.0
+
+    def where(self, span: n.Span | None = None) -> Location:
+        if span is not None and span.line:
+            return Location(span.path, span.line, span.col)
+        return Location(self.path, self.line)
+
+    def fail(self, message: str, span: n.Span | None = None) -> MachineError:
+        return MachineError(message, self.where(span))
+
+    def spend(self, steps: int, span: n.Span | None = None) -> None:
+        """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""
+        self.steps += steps
+        if self.max_steps is not None and self.steps > self.max_steps:
+            raise self.fail(f"step budget of {self.max_steps} steps exhausted (an endless loop?); "
+                            "raise it with --max-steps", span)
+
+    def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None) -> None:
+        start = tuple(self.pos)
+        self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc))  # type: ignore[arg-type]
+        self.pos = list(end)  # only a move the machine made changes the position
+
+    def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span) -> float:
+        """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode."""
+        mode = self.modal["feed_mode"]
+        if mode == G_93:
+            if "F" not in words or words["F"] <= 0:
+                raise self.fail("inverse time mode (G93) needs a positive F on every feed move", span)
+            return length * words["F"]
+        rate = self.feed * self.speed if mode == G_95 else self.feed
+        if rate <= 0:
+            raise self.fail("feed rate is 0: program an F word before this feed move (EdingCNC error G1516)",
+                            span)
+        return rate

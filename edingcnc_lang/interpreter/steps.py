@@ -1,0 +1,164 @@
+"""The steps of a G-code line in the controller's order of execution (tables.ORDER_OF_EXECUTION)."""
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import Event
+from .offsets import NON_MODAL
+from .state import (
+    G_0, G_17, G_4, G_40, G_43_1, G_49, G_51, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    format_value,
+)
+
+
+class LineSteps(MachineState):
+    """Each ``_step_<name>`` takes the value that triggered it (a G/M key or a word's value), the line's words,
+    its G codes by group and its span.  Add a step by adding a row to ``tables.ORDER_OF_EXECUTION`` and a
+    ``_step_<name>`` method here (or in a module of its own mixed into ``Interpreter``)."""
+
+    def _step_feed_mode(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if code != self.modal["feed_mode"]:
+            self.modal["feed_mode"] = code
+            self.feed = 0.0  # an F of the old mode means something else: the next feed move needs a new F
+
+    def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if value < 0:
+            raise self.fail("negative feed rate", span)
+        self.feed = value * (1.0 if self.modal["feed_mode"] == G_93 else self.scale)
+
+    def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                            span: n.Span) -> None:
+        if value < 0:
+            raise self.fail(f"spindle speed S{format_value(value)} is negative", span)
+        self.speed = value
+        if self.spindle != 5:
+            self.params.set(t.SPINDLE_SPEED, self.speed / 60.0)
+
+    def _step_tool_select(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                          span: n.Span) -> None:
+        if value != int(value) or not 0 <= value <= t.MAX_TOOL:
+            raise self.fail(f"tool T{format_value(value)} does not exist (tools are T0..T{t.MAX_TOOL})", span)
+        self.selected_tool = int(value)
+
+    def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._tool_change(span)
+
+    def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.spindle = code // 10
+        on = self.spindle != 5
+        self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
+        self.params.set(t.SPINDLE_SPEED, self.speed / 60.0 if on else 0.0)
+        self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed}))
+
+    def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.coolant = set() if code == 90 else self.coolant | {code // 10}
+        self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
+
+    def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.canon.event(Event("override", self.path, self.line, {"m": code // 10}))
+
+    def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._io(code // 10, words, span)
+
+    def _step_m_state(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.canon.event(Event("m_code", self.path, self.line, {"m": code // 10}))
+
+    def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if code == G_4:
+            self._dwell(words, span)
+
+    def _step_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """Plane, units, cutter compensation, path control, distance and return mode: state only."""
+        self.modal[t.G_GROUPS[code]] = code
+
+    def _step_length_offset(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
+                            span: n.Span) -> None:
+        self._length_offset(code, words, span)
+
+    def _step_coord_system(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
+                           span: n.Span) -> None:
+        self._select_coord_system(code)
+
+    def _step_rotation(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._rotation(code, words, span)
+
+    def _step_scaling(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        if code == G_51:
+            raise self.fail("G51 scaling is not supported", span)
+
+    def _step_non_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        handler = NON_MODAL.get(code)
+        if handler is not None:
+            getattr(self, handler)(code, words, span)
+
+    def _step_motion(self, code: int | None, words: Mapping[str, float], g: Mapping[str, int],
+                     span: n.Span) -> None:
+        self._motion(words, g, g.get("non_modal"), span)
+
+    def _step_stopping(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._stop(code, span)
+
+    def _tool_change(self, span: n.Span) -> None:
+        if "change_tool" in self.subs and all(f.name != "change_tool" for f in self.stack):
+            self.params.set(t.TOOL_NEW, float(self.selected_tool))
+            self.params.set(t.TOOL_CHANGED, 0.0)
+            self.call_sub("change_tool", span)
+            return
+        old = int(self.params.read(t.TOOL_CURRENT))
+        self.params.set(t.TOOL_CURRENT, float(self.selected_tool))
+        tool = self.selected_tool
+        self.params.set(t.TOOL_RADIUS, self.params.read(t.TOOL_DIAMETER + tool) / 2.0 if tool else 0.0)
+        self.params.set(t.TOOL_Z_OFFSET, self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0)
+        self.canon.event(Event("tool_change", self.path, self.line, {"tool": tool, "previous": old}))
+
+    def _io(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        port = int(words.get("P", words.get("E", 0)))
+        if code in (54, 55):
+            self.outputs[port] = code == 54
+            self.canon.event(Event("output", self.path, self.line, {"port": port, "on": code == 54,
+                                                                     "pwm": words.get("Q")}))
+        elif code == 56:
+            level = float(self.host.read_input(port)) if self.host.read_input else 0.0
+            wait = int(words.get("L", 0))
+            if wait in (1, 2) and (level != 0.0) != (wait == 1):
+                level = -1.0  # the wait for high (L1) / low (L2) timed out
+            self.params.set(t.IO_RESULT, level)
+        else:
+            self.params.set(t.IO_RESULT, 1.0 if self.outputs.get(port) else 0.0)
+
+    def _dwell(self, words: Mapping[str, float], span: n.Span) -> None:
+        if "P" not in words or words["P"] < 0:
+            raise self.fail("G4 needs a dwell time P (seconds) of 0 or more", span)
+        seconds = words["P"] / 1000.0 if self.config.g4_in_milliseconds else words["P"]
+        self.canon.event(Event("dwell", self.path, self.line, {"seconds": seconds}))
+
+    def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        if code == G_49:
+            self.tool_z = 0.0
+        else:
+            tool = int(words.get("H", self.params.read(t.TOOL_CURRENT)))
+            if not 0 <= tool <= t.MAX_TOOL:
+                raise self.fail(f"G43 H{tool}: no such tool", span)
+            if code == G_43_1:  # dynamic offset: K is the tool length (I, the lathe X offset, has no effect)
+                self.tool_z = words.get("K", 0.0) * self.scale
+            else:
+                self.tool_z = self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0
+        self.modal["length_offset"] = code
+        self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
+        self._offset = None
+
+    def _stop(self, code: int, span: n.Span) -> None:
+        if code in PAUSE_CODES:
+            self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
+            return
+        for group, reset in (("plane", G_17), ("distance", G_90), ("feed_mode", G_94),
+                             ("cutter_comp", G_40), ("motion", G_0)):
+            self.modal[group] = reset
+        self.spindle = 5
+        self.coolant = set()
+        self.params.set(t.SPINDLE_ON, 0.0)
+        self.ended_by = f"M{code // 10}"
+        self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
+        raise ProgramEnd()

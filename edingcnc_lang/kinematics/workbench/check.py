@@ -1,0 +1,151 @@
+"""``ecnc kins check``: prove a plug-in over a workspace and report every finding with its pose.
+
+Compiled plug-ins are checked in a child process (``isolate.py``) so that a crash in the library is a
+finding naming the call and the pose, not the end of ``ecnc``.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from edingcnc_lang.errors import PluginError
+from edingcnc_lang.kinematics.base import Kinematics
+from edingcnc_lang.kinematics.workbench import geometry_checks as geo
+from edingcnc_lang.kinematics.workbench import plugin_checks as plug
+from edingcnc_lang.kinematics.workbench.evaluate import call_each
+from edingcnc_lang.kinematics.workbench.findings import Finding, Report, report_from_json
+from edingcnc_lang.kinematics.workbench.workspace import (Workspace, default_workspace, from_cartesian_limits,
+                                                          from_joint_limits, parse_box)
+
+
+@dataclass(frozen=True)
+class CheckOptions:
+    """How hard to look: the workspace, the seed, how many poses, the tolerance (default: relative)."""
+
+    ini: str | None = None
+    box: tuple[float, ...] | None = None
+    seed: int = 0
+    samples: int = 2000
+    segments: int = 200
+    tolerance: float | None = None
+    speed: bool = True
+    isolate: bool = True
+
+    def to_json(self) -> dict[str, object]:
+        return asdict(self)
+
+
+@dataclass(frozen=True)
+class Machine:
+    """What the ini says about the plug-in: its settings, where plug-in files are, the joint limits."""
+
+    settings: Mapping[str, str]
+    search_dirs: tuple[Path, ...]
+    joint_limits: tuple[tuple[float, float], ...] | None
+
+
+def read_machine(ini: str | None) -> Machine:
+    if ini is None:
+        return Machine({}, (), None)
+    from edingcnc_lang.config import load_config
+    from edingcnc_lang.ini import read_ini
+
+    path = Path(ini)
+    raw = read_ini(path)
+    limits = tuple((j.negative_limit, j.positive_limit) for j in load_config(path).joints)
+    has_joint_sections = any(name.startswith("joint_") for name in raw.sections)
+    return Machine(raw.section("KINEMATICS"), (path.parent,), limits if has_joint_sections else None)
+
+
+def load_plugin(name: str, machine: Machine) -> Kinematics:
+    from edingcnc_lang.kinematics.loader import load_kinematics
+
+    return load_kinematics(name, machine.settings, machine.search_dirs)
+
+
+def is_compiled_file(name: str, machine: Machine) -> bool:
+    """Whether ``name`` resolves to a shared library (checked out of process)."""
+    from edingcnc_lang.kinematics.loader import _find_file
+
+    found = _find_file(name, machine.search_dirs)
+    return found is not None and found.suffix.lower() == ".so"
+
+
+def workspace_for(kins: Kinematics, options: CheckOptions, machine: Machine) -> Workspace:
+    if options.box is not None:
+        return parse_box(options.box)
+    space = from_cartesian_limits(machine.settings) if options.ini else None
+    if space is None and machine.joint_limits is not None:
+        space = from_joint_limits(kins, machine.joint_limits, options.seed)
+    return space or default_workspace()
+
+
+def check_plugin(name: str, options: CheckOptions = CheckOptions()) -> Report:
+    """Load ``name`` (a registered name or a .py/.so path, settings from ``options.ini``) and prove it."""
+    machine = read_machine(options.ini)
+    if options.isolate and is_compiled_file(name, machine):
+        from edingcnc_lang.kinematics.workbench.isolate import run_isolated
+
+        return report_from_json(run_isolated("check", {"name": name, "options": options.to_json()},
+                                             fallback=_crash_report(name, options)))
+    try:
+        kins = load_plugin(name, machine)
+    except PluginError as err:
+        if not is_compiled_file(name, machine):
+            raise
+        report = _crash_report(name, options)
+        report.findings.append(Finding("K601", err.message))
+        return report
+    return check_loaded(kins, name, options, machine)
+
+
+def _crash_report(name: str, options: CheckOptions) -> Report:
+    """The frame of a report when the plug-in could not be run at all."""
+    box = parse_box(options.box) if options.box else None
+    return Report(name, None, None, box.source if box else "not reached", box.box if box else ((0.0, 0.0),) * 6,
+                  options.seed, 0)
+
+
+def check_loaded(kins: Kinematics, label: str, options: CheckOptions, machine: Machine) -> Report:
+    """Every check on an already loaded plug-in, in the order a plug-in author would want them."""
+    space = workspace_for(kins, options, machine)
+    at = space.centre
+    rc = plug.switch_on(kins, at)
+    rng = np.random.default_rng(options.seed)
+    poses = space.random(options.samples, rng)
+    samples = geo.Samples(poses, call_each(kins.inverse, poses))
+    tol = geo.tolerance(space, options.tolerance)
+    report = Report(label, kins.kin_type(), kins.version(), space.source, space.box, options.seed, len(poses))
+    if rc != 0:
+        report.findings.append(Finding("K501", f"KIN ON (control ID 4) returned {rc}"))
+    steps = [lambda: geo.domain(samples, space),
+             lambda: geo.round_trip(kins, samples, space, tol),
+             lambda: geo.continuity(kins, samples, space, rng, segments=options.segments),
+             lambda: geo.singularities(kins, samples, space),
+             lambda: plug.control_and_state(kins, samples, tol, at),
+             lambda: plug.compiled_abi(kins)]
+    for step in steps:
+        section, findings = step()
+        report.sections.append(section)
+        report.findings.extend(findings)
+    if options.speed:
+        report.sections.append(plug.speed(kins, samples))
+    return report
+
+
+def options_from_json(data: Mapping[str, object]) -> CheckOptions:
+    values = dict(data)
+    if values.get("box") is not None:
+        values["box"] = tuple(float(v) for v in values["box"])  # type: ignore[union-attr]
+    return CheckOptions(**values)  # type: ignore[arg-type]
+
+
+def box_values(values: Sequence[float] | None) -> tuple[float, ...] | None:
+    """Validate ``--box`` numbers early, so a typo is a usage error before any plug-in runs."""
+    if values is None:
+        return None
+    parse_box(values)
+    return tuple(float(v) for v in values)

@@ -1,0 +1,91 @@
+"""Running a compiled plug-in's check in a child process, so a crash in the library is a finding.
+
+The child records every library call (which function, which pose) in a small shared file just
+before making it; when the child dies from a signal or hangs, the parent reads that record and
+names the call and the pose.  The child's report comes back as JSON on its standard output.
+"""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+
+from edingcnc_lang.errors import PluginError
+from edingcnc_lang.kinematics.workbench.findings import Finding, Report
+
+CALLS = ("KinematicsInverse", "KinematicsForward", "KinematicsControl", "KinematicsType", "KinematicsVersion")
+RECORD = 8  # doubles: call number, then six pose or joint values (or the control ID), then a counter
+TIMEOUT = 300.0
+
+
+def run_isolated(command: str, payload: Mapping[str, Any], fallback: Report, timeout: float = TIMEOUT) -> dict:
+    """Run ``child.py COMMAND PAYLOAD GUARD``; return its JSON report, or ``fallback`` with the crash in it."""
+    fd, guard = tempfile.mkstemp(prefix="ecnc-kins-guard-")
+    try:
+        os.write(fd, bytes(8 * RECORD))
+        os.close(fd)
+        argv = [sys.executable, "-m", "edingcnc_lang.kinematics.workbench.child", command, json.dumps(payload), guard]
+        try:
+            done = subprocess.run(argv, capture_output=True, text=True, timeout=timeout, check=False)
+        except subprocess.TimeoutExpired:
+            fallback.findings.append(_last_call(guard, "K604", f"did not return within {timeout:g} s"))
+            return fallback.to_json()
+        if done.returncode in (0, 1, 2) and done.stdout.strip():
+            result = json.loads(done.stdout)
+            if "error" in result:  # the plug-in could not be loaded: an error, as in-process
+                raise PluginError(result["error"])
+            return result
+        if done.returncode < 0:
+            name = signal.Signals(-done.returncode).name
+            fallback.findings.append(_last_call(guard, "K602", f"crashed the process ({name})"))
+        else:
+            tail = (done.stderr or "").strip().splitlines()[-1:] or ["no message"]
+            fallback.findings.append(_last_call(guard, "K602", f"ended the process with exit {done.returncode}: "
+                                                               f"{tail[0]}"))
+        return fallback.to_json()
+    finally:
+        os.unlink(guard)
+
+
+def _last_call(guard: str, code: str, what: str) -> Finding:
+    record = np.fromfile(guard, dtype=np.float64, count=RECORD)
+    call = int(record[0])
+    if not 1 <= call <= len(CALLS):
+        return Finding(code, f"the plug-in {what} before its first call")
+    name = CALLS[call - 1]
+    values = tuple(float(v) for v in record[1:7])
+    if name == "KinematicsControl":
+        return Finding(code, f"{name}(id {values[0]:g}) {what}")
+    if name == "KinematicsForward":
+        return Finding(code, f"{name} {what}", joints=values)
+    if name == "KinematicsInverse":
+        return Finding(code, f"{name} {what}", pose=values)
+    return Finding(code, f"{name}() {what}")
+
+
+def guard_calls(kins: Any, guard: str) -> None:
+    """Wrap a ``CompiledKinematics``'s library functions so each call is recorded before it is made."""
+    record = np.memmap(guard, dtype=np.float64, mode="r+", shape=(RECORD,))
+    for number, name in enumerate(CALLS, start=1):
+        fn = kins._fn[name]
+        kins._fn[name] = _recorder(fn, number, record)
+
+
+def _recorder(fn: Callable[..., Any], number: int, record: np.memmap) -> Callable[..., Any]:
+    def call(*args: Any) -> Any:
+        record[0] = number
+        first = args[0] if args else None
+        if hasattr(first, "_fields_"):
+            record[1:7] = [getattr(first, f) for f, _ in first._fields_]
+        elif isinstance(first, int):
+            record[1] = first
+        record[7] += 1
+        return fn(*args)
+    return call

@@ -1,0 +1,131 @@
+"""The workspace a plug-in is proven over, and seeded sample poses in it.
+
+The box comes from, in order: ``--box``; the Cartesian limits of the ini (``[KINEMATICS]
+positiveLimitX`` ...); the joint limits of the ini (``[JOINT_n] positiveLimit``) mapped through the
+plug-in's forward kinematics; else a default cube.  Rotary axes whose limits mean "unlimited"
+(|limit| >= 10000, as cnc.ini writes 99999) are proven over one turn, -180..180.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from edingcnc_lang.kinematics.base import Kinematics
+
+AXES = "xyzabc"
+DEFAULT_BOX = ((-100.0, 100.0), (-100.0, 100.0), (-100.0, 100.0), (0.0, 0.0), (0.0, 0.0), (0.0, 0.0))
+UNLIMITED = 10_000.0
+ONE_TURN = (-180.0, 180.0)
+
+
+@dataclass(frozen=True)
+class Workspace:
+    """Six (low, high) ranges; an axis with low == high is held fixed."""
+
+    box: tuple[tuple[float, float], ...]
+    source: str
+
+    @property
+    def lows(self) -> np.ndarray:
+        return np.array([lo for lo, _ in self.box])
+
+    @property
+    def extents(self) -> np.ndarray:
+        return np.array([hi - lo for lo, hi in self.box])
+
+    @property
+    def varying(self) -> list[int]:
+        """Indices of the axes that move."""
+        return [i for i, (lo, hi) in enumerate(self.box) if hi > lo]
+
+    @property
+    def size(self) -> float:
+        """The diagonal of the box: the scale tolerances are relative to (at least 1)."""
+        return max(1.0, float(np.linalg.norm(self.extents)))
+
+    @property
+    def centre(self) -> tuple[float, ...]:
+        return tuple(float(v) for v in self.lows + self.extents / 2.0)
+
+    def random(self, count: int, rng: np.random.Generator) -> np.ndarray:
+        """``count`` poses drawn uniformly, with the corners and the centre first (where plug-ins break)."""
+        corners = _corners(self)
+        uniform = self.lows + rng.random((max(0, count - len(corners)), 6)) * self.extents
+        return np.vstack((corners, uniform))[:count]
+
+
+def _corners(space: Workspace) -> np.ndarray:
+    """The centre and every corner of the moving axes (at most 64 poses)."""
+    axes = space.varying
+    rows = [list(space.centre)]
+    for mask in range(2 ** len(axes)):
+        row = list(space.centre)
+        for bit, axis in enumerate(axes):
+            row[axis] = space.box[axis][(mask >> bit) & 1]
+        rows.append(row)
+    return np.array(rows, dtype=float)
+
+
+def parse_box(values: Sequence[float]) -> Workspace:
+    """``X0 X1 Y0 Y1 Z0 Z1 [A0 A1 [B0 B1 [C0 C1]]]`` from the command line."""
+    if len(values) % 2 or not 6 <= len(values) <= 12:
+        raise ValueError("--box takes X0 X1 Y0 Y1 Z0 Z1 and optionally A0 A1 B0 B1 C0 C1 (6 to 12 numbers)")
+    pairs = [(min(values[i], values[i + 1]), max(values[i], values[i + 1])) for i in range(0, len(values), 2)]
+    pairs += [(0.0, 0.0)] * (6 - len(pairs))
+    return Workspace(tuple(pairs), "--box")
+
+
+def _limited(pair: tuple[float, float], axis: int) -> tuple[float, float]:
+    lo, hi = pair
+    if axis >= 3 and (abs(lo) >= UNLIMITED or abs(hi) >= UNLIMITED):
+        return ONE_TURN
+    return (min(lo, hi), max(lo, hi))
+
+
+def from_cartesian_limits(section: Mapping[str, str]) -> Workspace | None:
+    """The ``[KINEMATICS]`` positive/negativeLimit<axis> keys, if the ini gives the linear ones."""
+    def number(key: str) -> float | None:
+        try:
+            return float(section[key.lower()])
+        except (KeyError, ValueError):
+            return None
+
+    pairs = []
+    for axis, letter in enumerate(AXES.upper()):
+        lo, hi = number(f"negativeLimit{letter}"), number(f"positiveLimit{letter}")
+        if lo is None or hi is None:
+            if axis < 3:
+                return None
+            pairs.append((0.0, 0.0))
+            continue
+        pairs.append(_limited((lo, hi), axis))
+    return Workspace(tuple(pairs), "cnc.ini [KINEMATICS] limits")
+
+
+def from_joint_limits(kins: Kinematics, joint_limits: Sequence[tuple[float, float]], seed: int) -> Workspace | None:
+    """The bounding box of the poses the plug-in's forward gives inside the joint limits."""
+    lows = np.array([lo for lo, _ in joint_limits], dtype=float)
+    highs = np.array([hi for _, hi in joint_limits], dtype=float)
+    clipped = [_limited((lo, hi), i) for i, (lo, hi) in enumerate(zip(lows, highs))]
+    lows, highs = np.array([c[0] for c in clipped]), np.array([c[1] for c in clipped])
+    rng = np.random.default_rng(seed)
+    joints = lows + rng.random((2000, 6)) * (highs - lows)
+    poses = []
+    for row in joints:
+        try:
+            pose = kins.forward(tuple(float(v) for v in row))
+        except Exception:  # an unassemblable joint set is simply outside the workspace
+            continue
+        if all(np.isfinite(pose)):
+            poses.append(pose)
+    if not poses:
+        return None
+    found = np.array(poses)
+    pairs = tuple((float(lo), float(hi)) for lo, hi in zip(found.min(axis=0), found.max(axis=0)))
+    return Workspace(pairs, "cnc.ini joint limits through the plug-in's forward kinematics")
+
+
+def default_workspace() -> Workspace:
+    return Workspace(DEFAULT_BOX, "default cube; give --box or --ini for your machine")

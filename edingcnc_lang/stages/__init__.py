@@ -1,0 +1,15 @@
+"""The stages of the move pipeline, in the order moves pass through them (see base.py).
+
+To add a stage: write a ``Stage`` (or ``LookaheadStage``) subclass in a module of its own here
+and put its class in ``STAGES`` at the place it belongs; it is built with the next canon and the
+machine configuration.  A stage may import ``canon``, ``config``, ``geometry`` and ``errors``,
+never the interpreter or the motion stage.
+"""
+from __future__ import annotations
+
+from .base import LookaheadStage, Pipeline, Stage, StageFactory
+
+# First to last: the interpreter emits into the first; the last hands on to the motion stage.
+STAGES: tuple[StageFactory, ...] = ()
+
+__all__ = ["STAGES", "LookaheadStage", "Pipeline", "Stage", "StageFactory"]
