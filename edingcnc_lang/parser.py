@@ -25,6 +25,7 @@ from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
 from .dialogs import SYNTAX_CODES, dialog_fields
 from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
+from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, line_problem
 from .markers import Close, LineResult, Open
 from .source import iter_file_lines, iter_text_lines
 from .tree_builder import Builder as _Builder, LineError as _LineError, make_block as _make_block
@@ -108,6 +109,8 @@ def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
 
 def _non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines, found in one regex pass."""
+    if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
+        return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not _FAST_LINE.match(text)]
     joined = "\n".join(chunk)
     found = []
     index, position = 0, 0
@@ -209,11 +212,17 @@ def _explain(text: str, exc: UnexpectedInput) -> _LineError:
 # --------------------------------------------------------------------------- one line
 
 def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
-    """Parse one source line; raises _LineError on a syntax error."""
+    """Parse one source line; raises _LineError on a syntax error or a line past the limits."""
+    if len(text) > MAX_LINE_LENGTH:
+        raise _LineError("E110", f"line is longer than {MAX_LINE_LENGTH} characters, the limit for one line "
+                         "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)
     if _FAST_LINE.match(text):
         return _fast_block(text, path, line)
     if _EMPTY_LINE.match(text):  # blank or comments only
         return None
+    problem = line_problem(text)
+    if problem is not None:
+        raise _LineError(*problem)
     result = parse_fast(text, path, line)
     return parse_line_grammar(text, path, line) if result is GIVE_UP else result  # type: ignore[return-value]
 
@@ -291,6 +300,7 @@ class StatementReader:
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
         self._lines = lines
+        self._skipped = 0  # blocks open beyond MAX_BLOCK_DEPTH, whose lines are dropped
 
     def _error(self, code: str, message: str, line: int, col: int, source: str = "") -> None:
         self.diagnostics.append(Diagnostic.make(code, message, self.path, line, col, source))
@@ -336,7 +346,8 @@ class StatementReader:
         path = self.path
         if lineno == 1 and self._read_unit(text):
             return
-        if bulk and stack and self.mode == "run" and _FAST_LINE.match(text):
+        if bulk and stack and self.mode == "run" and not self._skipped and len(text) <= MAX_LINE_LENGTH \
+                and _FAST_LINE.match(text):
             stack[-1].add(plain_block(text, path, lineno))
             return
         try:
@@ -346,14 +357,18 @@ class StatementReader:
             return
         if result is None:
             return
+        if self._skipped and not isinstance(result, Open):  # inside blocks nested too deeply: dropped
+            if isinstance(result, Close) and result.kind != "Else":
+                self._skipped -= 1
+            return
         if self.check_dialogs and isinstance(result, n.Dialog):
             self._check_dialog(result, text)
         if isinstance(result, Open):
-            if result.kind == "Sub" and stack:
+            if result.kind == "Sub" and stack and not self._skipped:
                 self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
                             f"close that first (subs cannot be nested)", lineno, result.span.col, text)
                 yield from self._unwind(stack, lineno, report=False)
-            stack.append(_Frame(result, text))
+            self._push(stack, result, text)
         elif isinstance(result, Close):
             done = self._close(stack, result, text)
             if done is not None:
@@ -379,11 +394,10 @@ class StatementReader:
             self._error(err.code, err.message, lineno, err.col, text)
         if opener:  # keep the block structure so its EndIf/EndWhile still matches
             span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
-            frame = _Frame(Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0)),
-                           text)
-            if self.tolerant:  # the block is there, but reaching its head is the error
-                frame.add(n.BadLine(err.code, err.message, err.col, span))
-            stack.append(frame)
+            head = Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0))
+            self._push(stack, head, text)
+            if self.tolerant and stack and stack[-1].opener is head:  # reaching the head is the error
+                stack[-1].add(n.BadLine(err.code, err.message, err.col, span))
 
     def _check_dialog(self, dialog: n.Dialog, text: str) -> None:
         """Report the dlgmsg shapes the controller refuses when it reads the line (G1167)."""
@@ -393,6 +407,17 @@ class StatementReader:
                 col = (text.find(f'"{item}"') + 1 or dialog.span.col) if isinstance(item, str) \
                     else (item.span.col if item is not None else dialog.span.col)
                 self._error(problem.code, problem.message, dialog.span.line, col, text)
+
+    def _push(self, stack: list[_Frame], opener: Open, text: str) -> None:
+        """Open a block; one nested deeper than MAX_BLOCK_DEPTH is reported and skipped to its end."""
+        if len(stack) < MAX_BLOCK_DEPTH:
+            stack.append(_Frame(opener, text))
+            return
+        if not self._skipped:
+            self._error("E112", f"blocks nested more than {MAX_BLOCK_DEPTH} deep (If, While and Sub inside "
+                        "each other, the nesting limit): move the inner part into a Sub", opener.span.line,
+                        opener.span.col, text)
+        self._skipped += 1
 
     def raise_errors(self) -> None:
         """Raise SyntaxErrors with every diagnostic, in line order, if there is any."""

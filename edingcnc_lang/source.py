@@ -10,7 +10,12 @@ from __future__ import annotations
 import os
 from collections.abc import Iterator
 
+from .limits import MAX_LINE_LENGTH
+
 BOM = b"\xef\xbb\xbf"
+# Bytes kept of a line longer than the limit: enough for MAX_LINE_LENGTH + 1 characters in any
+# encoding, so the parser still sees it is too long; the rest is skipped, not held in memory.
+LONG_LINE_BYTES = 4 * (MAX_LINE_LENGTH + 1)
 
 
 def decode_line(raw: bytes) -> str:
@@ -28,18 +33,26 @@ def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
     """Yield the lines of a file without their line ends (LF, with any CRs before it).
 
     The file is read in blocks of about a megabyte and each block is decoded at once;
-    only a block that is not valid UTF-8 is decoded line by line.
+    only a block that is not valid UTF-8 is decoded line by line.  A line longer than
+    LONG_LINE_BYTES is cut there (the parser refuses it), so memory stays bounded.
     """
     with open(path, "rb") as handle:
         head = handle.read(len(BOM))
         pending = b"" if head == BOM else head
+        skipping = False  # inside the rest of an over-long line
         while True:
             block = handle.read(CHUNK)
+            if skipping and block:
+                end = block.find(b"\n")
+                if end < 0:
+                    continue
+                skipping, block = False, block[end:]
             data = pending + block
             if block:
                 cut = data.rfind(b"\n")
                 if cut < 0:
-                    pending = data
+                    skipping = len(data) > LONG_LINE_BYTES
+                    pending = data[:LONG_LINE_BYTES]
                     continue
                 pending, body = data[cut + 1:], data[:cut]
             elif not data:

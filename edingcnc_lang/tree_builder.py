@@ -20,7 +20,7 @@ if TYPE_CHECKING:
 KIN_MODES = frozenset({"ON", "OFF", "CTRL", "X2A", "X2XA", "Y2A", "Y2YA", "Z2C", "Z2ZC", "Y2YAZ2ZC"})
 
 
-class _LineError(Exception):
+class LineError(Exception):
     """A problem found while converting one line (code, message, column)."""
 
     def __init__(self, code: str, message: str, col: int) -> None:

@@ -35,7 +35,8 @@ def test_wheel_works_outside_the_repository(tmp_path: Path) -> None:
     names = set(zipfile.ZipFile(wheel).namelist())
     for needed in ("edingcnc_lang/grammar/gcode.lark", "edingcnc_lang/grammar/macro.lark",
                    "edingcnc_lang/stdlib/macro.cnc", "edingcnc_lang/kins/rotatekins.py",
-                   "edingcnc_lang/kins/c/rotatekins.c"):
+                   "edingcnc_lang/kins/c/rotatekins.c", "edingcnc_lang/knowledge/gm.py",
+                   "edingcnc_lang/lsp/server.py"):
         assert needed in names, needed
     unpacked = tmp_path / "site"
     zipfile.ZipFile(wheel).extractall(unpacked)

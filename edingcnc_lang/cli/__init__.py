@@ -22,7 +22,15 @@ from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error
 EXIT_ABORTED = 1
 
 # Every command: its name and "module:attribute" in this package (see docs/cli.md, "Adding a command").
-COMMANDS = {"kins": "kins_cmd:kins", "lint": "lint_cmd:lint", "parse": "parse_cmd:parse", "run": "run_cmd:run"}
+COMMANDS = {
+    "kins": "kins_cmd:kins",
+    "lint": "lint_cmd:lint",
+    "lsp": "lsp_cmd:lsp",
+    "parse": "parse_cmd:parse",
+    "plot": "plot_cmd:plot",
+    "run": "run_cmd:run",
+    "view": "view_cmd:view",
+}
 
 COMPLETE_VAR = "_ECNC_COMPLETE"
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -79,7 +79,7 @@ def is_macro_name(path: Path) -> bool:
     return path.name.lower() in MACRO_NAMES or path.suffix.lower() == ".cnc"
 
 
-def _beside(folder: Path) -> tuple[Path, ...]:
+def macros_beside(folder: Path) -> tuple[Path, ...]:
     """macro.cnc and user_macro.cnc in ``folder``, names matched case-insensitively like Windows."""
     try:
         entries = {p.name.lower(): p for p in folder.iterdir() if p.is_file()}
@@ -91,37 +91,40 @@ def _beside(folder: Path) -> tuple[Path, ...]:
 class _Loader:
     """Parses each file once, whether it is linted, a macro file, or both."""
 
-    def __init__(self, given_macros: Sequence[Path]) -> None:
+    def __init__(self, given_macros: Sequence[Path], texts: Mapping[Path, str]) -> None:
         self.given = tuple(given_macros)
+        self.texts = texts
         self.files: dict[Path, SourceFile] = {}
         self._folders: dict[Path, tuple[Path, ...]] = {}
 
     def load(self, path: Path, is_macro: bool) -> SourceFile:
         key = path.resolve()
         if key not in self.files:
-            self.files[key] = load_source(path, is_macro)
+            self.files[key] = load_source(path, is_macro, self.texts.get(key))
         return self.files[key]
 
     def macros_for(self, path: Path) -> list[SourceFile]:
         folder = path.resolve().parent
         if folder not in self._folders:
-            self._folders[folder] = _beside(folder)
+            self._folders[folder] = macros_beside(folder)
         paths = self.given or self._folders[folder]
         return [self.load(p, True) for p in paths if p.resolve() != path.resolve()]
 
 
-def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = LintOptions()) -> list[Diagnostic]:
+def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = LintOptions(),
+               texts: Mapping[str, str] | None = None) -> list[Diagnostic]:
     """Every finding in the files under ``paths``, filtered by the options, sorted by file and line.
 
     ``.ini`` files (given as paths or with ``--ini``) are checked as machine configurations; the
-    variables their kinematics writes count as written for V302.
+    variables their kinematics writes count as written for V302.  ``texts`` holds the unsaved
+    contents of files open in an editor, by path: they are read instead of the disk.
     """
     paths = [os.fspath(p) for p in paths]
     inis = [options.ini] if options.ini else [p for p in paths if p.lower().endswith(CONFIG_SUFFIX)]
     target = resolve(options.target, paths, inis[0] if inis else None)
     given = [Path(p) for p in (options.macro, options.user_macro) if p]
     given_resolved = {g.resolve() for g in given}
-    loader = _Loader(given)
+    loader = _Loader(given, {Path(p).resolve(): text for p, text in (texts or {}).items()})
     found: list[Diagnostic] = []
     written: frozenset[int] = frozenset()
     targets: list[SourceFile] = []
@@ -141,13 +144,8 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     active = [r for r in RULES if any(wanted(c, options) for c in r.codes)]
     project = Project(list(loader.files.values()), macros, written)
     for file in dict.fromkeys(targets):
-        for rule in active:
-            try:
-                found.extend(rule.check(file, project))
-            except RecursionError:  # thousands of nested blocks: this rule cannot analyse this file
-                project.too_deep.add(file.path)
-        if file.path in project.too_deep:
-            found.append(Diagnostic.make("E100", "blocks are nested too deeply to analyse", file.path, 1, 1))
+        for rule in active:  # the parser's nesting limits keep every walk within the stack
+            found.extend(rule.check(file, project))
     return _finish(found, options, target, {f.path: f.lines for f in loader.files.values()})
 
 

@@ -85,10 +85,7 @@ def _binary(expr: n.Binary, lookup: Lookup) -> float | None:
 
 def constant_index(param: n.Param) -> float | None:
     """The index of ``#n`` or ``#[literal expression]``; None when it depends on parameters."""
-    try:
-        return evaluate(param.index)
-    except RecursionError:  # hundreds of chained operators: not worth folding, treated as computed
-        return None
+    return evaluate(param.index)
 
 
 def reads_param(expr: n.Expr, index: int) -> bool:

@@ -10,7 +10,7 @@ from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..errors import EXIT_USAGE, EcncError, Location
 from ..parser import StatementReader
-from ..source import iter_file_lines
+from ..source import iter_file_lines, iter_text_lines
 
 
 class UnreadableFile(EcncError):
@@ -36,11 +36,11 @@ class SourceFile:
         return self.lines[number - 1] if 0 < number <= len(self.lines) else ""
 
 
-def load_source(path: str | os.PathLike[str], is_macro: bool) -> SourceFile:
-    """Read and parse a file; syntax errors become findings, never exceptions."""
+def load_source(path: str | os.PathLike[str], is_macro: bool, text: str | None = None) -> SourceFile:
+    """Read and parse a file (or ``text``, its unsaved contents in an editor); syntax errors become findings."""
     shown = os.fspath(path)
     try:
-        lines = tuple(iter_file_lines(path))
+        lines = tuple(iter_file_lines(path) if text is None else iter_text_lines(text))
     except OSError as exc:
         raise UnreadableFile(f"cannot read: {exc.strerror or exc}", Location(shown)) from None
     reader = StatementReader(lines, shown)

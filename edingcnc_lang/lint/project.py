@@ -52,18 +52,12 @@ class Project:
         self._extra_written = extra_written
         self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}
         self._facts: dict[str, FileFacts] = {}
-        self.too_deep: set[str] = set()  # paths of files nested too deeply to walk
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
-        """Every statement of the file with its scope; none for a file nested too deeply to walk."""
+        """Every statement of the file with its scope."""
         found = self._walked.get(file.path)
         if found is None:
-            try:
-                found = tuple(walk(file.body))
-            except RecursionError:  # thousands of nested blocks: reported by the driver, not analysed
-                self.too_deep.add(file.path)
-                found = ()
-            self._walked[file.path] = found
+            found = self._walked[file.path] = tuple(walk(file.body))
         return found
 
     def facts(self, file: SourceFile) -> FileFacts:
@@ -94,13 +88,16 @@ class Project:
         return None
 
     def callees(self, file: SourceFile, stmt: n.Stmt, scope: Scope) -> Iterator[tuple[SourceFile, n.Sub]]:
-        """The subs a statement runs (inside ``Sub m3`` an M3 is the built-in, not a call)."""
+        """The subs a statement runs (inside ``Sub m3`` an M3 is the built-in, not a call; so is M6
+        inside ``change_tool``, where it commits the tool)."""
         if isinstance(stmt, n.GoSub):
             found = self.resolve(file, stmt.name)
             if found:
                 yield found
         elif isinstance(stmt, n.Block):
             own = m_sub_number(scope.sub.name) if scope.sub else None
+            if scope.sub and scope.sub.name.lower() == TOOL_CHANGE_SUB:
+                own = TOOL_CHANGE // 10
             for key, _word in self.codes(file, stmt, "M"):
                 whole, tenth = divmod(key, 10)
                 name = TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"

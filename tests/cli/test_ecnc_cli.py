@@ -148,13 +148,13 @@ def test_text_the_console_cannot_show_is_escaped_not_a_traceback(tmp_path: Path)
     assert b"    G0 G1 X1 ; caf\\xe9\n" in result.stdout
 
 
-def test_a_tree_too_deep_for_json_is_an_error_not_a_traceback(tmp_path: Path) -> None:
+def test_blocks_nested_past_the_limit_are_a_syntax_error_not_a_traceback(tmp_path: Path) -> None:
     deep = tmp_path / "deep.nc"
     deep.write_text("If [1]\n" * 3000 + "G0 X1\n" + "EndIf\n" * 3000)
-    assert invoke("parse", deep).exit_code == 0  # parsing itself is fine
-    result = invoke("parse", "--json", deep)
-    assert (result.exit_code, result.stdout) == (70, "")
-    assert result.stderr == f"{deep}: error: blocks are nested too deeply to write the tree as JSON\n"
+    for command in (("parse",), ("parse", "--json")):
+        result = invoke(*command, deep)
+        assert (result.exit_code, result.stdout) == (65, "")
+        assert result.stderr.startswith(f"{deep}:51:1: error: blocks nested more than 50 deep")
 
 
 def test_ctrl_c_aborts_with_exit_1(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:

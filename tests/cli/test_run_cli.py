@@ -333,7 +333,6 @@ KNOWN_CRASHES = [  # each of these once ended in a Python traceback
     pytest.param('dlgmsg "t" "a" 99999\n', id="dlgmsg field #99999"),
     pytest.param("GetToolInfo first 6000\n", id="GetToolInfo into #6000"),
     pytest.param('logfile ".." 0\nlogmsg "x"\n', id="logfile .."),
-    pytest.param("If [1]\n" * 400 + "EndIf\n" * 400, id="If nested 400 deep"),
 ]
 
 

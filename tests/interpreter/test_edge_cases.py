@@ -81,8 +81,12 @@ def test_an_unwritable_trace_is_an_error_not_a_traceback(tmp_path: Path) -> None
     assert "error: cannot write" in result.stderr and "Traceback" not in result.stderr
 
 
-def test_absurdly_deep_brackets_are_parsed_by_the_grammar(tmp_path: Path) -> None:
+def test_brackets_up_to_the_limit_parse_and_deeper_ones_are_refused(tmp_path: Path) -> None:
     job = tmp_path / "deep.nc"
-    job.write_text("#1000=" + "[" * 400 + "1" + "]" * 400 + "\n")
+    job.write_text("#1000=" + "[" * 200 + "1" + "]" * 200 + "\n")
     result = invoke("parse", job)
     assert result.exit_code == 0, result.output
+    job.write_text("#1000=" + "[" * 201 + "1" + "]" * 201 + "\n")
+    result = invoke("parse", job)
+    assert result.exit_code == 65
+    assert result.output.startswith(f"{job}:1:207: error: brackets nested more than 200 deep")

@@ -1,4 +1,4 @@
-"""Inputs too deep for the analysis: what cannot be analysed is reported, everything else still is."""
+"""Inputs past the nesting limits: reported, and everything else in the files still is."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -16,13 +16,13 @@ def test_a_file_nested_too_deeply_is_reported_and_the_others_keep_their_findings
     plain = tmp_path / "plain.nc"
     plain.write_text("G0 G1 X1\nM30\n")
     found = lint_paths([tmp_path])
-    assert (1, "E100") in _codes(found, deep)
-    assert (6002, "F601") in _codes(found, deep)  # rules that need no statement walk still run
+    assert (51, "E112") in _codes(found, deep)
+    assert (6002, "F601") in _codes(found, deep)
     assert _codes(found, plain) == [(1, "G500")]
 
 
-def test_a_long_chain_of_operators_is_left_unfolded_not_an_error(tmp_path: Path) -> None:
+def test_a_chain_of_operators_past_the_limit_is_an_error(tmp_path: Path) -> None:
     job = tmp_path / "chain.nc"
     job.write_text("G0 G1 X1\n#1 = #[" + "+".join(["1"] * 500) + "]\nM30\n")
     found = lint_paths([job])
-    assert [(d.line, d.code) for d in found] == [(1, "G500"), (2, "F601")]
+    assert [(d.line, d.code) for d in found] == [(1, "G500"), (2, "E111"), (2, "F601")]

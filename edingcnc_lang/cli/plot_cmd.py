@@ -1,0 +1,41 @@
+"""``ecnc plot JOB``: a picture of the toolpath (or of the joints over time) with matplotlib."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from .base import Command, usage_error
+from .options import MachineOptions, job_argument, machine_options
+from .params import OUTPUT_FILE
+from .view_cmd import report
+
+VIEWS = ("auto", "top", "front", "side", "iso")
+COLORS = ("tool", "kind", "feed", "speed")
+FORMATS = (".png", ".svg", ".pdf")
+
+
+@click.command("plot", cls=Command, short_help="Draw the toolpath of JOB as a PNG, SVG or PDF picture.")
+@job_argument
+@machine_options
+@click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
+              help="Picture to write; .png, .svg or .pdf (default: JOB.png beside the job).")
+@click.option("--view", type=click.Choice(VIEWS), default="auto", show_default=True,
+              help="Seen from above, the front, the right side or isometric; auto: top, or front for a lathe job.")
+@click.option("--color", type=click.Choice(COLORS), default="tool", show_default=True,
+              help="Colour the feed moves by tool, by kind, by programmed feed or by the planner's speed.")
+@click.option("--fit", type=click.Choice(("job", "machine")), default="job", show_default=True,
+              help="Fit the picture to the job, or to the machine's travel from cnc.ini.")
+@click.option("--joints", is_flag=True,
+              help="Plot the joint positions over time instead (default file: JOB-joints.png).")
+def plot(job: str, machine: MachineOptions, output: str | None, view: str, color: str, fit: str,
+         joints: bool) -> int:
+    """Run JOB and draw its toolpath: rapids dashed, feeds solid, arcs as arcs, the work zero, the
+    part's bounding box and the machine limits. Prints the file written."""
+    from ..plot.commands import plot_job
+
+    if output and Path(output).suffix.lower() not in FORMATS:
+        raise usage_error(f"--output {output}: the extension names the format, one of {', '.join(FORMATS)}")
+    written = plot_job(Path(job), machine.run_options(), Path(output) if output else None,
+                       view=view, color=color, fit=fit, joints=joints)
+    return report(written)

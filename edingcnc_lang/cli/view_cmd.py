@@ -1,0 +1,66 @@
+"""``ecnc view JOB``: one self-contained HTML page with an interactive 3D view of the toolpath."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import click
+
+from ..errors import EXIT_OK, JobAborted
+from .base import Command
+from .options import MachineOptions, job_argument, machine_options
+from .params import OUTPUT_FILE, POSITIVE_INT
+
+if TYPE_CHECKING:
+    from ..plot.commands import Written
+
+
+class LineRange(click.ParamType):
+    """``A:B`` job lines, both included (``A:`` to the end, ``:B`` from the start)."""
+
+    name = "A:B"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[int, int]:
+        if isinstance(value, tuple):
+            return value
+        from ..plot.commands import parse_line_range
+
+        try:
+            return parse_line_range(str(value))
+        except ValueError as err:
+            self.fail(str(err), param, ctx)
+
+
+@click.command("view", cls=Command, short_help="Write an interactive 3D view of JOB as one HTML file.")
+@job_argument
+@machine_options
+@click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
+              help="HTML file to write (default: JOB.html beside the job).")
+@click.option("--view", type=click.Choice(("auto", "top", "front", "side", "iso")), default="auto",
+              show_default=True, help="The view the page opens with; auto: iso, or front for a lathe job.")
+@click.option("--max-moves", metavar="N", type=POSITIVE_INT,
+              help="Moves in the page before long runs of feed moves are thinned (default 25000).")
+@click.option("--lines", metavar="A:B", type=LineRange(),
+              help="Only the moves made by job lines A to B (with the subs they call), in full.")
+def view(job: str, machine: MachineOptions, output: str | None, view: str, max_moves: int | None,
+         lines: tuple[int, int] | None) -> int:
+    """Run JOB and write a page to open in any browser, without network access: rotate, pan,
+    zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
+    lines and the machine position. Prints the file written."""
+    from ..plot.commands import view_job
+
+    written = view_job(Path(job), machine.run_options(), Path(output) if output else None,
+                       max_moves=max_moves, lines=lines, view=view)
+    return report(written)
+
+
+def report(written: Written) -> int:
+    """Print the file written; after a runtime error (the picture shows the path up to it) the error too."""
+    print(written.out)
+    error = written.path.error
+    if error is None:
+        return EXIT_OK
+    if not isinstance(error, JobAborted):  # an errmsg text was shown as it ran
+        print(error.format(), file=sys.stderr)
+    return error.exit_code

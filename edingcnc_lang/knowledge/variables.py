@@ -1,0 +1,59 @@
+"""The parameters (#1..#5999) by number: their names and what they hold.
+
+One row per range: (first, last, name, detail).  In a name, ``{axis}`` becomes the axis of
+a six-number range (X..C), ``{n}`` the position in the range counted from 1 (the tool
+number of the tool table).  Which numbers are read-only comes from ``tables.py``.
+"""
+from __future__ import annotations
+
+Row = tuple[int, int, str, str]
+
+ROWS: tuple[Row, ...] = (
+    (1, 26, "M-code sub argument {letter}",
+     "In a Sub mNNN, the letter words of the calling line (A = #1 ... Z = #26); an absent letter reads -1e10."),
+    (27, 3999, "user variable", "Volatile: starts at 0 in each run."),
+    (4000, 4999, "persistent user variable", "Stored in cnc.ini [VARIABLES]: kept from run to run."),
+    (5001, 5006, "work position {axis}", "Current position in the active work coordinates."),
+    (5008, 5008, "current tool", "The tool in the spindle."),
+    (5009, 5009, "tool radius", "Radius of the current tool."),
+    (5010, 5010, "tool Z offset", "Length offset of the current tool."),
+    (5011, 5011, "new tool", "During M6 / change_tool: the tool asked for."),
+    (5013, 5013, "G43 Z offset", "The length offset applied by G43."),
+    (5014, 5014, "tool change scratch", "Kept in cnc.ini; used by the stock macros."),
+    (5015, 5015, "tool change succeeded", "change_tool sets it to 1 when the change worked."),
+    (5016, 5050, "macro scratch", "Free for the tool change and stock macros."),
+    (5051, 5056, "probe position {axis}, machine", "Where the last G38.2 tripped, machine coordinates."),
+    (5061, 5066, "probe position {axis}, work", "Where the last G38.2 tripped, work coordinates."),
+    (5067, 5067, "probe tripped", "1 if the last G38.2 touched, 0 if it reached its target without contact."),
+    (5068, 5068, "probe input", "The live state of the probe input."),
+    (5070, 5070, "spindle speed", "The spindle speed in revolutions per second."),
+    (5071, 5076, "machine position {axis}", "Current position in machine coordinates."),
+    (5081, 5086, "probe position {axis}, joints", "Where the last G38.2 tripped, joint coordinates."),
+    (5101, 5106, "negative soft limit {axis}", "From cnc.ini."),
+    (5111, 5116, "positive soft limit {axis}", "From cnc.ini."),
+    (5121, 5126, "home position {axis}", "From cnc.ini."),
+    (5150, 5150, "kinematics type",
+     "1 trivial, 2 A-cylinder, 3 virtual C, 4 linear delta, 5 CoreXY, 18..30 custom, 31/32 trunnion AC/BC."),
+    (5151, 5151, "Z height compensation active", "1 while ZHC is on."),
+    (5152, 5152, "spindle on", "1 while the spindle turns."),
+    (5161, 5166, "G28 position {axis}", "Machine coordinates G28 goes to."),
+    (5181, 5186, "G30 position {axis}", "Machine coordinates G30 goes to."),
+    (5190, 5190, "G68 rotation active", "1 while G68 is on."),
+    (5191, 5193, "G68 pivot {axis}", "The pivot of the G68 rotation."),
+    (5194, 5196, "G68 angle {n}", "The angles of the G68 rotation."),
+    (5211, 5216, "G92 offset {axis}", "The G92 offsets."),
+    (5220, 5220, "active coordinate system", "1..9: 1 = G54 ... 9 = G59.3."),
+    *((5221 + 20 * k, 5226 + 20 * k, f"{name} offset {{axis}}", f"Work offset of coordinate system {k + 1}.")
+      for k, name in enumerate(("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"))),
+    (5380, 5380, "simulation mode", "1 in simulation (ecnc sets it): guard probing with If [#5380 == 0]."),
+    (5390, 5393, "persistent system variable", "Kept in cnc.ini."),
+    (5397, 5397, "render mode", "1 while the controller renders the job for its preview."),
+    (5398, 5398, "dlgmsg result", "1 after OK, -1 after Cancel."),
+    (5399, 5399, "M56/M57 result", "The input or output read by M56/M57; -1 after an M56 time-out."),
+    (5401, 5499, "tool {n} length", "Tool table."),
+    (5501, 5599, "tool {n} diameter", "Tool table."),
+    (5601, 5699, "tool {n} X offset", "Tool table."),
+    (5701, 5799, "tool {n} orientation", "Tool table."),
+    (5801, 5899, "tool {n} X wear", "Tool table."),
+    (5901, 5999, "tool {n} Z wear", "Tool table."),
+)

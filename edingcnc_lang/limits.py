@@ -1,0 +1,72 @@
+"""The input limits every stage relies on: one table, documented in docs/language.md#limits.
+
+Real jobs stay far below each limit; they exist so that hostile or broken input gets a clear
+error found in linear time instead of a traceback, a hang or unbounded memory.  Each limit is
+checked once, where the input is first read, so the later stages (builder, evaluator, printer,
+linter) may recurse over what they are given.
+"""
+from __future__ import annotations
+
+import re
+from itertools import islice
+
+# Characters on one source line.  EdingCNC itself reads at most 1055 (lint rule F602); longer
+# lines are still parsed up to this limit so that generated files can be checked and run.
+MAX_LINE_LENGTH = 65_536
+
+# Operators in the code of one line: signs, '#', arithmetic, comparisons, logic, and function
+# calls ('SQRT['), each counted once.  Every level of an
+# expression tree needs one of them, so this bounds how deeply expressions nest, and printing a
+# tree back never adds any (the printer's extra brackets are not operators).
+MAX_LINE_OPERATORS = 100
+
+# '[' open at once on one line; the printer's brackets stay below it for any accepted line.
+MAX_BRACKET_DEPTH = 200
+
+# If, While and Sub blocks open inside each other in one file.
+MAX_BLOCK_DEPTH = 50
+
+# Digits in a row in a number (before or after its point).  Every double fits: 309 digits
+# before the point for 1.8e308, 341 after it for the smallest, 4.9e-324, written out in full as
+# the printer does; a longer run is a mistake, and would slow the lexers down.
+MAX_NUMBER_DIGITS = 400
+
+# What counts towards MAX_LINE_OPERATORS: two-character operators once, word operators wherever
+# they stand (also inside names: the count only has to be an upper bound).  Strings and
+# comments do not count.
+_OPERATOR = re.compile(r"==|<>|!=|<=|>=|\*\*|[#+\-*/<>=!]|[A-Za-z]{2,}[ \t]*\[|and|or|xor|mod|eq|ne|gt|ge|lt|le",
+                       re.IGNORECASE)
+_BRACKET = re.compile(r"[\[\]]")
+_DIGITS = re.compile(r"\d+")
+_NOT_CODE = re.compile(r'"[^"\n]*"|\([^)\n]*\)|;.*')
+
+Problem = tuple[str, str, int]  # code, message, column
+
+
+def _blank(match: re.Match[str]) -> str:
+    return " " * len(match.group())
+
+
+def line_problem(text: str) -> Problem | None:
+    """What makes a line (not longer than MAX_LINE_LENGTH) too complex to parse, if anything.
+
+    One linear pass each: the operator past MAX_LINE_OPERATORS, the '[' past MAX_BRACKET_DEPTH,
+    a run of digits past MAX_NUMBER_DIGITS; strings and comments are left out.
+    """
+    code = _NOT_CODE.sub(_blank, text) if ('"' in text or "(" in text or ";" in text) else text
+    past = next(islice(_OPERATOR.finditer(code), MAX_LINE_OPERATORS, None), None)
+    if past is not None:
+        return ("E111", f"expression too complex: more than {MAX_LINE_OPERATORS} operators, '#' signs and "
+                "function calls on one line (the nesting limit); compute parts into #variables first",
+                past.start() + 1)
+    depth = 0
+    for bracket in _BRACKET.finditer(code):
+        depth += 1 if bracket.group() == "[" else -1
+        if depth > MAX_BRACKET_DEPTH:
+            return ("E111", f"brackets nested more than {MAX_BRACKET_DEPTH} deep (the nesting limit); compute "
+                    "parts into #variables first", bracket.start() + 1)
+    for run in _DIGITS.finditer(code):
+        if run.end() - run.start() > MAX_NUMBER_DIGITS:
+            return ("E113", f"number with more than {MAX_NUMBER_DIGITS} digits in a row (the limit); a value "
+                    "keeps 17 significant digits: write it shorter", run.start() + 1)
+    return None

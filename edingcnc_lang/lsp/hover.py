@@ -1,0 +1,135 @@
+"""Hover: what a G/M code, parameter, command, function or sub under the cursor means.
+
+Codes, parameters, commands and functions come from the knowledge table (the same text
+as ``ecnc`` help); a sub shows the comment lines that start it; a ``#n`` that the file
+and its macro files only ever set to one constant shows that value.
+"""
+from __future__ import annotations
+
+import re
+
+from .. import knowledge
+from .. import nodes as n
+from ..lint.evaluate import evaluate
+from ..lint.model import SourceFile
+from ..lint.walk import dialog_fields, literal_index
+from ..printer import format_number
+from ..tables import ARG_PARAMS, code_key, is_read_only
+from .lexer import Token, code_number, token_at
+from .model import LanguageModel, m_code_sub
+
+_COMMENT = re.compile(r"\s*(?:;(?P<semi>.*)|\((?P<paren>[^)]*)\)\s*)$")
+_AFTER_NAME = re.compile(r"\s*(?:/\s*)?sub\s+[A-Za-z0-9_]+\s*(?P<rest>.*)$", re.IGNORECASE)
+MAX_DOC_LINES = 12
+
+
+def hover_text(model: LanguageModel, path: str, line: int, col: int) -> str | None:
+    """Markdown for the token at 0-based ``line``/``col`` of ``path``, or None."""
+    file = model.source(path)
+    if file is None:
+        return None
+    token = token_at(file.line(line + 1), col)
+    if token is None:
+        return None
+    if token.kind == "code":
+        return _code(model, path, token)
+    if token.kind == "param":
+        return _param(model, path, int(token.text[1:]))
+    if token.kind in ("function", "keyword", "command"):
+        entry = knowledge.word(token.text)
+        return entry.markdown() if entry else None
+    if token.kind == "sub":
+        found = model.resolve(path, token.text)
+        return sub_markdown(*found) if found else None
+    return None
+
+
+def _code(model: LanguageModel, path: str, token: Token) -> str | None:
+    letter, number = code_number(token)
+    entry = knowledge.code(letter, number)
+    parts = [entry.markdown()] if entry else []
+    if letter == "M":
+        name = m_code_sub(code_key(number))
+        found = model.resolve(path, name) if name else None
+        if found:
+            parts.append(("Runs " if entry is None else "Redefined by ") + sub_markdown(*found))
+    return "\n\n---\n\n".join(parts) or None
+
+
+def _param(model: LanguageModel, path: str, number: int) -> str | None:
+    entry = knowledge.variable(number)
+    parts = [entry.markdown()] if entry else [f"**#{number}**: not a valid parameter (1..5999)"]
+    value = constant_value(model, path, number)
+    if value is not None:
+        parts.append(f"Always set to `{format_number(value)}` in this file and its macro files.")
+    return "\n\n".join(parts)
+
+
+def constant_value(model: LanguageModel, path: str, number: int) -> float | None:
+    """The one constant every assignment of ``#number`` gives, in the file and its macro files.
+
+    None when any assignment is not a constant, when two differ, when something else may write
+    it (a dialog field, an assignment through a computed index), and for the M-code arguments
+    and the variables the machine sets.
+    """
+    if number in ARG_PARAMS or is_read_only(number):
+        return None
+    found = model.project(path)
+    if found is None:
+        return None
+    file, project = found
+    values: set[float] = set()
+    for source in project.files:
+        for stmt, _scope in project.walked(source):
+            if isinstance(stmt, n.Dialog) and any(index == number for index, _ in dialog_fields(stmt)):
+                return None
+            for assign in stmt.assigns if isinstance(stmt, n.Block) else ():
+                index = literal_index(assign.target)
+                if index is None:
+                    return None
+                if index == number:
+                    value = evaluate(assign.value)
+                    if value is None:
+                        return None
+                    values.add(value)
+    return values.pop() if len(values) == 1 else None
+
+
+def sub_markdown(file: SourceFile, sub: n.Sub) -> str:
+    """``Sub name`` with where it is and the comment lines that describe it."""
+    head = f"**Sub {sub.name}** ({_shown(file.path)}, line {sub.span.line})"
+    doc = sub_comments(file, sub)
+    return head + ("\n\n" + "\n".join(doc) if doc else "")
+
+
+def sub_comments(file: SourceFile, sub: n.Sub) -> list[str]:
+    """The comment after the name and the comment lines right below it, else those right above."""
+    found: list[str] = []
+    rest = _AFTER_NAME.match(file.line(sub.span.line))
+    if rest:
+        _comment_into(found, rest.group("rest"))
+    line = sub.span.line + 1
+    while len(found) < MAX_DOC_LINES and _comment_into(found, file.line(line)):
+        line += 1
+    if found:
+        return found
+    line = sub.span.line - 1
+    while line > 0 and len(found) < MAX_DOC_LINES and _comment_into(found, file.line(line)):
+        line -= 1
+    return found[::-1]
+
+
+def _comment_into(found: list[str], text: str) -> bool:
+    match = _COMMENT.match(text) if text.strip() else None
+    if match is None:
+        return False
+    body = (match.group("semi") if match.group("semi") is not None else match.group("paren")).strip(";*-=# \t")
+    if body.lower().startswith("@unit"):
+        return False
+    if body:  # a line of only dashes or stars is decoration
+        found.append(body)
+    return True
+
+
+def _shown(path: str) -> str:
+    return path.replace("\\", "/").rsplit("/", 1)[-1]

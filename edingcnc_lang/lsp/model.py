@@ -1,0 +1,167 @@
+"""The language model every editor feature reads: parsed files, their macro files, subs and calls.
+
+Files open in the editor are read from their unsaved text, the others from disk; each is
+parsed once per version.  Calls are resolved by the linter's own ``Project``, so the
+editor jumps exactly where ``ecnc lint`` looks (the file, then ``macro.cnc`` and
+``user_macro.cnc`` beside it; M codes to ``Sub mNNN``; M6 to ``change_tool``).
+"""
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from .. import nodes as n
+from ..diagnostics import Diagnostic
+from ..lint.driver import SOURCE_SUFFIXES, is_macro_name, lint_paths, macros_beside
+from ..lint.model import SourceFile, UnreadableFile, load_source
+from ..lint.names import TOOL_CHANGE_SUB
+from ..lint.project import Project, SubKey, sub_key
+from ..tables import code_key
+
+# Files of a folder bigger than this are left out of references and workspace symbols: they are CAM
+# output (long runs of moves), not macro code, and reading them on every request would be slow.
+MAX_INDEXED_BYTES = 512 * 1024
+MAX_WORKSPACE_FILES = 500
+_SUB_LINE = re.compile(r"\s*(?:/\s*)?(?:sub|gosub)\s+([A-Za-z0-9_]+)", re.IGNORECASE)
+TOOL_CHANGE = code_key(6)
+
+
+@dataclass(frozen=True)
+class Place:
+    """A range in a file: 0-based line, start and end columns (end exclusive)."""
+
+    path: str
+    line: int
+    start: int
+    end: int
+
+
+def m_code_sub(key: int) -> str | None:
+    """The sub an M code calls when it exists: ``m100`` for M100, ``change_tool`` for M6."""
+    whole, tenth = divmod(key, 10)
+    if tenth:
+        return None
+    return TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
+
+
+class LanguageModel:
+    """Open documents plus the files on disk around them, parsed on demand and cached."""
+
+    def __init__(self) -> None:
+        self.texts: dict[str, str] = {}  # unsaved editor contents by absolute path
+        self.roots: list[str] = []  # workspace folders, for workspace symbols
+        self._parsed: dict[str, tuple[object, SourceFile]] = {}
+
+    # ----------------------------------------------------------------- files
+    def set_text(self, path: str, text: str | None) -> None:
+        """The editor opened or changed ``path`` (text), or closed it (None: read the disk again)."""
+        if text is None:
+            self.texts.pop(path, None)
+        else:
+            self.texts[path] = text
+
+    def source(self, path: str) -> SourceFile | None:
+        """The parsed file (None when it cannot be read)."""
+        text = self.texts.get(path)
+        try:
+            stamp: object = text if text is not None else _stamp(path)
+        except OSError:
+            return None
+        cached = self._parsed.get(path)
+        if cached is not None and cached[0] == stamp:
+            return cached[1]
+        try:
+            parsed = load_source(path, is_macro_name(Path(path)), text)
+        except (UnreadableFile, RecursionError):
+            return None
+        self._parsed[path] = (stamp, parsed)
+        return parsed
+
+    def macros(self, path: str) -> list[SourceFile]:
+        """macro.cnc and user_macro.cnc beside ``path`` (not the file itself)."""
+        found = (self.source(os.fspath(p)) for p in macros_beside(Path(path).parent) if os.fspath(p) != path)
+        return [f for f in found if f is not None]
+
+    def folder(self, path: str) -> list[SourceFile]:
+        """Every source file of the folder of ``path`` (small enough to be macro code) and ``path`` itself."""
+        folder = Path(path).parent
+        paths = {path} | {p for p in self.texts if Path(p).parent == folder}
+        try:
+            paths |= {os.fspath(p) for p in folder.iterdir() if _indexable(p)}
+        except OSError:
+            pass
+        return [f for f in (self.source(p) for p in sorted(paths)) if f is not None]
+
+    def workspace(self) -> list[SourceFile]:
+        """Macro files (``*.cnc``) under the workspace folders, and every open document."""
+        paths = dict.fromkeys(self.texts)
+        for root in self.roots:
+            for found in sorted(Path(root).rglob("*")):
+                if len(paths) >= MAX_WORKSPACE_FILES:
+                    break
+                if found.suffix.lower() == ".cnc" and _indexable(found):
+                    paths.setdefault(os.fspath(found))
+        return [f for f in (self.source(p) for p in paths) if f is not None]
+
+    # ----------------------------------------------------------------- checks
+    def lint(self, path: str) -> list[Diagnostic]:
+        """What ``ecnc lint PATH`` reports, for the editor's text of every open file."""
+        return [d for d in lint_paths([path], texts=self.texts) if d.path == path]
+
+    # ----------------------------------------------------------------- subs and calls
+    def project(self, path: str) -> tuple[SourceFile, Project] | None:
+        """The file with its macro files, as one lint project."""
+        file = self.source(path)
+        if file is None:
+            return None
+        macros = self.macros(path)
+        return file, Project([file, *macros], {file.path: macros})
+
+    def resolve(self, path: str, name: str) -> tuple[SourceFile, n.Sub] | None:
+        """The sub ``name`` as a call in ``path`` reaches it."""
+        found = self.project(path)
+        return found[1].resolve(found[0], name) if found else None
+
+    def calls_to(self, target: SubKey, path: str) -> Iterator[Place]:
+        """Where the files of the folder of ``path`` call the sub ``target``."""
+        files = self.folder(path)
+        project = Project(files, {f.path: self.macros(f.path) for f in files})
+        for call in project.calls:
+            if call.key != target:
+                continue
+            if isinstance(call.stmt, n.GoSub):
+                yield sub_name_place(call.caller, call.stmt.span.line)
+            else:
+                for key, word in project.codes(call.caller, call.stmt, "M"):
+                    if m_code_sub(key) == call.sub.name.lower():
+                        span = word.span
+                        yield Place(call.caller.path, span.line - 1, span.col - 1, span.end_col - 1)
+
+
+def definition_place(file: SourceFile, sub: n.Sub) -> Place:
+    return sub_name_place(file, sub.span.line)
+
+
+def sub_name_place(file: SourceFile, line: int) -> Place:
+    """Where the name is on a ``Sub name`` or ``GoSub name`` line (1-based ``line``)."""
+    text = file.line(line)
+    match = _SUB_LINE.match(text)
+    if match:
+        return Place(file.path, line - 1, match.start(1), match.end(1))
+    return Place(file.path, line - 1, 0, len(text))
+
+
+def _stamp(path: str) -> tuple[int, int]:
+    info = os.stat(path)
+    return info.st_mtime_ns, info.st_size
+
+
+def _indexable(path: Path) -> bool:
+    try:
+        return (path.suffix.lower() in SOURCE_SUFFIXES and path.is_file()
+                and path.stat().st_size <= MAX_INDEXED_BYTES)
+    except OSError:
+        return False

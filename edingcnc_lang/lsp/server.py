@@ -1,0 +1,220 @@
+"""The language server: LSP messages in, the language model's answers out (pygls 2).
+
+Each handler converts between LSP's positions (UTF-16 by default) and the model's
+0-based string columns and calls one feature module; no language knowledge lives here.
+"""
+from __future__ import annotations
+
+import asyncio
+import os
+from collections.abc import Sequence
+
+from lsprotocol import types as t
+from pygls.lsp.server import LanguageServer
+from pygls.uris import from_fs_path, to_fs_path
+from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
+
+from .. import __version__
+from ..codes import Severity
+from ..diagnostics import Diagnostic
+from . import actions, completion, formatting, hover, navigation
+from .lexer import token_at
+from .model import LanguageModel, Place
+
+DEBOUNCE_SECONDS = 0.3  # lint once typing pauses, not on every keystroke
+SOURCE = "ecnc"
+_KINDS = {"code": t.CompletionItemKind.Keyword, "sub": t.CompletionItemKind.Function,
+          "variable": t.CompletionItemKind.Variable, "keyword": t.CompletionItemKind.Keyword,
+          "command": t.CompletionItemKind.Method, "function": t.CompletionItemKind.Function}
+
+
+class EcncServer(LanguageServer):
+    """A pygls server holding one language model and the pending (debounced) lint runs."""
+
+    def __init__(self) -> None:
+        super().__init__("ecnc", __version__, text_document_sync_kind=t.TextDocumentSyncKind.Incremental)
+        self.model = LanguageModel()
+        self.pending: dict[str, asyncio.TimerHandle] = {}
+        self.shut_down = False  # the client asked for a shutdown before exit (exit code 0)
+
+    # ----------------------------------------------------------------- helpers
+    def path(self, uri: str) -> str:
+        return to_fs_path(uri) or uri
+
+    def codec(self) -> PositionCodec:
+        return self.workspace.position_codec
+
+    def lines(self, path: str) -> Sequence[str]:
+        file = self.model.source(path)
+        return file.lines if file else ()
+
+    def server_position(self, uri: str, position: t.Position) -> tuple[str, int, int]:
+        path = self.path(uri)
+        found = self.codec().position_from_client_units(self.lines(path), position)
+        return path, found.line, found.character
+
+    def location(self, place: Place) -> t.Location:
+        server = ServerTextRange(ServerTextPosition(place.line, place.start), ServerTextPosition(place.line, place.end))
+        return t.Location(from_fs_path(place.path) or place.path,
+                          self.codec().range_to_client_units(self.lines(place.path), server))
+
+    def client_range(self, path: str, line: int, start: int, end: int, end_line: int | None = None) -> t.Range:
+        server = ServerTextRange(ServerTextPosition(line, start), ServerTextPosition(line if end_line is None else end_line, end))
+        return self.codec().range_to_client_units(self.lines(path), server)
+
+    # ----------------------------------------------------------------- diagnostics
+    def schedule_lint(self, uri: str, delay: float = DEBOUNCE_SECONDS) -> None:
+        """Lint ``uri`` once no change has come for ``delay`` seconds."""
+        old = self.pending.pop(uri, None)
+        if old is not None:
+            old.cancel()
+        self.pending[uri] = asyncio.get_running_loop().call_later(delay, self.publish, uri)
+
+    def publish(self, uri: str) -> None:
+        self.pending.pop(uri, None)
+        path = self.path(uri)
+        if path not in self.model.texts:
+            return
+        lines = self.lines(path)
+        diagnostics = [self.diagnostic(path, lines, d) for d in self.model.lint(path)]
+        self.text_document_publish_diagnostics(t.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics))
+
+    def diagnostic(self, path: str, lines: Sequence[str], found: Diagnostic) -> t.Diagnostic:
+        line = max(found.line - 1, 0)
+        col = max(found.col - 1, 0)
+        text = lines[line] if line < len(lines) else ""
+        token = token_at(text, col)
+        end = token.end if token is not None and token.start <= col < token.end else len(text)
+        return t.Diagnostic(
+            range=self.client_range(path, line, col, max(end, col)),
+            message=found.message, code=found.code, source=SOURCE,
+            severity=t.DiagnosticSeverity.Error if found.severity is Severity.ERROR else t.DiagnosticSeverity.Warning)
+
+    def relint_folder(self, path: str) -> None:
+        """After a change to a macro file, the open files beside it may resolve differently."""
+        for other in self.model.texts:
+            if other != path and os.path.dirname(other) == os.path.dirname(path):
+                self.schedule_lint(from_fs_path(other) or other)
+
+
+server = EcncServer()
+
+
+@server.feature(t.INITIALIZED)
+def _initialized(ls: EcncServer, _params: t.InitializedParams) -> None:
+    ls.model.roots = [to_fs_path(folder.uri) or folder.uri for folder in ls.workspace.folders.values()]
+
+
+@server.feature(t.SHUTDOWN)
+def _shutdown(ls: EcncServer, _params: None) -> None:
+    ls.shut_down = True
+
+
+@server.feature(t.TEXT_DOCUMENT_DID_OPEN)
+def _did_open(ls: EcncServer, params: t.DidOpenTextDocumentParams) -> None:
+    path = ls.path(params.text_document.uri)
+    ls.model.set_text(path, params.text_document.text)
+    ls.schedule_lint(params.text_document.uri, 0)
+    ls.relint_folder(path)
+
+
+@server.feature(t.TEXT_DOCUMENT_DID_CHANGE)
+def _did_change(ls: EcncServer, params: t.DidChangeTextDocumentParams) -> None:
+    uri = params.text_document.uri
+    path = ls.path(uri)
+    ls.model.set_text(path, ls.workspace.get_text_document(uri).source)
+    ls.schedule_lint(uri)
+    ls.relint_folder(path)
+
+
+@server.feature(t.TEXT_DOCUMENT_DID_SAVE)
+def _did_save(ls: EcncServer, params: t.DidSaveTextDocumentParams) -> None:
+    ls.schedule_lint(params.text_document.uri, 0)
+
+
+@server.feature(t.TEXT_DOCUMENT_DID_CLOSE)
+def _did_close(ls: EcncServer, params: t.DidCloseTextDocumentParams) -> None:
+    uri = params.text_document.uri
+    ls.model.set_text(ls.path(uri), None)
+    pending = ls.pending.pop(uri, None)
+    if pending is not None:
+        pending.cancel()
+    ls.text_document_publish_diagnostics(t.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+
+
+@server.feature(t.TEXT_DOCUMENT_HOVER)
+def _hover(ls: EcncServer, params: t.HoverParams) -> t.Hover | None:
+    text = hover.hover_text(ls.model, *ls.server_position(params.text_document.uri, params.position))
+    return t.Hover(contents=t.MarkupContent(kind=t.MarkupKind.Markdown, value=text)) if text else None
+
+
+@server.feature(t.TEXT_DOCUMENT_DEFINITION)
+def _definition(ls: EcncServer, params: t.DefinitionParams) -> t.Location | None:
+    place = navigation.definition(ls.model, *ls.server_position(params.text_document.uri, params.position))
+    return ls.location(place) if place else None
+
+
+@server.feature(t.TEXT_DOCUMENT_REFERENCES)
+def _references(ls: EcncServer, params: t.ReferenceParams) -> list[t.Location]:
+    path, line, col = ls.server_position(params.text_document.uri, params.position)
+    places = navigation.references(ls.model, path, line, col, params.context.include_declaration)
+    return [ls.location(place) for place in places]
+
+
+@server.feature(t.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+def _document_symbols(ls: EcncServer, params: t.DocumentSymbolParams) -> list[t.DocumentSymbol]:
+    path = ls.path(params.text_document.uri)
+    return [t.DocumentSymbol(
+        name=symbol.name, kind=t.SymbolKind.Function, detail="Sub",
+        range=ls.client_range(path, symbol.first_line, 0, symbol.end_col, symbol.last_line),
+        selection_range=ls.location(symbol.selection).range)
+        for symbol in navigation.document_symbols(ls.model, path)]
+
+
+@server.feature(t.WORKSPACE_SYMBOL)
+def _workspace_symbols(ls: EcncServer, params: t.WorkspaceSymbolParams) -> list[t.SymbolInformation]:
+    return [t.SymbolInformation(name=name, kind=t.SymbolKind.Function, location=ls.location(place),
+                                container_name=place.path.replace("\\", "/").rsplit("/", 1)[-1])
+            for name, place in navigation.workspace_symbols(ls.model, params.query)]
+
+
+@server.feature(t.TEXT_DOCUMENT_COMPLETION, t.CompletionOptions(trigger_characters=["#", " "]))
+def _completion(ls: EcncServer, params: t.CompletionParams) -> t.CompletionList:
+    path, line, col = ls.server_position(params.text_document.uri, params.position)
+    items = []
+    for rank, item in enumerate(completion.complete(ls.model, path, line, col)):
+        items.append(t.CompletionItem(
+            label=item.label, kind=_KINDS[item.kind], detail=item.detail, sort_text=f"{rank:05d}",
+            documentation=t.MarkupContent(kind=t.MarkupKind.Markdown, value=item.documentation) if item.documentation else None,
+            text_edit=t.TextEdit(range=ls.client_range(path, line, item.start, col), new_text=item.label)))
+    return t.CompletionList(is_incomplete=False, items=items)
+
+
+@server.feature(t.TEXT_DOCUMENT_CODE_ACTION, t.CodeActionOptions(code_action_kinds=[t.CodeActionKind.QuickFix]))
+def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeAction]:
+    uri = params.text_document.uri
+    path = ls.path(uri)
+    lines = ls.lines(path)
+    found: list[t.CodeAction] = []
+    for diagnostic in params.context.diagnostics:
+        if diagnostic.source != SOURCE:
+            continue
+        start = ls.codec().position_from_client_units(lines, diagnostic.range.start)
+        finding = actions.Finding(str(diagnostic.code or ""), start.line, start.character, diagnostic.message)
+        for fix in actions.fixes(finding, lines):
+            edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text) for e in fix.edits]
+            found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.QuickFix, diagnostics=[diagnostic],
+                                      is_preferred=fix.preferred, edit=t.WorkspaceEdit(changes={uri: edits})))
+    return found
+
+
+@server.feature(t.TEXT_DOCUMENT_FORMATTING)
+def _formatting(ls: EcncServer, params: t.DocumentFormattingParams) -> list[t.TextEdit] | None:
+    path = ls.path(params.text_document.uri)
+    lines = ls.lines(path)
+    options = params.options
+    formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t")
+    if formatted is None:
+        return None
+    return [t.TextEdit(range=ls.client_range(path, number, 0, len(old)), new_text=new)
+            for number, (old, new) in enumerate(zip(lines, formatted)) if old != new]

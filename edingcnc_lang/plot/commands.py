@@ -1,0 +1,79 @@
+"""What ``ecnc plot`` and ``ecnc view`` do, as functions the CLI (and anyone else) calls.
+
+Both run the job once through the embedding API and write one file; a run that stops with a
+runtime error still gets its picture (the path as far as it went, the error in the title), and the
+error is returned for the caller to report.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import EcncError
+from ..runner import RunOptions
+from .toolpath import Toolpath, record_job
+
+
+@dataclass(frozen=True)
+class Written:
+    """The file written and the toolpath it shows (``path.error`` set when the run stopped early)."""
+
+    out: Path
+    path: Toolpath
+
+
+def default_output(job: Path, suffix: str) -> Path:
+    """``JOB.png`` (or ``.html``, ``-joints.png``) beside the job."""
+    return job.with_name(job.stem + suffix)
+
+
+def parse_line_range(text: str) -> tuple[int, int]:
+    """``A:B``, ``A:`` or ``:B`` (job lines, both ends included) -> (first, last)."""
+    first, colon, last = text.partition(":")
+    try:
+        low = int(first) if first.strip() else 1
+        high = int(last) if last.strip() else 2**31 - 1
+    except ValueError:
+        raise ValueError(f"{text!r} is not a line range such as 120:480") from None
+    if not colon or low < 1 or high < low:
+        raise ValueError(f"{text!r} is not a line range such as 120:480 (first line 1 or more, not after the last)")
+    return low, high
+
+
+def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str = "auto", color: str = "tool",
+             fit: str = "job", joints: bool = False) -> Written:
+    """Run ``job`` and draw its toolpath (or with ``joints`` its joint positions over time) into ``out``."""
+    from .render import picture_format, plot_toolpath, require_matplotlib
+
+    target = out or default_output(job, "-joints.png" if joints else ".png")
+    require_matplotlib()
+    picture_format(target)  # a wrong extension is told before the job runs
+    path = record_job(job, options, samples=joints)
+    if joints:
+        from .joints import plot_joints
+
+        plot_joints(path, target)
+    else:
+        plot_toolpath(path, target, view=view, color=color, fit=fit)
+    return Written(target, path)
+
+
+def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves: int | None = None,
+             lines: tuple[int, int] | None = None, view: str = "auto") -> Written:
+    """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given).
+
+    ``auto`` opens a lathe job (no Y motion) from the front and everything else in the iso view.
+    """
+    from .views import auto_view
+    from .viewer import MAX_MOVES, write_view
+
+    target = out or default_output(job, ".html")
+    path = record_job(job, options)
+    if lines is not None:
+        path = path.select_lines(*lines)
+        if not len(path):
+            raise EcncError(f"{job}: lines {lines[0]} to {lines[1]} make no moves")
+    if view == "auto":
+        view = "front" if auto_view(path) == "front" else "iso"
+    write_view(path, target, max_moves or MAX_MOVES, view=view)
+    return Written(target, path)

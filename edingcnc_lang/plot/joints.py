@@ -1,0 +1,58 @@
+"""``ecnc plot --joints``: what the motors do, joint positions over time, one strip per joint.
+
+On a kinematic machine (delta, rotate, cylinder, tangential knife) a straight line of the program
+is a curve for the motors; this shows it.  The data are the run's samples at the interpolation
+rate (the ``--samples`` columns), so the curves are what the simulator fed to the joints.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import EcncError
+from . import views as v
+from .render import DPI, picture_format, require_matplotlib
+from .toolpath import Toolpath
+
+JOINT_COLUMNS = ("jx", "jy", "jz", "ja", "jb", "jc")
+STRIP_INCHES = 1.6
+WIDTH_INCHES = 11.0
+
+
+def moving_joints(path: Toolpath) -> list[int]:
+    """The joints that move during the run (all configured ones when none does)."""
+    samples = path.samples or {}
+    count = min(len(path.joint_names) or 6, len(JOINT_COLUMNS))
+    present = [i for i in range(count) if JOINT_COLUMNS[i] in samples and len(samples[JOINT_COLUMNS[i]])]
+    moving = [i for i in present if np.ptp(samples[JOINT_COLUMNS[i]]) > 1e-9]
+    return moving or present
+
+
+def plot_joints(path: Toolpath, out: Path) -> Path:
+    """Draw the joint positions over time into ``out`` (PNG, SVG or PDF)."""
+    require_matplotlib()
+    fmt = picture_format(out)
+    if not path.samples or not len(path.samples.get("t", ())):
+        raise EcncError(f"{path.job}: the job made no moves, so there are no joint positions to plot")
+    from matplotlib.figure import Figure
+
+    joints = moving_joints(path)
+    t = path.samples["t"]
+    height = 1.2 + STRIP_INCHES * len(joints)
+    fig = Figure(figsize=(WIDTH_INCHES, height), dpi=DPI, layout="constrained")
+    axes = fig.subplots(len(joints), 1, sharex=True, squeeze=False)[:, 0]
+    for ax, joint in zip(axes, joints):
+        name = path.joint_names[joint] if joint < len(path.joint_names) else JOINT_COLUMNS[joint]
+        ax.plot(t, path.samples[JOINT_COLUMNS[joint]], color=v.TOOL_COLORS[joint % len(v.TOOL_COLORS)], lw=1.2)
+        unit = "deg" if name.upper() in ("A", "B", "C") else "mm"
+        ax.set_ylabel(f"joint {joint} ({name})\n{unit}", fontsize=8)
+        ax.grid(True, color="#e0e0e0", lw=0.5)
+    axes[-1].set_xlabel("time (s)")
+    title = f"{v.title_text(path)}\njoint positions over time, kinematics {path.kinematics}"
+    fig.suptitle(title, x=0.01, ha="left", fontsize=11)
+    try:
+        fig.savefig(out, format=fmt, dpi=DPI)
+    except OSError as err:
+        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    return out

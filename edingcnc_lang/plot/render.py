@@ -1,0 +1,238 @@
+"""``ecnc plot``: a toolpath picture with matplotlib (PNG, SVG or PDF by the file's extension).
+
+Rapids dashed, feeds solid, arcs as arcs; coloured by tool, kind, programmed feed or planned speed;
+the work zero, the machine's travel from cnc.ini and the part's bounding box with its size.
+Pictures are drawn on a bare ``Figure`` with the Agg canvas: no pyplot, no GUI, no global state.
+``Picture.to_pixels`` maps machine XYZ to the saved image's pixels, so tests can look at the
+picture the way a person would.
+"""
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..errors import EcncError, MissingExtra
+from . import views as v
+from .toolpath import KINDS, Toolpath
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+FORMATS = (".png", ".svg", ".pdf")
+SIZE_INCHES = (11.0, 7.5)
+DPI = 100
+MARGIN = 0.06        # of the drawing's span, around what is fitted
+FEED_WIDTH = 1.3
+RAPID_WIDTH = 0.8
+
+
+def require_matplotlib() -> None:
+    """Fail with how to install matplotlib, rather than an ImportError traceback."""
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        raise MissingExtra("pictures need matplotlib, which is not installed: "
+                           "pip install 'edingcnc-lang[plot]'") from None
+
+
+def picture_format(out: Path) -> str:
+    """The format named by the file's extension; an unknown one is the user's mistake, told plainly."""
+    suffix = out.suffix.lower()
+    if suffix not in FORMATS:
+        raise EcncError(f"cannot write {out}: unknown picture format {suffix or '(none)'!r} "
+                        f"(use {', '.join(FORMATS)})")
+    return suffix[1:]
+
+
+@dataclass(frozen=True)
+class Picture:
+    """A written picture and where machine coordinates landed on it."""
+
+    path: Path
+    view: str
+    width: int          # pixels (PNG)
+    height: int
+    matrix: np.ndarray  # 3x3: page coordinates -> display pixels, origin bottom left
+    axes: tuple[int, int, int, int]  # the drawing area in PNG pixels: left, top, right, bottom
+
+    def to_pixels(self, points: Sequence[Sequence[float]]) -> np.ndarray:
+        """Machine XYZ points -> (column, row) pixels of the PNG, row 0 at the top."""
+        page = np.asarray(points, dtype=float)[:, :3] @ v.projection(self.view).T
+        display = np.column_stack((page, np.ones(len(page)))) @ self.matrix.T
+        return np.column_stack((display[:, 0], self.height - display[:, 1]))
+
+
+def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "tool",
+                  fit: str = "job") -> Picture:
+    """Draw ``path`` into ``out``; ``fit`` is ``job`` (the path) or ``machine`` (the whole travel)."""
+    require_matplotlib()
+    fmt = picture_format(out)
+    if color == "speed" and path.speeds is None:
+        raise EcncError("--color speed needs the motion planner's speeds, which this run did not provide")
+    from matplotlib.figure import Figure
+
+    view = v.auto_view(path) if view == "auto" else view
+    project = v.projection(view)
+    fig = Figure(figsize=SIZE_INCHES, dpi=DPI)
+    ax = fig.add_axes((0.07, 0.08, 0.68, 0.82))
+    fitted = _draw_path(fig, ax, path, view, color)
+    _draw_work_zero(ax, path, project)
+    fitted += _draw_boxes(ax, path, project, include_limits=fit == "machine")
+    _frame(ax, fitted, view)
+    fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
+    fig.canvas.draw()
+    matrix = ax.transData.get_affine().get_matrix().copy()
+    extent = ax.get_window_extent()
+    try:
+        fig.savefig(out, format=fmt, dpi=DPI)
+    except OSError as err:
+        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    width, height = (int(round(s * DPI)) for s in SIZE_INCHES)
+    axes = (int(extent.x0), int(height - extent.y1), int(extent.x1), int(height - extent.y0))
+    return Picture(out, view, width, height, matrix, axes)
+
+
+def _segments(points: np.ndarray, project: np.ndarray) -> np.ndarray:
+    page = points @ project.T
+    return np.stack((page[:-1], page[1:]), axis=1)
+
+
+def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> list[np.ndarray]:
+    """The moves as line collections, one per style; returns the page points to fit the view to."""
+    from matplotlib.collections import LineCollection
+
+    project = v.projection(view)
+    cutting = v.feed_tools(path)
+    fitted: list[np.ndarray] = []
+    if color in ("tool", "kind"):
+        key = path.tools if color == "tool" else path.kinds.astype(np.int32)
+        groups: dict[tuple[bool, str], list[np.ndarray]] = {}
+        for line in path.polylines(key):
+            rapid = v.is_rapid(line.kind)
+            if color == "kind":
+                shade = v.KIND_COLORS[v.kind_name(line.kind)]
+            else:
+                shade = v.RAPID_COLOR if rapid else v.tool_color(cutting, line.tool)
+            groups.setdefault((rapid, shade), []).append(_segments(line.points, project))
+        for (rapid, shade), pieces in sorted(groups.items(), key=lambda item: not item[0][0]):
+            segments = np.concatenate(pieces)
+            fitted.append(segments.reshape(-1, 2))
+            ax.add_collection(LineCollection(segments, colors=shade, linewidths=RAPID_WIDTH if rapid else FEED_WIDTH,
+                                             linestyles="--" if rapid else "-", zorder=1 if rapid else 2))
+            if not rapid and view == "top":
+                _mark_end_on(ax, segments, shade)
+        for label, (rapid, shade) in _legend_entries(path, color, groups):
+            ax.plot([], [], color=shade, ls="--" if rapid else "-", lw=RAPID_WIDTH if rapid else FEED_WIDTH,
+                    label=label)
+        return fitted
+    values = path.feeds if color == "feed" else path.speeds
+    assert values is not None
+    rapid_pieces, feed_pieces, feed_values = [], [], []
+    for line in path.polylines(path.kinds.astype(np.int32)):
+        segments = _segments(line.points, project)
+        if v.is_rapid(line.kind):
+            rapid_pieces.append(segments)
+        else:
+            feed_pieces.append(segments)
+            feed_values.append(values[line.moves])
+    if rapid_pieces:
+        rapids = np.concatenate(rapid_pieces)
+        fitted.append(rapids.reshape(-1, 2))
+        ax.add_collection(LineCollection(rapids, colors=v.RAPID_COLOR, linewidths=RAPID_WIDTH, linestyles="--"))
+        ax.plot([], [], color=v.RAPID_COLOR, ls="--", lw=RAPID_WIDTH, label="rapid")
+    if feed_pieces:
+        feeds = np.concatenate(feed_pieces)
+        fitted.append(feeds.reshape(-1, 2))
+        collection = LineCollection(feeds, cmap=v.SPEED_COLORMAP, linewidths=FEED_WIDTH, zorder=2)
+        collection.set_array(np.concatenate(feed_values))
+        ax.add_collection(collection)
+        if view == "top":
+            _mark_end_on(ax, feeds, "black")
+        label = "programmed feed (mm/min)" if color == "feed" else "planned speed (mm/min)"
+        fig.colorbar(collection, ax=ax, label=label, location="bottom", shrink=0.6, pad=0.1)
+    return fitted
+
+
+def _mark_end_on(ax: Axes, segments: np.ndarray, shade: str) -> None:
+    """A ring where feed moves run straight at the viewer (drilled holes seen from the top): they
+    would otherwise not show at all."""
+    end_on = np.hypot(*(segments[:, 1] - segments[:, 0]).T) < 1e-6
+    if end_on.any():
+        points = np.unique(np.round(segments[end_on, 0], 6), axis=0)
+        ax.plot(points[:, 0], points[:, 1], ls="none", marker="o", ms=5, mfc="none", mec=shade, mew=1.2, zorder=3)
+
+
+def _legend_entries(path: Toolpath, color: str, groups: dict[tuple[bool, str], Any]
+                    ) -> list[tuple[str, tuple[bool, str]]]:
+    entries: list[tuple[str, tuple[bool, str]]] = []
+    if color == "kind":
+        present = {int(k) for k in np.unique(path.kinds)}
+        for kind in sorted(present):
+            entries.append((KINDS[kind], (v.is_rapid(kind), v.KIND_COLORS[KINDS[kind]])))
+        return entries
+    cutting = v.feed_tools(path)
+    for tool in cutting:
+        entries.append((f"T{tool}" if tool else "no tool", (False, v.tool_color(cutting, tool))))
+    if any(rapid for rapid, _ in groups):
+        entries.append(("rapid", (True, v.RAPID_COLOR)))
+    return entries
+
+
+def _draw_work_zero(ax: Axes, path: Toolpath, project: np.ndarray) -> None:
+    zero = np.asarray(path.work_zero, dtype=float)
+    origin = zero @ project.T
+    ax.plot(*origin, marker="o", ms=7, mfc="none", mec="black", mew=1.5, ls="none", zorder=4, label="work zero")
+    ax.plot(*origin, marker="+", ms=7, color="black", mew=1.0, zorder=4)
+
+
+def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray, include_limits: bool) -> list[np.ndarray]:
+    """The part's bounding box with its size, and the machine's travel; returns points to fit."""
+    from matplotlib.collections import LineCollection
+
+    fitted = [np.asarray(path.work_zero, dtype=float)[None, :] @ project.T]
+    bounds = path.bounds()
+    if bounds is not None:
+        edges = v.box_edges(*bounds) @ project.T
+        ax.add_collection(LineCollection(edges, colors="#444444", linewidths=0.7, linestyles=":", zorder=3))
+        top_left = edges.reshape(-1, 2)
+        corner = (top_left[:, 0].min(), top_left[:, 1].max())
+        ax.annotate(f"part {v.size_text(*bounds)}", corner, xytext=(0, 4), textcoords="offset points",
+                    fontsize=8, color="#444444")
+        ax.plot([], [], color="#444444", lw=0.7, ls=":", label="part bounding box")
+    if path.limits is not None:
+        edges = v.box_edges(*path.limits) @ project.T
+        ax.add_collection(LineCollection(edges, colors="#b22222", linewidths=1.0, linestyles="-.", zorder=0))
+        ax.plot([], [], color="#b22222", lw=1.0, ls="-.", label="machine limits (cnc.ini)")
+        if include_limits:
+            fitted.append(edges.reshape(-1, 2))
+    return fitted
+
+
+def _frame(ax: Axes, fitted: list[np.ndarray], view: str) -> None:
+    """Equal scales, the view fitted to ``fitted`` with a margin, labels and a light grid."""
+    points = np.vstack(fitted)
+    low, high = points.min(axis=0), points.max(axis=0)
+    center, span = (low + high) / 2.0, np.maximum(high - low, 1.0) * (1.0 + 2.0 * MARGIN)
+    box = ax.get_position()  # figure fractions, after any colour bar took its share
+    box_ratio = (box.height * SIZE_INCHES[1]) / (box.width * SIZE_INCHES[0])
+    if span[1] / span[0] < box_ratio:  # widen the short side so one mm is as long across as up
+        span[1] = span[0] * box_ratio
+    else:
+        span[0] = span[1] / box_ratio
+    ax.set_xlim(center[0] - span[0] / 2.0, center[0] + span[0] / 2.0)
+    ax.set_ylim(center[1] - span[1] / 2.0, center[1] + span[1] / 2.0)
+    _project, xlabel, ylabel = v.VIEWS[view]
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if view == "iso":
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title("isometric view", fontsize=9, loc="left")
+    ax.grid(True, color="#e0e0e0", lw=0.5)
+    ax.set_axisbelow(True)

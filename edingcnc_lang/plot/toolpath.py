@@ -1,0 +1,275 @@
+"""The toolpath of one run, recorded through the embedding API for pictures and the viewer.
+
+``record_job`` runs a job with ``RunOptions(on_move=..., on_event=...)`` and keeps every move
+with the tool in the spindle when it ran; ``Toolpath`` holds them as numpy columns and turns
+them into polylines (arcs sampled finely) for whoever draws them.  A run that stops with a
+runtime error still gives the path as far as it got, with the error kept beside it: a picture
+of where a macro went wrong is worth having.
+"""
+from __future__ import annotations
+
+import math
+import tempfile
+from collections.abc import Iterator
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..canon import Arc, Event, Move, Pose
+from ..config import MachineConfig, load_config
+from ..errors import EcncError
+from ..kinematics.sampling import arc_sweep
+from ..kinematics.trajectory import geometry_of
+from ..runner import RunOptions, RunResult, run_file
+from ..source import iter_file_lines
+
+KINDS = ("rapid", "linear", "arc", "probe", "home")
+FEED_KINDS = frozenset({KINDS.index("linear"), KINDS.index("arc"), KINDS.index("probe")})
+RAPID_KINDS = frozenset({KINDS.index("rapid"), KINDS.index("home")})
+ARC_STEP = math.radians(3.0)  # 120 chords a turn: 0.014 mm off a 40 mm radius
+WIDE = 1e5                    # mm: a limit this far out is "no limit configured" (the defaults are 1e6)
+
+
+@dataclass(frozen=True)
+class Polyline:
+    """Consecutive moves drawn alike: their points, and which move each segment belongs to."""
+
+    points: np.ndarray    # (N, 3) machine XYZ
+    moves: np.ndarray     # (N - 1,) index of the move each segment belongs to
+    kind: int             # index into KINDS of the first move (all moves of a polyline are rapid or all feed)
+    tool: int
+
+
+@dataclass
+class Toolpath:
+    """Every move of a run in execution order, machine coordinates in mm and degrees."""
+
+    job: str
+    kinds: np.ndarray        # (N,) int8, index into KINDS
+    tools: np.ndarray        # (N,) int32, the tool in the spindle
+    lines: np.ndarray        # (N,) int32, source line of the move
+    files: np.ndarray        # (N,) int16, index into ``paths``
+    paths: tuple[str, ...]
+    feeds: np.ndarray        # (N,) mm/min, 0 for rapids
+    starts: np.ndarray       # (N, 6)
+    ends: np.ndarray         # (N, 6)
+    joints: np.ndarray       # (N, 6) joints at the end of each move
+    arcs: dict[int, Arc]     # move index -> its circle
+    work_zero: tuple[float, float, float]
+    limits: tuple[np.ndarray, np.ndarray] | None  # lower and upper XYZ of the machine, when configured
+    result: RunResult | None = None
+    error: EcncError | None = None
+    joint_names: tuple[str, ...] = ()
+    kinematics: str = "trivial"
+    samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for
+    speeds: np.ndarray | None = None   # (N,) planned mm/min per move, when the planner provides it
+    seconds: float | None = None       # the planner's time estimate of the whole job
+
+    def __len__(self) -> int:
+        return len(self.kinds)
+
+    def move_points(self, index: int, arc_step: float = ARC_STEP) -> np.ndarray:
+        """The XYZ points of one move: its two ends, or an arc sampled every ``arc_step`` radians."""
+        start, end = self.starts[index], self.ends[index]
+        arc = self.arcs.get(index)
+        if arc is None:
+            return np.vstack((start[:3], end[:3]))
+        geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=arc))
+        assert geometry.center is not None
+        first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
+        c1, c2 = geometry.center[first], geometry.center[second]
+        radius = max(math.hypot(start[first] - c1, start[second] - c2), 1e-9)
+        swept = abs(arc_sweep(math.atan2(start[second] - c2, start[first] - c1),
+                              math.atan2(end[second] - c2, end[first] - c1), geometry.turns))
+        chords = max(2, math.ceil(swept / arc_step))
+        length = math.hypot(swept * radius, end[geometry.normal] - start[geometry.normal])
+        if length <= 0.0:
+            return np.vstack((start[:3], end[:3]))
+        _t, pts = geometry.sample(1.0, length / chords)
+        return np.vstack((start[:3], pts[:, :3]))
+
+    def polylines(self, key: np.ndarray | None = None, arc_step: float = ARC_STEP) -> Iterator[Polyline]:
+        """Runs of consecutive moves with the same drawing style, as one polyline each.
+
+        A run ends where rapid meets feed, where ``key`` (default: the tool) changes, or where a
+        move does not start at the previous end (a kinematics switch).
+        """
+        key = self.tools if key is None else key
+        rapid = np.isin(self.kinds, list(RAPID_KINDS))
+        count = len(self)
+        if not count:
+            return
+        breaks = np.ones(count, dtype=bool)
+        if count > 1:
+            joined = np.all(np.abs(self.starts[1:, :3] - self.ends[:-1, :3]) < 1e-9, axis=1)
+            breaks[1:] = (rapid[1:] != rapid[:-1]) | (key[1:] != key[:-1]) | ~joined
+        starts = np.flatnonzero(breaks)
+        for first, stop in zip(starts, [*starts[1:], count]):
+            pieces: list[np.ndarray] = [self.starts[first:first + 1, :3]]
+            owners: list[np.ndarray] = []
+            plain_from = first
+            for index in [i for i in range(first, stop) if i in self.arcs] + [stop]:
+                if index > plain_from:  # straight moves: their end points
+                    pieces.append(self.ends[plain_from:index, :3])
+                    owners.append(np.arange(plain_from, index))
+                if index < stop:
+                    points = self.move_points(index, arc_step)[1:]
+                    pieces.append(points)
+                    owners.append(np.full(len(points), index))
+                plain_from = index + 1
+            yield Polyline(np.vstack(pieces), np.concatenate(owners), int(self.kinds[first]), int(self.tools[first]))
+
+    def bounds(self, feed_only: bool = True) -> tuple[np.ndarray, np.ndarray] | None:
+        """Lower and upper XYZ of the path (feed moves only when there are any: the part)."""
+        if not len(self):
+            return None
+        chosen = np.isin(self.kinds, list(FEED_KINDS)) if feed_only else np.ones(len(self), dtype=bool)
+        if feed_only and not chosen.any():
+            chosen = np.ones(len(self), dtype=bool)
+        indices = np.flatnonzero(chosen)
+        points = [self.starts[indices, :3], self.ends[indices, :3]]
+        points += [self.move_points(i) for i in indices if i in self.arcs]
+        stacked = np.vstack(points)
+        return stacked.min(axis=0), stacked.max(axis=0)
+
+    def source_lines(self, moves: np.ndarray | None = None, context: int = 3,
+                     limit: int = 2_000) -> dict[str, dict[int, str]]:
+        """The text of the source lines that made ``moves`` (default: all), with ``context`` lines
+        around each, cut at ``limit`` characters."""
+        chosen_moves = slice(None) if moves is None else moves
+        wanted: dict[int, set[int]] = {}
+        for file_index, line in set(zip(self.files[chosen_moves].tolist(), self.lines[chosen_moves].tolist())):
+            wanted.setdefault(file_index, set()).update(range(line - context, line + context + 1))
+        texts: dict[str, dict[int, str]] = {}
+        for file_index, numbers in wanted.items():
+            path = self.paths[file_index]
+            chosen: dict[int, str] = {}
+            try:
+                for number, text in enumerate(iter_file_lines(path), start=1):
+                    if number in numbers:
+                        chosen[number] = text[:limit]
+            except OSError:
+                continue  # "<string>" or a file gone since the run: no text to show
+            texts[path] = chosen
+        return texts
+
+    def select_lines(self, first: int, last: int) -> Toolpath:
+        """Only the moves made by job lines ``first``..``last`` (moves inside subs count with their caller)."""
+        caller = _caller_lines(self)
+        keep = (caller >= first) & (caller <= last)
+        indices = np.flatnonzero(keep)
+        renumber = {int(old): new for new, old in enumerate(indices)}
+        return replace(self, kinds=self.kinds[keep], tools=self.tools[keep], lines=self.lines[keep],
+                       files=self.files[keep], feeds=self.feeds[keep], starts=self.starts[keep],
+                       ends=self.ends[keep], joints=self.joints[keep],
+                       arcs={renumber[i]: arc for i, arc in self.arcs.items() if i in renumber},
+                       speeds=None if self.speeds is None else self.speeds[keep])
+
+
+def _caller_lines(path: Toolpath) -> np.ndarray:
+    """For each move, the job line it belongs to: its own line in the job, else the last job line before it."""
+    job_index = path.paths.index(path.job) if path.job in path.paths else -1
+    in_job = path.files == job_index
+    lines = np.where(in_job, path.lines, 0)
+    last = np.maximum.accumulate(np.where(in_job, np.arange(len(lines)), -1)) if len(lines) else lines
+    return np.where(last >= 0, lines[np.maximum(last, 0)], 0)
+
+
+class Recorder:
+    """The ``on_move``/``on_event`` callbacks that collect a run's moves with the tool in use."""
+
+    def __init__(self) -> None:
+        self.rows: list[tuple[int, int, int, int, float]] = []
+        self.starts: list[Pose] = []
+        self.ends: list[Pose] = []
+        self.joints: list[Pose] = []
+        self.arcs: dict[int, Arc] = {}
+        self.paths: dict[str, int] = {}
+        self.tool = 0
+        self._kind = {kind: i for i, kind in enumerate(KINDS)}
+
+    def move(self, move: Move, joints: Pose) -> None:
+        file_index = self.paths.setdefault(move.path, len(self.paths))
+        if move.arc is not None:
+            self.arcs[len(self.rows)] = move.arc
+        self.rows.append((self._kind.get(move.kind, 1), self.tool, move.line, file_index, move.feed))
+        self.starts.append(move.start)
+        self.ends.append(move.end)
+        self.joints.append(joints)
+
+    def event(self, event: Event) -> None:
+        if event.kind == "tool_change":
+            self.tool = int(event.data.get("tool", self.tool))
+
+    def toolpath(self, job: str, config: MachineConfig, result: RunResult | None,
+                 error: EcncError | None) -> Toolpath:
+        table = np.array(self.rows, dtype=float).reshape(-1, 5)
+        six = (-1, 6)
+        final = result or (getattr(error, "result", None) if error else None)
+        zero = (0.0, 0.0, 0.0)
+        if final is not None:
+            zero = tuple(m - p for m, p in zip(final.machine[:3], final.position[:3]))  # type: ignore[assignment]
+        return Toolpath(
+            job=job, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
+            lines=table[:, 2].astype(np.int32), files=table[:, 3].astype(np.int16),
+            paths=tuple(self.paths), feeds=table[:, 4],
+            starts=np.array(self.starts, dtype=float).reshape(six), ends=np.array(self.ends, dtype=float).reshape(six),
+            joints=np.array(self.joints, dtype=float).reshape(six), arcs=self.arcs,
+            work_zero=zero, limits=machine_limits(config), result=final, error=error,
+            joint_names=tuple(j.name for j in config.joints), kinematics=config.kinematics_name or "trivial")
+
+
+def machine_limits(config: MachineConfig) -> tuple[np.ndarray, np.ndarray] | None:
+    """The XYZ travel from cnc.ini: the joints' limits on a trivial machine, else ``[KINEMATICS]``'s
+    Cartesian limits; None when they are the wide built-in defaults (no ini, or not configured)."""
+    if config.kinematics_name.lower() in ("", "trivial"):
+        lower = [j.negative_limit for j in config.joints[:3]]
+        upper = [j.positive_limit for j in config.joints[:3]]
+    else:
+        lower = list(config.cartesian_negative_limits[:3])
+        upper = list(config.cartesian_positive_limits[:3])
+    if len(lower) < 3 or any(abs(v) >= WIDE for v in (*lower, *upper)):
+        return None
+    return np.array(lower, dtype=float), np.array(upper, dtype=float)
+
+
+def record_job(job: str | Path, options: RunOptions | None = None, samples: bool = False) -> Toolpath:
+    """Run ``job`` and return its toolpath; a runtime error is kept in ``Toolpath.error``.
+
+    Syntax and configuration errors (nothing ran, or the machine could not be built) are raised.
+    Callbacks already in ``options`` still receive every move and event.  With ``samples`` the
+    trajectory is also sampled at the interpolation rate (the ``--samples`` columns, for joint plots).
+    """
+    if samples:
+        with tempfile.TemporaryDirectory(prefix="ecnc-plot-") as folder:
+            target = Path(folder) / "samples.npz"
+            path = record_job(job, replace(options or RunOptions(), samples=target))
+            if target.exists():
+                with np.load(target) as data:
+                    path.samples = {name: data[name] for name in data.files}
+            return path
+    options = options or RunOptions()
+    recorder = Recorder()
+    outer_move, outer_event = options.on_move, options.on_event
+
+    def on_move(move: Move, joints: Pose) -> None:
+        recorder.move(move, joints)
+        if outer_move:
+            outer_move(move, joints)
+
+    def on_event(event: Event) -> None:
+        recorder.event(event)
+        if outer_event:
+            outer_event(event)
+
+    config = load_config(options.ini) if options.ini else MachineConfig.default()
+    result: RunResult | None = None
+    error: EcncError | None = None
+    try:
+        result = run_file(job, replace(options, on_move=on_move, on_event=on_event))
+    except EcncError as err:
+        if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration, plug-in loading
+            raise
+        error = err
+    return recorder.toolpath(str(job), config, result, error)

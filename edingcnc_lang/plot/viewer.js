@@ -1,0 +1,454 @@
+// ecnc view: an orthographic 3D view of a toolpath on the browser's 2D canvas, with a move-by-move player.
+// Everything it needs is in this page; it fetches nothing.
+"use strict";
+(function () {
+  const status = document.getElementById("status");
+  const errors = [];
+  function report(message) {
+    errors.push(String(message));
+    status.dataset.errors = String(errors.length);
+    status.textContent = errors.join("\n");
+  }
+  window.addEventListener("error", (event) => report(event.message));
+  window.addEventListener("unhandledrejection", (event) => report(event.reason));
+
+  const D = JSON.parse(document.getElementById("job-data").textContent);
+
+  function decode(text, Type) {
+    if (text === null || text === undefined) return null;
+    const raw = atob(text);
+    const bytes = new Uint8Array(raw.length);
+    for (let i = 0; i < raw.length; i++) bytes[i] = raw.charCodeAt(i);
+    return new Type(bytes.buffer);
+  }
+
+  const points = decode(D.points, Float32Array);
+  const first = decode(D.first, Int32Array);
+  const last = decode(D.last, Int32Array);
+  const kind = decode(D.kind, Uint8Array);
+  const tool = decode(D.tool, Int32Array);
+  const line = decode(D.line, Int32Array);
+  const file = decode(D.file, Uint16Array);
+  const feed = decode(D.feed, Float32Array);
+  const merged = decode(D.merged, Int32Array);
+  const index = new Int32Array(merged.length);  // the job's move number (from 0) each shown move ends at
+  for (let i = 0, total = -1; i < merged.length; i++) index[i] = total += merged[i];
+  const abc = decode(D.abc, Float32Array);
+  const joints = decode(D.joints, Float32Array);
+  const count = kind.length;
+  const rapidKinds = new Set(D.rapidKinds);
+  const isRapid = (i) => rapidKinds.has(kind[i]);
+
+  // ---------------------------------------------------------------- camera
+  const VIEWS = { top: [0, 0], front: [0, -90], side: [-90, -90], iso: [45, -54.7356] };  // yaw, pitch (deg)
+  const cam = { yaw: 0, pitch: 0, scale: 1, u: 0, v: 0 };
+  const canvas = document.getElementById("view");
+  const ctx = canvas.getContext("2d");
+  let projected = new Float32Array(points.length / 3 * 2);
+  let projectedFor = "";
+
+  function project(x, y, z) {
+    const cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
+    const x1 = x * cy - y * sy, y1 = x * sy + y * cy;
+    return [x1, y1 * cp - z * sp];
+  }
+
+  function projectAll() {
+    const key = cam.yaw + "," + cam.pitch;
+    if (key === projectedFor) return;
+    const cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
+    for (let p = 0, q = 0; p < points.length; p += 3, q += 2) {
+      const x = points[p], y = points[p + 1], z = points[p + 2];
+      projected[q] = x * cy - y * sy;
+      projected[q + 1] = (x * sy + y * cy) * cp - z * sp;
+    }
+    projectedFor = key;
+  }
+
+  function size() {
+    const ratio = window.devicePixelRatio || 1;
+    const w = canvas.clientWidth, h = canvas.clientHeight;
+    if (canvas.width !== Math.round(w * ratio) || canvas.height !== Math.round(h * ratio)) {
+      canvas.width = Math.round(w * ratio);
+      canvas.height = Math.round(h * ratio);
+    }
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    return [w, h];
+  }
+
+  function toScreen(u, v, w, h) {
+    return [w / 2 + (u - cam.u) * cam.scale, h / 2 - (v - cam.v) * cam.scale];
+  }
+
+  function fit() {
+    projectAll();
+    let lowU = Infinity, lowV = Infinity, highU = -Infinity, highV = -Infinity;
+    const extend = (u, v) => {
+      lowU = Math.min(lowU, u); highU = Math.max(highU, u); lowV = Math.min(lowV, v); highV = Math.max(highV, v);
+    };
+    for (let q = 0; q < projected.length; q += 2) extend(projected[q], projected[q + 1]);
+    extend(...project(...D.workZero));
+    if (!isFinite(lowU)) { lowU = lowV = -10; highU = highV = 10; }
+    const [w, h] = size();
+    cam.u = (lowU + highU) / 2;
+    cam.v = (lowV + highV) / 2;
+    cam.scale = 0.88 * Math.min(w / Math.max(highU - lowU, 1e-3), h / Math.max(highV - lowV, 1e-3));
+    if (!isFinite(cam.scale) || cam.scale <= 0) cam.scale = 1;
+  }
+
+  function setView(name) {
+    [cam.yaw, cam.pitch] = VIEWS[name].map((deg) => deg * Math.PI / 180);
+    document.querySelectorAll("[data-view]").forEach((b) => b.classList.toggle("active", b.dataset.view === name));
+    fit();
+    draw();
+  }
+
+  // ---------------------------------------------------------------- colours and groups
+  const colorMode = document.getElementById("color-mode");
+  let groups = [];
+
+  function toolColor(t) {
+    return D.toolColors[Math.max(D.tools.indexOf(t), 0) % D.toolColors.length];
+  }
+
+  function feedBuckets() {
+    let low = Infinity, high = -Infinity;
+    for (let i = 0; i < count; i++) if (!isRapid(i)) { low = Math.min(low, feed[i]); high = Math.max(high, feed[i]); }
+    return [low, high];
+  }
+
+  const FEED_SHADES = ["#440154", "#3b528b", "#21918c", "#5ec962", "#b5de2b", "#fde725"];
+
+  function buildGroups() {
+    const mode = colorMode.value;
+    const byKey = new Map();
+    const [low, high] = feedBuckets();
+    for (let i = 0; i < count; i++) {
+      let key, color, label;
+      if (isRapid(i) && mode !== "kind") {
+        key = "rapid"; color = D.kindColors.rapid; label = "rapid";
+      } else if (mode === "kind") {
+        const name = D.kinds[kind[i]];
+        key = name; color = D.kindColors[name]; label = name;
+      } else if (mode === "tool") {
+        key = "T" + tool[i]; color = toolColor(tool[i]); label = tool[i] ? "T" + tool[i] : "no tool";
+      } else {
+        const span = high - low;
+        const b = span > 0 ? Math.min(FEED_SHADES.length - 1, Math.floor((feed[i] - low) / span * FEED_SHADES.length)) : 0;
+        const from = low + span * b / FEED_SHADES.length, to = low + span * (b + 1) / FEED_SHADES.length;
+        key = "F" + b; color = FEED_SHADES[b];
+        label = span > 0 ? "F " + Math.round(from) + "\u2013" + Math.round(to) + " mm/min" : "F " + Math.round(low) + " mm/min";
+      }
+      if (!byKey.has(key)) byKey.set(key, { key, color, label, rapid: isRapid(i), moves: [] });
+      byKey.get(key).moves.push(i);
+    }
+    groups = [...byKey.values()].sort((a, b) => (a.rapid === b.rapid ? a.key.localeCompare(b.key, undefined, { numeric: true }) : a.rapid ? -1 : 1));
+    legend();
+  }
+
+  function legend() {
+    const list = document.getElementById("legend");
+    list.replaceChildren();
+    const entry = (color, dash, text) => {
+      const item = document.createElement("li");
+      item.innerHTML = '<svg width="28" height="10"><line x1="1" y1="5" x2="27" y2="5" stroke-width="2"/></svg>';
+      const stroke = item.querySelector("line");
+      stroke.setAttribute("stroke", color);
+      if (dash) stroke.setAttribute("stroke-dasharray", dash);
+      item.append(text);
+      list.append(item);
+    };
+    groups.forEach((g) => entry(g.color, g.rapid ? "4 3" : "", g.label));
+    entry("#444", "1 2", "part bounding box");
+    if (D.limits) entry("#b22222", "6 3 1 3", "machine limits (cnc.ini)");
+    entry("#000", "", "work zero (circle), tool (red dot)");
+  }
+
+  // ---------------------------------------------------------------- drawing
+  const slider = document.getElementById("slider");
+  const showRapids = document.getElementById("show-rapids");
+  const showFuture = document.getElementById("show-future");
+  let current = count - 1;
+
+  function tracePolyline(i, w, h) {
+    let [x, y] = toScreen(projected[2 * first[i]], projected[2 * first[i] + 1], w, h);
+    ctx.moveTo(x, y);
+    for (let p = first[i] + 1; p <= last[i]; p++) {
+      [x, y] = toScreen(projected[2 * p], projected[2 * p + 1], w, h);
+      ctx.lineTo(x, y);
+    }
+  }
+
+  function box(corners, color, dash, w, h) {
+    if (!corners) return;
+    const [lo, hi] = corners;
+    const corner = (k) => [k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]];
+    ctx.beginPath();
+    for (let k = 0; k < 8; k++) {
+      for (const bit of [1, 2, 4]) {
+        if (k & bit) continue;
+        const a = toScreen(...project(...corner(k)), w, h), b = toScreen(...project(...corner(k | bit)), w, h);
+        ctx.moveTo(a[0], a[1]);
+        ctx.lineTo(b[0], b[1]);
+      }
+    }
+    ctx.strokeStyle = color;
+    ctx.lineWidth = 1;
+    ctx.setLineDash(dash);
+    ctx.stroke();
+    ctx.setLineDash([]);
+  }
+
+  function triad(w, h) {
+    const origin = [46, h - 46];
+    const names = ["X", "Y", "Z"], colors = ["#d62728", "#2ca02c", "#1f77b4"];
+    for (let a = 0; a < 3; a++) {
+      const unit = [0, 0, 0];
+      unit[a] = 1;
+      const [u, v] = project(...unit);
+      if (Math.hypot(u, v) < 0.05) continue;  // pointing at the viewer
+      ctx.beginPath();
+      ctx.moveTo(...origin);
+      ctx.lineTo(origin[0] + 30 * u, origin[1] - 30 * v);
+      ctx.strokeStyle = colors[a];
+      ctx.lineWidth = 2;
+      ctx.stroke();
+      ctx.fillStyle = colors[a];
+      ctx.fillText(names[a], origin[0] + 38 * u - 3, origin[1] - 38 * v + 4);
+    }
+  }
+
+  let drawn = 0;
+  function draw() {
+    projectAll();
+    const [w, h] = size();
+    ctx.clearRect(0, 0, w, h);
+    ctx.lineJoin = "round";
+    ctx.font = "11px sans-serif";
+    box(D.limits, "#b22222", [6, 3, 1, 3], w, h);
+    box(D.part, "#777", [1, 2], w, h);
+    drawn = 0;
+    if (showFuture.checked) {
+      ctx.beginPath();
+      for (let i = current + 1; i < count; i++) if (showRapids.checked || !isRapid(i)) { tracePolyline(i, w, h); drawn++; }
+      ctx.strokeStyle = "#d4d4d4";
+      ctx.lineWidth = 1;
+      ctx.stroke();
+    }
+    for (const g of groups) {
+      if (g.rapid && !showRapids.checked) continue;
+      ctx.beginPath();
+      for (const i of g.moves) {
+        if (i > current) break;
+        tracePolyline(i, w, h);
+        drawn++;
+      }
+      ctx.strokeStyle = g.color;
+      ctx.lineWidth = g.rapid ? 1 : 1.6;
+      ctx.setLineDash(g.rapid ? [4, 3] : []);
+      ctx.stroke();
+    }
+    ctx.setLineDash([]);
+    if (current >= 0) {
+      ctx.beginPath();
+      tracePolyline(current, w, h);
+      ctx.strokeStyle = "#ff7f0e";
+      ctx.lineWidth = 3.5;
+      ctx.stroke();
+      const p = last[current];
+      const [x, y] = toScreen(projected[2 * p], projected[2 * p + 1], w, h);
+      ctx.beginPath();
+      ctx.arc(x, y, 5, 0, 2 * Math.PI);
+      ctx.fillStyle = "#e02020";
+      ctx.fill();
+    }
+    const [zx, zy] = toScreen(...project(...D.workZero), w, h);
+    ctx.beginPath();
+    ctx.arc(zx, zy, 6, 0, 2 * Math.PI);
+    ctx.moveTo(zx - 9, zy); ctx.lineTo(zx + 9, zy); ctx.moveTo(zx, zy - 9); ctx.lineTo(zx, zy + 9);
+    ctx.strokeStyle = "#000";
+    ctx.lineWidth = 1.2;
+    ctx.stroke();
+    triad(w, h);
+    status.dataset.drawn = String(drawn);
+  }
+
+  // ---------------------------------------------------------------- readout and listing
+  const fmt = (value) => (Math.abs(value) < 5e-5 ? 0 : value).toFixed(3);
+
+  function readout() {
+    const table = document.getElementById("readout");
+    table.replaceChildren();
+    const row = (name, value, text) => {
+      const tr = document.createElement("tr");
+      const th = document.createElement("th");
+      const td = document.createElement("td");
+      th.textContent = name;
+      td.textContent = value;
+      if (text) td.className = "text";
+      tr.append(th, td);
+      table.append(tr);
+    };
+    if (current < 0) { row("move", "none"); return; }
+    const i = current, p = last[i];
+    const number = index[i] + 1;
+    row("move", merged[i] > 1 ? (number - merged[i] + 1) + "\u2013" + number + " of " + D.moves : number + " of " + D.moves, true);
+    row("source", D.files[file[i]].replace(/^.*[\\/]/, "") + ":" + line[i], true);
+    row("kind", D.kinds[kind[i]] + (merged[i] > 1 ? " (" + merged[i] + " moves merged)" : ""), true);
+    row("tool", tool[i] ? "T" + tool[i] : "none", true);
+    row("feed", isRapid(i) ? "rapid" : feed[i].toFixed(0) + " mm/min", true);
+    ["X", "Y", "Z"].forEach((a, k) => row(a, fmt(points[3 * p + k])));
+    if (abc) ["A", "B", "C"].forEach((a, k) => row(a, fmt(abc[3 * i + k])));
+    if (joints) {
+      D.jointNames.forEach((name, k) => { if (k < 6) row("joint " + k + " (" + name + ")", fmt(joints[6 * i + k])); });
+    }
+  }
+
+  function listing() {
+    const list = document.getElementById("listing");
+    list.replaceChildren();
+    if (current < 0) return;
+    const path = D.files[file[current]];
+    const text = D.source[path] || {};
+    document.getElementById("listing-title").textContent = "Program: " + path.replace(/^.*[\\/]/, "");
+    const here = line[current];
+    for (let n = here - 8; n <= here + 8; n++) {
+      if (!(String(n) in text)) continue;
+      const item = document.createElement("li");
+      const number = document.createElement("span");
+      number.className = "n";
+      number.textContent = String(n);
+      item.append(number, text[String(n)]);
+      if (n === here) item.className = "current";
+      list.append(item);
+    }
+  }
+
+  function show(i) {
+    current = Math.max(Math.min(i, count - 1), count ? 0 : -1);
+    slider.value = String(current);
+    document.getElementById("counter").textContent = count ? "move " + (index[current] + 1) + " of " + D.moves : "no moves";
+    readout();
+    listing();
+    draw();
+  }
+
+  // ---------------------------------------------------------------- player
+  let playing = false, lastTime = 0, carry = 0;
+  const playButton = document.getElementById("play");
+  function tick(time) {
+    if (!playing) return;
+    const rate = Number(document.getElementById("speed").value);
+    carry += lastTime ? (time - lastTime) / 1000 * rate : 0;
+    lastTime = time;
+    const step = Math.floor(carry);
+    if (step > 0) {
+      carry -= step;
+      show(current + step);
+    }
+    if (current >= count - 1) { togglePlay(); return; }
+    requestAnimationFrame(tick);
+  }
+  function togglePlay() {
+    playing = !playing && count > 0;
+    playButton.textContent = playing ? "pause" : "play";
+    if (playing) {
+      if (current >= count - 1) show(0);
+      lastTime = 0;
+      carry = 0;
+      requestAnimationFrame(tick);
+    }
+  }
+
+  // ---------------------------------------------------------------- input
+  let drag = null;
+  canvas.addEventListener("contextmenu", (event) => event.preventDefault());
+  canvas.addEventListener("pointerdown", (event) => {
+    drag = { x: event.clientX, y: event.clientY, pan: event.shiftKey || event.button !== 0 };
+    canvas.setPointerCapture(event.pointerId);
+    canvas.classList.add("dragging");
+  });
+  canvas.addEventListener("pointermove", (event) => {
+    if (!drag) return;
+    const dx = event.clientX - drag.x, dy = event.clientY - drag.y;
+    drag.x = event.clientX;
+    drag.y = event.clientY;
+    if (drag.pan) {
+      cam.u -= dx / cam.scale;
+      cam.v += dy / cam.scale;
+    } else {
+      cam.yaw -= dx * 0.01;
+      cam.pitch = Math.max(-Math.PI, Math.min(0, cam.pitch - dy * 0.01));
+      document.querySelectorAll("[data-view]").forEach((b) => b.classList.remove("active"));
+    }
+    draw();
+  });
+  const endDrag = () => { drag = null; canvas.classList.remove("dragging"); };
+  canvas.addEventListener("pointerup", endDrag);
+  canvas.addEventListener("pointercancel", endDrag);
+  canvas.addEventListener("wheel", (event) => {
+    event.preventDefault();
+    const rect = canvas.getBoundingClientRect();
+    const mx = event.clientX - rect.left - rect.width / 2, my = event.clientY - rect.top - rect.height / 2;
+    const u = cam.u + mx / cam.scale, v = cam.v - my / cam.scale;
+    cam.scale *= Math.exp(-event.deltaY * 0.0015);
+    cam.u = u - mx / cam.scale;
+    cam.v = v + my / cam.scale;
+    draw();
+  }, { passive: false });
+
+  document.querySelectorAll("[data-view]").forEach((b) => b.addEventListener("click", () => setView(b.dataset.view)));
+  document.getElementById("fit").addEventListener("click", () => { fit(); draw(); });
+  showRapids.addEventListener("change", draw);
+  showFuture.addEventListener("change", draw);
+  colorMode.addEventListener("change", () => { buildGroups(); draw(); });
+  slider.addEventListener("input", () => show(Number(slider.value)));
+  playButton.addEventListener("click", togglePlay);
+  document.getElementById("first").addEventListener("click", () => show(0));
+  document.getElementById("back").addEventListener("click", () => show(current - 1));
+  document.getElementById("forward").addEventListener("click", () => show(current + 1));
+  document.getElementById("last-move").addEventListener("click", () => show(count - 1));
+  document.addEventListener("keydown", (event) => {
+    if (event.target instanceof HTMLInputElement && event.target.type !== "range") return;
+    if (event.target instanceof HTMLSelectElement) return;
+    const keys = {
+      ArrowLeft: () => show(current - 1), ArrowRight: () => show(current + 1), Home: () => show(0),
+      End: () => show(count - 1), " ": togglePlay, t: () => setView("top"), f: () => setView("front"),
+      s: () => setView("side"), i: () => setView("iso"), 0: () => { fit(); draw(); },
+    };
+    const action = keys[event.key];
+    if (action) { event.preventDefault(); action(); }
+  });
+  window.addEventListener("resize", draw);
+
+  // ---------------------------------------------------------------- start
+  document.getElementById("title").textContent = D.title;
+  const notice = document.getElementById("notice");
+  const notes = [];
+  if (D.error) notes.push("The run stopped: " + D.error);
+  if (D.shown < D.moves) {
+    notes.push("This job has " + D.moves.toLocaleString("en") + " moves; the page shows " + D.shown.toLocaleString("en") +
+      " of them (long runs of feed moves with one tool are thinned). `ecnc view --lines A:B` shows any stretch of the job" +
+      " in full; `--max-moves N` raises the budget of " + D.maxMoves.toLocaleString("en") + ".");
+  }
+  if (notes.length) {
+    notice.textContent = notes.join("\n");
+    notice.hidden = false;
+    notice.classList.toggle("error", Boolean(D.error));
+  }
+  slider.max = String(Math.max(count - 1, 0));
+  buildGroups();
+  size();
+  // file.html#move=120&view=top opens there (a link to a place in the job)
+  const asked = new URLSearchParams(location.hash.slice(1));
+  const view = asked.get("view") || D.view;
+  setView(VIEWS[view] ? view : "iso");
+  const move = Number(asked.get("move"));
+  let start = count - 1;
+  if (move > 0) {
+    start = 0;
+    while (start < count - 1 && index[start] + 1 < move) start++;
+  }
+  show(start);
+  status.dataset.ready = "1";
+})();

@@ -1,0 +1,128 @@
+"""``ecnc view``: one self-contained HTML file with an interactive 3D view of the toolpath.
+
+The page (``viewer.html``, ``viewer.css``, ``viewer.js`` beside this module, written for the
+browser's own canvas API) is filled in with the job's data as JSON: point coordinates and the
+per-move columns as little-endian base64 typed arrays, so a 10,000-move job stays well under a
+megabyte.  Nothing is fetched when the page is opened.  A job with more moves than the budget is
+thinned (``decimate``) and the page says so; ``select_lines`` on the toolpath (``--lines A:B``)
+shows any stretch of it in full.
+"""
+from __future__ import annotations
+
+import base64
+import html
+import json
+import math
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import EcncError
+from . import views as v
+from .toolpath import KINDS, RAPID_KINDS, Toolpath
+
+MAX_MOVES = 25_000                  # moves in the page before it is thinned
+VIEW_ARC_STEP = math.radians(6.0)   # 60 chords a turn: finer than a screen shows at a whole-job zoom
+ASSETS = ("viewer.html", "viewer.css", "viewer.js")
+
+
+@dataclass(frozen=True)
+class Thinned:
+    """Which moves the page shows: ``keep`` indices, and how many moves each stands for."""
+
+    keep: np.ndarray
+    count: np.ndarray
+
+
+def decimate(path: Toolpath, max_moves: int) -> Thinned:
+    """Keep every move when there are at most ``max_moves``; otherwise every k-th move of each run
+    of feed moves with one tool, plus every rapid and the last move of every run, so the shape and
+    the tool changes stay and the long runs of short cuts are what is merged."""
+    count = len(path)
+    if count <= max_moves:
+        return Thinned(np.arange(count), np.ones(count, dtype=np.int64))
+    rapid = np.isin(path.kinds, list(RAPID_KINDS))
+    last = np.ones(count, dtype=bool)
+    last[:-1] = (rapid[1:] != rapid[:-1]) | (path.tools[1:] != path.tools[:-1]) | rapid[:-1]
+    forced = int(last.sum())
+    stride = max(1, math.ceil((count - forced) / max(max_moves - forced, 1)))
+    keep = np.flatnonzero(last | (np.arange(count) % stride == stride - 1))
+    merged = np.diff(np.concatenate(([-1], keep)))
+    return Thinned(keep, merged)
+
+
+def _b64(array: np.ndarray, dtype: str) -> str:
+    return base64.b64encode(np.ascontiguousarray(array, dtype=np.dtype(dtype).newbyteorder("<")).tobytes()).decode()
+
+
+def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> dict[str, Any]:
+    """Everything the page shows, as JSON-ready values; ``view`` is the one the page opens with."""
+    thinned = decimate(path, max_moves)
+    points: list[np.ndarray] = []
+    first = np.zeros(len(thinned.keep), dtype=np.int64)
+    last = np.zeros(len(thinned.keep), dtype=np.int64)
+    size = 0
+    previous_end: np.ndarray | None = None
+    for row, (index, merged) in enumerate(zip(thinned.keep.tolist(), thinned.count.tolist())):
+        start = path.starts[index - merged + 1, :3]
+        if merged == 1 and index in path.arcs:
+            move = path.move_points(index, VIEW_ARC_STEP)
+        else:
+            move = np.vstack((start, path.ends[index, :3]))
+        if previous_end is not None and np.allclose(previous_end, move[0], atol=1e-9):
+            move = move[1:]
+            first[row] = size - 1
+        else:
+            first[row] = size
+        points.append(move)
+        size += len(move)
+        last[row] = size - 1
+        previous_end = move[-1]
+    keep = thinned.keep
+    bounds = path.bounds()
+    abc = path.ends[keep, 3:]
+    data: dict[str, Any] = {
+        "job": path.job, "title": v.title_text(path), "moves": len(path), "shown": len(keep),
+        "maxMoves": max_moves, "view": view, "kinds": list(KINDS), "rapidKinds": sorted(RAPID_KINDS),
+        "files": list(path.paths), "toolColors": list(v.TOOL_COLORS), "kindColors": v.KIND_COLORS,
+        "tools": v.feed_tools(path),
+        "points": _b64(np.vstack(points) if points else np.zeros((0, 3)), "f4"),
+        "first": _b64(first, "i4"), "last": _b64(last, "i4"),
+        "kind": _b64(path.kinds[keep], "u1"), "tool": _b64(path.tools[keep], "i4"),
+        "line": _b64(path.lines[keep], "i4"), "file": _b64(path.files[keep], "u2"),
+        "feed": _b64(path.feeds[keep], "f4"), "merged": _b64(thinned.count, "i4"),
+        "abc": _b64(abc, "f4") if np.any(abc) else None,
+        "joints": _b64(path.joints[keep], "f4") if path.kinematics.lower() not in ("trivial", "") else None,
+        "jointNames": list(path.joint_names), "kinematics": path.kinematics,
+        "workZero": list(path.work_zero),
+        "part": [bounds[0].tolist(), bounds[1].tolist()] if bounds is not None else None,
+        "limits": [path.limits[0].tolist(), path.limits[1].tolist()] if path.limits is not None else None,
+        "source": {name: {str(k): text for k, text in lines.items()}
+                   for name, lines in path.source_lines(keep, context=3 if len(keep) == len(path) else 0).items()},
+        "error": path.error.format() if path.error is not None else None,
+        "seconds": path.seconds,
+    }
+    return data
+
+
+def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> str:
+    """The whole HTML page for ``path``."""
+    folder = resources.files(__package__)
+    template, css, script = (folder.joinpath(name).read_text(encoding="utf-8") for name in ASSETS)
+    payload = json.dumps(view_data(path, max_moves, view), separators=(",", ":"), allow_nan=False)
+    payload = payload.replace("</", "<\\/")  # a job line with "</script>" must not end the block
+    name = path.job.replace("\\", "/").rsplit("/", 1)[-1]
+    return (template.replace("{{title}}", html.escape(f"{name} \u2014 ecnc view"))
+            .replace("{{css}}", css).replace("{{script}}", script).replace("{{data}}", payload))
+
+
+def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str = "iso") -> Path:
+    """Write the viewer page for ``path`` to ``out``."""
+    try:
+        out.write_text(page(path, max_moves, view), encoding="utf-8")
+    except OSError as err:
+        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    return out

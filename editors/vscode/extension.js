@@ -1,0 +1,23 @@
+// Starts `ecnc lsp` for EdingCNC files and connects VS Code to it over stdio.
+const vscode = require("vscode");
+const { LanguageClient } = require("vscode-languageclient/node");
+
+let client;
+
+function activate(context) {
+  const [command, ...args] = vscode.workspace.getConfiguration("edingcnc").get("server.command");
+  client = new LanguageClient(
+    "edingcnc",
+    "EdingCNC language server",
+    { command, args },
+    { documentSelector: [{ scheme: "file", language: "edingcnc" }, { scheme: "untitled", language: "edingcnc" }] },
+  );
+  context.subscriptions.push(client);
+  return client.start();
+}
+
+function deactivate() {
+  return client ? client.stop() : undefined;
+}
+
+module.exports = { activate, deactivate };

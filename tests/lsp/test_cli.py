@@ -1,0 +1,27 @@
+"""``ecnc lsp`` is the server an editor starts; without pygls it says what to install."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+from tests.lsp.client import LspClient
+
+
+def test_ecnc_lsp_serves_until_the_client_exits(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X10+5\n")
+    lsp = LspClient([sys.executable, "-m", "edingcnc_lang", "lsp", "--stdio"])
+    lsp.initialize(tmp_path)
+    found = lsp.diagnostics(lsp.open(job))
+    assert [(d["code"], d["message"]) for d in found] == [("E105", "expression needs brackets: X10+5 (write X[10+5])")]
+    assert lsp.close() == 0
+
+
+def test_without_the_lsp_extra_the_error_names_the_install_command() -> None:
+    hide = "import sys; sys.modules['pygls'] = None; from edingcnc_lang.cli import main; sys.exit(main(['lsp']))"
+    result = subprocess.run([sys.executable, "-c", hide], capture_output=True, text=True, stdin=subprocess.DEVNULL)
+    assert result.returncode == 2
+    assert result.stderr.startswith("error: the language server needs pygls")
+    assert "pip install 'edingcnc-lang[lsp]'" in result.stderr
+    assert "Traceback" not in result.stderr

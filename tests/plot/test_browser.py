@@ -1,0 +1,81 @@
+"""The viewer in a real browser: headless Chromium opens the page from a file, a screenshot is
+taken, and the test checks that it is not blank, that the path is on it, and that the page logged
+nothing (no error, no warning).  Skipped, saying why, when Chromium is not installed (``.ci/run``
+installs Debian's ``chromium`` where it can)."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from edingcnc_lang import RunOptions
+from edingcnc_lang.plot import views
+from edingcnc_lang.plot.toolpath import record_job
+from edingcnc_lang.plot.viewer import write_view
+
+ROOT = Path(__file__).resolve().parents[2]
+CHROMIUM = next((found for name in ("chromium", "chromium-browser") if (found := shutil.which(name))), None)
+pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="Chromium is not installed (Debian: apt-get install chromium)")
+WINDOW = (1280, 800)
+
+
+def chromium(page: Path, profile: Path, *args: str, fragment: str = "") -> str:
+    """Run headless Chromium on ``page``; returns what it logged (the page's console included)."""
+    command = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+               "--disable-component-update", "--no-first-run", f"--user-data-dir={profile}",
+               "--enable-logging=stderr", "--v=0", f"--window-size={WINDOW[0]},{WINDOW[1]}", *args,
+               page.resolve().as_uri() + fragment]
+    done = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    return done.stdout + done.stderr
+
+
+def console(log: str) -> list[str]:
+    return [line for line in log.splitlines() if ":CONSOLE" in line]
+
+
+@pytest.fixture(scope="module")
+def pocket_page(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    folder = tmp_path_factory.mktemp("browser")
+    path = record_job(ROOT / "examples/pocket.nc")
+    return write_view(path, folder / "pocket.html")
+
+
+def test_the_page_draws_the_job_and_logs_nothing(pocket_page: Path, tmp_path: Path) -> None:
+    from matplotlib.image import imread
+
+    shot = tmp_path / "shot.png"
+    log = chromium(pocket_page, tmp_path / "profile", f"--screenshot={shot}")
+    assert console(log) == [], console(log)
+    assert shot.exists(), log[-2000:]
+    image = imread(shot)[:, :, :3]
+    assert image.shape[:2] == (WINDOW[1], WINDOW[0])
+    colours = np.unique((image * 255).astype(np.uint8).reshape(-1, 3), axis=0)
+    assert len(colours) > 50, "the screenshot is blank"
+    canvas = image[100:700, 50:900]  # left of the side panel, below the header
+    t1 = np.linalg.norm(canvas - np.array([int(views.TOOL_COLORS[0][i:i + 2], 16) / 255 for i in (1, 3, 5)]),
+                        axis=2) < 0.15
+    assert t1.sum() > 500, "the T1 pocket contour is not on the screenshot"
+
+
+def test_the_page_finishes_its_script_and_opens_at_a_move(pocket_page: Path, tmp_path: Path) -> None:
+    log = chromium(pocket_page, tmp_path / "profile", "--dump-dom", fragment="#move=40&view=top")
+    assert console(log) == [], console(log)
+    status = re.search(r'<div id="status"[^>]*>', log)
+    assert status, log[-2000:]
+    assert 'data-errors="0"' in status.group(0) and 'data-ready="1"' in status.group(0)
+    drawn = int(re.search(r'data-drawn="(\d+)"', status.group(0)).group(1))
+    assert drawn > 100  # moves drawn: those done and those to come
+    assert re.search(r'<span id="counter">move 40 of 168</span>', log)
+    assert re.search(r'<li class="current"><span class="n">\d+</span>', log)  # the program listing follows
+
+
+def test_a_kinematic_job_shows_its_joints(tmp_path: Path) -> None:
+    path = record_job(ROOT / "examples/delta/job.nc", RunOptions(ini=ROOT / "examples/delta/cnc.ini"))
+    page = write_view(path, tmp_path / "delta.html")
+    log = chromium(page, tmp_path / "profile", "--dump-dom")
+    assert console(log) == [], console(log)
+    assert "joint 2 (Z)" in log and 'data-errors="0"' in log

@@ -1,0 +1,175 @@
+"""Picture tests that look at the PNG as a person would: is the path drawn where it should be?
+
+Each test reads the written image back and finds the path's colour at the pixels where
+``Picture.to_pixels`` says the contour lies, and nowhere outside the part's box.
+"""
+from __future__ import annotations
+
+import builtins
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pytest.importorskip("matplotlib")
+
+from matplotlib.image import imread  # noqa: E402
+
+from edingcnc_lang import RunOptions  # noqa: E402
+from edingcnc_lang.errors import EcncError, MissingExtra  # noqa: E402
+from edingcnc_lang.plot import views  # noqa: E402
+from edingcnc_lang.plot.joints import plot_joints  # noqa: E402
+from edingcnc_lang.plot.render import plot_toolpath, require_matplotlib  # noqa: E402
+from edingcnc_lang.plot.toolpath import record_job  # noqa: E402
+from tests.plot.jobs import CIRCLE, SQUARE, TWO_TOOLS, write  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def rgb(hex_color: str) -> np.ndarray:
+    return np.array([int(hex_color[i:i + 2], 16) for i in (1, 3, 5)], dtype=float) / 255.0
+
+
+def matches(image: np.ndarray, color: str, tolerance: float = 0.2) -> np.ndarray:
+    """Pixels within ``tolerance`` (RGB distance, 0..1 scale) of ``color``."""
+    return np.linalg.norm(image[:, :, :3] - rgb(color), axis=2) < tolerance
+
+
+def near(mask: np.ndarray, pixel: np.ndarray, reach: int = 2) -> bool:
+    col, row = (int(round(v)) for v in pixel)
+    return bool(mask[max(row - reach, 0):row + reach + 1, max(col - reach, 0):col + reach + 1].any())
+
+
+def contour(corners: list[tuple[float, float]], z: float, step: float = 1.0) -> np.ndarray:
+    points = []
+    for (x0, y0), (x1, y1) in zip(corners, corners[1:]):
+        count = int(max(abs(x1 - x0), abs(y1 - y0)) / step)
+        for k in range(count):
+            points.append((x0 + (x1 - x0) * k / count, y0 + (y1 - y0) * k / count, z))
+    return np.array(points)
+
+
+@pytest.fixture
+def square(tmp_path: Path):
+    return record_job(write(tmp_path, "square.nc", SQUARE, newline="\r\n"))
+
+
+def test_the_square_is_drawn_along_its_contour_and_nowhere_else(square, tmp_path: Path) -> None:
+    picture = plot_toolpath(square, tmp_path / "square.png", view="top")
+    image = imread(picture.path)
+    assert image.shape[:2] == (picture.height, picture.width)
+    feed = matches(image, views.tool_color(views.feed_tools(square), 1))
+    pixels = picture.to_pixels(contour([(10, 10), (60, 10), (60, 60), (10, 60), (10, 10)], -1.0))
+    missing = [tuple(p) for p in pixels if not near(feed, p)]
+    assert not missing, f"{len(missing)} of {len(pixels)} contour points not drawn, first {missing[:3]}"
+    (left, top), (right, bottom) = picture.to_pixels([[10, 60, 0], [60, 10, 0]])
+    rows, cols = np.nonzero(feed)
+    inside_axes = (cols >= picture.axes[0]) & (cols <= picture.axes[2]) & (rows >= picture.axes[1]) & (rows <= picture.axes[3])
+    reach = 5  # half the line width and the ring that marks the plunge at the corner
+    outside = inside_axes & ((cols < left - reach) | (cols > right + reach) | (rows < top - reach) | (rows > bottom + reach))
+    assert not outside.any(), f"{outside.sum()} path pixels outside the square's box"
+    middle = picture.to_pixels([[35, 35, 0]])[0]
+    assert not near(feed, middle, reach=5), "the inside of the square is empty"
+
+
+def test_a_circle_is_drawn_as_a_circle_and_a_rapid_dashed(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "circle.nc", CIRCLE))
+    picture = plot_toolpath(path, tmp_path / "circle.png", view="top")
+    image = imread(picture.path)
+    feed = matches(image, views.TOOL_COLORS[0])  # T3, the only tool that cuts: the first colour
+    angles = np.linspace(0.0, 2 * np.pi, 90, endpoint=False)
+    ring = np.column_stack((40 + 30 * np.cos(angles), 40 + 30 * np.sin(angles), np.zeros_like(angles)))
+    assert all(near(feed, p) for p in picture.to_pixels(ring))
+    # the polygon between the samples would cut corners; half way between two 3-degree chords it does not show
+    chord_middles = np.column_stack((40 + 29.0 * np.cos(angles), 40 + 29.0 * np.sin(angles), np.zeros_like(angles)))
+    assert sum(near(feed, p, reach=0) for p in picture.to_pixels(chord_middles)) < 10
+    # the rapid from (70, 40) to the work zero: dashes, so some of its pixels are drawn and some are not
+    inked = image[:, :, :3].mean(axis=2) < 0.8  # darker than the grid
+    x = np.linspace(10, 30, 400)  # clear of the circle
+    hits = [near(inked, p, reach=0) for p in picture.to_pixels(np.column_stack((x, x * 40 / 70, np.zeros_like(x))))]
+    gaps = sum(1 for a, b in zip(hits, hits[1:]) if a and not b)
+    assert 0.3 < sum(hits) / len(hits) < 0.95 and gaps >= 5, (sum(hits), gaps)
+
+
+def test_each_view_puts_the_depth_where_it_belongs(square, tmp_path: Path) -> None:
+    front = plot_toolpath(square, tmp_path / "front.png", view="front")
+    (x0, z_top), (_x1, z_cut) = front.to_pixels([[10, 10, 5], [10, 10, -1]])
+    assert z_top < z_cut  # Z up: the retract height is above the cut on the page
+    side = plot_toolpath(square, tmp_path / "side.png", view="side")
+    (y_low, _), (y_high, _) = side.to_pixels([[0, 10, 0], [0, 60, 0]])
+    assert y_low < y_high  # seen from +X, Y grows to the right
+    iso = plot_toolpath(square, tmp_path / "iso.png", view="iso")
+    image = imread(iso.path)
+    feed = matches(image, views.TOOL_COLORS[0])
+    assert all(near(feed, p) for p in iso.to_pixels(contour([(10, 10), (60, 10), (60, 60)], -1.0, step=5.0)))
+
+
+def test_colour_by_tool_gives_each_tool_its_colour(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "two.nc", TWO_TOOLS))
+    picture = plot_toolpath(path, tmp_path / "two.png", view="top")
+    image = imread(picture.path)
+    assert views.feed_tools(path) == [1, 2]
+    first, second = views.tool_color([1, 2], 1), views.tool_color([1, 2], 2)
+    assert first != second
+    assert near(matches(image, first), picture.to_pixels([[10, 0, 0]])[0])
+    assert near(matches(image, second), picture.to_pixels([[40, 10, 0]])[0])
+    assert not near(matches(image, first), picture.to_pixels([[40, 10, 0]])[0])
+
+
+@pytest.mark.parametrize("mode", ["kind", "feed"])
+def test_other_colour_modes_draw_the_same_contour(square, tmp_path: Path, mode: str) -> None:
+    picture = plot_toolpath(square, tmp_path / f"{mode}.png", view="top", color=mode)
+    image = imread(picture.path)
+    background = np.all(image[:, :, :3] > 0.97, axis=2)
+    pixels = picture.to_pixels(contour([(10, 10), (60, 10), (60, 60)], -1.0, step=5.0))
+    assert all(near(~background, p, reach=1) for p in pixels)
+
+
+def test_speed_colour_needs_the_planner(square, tmp_path: Path) -> None:
+    square.speeds = None
+    with pytest.raises(EcncError, match="planner"):
+        plot_toolpath(square, tmp_path / "speed.png", color="speed")
+
+
+@pytest.mark.parametrize("suffix, magic", [(".svg", b"<?xml"), (".pdf", b"%PDF"), (".PNG", b"\x89PNG")])
+def test_the_format_follows_the_extension(square, tmp_path: Path, suffix: str, magic: bytes) -> None:
+    out = plot_toolpath(square, tmp_path / f"square{suffix}").path
+    assert out.read_bytes().startswith(magic)
+
+
+def test_an_unknown_extension_is_a_plain_error(square, tmp_path: Path) -> None:
+    with pytest.raises(EcncError, match=r"unknown picture format '\.jpg' \(use \.png, \.svg, \.pdf\)"):
+        plot_toolpath(square, tmp_path / "square.jpg")
+
+
+def test_without_matplotlib_the_message_says_how_to_install_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    real_import = builtins.__import__
+
+    def no_matplotlib(name: str, *args, **kwargs):
+        if name.split(".")[0] == "matplotlib":
+            raise ImportError(name)
+        return real_import(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", no_matplotlib)
+    with pytest.raises(MissingExtra, match=r"pip install 'edingcnc-lang\[plot\]'") as caught:
+        require_matplotlib()
+    assert caught.value.exit_code == 2
+
+
+def test_title_names_the_job_its_tools_and_a_stop(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "two.nc", TWO_TOOLS + "errmsg \"late\"\n"))
+    assert views.title_text(path).startswith("two.nc")
+    assert "T1, T2" in views.title_text(path)
+    path.seconds = 4325.0
+    assert "1 h 12 min 5 s" in views.title_text(path)
+
+
+def test_joint_plot_of_a_delta_shows_curved_carriage_paths(tmp_path: Path) -> None:
+    """The delta's straight moves are curves for the carriages: the plotted joint 0 is not
+    piecewise linear in time while the effector draws its circle."""
+    path = record_job(ROOT / "examples/delta/job.nc", RunOptions(ini=ROOT / "examples/delta/cnc.ini"), samples=True)
+    out = plot_joints(path, tmp_path / "joints.png")
+    image = imread(out)
+    assert image.shape[0] > 300 and (image[:, :, :3] < 0.9).any()
+    jx = path.samples["jx"]
+    assert np.ptp(jx) > 100 and np.abs(np.diff(jx, 2)).max() > 1e-3

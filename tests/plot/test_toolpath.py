@@ -1,0 +1,77 @@
+"""The recorded toolpath: tools per move, arcs as arcs, bounds, errors kept, line ranges."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from edingcnc_lang import RunOptions
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.plot.toolpath import KINDS, record_job
+from tests.plot.jobs import CIRCLE, SQUARE, TWO_TOOLS, write
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_moves_carry_the_tool_in_the_spindle(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "two.nc", TWO_TOOLS))
+    feeds = path.kinds == KINDS.index("linear")
+    assert path.tools[feeds].tolist() == [1, 1, 2, 2]
+    assert path.lines[feeds].tolist() == [4, 5, 9, 10]
+
+
+def test_an_arc_is_sampled_on_its_circle(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "circle.nc", CIRCLE))
+    arc = next(i for i in range(len(path)) if i in path.arcs)
+    points = path.move_points(arc)
+    radii = np.hypot(points[:, 0] - 40.0, points[:, 1] - 40.0)
+    assert np.allclose(radii, 30.0, atol=1e-9)
+    assert len(points) >= 120  # a full turn, 3 degrees a chord
+    chord = np.hypot(*np.diff(points[:, :2], axis=0).T).max()
+    assert chord <= 30.0 * math.radians(3.0) + 1e-9
+
+
+def test_bounds_are_those_of_the_cut_not_of_the_rapids(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "circle.nc", CIRCLE))
+    lower, upper = path.bounds()
+    assert np.allclose(lower, [10.0, 10.0, -1.0]) and np.allclose(upper, [70.0, 70.0, 2.0])
+    lower, upper = path.bounds(feed_only=False)
+    assert np.allclose(lower[:2], [0.0, 0.0])
+
+
+def test_polylines_split_where_style_changes_and_cover_every_move(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "square.nc", SQUARE))
+    lines = list(path.polylines())
+    owners = np.concatenate([line.moves for line in lines])
+    assert sorted(set(owners.tolist())) == list(range(len(path)))
+    feed = next(line for line in lines if line.kind == KINDS.index("linear"))
+    assert np.allclose(feed.points[:, :2], [[10, 10], [10, 10], [60, 10], [60, 60], [10, 60], [10, 10]])
+
+
+def test_a_runtime_error_keeps_the_path_so_far(tmp_path: Path) -> None:
+    job = write(tmp_path, "bad.nc", "G0 X5\nG1 X10 F100\nerrmsg \"stop here\"\nG1 X20\n")
+    path = record_job(job)
+    assert path.error is not None and "stop here" in path.error.format()
+    assert path.ends[-1, 0] == 10.0
+
+
+def test_a_syntax_error_is_raised_as_nothing_ran(tmp_path: Path) -> None:
+    with pytest.raises(EcncError) as caught:
+        record_job(write(tmp_path, "broken.nc", "G1 X(1\n"))
+    assert caught.value.exit_code == 65
+
+
+def test_select_lines_keeps_moves_of_those_job_lines_with_their_subs(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "two.nc", TWO_TOOLS))
+    part = path.select_lines(8, 10)
+    assert part.lines.tolist() == [8, 9, 10] and len(part.starts) == 3
+
+
+def test_machine_limits_come_from_the_ini_and_not_from_the_wide_defaults() -> None:
+    """A delta's travel is its [KINEMATICS] Cartesian box, not its carriages' 0..420 mm."""
+    path = record_job(ROOT / "examples/delta/job.nc", RunOptions(ini=ROOT / "examples/delta/cnc.ini"))
+    assert path.limits is not None and path.kinematics.startswith("deltakins")
+    assert path.limits[0].tolist() == [-400.0, -400.0, 0.0] and path.limits[1].tolist() == [400.0, 400.0, 200.0]
+    assert record_job(ROOT / "examples/pocket.nc").limits is None  # no ini: nothing to draw
