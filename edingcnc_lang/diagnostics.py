@@ -47,6 +47,7 @@ class SyntaxErrors(EcncError):
     """Raised when a file has syntax errors; carries every one of them (exit 65)."""
 
     exit_code = EXIT_SYNTAX
+    kind = "syntax"
 
     def __init__(self, diagnostics: list[Diagnostic]) -> None:
         first = diagnostics[0]

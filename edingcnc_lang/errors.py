@@ -13,6 +13,7 @@ EXIT_FINDINGS = 1
 EXIT_USAGE = 2
 EXIT_SYNTAX = 65
 EXIT_RUNTIME = 70
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a job stopped with Ctrl-C
 
 
 @dataclass(frozen=True)
@@ -36,6 +37,7 @@ class EcncError(Exception):
     """Base of all errors reported to the user; ``exit_code`` picks the CLI exit status."""
 
     exit_code = EXIT_RUNTIME
+    kind = "error"  # the ``kind`` of the ``--json`` error object (docs/cli.md)
 
     def __init__(self, message: str, location: Location | None = None,
                  notes: tuple[str, ...] = ()) -> None:
@@ -49,13 +51,23 @@ class EcncError(Exception):
         head = f"{self.location}: error: {self.message}" if self.location else f"error: {self.message}"
         return "\n".join([head, *(f"  {n}" for n in self.notes)])
 
+    def to_json(self) -> dict[str, object]:
+        """The ``error`` object of a ``--json`` document: kind, message, where, and the text as printed."""
+        where = self.location or Location("")
+        return {"kind": self.kind, "message": self.message, "file": where.path or None,
+                "line": where.line or None, "column": where.col or None, "text": self.format()}
+
 
 class ConfigError(EcncError):
     """A bad value in cnc.ini (location names the ini file and line)."""
 
+    kind = "configuration"
+
 
 class PluginError(EcncError):
     """A kinematics plug-in that failed to load or raised while running."""
+
+    kind = "plugin"
 
 
 class MissingExtra(EcncError):
@@ -67,6 +79,24 @@ class MissingExtra(EcncError):
 class MachineError(EcncError):
     """A runtime error while running a job: errmsg, limits, bad arguments, step budget."""
 
+    kind = "runtime"
+
 
 class JobAborted(MachineError):
     """``errmsg`` stopped the job; its text was already reported as a message when it ran."""
+
+    kind = "errmsg"
+
+
+class Interrupted(EcncError):
+    """Ctrl-C: the location is the line the run had reached (exit 130)."""
+
+    exit_code = EXIT_INTERRUPTED
+    kind = "interrupted"
+
+
+class UsageFailure(EcncError):
+    """A command line that cannot run (exit 2); for the ``--json`` error object of a usage error."""
+
+    exit_code = EXIT_USAGE
+    kind = "usage"

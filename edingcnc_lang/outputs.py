@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     import numpy as np
 
 SIX_REPR = ",".join(["%r"] * 6)
-TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc\n"
+TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file\n"
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc")
 
 
@@ -33,6 +33,13 @@ def _open_for_writing(path: Path) -> io.TextIOWrapper:
         raise EcncError(f"cannot write {path}: {err.strerror}") from None
 
 
+def csv_field(text: str) -> str:
+    """A CSV field: quoted (quotes doubled) only when it holds a comma, quote or line end."""
+    if any(ch in text for ch in ',"\r\n'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
 class TraceWriter:
     """One CSV row per executed move: source line, kind, machine end point, joints there."""
 
@@ -41,14 +48,16 @@ class TraceWriter:
         self._file.write(TRACE_HEADER)
 
     def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
-        self._file.write(f"{move.line},{move.kind},{','.join(map(repr, move.end))},{','.join(map(repr, joints))}\n")
+        self._file.write(f"{move.line},{move.kind},{','.join(map(repr, move.end))},{','.join(map(repr, joints))},"
+                         f"{csv_field(move.path)}\n")
 
     def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         """Rows of straight moves whose joints equal their end points."""
         rows = []
+        name = csv_field(path)
         for kind, line, end, _feed in batch:
             coords = SIX_REPR % end
-            rows.append(f"{line},{kind},{coords},{coords}\n")
+            rows.append(f"{line},{kind},{coords},{coords},{name}\n")
         self._file.write("".join(rows))
 
     def event(self, event: Event) -> None:

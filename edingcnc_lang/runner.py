@@ -16,7 +16,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, is_persisted, load_config, save_variables
-from .errors import EcncError, Location, MachineError
+from .errors import EcncError, Interrupted, Location, MachineError
 from .host import Host
 from .interpreter import Interpreter
 from .kinematics.base import Kinematics
@@ -46,7 +46,8 @@ class RunResult:
     moves: int
     modal: list[str]
     ended_by: str = "end of file"   # "M2", "M30" or "end of file"
-    error: str | None = None
+    error: str | None = None  # the formatted message of the error that stopped the run
+    error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
     warnings: list[Diagnostic] = field(default_factory=list)  # macro lines that do not parse (tolerant load)
 
     def to_json(self) -> dict[str, Any]:
@@ -63,7 +64,7 @@ class RunResult:
             "moves": self.moves,
             "modal": self.modal,
             "ended_by": self.ended_by,
-            **({"error": self.error} if self.error else {}),
+            **({"error": self.error_record or {"text": self.error}} if self.error else {}),
             **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
         }
 
@@ -190,13 +191,15 @@ class Run:
             error = MachineError("blocks and sub calls are nested too deeply to run",
                                  Location(interp.path, interp.line))
         except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
-            error = _write_error(err)
+            error = _write_error(err, (self.options.trace, self.options.samples))
+        except KeyboardInterrupt:  # Ctrl-C: say where the job was, report the state so far (exit 130)
+            error = Interrupted("interrupted (Ctrl-C)", Location(interp.path, interp.line))
         finally:
             error = self._flush(error)
             try:
                 self.motion.close()
             except OSError as err:
-                error = error or _write_error(err)
+                error = error or _write_error(err, (self.options.trace, self.options.samples))
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -235,12 +238,18 @@ class Run:
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
             ended_by=interp.ended_by,
             error=error.format() if error else None,
+            error_record=error.to_json() if error else None,
             warnings=list(self.warnings),
         )
 
 
-def _write_error(err: OSError) -> EcncError:
-    return EcncError(f"cannot write {err.filename or 'an output file'}: {err.strerror}")
+def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError:
+    """A failed write, naming the file: the error's own, else the output files the run writes.
+
+    A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
+    """
+    names = [str(p) for p in outputs if p is not None]
+    return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 
 
 def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:

@@ -15,10 +15,11 @@ from typing import Any, NoReturn
 import click
 
 from .. import __version__
-from ..errors import EXIT_OK, EXIT_USAGE, EcncError
-from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error
+from ..errors import EXIT_OK, EcncError, Interrupted, JobAborted, Location, UsageFailure
+from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error, usage_message
+from .streams import flush_quietly, make_streams_usable, quiet_stdout
 
-# What click exited with on Ctrl-C and on a closed output pipe; scripts may rely on it.
+# What click exits with on a closed output pipe; scripts may rely on it.
 EXIT_ABORTED = 1
 
 # Every command: its name and "module:attribute" in this package (see docs/cli.md, "Adding a command").
@@ -53,33 +54,60 @@ ecnc = click.version_option(__version__, "--version", prog_name="ecnc",
 
 
 def run_command_line(argv: list[str]) -> int:
-    """Run ``ecnc ARGV`` and return its exit code; every error is reported here, on stderr."""
+    """Run ``ecnc ARGV`` and return its exit code; every failure is reported here, never raised.
+
+    Errors go to stderr as ``PATH:LINE:COL: error: MESSAGE``; with ``--json`` stdout still gets one
+    JSON document: the state so far for a run that started, else ``{"error": {...}}``.
+    """
     if os.environ.get(COMPLETE_VAR):
         from click.shell_completion import shell_complete
 
         return shell_complete(ecnc, {}, "ecnc", COMPLETE_VAR, os.environ[COMPLETE_VAR])
-    reconfigure = getattr(sys.stdout, "reconfigure", None)
-    if reconfigure is not None:  # a source line with 'é' on an ASCII console: \xe9, not a traceback
-        reconfigure(errors="backslashreplace")
+    make_streams_usable()
+    as_json = "--json" in (argv[:argv.index("--")] if "--" in argv else argv)
     try:
         with ecnc.make_context("ecnc", argv) as ctx:
             code = ecnc.invoke(ctx)
-        sys.stdout.flush()  # so that a closed pipe shows up here
+        sys.stdout.flush()  # so that a closed pipe or a full disk shows up here
         return code if isinstance(code, int) else EXIT_OK
     except click.exceptions.Exit as done:  # --help, --version
         return done.exit_code
     except click.UsageError as err:
         show_usage_error(err)
-        return EXIT_USAGE
+        return report(UsageFailure(usage_message(err)), as_json, to_stderr=False)
     except EcncError as err:
-        print(err.format(), file=sys.stderr)
-        return err.exit_code
-    except (KeyboardInterrupt, click.Abort):
-        print("\nAborted!", file=sys.stderr)
-        return EXIT_ABORTED
+        return report(err, as_json)
+    except (KeyboardInterrupt, click.Abort):  # outside a run (which names its line itself)
+        print(file=sys.stderr)
+        return report(Interrupted("interrupted (Ctrl-C)"), as_json)
     except BrokenPipeError:  # `ecnc ... | head` stopped reading: end quietly
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing left to flush at exit
+        quiet_stdout()
         return EXIT_ABORTED
+    except OSError as err:  # stdout on a full disk or closed; a file that cannot be written
+        where = Location(err.filename) if err.filename else None
+        what = err.strerror or str(err)
+        return report(EcncError(what if where else f"cannot write standard output: {what}", where), as_json)
+
+
+def report(err: EcncError, as_json: bool, to_stderr: bool = True) -> int:
+    """Tell what stopped the command; return its exit code.
+
+    With ``--json``, stdout gets the run's state so far (when a run started) or ``{"error": ...}``.
+    An ``errmsg`` was already shown as a message when it ran, so it is not repeated on stderr.
+    """
+    if as_json:
+        partial = getattr(err, "result", None)
+        doc = partial.to_json() if partial is not None else {"error": err.to_json()}
+        import json
+
+        try:
+            print(json.dumps(doc, indent=1))
+            sys.stdout.flush()
+        except OSError:  # stdout is the trouble itself: stderr tells
+            pass
+    if to_stderr and not isinstance(err, JobAborted):
+        print(err.format(), file=sys.stderr)
+    return err.exit_code
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -96,9 +124,5 @@ def entry() -> NoReturn:
     command line calls ``main()``, which returns.
     """
     code = main()
-    for stream in (sys.stdout, sys.stderr):
-        try:
-            stream.flush()
-        except (OSError, ValueError, AttributeError):  # a reader that went away, a closed stream
-            pass
+    flush_quietly()
     os._exit(code)

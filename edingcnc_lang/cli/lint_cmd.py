@@ -1,13 +1,20 @@
 """``ecnc lint PATH...``: report mistakes in macro files, jobs and cnc.ini without running them."""
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import click
 
 from ..errors import EXIT_FINDINGS, EXIT_OK
 from .base import Command, usage_error
 from .common import whole_trees
 from .options import ini_option, macro_options
-from .params import EXISTING_PATH, LINT_CODES
+from .params import INPUT_PATH, LINT_CODES, STDIN
+from .streams import STDIN_NAME, read_stdin
+
+if TYPE_CHECKING:
+    from ..diagnostics import Diagnostic
+    from ..lint import LintOptions
 
 # The keys of lint.formats.FORMATS (a test keeps them in step): importing the linter here would
 # make every other command start slower.
@@ -16,7 +23,7 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
 
 @click.command("lint", cls=Command,
                short_help="Check files, folders and cnc.ini; exit 1 if anything is found.")
-@click.argument("paths", metavar="PATH...", nargs=-1, type=EXISTING_PATH)
+@click.argument("paths", metavar="PATH...", nargs=-1, type=INPUT_PATH)
 @macro_options("Macro file to resolve GoSub against (default: macro.cnc beside each file).",
                "User macro file to resolve GoSub against.")
 @ini_option("cnc.ini to check (its kinematics user outputs count as written).")
@@ -32,7 +39,10 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
 def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini: str | None, fmt: str,
          select: tuple[str, ...], ignore: tuple[str, ...], target: str | None, no_source: bool,
          show_codes: bool) -> int:
-    """Check PATHs (files, or folders of *.cnc *.nc *.ngc *.tap *.txt); exit 1 if anything is found."""
+    """Check PATHs (files, or folders of *.cnc *.nc *.ngc *.tap *.txt); exit 1 if anything is found.
+
+    PATH - reads a job from standard input (its macro files: --macro, --user-macro).
+    """
     from ..lint import LintOptions, lint_paths
     from ..lint.formats import FORMATS, list_codes
 
@@ -41,9 +51,29 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
         return EXIT_OK
     if not paths and not ini:
         raise usage_error("give at least one file or folder to lint")
+    options = LintOptions(macro, user_macro, ini, select, ignore, target)
     with whole_trees():
-        findings = lint_paths(list(paths), LintOptions(macro, user_macro, ini, select, ignore, target))
+        findings = _lint_with_stdin(paths, options) if STDIN in paths else lint_paths(list(paths), options)
     output = FORMATS[fmt](findings, not no_source)
     if output or fmt != "text":
         print(output)
     return EXIT_FINDINGS if findings else EXIT_OK
+
+
+def _lint_with_stdin(paths: tuple[str, ...], options: LintOptions) -> list[Diagnostic]:
+    """Lint with ``-`` among the paths: standard input is checked as a job named ``<stdin>``.
+
+    The linter reads files, so the text goes to a file in a private temporary folder (no
+    macro.cnc beside it there) and its findings are renamed back.
+    """
+    import dataclasses
+    import tempfile
+    from pathlib import Path
+
+    from ..lint import lint_paths
+
+    with tempfile.TemporaryDirectory(prefix="ecnc-stdin-") as folder:
+        job = Path(folder) / "stdin.nc"
+        job.write_text(read_stdin(), encoding="utf-8")
+        findings = lint_paths([str(job) if p == STDIN else p for p in paths], options)
+    return [dataclasses.replace(d, path=STDIN_NAME) if d.path == str(job) else d for d in findings]

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, POSITIVE_INT
+from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
     from ..diagnostics import Diagnostic
@@ -50,6 +50,11 @@ def json_option(help: str) -> Callable[[F], F]:  # noqa: A002 - click's name
 def job_argument(func: F) -> F:
     """``JOB``: the file to run, passed as ``job``."""
     return click.argument("job", metavar="JOB", type=EXISTING_FILE)(func)
+
+
+def job_or_stdin_argument(func: F) -> F:
+    """``JOB``: the file to run, or ``-`` for standard input (the command handles ``STDIN``)."""
+    return click.argument("job", metavar="JOB", type=INPUT_FILE)(func)
 
 
 @dataclass(frozen=True)

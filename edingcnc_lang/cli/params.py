@@ -16,11 +16,20 @@ if TYPE_CHECKING:
     from ..host import DialogAnswer
 
 
+STDIN = "-"  # as a job or lint path: read standard input
+
+
 class _PathType(click.ParamType):
-    """A path given as text (commands take ``str`` and make ``Path``s where they need them)."""
+    """A path given as text (commands take ``str`` and make ``Path``s where they need them).
+
+    With ``stdin``, ``-`` is accepted as is: the command reads standard input.
+    """
 
     name = "path"
     completion = "file"
+
+    def __init__(self, stdin: bool = False) -> None:
+        self.stdin = stdin
 
     def check(self, value: str) -> str | None:
         """What is wrong with ``value``, or None."""
@@ -28,6 +37,8 @@ class _PathType(click.ParamType):
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
         text = os.fspath(value)
+        if self.stdin and text == STDIN:
+            return text
         problem = self.check(text)
         if problem:
             self.fail(problem, param, ctx)
@@ -143,6 +154,8 @@ class Answer(click.ParamType):
 
 EXISTING_PATH = ExistingPath()
 EXISTING_FILE = ExistingFile()
+INPUT_PATH = ExistingPath(stdin=True)  # a path to lint, or - for standard input
+INPUT_FILE = ExistingFile(stdin=True)  # a job or file to parse, or - for standard input
 EXISTING_FOLDER = ExistingFolder()
 OUTPUT_FILE = OutputFile()
 POSITIVE_INT = PositiveInt()

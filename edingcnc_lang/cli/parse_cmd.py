@@ -7,28 +7,32 @@ from ..errors import EXIT_OK, EcncError, Location
 from .base import Command
 from .common import whole_trees
 from .options import json_option
-from .params import EXISTING_FILE
+from .params import INPUT_FILE, STDIN
+from .streams import STDIN_NAME, read_stdin
 
 
 @click.command("parse", cls=Command, short_help="Parse FILE without running it (exit 65 on syntax errors).")
-@click.argument("file", metavar="FILE", type=EXISTING_FILE)
+@click.argument("file", metavar="FILE", type=INPUT_FILE)
 @json_option("Print the AST as JSON.")
 @click.option("--no-spans", is_flag=True, help="Leave source positions out of the JSON.")
 def parse(file: str, as_json: bool, no_spans: bool) -> int:
-    """Parse FILE without running it (exit 65 on syntax errors)."""
+    """Parse FILE without running it (exit 65 on syntax errors); FILE - reads standard input."""
     import json
 
-    from ..parser import check_file, parse_file
+    from ..parser import check_file, parse_file, parse_text
     from ..serialize import to_data
 
+    text = read_stdin() if file == STDIN else None
     if as_json:
         with whole_trees():
-            program = parse_file(file)
+            program = parse_file(file) if text is None else parse_text(text, STDIN_NAME)
             try:
-                text = json.dumps(to_data(program, with_spans=not no_spans), indent=1)
+                dump = json.dumps(to_data(program, with_spans=not no_spans), indent=1)
             except RecursionError:  # thousands of nested blocks: parsed fine, too deep to write out
                 raise EcncError("blocks are nested too deeply to write the tree as JSON", Location(file)) from None
-        print(text)
+        print(dump)
+    elif text is not None:
+        parse_text(text, STDIN_NAME)
     else:
         check_file(file)  # streams: memory stays flat however long the file is
     return EXIT_OK

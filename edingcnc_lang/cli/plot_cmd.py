@@ -10,7 +10,7 @@ from .options import MachineOptions, job_argument, machine_options
 from .params import OUTPUT_FILE
 from .view_cmd import report
 
-VIEWS = ("auto", "top", "front", "side", "iso")
+VIEWS = ("auto", "top", "front", "side", "iso", "lathe")
 COLORS = ("tool", "kind", "feed", "speed")
 FORMATS = (".png", ".svg", ".pdf")
 
@@ -21,7 +21,8 @@ FORMATS = (".png", ".svg", ".pdf")
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="Picture to write; .png, .svg or .pdf (default: JOB.png beside the job).")
 @click.option("--view", type=click.Choice(VIEWS), default="auto", show_default=True,
-              help="Seen from above, the front, the right side or isometric; auto: top, or front for a lathe job.")
+              help="Seen from above, the front, the right side, isometric, or the lathe's ZX plane (Z across, "
+                   "X up); auto: top, or lathe for a job that never moves Y.")
 @click.option("--color", type=click.Choice(COLORS), default="tool", show_default=True,
               help="Colour the feed moves by tool, by kind, by programmed feed or by the planner's speed.")
 @click.option("--fit", type=click.Choice(("job", "machine")), default="job", show_default=True,

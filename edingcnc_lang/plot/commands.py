@@ -74,6 +74,6 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
         if not len(path):
             raise EcncError(f"{job}: lines {lines[0]} to {lines[1]} make no moves")
     if view == "auto":
-        view = "front" if auto_view(path) == "front" else "iso"
+        view = "front" if auto_view(path) == "lathe" else "iso"
     write_view(path, target, max_moves or MAX_MOVES, view=view)
     return Written(target, path)

@@ -86,8 +86,7 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     _frame(ax, fitted, view)
     fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
-    fig.canvas.draw()
-    matrix = ax.transData.get_affine().get_matrix().copy()
+    matrix = ax.transData.get_affine().get_matrix().copy()  # final: the axes sit where add_axes put them
     extent = ax.get_window_extent()
     try:
         fig.savefig(out, format=fmt, dpi=DPI)
@@ -98,13 +97,18 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     return Picture(out, view, width, height, matrix, axes)
 
 
-def _segments(points: np.ndarray, project: np.ndarray) -> np.ndarray:
-    page = points @ project.T
+def _segments(page: np.ndarray) -> np.ndarray:
+    """A polyline's (N, 2) page points as N - 1 two-point segments."""
     return np.stack((page[:-1], page[1:]), axis=1)
 
 
 def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> list[np.ndarray]:
-    """The moves as line collections, one per style; returns the page points to fit the view to."""
+    """The moves as line collections, one per style; returns the page points to fit the view to.
+
+    By tool or kind, each run of alike moves is one path (dashes run on along it, and matplotlib
+    draws a few long paths far faster than many short ones); by feed or speed every segment has
+    its own colour.
+    """
     from matplotlib.collections import LineCollection
 
     project = v.projection(view)
@@ -119,32 +123,30 @@ def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> 
                 shade = v.KIND_COLORS[v.kind_name(line.kind)]
             else:
                 shade = v.RAPID_COLOR if rapid else v.tool_color(cutting, line.tool)
-            groups.setdefault((rapid, shade), []).append(_segments(line.points, project))
-        for (rapid, shade), pieces in sorted(groups.items(), key=lambda item: not item[0][0]):
-            segments = np.concatenate(pieces)
-            fitted.append(segments.reshape(-1, 2))
-            ax.add_collection(LineCollection(segments, colors=shade, linewidths=RAPID_WIDTH if rapid else FEED_WIDTH,
+            groups.setdefault((rapid, shade), []).append(line.points @ project.T)
+        for (rapid, shade), pages in sorted(groups.items(), key=lambda item: not item[0][0]):
+            fitted.extend(pages)
+            ax.add_collection(LineCollection(pages, colors=shade, linewidths=RAPID_WIDTH if rapid else FEED_WIDTH,
                                              linestyles="--" if rapid else "-", zorder=1 if rapid else 2))
             if not rapid and view == "top":
-                _mark_end_on(ax, segments, shade)
+                _mark_end_on(ax, np.concatenate([_segments(page) for page in pages]), shade)
         for label, (rapid, shade) in _legend_entries(path, color, groups):
             ax.plot([], [], color=shade, ls="--" if rapid else "-", lw=RAPID_WIDTH if rapid else FEED_WIDTH,
                     label=label)
         return fitted
     values = path.feeds if color == "feed" else path.speeds
     assert values is not None
-    rapid_pieces, feed_pieces, feed_values = [], [], []
+    rapid_pages, feed_pieces, feed_values = [], [], []
     for line in path.polylines(path.kinds.astype(np.int32)):
-        segments = _segments(line.points, project)
+        page = line.points @ project.T
         if v.is_rapid(line.kind):
-            rapid_pieces.append(segments)
+            rapid_pages.append(page)
         else:
-            feed_pieces.append(segments)
+            feed_pieces.append(_segments(page))
             feed_values.append(values[line.moves])
-    if rapid_pieces:
-        rapids = np.concatenate(rapid_pieces)
-        fitted.append(rapids.reshape(-1, 2))
-        ax.add_collection(LineCollection(rapids, colors=v.RAPID_COLOR, linewidths=RAPID_WIDTH, linestyles="--"))
+    if rapid_pages:
+        fitted.extend(rapid_pages)
+        ax.add_collection(LineCollection(rapid_pages, colors=v.RAPID_COLOR, linewidths=RAPID_WIDTH, linestyles="--"))
         ax.plot([], [], color=v.RAPID_COLOR, ls="--", lw=RAPID_WIDTH, label="rapid")
     if feed_pieces:
         feeds = np.concatenate(feed_pieces)
@@ -207,7 +209,8 @@ def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray, include_limits: b
         ax.plot([], [], color="#444444", lw=0.7, ls=":", label="part bounding box")
     if path.limits is not None:
         edges = v.box_edges(*path.limits) @ project.T
-        ax.add_collection(LineCollection(edges, colors="#b22222", linewidths=1.0, linestyles="-.", zorder=0))
+        ax.add_collection(LineCollection(edges, colors="#b22222", linewidths=1.0, linestyles="-.",
+                                         zorder=0.6))  # above the grid, which may fall on the limits
         ax.plot([], [], color="#b22222", lw=1.0, ls="-.", label="machine limits (cnc.ini)")
         if include_limits:
             fitted.append(edges.reshape(-1, 2))

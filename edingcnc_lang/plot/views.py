@@ -14,12 +14,14 @@ from .toolpath import FEED_KINDS, KINDS, RAPID_KINDS, Toolpath
 _C, _S = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
 
 # view -> (2x3 projection of machine XYZ onto the page, horizontal label, vertical label)
-# top: seen from +Z; front: from -Y; side: from +X; iso: from the front-left-top corner (-X, -Y, +Z).
+# top: seen from +Z; front: from -Y; side: from +X; iso: from the front-left-top corner (-X, -Y, +Z);
+# lathe: the turning plane as a lathe hand sees it, the spindle axis Z across and X up.
 VIEWS: dict[str, tuple[tuple[tuple[float, float, float], tuple[float, float, float]], str, str]] = {
     "top": (((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)), "X (mm)", "Y (mm)"),
     "front": (((1.0, 0.0, 0.0), (0.0, 0.0, 1.0)), "X (mm)", "Z (mm)"),
     "side": (((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)), "Y (mm)", "Z (mm)"),
     "iso": (((_C, -_C, 0.0), (_S, _S, 1.0)), "", ""),
+    "lathe": (((0.0, 0.0, 1.0), (1.0, 0.0, 0.0)), "Z (mm)", "X (mm)"),
 }
 VIEW_NAMES = ("auto", *VIEWS)
 COLOR_MODES = ("tool", "kind", "feed", "speed")
@@ -37,12 +39,12 @@ def projection(view: str) -> np.ndarray:
 
 
 def auto_view(path: Toolpath) -> str:
-    """``top`` for mills; ``front`` (the XZ plane) for a job that never moves Y but moves X and Z (a lathe)."""
+    """``top`` for mills; ``lathe`` (Z across, X up) for a job that never moves Y but moves X and Z."""
     if not len(path):
         return "top"
     points = np.vstack((path.starts[:, :3], path.ends[:, :3]))
     span = points.max(axis=0) - points.min(axis=0)
-    return "front" if span[1] < 1e-9 and span[0] > 0.0 and span[2] > 0.0 else "top"
+    return "lathe" if span[1] < 1e-9 and span[0] > 0.0 and span[2] > 0.0 else "top"
 
 
 def box_edges(lower: Sequence[float], upper: Sequence[float]) -> np.ndarray:

@@ -153,17 +153,21 @@ def test_blocks_nested_past_the_limit_are_a_syntax_error_not_a_traceback(tmp_pat
     deep.write_text("If [1]\n" * 3000 + "G0 X1\n" + "EndIf\n" * 3000)
     for command in (("parse",), ("parse", "--json")):
         result = invoke(*command, deep)
-        assert (result.exit_code, result.stdout) == (65, "")
+        assert result.exit_code == 65
         assert result.stderr.startswith(f"{deep}:51:1: error: blocks nested more than 50 deep")
+    assert invoke("parse", deep).stdout == ""
+    assert json.loads(result.stdout)["error"]["kind"] == "syntax"
 
 
-def test_ctrl_c_aborts_with_exit_1(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_ctrl_c_outside_a_run_exits_130(job: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     def interrupted(*_args: object) -> None:
         raise KeyboardInterrupt
 
     monkeypatch.setattr(edingcnc_lang.runner, "run_file", interrupted)
     result = invoke("run", job)
-    assert (result.exit_code, result.stdout, result.stderr) == (1, "", "\nAborted!\n")
+    assert (result.exit_code, result.stdout, result.stderr) == (130, "", "\nerror: interrupted (Ctrl-C)\n")
+    result = invoke("run", "--json", job)
+    assert result.exit_code == 130 and json.loads(result.stdout)["error"]["kind"] == "interrupted"
 
 
 def test_a_closed_pipe_ends_quietly(tmp_path: Path) -> None:
@@ -222,3 +226,17 @@ def test_an_option_without_its_value_names_the_command(job: Path) -> None:
     assert result.exit_code == 2
     assert result.stderr.startswith("usage: ecnc run [OPTIONS] JOB\necnc run: error: ")
     assert "--trace" in result.stderr
+
+
+def test_a_dash_reads_standard_input() -> None:
+    latin1 = "G0 X1 (caf\u00e9)\r\nG1 X2 F100\r\nmsg \"done\"\r\n".encode("latin-1").decode("latin-1")
+    ran = invoke("run", "--json", "-", input=latin1)
+    assert ran.exit_code == 0 and json.loads(ran.stdout)["messages"][0]["file"] == "<stdin>"
+    parsed = invoke("parse", "-", input="G0 X[1\n")
+    assert parsed.exit_code == 65 and parsed.stderr.startswith("<stdin>:1:5: error: unclosed '['")
+    linted = invoke("lint", "--no-source", "-", input="G0 G1 X1\n")
+    assert linted.exit_code == 1 and linted.stdout.startswith("<stdin>:1:4: G500 ")
+
+
+def test_a_dash_after_double_dash_is_still_standard_input() -> None:
+    assert invoke("parse", "--", "-", input="G0 X1\n").exit_code == 0

@@ -367,3 +367,14 @@ def test_pocket_example_from_a_subprocess(tmp_path: Path) -> None:
     kinds = {r[1] for r in rows}
     assert {"rapid", "linear", "arc"} <= kinds
     assert "Traceback" not in result.stderr
+
+
+def test_trace_file_column_tells_macro_rows_from_job_rows(tmp_path: Path) -> None:
+    macro = write(tmp_path, "my, macro.cnc", "Sub park\n  G0 Z5\nEndSub\n")
+    job = write(tmp_path, "job.nc", "G0 X1\nGoSub park\nG0 X2\n")
+    trace = tmp_path / "trace.csv"
+    assert ecnc(job, "--macro", macro, "--trace", trace).exit_code == 0
+    with open(trace, newline="") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0][len(TRACE_HEADER)] == "file"
+    assert [(r[0], r[len(TRACE_HEADER)]) for r in rows[1:]] == [("1", str(job)), ("2", str(macro)), ("3", str(job))]

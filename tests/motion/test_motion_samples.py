@@ -91,7 +91,7 @@ def test_trace_joints_are_the_last_sample_of_each_move(run_job, tmp_path: Path) 
     data = np.array(read_csv(samples)[1])
     for move in moves[-2:]:
         row = data[np.all(np.isclose(data[:, 1:7], move[2:8], atol=1e-12), axis=1)][-1]
-        assert list(row[7:]) == move[8:]
+        assert list(row[7:]) == move[8:14]
     arc = data[data[:, 0] > data[np.isclose(data[:, 1:4], (10, 10, 150)).all(axis=1)][-1, 0]]
     np.testing.assert_allclose(np.hypot(arc[:, 1], arc[:, 2] - 10), 10.0)   # the arc, sampled on its circle
 

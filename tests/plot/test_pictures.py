@@ -64,9 +64,11 @@ def test_the_square_is_drawn_along_its_contour_and_nowhere_else(square, tmp_path
     assert not missing, f"{len(missing)} of {len(pixels)} contour points not drawn, first {missing[:3]}"
     (left, top), (right, bottom) = picture.to_pixels([[10, 60, 0], [60, 10, 0]])
     rows, cols = np.nonzero(feed)
-    inside_axes = (cols >= picture.axes[0]) & (cols <= picture.axes[2]) & (rows >= picture.axes[1]) & (rows <= picture.axes[3])
+    a_left, a_top, a_right, a_bottom = picture.axes
+    inside_axes = (cols >= a_left) & (cols <= a_right) & (rows >= a_top) & (rows <= a_bottom)
     reach = 5  # half the line width and the ring that marks the plunge at the corner
-    outside = inside_axes & ((cols < left - reach) | (cols > right + reach) | (rows < top - reach) | (rows > bottom + reach))
+    outside = inside_axes & ((cols < left - reach) | (cols > right + reach)
+                             | (rows < top - reach) | (rows > bottom + reach))
     assert not outside.any(), f"{outside.sum()} path pixels outside the square's box"
     middle = picture.to_pixels([[35, 35, 0]])[0]
     assert not near(feed, middle, reach=5), "the inside of the square is empty"
@@ -173,3 +175,30 @@ def test_joint_plot_of_a_delta_shows_curved_carriage_paths(tmp_path: Path) -> No
     assert image.shape[0] > 300 and (image[:, :, :3] < 0.9).any()
     jx = path.samples["jx"]
     assert np.ptp(jx) > 100 and np.abs(np.diff(jx, 2)).max() > 1e-3
+
+
+def test_a_lathe_job_is_seen_in_its_turning_plane(tmp_path: Path) -> None:
+    job = write(tmp_path, "turn.nc", "G18 G21 G90\nT1 M6\nG0 X20 Z2\nG1 Z-30 F150\nG1 X25\nG0 Z2\nM30\n")
+    path = record_job(job)
+    assert views.auto_view(path) == "lathe"
+    picture = plot_toolpath(path, tmp_path / "turn.png")
+    assert picture.view == "lathe"
+    (z_right, x_low), (z_left, x_high) = picture.to_pixels([[20, 0, 2], [25, 0, -30]])
+    assert z_left < z_right and x_high < x_low  # Z runs across (towards the chuck on the left), X up
+    image = imread(picture.path)
+    feed = matches(image, views.TOOL_COLORS[0])
+    assert all(near(feed, p) for p in picture.to_pixels([[20, 0, z] for z in range(-29, 1, 3)]))
+
+
+def test_fit_machine_shows_the_travel_from_the_ini(tmp_path: Path) -> None:
+    path = record_job(ROOT / "examples/delta/job.nc", RunOptions(ini=ROOT / "examples/delta/cnc.ini"))
+    picture = plot_toolpath(path, tmp_path / "travel.png", view="top", fit="machine")
+    image = imread(picture.path)
+    limit = matches(image, "#b22222")
+    left, top, right, bottom = picture.axes
+    for corner in picture.to_pixels([[-400, -400, 0], [400, 400, 0], [-400, 400, 0], [400, -400, 0]]):
+        assert left <= corner[0] <= right and top <= corner[1] <= bottom  # the whole box is in view
+    edge = picture.to_pixels([[x, -400, 0] for x in range(-350, 351, 10)])
+    assert sum(near(limit, p, reach=1) for p in edge) > len(edge) // 2  # dash-dotted: mostly drawn
+    job_only = plot_toolpath(path, tmp_path / "job.png", view="top")
+    assert job_only.to_pixels([[-400, -400, 0]])[0][0] < job_only.axes[0]  # fitted to the job, the box is outside

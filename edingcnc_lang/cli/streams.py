@@ -1,0 +1,70 @@
+"""Standard streams a command can always write to, and failures on them reported, not raised.
+
+A program started with stdout or stderr closed (``ecnc run --json >&-``, ``2>&-``) finds
+``sys.stdout``/``sys.stderr`` set to None, where ``print`` would send text meant for stderr to
+stdout.  A closed stdout becomes a stream whose writes fail like a closed descriptor, so the
+command reports ``cannot write standard output``; a closed stderr becomes the null device (there
+is no one left to tell).
+"""
+from __future__ import annotations
+
+import errno
+import io
+import os
+import sys
+
+
+STDIN_NAME = "<stdin>"  # how messages name a file read from standard input
+
+
+class ClosedStream(io.TextIOBase):
+    """Stands for a closed standard stream: every write fails with EBADF."""
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+
+
+def make_streams_usable() -> None:
+    """Replace a closed stdout or stderr (see the module's docstring); let text stdout can't encode be escaped."""
+    if sys.stderr is None:
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - lives as long as the process
+    if sys.stdout is None:
+        sys.stdout = ClosedStream()
+    reconfigure = getattr(sys.stdout, "reconfigure", None)
+    if reconfigure is not None:  # a source line with 'é' on an ASCII console: \xe9, not a traceback
+        reconfigure(errors="backslashreplace")
+
+
+def read_stdin() -> str:
+    """All of standard input as text, decoded as files are: UTF-8 (BOM dropped), Latin-1 line by line if not."""
+    from ..source import BOM, decode_line
+
+    buffer = getattr(sys.stdin, "buffer", None)
+    if buffer is None:  # already text (an embedding program's StringIO)
+        return sys.stdin.read() if sys.stdin else ""
+    data = buffer.read()
+    data = data[len(BOM):] if data.startswith(BOM) else data
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return "\n".join(decode_line(raw) for raw in data.split(b"\n"))
+
+
+def flush_quietly() -> None:
+    """Flush stdout and stderr at the very end, when a failure can no longer be reported."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError, AttributeError):  # a reader that went away, a full disk
+            pass
+
+
+def quiet_stdout() -> None:
+    """After a closed pipe: point stdout at the null device so nothing left in its buffer fails again."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (OSError, ValueError, io.UnsupportedOperation):  # no descriptor (a test's StringIO)
+        pass

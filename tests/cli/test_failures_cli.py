@@ -1,0 +1,117 @@
+"""How every failure ends: the JSON ``error`` object with ``--json``, Ctrl-C (exit 130 naming the
+line), and standard streams that are closed or full (a message, never a traceback)."""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+import edingcnc_lang.cli.options
+from tests.cli_runner import invoke
+
+ECNC = [sys.executable, "-m", "edingcnc_lang"]
+
+
+def write(folder: Path, name: str, text: str) -> Path:
+    path = folder / name
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize(("source", "kind", "line", "column", "code"), [
+    ("G0 X1\nG0 X[1\n", "syntax", 2, 5, 65),
+    ("G0 X1\n#1 = [2 / 0]\n", "runtime", 2, 7, 70),
+    ('G0 X1\nerrmsg "stop"\n', "errmsg", 2, None, 70),
+])
+def test_json_failures_carry_an_error_object(tmp_path: Path, source: str, kind: str, line: int,
+                                             column: int | None, code: int) -> None:
+    job = write(tmp_path, "job.nc", source)
+    result = invoke("run", "--json", job)
+    assert result.exit_code == code
+    error = json.loads(result.stdout)["error"]
+    assert (error["kind"], error["file"], error["line"], error["column"]) == (kind, str(job), line, column)
+    assert error["message"] and error["text"].startswith(f"{job}:{line}")
+
+
+def test_a_run_that_started_still_reports_its_state_with_the_error(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X4\n#1 = [2 / 0]\n")
+    doc = json.loads(invoke("run", "--json", job).stdout)
+    assert doc["position"]["x"] == 4.0 and doc["error"]["message"].startswith("division by zero")
+
+
+def test_a_configuration_error_is_a_json_error_too(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X1\n")
+    ini = write(tmp_path, "cnc.ini", "[KINEMATICS]\nkinematicsDLLName = no_such_kins.dll\n")
+    result = invoke("run", "--json", "--ini", ini, job)
+    assert result.exit_code == 70
+    assert json.loads(result.stdout)["error"]["kind"] in ("plugin", "configuration")
+
+
+def test_a_usage_error_with_json_is_a_json_error(tmp_path: Path) -> None:
+    result = invoke("run", "--json", tmp_path / "missing.nc")
+    assert result.exit_code == 2 and result.stderr.startswith("usage: ecnc run")
+    assert json.loads(result.stdout)["error"]["kind"] == "usage"
+
+
+def test_ctrl_c_in_a_run_names_the_line(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    def interrupt(kind: str, text: str, path: str, line: int) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(edingcnc_lang.cli.options, "print_message", interrupt)
+    job = write(tmp_path, "job.nc", 'G0 X1\nG0 X2\nmsg "here"\nG0 X3\n')
+    result = invoke("run", job)
+    assert (result.exit_code, result.stderr) == (130, f"{job}:3: error: interrupted (Ctrl-C)\n")
+
+
+def test_a_real_sigint_ends_a_long_run_with_130(tmp_path: Path) -> None:
+    job = write(tmp_path, "loop.nc", "#1 = 0\nWhile [1]\n  #1 = [#1 + 1]\nEndWhile\n")
+    process = subprocess.Popen([*ECNC, "run", str(job), "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    time.sleep(1.5)  # started and looping (an interrupt during start-up is exit 130 as well)
+    process.send_signal(signal.SIGINT)
+    stdout, stderr = process.communicate(timeout=60)
+    assert process.returncode == 130 and b"Traceback" not in stderr
+    assert json.loads(stdout)["error"]["kind"] == "interrupted"
+
+
+def _shell(command: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    ecnc = " ".join(ECNC)
+    return subprocess.run(["sh", "-c", command.replace("ecnc", ecnc, 1)], capture_output=True, text=True,
+                          cwd=cwd, check=False, env={**os.environ, "PYTHONPATH": str(Path.cwd())})
+
+
+def test_version_works_with_stderr_closed(tmp_path: Path) -> None:
+    result = _shell("ecnc --version 2>&-", tmp_path)
+    assert (result.returncode, result.stdout) == (0, "ecnc, version 0.1.0\n")
+
+
+def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\n")
+    result = _shell("ecnc run --json job.nc >&-", tmp_path)
+    assert result.returncode == 70
+    assert result.stderr == "error: cannot write standard output: Bad file descriptor\n"
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
+def test_a_full_stdout_is_a_write_error_not_a_traceback(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\n")
+    result = _shell("ecnc run --json job.nc > /dev/full", tmp_path)
+    assert result.returncode == 70
+    assert result.stderr == "error: cannot write standard output: No space left on device\n"
+
+
+def test_a_trace_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\n")
+    result = _shell("ecnc run job.nc --trace /dev/full", tmp_path)
+    assert result.returncode == 70 and "/dev/full" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_errors_with_stderr_closed_keep_their_exit_code(tmp_path: Path) -> None:
+    write(tmp_path, "bad.nc", "G0 X[1\n")
+    result = _shell("ecnc run bad.nc 2>&-", tmp_path)
+    assert (result.returncode, result.stdout) == (65, "")
