@@ -22,10 +22,11 @@ if TYPE_CHECKING:
 
 # The subcommands, "module:attribute" in this package (a new one is one line here).
 SUBCOMMANDS = {"list": "kins_cmd:list_kinematics", "inverse": "kins_cmd:inverse", "forward": "kins_cmd:forward",
-               "build": "kins_cmd:build_library"}
+               "build": "kins_cmd:build_library", "check": "kins_check_cmd:check",
+               "compare": "kins_check_cmd:compare", "plot": "kins_check_cmd:plot"}
 
-kins = LazyGroup("kins", lazy=SUBCOMMANDS, short_help="List, evaluate and build kinematics plug-ins.",
-                 help="List, evaluate and build kinematics plug-ins.")
+kins = LazyGroup("kins", lazy=SUBCOMMANDS, short_help="List, evaluate, build and prove kinematics plug-ins.",
+                 help="List, evaluate, build and prove kinematics plug-ins.")
 
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:

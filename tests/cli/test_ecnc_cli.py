@@ -15,7 +15,7 @@ import edingcnc_lang.runner
 from tests.cli_runner import invoke
 
 COMMANDS = [[], ["run"], ["parse"], ["lint"], ["kins"], ["kins", "list"], ["kins", "inverse"], ["kins", "forward"],
-            ["kins", "build"]]
+            ["kins", "build"], ["kins", "check"], ["kins", "compare"], ["kins", "plot"]]
 
 
 @pytest.fixture
@@ -39,7 +39,8 @@ def test_help_on_every_level(command: list[str], flag: str) -> None:
 
 
 @pytest.mark.parametrize(("command", "names"), [([], ["kins", "lint", "parse", "run"]),
-                                                (["kins"], ["list", "inverse", "forward", "build"])])
+                                                (["kins"], ["list", "inverse", "forward", "build", "check",
+                                                            "compare", "plot"])])
 def test_a_group_alone_prints_its_help_as_a_usage_error(command: list[str], names: list[str]) -> None:
     result = invoke(*command)
     assert result.exit_code == 2 and result.stdout == ""

@@ -201,10 +201,12 @@ def _bisect(kins: Kinematics, a: np.ndarray, b: np.ndarray, delta: float) -> Fin
         return None
     joint = int(change.argmax())
     names = ("jX", "jY", "jZ", "jA", "jB", "jC")
-    turn = next((t for t in TURNS if abs(size / t - round(size / t)) < 0.01 and round(size / t) >= 1), None)
+    # one or two whole turns, closely: 213.6 degrees is not "34 turns of 2 pi"
+    turn = next((t for t in TURNS if round(size / t) in (1, 2) and abs(size / t - round(size / t)) < 0.002), None)
     gap = float(np.linalg.norm(b - a))
     if turn is not None:
-        message = (f"joint {names[joint]} wraps by {size:.6g} ({round(size / turn)} turn) between two poses "
+        turns = round(size / turn)
+        message = (f"joint {names[joint]} wraps by {size:.6g} ({turns} turn{'s' * (turns > 1)}) between two poses "
                    f"{gap:.2g} apart: keep the angle continuous (unwrap it) inside the workspace")
         code = "K202"
     else:
