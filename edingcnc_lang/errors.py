@@ -58,6 +58,16 @@ class EcncError(Exception):
                 "line": where.line or None, "column": where.col or None, "text": self.format()}
 
 
+class UnreadableFile(EcncError):
+    """An input file that cannot be read (missing, a folder, no permission): a usage error."""
+
+    exit_code = EXIT_USAGE
+
+    @classmethod
+    def of(cls, path: object, exc: OSError) -> "UnreadableFile":
+        return cls(f"cannot read: {exc.strerror or exc}", Location(str(path)))
+
+
 class ConfigError(EcncError):
     """A bad value in cnc.ini (location names the ini file and line)."""
 

@@ -40,6 +40,11 @@ _BRACKET = re.compile(r"[\[\]]")
 _DIGITS = re.compile(r"\d+")
 _NOT_CODE = re.compile(r'"[^"\n]*"|\([^)\n]*\)|;.*')
 
+# Statements, loop turns and canned-cycle holes and pecks one run may execute unless told
+# otherwise (--max-steps, RunOptions.max_steps): far more than any real job (a million-line job
+# is a million steps), and a runaway While [1] stops in a minute or two with a clear error.
+DEFAULT_MAX_STEPS = 100_000_000
+
 Problem = tuple[str, str, int]  # code, message, column
 
 

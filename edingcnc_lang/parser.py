@@ -27,6 +27,7 @@ from .dialogs import SYNTAX_CODES, dialog_fields
 from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
 from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, line_problem
 from .markers import Close, LineResult, Open
+from .prose import PROSE_MESSAGE, looks_like_prose
 from .source import iter_file_lines, iter_text_lines
 from .tree_builder import Builder as _Builder, LineError as _LineError, make_block as _make_block
 
@@ -203,10 +204,26 @@ def _explain(text: str, exc: UnexpectedInput) -> _LineError:
             fragment = text[start:end]
             return _LineError("E105", f"expression needs brackets: {fragment} (write "
                               f"{fragment[0]}[{fragment[1:].strip()}])", start + 1)
+    if looks_like_prose(text):
+        return _LineError("F603", PROSE_MESSAGE, len(text) - len(text.lstrip()) + 1)
+    glued = col > 1 and text[col - 2].isalpha()
+    if ch.isalpha() and glued:  # 'arameter': the P was taken as a word letter
+        start = len(text[:col - 1].rstrip(_LETTERS))
+        name = _NAME_AT.match(text, start).group()  # type: ignore[union-attr]
+        return _LineError("E100", f"'{name}' is neither a word (a letter and a value, like X10) nor a keyword; "
+                          "a note must be a comment: start it with ';'", start + 1)
+    lone = _LONE_LETTER.search(text[:col - 1].rstrip())
+    if ch.isalpha() and lone:  # G1 X30 Y O30: the Y has no value
+        return _LineError("E108", f"word '{lone.group(1).upper()}' needs a value", lone.start(1) + 1)
     if isinstance(exc, UnexpectedCharacters):
         return _LineError("E100", f"unexpected character '{ch}'", col)
     token = str(exc.token) if isinstance(exc, UnexpectedToken) else ch
     return _LineError("E100", f"unexpected '{token}'", col)
+
+
+_LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+_LONE_LETTER = re.compile(r"(?:^|[\s\d.\]])([A-Za-z])$")  # a word letter with nothing after it
+_NAME_AT = re.compile(r"[A-Za-z0-9_]+")
 
 
 # --------------------------------------------------------------------------- one line

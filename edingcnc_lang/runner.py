@@ -25,6 +25,7 @@ from .kinematics.loader import load_kinematics
 from .motion import MotionStage, MoveSink
 from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
 from .diagnostics import Diagnostic
+from .limits import DEFAULT_MAX_STEPS
 from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
 from .source import iter_text_lines
 from .stages import STAGES, Pipeline
@@ -77,7 +78,7 @@ class RunOptions:
     macro: Path | None = None
     user_macro: Path | None = None
     host: Host = field(default_factory=Host)
-    max_steps: int | None = None
+    max_steps: int | None = DEFAULT_MAX_STEPS  # None: no budget at all
     trace: Path | None = None
     samples: Path | None = None
     log_dir: Path | None = None

@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 from collections.abc import Iterator
 
+from .errors import UnreadableFile
 from .limits import MAX_LINE_LENGTH
 
 BOM = b"\xef\xbb\xbf"
@@ -32,11 +33,18 @@ CHUNK = 1 << 20  # bytes read at a time
 def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
     """Yield the lines of a file without their line ends (LF, with any CRs before it).
 
+    A file that cannot be opened raises UnreadableFile (an EcncError naming it), when the first
+    line is asked for.
+
     The file is read in blocks of about a megabyte and each block is decoded at once;
     only a block that is not valid UTF-8 is decoded line by line.  A line longer than
     LONG_LINE_BYTES is cut there (the parser refuses it), so memory stays bounded.
     """
-    with open(path, "rb") as handle:
+    try:
+        handle = open(path, "rb")
+    except OSError as exc:
+        raise UnreadableFile.of(os.fspath(path), exc) from None
+    with handle:
         head = handle.read(len(BOM))
         pending = b"" if head == BOM else head
         skipping = False  # inside the rest of an over-long line

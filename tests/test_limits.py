@@ -90,3 +90,4 @@ def test_the_limits_leave_long_real_lines_alone(tmp_path: Path) -> None:
     plain = "G1 " + " ".join(f"X{i}.125" for i in range(3000))  # 30,000 characters of plain words
     assert len(plain) < MAX_LINE_LENGTH
     parse_text(plain + "\n" + "#1 = [[#2 + 1] * [#3 - 2]] / SQRT[#4 + 16] ; " + "-" * 500 + "\n")
+

@@ -58,10 +58,17 @@ def _pose(values: Sequence[float], names: Sequence[str]) -> Pose:
     return (x, y, z, a, b, c)
 
 
-def _print_pose(values: Pose, names: Sequence[str]) -> None:
-    """JSON with repr-exact floats (json uses float.__repr__)."""
+def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str) -> None:
+    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity is the plug-in's error."""
     import json
+    import math
 
+    from ..errors import PluginError
+
+    if not all(math.isfinite(v) for v in values):
+        shown = " ".join(f"{n}={v}" for n, v in zip(names, values))
+        raise PluginError(f"kinematics plug-in {plugin!r}: {call} returned a value that is not a finite number "
+                          f"({shown}); a plug-in must raise KinematicsDomainError for a pose out of reach")
     print(json.dumps(dict(zip(names, values))))
 
 
@@ -99,7 +106,7 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
-    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS)
+    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse")
     return EXIT_OK
 
 
@@ -108,7 +115,7 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
-    _print_pose(_switched_on(name, ini).forward(joints), AXES)
+    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward")
     return EXIT_OK
 
 

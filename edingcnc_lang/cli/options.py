@@ -79,6 +79,7 @@ class MachineOptions:
         With ``show_messages`` the job's ``msg``/``warnmsg``/``errmsg`` print on stderr as they happen.
         """
         from ..host import Host, scripted_dialogs
+        from ..limits import DEFAULT_MAX_STEPS
         from ..runner import RunOptions
 
         probe = None
@@ -93,9 +94,9 @@ class MachineOptions:
         message = print_message if show_messages else None
         return RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro),
                           host=Host(dialog=scripted_dialogs(list(self.answers)), message=message, probe=probe),
-                          max_steps=self.max_steps, log_dir=path(self.log_dir), allow_exec=self.allow_exec,
-                          simulation=not self.no_simulation, block_delete=self.block_delete,
-                          strict=self.strict, on_warning=print_warning, **extra)
+                          max_steps=self.max_steps or DEFAULT_MAX_STEPS, log_dir=path(self.log_dir),
+                          allow_exec=self.allow_exec, simulation=not self.no_simulation,
+                          block_delete=self.block_delete, strict=self.strict, on_warning=print_warning, **extra)
 
 
 def print_message(kind: str, text: str, path: str, line: int) -> None:
@@ -115,7 +116,8 @@ _MACHINE_OPTIONS = (
     click.option("--answer", "answers", metavar="VALUE", type=ANSWER, multiple=True,
                  help="Answer for the next dlgmsg: ok, cancel or ok:#N=V,#M=W (repeatable)."),
     click.option("--max-steps", metavar="N", type=POSITIVE_INT,
-                 help="Stop with an error after this many statements (at least 1)."),
+                 help="Stop with an error after this many statements, loop turns and drilled holes "
+                      "(default 100,000,000)."),
     click.option("--log-dir", metavar="DIRECTORY", type=EXISTING_FOLDER,
                  help="Folder for logfile/logmsg (default: the job's)."),
     click.option("--allow-exec", is_flag=True, help="Let Exec start external programs."),

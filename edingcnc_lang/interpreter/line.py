@@ -72,12 +72,21 @@ class LineWords(MachineState):
         self._execute_line(words, g_codes, m_codes, span)
 
     def _user_m_sub(self, key: int) -> str | None:
-        """The sub overriding M<key>, unless we are inside it (then the built-in runs)."""
+        """The sub overriding M<key>, unless we are inside it (then the built-in runs).
+
+        An M code with no built-in (M100, ...) inside its own sub, directly or through GoSub, is an
+        error: there is nothing to run instead, and running nothing would hide the mistake.
+        """
         if key % 10:
             return None
         name = f"m{key // 10}"
-        if name in self.subs and all(frame.name != name for frame in self.stack):
+        if name not in self.subs:
+            return None
+        if all(frame.name != name for frame in self.stack):
             return name
+        if key not in t.M_GROUPS:
+            raise self.fail(f"M{key // 10} inside Sub {name}, which is already running: M{key // 10} has no "
+                            f"built-in action to run instead; write GoSub {name} if the recursion is meant")
         return None
 
     def _call_m_sub(self, key: int, words: dict[str, float], g_codes: Mapping[str, int],

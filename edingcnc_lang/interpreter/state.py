@@ -192,8 +192,9 @@ class MachineState:
         """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""
         self.steps += steps
         if self.max_steps is not None and self.steps > self.max_steps:
-            raise self.fail(f"step budget of {self.max_steps} steps exhausted (an endless loop?); "
-                            "raise it with --max-steps", span)
+            raise self.fail(f"step budget of {self.max_steps:,} steps exhausted (an endless loop?): statements, "
+                            "loop turns and drilled holes count; raise it with --max-steps N "
+                            "(RunOptions.max_steps in Python)", span)
 
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None) -> None:
         start = tuple(self.pos)

@@ -8,15 +8,9 @@ from types import MappingProxyType
 
 from .. import nodes as n
 from ..diagnostics import Diagnostic
-from ..errors import EXIT_USAGE, EcncError, Location
+from ..errors import UnreadableFile
 from ..parser import StatementReader
 from ..source import iter_file_lines, iter_text_lines
-
-
-class UnreadableFile(EcncError):
-    """A path given to lint that cannot be read (a usage error, like a missing file)."""
-
-    exit_code = EXIT_USAGE
 
 
 @dataclass(frozen=True, eq=False)  # one object per file: compared and hashed by identity
@@ -42,7 +36,7 @@ def load_source(path: str | os.PathLike[str], is_macro: bool, text: str | None =
     try:
         lines = tuple(iter_file_lines(path) if text is None else iter_text_lines(text))
     except OSError as exc:
-        raise UnreadableFile(f"cannot read: {exc.strerror or exc}", Location(shown)) from None
+        raise UnreadableFile.of(shown, exc) from None
     reader = StatementReader(lines, shown)
     body = tuple(reader)
     subs: dict[str, n.Sub] = {}

@@ -1,7 +1,6 @@
 """F rules (whole lines and files) and the parser's own syntax and structure findings."""
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from ..codes import CODES
@@ -14,29 +13,10 @@ PARSER_CODES = tuple(c for c in CODES if c.startswith("E") or c in
                      ("S200", "S201", "S202", "S203", "S204", "S205", "S206"))
 WARN_LENGTH, MAX_LENGTH = 256, 1055
 
-# Three or more plain words (letters, maybe ending in punctuation) that do not start with a keyword.
-_PROSE = re.compile(r"^\s*[A-Za-z][A-Za-z']*[,.:!?]?(?:\s+[A-Za-z][A-Za-z'-]*[,.:!?]?){2,}\s*$")
-_KEYWORDS = frozenset({"sub", "endsub", "gosub", "if", "else", "endif", "while", "endwhile", "msg",
-                       "warnmsg", "errmsg", "logmsg", "dlgmsg", "logfile", "home", "hometandem",
-                       "kin", "exec", "modbus"})
-
-
-def looks_like_prose(text: str) -> bool:
-    """A line of ordinary words, such as a note someone forgot to comment out."""
-    code = text.split(";", 1)[0]
-    return bool(_PROSE.match(code)) and code.split()[0].lower() not in _KEYWORDS
-
-
 @rule(*PARSER_CODES, "F603")
 def syntax(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    """The parser's findings; an 'unexpected word' on a line of prose gets a plainer message."""
-    for diag in file.parse_errors:
-        if diag.code == "E100" and looks_like_prose(file.line(diag.line)):
-            yield at_line("F603", "this line is plain text, not a statement: make it a comment "
-                          "by starting it with ';' (or wrap it in '( )')", file, diag.line,
-                          len(file.line(diag.line)) - len(file.line(diag.line).lstrip()) + 1)
-        else:
-            yield diag
+    """The parser's findings (a line of prose among them is F603)."""
+    yield from file.parse_errors
 
 
 @rule("F600")

@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import EcncError
+from ..errors import EcncError, Location
 from ..runner import RunOptions
 from .toolpath import Toolpath, record_job
 
@@ -72,7 +72,7 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     if lines is not None:
         path = path.select_lines(*lines)
         if not len(path):
-            raise EcncError(f"{job}: lines {lines[0]} to {lines[1]} make no moves")
+            raise EcncError(f"lines {lines[0]} to {lines[1]} make no moves", Location(str(job)))
     if view == "auto":
         view = "front" if auto_view(path) == "lathe" else "iso"
     write_view(path, target, max_moves or MAX_MOVES, view=view)

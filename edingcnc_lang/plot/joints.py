@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import EcncError
+from ..errors import EcncError, Location
 from . import views as v
 from .render import DPI, picture_format, require_matplotlib
 from .toolpath import Toolpath
@@ -34,7 +34,7 @@ def plot_joints(path: Toolpath, out: Path) -> Path:
     require_matplotlib()
     fmt = picture_format(out)
     if not path.samples or not len(path.samples.get("t", ())):
-        raise EcncError(f"{path.job}: the job made no moves, so there are no joint positions to plot")
+        raise EcncError("the job made no moves, so there are no joint positions to plot", Location(path.job))
     from matplotlib.figure import Figure
 
     joints = moving_joints(path)
@@ -49,7 +49,7 @@ def plot_joints(path: Toolpath, out: Path) -> Path:
         ax.set_ylabel(f"joint {joint} ({name})\n{unit}", fontsize=8)
         ax.grid(True, color="#e0e0e0", lw=0.5)
     axes[-1].set_xlabel("time (s)")
-    title = f"{v.title_text(path)}\njoint positions over time, kinematics {path.kinematics}"
+    title = f"{v.title_text(path)}\njoint positions over time"
     fig.suptitle(title, x=0.01, ha="left", fontsize=11)
     try:
         fig.savefig(out, format=fmt, dpi=DPI)

@@ -171,11 +171,17 @@
   let current = count - 1;
 
   function tracePolyline(i, w, h) {
-    let [x, y] = toScreen(projected[2 * first[i]], projected[2 * first[i] + 1], w, h);
+    const [x0, y0] = toScreen(projected[2 * first[i]], projected[2 * first[i] + 1], w, h);
+    let x = x0, y = y0, extent = 0;
     ctx.moveTo(x, y);
     for (let p = first[i] + 1; p <= last[i]; p++) {
       [x, y] = toScreen(projected[2 * p], projected[2 * p + 1], w, h);
       ctx.lineTo(x, y);
+      extent = Math.max(extent, Math.abs(x - x0), Math.abs(y - y0));
+    }
+    if (extent < 0.5 && !isRapid(i)) {  // a feed straight at the viewer (a drilled hole from the top): a ring
+      ctx.moveTo(x0 + 3, y0);
+      ctx.arc(x0, y0, 3, 0, 2 * Math.PI);
     }
   }
 
@@ -300,7 +306,7 @@
     ["X", "Y", "Z"].forEach((a, k) => row(a, fmt(points[3 * p + k])));
     if (abc) ["A", "B", "C"].forEach((a, k) => row(a, fmt(abc[3 * i + k])));
     if (joints) {
-      D.jointNames.forEach((name, k) => { if (k < 6) row("joint " + k + " (" + name + ")", fmt(joints[6 * i + k])); });
+      D.jointRows.forEach(([k, name]) => row("joint " + k + " (" + name + ")", fmt(joints[6 * i + k])));
     }
   }
 

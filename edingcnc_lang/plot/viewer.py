@@ -96,7 +96,7 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "feed": _b64(path.feeds[keep], "f4"), "merged": _b64(thinned.count, "i4"),
         "abc": _b64(abc, "f4") if np.any(abc) else None,
         "joints": _b64(path.joints[keep], "f4") if path.kinematics.lower() not in ("trivial", "") else None,
-        "jointNames": list(path.joint_names), "kinematics": path.kinematics,
+        "jointRows": _moving_joints(path), "kinematics": path.kinematics,
         "workZero": list(path.work_zero),
         "part": [bounds[0].tolist(), bounds[1].tolist()] if bounds is not None else None,
         "limits": [path.limits[0].tolist(), path.limits[1].tolist()] if path.limits is not None else None,
@@ -106,6 +106,14 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "seconds": path.seconds,
     }
     return data
+
+
+def _moving_joints(path: Toolpath) -> list[tuple[int, str]]:
+    """(index, name) of the joints the readout shows: those that move in the job."""
+    if not len(path):
+        return []
+    moving = np.ptp(path.joints, axis=0) > 1e-9
+    return [(k, name) for k, name in enumerate(path.joint_names[:6]) if moving[k]]
 
 
 def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> str:

@@ -99,6 +99,8 @@ def title_text(path: Toolpath) -> str:
     parts = [name, f"{len(path):,} moves"]
     if tools:
         parts.append("tools " + ", ".join(f"T{t}" for t in tools))
+    if path.kinematics.lower() not in ("", "trivial"):
+        parts.append(f"kinematics {path.kinematics}")
     if path.seconds is not None:
         parts.append(f"about {duration_text(path.seconds)}")
     text = "  \u2014  ".join(parts)

@@ -86,3 +86,10 @@ def test_a_crashing_compiled_plugin_does_not_take_ecnc_down(tmp_path: Path) -> N
     assert done.returncode == 1, done.stderr
     assert "K602 compiled: KinematicsInverse crashed the process (SIGSEGV)" in done.stdout
     assert "at X100 Y100" in done.stdout
+
+
+def test_kins_inverse_refuses_nan_from_a_plugin() -> None:
+    result = invoke("kins", "inverse", BROKEN / "nan_corner.py", "100", "100", "0")
+    assert result.exit_code == 70 and result.stdout == ""
+    assert "inverse returned a value that is not a finite number (jx=100.0 jy=100.0 jz=nan" in result.stderr
+    assert "KinematicsDomainError" in result.stderr

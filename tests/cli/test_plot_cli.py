@@ -81,7 +81,7 @@ def test_view_writes_one_html_file(tmp_path: Path) -> None:
 def test_view_lines_that_make_no_moves_is_an_error(tmp_path: Path) -> None:
     job = write(tmp_path, "square.nc", SQUARE)
     result = invoke("view", job, "--lines", "1:2")
-    assert result.exit_code == 70 and "make no moves" in result.stderr
+    assert result.exit_code == 70 and f"{job}: error: lines 1 to 2 make no moves" in result.stderr
 
 
 @pytest.mark.skipif(shutil.which("ecnc") is None, reason="the ecnc script is not installed")

@@ -79,3 +79,4 @@ def test_a_kinematic_job_shows_its_joints(tmp_path: Path) -> None:
     log = chromium(page, tmp_path / "profile", "--dump-dom")
     assert console(log) == [], console(log)
     assert "joint 2 (Z)" in log and 'data-errors="0"' in log
+    assert "joint 3 (A)" not in log  # only the joints that move are read out

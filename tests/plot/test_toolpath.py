@@ -75,3 +75,9 @@ def test_machine_limits_come_from_the_ini_and_not_from_the_wide_defaults() -> No
     assert path.limits is not None and path.kinematics.startswith("deltakins")
     assert path.limits[0].tolist() == [-400.0, -400.0, 0.0] and path.limits[1].tolist() == [400.0, 400.0, 200.0]
     assert record_job(ROOT / "examples/pocket.nc").limits is None  # no ini: nothing to draw
+
+
+def test_a_job_without_moves_gives_an_empty_path(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "empty.nc", "(nothing to cut)\nM30\n"))
+    assert len(path) == 0 and path.starts.shape == (0, 6) and path.bounds() is None
+    assert list(path.polylines()) == []

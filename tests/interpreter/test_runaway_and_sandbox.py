@@ -1,0 +1,82 @@
+"""Issue 17: the log-file sandbox (no symlink, hard link, FIFO or NUL escapes it), the default run
+budget, and an M-code sub reaching itself again."""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang import limits
+from edingcnc_lang.errors import MachineError
+from edingcnc_lang.runner import RunOptions, run_string
+from tests.cli_runner import invoke
+
+
+def error_of(source: str, **options: object) -> MachineError:
+    with pytest.raises(MachineError) as caught:
+        run_string(source, RunOptions(**options), path="job.nc")  # type: ignore[arg-type]
+    return caught.value
+
+
+@pytest.fixture()
+def logs(tmp_path: Path) -> Path:
+    folder = tmp_path / "logs"
+    folder.mkdir()
+    (tmp_path / "outside.txt").write_text("precious\n")
+    return folder
+
+
+def test_a_symlink_in_the_log_folder_is_refused_and_its_target_kept(logs: Path) -> None:
+    (logs / "a.txt").symlink_to(logs.parent / "outside.txt")
+    for source, line in (('logfile "a.txt" 0\n', 1), ('logfile "a.txt"\nlogmsg "x"\n', 2)):
+        err = error_of(source, log_dir=logs)
+        assert err.format().startswith(f"job.nc:{line}:1: error: cannot write the log file {logs / 'a.txt'}: "
+                                       "it is a symbolic link")
+    assert (logs.parent / "outside.txt").read_text() == "precious\n"
+
+
+def test_a_hard_link_in_the_log_folder_is_refused_and_left_whole(logs: Path) -> None:
+    os.link(logs.parent / "outside.txt", logs / "h.txt")
+    assert "not a plain file of its own" in error_of('logfile "h.txt" 0\n', log_dir=logs).message
+    assert (logs.parent / "outside.txt").read_text() == "precious\n"
+
+
+def test_a_fifo_in_the_log_folder_is_an_error_not_a_hang(logs: Path) -> None:
+    os.mkfifo(logs / "f.txt")
+    assert error_of('logfile "f.txt"\nlogmsg "x"\n', log_dir=logs).location.line == 2  # type: ignore[union-attr]
+
+
+@pytest.mark.parametrize(("name", "message"), [
+    ("a\0b.txt", "logfile 'a\\x00b.txt': a file name cannot hold control characters"),
+    ("a" * 300 + ".txt", "File name too long"),
+])
+def test_bad_log_names_are_errors_at_the_jobs_line(logs: Path, name: str, message: str) -> None:
+    err = error_of(f'G0 X1\nlogfile "{name}" 0\n', log_dir=logs)
+    assert (err.location.line, message in err.message) == (2, True)  # type: ignore[union-attr]
+
+
+def test_runs_have_a_default_budget(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    assert RunOptions().max_steps == limits.DEFAULT_MAX_STEPS == 100_000_000
+    monkeypatch.setattr(limits, "DEFAULT_MAX_STEPS", 5000)  # what the CLI reads when --max-steps is absent
+    for source in ("While [1]\nEndWhile\n", "G0 Z5\nG81 X0 Y0 Z-1 R1 F100 L1000000000\n"):
+        job = tmp_path / "job.nc"
+        job.write_text(source)
+        result = invoke("run", job)
+        assert result.exit_code == 70
+        assert "step budget of 5,000 steps exhausted" in result.stderr
+        assert "raise it with --max-steps N" in result.stderr
+
+
+def test_an_m_code_without_a_built_in_reaching_its_own_sub_again_is_an_error() -> None:
+    source = "M101\nM30\nSub m101\n  GoSub helper\nEndSub\nSub helper\n  M101\nEndSub\n"
+    err = error_of(source)
+    assert err.format().splitlines() == [
+        "job.nc:7: error: M101 inside Sub m101, which is already running: M101 has no built-in action to "
+        "run instead; write GoSub m101 if the recursion is meant",
+        "  in Sub helper, called from job.nc:4", "  in Sub m101, called from job.nc:1"]
+
+
+def test_an_m_code_with_a_built_in_runs_it_inside_its_own_sub() -> None:
+    result = run_string("M3 S100\nM30\nSub m3\n  GoSub helper\nEndSub\nSub helper\n  M3\nEndSub\n")
+    assert (result.error, result.ended_by) == (None, "M30")

@@ -1,0 +1,17 @@
+"""The Python API raises EcncError subclasses (with a location and an exit code), never OSError and friends."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang import parse_file, run_file
+from edingcnc_lang.errors import EXIT_USAGE, UnreadableFile
+
+
+def test_a_missing_file_is_an_ecnc_error_in_the_api(tmp_path: Path) -> None:
+    for read in (run_file, parse_file):
+        with pytest.raises(UnreadableFile) as caught:
+            read(tmp_path / "missing.nc")
+        assert caught.value.exit_code == EXIT_USAGE
+        assert caught.value.format() == f"{tmp_path / 'missing.nc'}: error: cannot read: No such file or directory"
