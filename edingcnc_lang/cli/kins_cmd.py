@@ -15,7 +15,7 @@ import click
 from ..errors import EXIT_OK
 from .base import Argument, Command, LazyGroup, usage_error
 from .options import ini_option, json_option
-from .params import EXISTING_FILE, OUTPUT_FILE
+from .params import EXISTING_FILE, KINEMATICS_NAME, OUTPUT_FILE
 
 if TYPE_CHECKING:
     from ..kinematics.base import Kinematics, Pose
@@ -58,14 +58,15 @@ def _pose(values: Sequence[float], names: Sequence[str]) -> Pose:
     return (x, y, z, a, b, c)
 
 
-def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str) -> None:
-    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity is the plug-in's error."""
+def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str, given: Pose) -> None:
+    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity out of finite input is the
+    plug-in's error."""
     import json
     import math
 
     from ..errors import PluginError
 
-    if not all(math.isfinite(v) for v in values):
+    if all(math.isfinite(v) for v in given) and not all(math.isfinite(v) for v in values):
         shown = " ".join(f"{n}={v}" for n, v in zip(names, values))
         raise PluginError(f"kinematics plug-in {plugin!r}: {call} returned a value that is not a finite number "
                           f"({shown}); a plug-in must raise KinematicsDomainError for a pose out of reach")
@@ -94,7 +95,7 @@ def _conversion(name: str, summary: str, values: str) -> click.Command:
     def decorate(func: click.decorators.FC) -> click.Command:
         func = click.argument("values", metavar=values, nargs=-1, required=True, type=float, cls=Argument)(func)
         func = ini_option("cnc.ini whose [KINEMATICS] section configures the plug-in.")(func)
-        func = click.argument("name", metavar="NAME")(func)
+        func = click.argument("name", metavar="NAME", type=KINEMATICS_NAME)(func)
         return click.command(name, cls=Command, short_help=summary,
                              help=f"{summary}\n\nNAME is a registered name (see list) or the path of a .so or .py "
                                   "plug-in.")(func)
@@ -106,7 +107,7 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
-    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse")
+    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse", pos)
     return EXIT_OK
 
 
@@ -115,7 +116,7 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
-    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward")
+    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward", joints)
     return EXIT_OK
 
 

@@ -9,7 +9,7 @@ from ..errors import EXIT_FINDINGS, EXIT_OK
 from .base import Command, usage_error
 from .common import whole_trees
 from .options import ini_option, macro_options
-from .params import INPUT_PATH, LINT_CODES, STDIN
+from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN
 from .streams import STDIN_NAME, read_stdin
 
 if TYPE_CHECKING:
@@ -36,9 +36,10 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
                    "ecnc.toml or pyproject.toml, else the --ini's version line, else 5).")
 @click.option("--no-source", is_flag=True, help="Text format: leave out the source line and caret.")
 @click.option("--list-codes", "show_codes", is_flag=True, help="Print every code with its severity and summary.")
+@click.option("--explain", metavar="CODE", type=LINT_CODE, help="Print the long explanation of CODE (as ecnc help CODE).")
 def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini: str | None, fmt: str,
          select: tuple[str, ...], ignore: tuple[str, ...], target: str | None, no_source: bool,
-         show_codes: bool) -> int:
+         show_codes: bool, explain: str | None) -> int:
     """Check PATHs (files, or folders of *.cnc *.nc *.ngc *.tap *.txt); exit 1 if anything is found.
 
     PATH - reads a job from standard input (its macro files: --macro, --user-macro).
@@ -48,6 +49,11 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
 
     if show_codes:
         print(list_codes())
+        return EXIT_OK
+    if explain:
+        from .help_cmd import explain_or_fail
+
+        print(explain_or_fail(explain))
         return EXIT_OK
     if not paths and not ini:
         raise usage_error("give at least one file or folder to lint")

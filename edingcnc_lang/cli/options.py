@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INPUT_FILE, POSITIVE_INT
+from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
     from ..diagnostics import Diagnostic
@@ -30,7 +30,7 @@ MESSAGE_LABEL = {"msg": "msg", "warn": "warning", "error": "error", "log": "log"
 
 
 def ini_option(help: str = "Machine configuration (cnc.ini).") -> Callable[[F], F]:  # noqa: A002 - click's name
-    return click.option("--ini", metavar="FILE", type=EXISTING_FILE, help=help)
+    return click.option("--ini", metavar="FILE", type=INI_FILE, help=help)
 
 
 def macro_options(macro_help: str = "Macro file (default: the ini's, else the packaged one).",

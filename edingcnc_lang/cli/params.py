@@ -64,9 +64,18 @@ class ExistingPath(_PathType):
 
 
 class ExistingFile(_PathType):
-    """An input file that must exist, and not be a folder."""
+    """An input file that must exist, and not be a folder; ``suffix`` limits what completion offers."""
 
     name = "file"
+
+    def __init__(self, stdin: bool = False, suffix: str | None = None) -> None:
+        super().__init__(stdin)
+        self.suffix = suffix
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        if self.suffix is None:
+            return super().shell_complete(ctx, param, incomplete)
+        return [CompletionItem(path) for path in _paths_like(incomplete, self.suffix)]
 
     def check(self, value: str) -> str | None:
         if not os.path.exists(value):
@@ -74,6 +83,26 @@ class ExistingFile(_PathType):
         if os.path.isdir(value):
             return f"{value!r} is a folder, not a file"
         return _unreadable(value)
+
+
+def _paths_like(incomplete: str, suffix: str) -> list[str]:
+    """Folders (ending in /) and ``*suffix`` files (any case) whose path starts with ``incomplete``."""
+    folder, _, start = incomplete.rpartition("/")
+    where = folder or "."
+    try:
+        names = sorted(os.listdir(where if folder or not incomplete.startswith("/") else "/"))
+    except OSError:
+        return []
+    found = []
+    for name in names:
+        if not name.startswith(start) or (name.startswith(".") and not start.startswith(".")):
+            continue
+        path = f"{folder}/{name}" if folder else name
+        if os.path.isdir(path):
+            found.append(path + "/")
+        elif name.lower().endswith(suffix):
+            found.append(path)
+    return found
 
 
 class ExistingFolder(_PathType):
@@ -117,10 +146,20 @@ class PositiveInt(click.ParamType):
         return number
 
 
+def _codes_starting(text: str) -> list[str]:
+    from ..codes import CODES
+
+    return [code for code in CODES if code.startswith(text.upper())]
+
+
 class LintCodes(click.ParamType):
     """``E,S208,G5``: lint codes or prefixes of codes, checked against the registry."""
 
     name = "codes"
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        done, _, last = incomplete.rpartition(",")
+        return [CompletionItem(f"{done},{code}" if done else code) for code in _codes_starting(last)]
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[str, ...]:
         from ..lint import UnknownCode, parse_codes
@@ -131,6 +170,41 @@ class LintCodes(click.ParamType):
             return parse_codes(value)
         except UnknownCode as err:
             self.fail(f"no code starts with {err} (see --list-codes)", param, ctx)
+
+
+class LintCode(click.ParamType):
+    """One lint code (``--explain V302``); checked by the command, which says where to look."""
+
+    name = "code"
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        return [CompletionItem(code) for code in _codes_starting(incomplete)]
+
+
+class HelpTopic(LintCode):
+    """A word of ``ecnc help``: a command (of the group reached so far) or a lint code."""
+
+    name = "topic"
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        group: Any = ctx.find_root().command
+        for word in ctx.params.get(param.name or "", ()) or ():
+            group = group.get_command(ctx, word) if isinstance(group, click.Group) else None
+        commands = group.list_commands(ctx) if isinstance(group, click.Group) else []
+        found = [CompletionItem(name) for name in commands if name.startswith(incomplete)]
+        return found + (super().shell_complete(ctx, param, incomplete) if group is ctx.find_root().command else [])
+
+
+class KinematicsName(click.ParamType):
+    """A kinematics plug-in: a registered name (completed) or the path of a .so or .py file."""
+
+    name = "name"
+
+    def shell_complete(self, ctx: click.Context, param: click.Parameter, incomplete: str) -> list[CompletionItem]:
+        from ..kinematics.loader import available_kinematics
+
+        names = [CompletionItem(name) for name, _type, _version in available_kinematics() if name.startswith(incomplete)]
+        return names or [CompletionItem(incomplete, type="file")]
 
 
 class Answer(click.ParamType):
@@ -157,7 +231,11 @@ EXISTING_FILE = ExistingFile()
 INPUT_PATH = ExistingPath(stdin=True)  # a path to lint, or - for standard input
 INPUT_FILE = ExistingFile(stdin=True)  # a job or file to parse, or - for standard input
 EXISTING_FOLDER = ExistingFolder()
+INI_FILE = ExistingFile(suffix=".ini")
 OUTPUT_FILE = OutputFile()
 POSITIVE_INT = PositiveInt()
 LINT_CODES = LintCodes()
+LINT_CODE = LintCode()
+HELP_TOPIC = HelpTopic()
+KINEMATICS_NAME = KinematicsName()
 ANSWER = Answer()

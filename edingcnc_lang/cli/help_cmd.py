@@ -1,0 +1,40 @@
+"""``ecnc help [CODE | COMMAND...]``: the long explanation of a lint code, or a command's help."""
+from __future__ import annotations
+
+import click
+
+from ..errors import EXIT_OK
+from .base import Command, usage_error
+from .params import HELP_TOPIC
+
+
+@click.command("help", cls=Command, short_help="Explain a lint code (ecnc help V302) or show a command's help.")
+@click.argument("topic", metavar="[CODE | COMMAND...]", nargs=-1, type=HELP_TOPIC)
+@click.pass_context
+def help_command(ctx: click.Context, topic: tuple[str, ...]) -> int:
+    """Print the long explanation of lint CODE (as ecnc lint --explain CODE), or the help of
+    COMMAND (ecnc help kins inverse); alone, the help of ecnc."""
+    context = ctx.find_root()
+    for word in topic:
+        group = context.command
+        command = group.get_command(context, word) if isinstance(group, click.Group) else None
+        if command is None:
+            if context is ctx.find_root() and len(topic) == 1:
+                print(explain_or_fail(word))
+                return EXIT_OK
+            raise usage_error(f"no command {' '.join([*context.command_path.split()[1:], word])!r} "
+                              "(see ecnc --help)")
+        context = click.Context(command, info_name=word, parent=context)
+    print(context.get_help())
+    return EXIT_OK
+
+
+def explain_or_fail(code: str) -> str:
+    """The explanation of ``code``, or a usage error that points to the list of codes."""
+    from ..lint import UnknownCode
+    from ..lint.explain import explain
+
+    try:
+        return explain(code)
+    except UnknownCode:
+        raise usage_error(f"no command or lint code {code!r} (see ecnc --help and ecnc lint --list-codes)") from None

@@ -1,0 +1,76 @@
+"""``ecnc help CODE`` / ``lint --explain``, and shell completion (click's ``_ECNC_COMPLETE``)."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang.codes import CODES
+from tests.cli_runner import invoke
+
+ROOT = Path(__file__).resolve().parent.parent.parent
+
+
+def test_help_code_prints_the_long_explanation() -> None:
+    result = invoke("help", "v302")
+    assert result.exit_code == 0
+    assert result.stdout.startswith(f"V302 (warning): {CODES['V302'].summary}\n\n")
+    assert "computed index" in result.stdout  # the paragraph of docs/lint.md about it
+    assert invoke("lint", "--explain", "V302").stdout == result.stdout
+
+
+def test_every_registered_code_has_an_explanation() -> None:
+    texts = json.loads((ROOT / "edingcnc_lang" / "lint" / "explanations.json").read_text(encoding="utf-8"))
+    assert sorted(texts) == sorted(CODES)
+
+
+def test_the_explanations_are_those_of_the_docs() -> None:
+    sys.path.insert(0, str(ROOT / "scripts"))
+    try:
+        from regen_code_explanations import DOCS, explanations
+    finally:
+        sys.path.pop(0)
+    texts = json.loads((ROOT / "edingcnc_lang" / "lint" / "explanations.json").read_text(encoding="utf-8"))
+    assert texts == explanations(DOCS.read_text(encoding="utf-8")), "run scripts/regen_code_explanations.py"
+
+
+def test_help_command_and_unknown_topics() -> None:
+    assert invoke("help", "kins", "inverse").stdout.startswith("usage: ecnc kins inverse [OPTIONS] NAME X Y Z")
+    assert invoke("help").stdout.startswith("usage: ecnc [OPTIONS] COMMAND")
+    result = invoke("help", "Q999")
+    assert result.exit_code == 2 and "no command or lint code 'Q999'" in result.stderr
+
+
+def complete(words: str, env: dict[str, str] | None = None, cwd: Path | None = None) -> list[str]:
+    """What ``ecnc`` offers for the last of ``words`` (bash protocol: ``type,value`` lines)."""
+    parts = words.split(" ")
+    result = subprocess.run([sys.executable, "-m", "edingcnc_lang"], capture_output=True, text=True, check=True,
+                            cwd=cwd, env={**os.environ, "_ECNC_COMPLETE": "bash_complete", "COMP_WORDS": words,
+                                          "COMP_CWORD": str(len(parts) - 1), "PYTHONPATH": str(ROOT), **(env or {})})
+    return [line.split(",", 1)[1] for line in result.stdout.splitlines()]
+
+
+def test_completion_of_commands_options_codes_and_kinematics() -> None:
+    assert {"run", "lint", "parse", "kins", "help"} <= set(complete("ecnc "))
+    assert "--max-steps" in complete("ecnc run --m")
+    assert complete("ecnc lint --select E100,S20") == [f"E100,S20{i}" for i in range(10)]
+    assert {"trivial", "corexy", "rotatekins", "deltakins"} <= set(complete("ecnc kins inverse "))
+    assert "V302" in complete("ecnc help V3")
+
+
+def test_completion_of_ini_files(tmp_path: Path) -> None:
+    for name in ("cnc.ini", "OTHER.INI", "job.nc"):
+        (tmp_path / name).write_text("")
+    (tmp_path / "machines").mkdir()
+    assert complete("ecnc run job.nc --ini ", cwd=tmp_path) == ["OTHER.INI", "cnc.ini", "machines/"]
+
+
+@pytest.mark.parametrize("shell", ["bash", "zsh", "fish"])
+def test_the_completion_scripts_are_there(shell: str) -> None:
+    script = subprocess.run([sys.executable, "-m", "edingcnc_lang"], capture_output=True, text=True, check=True,
+                            env={**os.environ, "_ECNC_COMPLETE": f"{shell}_source", "PYTHONPATH": str(ROOT)}).stdout
+    assert "_ECNC_COMPLETE" in script
