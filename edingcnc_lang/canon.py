@@ -10,6 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Mapping, Protocol, Sequence
 
+from .spindle import Css
+
 Pose = tuple[float, ...]  # six values: x y z a b c (or the joints jx .. jc)
 AXES = "XYZABC"
 
@@ -29,7 +31,15 @@ class Arc:
 
 @dataclass(frozen=True, slots=True)
 class Move:
-    """One executed move; ``feed`` in mm/min (0 for rapids and homing)."""
+    """One executed move; ``feed`` in mm/min (0 for rapids and homing).
+
+    The spindle along the move: ``spindle`` is its speed in rpm at the end of the move (0 when
+    stopped); under constant surface speed (G96) ``css`` gives the speed at any X
+    (``css.rpm(x)``), and ``spindle`` is ``css.rpm(end[0])``.  ``sync`` is the path length per
+    spindle revolution (mm) of a spindle-synchronised move (G33, G33.1, the cuts of G76), 0 for
+    any other move; such a move's ``feed`` is its mean speed at the programmed spindle speed.
+    Under feed per revolution (G95) ``feed`` is likewise the mean speed over the move.
+    """
 
     kind: str  # "rapid" | "linear" | "arc" | "probe" | "home"
     path: str
@@ -38,6 +48,9 @@ class Move:
     end: Pose
     feed: float = 0.0
     arc: Arc | None = None
+    spindle: float = 0.0
+    css: Css | None = None
+    sync: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)

@@ -66,11 +66,16 @@ class JointConfig:
 
 @dataclass(frozen=True)
 class ToolConfig:
-    """One tool table entry (``[TOOL_n]``)."""
+    """One tool table entry (``[TOOL_n]``).
+
+    On a lathe ``length`` is the Z offset and ``width`` the X offset (radius) of the tool tip;
+    ``z_delta``/``x_delta`` are their wear corrections (#5900+n / #5800+n).
+    """
 
     number: int
     length: float
     diameter: float
+    width: float
     x_delta: float
     z_delta: float
     orientation: int
@@ -91,11 +96,18 @@ class TanKnifeConfig:
     rewind_turns: int
 
 
+MILLING, TURNING = 0, 1  # [SYSTEM] machineType
+
+
 @dataclass(frozen=True)
 class MachineConfig:
     """Everything the interpreter, kinematics and simulator need from ``cnc.ini``."""
 
     path: str | None
+    machine_type: int              # MILLING or TURNING
+    diameter_programming: bool     # lathe: X words and X positions are diameters
+    spindle_max_rpm: float         # 0: no limit of the machine's own
+    spindle_min_rpm: float
     initial_string: str
     g4_in_milliseconds: bool
     inch_mode: bool
@@ -121,11 +133,25 @@ class MachineConfig:
     tools: Mapping[int, ToolConfig]
     variables: Mapping[int, float]
 
+    @property
+    def lathe(self) -> bool:
+        """A turning machine (``machineType = 1``): G18, X-first homing moves, X+Z tool offsets."""
+        return self.machine_type == TURNING
+
+    @property
+    def diameter_mode(self) -> bool:
+        """X is programmed and reported as a diameter (only ever on a lathe)."""
+        return self.lathe and self.diameter_programming
+
     @classmethod
     def default(cls) -> MachineConfig:
         """The machine used without an ini: trivial kinematics, wide limits, 200 Hz, homed at 0."""
         return cls(
             path=None,
+            machine_type=MILLING,
+            diameter_programming=False,
+            spindle_max_rpm=0.0,
+            spindle_min_rpm=0.0,
             initial_string="",
             g4_in_milliseconds=False,
             inch_mode=False,
@@ -162,7 +188,15 @@ class MachineConfig:
 
 # Which ini key feeds which field, and as what type: (field, ini key, "str" | "bool" | "int" | "float").
 _Kind = str  # which IniFile.get_<kind> reads the value
+_SYSTEM_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
+    ("machine_type", "machineType", "int"),
+)
+_SPINDLE_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
+    ("spindle_max_rpm", "spindleNmax", "float"),
+    ("spindle_min_rpm", "spindleNmin", "float"),
+)
 _INTERPRETER_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
+    ("diameter_programming", "diameterProgramming", "bool"),
     ("initial_string", "initialString", "str"),
     ("g4_in_milliseconds", "g4InMilliseconds", "bool"),
     ("inch_mode", "inchModeActive", "bool"),
@@ -210,11 +244,12 @@ _CARTESIAN_FIELDS = (
     ("cartesian_max_velocity", "maxVelocity"),
     ("cartesian_max_acceleration", "maxAcceleration"),
 )
-_TOOL_DEFAULT = ToolConfig(number=0, length=0.0, diameter=0.0, x_delta=0.0, z_delta=0.0,
+_TOOL_DEFAULT = ToolConfig(number=0, length=0.0, diameter=0.0, width=0.0, x_delta=0.0, z_delta=0.0,
                            orientation=0, description="")
 _TOOL_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
     ("length", "length", "float"),
     ("diameter", "diameter", "float"),
+    ("width", "width", "float"),
     ("x_delta", "xDelta", "float"),
     ("z_delta", "zDelta", "float"),
     ("orientation", "orientation", "int"),
@@ -269,6 +304,12 @@ def _resolve_macro(ini: IniFile, key: str, folder: Path) -> Path | None:
 
 # Checks made after reading: (section, key to report at, passes?, what the value must be).
 _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
+    ("SYSTEM", "machineType", lambda c: c.machine_type in (MILLING, TURNING),
+     "must be 0 (milling) or 1 (turning)"),
+    ("SPINDLE", "spindleNmax", lambda c: c.spindle_max_rpm >= 0, "must be 0 (no limit) or a speed in rpm"),
+    ("SPINDLE", "spindleNmin", lambda c: 0 <= c.spindle_min_rpm and (
+        c.spindle_max_rpm == 0 or c.spindle_min_rpm <= c.spindle_max_rpm),
+     "must be 0 or a speed in rpm no higher than spindleNmax"),
     ("TRAJECTORY", "interpolationTime", lambda c: c.interpolation_time > 0,
      "must be greater than 0 seconds"),
     ("INTERPRETER", "tanknifeBendingAngle", lambda c: c.tanknife.bending_angle in (-90.0, 0.0, 90.0),
@@ -305,6 +346,8 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
     folder = Path(ini.path).absolute().parent
     config = MachineConfig(
         path=ini.path,
+        **_read_fields(ini, "SYSTEM", _SYSTEM_FIELDS, base),
+        **_read_fields(ini, "SPINDLE", _SPINDLE_FIELDS, base),
         **_read_fields(ini, "INTERPRETER", _INTERPRETER_FIELDS, base),
         macro_file=_resolve_macro(ini, "macroFileName", folder),
         user_macro_file=_resolve_macro(ini, "userMacroFileName", folder),

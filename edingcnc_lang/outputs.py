@@ -23,7 +23,7 @@ if TYPE_CHECKING:
 
 SIX_REPR = ",".join(["%r"] * 6)
 TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file\n"
-SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc")
+SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s")
 
 
 def _open_for_writing(path: Path) -> io.TextIOWrapper:
@@ -79,6 +79,7 @@ class SamplesWriter:
         self._npz = path.suffix.lower() == ".npz"
         self._chunks: list[np.ndarray] = []
         self._last_time = -math.inf
+        self._spindle = SpindleTracker()
         self._file = None if self._npz else _open_for_writing(path)
         if self._file is not None:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
@@ -88,7 +89,9 @@ class SamplesWriter:
             return
         import numpy as np
 
-        rows = np.column_stack([samples.t, samples.pos, samples.joints])[samples.t > self._last_time]
+        speed = _spindle_column(move, samples.pos[:, 0], self._spindle.rpm)
+        rows = np.column_stack([samples.t, samples.pos, samples.joints, speed])
+        rows = rows[samples.t > self._last_time]
         if not len(rows):
             return
         self._last_time = float(rows[-1, 0])
@@ -98,7 +101,7 @@ class SamplesWriter:
             self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
 
     def event(self, event: Event) -> None:
-        pass
+        self._spindle.event(event)
 
     def close(self) -> None:
         if self._file is not None:
@@ -109,6 +112,81 @@ class SamplesWriter:
         data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
         with open(self.path, "wb") as handle:
             np.savez(handle, **{name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)})
+
+
+class SpindleTracker:
+    """The spindle speed in force, from the event stream: moves that came in bulk carry none of their own."""
+
+    def __init__(self) -> None:
+        self.on = False
+        self.rpm = 0.0
+
+    def event(self, event: Event) -> None:
+        if event.kind == "spindle":
+            self.on = event.data.get("m") != 5
+            self.rpm = float(event.data.get("rpm", 0.0))
+        elif event.kind == "spindle_speed" and self.on:
+            self.rpm = float(event.data.get("rpm", 0.0))
+
+
+
+def _spindle_column(move: Move, xs: np.ndarray, in_force: float) -> np.ndarray:
+    """The spindle speed (rpm) at every sample: constant, or following X under constant surface speed."""
+    import numpy as np
+
+    css = move.css
+    if css is None:
+        return np.full(len(xs), move.spindle or in_force)
+    radius = np.abs(xs - css.axis_x)
+    with np.errstate(divide="ignore"):
+        rpm = css.surface / (2.0 * np.pi * radius)
+    if css.max_rpm > 0.0:
+        rpm = np.minimum(rpm, css.max_rpm)
+    return np.maximum(rpm, css.min_rpm)
+
+
+class EventsWriter:
+    """JSON Lines (``ecnc run --events``): one object per move and per event, in the order they happen.
+
+    A move: ``{"type": "move", "file", "line", "kind", "end", "feed", "spindle", "synchronised"}``
+    plus ``"pitch"`` (mm per revolution) for a spindle-synchronised move and ``"spindle_start"``
+    when constant surface speed changes the speed along it.  An event: ``{"type": "event",
+    "file", "line", "kind", "data"}``.
+    """
+
+    def __init__(self, path: Path) -> None:
+        import json  # only when writing events
+
+        self._dumps = json.dumps
+        self._file = _open_for_writing(path)
+        self._spindle = SpindleTracker()
+
+    def _write(self, record: dict[str, object]) -> None:
+        self._file.write(self._dumps(record, default=str) + "\n")
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+        rpm = move.spindle or self._spindle.rpm
+        record: dict[str, object] = {"type": "move", "file": move.path, "line": move.line, "kind": move.kind,
+                                     "end": list(move.end), "feed": move.feed, "spindle": rpm,
+                                     "synchronised": move.sync > 0.0}
+        if move.sync > 0.0:
+            record["pitch"] = move.sync
+        if move.css is not None:
+            record["spindle_start"] = move.css.rpm(move.start[0])
+        self._write(record)
+
+    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+        for kind, line, end, feed in batch:
+            self._write({"type": "move", "file": path, "line": line, "kind": kind, "end": list(end),
+                         "feed": feed, "spindle": self._spindle.rpm, "synchronised": False})
+
+    def event(self, event: Event) -> None:
+        self._spindle.event(event)
+        self._write({"type": "event", "file": event.path, "line": event.line, "kind": event.kind,
+                     "data": dict(event.data)})
+
+    def close(self) -> None:
+        self._file.close()
 
 
 class CallbackSink:

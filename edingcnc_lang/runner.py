@@ -23,14 +23,14 @@ from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage, MoveSink
-from .outputs import CallbackSink, SamplesWriter, TraceWriter, ensure_parent
+from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
 from .diagnostics import Diagnostic
 from .limits import DEFAULT_MAX_STEPS
 from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
 from .source import iter_text_lines
 from .stages import STAGES, Pipeline
 
-PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 38.2)}
+PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
 
 @dataclass
@@ -50,6 +50,7 @@ class RunResult:
     error: str | None = None  # the formatted message of the error that stopped the run
     error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
     warnings: list[Diagnostic] = field(default_factory=list)  # macro lines that do not parse (tolerant load)
+    spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -65,6 +66,7 @@ class RunResult:
             "moves": self.moves,
             "modal": self.modal,
             "ended_by": self.ended_by,
+            "spindle": self.spindle,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
             **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
         }
@@ -81,6 +83,7 @@ class RunOptions:
     max_steps: int | None = DEFAULT_MAX_STEPS  # None: no budget at all
     trace: Path | None = None
     samples: Path | None = None
+    events: Path | None = None
     log_dir: Path | None = None
     allow_exec: bool = False
     simulation: bool = True
@@ -110,6 +113,8 @@ class Run:
             sinks.append(TraceWriter(ensure_parent(options.trace)))
         if options.samples:
             sinks.append(SamplesWriter(ensure_parent(options.samples)))
+        if options.events:
+            sinks.append(EventsWriter(ensure_parent(options.events)))
         if options.on_move or options.on_event:
             sinks.append(CallbackSink(options.on_move, options.on_event))
         self.motion = MotionStage(self.config, self.kinematics, sinks, self._write_param,
@@ -228,7 +233,7 @@ class Run:
         modal_codes.append(motion if motion in t.CANNED_CYCLES else t.code_key(80))
         kin = self.kinematics
         return RunResult(
-            position=tuple(interp.work_position()),  # type: ignore[arg-type]
+            position=tuple(interp.reported_position()),  # type: ignore[arg-type]
             machine=tuple(interp.pos),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
@@ -241,6 +246,7 @@ class Run:
             error=error.format() if error else None,
             error_record=error.to_json() if error else None,
             warnings=list(self.warnings),
+            spindle=interp.spindle_state(),
         )
 
 

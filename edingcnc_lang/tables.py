@@ -30,6 +30,7 @@ G_GROUPS: Mapping[int, str] = _groups({
     "plane": (17, 18, 19),
     "distance": (90, 91),
     "feed_mode": (93, 94, 95),
+    "spindle_mode": (96, 97),
     "units": (20, 21, 70, 71),
     "cutter_comp": (40, 41, 42, 41.1, 42.1),
     "length_offset": (43, 43.1, 49),
@@ -54,13 +55,18 @@ M_GROUPS: Mapping[int, str] = _groups({
     "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97),
 })
 
-# G codes from other controllers that turn up in EdingCNC files, and what they mean there: the
-# controller stops on any G code it does not know, these get a name in the message.
-FOREIGN_G: Mapping[int, str] = MappingProxyType({code_key(c): what for c, what in (
-    (7, "lathe diameter mode"), (8, "lathe radius mode"), (96, "lathe constant surface speed"),
-    (97, "lathe constant spindle speed"), (90.1, "absolute arc centres of LinuxCNC"),
-    (91.1, "incremental arc centres of LinuxCNC"), (15, "polar coordinates off"), (16, "polar coordinates on"),
-)})
+# G codes other controllers know, with what to use on EdingCNC (shown with "unknown G code").
+UNKNOWN_G_HINTS: Mapping[int, str] = MappingProxyType({
+    code_key(7): "LinuxCNC's diameter mode is not an EdingCNC code; a lathe takes X as a diameter "
+                 "when cnc.ini sets [INTERPRETER] diameterProgramming = 1",
+    code_key(8): "LinuxCNC's radius mode is not an EdingCNC code; a lathe takes X as a radius "
+                 "when cnc.ini sets [INTERPRETER] diameterProgramming = 0",
+    code_key(90.1): "LinuxCNC's absolute arc centres; EdingCNC sets this for all arcs with cnc.ini "
+                    "[INTERPRETER] absoluteCenterCoords = 1",
+    code_key(91.1): "LinuxCNC's incremental arc centres; EdingCNC's default (absoluteCenterCoords = 0)",
+    code_key(15): "polar coordinates of other controls are not an EdingCNC code",
+    code_key(16): "polar coordinates of other controls are not an EdingCNC code",
+})
 
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
@@ -141,6 +147,7 @@ COORD_SYSTEM_CODES = tuple(code_key(c) for c in (54, 55, 56, 57, 58, 59, 59.1, 5
 ORDER_OF_EXECUTION: tuple[tuple[str, str, str], ...] = (
     ("feed_mode", "G", "feed_mode"),
     ("feed", "word", "F"),
+    ("spindle_mode", "G", "spindle_mode"),
     ("spindle_speed", "word", "S"),
     ("tool_select", "word", "T"),
     ("tool_change", "M", "tool_change"),

@@ -249,13 +249,26 @@ def var_file() -> str:
     return "".join(f"{number}\t{value:.6f}\n" for number, value in sorted(values.items()))
 
 
-def run_rs274(rs274: str, program: Path) -> subprocess.CompletedProcess[str]:
+@dataclass(frozen=True)
+class GoldenSet:
+    """A folder of programs and how its goldens are made (the lathe script defines another set)."""
+
+    programs: Path
+    expected: Path
+    source: Callable[[Path], str]          # the numbered text rs274 gets
+    fold: Callable[[list[Canon]], Golden]  # canon calls -> moves
+    document: Callable[[Path, Golden, str], dict[str, Any]]  # the expected file's content
+    tool_table: str = ""
+
+
+def run_rs274(rs274: str, program: Path, goldens: GoldenSet | None = None) -> subprocess.CompletedProcess[str]:
     """Run rs274 on the numbered copy of ``program`` in a throw-away directory."""
+    goldens = goldens or LINUXCNC
     with tempfile.TemporaryDirectory(prefix="rs274-golden-") as tmp:
         work = Path(tmp)
-        (work / "program.ngc").write_text(rs274_source(program.read_text()))
+        (work / "program.ngc").write_text(goldens.source(program))
         (work / "golden.var").write_text(var_file())
-        (work / "golden.tbl").write_text("")
+        (work / "golden.tbl").write_text(goldens.tool_table)
         result = subprocess.run(
             [rs274, "-g", "-v", "golden.var", "-t", "golden.tbl", "program.ngc"],
             cwd=work,
@@ -267,9 +280,9 @@ def run_rs274(rs274: str, program: Path) -> subprocess.CompletedProcess[str]:
     return result
 
 
-def canon_output(rs274: str, program: Path) -> str:
+def canon_output(rs274: str, program: Path, goldens: GoldenSet | None = None) -> str:
     """rs274's stdout for ``program``; any interpreter error or message fails the golden."""
-    result = run_rs274(rs274, program)
+    result = run_rs274(rs274, program, goldens)
     stray = [t for t in result.stdout.splitlines() if t.strip() and not CANON_LINE.match(t)]
     if result.returncode != 0 or stray:
         raise GoldenError(f"rs274 failed (exit {result.returncode}): {' | '.join(stray) or result.stderr.strip()}")
@@ -286,15 +299,22 @@ def linuxcnc_version() -> str:
     return "unknown version"
 
 
-def expected_json(program: Path, golden: Golden, version: str) -> str:
-    """The golden file's exact text: sorted keys, indent 1, trailing newline."""
-    data = {
+def document(program: Path, golden: Golden, version: str) -> dict[str, Any]:
+    """What an expected file holds."""
+    return {
         "program": program.name,
         "source": f"rs274 -g (LinuxCNC {version})",
         "moves": golden.moves,
         "dwells": golden.dwells,
     }
+
+
+def expected_json(data: dict[str, Any]) -> str:
+    """The golden file's exact text: sorted keys, indent 1, trailing newline."""
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
+
+
+LINUXCNC = GoldenSet(PROGRAMS, EXPECTED, lambda program: rs274_source(program.read_text()), fold, document)
 
 
 def find_rs274() -> str:
@@ -305,59 +325,62 @@ def find_rs274() -> str:
     return rs274
 
 
-def program_path(name: str) -> Path:
+def program_path(name: str, goldens: GoldenSet) -> Path:
     """A program by name, with or without the .ngc suffix."""
-    path = PROGRAMS / (name if name.endswith(".ngc") else f"{name}.ngc")
+    path = goldens.programs / (name if name.endswith(".ngc") else f"{name}.ngc")
     if not path.is_file():
         sys.exit(f"no such program: {path}")
     return path
 
 
-def regenerate(rs274: str, programs: list[Path]) -> int:
+def regenerate(rs274: str, programs: list[Path], goldens: GoldenSet | None = None) -> int:
     """Write every expected file, print a summary, and return the number of failures."""
+    goldens = goldens or LINUXCNC
     version = linuxcnc_version()
-    EXPECTED.mkdir(parents=True, exist_ok=True)
-    failures = changed = moves = arcs = 0
+    goldens.expected.mkdir(parents=True, exist_ok=True)
+    failures = changed = moves = arcs = synced = 0
     for program in programs:
         try:
-            golden = fold(parse_canon(canon_output(rs274, program)))
+            golden = goldens.fold(parse_canon(canon_output(rs274, program, goldens)))
             if not golden.moves:
                 raise GoldenError("no moves")
         except GoldenError as error:
             print(f"FAILED {program.name}: {error}", file=sys.stderr)
             failures += 1
             continue
-        target = EXPECTED / f"{program.stem}.json"
-        text = expected_json(program, golden, version)
+        target = goldens.expected / f"{program.stem}.json"
+        text = expected_json(goldens.document(program, golden, version))
         if not target.exists() or target.read_text() != text:
             target.write_text(text)
             changed += 1
         moves += len(golden.moves)
         arcs += sum(move["kind"] == "arc" for move in golden.moves)
-    stale = sorted({p.stem for p in EXPECTED.glob("*.json")} - {p.stem for p in PROGRAMS.glob("*.ngc")})
+        synced += sum("sync" in move for move in golden.moves)
+    stale = sorted({p.stem for p in goldens.expected.glob("*.json")} - {p.stem for p in goldens.programs.glob("*.ngc")})
     for name in stale:
-        (EXPECTED / f"{name}.json").unlink()
+        (goldens.expected / f"{name}.json").unlink()
     print(
-        f"{len(programs) - failures}/{len(programs)} programs ok ({moves} moves, {arcs} arcs); "
+        f"{len(programs) - failures}/{len(programs)} programs ok ({moves} moves, {arcs} arcs, {synced} synchronised); "
         f"{changed} expected files written, {len(stale)} stale removed; LinuxCNC {version}"
     )
     return failures
 
 
-def main() -> None:
+def main(goldens: GoldenSet | None = None, description: str = __doc__.splitlines()[0]) -> None:
     """Regenerate all goldens (or the named ones), or show one program's raw rs274 output."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    goldens = goldens or LINUXCNC
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("names", nargs="*", help="programs to regenerate (default: all)")
     parser.add_argument("--raw", metavar="NAME", help="print rs274's full output for one program and exit")
     args = parser.parse_args()
     rs274 = find_rs274()
     if args.raw:
-        result = run_rs274(rs274, program_path(args.raw))
+        result = run_rs274(rs274, program_path(args.raw, goldens), goldens)
         print(result.stdout, end="")
         print(result.stderr, end="", file=sys.stderr)
         sys.exit(result.returncode)
-    programs = [program_path(n) for n in args.names] or sorted(PROGRAMS.glob("*.ngc"))
-    sys.exit(1 if regenerate(rs274, programs) else 0)
+    programs = [program_path(n, goldens) for n in args.names] or sorted(goldens.programs.glob("*.ngc"))
+    sys.exit(1 if regenerate(rs274, programs, goldens) else 0)
 
 
 if __name__ == "__main__":

@@ -18,9 +18,11 @@ from .streams import STDIN_NAME, read_stdin
 @json_option("Print the final machine state as JSON on stdout.")
 @click.option("--trace", metavar="FILE", type=OUTPUT_FILE, help="Write one CSV row per executed move.")
 @click.option("--samples", metavar="FILE", type=OUTPUT_FILE, help="Write the interpolated trajectory (.csv or .npz).")
+@click.option("--events", metavar="FILE", type=OUTPUT_FILE,
+              help="Write every move (with its spindle speed) and event as JSON Lines.")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
-        save_vars: bool) -> int:
+        events: str | None, save_vars: bool) -> int:
     """Run JOB as the controller would (in simulation) and report what the machine does.
 
     JOB - reads the job from standard input.
@@ -30,7 +32,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
-                                  samples=Path(samples) if samples else None, save_vars=save_vars)
+                                  samples=Path(samples) if samples else None,
+                                  events=Path(events) if events else None, save_vars=save_vars)
     # an error carries the state so far: main() prints it with --json
     result = run_string(read_stdin(), options, STDIN_NAME) if job == STDIN else run_file(job, options)
     if as_json:

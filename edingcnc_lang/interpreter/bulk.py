@@ -32,12 +32,12 @@ class BulkPath(MachineState):
         """Execute lines[first:] as long as each is a plain G0/G1 move; returns the first it left.
 
         This is the per-line work of ``_exec_plain`` and ``_execute_line`` for the case that
-        dominates CAM output (axis words, F, G0/G1, N only; G94; no G68 or tangential knife),
+        dominates CAM output (axis words, F, G0/G1, N only; G94; no G68, tangential knife or lathe),
         done without building nodes.  Anything unusual, including every error, is left to the
         general path so messages stay exactly the same.
         """
-        if self.rotation is not None or self.tanknife or self.modal["feed_mode"] != G_94:
-            return first
+        if self.rotation is not None or self.tanknife or self.modal["feed_mode"] != G_94 or self.config.lathe:
+            return first  # (a lathe's moves carry the spindle speed along them, which bulk rows do not)
         motion: int | None = self.modal["motion"]
         if motion not in (G_0, G_1):
             motion = None  # the line must name G0 or G1 itself

@@ -46,7 +46,9 @@ class LineWords(MachineState):
             group = table.get(key)
             if group is None:
                 if letter == "G":
-                    raise MachineError(f"unknown G code {t.code_name('G', key)}", Location(self.path, self.line, col))
+                    hint = t.UNKNOWN_G_HINTS.get(key)
+                    raise MachineError(f"unknown G code {t.code_name('G', key)}" + (f": {hint}" if hint else ""),
+                                       Location(self.path, self.line, col))
                 group = f"user_{key}"
             if group in found:
                 raise MachineError(f"{t.code_name(letter, found[group])} and {t.code_name(letter, key)} are in the "

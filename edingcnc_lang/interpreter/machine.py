@@ -1,8 +1,9 @@
 """The interpreter, assembled from its parts; each part is a mixin in a module of its own.
 
 Reading order for a newcomer: ``state`` (what the machine knows), ``flow`` (statements, subs),
-``line`` and ``steps`` (one G-code line in the order of execution), ``offsets`` (work and
-machine coordinates), ``moves`` and ``canned`` (what a line moves), ``bulk`` (the fast path
+``line`` and ``steps`` (one G-code line in the order of execution), ``spindle_modes`` (S, M3-M5,
+G96/G97), ``offsets`` (work and machine coordinates), ``moves``, ``canned`` and ``threads`` (what a
+line moves), ``bulk`` (the fast path
 for plain CAM lines), ``messages`` and ``commands``.  The interpreter emits every move and
 event to a ``Canon``: in a run that is the head of the pipeline (``stages/``), whose last
 stage is the motion stage.
@@ -20,11 +21,13 @@ from .line import LineWords
 from .messages import Messages
 from .moves import Moves
 from .offsets import CoordinateSystems
+from .spindle_modes import SpindleModes
 from .steps import LineSteps
+from .threads import Threading
 
 
-class Interpreter(ControlFlow, LineWords, LineSteps, CoordinateSystems, Moves, CannedCycles, BulkPath,
-                  Messages, Commands):
+class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CoordinateSystems, Moves, CannedCycles,
+                  Threading, BulkPath, Messages, Commands):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 

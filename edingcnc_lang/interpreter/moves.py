@@ -12,6 +12,9 @@ from .state import (
     AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_40, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
     MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
 )
+from .threads import SYNC_MOTION
+
+ARC_CHORDS = 64  # feed per revolution under CSS: the spindle speed is averaged over this many chords
 
 
 class Moves(MachineState):
@@ -46,6 +49,8 @@ class Moves(MachineState):
             raise self.fail("G53 is not allowed while cutter compensation (G41/G42) is on", span)
         if motion in t.CANNED_CYCLES:
             self._cycle(motion, words, span, new_sequence=previous != motion)
+        elif motion in SYNC_MOTION:
+            self._synchronised(motion, words, span)
         elif motion in (G_2, G_3):
             self._arc(motion, words, span)
         elif has_axes:
@@ -53,7 +58,7 @@ class Moves(MachineState):
             if motion == G_0:
                 self._move("rapid", target)
             elif motion == G_1:
-                feed = self._feed_for(xyz_distance(self.pos, target), words, span)
+                feed = self._feed_for(xyz_distance(self.pos, target), words, span, [self.pos[0], target[0]])
                 if self.tanknife and math.hypot(target[0] - self.pos[0], target[1] - self.pos[1]) > 1e-9:
                     target[5] = self._knife_align(math.degrees(math.atan2(target[1] - self.pos[1],
                                                                           target[0] - self.pos[0])))
@@ -101,7 +106,7 @@ class Moves(MachineState):
         radius = math.hypot(s[0] - center[0], s[1] - center[1])
         along = end[normal] - start[normal]
         length = math.hypot(radius * angle, along)
-        feed = self._feed_for(length, words, span)
+        feed = self._feed_for(length, words, span, self._arc_xs(plane, s, center, angle, clockwise))
         named = (center[1], center[0]) if plane == "XZ" else center
         if self.tanknife and plane == "XY":  # the knife follows the tangent all along the arc
             normal_deg = -90.0 if clockwise else 90.0
@@ -109,6 +114,18 @@ class Moves(MachineState):
             c_start = self._knife_align(start_tangent)
             end[5] = c_start + math.degrees(angle) * (-1.0 if clockwise else 1.0)
         self._move("arc", end, feed, Arc(named, plane, -1 if clockwise else 1, full))
+
+    def _arc_xs(self, plane: str, start: tuple[float, float], center: tuple[float, float], angle: float,
+                clockwise: bool) -> list[float]:
+        """Machine X at evenly spaced points of an arc (feed per revolution under CSS needs them)."""
+        if plane == "YZ" or self.css() is None:
+            return [self.pos[0]]
+        x_slot = 0 if plane == "XY" else 1  # the arc's in-plane pair is (x, y) or (z, x)
+        radius = math.hypot(start[0] - center[0], start[1] - center[1])
+        begin = math.atan2(start[1] - center[1], start[0] - center[0])
+        turn = -angle if clockwise else angle
+        points = [begin + turn * i / ARC_CHORDS for i in range(ARC_CHORDS + 1)]
+        return [(center[0] + radius * math.cos(a), center[1] + radius * math.sin(a))[x_slot] for a in points]
 
     def _knife_align(self, direction: float) -> float:
         """Turn C to ``direction`` (the equivalent angle nearest the current C) before a cut.
@@ -146,7 +163,7 @@ class Moves(MachineState):
         end = list(trip) if trip is not None else target
         self._move("probe", end, feed)
         if trip is not None:
-            work = self.work_position()
+            work = self.reported_position()
             for axis in range(6):
                 self.params.set(t.PROBE_MACHINE + axis, end[axis])
                 self.params.set(t.PROBE_WORK + axis, work[axis])

@@ -22,7 +22,7 @@ class CoordinateSystems(MachineState):
             self.modal["coord_system"] = t.COORD_SYSTEM_CODES[int(system) - 1]
 
     def offset(self) -> list[float]:
-        """Machine minus work position: G5x + G92 (if active) + tool length on Z (if G43)."""
+        """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43)."""
         if self._offset is None:
             values = self.params.values
             system = int(values[t.COORD_SYSTEM]) if 1 <= values[t.COORD_SYSTEM] <= 9 else 1
@@ -30,6 +30,7 @@ class CoordinateSystems(MachineState):
             if self.g92_active:
                 off = [o + values[t.G92_OFFSET + i] for i, o in enumerate(off)]
             off[2] += self.tool_z
+            off[0] += self.tool_x
             self._offset = off
         return self._offset
 
@@ -52,15 +53,25 @@ class CoordinateSystems(MachineState):
             work[0], work[1] = px + c * dx + s * dy, py - s * dx + c * dy
         return work
 
+    def reported_position(self, machine: list[float] | None = None) -> list[float]:
+        """The work position as the controller shows it (#5001.., #5061..): X as a diameter in diameter mode."""
+        work = self.work_position(machine)
+        if self.diameter_mode:
+            work[0] *= 2.0
+        return work
+
     def _live_param(self, index: int) -> float:
         if index >= t.POS_MACHINE:
             return self.pos[index - t.POS_MACHINE]
-        return self.work_position()[index - t.POS_WORK]
+        return self.reported_position()[index - t.POS_WORK]
 
     def _axis_values(self, words: Mapping[str, float]) -> dict[int, float]:
-        """The axis words of a line, in mm / degrees."""
+        """The axis words of a line, in mm / degrees; in diameter mode X (a diameter) becomes a radius."""
         scale = self.scale
-        return {AXIS_INDEX[a]: v * (scale if a in LINEAR_AXES else 1.0) for a, v in words.items() if a in AXIS_INDEX}
+        values = {AXIS_INDEX[a]: v * (scale if a in LINEAR_AXES else 1.0) for a, v in words.items() if a in AXIS_INDEX}
+        if 0 in values and self.diameter_mode:
+            values[0] /= 2.0
+        return values
 
     def _target(self, words: Mapping[str, float], machine: bool = False) -> list[float]:
         """Machine position the axis words of a line point at."""
@@ -138,6 +149,12 @@ class CoordinateSystems(MachineState):
         home = list(self.pos)
         for axis in chosen:
             home[axis] = self.params.read(base + axis)
+        if self.config.lathe:  # X first: the tool leaves the part before the carriage travels
+            if 0 in chosen:
+                self._move("rapid", home[:1] + self.pos[1:])
+            if any(axis != 0 for axis in chosen):
+                self._move("rapid", home)
+            return
         z_first = home[2] > self.pos[2]
         if z_first and 2 in chosen:
             self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
@@ -152,7 +169,7 @@ class CoordinateSystems(MachineState):
             raise self.fail("G92 needs at least one axis word", span)
         system = int(self.params.read(t.COORD_SYSTEM))
         for axis, number in axes.items():
-            tool = self.tool_z if axis == 2 else 0.0
+            tool = self.tool_z if axis == 2 else self.tool_x if axis == 0 else 0.0
             g5x = self.params.read(t.coord_offset_param(system, axis))
             self.params.set(t.G92_OFFSET + axis, self.pos[axis] - g5x - tool - number)
         for axis in range(6):

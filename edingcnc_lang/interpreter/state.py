@@ -21,6 +21,7 @@ from ..errors import Location, MachineError
 from ..evaluator import Evaluator
 from ..host import Host
 from ..params import Parameters
+from ..spindle import Css, SpindleError, mean_rpm_points
 
 INCH = 25.4
 MAX_CALL_DEPTH = 64
@@ -30,7 +31,7 @@ G = t.code_key  # G(38.2) -> 382
 AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
 AXIS_SET = frozenset(AXES)
 LINEAR_AXES = frozenset("XYZ")
-UNSUPPORTED_MOTION = frozenset(t.code_key(c) for c in (33, 33.1, 74, 76, 87))  # threading, back boring
+UNSUPPORTED_MOTION = frozenset(t.code_key(c) for c in (74, 87))  # left-hand tapping, back boring
 PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1, 60))  # M0, M1, M60
 
 # G codes as integer tenths, computed once (they are compared on every line).
@@ -68,6 +69,8 @@ G_92_3 = G(92.3)
 G_93 = G(93)
 G_94 = G(94)
 G_95 = G(95)
+G_96 = G(96)
+G_97 = G(97)
 G_98 = G(98)
 G_99 = G(99)
 
@@ -135,11 +138,16 @@ class MachineState:
         self.modal: dict[str, int] = dict(DEFAULT_MODAL)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
-        self.speed = 0.0
+        self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
+        self.rpm = 0.0                     # G97: the speed the spindle turns at, S within the machine's range
+        self.css_setting: tuple[float, float, float] | None = None  # G96: surface mm/min, max and min rpm
+        self.css_max = 0.0                 # the D word of G96 (0: none)
+        self.sync_pitch = 0.0              # K of G33, mm per revolution
         self.spindle = 5                   # M3, M4 or M5
         self.coolant: set[int] = set()
         self.selected_tool = 0
         self.tool_z = 0.0                  # active G43 length
+        self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
         self.g92_active = False
         self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
@@ -155,13 +163,17 @@ class MachineState:
         self._tool_cursor = 0
         self._log_file: Path | None = None
         self._init_params(simulation)
+        if self.config.lathe:
+            self.modal["plane"] = G_18
 
     def _init_params(self, simulation: bool) -> None:
         initial: dict[int, float] = dict(self.config.variables)
         for number, tool in self.config.tools.items():
             initial[t.TOOL_LENGTH + number] = tool.length
             initial[t.TOOL_DIAMETER + number] = tool.diameter
-            initial[t.TOOL_X_OFFSET + number] = tool.x_delta
+            initial[t.TOOL_X_OFFSET + number] = tool.width
+            initial[t.TOOL_X_WEAR + number] = tool.x_delta
+            initial[t.TOOL_Z_WEAR + number] = tool.z_delta
             initial[t.TOOL_ORIENTATION + number] = float(tool.orientation)
         for axis, joint in enumerate(self.config.joints):
             initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
@@ -196,19 +208,62 @@ class MachineState:
                             "loop turns and drilled holes count; raise it with --max-steps N "
                             "(RunOptions.max_steps in Python)", span)
 
-    def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None) -> None:
+    @property
+    def diameter_mode(self) -> bool:
+        """X words and the work X position are diameters (a lathe with diameterProgramming = 1)."""
+        return self.config.diameter_mode
+
+    def css(self) -> Css | None:
+        """Constant surface speed in force (G96), centred on the current work X0; None under G97."""
+        if self.css_setting is None:
+            return None
+        surface, max_rpm, min_rpm = self.css_setting
+        return Css(surface, max_rpm, min_rpm, self.offset()[0])
+
+    def rpm_at(self, x: float) -> float:
+        """The programmed spindle speed with the tool at machine X ``x`` (also while it is stopped)."""
+        css = self.css()
+        return css.rpm(x) if css is not None else self.rpm
+
+    def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
+              sync: float = 0.0) -> None:
         start = tuple(self.pos)
-        self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc))  # type: ignore[arg-type]
+        turning = self.spindle != 5
+        css = self.css() if turning else None
+        rpm = (css.rpm(end[0]) if css is not None else self.rpm) if turning else 0.0
+        self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
+                             rpm, css, sync))
         self.pos = list(end)  # only a move the machine made changes the position
 
-    def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span) -> float:
-        """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode."""
+    def mean_rpm(self, xs: list[float], span: n.Span | None) -> float:
+        """The spindle speed that gives a per-revolution move through machine X ``xs`` its true time."""
+        css = self.css()
+        if css is None:
+            return self.rpm
+        try:
+            return mean_rpm_points(css, xs)
+        except SpindleError as err:
+            raise self.fail(str(err), span) from None
+
+    def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span,
+                  xs: list[float] | None = None) -> float:
+        """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode.
+
+        ``xs`` are machine X values along the move (start to end), for feed per revolution
+        under constant surface speed; by default the move is straight from here to here.
+        """
         mode = self.modal["feed_mode"]
         if mode == G_93:
             if "F" not in words or words["F"] <= 0:
                 raise self.fail("inverse time mode (G93) needs a positive F on every feed move", span)
             return length * words["F"]
-        rate = self.feed * self.speed if mode == G_95 else self.feed
+        if mode == G_95:
+            rpm = self.mean_rpm(xs or [self.pos[0]], span)
+            if self.feed > 0 and rpm <= 0:
+                raise self.fail("feed per revolution (G95) with no spindle speed: program S first", span)
+            rate = self.feed * rpm
+        else:
+            rate = self.feed
         if rate <= 0:
             raise self.fail("feed rate is 0: program an F word before this feed move (EdingCNC error G1516)",
                             span)

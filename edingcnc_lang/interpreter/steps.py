@@ -8,7 +8,7 @@ from .. import tables as t
 from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
-    G_0, G_17, G_4, G_40, G_43_1, G_49, G_51, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_51, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
     format_value,
 )
 
@@ -28,14 +28,6 @@ class LineSteps(MachineState):
             raise self.fail("negative feed rate", span)
         self.feed = value * (1.0 if self.modal["feed_mode"] == G_93 else self.scale)
 
-    def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
-                            span: n.Span) -> None:
-        if value < 0:
-            raise self.fail(f"spindle speed S{format_value(value)} is negative", span)
-        self.speed = value
-        if self.spindle != 5:
-            self.params.set(t.SPINDLE_SPEED, self.speed / 60.0)
-
     def _step_tool_select(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
                           span: n.Span) -> None:
         if value != int(value) or not 0 <= value <= t.MAX_TOOL:
@@ -44,13 +36,6 @@ class LineSteps(MachineState):
 
     def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._tool_change(span)
-
-    def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        self.spindle = code // 10
-        on = self.spindle != 5
-        self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
-        self.params.set(t.SPINDLE_SPEED, self.speed / 60.0 if on else 0.0)
-        self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed}))
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self.coolant = set() if code == 90 else self.coolant | {code // 10}
@@ -135,16 +120,24 @@ class LineSteps(MachineState):
         self.canon.event(Event("dwell", self.path, self.line, {"seconds": seconds}))
 
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
+        self.tool_x = 0.0
         if code == G_49:
             self.tool_z = 0.0
         else:
             tool = int(words.get("H", self.params.read(t.TOOL_CURRENT)))
             if not 0 <= tool <= t.MAX_TOOL:
                 raise self.fail(f"G43 H{tool}: no such tool", span)
-            if code == G_43_1:  # dynamic offset: K is the tool length (I, the lathe X offset, has no effect)
+            lathe = self.config.lathe
+            if code == G_43_1:  # dynamic offset: K is the tool length, I the X offset on a lathe
                 self.tool_z = words.get("K", 0.0) * self.scale
+                self.tool_x = words.get("I", 0.0) * self.scale if lathe else 0.0
+            elif tool:
+                read = self.params.read
+                self.tool_z = read(t.TOOL_LENGTH + tool) + (read(t.TOOL_Z_WEAR + tool) if lathe else 0.0)
+                self.tool_x = read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool) if lathe else 0.0
             else:
-                self.tool_z = self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0
+                self.tool_z = 0.0
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
         self._offset = None
@@ -153,7 +146,7 @@ class LineSteps(MachineState):
         if code in PAUSE_CODES:
             self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
             return
-        for group, reset in (("plane", G_17), ("distance", G_90), ("feed_mode", G_94),
+        for group, reset in (("plane", G_18 if self.config.lathe else G_17), ("distance", G_90), ("feed_mode", G_94),
                              ("cutter_comp", G_40), ("motion", G_0)):
             self.modal[group] = reset
         self.spindle = 5

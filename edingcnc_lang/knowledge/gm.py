@@ -28,10 +28,12 @@ G_ROWS: tuple[Row, ...] = (
     (21, "millimetre units", "", "Coordinates and feeds in millimetres."),
     (28, "go to the G28 position", "X Y Z A B C",
      "Rapid to the position stored in #5161..#5166 (machine coordinates), through the point on the line if any; "
-     "with axis words only those axes move. Z moves first when it goes up."),
+     "with axis words only those axes move. Z moves first when it goes up; on a lathe X moves first."),
     (30, "go to the G30 position", "X Y Z A B C", "As G28, with the position in #5181..#5186."),
-    (33, "spindle-synchronised threading", "X Y Z K", "Threading move (not simulated by ecnc)."),
-    (33.1, "rigid tapping", "X Y Z K", "Rigid tapping move (not simulated by ecnc)."),
+    (33, "spindle-synchronised threading", "X Y Z K",
+     "A straight move advancing K (the pitch) per spindle revolution; needs the spindle turning. K stays in force."),
+    (33.1, "rigid tapping", "X Y Z K",
+     "Synchronised move to the end point at pitch K, the spindle reverses, back to the start, the spindle turns back."),
     (38.2, "straight probe", "X Y Z F",
      "Moves towards the target until the probe trips. Results: #5067 = 1 if it tripped, the position in "
      "#5061..#5066 (work) and #5051..#5056 (machine). Guard it with If [[#5380 == 0] and [#5397 == 0]] and check #5067."),
@@ -66,7 +68,10 @@ G_ROWS: tuple[Row, ...] = (
     (73, "high-speed peck drilling cycle", "X Y Z R Q L F",
      "Pecks of depth Q, retracting 0.254 mm between pecks. Z, R and Q stay in force for later lines."),
     (74, "left-hand tapping cycle", "X Y Z R L F", "Not simulated by ecnc."),
-    (76, "canned cycle G76", "", "Not simulated by ecnc."),
+    (76, "threading cycle", "P Z I J K R Q H E L",
+     "Multi-pass thread from the current position to Z: P pitch, I crest offset (negative outside), J first cut, "
+     "K thread depth, R degression, Q compound angle, H spring passes, E/L taper. XZ plane (G18); "
+     "I J K are diameters in diameter mode."),
     (80, "cancel canned cycle", "", "Ends the active canned cycle; axis words alone no longer drill."),
     (81, "drilling cycle", "X Y Z R L F", "Rapid to R, feed to Z, rapid out (to the start Z with G98, to R with G99). L repeats."),
     (82, "drilling cycle with dwell", "X Y Z R P L F", "As G81 with a dwell of P seconds at the bottom."),
@@ -86,6 +91,10 @@ G_ROWS: tuple[Row, ...] = (
     (93, "inverse time feed", "", "F is 1/minutes for each move: every G1/G2/G3 line needs its own F."),
     (94, "units per minute feed", "", "F is mm (or inch) per minute (the default)."),
     (95, "units per revolution feed", "", "F is mm (or inch) per spindle revolution."),
+    (96, "constant surface speed", "S D",
+     "S is the surface speed (m/min, ft/min in G20): the spindle speed follows the X radius, at most D rpm "
+     "(and cnc.ini's spindleNmax)."),
+    (97, "spindle speed in rpm", "S", "S is the spindle speed in rpm (the default); without S the current speed is kept."),
     (98, "canned cycle returns to the start Z", "", "Retract to the Z the cycle started from."),
     (99, "canned cycle returns to R", "", "Retract to the R plane."),
 )

@@ -10,8 +10,8 @@ from collections.abc import Iterable, Iterator, Sequence
 from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..tables import (
-    FOREIGN_G,
     G_GROUPS,
+    UNKNOWN_G_HINTS,
     M_GROUPS,
     MAX_M_WORDS,
     MAX_TOOL,
@@ -57,9 +57,9 @@ def unknown_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for block in project.facts(file).blocks:
         for key, word in block.g:
             if key not in G_GROUPS:
-                what = f" ({FOREIGN_G[key]})" if key in FOREIGN_G else ""
-                yield at("G508", f"{code_name('G', key)}{what} is not an EdingCNC code: the controller stops "
-                         "here with 'unknown G code'", word.span)
+                hint = f": {UNKNOWN_G_HINTS[key]}" if key in UNKNOWN_G_HINTS else ""
+                yield at("G508", f"{code_name('G', key)} is not an EdingCNC code, the controller stops here with "
+                         f"'unknown G code'{hint}", word.span)
 
 
 @rule("G501", "G502", "G503", "G506", "G507")

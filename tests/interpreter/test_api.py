@@ -23,7 +23,8 @@ def test_moves_and_events_stream_in_program_order() -> None:
 
     run_string('G0 X1\nM3 S1000\nG4 P0.5\nmsg "hi"\nG1 X2 F100\nM8\nT2 M6\nM30\n',
                RunOptions(macro=EMPTY_MACRO, on_move=on_move, on_event=on_event), path="job.nc")
-    assert stream == [("move", "rapid", 1), ("event", "spindle", 2), ("event", "dwell", 3), ("event", "msg", 4),
+    assert stream == [("move", "rapid", 1), ("event", "spindle_speed", 2), ("event", "spindle", 2),
+                      ("event", "dwell", 3), ("event", "msg", 4),
                       ("move", "linear", 5), ("event", "coolant", 6), ("event", "tool_change", 7),
                       ("event", "end", 8)]
 

@@ -43,8 +43,7 @@ def test_the_step_budget_counts_lines_the_same_in_files_and_strings(tmp_path: Pa
     assert outcomes[0] == 3
 
 
-@pytest.mark.parametrize("code", ["G33 Z-10 K1 F100", "G33.1 Z-10 K1", "G74 X1 Z-1 R1 F100",
-                                  "G76 X1 Z-1 P1 F100", "G87 X1 Z-1 R1 F100"])
+@pytest.mark.parametrize("code", ["G74 X1 Z-1 R1 F100", "G87 X1 Z-1 R1 F100"])
 def test_unsupported_motion_codes_are_errors_not_probe_moves(code: str) -> None:
     moves: list[Move] = []
     with pytest.raises(EcncError) as info:

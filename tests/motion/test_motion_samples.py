@@ -35,7 +35,7 @@ def test_feed_move_is_sampled_every_interpolation_time(run_job, tmp_path: Path) 
     assert len(data) == 200
     np.testing.assert_allclose(data[:, 0], np.arange(1, 201) * 0.005)
     np.testing.assert_allclose(data[:, 1], np.arange(1, 201) * 0.05)
-    np.testing.assert_array_equal(data[:, 7:], data[:, 1:7])          # trivial: joints = position
+    np.testing.assert_array_equal(data[:, 7:13], data[:, 1:7])        # trivial: joints = position
 
 
 def test_interpolation_time_comes_from_the_ini(run_job, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
@@ -91,7 +91,7 @@ def test_trace_joints_are_the_last_sample_of_each_move(run_job, tmp_path: Path) 
     data = np.array(read_csv(samples)[1])
     for move in moves[-2:]:
         row = data[np.all(np.isclose(data[:, 1:7], move[2:8], atol=1e-12), axis=1)][-1]
-        assert list(row[7:]) == move[8:14]
+        assert list(row[7:13]) == move[8:14]
     arc = data[data[:, 0] > data[np.isclose(data[:, 1:4], (10, 10, 150)).all(axis=1)][-1, 0]]
     np.testing.assert_allclose(np.hypot(arc[:, 1], arc[:, 2] - 10), 10.0)   # the arc, sampled on its circle
 

@@ -1,0 +1,167 @@
+"""Lathe mode end to end through the API: diameter programming, spindle modes, threading, offsets."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang import RunOptions, run_string
+from edingcnc_lang.canon import Event, Move
+from edingcnc_lang.errors import EcncError
+
+EMPTY_MACRO_TEXT = ";@unit mm\n"
+
+
+def lathe(tmp_path: Path, diameter: bool = True, extra: str = "") -> Path:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text(f"[SYSTEM]\nmachineType = 1\n[INTERPRETER]\ndiameterProgramming = {int(diameter)}\n"
+                   "[SPINDLE]\nspindleNmax = 3000\nspindleNmin = 50\n"
+                   "[TOOL_2]\nlength = 4\nwidth = -1.5\nzDelta = 0.25\nxDelta = 0.1\norientation = 3\n" + extra)
+    (tmp_path / "macro.cnc").write_text(EMPTY_MACRO_TEXT)
+    return ini
+
+
+def run(tmp_path: Path, job: str, diameter: bool = True, extra: str = "") -> tuple[list[Move], list[Event], object]:
+    moves: list[Move] = []
+    events: list[Event] = []
+    result = run_string(job, RunOptions(ini=lathe(tmp_path, diameter, extra), macro=tmp_path / "macro.cnc",
+                                        on_move=lambda m, _j: moves.append(m), on_event=events.append))
+    return moves, events, result
+
+
+def failure(tmp_path: Path, job: str, diameter: bool = True) -> str:
+    with pytest.raises(EcncError) as info:
+        run(tmp_path, job, diameter)
+    return info.value.format()
+
+
+# ----------------------------------------------------------------- diameter programming
+
+def test_x_words_are_diameters_and_the_work_position_reads_as_one(tmp_path: Path) -> None:
+    moves, _, result = run(tmp_path, "G0 X50 Z2\nG91 G1 X-4 F100\n#100 = #5001\n#101 = #5071\nG90\n")
+    assert moves[0].end[0] == 25.0 and moves[1].end[0] == 23.0
+    assert result.variables[100] == 46.0 and result.variables[101] == 23.0  # type: ignore[attr-defined]
+    assert result.position[0] == 46.0 and result.machine[0] == 23.0  # type: ignore[attr-defined]
+
+
+def test_radius_mode_lathe_and_mill_keep_x(tmp_path: Path) -> None:
+    moves, _, result = run(tmp_path, "G0 X50\n#100 = #5001\n", diameter=False)
+    assert moves[0].end[0] == 50.0 and result.variables[100] == 50.0  # type: ignore[attr-defined]
+
+
+def test_lathe_starts_and_ends_in_g18(tmp_path: Path) -> None:
+    moves, _, result = run(tmp_path, "G0 X20 Z0\nG2 X20 Z-10 R5 F100\nM30\n")
+    assert moves[-1].arc is not None and moves[-1].arc.plane == "XZ"
+    assert "G18" in result.modal  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize("code, hint", [("G7", "diameterProgramming = 1"), ("G8", "diameterProgramming = 0")])
+def test_linuxcnc_diameter_codes_are_errors_with_a_hint(tmp_path: Path, code: str, hint: str) -> None:
+    message = failure(tmp_path, f"G0 X10\n{code}\n")
+    assert f":2:1: error: unknown G code {code}: " in message and hint in message
+
+
+def test_g28_moves_x_first_on_a_lathe(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "#5161 = 100\n#5163 = 300\nG0 X20 Z-50\nG28\n")
+    assert [(m.end[0], m.end[2]) for m in moves[1:]] == [(100.0, -50.0), (100.0, 300.0)]
+
+
+def test_g43_applies_x_and_z_offsets_with_wear(tmp_path: Path) -> None:
+    moves, _, result = run(tmp_path, "G43 H2\nG0 X20 Z5\n#100 = #5001\n#101 = #5003\nG49\nG0 X20 Z5\n")
+    assert moves[0].end[0] == pytest.approx(10 - 1.5 + 0.1) and moves[0].end[2] == pytest.approx(5 + 4 + 0.25)
+    assert result.variables[100] == pytest.approx(20.0)  # type: ignore[attr-defined]
+    assert result.variables[101] == pytest.approx(5.0)  # type: ignore[attr-defined]
+    assert (moves[1].end[0], moves[1].end[2]) == (10.0, 5.0)
+
+
+def test_tool_table_keys_load_into_the_tool_parameters(tmp_path: Path) -> None:
+    _, _, result = run(tmp_path, "#100 = #5402\n#101 = #5602\n#102 = #5702\n#103 = #5802\n#104 = #5902\n")
+    assert [result.variables[n] for n in range(100, 105)] == [4.0, -1.5, 3.0, 0.1, 0.25]  # type: ignore[attr-defined]
+
+
+# ----------------------------------------------------------------- spindle modes
+
+def test_css_follows_the_radius_clamped_to_d_and_the_machine(tmp_path: Path) -> None:
+    moves, events, _ = run(tmp_path, "G0 X100 Z1\nG96 S150 D2500 M3\nG1 X40 F100\nG1 X2\nG96 S150 D9000\nG1 X1\n")
+    assert moves[1].spindle == pytest.approx(150_000 / (2 * math.pi * 20))
+    assert moves[1].css is not None and moves[1].css.rpm(50.0) == pytest.approx(150_000 / (2 * math.pi * 50))
+    assert moves[2].spindle == 2500.0      # D
+    assert moves[3].spindle == 3000.0      # spindleNmax caps a higher D
+    setting = [e for e in events if e.kind == "spindle_speed"][-1]
+    assert setting.data["mode"] == "css" and setting.data["max_rpm"] == 3000.0
+
+
+def test_g97_keeps_the_speed_css_reached_and_clamps_s(tmp_path: Path) -> None:
+    moves, _, result = run(tmp_path, "G0 X40 Z1\nG96 S100 D2000 M3\nG97\nG0 X80\nG97 S5000\nG0 X20\nG97 S10\nG0 X30\n")
+    reached = 100_000 / (2 * math.pi * 20)
+    assert moves[1].spindle == pytest.approx(reached) and moves[1].css is None
+    assert moves[2].spindle == 3000.0 and moves[3].spindle == 50.0
+    assert result.spindle["mode"] == "G97" and result.spindle["rpm"] == 50.0  # type: ignore[attr-defined]
+
+
+def test_g95_feed_uses_the_speed_along_the_move(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G97 S1000 M3\nG95 F0.2\nG0 X40 Z1\nG1 Z-20\nG96 S100 D2000\nG1 X0\n")
+    assert moves[1].feed == pytest.approx(200.0)
+    face = moves[2]  # radius 20 -> 0: rpm 796 rising to the 2000 clamp
+    css = face.css
+    assert css is not None
+    n = 100_000
+    minutes = sum(1 / css.rpm(20 - 20 * (i + 0.5) / n) for i in range(n)) / n * 20 / 0.2
+    assert face.feed == pytest.approx(20 / minutes, rel=1e-6)
+
+
+def test_g95_without_a_spindle_speed_is_an_error(tmp_path: Path) -> None:
+    assert "feed per revolution (G95) with no spindle speed" in failure(tmp_path, "G95 F0.1\nG1 Z-5\n")
+
+
+def test_css_to_the_centre_without_any_maximum_is_an_error(tmp_path: Path) -> None:
+    ini = lathe(tmp_path)
+    ini.write_text(ini.read_text().replace("spindleNmax = 3000", "spindleNmax = 0"))
+    with pytest.raises(EcncError, match="no maximum spindle speed"):
+        run_string("G0 X40\nG96 S100 M3\nG95 F0.1\nG1 X0\n", RunOptions(ini=ini, macro=tmp_path / "macro.cnc"))
+
+
+def test_negative_d_is_an_error(tmp_path: Path) -> None:
+    assert "G96 D-5: the maximum spindle speed must not be negative" in failure(tmp_path, "G96 S100 D-5\n")
+
+
+# ----------------------------------------------------------------- threading
+
+def test_g33_is_a_synchronised_linear_move(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G97 S400 M3\nG0 X20 Z2\nG33 Z-20 K1.5\nG0 X24\nG33 X20 Z-30\n")
+    cut = moves[1]
+    assert (cut.kind, cut.sync, cut.feed, cut.spindle) == ("linear", 1.5, 600.0, 400.0)
+    assert moves[3].sync == 1.5  # K stays in force
+
+
+def test_g33_1_taps_in_reverses_and_comes_back(tmp_path: Path) -> None:
+    moves, events, _ = run(tmp_path, "G97 S200 M3\nG0 X0 Z5\nG33.1 Z-15 K1.25\n")
+    assert [(m.end[2], m.sync) for m in moves[1:]] == [(-15.0, 1.25), (5.0, 1.25)]
+    taps = [e.data["m"] for e in events if e.kind == "spindle" and e.data.get("rigid_tap")]
+    assert taps == [4, 3]
+
+
+@pytest.mark.parametrize("job, message", [
+    ("G0 X20\nG33 Z-10 K1\n", "G33 needs the spindle turning"),
+    ("G97 S100 M3\nG33 Z-10\n", "G33 needs K"),
+    ("G97 S100 M3\nG33.1 Z-10 K-1\n", "G33.1 K-1: the pitch"),
+    ("G97 S100 M3\nG17\nG76 P1 Z-10 I-1 J0.1 K0.6\n", "G76 threads in the XZ plane"),
+    ("G97 S100 M3\nG76 X10 P1 Z-10 I-1 J0.1 K0.6\n", "G76 takes no X word"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 R0.5\n", "R0.5: the depth degression must be at least 1"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 E6\n", "longer than half the drive line"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 H-2\n", "spring passes"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P-1 Z-10 I-1 J0.1 K0.6\n", "P-1: the pitch must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J-0.1 K0.6\n", "first cut depth must be greater than 0"),
+])
+def test_threading_errors_name_the_line(tmp_path: Path, job: str, message: str) -> None:
+    text = failure(tmp_path, job)
+    assert message in text and f"<string>:{job.count(chr(10))}:" in text
+
+
+def test_g76_in_diameter_mode_halves_i_j_k_and_ends_on_the_drive_line(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G97 S500 M3\nG0 X14 Z3\nG76 P1.5 Z-20 I-2 J0.4 K1.84\n")
+    cuts = [m for m in moves if m.sync]
+    assert cuts[0].end[0] == pytest.approx(7 - 1 - 0.2) and cuts[-1].end[0] == pytest.approx(7 - 1 - 0.92)
+    assert all(m.feed == pytest.approx(750.0) for m in cuts)
+    assert (moves[-1].end[0], moves[-1].end[2]) == (7.0, -20.0)
