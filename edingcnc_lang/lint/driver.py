@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -26,6 +26,7 @@ from .targets import applies, resolve
 SOURCE_SUFFIXES = frozenset({".cnc", ".nc", ".ngc", ".tap", ".txt"})
 CONFIG_SUFFIX = ".ini"
 MACRO_NAMES = ("macro.cnc", "user_macro.cnc")
+Reader = Callable[[Path, bool], SourceFile]  # (path, is a macro file) -> the parsed file
 _NOQA = re.compile(r";\s*noqa\b(?:\s*:\s*([A-Za-z0-9_]+(?:\s*,\s*[A-Za-z0-9_]+)*))?\s*$", re.IGNORECASE)
 
 
@@ -91,16 +92,16 @@ def macros_beside(folder: Path) -> tuple[Path, ...]:
 class _Loader:
     """Parses each file once, whether it is linted, a macro file, or both."""
 
-    def __init__(self, given_macros: Sequence[Path], texts: Mapping[Path, str]) -> None:
+    def __init__(self, given_macros: Sequence[Path], reader: Reader) -> None:
         self.given = tuple(given_macros)
-        self.texts = texts
+        self.reader = reader
         self.files: dict[Path, SourceFile] = {}
         self._folders: dict[Path, tuple[Path, ...]] = {}
 
     def load(self, path: Path, is_macro: bool) -> SourceFile:
         key = path.resolve()
         if key not in self.files:
-            self.files[key] = load_source(path, is_macro, self.texts.get(key))
+            self.files[key] = self.reader(path, is_macro)
         return self.files[key]
 
     def macros_for(self, path: Path) -> list[SourceFile]:
@@ -112,19 +113,19 @@ class _Loader:
 
 
 def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = LintOptions(),
-               texts: Mapping[str, str] | None = None) -> list[Diagnostic]:
+               reader: Reader = load_source) -> list[Diagnostic]:
     """Every finding in the files under ``paths``, filtered by the options, sorted by file and line.
 
     ``.ini`` files (given as paths or with ``--ini``) are checked as machine configurations; the
-    variables their kinematics writes count as written for V302.  ``texts`` holds the unsaved
-    contents of files open in an editor, by path: they are read instead of the disk.
+    variables their kinematics writes count as written for V302.  ``reader`` parses a file; the
+    language server passes one that reads the editor's unsaved text and keeps parsed files.
     """
     paths = [os.fspath(p) for p in paths]
     inis = [options.ini] if options.ini else [p for p in paths if p.lower().endswith(CONFIG_SUFFIX)]
     target = resolve(options.target, paths, inis[0] if inis else None)
     given = [Path(p) for p in (options.macro, options.user_macro) if p]
     given_resolved = {g.resolve() for g in given}
-    loader = _Loader(given, {Path(p).resolve(): text for p, text in (texts or {}).items()})
+    loader = _Loader(given, reader)
     found: list[Diagnostic] = []
     written: frozenset[int] = frozenset()
     targets: list[SourceFile] = []

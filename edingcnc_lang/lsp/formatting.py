@@ -30,7 +30,10 @@ def split_comment(line: str) -> tuple[str, str, bool]:
     return line, "", paren
 
 
-def _parsed(lines: Sequence[str]) -> tuple[tuple[n.Stmt, ...], str | None] | None:
+Parsed = tuple[tuple[n.Stmt, ...], "str | None"]  # a file's statements and its @unit
+
+
+def _parsed(lines: Sequence[str]) -> Parsed | None:
     reader = StatementReader(lines, "<format>")
     body = tuple(reader)
     return None if reader.diagnostics else (body, reader.unit)
@@ -55,13 +58,14 @@ def _printed(code: str) -> tuple[str | None, int]:
     return stmt_lines(result, 0)[0], 0
 
 
-def format_lines(lines: Sequence[str], indent: str = INDENT) -> list[str] | None:
+def format_lines(lines: Sequence[str], indent: str = INDENT, parsed: Parsed | None = None) -> list[str] | None:
     """The formatted lines (one for each line), or None when formatting is not safe.
 
     ``indent`` is one level (the editor's tab size); a comment after code stays in its column
-    when the code still ends before it.
+    when the code still ends before it.  ``parsed`` is the lines' tree when the caller has it
+    (parsed without errors).
     """
-    before = _parsed(lines)
+    before = parsed if parsed is not None else _parsed(lines)
     if before is None:
         return None
     out: list[str] = []

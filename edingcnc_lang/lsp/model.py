@@ -14,7 +14,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .. import nodes as n
+from ..cli.common import whole_trees
 from ..diagnostics import Diagnostic
+from ..errors import EcncError, Location
 from ..lint.driver import SOURCE_SUFFIXES, is_macro_name, lint_paths, macros_beside
 from ..lint.model import SourceFile, UnreadableFile, load_source
 from ..lint.names import TOOL_CHANGE_SUB
@@ -53,31 +55,38 @@ class LanguageModel:
     def __init__(self) -> None:
         self.texts: dict[str, str] = {}  # unsaved editor contents by absolute path
         self.roots: list[str] = []  # workspace folders, for workspace symbols
-        self._parsed: dict[str, tuple[object, SourceFile]] = {}
+        self._real: dict[str, str] = {}  # open documents by their real path (symbolic links resolved)
+        self._parsed: dict[tuple[str, bool], tuple[object, SourceFile]] = {}
 
     # ----------------------------------------------------------------- files
     def set_text(self, path: str, text: str | None) -> None:
         """The editor opened or changed ``path`` (text), or closed it (None: read the disk again)."""
         if text is None:
             self.texts.pop(path, None)
+            self._real.pop(os.path.realpath(path), None)
         else:
             self.texts[path] = text
+            self._real[os.path.realpath(path)] = path
 
-    def source(self, path: str) -> SourceFile | None:
-        """The parsed file (None when it cannot be read)."""
+    def source(self, path: str, is_macro: bool | None = None) -> SourceFile | None:
+        """The parsed file (None when it cannot be read); macro or job by its name unless told."""
+        macro = is_macro_name(Path(path)) if is_macro is None else is_macro
         text = self.texts.get(path)
+        if text is None and path not in self.texts and self._real:  # the same file by another name
+            text = self.texts.get(self._real.get(os.path.realpath(path), ""))
         try:
             stamp: object = text if text is not None else _stamp(path)
         except OSError:
             return None
-        cached = self._parsed.get(path)
+        cached = self._parsed.get((path, macro))
         if cached is not None and cached[0] == stamp:
             return cached[1]
         try:
-            parsed = load_source(path, is_macro_name(Path(path)), text)
+            with whole_trees():
+                parsed = load_source(path, macro, text)
         except (UnreadableFile, RecursionError):
             return None
-        self._parsed[path] = (stamp, parsed)
+        self._parsed[path, macro] = (stamp, parsed)
         return parsed
 
     def macros(self, path: str) -> list[SourceFile]:
@@ -109,7 +118,18 @@ class LanguageModel:
     # ----------------------------------------------------------------- checks
     def lint(self, path: str) -> list[Diagnostic]:
         """What ``ecnc lint PATH`` reports, for the editor's text of every open file."""
-        return [d for d in lint_paths([path], texts=self.texts) if d.path == path]
+        try:
+            with whole_trees():
+                found = lint_paths([path], reader=self._read)
+        except EcncError:  # a macro file beside it vanished while being read: lint again on the next change
+            return []
+        return [d for d in found if d.path == path]
+
+    def _read(self, path: Path, is_macro: bool) -> SourceFile:
+        found = self.source(os.fspath(path), is_macro)
+        if found is None:
+            raise UnreadableFile("cannot read", Location(os.fspath(path)))
+        return found
 
     # ----------------------------------------------------------------- subs and calls
     def project(self, path: str) -> tuple[SourceFile, Project] | None:

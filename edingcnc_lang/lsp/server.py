@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import asyncio
 import os
+from pathlib import Path
 from collections.abc import Sequence
 
 from lsprotocol import types as t
@@ -15,8 +16,10 @@ from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
 from .. import __version__
+from ..cli.common import whole_trees
 from ..codes import Severity
 from ..diagnostics import Diagnostic
+from ..lint.driver import is_macro_name
 from . import actions, completion, formatting, hover, navigation
 from .lexer import token_at
 from .model import LanguageModel, Place
@@ -36,10 +39,14 @@ class EcncServer(LanguageServer):
         self.model = LanguageModel()
         self.pending: dict[str, asyncio.TimerHandle] = {}
         self.shut_down = False  # the client asked for a shutdown before exit (exit code 0)
+        self.uris: dict[str, str] = {}  # the URI of each open document by path (also "untitled:" ones)
 
     # ----------------------------------------------------------------- helpers
     def path(self, uri: str) -> str:
-        return to_fs_path(uri) or uri
+        return (to_fs_path(uri) if uri.startswith("file:") else None) or uri
+
+    def uri(self, path: str) -> str:
+        return self.uris.get(path) or from_fs_path(path) or path
 
     def codec(self) -> PositionCodec:
         return self.workspace.position_codec
@@ -50,12 +57,15 @@ class EcncServer(LanguageServer):
 
     def server_position(self, uri: str, position: t.Position) -> tuple[str, int, int]:
         path = self.path(uri)
-        found = self.codec().position_from_client_units(self.lines(path), position)
+        lines = self.lines(path)
+        if position.line >= len(lines):  # past the end: nothing there (the codec would clamp it)
+            return path, position.line, position.character
+        found = self.codec().position_from_client_units(lines, position)
         return path, found.line, found.character
 
     def location(self, place: Place) -> t.Location:
         server = ServerTextRange(ServerTextPosition(place.line, place.start), ServerTextPosition(place.line, place.end))
-        return t.Location(from_fs_path(place.path) or place.path,
+        return t.Location(self.uri(place.path),
                           self.codec().range_to_client_units(self.lines(place.path), server))
 
     def client_range(self, path: str, line: int, start: int, end: int, end_line: int | None = None) -> t.Range:
@@ -92,9 +102,11 @@ class EcncServer(LanguageServer):
 
     def relint_folder(self, path: str) -> None:
         """After a change to a macro file, the open files beside it may resolve differently."""
+        if not is_macro_name(Path(path)):
+            return
         for other in self.model.texts:
             if other != path and os.path.dirname(other) == os.path.dirname(path):
-                self.schedule_lint(from_fs_path(other) or other)
+                self.schedule_lint(self.uri(other))
 
 
 server = EcncServer()
@@ -113,6 +125,7 @@ def _shutdown(ls: EcncServer, _params: None) -> None:
 @server.feature(t.TEXT_DOCUMENT_DID_OPEN)
 def _did_open(ls: EcncServer, params: t.DidOpenTextDocumentParams) -> None:
     path = ls.path(params.text_document.uri)
+    ls.uris[path] = params.text_document.uri
     ls.model.set_text(path, params.text_document.text)
     ls.schedule_lint(params.text_document.uri, 0)
     ls.relint_folder(path)
@@ -136,6 +149,7 @@ def _did_save(ls: EcncServer, params: t.DidSaveTextDocumentParams) -> None:
 def _did_close(ls: EcncServer, params: t.DidCloseTextDocumentParams) -> None:
     uri = params.text_document.uri
     ls.model.set_text(ls.path(uri), None)
+    ls.uris.pop(ls.path(uri), None)
     pending = ls.pending.pop(uri, None)
     if pending is not None:
         pending.cancel()
@@ -211,9 +225,14 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
 @server.feature(t.TEXT_DOCUMENT_FORMATTING)
 def _formatting(ls: EcncServer, params: t.DocumentFormattingParams) -> list[t.TextEdit] | None:
     path = ls.path(params.text_document.uri)
-    lines = ls.lines(path)
+    file = ls.model.source(path)
+    if file is None or file.parse_errors:  # only a file that parses is formatted
+        return None
+    lines = file.lines
     options = params.options
-    formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t")
+    with whole_trees():
+        formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t",
+                                            (file.body, file.unit))
     if formatted is None:
         return None
     return [t.TextEdit(range=ls.client_range(path, number, 0, len(old)), new_text=new)

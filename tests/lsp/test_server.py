@@ -300,3 +300,28 @@ def test_formatting_refuses_a_file_with_errors(client: LspClient, folder: Path) 
     path = folder / "broken.nc"
     path.write_text("g01 x1\nIf [#1 == 1]\n")
     assert format_request(client, client.open(path)) is None
+
+
+# --------------------------------------------------------------------------- what editors really send
+
+
+def test_untitled_document_is_checked_and_navigated(client: LspClient) -> None:
+    uri = "untitled:Untitled-1"
+    client.notify("textDocument/didOpen", {"textDocument": {
+        "uri": uri, "languageId": "edingcnc", "version": 1, "text": "G0 X1+2\nGoSub a\nSub a\nEndSub\n"}})
+    assert codes(client.diagnostics(uri)) == [(1, "E105")]
+    assert client.request("textDocument/definition", at(uri, 1, 7)) == {
+        "uri": uri, "range": {"start": {"line": 2, "character": 4}, "end": {"line": 2, "character": 5}}}
+    assert client.request("textDocument/hover", at(uri, 40, 1)) is None  # past the end
+
+
+def test_incremental_changes_and_utf16_columns(client: LspClient, folder: Path) -> None:
+    uri = client.open(folder / "job.nc", "G0 X1\n")
+    assert client.diagnostics(uri) == []
+    client.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": 2}, "contentChanges": [
+        {"range": {"start": {"line": 0, "character": 5}, "end": {"line": 0, "character": 5}}, "text": "+5"}]})
+    assert codes(client.diagnostics(uri)) == [(1, "E105")]
+    client.change(uri, "(MSG Maß 😀) G0 X1+5\n", 3)  # the emoji is two UTF-16 units
+    found = client.diagnostics(uri)
+    assert found[0]["range"]["start"] == {"line": 0, "character": 16}  # X is code point 15
+    assert "**G0**" in hover(client, uri, 0, 14)
