@@ -162,9 +162,25 @@ class Run:
                 self.options.on_warning(warning)
         return n.Program(reader.path, body, reader.unit)
 
+    def load_macros(self) -> list[tuple[Path, n.Program]]:
+        """The macro files, loaded, in lookup order."""
+        return [(path, self.load_macro(path)) for path in self.macro_files()]
+
+    def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
+        """What happens before a job's first line (and before an MDI session's): the macro files'
+        subs are defined and their top-level lines run, then the ini's initialString."""
+        interp = self.interpreter
+        for _path, program in macros:
+            interp.define_subs(program.subs.values())
+        for _path, program in reversed(macros):  # top-level statements of macro files run once at load
+            # (prose between subs is never executed: the controller only runs a macro file's subs)
+            interp.run(stmt for stmt in program.body if not isinstance(stmt, n.BadLine))
+        if self.config.initial_string:
+            interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+
     def execute_file(self, job: Path) -> RunResult:
         checked = check_file(job)
-        macros = [(path, self.load_macro(path)) for path in self.macro_files()]
+        macros = self.load_macros()
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
                              checked.subs, macros)
 
@@ -172,22 +188,16 @@ class Run:
         reader = StatementReader(iter_text_lines(text), path, check_dialogs=True)
         program = n.Program(path, tuple(reader), reader.unit)
         reader.raise_errors()
-        macros = [(p, self.load_macro(p)) for p in self.macro_files()]
+        macros = self.load_macros()
         return self._execute(lambda: program.body, program.subs, macros)
 
     def _execute(self, statements: Callable[[], Iterable[n.Stmt]], job_subs: dict[str, n.Sub],
                  macros: Sequence[tuple[Path, n.Program]]) -> RunResult:
         interp = self.interpreter
         interp.define_subs(job_subs.values())
-        for _path, program in macros:
-            interp.define_subs(program.subs.values())
         error: EcncError | None = None
         try:
-            for _path, program in reversed(macros):  # top-level statements of macro files run once at load
-                # (prose between subs is never executed: the controller only runs a macro file's subs)
-                interp.run(stmt for stmt in program.body if not isinstance(stmt, n.BadLine))
-            if self.config.initial_string:
-                interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+            self.start(macros)
             if "start" in interp.subs:
                 interp.call_sub("start")
             interp.run(statements())

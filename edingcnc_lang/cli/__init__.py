@@ -18,6 +18,7 @@ from .. import __version__
 from ..errors import EXIT_OK, EcncError, Interrupted, JobAborted, Location, UsageFailure
 from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error, usage_message
 from .streams import flush_quietly, make_streams_usable, quiet_stdout
+from .style import styled
 
 # What click exits with on a closed output pipe; scripts may rely on it.
 EXIT_ABORTED = 1
@@ -28,6 +29,7 @@ COMMANDS = {
     "kins": "kins_cmd:kins",
     "lint": "lint_cmd:lint",
     "lsp": "lsp_cmd:lsp",
+    "mdi": "mdi_cmd:mdi",
     "parse": "parse_cmd:parse",
     "plot": "plot_cmd:plot",
     "run": "run_cmd:run",
@@ -107,7 +109,7 @@ def report(err: EcncError, as_json: bool, to_stderr: bool = True) -> int:
         except OSError:  # stdout is the trouble itself: stderr tells
             pass
     if to_stderr and not isinstance(err, JobAborted):
-        print(err.format(), file=sys.stderr)
+        print(styled(err.format(), sys.stderr), file=sys.stderr)
     return err.exit_code
 
 

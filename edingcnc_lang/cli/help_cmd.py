@@ -30,11 +30,17 @@ def help_command(ctx: click.Context, topic: tuple[str, ...]) -> int:
 
 
 def explain_or_fail(code: str) -> str:
-    """The explanation of ``code``, or a usage error that points to the list of codes."""
+    """The explanation of lint ``code``, else of a G/M code, parameter, command or function of the
+    language (the table hover and completion use), or a usage error that points to the lists."""
     from ..lint import UnknownCode
     from ..lint.explain import explain
 
     try:
         return explain(code)
     except UnknownCode:
-        raise usage_error(f"no command or lint code {code!r} (see ecnc --help and ecnc lint --list-codes)") from None
+        from ..knowledge import describe
+
+        text = describe(code)
+        if text is None:
+            raise usage_error(f"no command or lint code {code!r} (see ecnc --help and ecnc lint --list-codes)") from None
+        return text

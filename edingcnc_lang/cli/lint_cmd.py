@@ -1,16 +1,19 @@
 """``ecnc lint PATH...``: report mistakes in macro files, jobs and cnc.ini without running them."""
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING
 
 import click
 
 from ..errors import EXIT_FINDINGS, EXIT_OK
+from . import progress
 from .base import Command, usage_error
 from .common import whole_trees
 from .options import ini_option, macro_options
 from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN
 from .streams import STDIN_NAME, read_stdin
+from .style import styled
 
 if TYPE_CHECKING:
     from ..diagnostics import Diagnostic
@@ -37,14 +40,16 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
 @click.option("--no-source", is_flag=True, help="Text format: leave out the source line and caret.")
 @click.option("--list-codes", "show_codes", is_flag=True, help="Print every code with its severity and summary.")
 @click.option("--explain", metavar="CODE", type=LINT_CODE, help="Print the long explanation of CODE (as ecnc help CODE).")
+@click.option("-q", "--quiet", is_flag=True, help="No progress line on stderr (shown on a terminal after a second).")
 def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini: str | None, fmt: str,
          select: tuple[str, ...], ignore: tuple[str, ...], target: str | None, no_source: bool,
-         show_codes: bool, explain: str | None) -> int:
+         show_codes: bool, explain: str | None, quiet: bool) -> int:
     """Check PATHs (files, or folders of *.cnc *.nc *.ngc *.tap *.txt); exit 1 if anything is found.
 
     PATH - reads a job from standard input (its macro files: --macro, --user-macro).
     """
     from ..lint import LintOptions, lint_paths
+    from ..lint.driver import expand
     from ..lint.formats import FORMATS, list_codes
 
     if show_codes:
@@ -58,11 +63,13 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
     if not paths and not ini:
         raise usage_error("give at least one file or folder to lint")
     options = LintOptions(macro, user_macro, ini, select, ignore, target)
-    with whole_trees():
+    show = progress.wanted(quiet)
+    count = len(expand(p for p in paths if p != STDIN)) if show else 0
+    with whole_trees(), progress.Progress(lambda: (0, 0, f"checking {count:,} files"), show):
         findings = _lint_with_stdin(paths, options) if STDIN in paths else lint_paths(list(paths), options)
     output = FORMATS[fmt](findings, not no_source)
     if output or fmt != "text":
-        print(output)
+        print(styled(output, sys.stdout) if fmt == "text" else output)
     return EXIT_FINDINGS if findings else EXIT_OK
 
 

@@ -102,7 +102,9 @@ class MachineOptions:
 def print_message(kind: str, text: str, path: str, line: int) -> None:
     """A message of the job on stderr: ``PATH:LINE: msg|warning|error|log: TEXT``."""
     if kind in MESSAGE_LABEL:
-        print(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", file=sys.stderr)
+        from .style import styled
+
+        print(styled(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", sys.stderr), file=sys.stderr)
 
 
 def print_warning(diagnostic: Diagnostic) -> None:

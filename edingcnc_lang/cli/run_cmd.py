@@ -2,14 +2,19 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
 from ..errors import EXIT_OK
+from . import progress
 from .base import Command, usage_error
 from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options
 from .params import OUTPUT_FILE, STDIN
 from .streams import STDIN_NAME, read_stdin
+
+if TYPE_CHECKING:
+    from ..runner import Run
 
 
 @click.command("run", cls=Command, short_help="Run JOB as the controller would (in simulation).")
@@ -21,13 +26,14 @@ from .streams import STDIN_NAME, read_stdin
 @click.option("--events", metavar="FILE", type=OUTPUT_FILE,
               help="Write every move (with its spindle speed) and event as JSON Lines.")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
+@click.option("-q", "--quiet", is_flag=True, help="No progress line on stderr (shown on a terminal after a second).")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
-        events: str | None, save_vars: bool) -> int:
+        events: str | None, save_vars: bool, quiet: bool) -> int:
     """Run JOB as the controller would (in simulation) and report what the machine does.
 
     JOB - reads the job from standard input.
     """
-    from ..runner import run_file, run_string
+    from ..runner import Run
 
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
@@ -35,9 +41,27 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
                                   samples=Path(samples) if samples else None,
                                   events=Path(events) if events else None, save_vars=save_vars)
     # an error carries the state so far: main() prints it with --json
-    result = run_string(read_stdin(), options, STDIN_NAME) if job == STDIN else run_file(job, options)
+    run = Run(options)
+    if job == STDIN:
+        result = run.execute_text(read_stdin(), STDIN_NAME)
+    else:
+        show = progress.wanted(quiet or as_json)
+        with progress.Progress(_probe(run, job, progress.count_lines(job) if show else 0), show):
+            result = run.execute_file(Path(job))
     if as_json:
         import json  # only with --json: a short run starts faster without it
 
         print(json.dumps(result.to_json(), indent=1))
     return EXIT_OK
+
+
+def _probe(run: Run, job: str, total: int) -> progress.Probe:
+    """How far the run is: the job line reached (lines of macro subs keep the caller's), moves so far."""
+    path, reached = str(Path(job)), [0]
+
+    def probe() -> tuple[int, int, str]:
+        interp = run.interpreter
+        if interp.path == path:
+            reached[0] = interp.line
+        return reached[0], total, f"line {reached[0]:,}/{total:,}  moves {run.motion.moves:,}"
+    return probe

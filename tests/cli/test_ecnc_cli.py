@@ -164,7 +164,7 @@ def test_ctrl_c_outside_a_run_exits_130(job: Path, monkeypatch: pytest.MonkeyPat
     def interrupted(*_args: object) -> None:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(edingcnc_lang.runner, "run_file", interrupted)
+    monkeypatch.setattr(edingcnc_lang.runner.Run, "execute_file", interrupted)
     result = invoke("run", job)
     assert (result.exit_code, result.stdout, result.stderr) == (130, "", "\nerror: interrupted (Ctrl-C)\n")
     result = invoke("run", "--json", job)

@@ -68,4 +68,15 @@ def test_every_grammar_command_is_in_the_table() -> None:
         names |= set(alternatives.group(1).split("|"))
     names |= {"dlgmsg", "logfile", "home", "hometandem", "kin", "preparelindeltahome"}
     for name in names:
-        assert knowledge.word(name) is not None, name
+        assert knowledge.word(name) is not None, f"add a row for {name} to edingcnc_lang/knowledge/commands.py"
+
+
+def test_ecnc_help_explains_language_words_from_the_table() -> None:
+    from tests.cli_runner import invoke
+
+    for topic in ("G38.2", "m6", "#5067", "dlgmsg"):
+        result = invoke("help", topic)
+        assert result.exit_code == 0 and result.stdout.strip() == knowledge.describe(topic)
+    assert invoke("lint", "--explain", "G1").stdout.startswith("G1: straight feed move")
+    assert invoke("help", "G503").stdout.startswith("G503 (error)")  # the lint code wins
+    assert invoke("help", "G999").exit_code == 2

@@ -1,0 +1,120 @@
+"""``ecnc mdi``: an MDI prompt on the virtual machine, like the controller's MDI line.
+
+Each line typed runs at once; after a move the work and machine positions are printed; a line
+that is only an expression or ``#n`` prints its value; an error prints its message and the prompt
+goes on; ``If``/``While``/``Sub`` blocks are read until closed.  On a terminal the standard
+library's readline gives editing and history (kept in ``~/.ecnc_mdi_history``); from a pipe
+there is no prompt and each line's output follows it, so sessions can be scripted.
+"""
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+import click
+
+from ..errors import EXIT_OK, EcncError
+from .base import Command
+from .options import MachineOptions, machine_options
+from .style import styled
+
+if TYPE_CHECKING:
+    from ..canon import Pose
+    from ..mdi import MdiOutcome
+
+PROMPT, MORE = "MDI> ", "...> "
+EXIT_WORDS = {"exit", "quit"}
+HISTORY = os.path.join("~", ".ecnc_mdi_history")
+
+
+@click.command("mdi", cls=Command, short_help="An MDI prompt: each line typed runs at once on the virtual machine.")
+@machine_options
+def mdi(machine: MachineOptions) -> int:
+    """An MDI prompt on the virtual machine of --ini, --macro and --user-macro.
+
+    Type G-code or macro statements (GoSub reaches the subs of the macro files); a line that is
+    only an expression or #n prints its value. exit, quit or end of input (Ctrl-D) ends it. From
+    a pipe there is no prompt; the exit status is then that of the first failing line (0 if none).
+    """
+    from ..mdi import MdiSession, open_blocks
+
+    interactive = sys.stdin.isatty() and sys.stdout.isatty()
+    session = MdiSession(machine.run_options(show_messages=True))
+    if interactive:
+        _history(load=True)
+        print("ecnc mdi: G-code, macro statements or an expression; exit or Ctrl-D ends.")
+    status, pending = EXIT_OK, []
+    for line in _lines(interactive, lambda: MORE if pending else PROMPT):
+        if line is None:  # Ctrl-C at the prompt: drop what was typed
+            pending = []
+            continue
+        if not pending and line.strip().lower() in EXIT_WORDS:
+            break
+        pending.append(line)
+        if open_blocks(pending):
+            continue
+        text, pending = "\n".join(pending), []
+        try:
+            _show(session.execute(text))
+        except EcncError as err:
+            print(styled(err.format(), sys.stderr), file=sys.stderr)
+            status = status or err.exit_code
+        except KeyboardInterrupt:
+            print(styled(session.interrupted().format(), sys.stderr), file=sys.stderr)
+    if pending:
+        print(f"<mdi>: error: input ended inside a block ({len(pending)} lines not run)", file=sys.stderr)
+        status = status or 65
+    session.close()
+    if interactive:
+        _history(load=False)
+    return EXIT_OK if interactive else status
+
+
+def _lines(interactive: bool, prompt: object) -> Iterator[str | None]:
+    """Typed lines (None after Ctrl-C at the prompt), or the lines of the pipe."""
+    if not interactive:
+        for line in sys.stdin:
+            yield line.rstrip("\r\n")
+        return
+    while True:
+        try:
+            yield input(prompt())  # type: ignore[operator]
+        except KeyboardInterrupt:
+            print()
+            yield None
+        except EOFError:
+            print()
+            return
+
+
+def _show(outcome: MdiOutcome) -> None:
+    if outcome.value is not None:
+        print(f"= {outcome.value:.10g}")
+    elif outcome.moved:
+        print(f"work    {_pose(outcome.position)}\nmachine {_pose(outcome.machine)}")
+    if outcome.ended:
+        print("(program end: the machine keeps its position and state)")
+
+
+def _pose(values: Pose) -> str:
+    return " ".join(f"{axis}{value:.4f}" for axis, value in zip("XYZABC", values))
+
+
+def _history(load: bool) -> None:
+    """Line editing and history through readline, where the platform has it."""
+    try:
+        import readline
+    except ImportError:  # Windows without pyreadline: plain input()
+        return
+    path = os.path.expanduser(HISTORY)
+    try:
+        if load:
+            if os.path.exists(path):
+                readline.read_history_file(path)
+        else:
+            readline.set_history_length(1000)
+            readline.write_history_file(path)
+    except OSError:  # an unreadable or unwritable history file only loses the history
+        pass
