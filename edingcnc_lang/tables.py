@@ -110,6 +110,7 @@ SPINDLE_ON = 5152
 G28_HOME = 5161            # ..5166
 G30_HOME = 5181            # ..5186
 G68_ACTIVE = 5190          # 5191..5193 pivot, 5194..5196 angles
+SCALING_ACTIVE = 5200      # G51: 5201..5203 centre (work X Y Z), 5204..5206 factors X Y Z
 G92_OFFSET = 5211          # ..5216
 COORD_SYSTEM = 5220        # 1..9
 COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + i

@@ -4,7 +4,8 @@
 Each program in tests/golden/linuxcnc/programs is copied into a fresh temporary directory with
 every line prefixed by ``N<line number>`` (rs274 reports a block's N word, not its source line)
 and assignments to machine-unit parameters rescaled from mm to rs274's inches, next to a zeroed
-parameter file and an empty tool table, so no state leaks between programs.
+parameter file and the tool table of tests/golden/linuxcnc/tools.ini (diameters in mm there,
+written in inches for rs274, which has no ini), so no state leaks between programs.
 The canonical commands are folded into machine-coordinate moves in millimetres. The committed
 JSON is what the test suite uses; LinuxCNC is only needed to regenerate it.
 """
@@ -25,6 +26,9 @@ from typing import Any, Callable
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAMS = ROOT / "tests" / "golden" / "linuxcnc" / "programs"
 EXPECTED = ROOT / "tests" / "golden" / "linuxcnc" / "expected"
+TOOLS = ROOT / "tests" / "golden" / "linuxcnc" / "tools.ini"
+TOOL_SECTION = re.compile(r"^\s*\[TOOL_(\d+)\]\s*$", re.IGNORECASE)
+DIAMETER = re.compile(r"^\s*diameter\s*=\s*([-+0-9.eE]+)\s*$", re.IGNORECASE)
 MM_PER_INCH = 25.4
 DIGITS = 6
 
@@ -249,6 +253,19 @@ def var_file() -> str:
     return "".join(f"{number}\t{value:.6f}\n" for number, value in sorted(values.items()))
 
 
+def tool_table() -> str:
+    """rs274's tool table (``T<n> P<n> D<inches>``) from the [TOOL_n] diameters (mm) of tools.ini."""
+    diameters: dict[int, float] = {}
+    tool = None
+    for text in TOOLS.read_text().splitlines():
+        section, diameter = TOOL_SECTION.match(text), DIAMETER.match(text)
+        if section:
+            tool = int(section[1])
+        elif diameter and tool is not None:
+            diameters[tool] = float(diameter[1])
+    return "".join(f"T{n} P{n} D{d / MM_PER_INCH:.12f} ;\n" for n, d in sorted(diameters.items()))
+
+
 @dataclass(frozen=True)
 class GoldenSet:
     """A folder of programs and how its goldens are made (the lathe script defines another set)."""
@@ -314,7 +331,8 @@ def expected_json(data: dict[str, Any]) -> str:
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
 
 
-LINUXCNC = GoldenSet(PROGRAMS, EXPECTED, lambda program: rs274_source(program.read_text()), fold, document)
+LINUXCNC = GoldenSet(PROGRAMS, EXPECTED, lambda program: rs274_source(program.read_text()), fold, document,
+                     tool_table())
 
 
 def find_rs274() -> str:

@@ -25,7 +25,7 @@ ARC_KEYS = {"line", "kind", "end", "center", "plane", "turn"}
 STRAIGHT_KEYS = {"line", "kind", "end"}
 # Words outside the subset both dialects share (docs/goldens.md lists the reasons).
 FORBIDDEN_WORDS = re.compile(
-    r"\b(G4[1-3](\.\d)?|G38(\.\d)?|G33(\.\d)?|G76|G52|G0?5(\.\d)?\b|G7\b|G8\b|G64|M0?6\b|O\d+)",
+    r"\b(G43(\.\d)?|G38(\.\d)?|G33(\.\d)?|G76|G52|G0?5(\.\d)?\b|G7\b|G8\b|G64|M0?6\b|O\d+)",
     re.IGNORECASE,
 )
 ARC_WITH_P = re.compile(r"\bG0?[23]\b[^(]*\bP", re.IGNORECASE)

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 from .. import nodes as n
 from .. import tables as t
 from ..canon import AXES, PLANES, Event
-from .state import G_40, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
+from .state import G_91, G_93, G_99, MachineState, PLANE_OF, format_value
 
 if TYPE_CHECKING:
     from ..cycles import Step
@@ -34,8 +34,7 @@ class CannedCycles(MachineState):
             raise self.fail("canned cycles cannot move rotary axes", span)
         if self.modal["feed_mode"] == G_93:
             raise self.fail("canned cycles are not allowed in inverse time mode (G93)", span)
-        if self.modal["cutter_comp"] != G_40:
-            raise self.fail("canned cycles are not allowed with cutter compensation on (G41/G42)", span)
+        self.refuse_with_comp("a canned cycle", span)
         for needed in ("R", "Z"):
             if needed not in sticky:
                 raise self.fail(f"{t.code_name('G', motion)} needs {needed if needed == 'R' else drill}", span)

@@ -16,18 +16,20 @@ from . import bulk, commands, flow, line, messages
 from .bulk import BulkPath
 from .canned import CannedCycles
 from .commands import Commands
+from .compensation import CompensationSteps
 from .flow import ControlFlow
 from .line import LineWords
 from .messages import Messages
 from .moves import Moves
 from .offsets import CoordinateSystems
+from .scaling import Scaling
 from .spindle_modes import SpindleModes
 from .steps import LineSteps
 from .threads import Threading
 
 
-class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CoordinateSystems, Moves, CannedCycles,
-                  Threading, BulkPath, Messages, Commands):
+class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, Scaling, CoordinateSystems,
+                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 
@@ -37,8 +39,7 @@ Interpreter._EXECUTE = {kind: getattr(Interpreter, name)
                         for kind, name in part.STATEMENTS.items()}
 
 # Steps that share one method: the modal groups whose step only records the code.
-_STEP_ALIASES = {"plane": "modal", "units": "modal", "cutter_comp": "modal", "path_control": "modal",
-                 "distance": "modal", "return_mode": "modal"}
+_STEP_ALIASES = {"units": "modal", "path_control": "modal", "distance": "modal", "return_mode": "modal"}
 Interpreter._LINE_STEPS = tuple(
     (getattr(Interpreter, f"_step_{_STEP_ALIASES.get(name, name)}"), source, key)
     for name, source, key in t.ORDER_OF_EXECUTION)

@@ -9,7 +9,7 @@ from .. import tables as t
 from ..canon import PLANES, Arc
 from ..geometry import ArcError, center_from_radius, check_radius, sweep
 from .state import (
-    AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_40, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
+    AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_51, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
     MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
 )
 from .threads import SYNC_MOTION
@@ -36,7 +36,8 @@ class Moves(MachineState):
             if motion in UNSUPPORTED_MOTION:
                 raise self.fail(f"{t.code_name('G', motion)} is not supported by this simulator", span)
             self.modal["motion"] = motion
-        elif not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68:
+        elif (not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68
+              or g.get("scaling") == G_51):  # their X Y are a pivot or factors, not a target
             if g53:
                 raise self.fail("G53 needs an axis word and G0 or G1", span)
             return
@@ -45,8 +46,8 @@ class Moves(MachineState):
             raise self.fail("axis words without a motion mode: G80 is active, add G0 or G1", span)
         if g53 and motion not in (G_0, G_1):
             raise self.fail("G53 moves in machine coordinates only with G0 or G1", span)
-        if g53 and self.modal["cutter_comp"] != G_40:
-            raise self.fail("G53 is not allowed while cutter compensation (G41/G42) is on", span)
+        if g53:
+            self.refuse_with_comp("G53", span)
         if motion in t.CANNED_CYCLES:
             self._cycle(motion, words, span, new_sequence=previous != motion)
         elif motion in SYNC_MOTION:
@@ -149,6 +150,7 @@ class Moves(MachineState):
         return target
 
     def _probe(self, target: list[float], words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp("probing (G38.2)", span)
         if any(abs(target[i] - self.pos[i]) > 1e-9 for i in range(3, 6)):
             raise self.fail("G38.2 cannot move a rotary axis", span)
         if self.modal["feed_mode"] == G_93:

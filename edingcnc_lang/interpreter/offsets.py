@@ -141,6 +141,7 @@ class CoordinateSystems(MachineState):
             self.params.set(t.coord_offset_param(system, axis), number)
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp(t.code_name("G", code), span)
         base = t.G28_HOME if code == G_28 else t.G30_HOME
         axes = self._axis_values(words)
         if axes:  # the intermediate point, in the current coordinates
@@ -164,6 +165,7 @@ class CoordinateSystems(MachineState):
             self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
 
     def _g92(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp(t.code_name("G", code), span)
         axes = self._axis_values(words)
         if not axes:
             raise self.fail("G92 needs at least one axis word", span)
@@ -179,16 +181,19 @@ class CoordinateSystems(MachineState):
         self._offset = None
 
     def _g92_1(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp(t.code_name("G", code), span)
         for axis in range(6):
             self.params.set(t.G92_OFFSET + axis, 0.0)
         self.g92_active = False
         self._offset = None
 
     def _g92_2(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp(t.code_name("G", code), span)
         self.g92_active = False
         self._offset = None
 
     def _g92_3(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        self.refuse_with_comp(t.code_name("G", code), span)
         self.g92_active = True
         self._offset = None
 

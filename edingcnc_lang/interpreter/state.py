@@ -50,6 +50,9 @@ G_28 = G(28)
 G_30 = G(30)
 G_38_2 = G(38.2)
 G_40 = G(40)
+G_41 = G(41)
+G_41_1 = G(41.1)
+G_42_1 = G(42.1)
 G_43_1 = G(43.1)
 G_49 = G(49)
 G_51 = G(51)
@@ -150,6 +153,7 @@ class MachineState:
         self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
         self.g92_active = False
         self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
+        self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}
@@ -199,6 +203,12 @@ class MachineState:
 
     def fail(self, message: str, span: n.Span | None = None) -> MachineError:
         return MachineError(message, self.where(span))
+
+    def refuse_with_comp(self, what: str, span: n.Span | None) -> None:
+        """``what`` is refused while cutter compensation is on (as LinuxCNC does)."""
+        if self.modal["cutter_comp"] != G_40:
+            raise self.fail(f"{what} is not allowed while cutter compensation (G41/G42) is on; "
+                            "turn it off with G40 first", span)
 
     def spend(self, steps: int, span: n.Span | None = None) -> None:
         """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""

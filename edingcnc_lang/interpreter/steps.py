@@ -8,7 +8,7 @@ from .. import tables as t
 from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
-    G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_51, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
     format_value,
 )
 
@@ -35,6 +35,7 @@ class LineSteps(MachineState):
         self.selected_tool = int(value)
 
     def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self.refuse_with_comp("a tool change (M6)", span)
         self._tool_change(span)
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -55,7 +56,7 @@ class LineSteps(MachineState):
             self._dwell(words, span)
 
     def _step_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        """Plane, units, cutter compensation, path control, distance and return mode: state only."""
+        """Units, path control, distance and return mode: state only."""
         self.modal[t.G_GROUPS[code]] = code
 
     def _step_length_offset(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
@@ -64,14 +65,12 @@ class LineSteps(MachineState):
 
     def _step_coord_system(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
+        if code != self.modal["coord_system"]:
+            self.refuse_with_comp(f"changing the coordinate system ({t.code_name('G', code)})", span)
         self._select_coord_system(code)
 
     def _step_rotation(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._rotation(code, words, span)
-
-    def _step_scaling(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        if code == G_51:
-            raise self.fail("G51 scaling is not supported", span)
 
     def _step_non_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         handler = NON_MODAL.get(code)
@@ -121,6 +120,7 @@ class LineSteps(MachineState):
 
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
+        self.refuse_with_comp(f"changing the tool length offset ({t.code_name('G', code)})", span)
         self.tool_x = 0.0
         if code == G_49:
             self.tool_z = 0.0
@@ -152,6 +152,7 @@ class LineSteps(MachineState):
         self.spindle = 5
         self.coolant = set()
         self.params.set(t.SPINDLE_ON, 0.0)
+        self.scaling_off()
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()

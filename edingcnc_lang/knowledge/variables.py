@@ -41,6 +41,9 @@ ROWS: tuple[Row, ...] = (
     (5190, 5190, "G68 rotation active", "1 while G68 is on."),
     (5191, 5193, "G68 pivot {axis}", "The pivot of the G68 rotation."),
     (5194, 5196, "G68 angle {n}", "The angles of the G68 rotation."),
+    (5200, 5200, "G51 scaling active", "1 while G51 scaling is on."),
+    (5201, 5203, "G51 scaling centre {axis}", "The centre of the G51 scaling, work coordinates (Z is 0)."),
+    (5204, 5206, "G51 scale factor {axis}", "The G51 factors; Z is always 1."),
     (5211, 5216, "G92 offset {axis}", "The G92 offsets."),
     (5220, 5220, "active coordinate system", "1..9: 1 = G54 ... 9 = G59.3."),
     *((5221 + 20 * k, 5226 + 20 * k, f"{name} offset {{axis}}", f"Work offset of coordinate system {k + 1}.")

@@ -8,8 +8,10 @@ never the interpreter or the motion stage.
 from __future__ import annotations
 
 from .base import LookaheadStage, Pipeline, Stage, StageFactory
+from .cutter_comp import CutterCompensation
+from .scaling import Scaling
 
 # First to last: the interpreter emits into the first; the last hands on to the motion stage.
-STAGES: tuple[StageFactory, ...] = ()
+STAGES: tuple[StageFactory, ...] = (Scaling, CutterCompensation)
 
 __all__ = ["STAGES", "LookaheadStage", "Pipeline", "Stage", "StageFactory"]

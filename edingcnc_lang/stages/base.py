@@ -12,10 +12,17 @@ or end event, before any kinematics call, at the end of the run and when the run
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from ..canon import Canon, Event, Move, Pose
 from ..config import MachineConfig
+
+def each_move(path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> Iterator[Move]:
+    """A ``straight_moves`` batch as single moves, each starting where the one before ended."""
+    for kind, line, end, feed in batch:
+        yield Move(kind, path, line, start, end, feed)
+        start = end
+
 
 # Events after which the machine must have finished every move programmed before them.
 FLUSHING_EVENTS = frozenset({"end", "pause"})
@@ -78,9 +85,8 @@ class LookaheadStage(Stage):
         if not self.active and self.held is None:
             self.next.straight_moves(path, start, batch)
             return
-        for kind, line, end, feed in batch:
-            self.move(Move(kind, path, line, start, end, feed))
-            start = end
+        for move in each_move(path, start, batch):
+            self.move(move)
 
     def event(self, event: Event) -> None:
         if self.held is None:

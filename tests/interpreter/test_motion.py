@@ -399,7 +399,7 @@ LINE_ERRORS = [
     ("G12 X1\n", "unknown G code", "job.nc:1:1"),
     ("F-5\n", "negative feed", "job.nc:1:1"),
     ("G4\n", "G4", "job.nc:1:1"),
-    ("G51 X2\n", "G51", "job.nc:1:1"),
+    ("G51\n", "G51 needs a factor", "job.nc:1:1"),
 ]
 
 

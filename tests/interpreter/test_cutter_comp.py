@@ -1,0 +1,95 @@
+"""Cutter radius compensation end to end: where the radius comes from, what is refused and where."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang.canon import Move
+from edingcnc_lang.errors import MachineError
+from edingcnc_lang.runner import RunOptions, run_file, run_string
+
+EMPTY_MACRO = Path(__file__).parent / "data" / "empty_macro.cnc"
+SQUARE = "G0 X-10 Y-10\n{on}\nG1 X0 Y0 F600\nG1 X20\nG1 Y20\nG1 X0\nG1 Y0\nG40\nG1 X-10 Y-10\nM30\n"
+TOOLS = "[TOOL_1]\ndiameter = 4\n[TOOL_2]\ndiameter = 10\n"
+
+
+def xy_ends(source: str, tmp_path: Path | None = None, **options: object) -> list[tuple[int, float, float]]:
+    moves: list[Move] = []
+    if tmp_path is not None:
+        ini = tmp_path / "cnc.ini"
+        ini.write_text(TOOLS)
+        options["ini"] = ini
+    run_string(source, RunOptions(macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m), **options),
+               path="job.nc")  # type: ignore[arg-type]
+    return [(m.line, round(m.end[0], 4) + 0.0, round(m.end[1], 4) + 0.0) for m in moves]
+
+
+def error_of(source: str, tmp_path: Path) -> MachineError:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text(TOOLS)
+    with pytest.raises(MachineError) as err:
+        run_string(source, RunOptions(macro=EMPTY_MACRO, ini=ini), path="job.nc")
+    return err.value
+
+
+@pytest.mark.parametrize("on", ["G41 D1", "#5008 = 1\nG41", "G10 L1 P5 R2\nG41 D5", "#5505 = 4\nG41 D5", "G41.1 D4"])
+def test_the_radius_comes_from_the_tool_table_g10_parameters_or_d(on: str, tmp_path: Path) -> None:
+    moves = xy_ends(SQUARE.format(on=on), tmp_path)
+    assert (moves[-2][1], moves[-2][2]) == (2.0, 0.0)  # inside the square by the 2 mm radius
+
+
+def test_inch_diameter_with_g41_1(tmp_path: Path) -> None:
+    moves = xy_ends("G20\n" + SQUARE.format(on="G41.1 D0.1").replace("X20", "X1").replace("Y20", "Y1"))
+    assert moves[-2][1:] == (1.27, 0.0)
+
+
+def test_subs_and_expressions_between_compensated_moves() -> None:
+    job = ("#1 = 20\nG0 X-10 Y-10\nG41.1 D4\nG1 X0 Y0 F600\nGoSub side\nG1 Y[#1]\nG1 X0\nG1 Y0\nG40\n"
+           "G1 X-10 Y-10\nM30\nSub side\n  G1 X[#1]\nEndSub\n")
+    assert xy_ends(job)[1:6] == [(4, -1.4142, 1.4142), (13, 0.0, 2.0), (13, 18.0, 2.0), (6, 18.0, 18.0), (7, 2.0, 18.0)]
+
+
+def test_a_real_looking_file_crlf_latin1(tmp_path: Path) -> None:
+    job = tmp_path / "kontur.cnc"
+    text = "(Außenkontur, Fräser Ø10)\r\nG0 X-20 Y-20\r\nG42 D2 (rechts)\r\nG1 X0 Y0 F600\r\nG1 X40\r\nG1 Y30\r\n" \
+           "G1 X0\r\nG1 Y0\r\nG40\r\nG1 X-20 Y-20\r\nM30\r\n"
+    job.write_bytes(text.encode("latin-1"))
+    ini = tmp_path / "cnc.ini"
+    ini.write_text(TOOLS)
+    moves: list[Move] = []
+    run_file(job, RunOptions(macro=EMPTY_MACRO, ini=ini, on_move=lambda m, _j: moves.append(m)))
+    assert max(m.end[0] for m in moves) == pytest.approx(45.0)  # outside the 40 mm plate by 5 mm
+
+
+REFUSALS = [
+    ("G0 X0 Y0\nG41 D1\nG1 X1 Y0 F100\n", 3, "entry move"),
+    ("G0 X-10\nG41 D2\nG1 X0 Y0 F100\nG1 X20\nG1 Y20\nG1 X19\nG1 Y0\n", 7, "gouging"),
+    ("G0 X-10\nG42 D2\nG1 X0 F100\nG2 X4 I2\n", 4, "does not fit inside the arc"),
+    ("G41 D1\nG42 D1\n", 2, "already on"),
+    ("G41 D1\nG18\n", 2, "changing the plane"),
+    ("G41 D1\nG53 G0 X1\n", 2, "G53"),
+    ("G41 D1\nG81 X5 Z-3 R2 F100\n", 2, "canned cycle"),
+    ("G41 D1\nG55\n", 2, "coordinate system"),
+    ("G41 D1\nG92 X0\n", 2, "G92"),
+    ("G41 D1\nT2 M6\n", 2, "tool change"),
+    ("G41 D1\nG43 H1\n", 2, "tool length"),
+    ("G41 D1\nG28\n", 2, "G28"),
+    ("G41 D1\nG38.2 Z-5 F100\n", 2, "probing"),
+    ("G0 X-10\nG41 D1\nG1 X0 F100\nG1 X10\nG40\nG2 X0 I-5\n", 6, "after G40"),
+    ("G41 D1.5\n", 1, "tool number"),
+    ("G42.1\n", 1, "needs D"),
+    ("G0 X0 Y0\nG41 D1\nG2 X10 I5 F100\n", 3, "entry move after G41/G42 must be a straight move"),
+]
+
+
+@pytest.mark.parametrize(("source", "line", "words"), REFUSALS)
+def test_refusals_name_the_line(source: str, line: int, words: str, tmp_path: Path) -> None:
+    err = error_of(source, tmp_path)
+    assert words in err.message
+    assert err.location is not None and (err.location.path, err.location.line) == ("job.nc", line)
+
+
+def test_m30_ends_compensation_and_the_next_run_starts_without_it(tmp_path: Path) -> None:
+    moves = xy_ends("G0 X-10\nG41 D1\nG1 X0 Y0 F100\nM30\n", tmp_path)
+    assert moves[-1] == (3, 0.0, 2.0)

@@ -1,0 +1,55 @@
+"""G51/G50 end to end: parameters, what ends scaling, refusals, and the CLI's exit code."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang.canon import Move
+from edingcnc_lang.errors import MachineError
+from edingcnc_lang.runner import RunOptions, RunResult, run_string
+from tests.cli_runner import invoke
+
+EMPTY_MACRO = Path(__file__).parent / "data" / "empty_macro.cnc"
+
+
+def run(source: str) -> tuple[RunResult, list[tuple[int, float, float]]]:
+    moves: list[Move] = []
+    result = run_string(source, RunOptions(macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m)), path="job.nc")
+    return result, [(m.line, round(m.end[0], 4) + 0.0, round(m.end[1], 4) + 0.0) for m in moves]
+
+
+def test_g51_p_about_i_j_in_work_coordinates_sets_the_parameters() -> None:
+    result, moves = run("G10 L2 P1 X100\nG51 P0.5 I10 J0\n#1 = #5200\nG1 X30 Y20 F100\nG50\n#2 = #5200\nG1 X0 Y0\n")
+    assert moves == [(4, 120.0, 10.0), (7, 100.0, 0.0)]
+    v = result.variables
+    assert (v[1], v[2], v[5201], v[5202], v[5204], v[5205], v[5206]) == (1.0, 0.0, 10.0, 0.0, 0.5, 0.5, 1.0)
+
+
+def test_per_axis_factors_in_inch_mode_and_m30_ends_scaling() -> None:
+    result, moves = run("G20\nG51 X2 Y3\nG1 X1 Y1 F10\nM30\n")
+    assert moves == [(3, 50.8, 76.2)] and result.variables[5200] == 0.0
+
+
+def test_arcs_scale_with_p() -> None:
+    _, moves = run("G51 P2\nG2 X10 Y0 I5 J0 F100\n")
+    assert moves == [(2, 20.0, 0.0)]
+
+
+@pytest.mark.parametrize(("source", "words"), [
+    ("G51 X2\nG2 X10 Y0 I5 J0 F100\n", "different factors"),
+    ("G51\n", "needs a factor"),
+    ("G51 P2 X2\n", "either P"),
+    ("G51 P0\n", "factor of 0"),
+])
+def test_refusals(source: str, words: str) -> None:
+    with pytest.raises(MachineError, match=words) as err:
+        run(source)
+    assert err.value.location is not None and err.value.location.line == source.count("\n")
+
+
+def test_the_cli_exits_70_naming_the_line(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G51 X2 Y1\nG1 X10 F100\nG3 X0 Y0 R10\n")
+    result = invoke("run", job)
+    assert result.exit_code == 70 and f"{job}:3:" in result.stderr and "different factors" in result.stderr
