@@ -122,6 +122,10 @@ class MachineConfig:
     joints: tuple[JointConfig, ...]
     interpolation_time: float
     g0_velocity_factor: float
+    g0_acceleration_factor: float
+    laf_angle: float
+    laf_arcfeed_factor: float
+    min_circle_segment_size: float
     kinematics_name: str
     kinematics_settings: Mapping[str, str]
     cartesian_positive_limits: tuple[float, ...]
@@ -173,6 +177,10 @@ class MachineConfig:
                 for axis in AXES),
             interpolation_time=0.005,
             g0_velocity_factor=1.0,
+            g0_acceleration_factor=1.0,
+            laf_angle=5.0,
+            laf_arcfeed_factor=1.0,
+            min_circle_segment_size=0.0,
             kinematics_name="trivial",
             kinematics_settings=MappingProxyType({}),
             cartesian_positive_limits=(_WIDE_LIMIT,) * len(AXES),
@@ -231,6 +239,10 @@ _JOINT_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
 _TRAJECTORY_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
     ("interpolation_time", "interpolationTime", "float"),
     ("g0_velocity_factor", "g0VelocityFactor", "float"),
+    ("g0_acceleration_factor", "g0AccelelerationFactor", "float"),  # sic: EdingCNC's spelling
+    ("laf_angle", "lafAngle", "float"),
+    ("laf_arcfeed_factor", "lafArcfeedFactor", "float"),
+    ("min_circle_segment_size", "minCircleSegmentSize", "float"),
 )
 _KINEMATICS_FIELDS: tuple[tuple[str, str, _Kind], ...] = (
     ("kinematics_name", "kinematicsDLLName", "str"),
@@ -312,6 +324,11 @@ _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
      "must be 0 or a speed in rpm no higher than spindleNmax"),
     ("TRAJECTORY", "interpolationTime", lambda c: c.interpolation_time > 0,
      "must be greater than 0 seconds"),
+    ("TRAJECTORY", "g0VelocityFactor", lambda c: c.g0_velocity_factor > 0, "must be greater than 0"),
+    ("TRAJECTORY", "g0AccelelerationFactor", lambda c: c.g0_acceleration_factor > 0, "must be greater than 0"),
+    ("TRAJECTORY", "lafArcfeedFactor", lambda c: c.laf_arcfeed_factor > 0, "must be greater than 0"),
+    ("TRAJECTORY", "lafAngle", lambda c: 0 <= c.laf_angle <= 180, "must be 0..180 degrees"),
+    ("INTERPRETER", "g64pvalue", lambda c: c.g64_p >= 0, "must be 0 or more (mm)"),
     ("INTERPRETER", "tanknifeBendingAngle", lambda c: c.tanknife.bending_angle in (-90.0, 0.0, 90.0),
      "must be +90, -90 or 0 (no bend)"),
     ("KINEMATICS", "userOutputStartVariable",

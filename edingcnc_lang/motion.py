@@ -1,10 +1,12 @@
 """The motion stage: what happens to a move after the interpreter (the canon's machine side).
 
-It owns the joints.  It switches kinematics (``KIN``, homing, the bend knife), times each move
-(the programmed feed capped by the axis limits; rapids and homing as fast as the limits allow),
-samples it at the interpolation rate when the joints are not simply the position, evaluates the
-inverse kinematics once per move on all samples, checks joint and Cartesian limits, copies the
-kinematics' user output into parameters, and hands each move with its joints to the sinks.
+It owns the joints.  It switches kinematics (``KIN``, homing, the bend knife), samples each move
+at the interpolation rate when the joints are not simply the position (at the programmed feed,
+slowed where a joint's velocity or acceleration limit needs it; rapids and homing as fast as the
+limits allow), evaluates the inverse kinematics once per move on all samples, checks joint and
+Cartesian limits, copies the kinematics' user output into parameters, and hands each move with
+its joints, the limits it runs against and the speed the joints allow to the planner
+(``planner/``), which times it and feeds the output sinks.
 See docs/kinematics.md ("Running jobs") for the rules.
 
 numpy is imported by the sampling methods only: while the joints are simply the position (no
@@ -16,7 +18,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Any, Protocol
 
 from . import tables as t
 from .canon import AXES, PLANES, Event, Move, Pose
@@ -37,30 +39,35 @@ SWITCH_TOLERANCE = 1e-6     # a joint that would have to jump further than this 
 PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the fastest allowed speed
 
 
-@runtime_checkable
-class BatchSink(Protocol):
-    """A sink that can take straight moves in bulk (joints equal to the position)."""
+class PlannerStage(Protocol):
+    """The next stage: takes every executed move with its joints and limits, and the events."""
 
-    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None: ...
+    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits,
+             cap: float = math.inf) -> None: ...
 
-
-class MoveSink(Protocol):
-    """Receives every executed move with its joints (and samples when they were computed)."""
-
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None: ...
+    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                       limits: dict[str, AxisLimits]) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
+    def flush(self) -> None: ...
+
     def close(self) -> None: ...
+
+    @property
+    def overrides(self) -> Any: ...
 
 
 @dataclass(frozen=True)
 class Samples:
-    """One move sampled at the interpolation rate: times from the job start, Cartesian poses, joints."""
+    """One move sampled at the interpolation rate: times from the job start, Cartesian poses, joints;
+    the planner's time-true samples also carry the path speed (units/s) and acceleration (units/s^2)."""
 
     t: np.ndarray
     pos: np.ndarray
     joints: np.ndarray
+    speed: np.ndarray | None = None
+    accel: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -86,11 +93,11 @@ def _located(move: Move) -> Location:
 class MotionStage:
     """The canon implementation that owns the joints; one per run."""
 
-    def __init__(self, config: MachineConfig, kinematics: Kinematics | None, sinks: Sequence[MoveSink],
+    def __init__(self, config: MachineConfig, kinematics: Kinematics | None, planner: PlannerStage,
                  write_param: Callable[[int, float], None], *, sample_always: bool = False) -> None:
         self.config = config
         self.plugin = kinematics or TrivialKinematics({})
-        self.sinks = list(sinks)
+        self.planner = planner
         self.write_param = write_param
         self.sample_always = sample_always
         self.active: Kinematics | None = None  # None: kinematics off, joints = position
@@ -117,6 +124,7 @@ class MotionStage:
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
         checked = move.kind != "home"  # homing is what puts the joints in their range: not checked
+        cap = math.inf
         if self._identity() and not self.sample_always:
             samples = None
             if checked:
@@ -124,7 +132,8 @@ class MotionStage:
             joints = move.end
         else:
             start_time = self.time
-            samples = self._sample(move)
+            samples, speed = self._sample(move)
+            cap = math.inf if self._identity() else speed
             joints = as_pose(samples.joints[-1])
             if checked and self._identity():
                 self._check_exact(move)
@@ -134,13 +143,11 @@ class MotionStage:
         self.moves += 1
         if self.active is not None:
             self._user_output(self.active, _located(move))
-        for sink in self.sinks:
-            sink.move(move, joints, samples)
+        self.planner.move(move, joints, samples, self._limits_for(move), cap)
 
     def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        """Straight moves in bulk; joints = position and trace-only sinks make this the cheap case."""
-        if not (self._identity() and not self.sample_always and self.active is None
-                and all(isinstance(sink, BatchSink) for sink in self.sinks)):
+        """Straight moves in bulk; joints = position and no samples make this the cheap case."""
+        if not (self._identity() and not self.sample_always and self.active is None):
             for kind, line, end, feed in batch:
                 self.move(Move(kind, path, line, start, end, feed))
                 start = end
@@ -151,7 +158,7 @@ class MotionStage:
             column = [end[axis] for end in ends]
             if min(column) < lower[axis] or max(column) > upper[axis]:
                 self._first_limit_violation(path, start, batch)
-        self._write_batch(path, batch)
+        self._write_batch(path, start, batch)
 
     def _first_limit_violation(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         """Write the moves before the first one out of limits, then raise its error."""
@@ -159,25 +166,30 @@ class MotionStage:
         for count, (kind, line, end, feed) in enumerate(batch):
             for axis, value in enumerate(end):
                 if not lower[axis] <= value <= upper[axis]:
-                    self._write_batch(path, batch[:count])
+                    self._write_batch(path, start, batch[:count])
                     raise self._limit_error(Move(kind, path, line, start, end, feed), axis, value)
 
-    def _write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+    def _write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         if batch:
             self.moves += len(batch)
             self.joints = batch[-1][2]
-            for sink in self.sinks:
-                sink.write_batch(path, batch)  # type: ignore[attr-defined]
+            self.planner.straight_moves(path, start, batch, self._straight_limits)
+
+    @cached_property
+    def _straight_limits(self) -> dict[str, AxisLimits]:
+        """The limits of the fast path's rapids and feed moves (kinematics off)."""
+        origin = (0.0,) * 6
+        return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}  # type: ignore[arg-type]
 
     def event(self, event: Event) -> None:
         if event.kind == "dwell":
             self.time += float(event.data.get("seconds", 0.0))
-        for sink in self.sinks:
-            sink.event(event)
+        self.planner.event(event)
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
         """``KIN ON|OFF|CTRL|<mapping>`` and ``tanknife on|off``; returns the Cartesian position after it."""
         where = Location(path, line)
+        self.planner.flush()  # the machine comes to rest before the kinematics change
         if mode == "ON":
             self._control(abi.ON, [*pos, *[0.0] * 6], where)
             return self._switch(self.plugin, f"KIN ON ({self.plugin.name})", where)
@@ -201,8 +213,7 @@ class MotionStage:
         try:
             self._plugin_call(lambda: self.plugin.control(abi.CLOSE, [0.0] * abi.CONTROL_DATA_LEN), None)
         finally:
-            for sink in self.sinks:
-                sink.close()
+            self.planner.close()
 
     # ---------------------------------------------------------------- switching
     def _start_mapping(self, mode: str, args: tuple[float, ...], where: Location) -> Pose:
@@ -285,6 +296,10 @@ class MotionStage:
         for offset, value in enumerate(values):  # type: ignore[arg-type]
             self.write_param(start + offset, value)
 
+    def joints_at(self, pos: np.ndarray) -> np.ndarray:
+        """Joints of (N, 6) poses under the kinematics now active (the planner's time-true samples)."""
+        return self._joints_of(pos, None)
+
     def _bend_offset(self, pos: np.ndarray) -> np.ndarray:
         """The bend knife's joint XY correction at (N, 6) poses (its Z band is in work coordinates)."""
         import numpy as np
@@ -318,8 +333,14 @@ class MotionStage:
                               self._joint_limits.acceleration)
         limits = self._joint_limits if self._identity() else self._plugin_limits(move) or self._cartesian_limits
         if move.kind == "rapid":
-            return AxisLimits(limits.velocity * self.config.g0_velocity_factor, limits.acceleration)
+            return AxisLimits(limits.velocity * self._rapid_velocity_factor,
+                              limits.acceleration * self.config.g0_acceleration_factor)
         return limits
+
+    @property
+    def _rapid_velocity_factor(self) -> float:
+        """Rapids run at the axes' speed times g0VelocityFactor and the rapid override."""
+        return self.config.g0_velocity_factor * self.planner.overrides.rapid_factor
 
     def _plugin_limits(self, move: Move) -> AxisLimits | None:
         """A compiled plug-in's KinematicsInverseMaxFeed(Arc) answer for this move, when it exports one."""
@@ -335,13 +356,14 @@ class MotionStage:
             answer = ask(move.start, move.end, geo.center, normal, geo.turns) if ask else None
         return None if answer is None else AxisLimits(_positive(answer[0]), _positive(answer[1]))
 
-    def _sample(self, move: Move) -> Samples:
-        """Time and sample a move, and evaluate the joints on every sample.
+    def _sample(self, move: Move) -> tuple[Samples, float]:
+        """Sample a move at the speed it may run at, evaluate the joints on every sample; return both.
 
-        Feed moves run at the programmed feed unless an axis limit (Cartesian, or the joints'
-        accelerations) needs them slower; rapids and homing run as fast as every limit allows,
-        the joints' velocities included.  Velocity scales with the path speed and acceleration
-        with its square, so a few re-samplings settle the speed.
+        Feed moves run at the programmed feed (times the feed override) unless an axis limit
+        (Cartesian, or the joints' velocities and accelerations) needs them slower, as the
+        controller slows down rather than stops; rapids and homing run as fast as every limit
+        allows.  Velocity scales with the path speed and acceleration with its square, so a few
+        re-samplings settle the speed.
         """
         import numpy as np
 
@@ -352,8 +374,9 @@ class MotionStage:
         start, start_joints = np.array(move.start, dtype=float), np.array(self.joints)
         fastest = move.feed <= 0.0 or move.kind == "home"
         joint_timed = not self._identity() and move.kind != "home"
-        joint_velocity = self._joint_limits.velocity * (self.config.g0_velocity_factor if fastest else 1.0)
-        speed = move.feed / 60.0 if not fastest else _first_guess(geo, limits.velocity)
+        joint_velocity = self._joint_limits.velocity * (self._rapid_velocity_factor if fastest else 1.0)
+        feed = move.feed / 60.0 * (1.0 if move.sync > 0.0 else self.planner.overrides.feed_factor)
+        speed = feed if not fastest else _first_guess(geo, limits.velocity)
         for attempt in range(PLAN_PASSES + 1):
             t, pos = geo.sample(speed, dt)
             factor = dynamics(0.0, start, t, pos, dt).speed_factor(limits.velocity, limits.acceleration)
@@ -361,14 +384,14 @@ class MotionStage:
             if joint_timed:
                 v_ratio, a_ratio = dynamics(0.0, start_joints, t, joints, dt).ratios(
                     joint_velocity, self._joint_limits.acceleration)
-                factor = max(factor, math.sqrt(a_ratio.max()), v_ratio.max() if fastest else 0.0)
+                factor = max(factor, math.sqrt(a_ratio.max()), v_ratio.max())
             done = factor <= 1.0 + 1e-9 and (not fastest or factor >= 0.999 or factor == 0.0)
             if done or attempt == PLAN_PASSES or not math.isfinite(speed / factor):
                 break
             speed /= factor
         start_time = self.time
         self.time += float(t[-1])
-        return Samples(t + start_time, pos, joints)
+        return Samples(t + start_time, pos, joints), speed
 
     def _limit_error(self, move: Move, axis: int, value: float) -> MachineError:
         joint = self.config.joints[axis]

@@ -1,4 +1,4 @@
-"""Output sinks behind the motion stage: the trace CSV, the samples file and the event recorder.
+"""Output sinks behind the planner: the trace CSV, the samples file and the event recorder.
 
 Each writes incrementally, so memory stays flat however long the job is
 (the .npz samples format is the exception: numpy writes it in one go at the end).
@@ -17,13 +17,14 @@ from typing import TYPE_CHECKING
 from .canon import Event, Move, Pose
 from .errors import EcncError
 from .motion import Samples
+from .planner.estimate import Timing
 
 if TYPE_CHECKING:
     import numpy as np
 
 SIX_REPR = ",".join(["%r"] * 6)
-TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file\n"
-SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s")
+TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
+SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
 
 
 def _open_for_writing(path: Path) -> io.TextIOWrapper:
@@ -41,23 +42,25 @@ def csv_field(text: str) -> str:
 
 
 class TraceWriter:
-    """One CSV row per executed move: source line, kind, machine end point, joints there."""
+    """One CSV row per executed move: source line, kind, machine end point, joints there, the file
+    the line belongs to, and ``t``, the planned time (seconds from the job start) at which the move ends."""
 
     def __init__(self, path: Path) -> None:
         self._file = _open_for_writing(path)
         self._file.write(TRACE_HEADER)
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
-        self._file.write(f"{move.line},{move.kind},{','.join(map(repr, move.end))},{','.join(map(repr, joints))},"
-                         f"{csv_field(move.path)}\n")
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        self._file.write(f"{move.line},{move.kind},{SIX_REPR % move.end},{SIX_REPR % tuple(joints)},"
+                         f"{csv_field(move.path)},{timing.end!r}\n")
 
-    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        """Rows of straight moves whose joints equal their end points."""
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
+        """Rows of straight moves whose joints equal their end points; ``times[i + 1]`` is when move i ends."""
         rows = []
         name = csv_field(path)
-        for kind, line, end, _feed in batch:
+        for (kind, line, end, _feed), t in zip(batch, times[1:]):
             coords = SIX_REPR % end
-            rows.append(f"{line},{kind},{coords},{coords},{name}\n")
+            rows.append(f"{line},{kind},{coords},{coords},{name},{t!r}\n")
         self._file.write("".join(rows))
 
     def event(self, event: Event) -> None:
@@ -68,10 +71,11 @@ class TraceWriter:
 
 
 class SamplesWriter:
-    """The interpolated trajectory: CSV rows as moves arrive, or one .npz array at the end.
+    """The time-true trajectory: CSV rows as moves arrive, or one .npz array at the end.
 
-    Rows are strictly increasing in time: a move that takes no time (its single sample repeats
-    the previous end point) adds no row.  The .npz file holds one 1-D array per column name.
+    Rows are strictly increasing in time, one every ``interpolationTime`` along the planned
+    profile, with the path speed ``v`` and acceleration ``acc``.  The .npz file holds one 1-D
+    array per column name.
     """
 
     def __init__(self, path: Path) -> None:
@@ -84,13 +88,13 @@ class SamplesWriter:
         if self._file is not None:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         if samples is None:
             return
         import numpy as np
 
-        speed = _spindle_column(move, samples.pos[:, 0], self._spindle.rpm)
-        rows = np.column_stack([samples.t, samples.pos, samples.joints, speed])
+        spindle = _spindle_column(move, samples.pos[:, 0], self._spindle.rpm)
+        rows = np.column_stack([samples.t, samples.pos, samples.joints, spindle, samples.speed, samples.accel])
         rows = rows[samples.t > self._last_time]
         if not len(rows):
             return
@@ -99,6 +103,10 @@ class SamplesWriter:
             self._chunks.append(rows)
         else:
             self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
+
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
+        pass  # batches come only when no samples are written
 
     def event(self, event: Event) -> None:
         self._spindle.event(event)
@@ -148,7 +156,8 @@ def _spindle_column(move: Move, xs: np.ndarray, in_force: float) -> np.ndarray:
 class EventsWriter:
     """JSON Lines (``ecnc run --events``): one object per move and per event, in the order they happen.
 
-    A move: ``{"type": "move", "file", "line", "kind", "end", "feed", "spindle", "synchronised"}``
+    A move: ``{"type": "move", "file", "line", "kind", "end", "feed", "spindle", "synchronised", "t"}``
+    (``t``: when the move ends, as the planner timed it)
     plus ``"pitch"`` (mm per revolution) for a spindle-synchronised move and ``"spindle_start"``
     when constant surface speed changes the speed along it.  An event: ``{"type": "event",
     "file", "line", "kind", "data"}``.
@@ -164,21 +173,22 @@ class EventsWriter:
     def _write(self, record: dict[str, object]) -> None:
         self._file.write(self._dumps(record, default=str) + "\n")
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         rpm = move.spindle or self._spindle.rpm
         record: dict[str, object] = {"type": "move", "file": move.path, "line": move.line, "kind": move.kind,
                                      "end": list(move.end), "feed": move.feed, "spindle": rpm,
-                                     "synchronised": move.sync > 0.0}
+                                     "synchronised": move.sync > 0.0, "t": timing.end}
         if move.sync > 0.0:
             record["pitch"] = move.sync
         if move.css is not None:
             record["spindle_start"] = move.css.rpm(move.start[0])
         self._write(record)
 
-    def write_batch(self, path: str, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        for kind, line, end, feed in batch:
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
+        for (kind, line, end, feed), t in zip(batch, times[1:]):
             self._write({"type": "move", "file": path, "line": line, "kind": kind, "end": list(end),
-                         "feed": feed, "spindle": self._spindle.rpm, "synchronised": False})
+                         "feed": feed, "spindle": self._spindle.rpm, "synchronised": False, "t": t})
 
     def event(self, event: Event) -> None:
         self._spindle.event(event)
@@ -190,16 +200,33 @@ class EventsWriter:
 
 
 class CallbackSink:
-    """Forwards moves and events to callables (the embedding API's streaming interface)."""
+    """Forwards moves and events to callables (the embedding API's streaming interface).
+
+    ``on_timed_move(move, joints, timing)`` also gets the move's ``Timing``: planned start and end
+    times and top speed.
+    """
 
     def __init__(self, on_move: Callable[[Move, Pose], None] | None = None,
-                 on_event: Callable[[Event], None] | None = None) -> None:
+                 on_event: Callable[[Event], None] | None = None,
+                 on_timed_move: Callable[[Move, Pose, Timing], None] | None = None) -> None:
         self.on_move = on_move
         self.on_event = on_event
+        self.on_timed_move = on_timed_move
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None) -> None:
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         if self.on_move:
             self.on_move(move, joints)
+        if self.on_timed_move:
+            self.on_timed_move(move, joints, timing)
+
+    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
+                    times: Sequence[float], speeds: Sequence[float]) -> None:
+        """Straight moves in bulk, each a ``Move`` again for the callables."""
+        if not (self.on_move or self.on_timed_move):
+            return
+        for (kind, line, end, feed), t0, t1, speed in zip(batch, times, times[1:], speeds):
+            self.move(Move(kind, path, line, start, end, feed), end, None, Timing(t0, t1, speed))
+            start = end
 
     def event(self, event: Event) -> None:
         if self.on_event:

@@ -22,11 +22,14 @@ from .interpreter import Interpreter
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
-from .motion import MotionStage, MoveSink
+from .motion import MotionStage
 from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
 from .diagnostics import Diagnostic
 from .limits import DEFAULT_MAX_STEPS
 from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
+from .planner.estimate import Estimate, Timing
+from .planner.overrides import Overrides
+from .planner.stage import Planner, TimedSink
 from .source import iter_text_lines
 from .stages import STAGES, Pipeline
 
@@ -51,6 +54,8 @@ class RunResult:
     error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
     warnings: list[Diagnostic] = field(default_factory=list)  # macro lines that do not parse (tolerant load)
     spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
+    estimate: Estimate = field(default_factory=Estimate)  # how long the run took, as planned
+    limits: dict[str, Any] = field(default_factory=dict)  # the limits report (see docs/planner.md)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -67,6 +72,8 @@ class RunResult:
             "modal": self.modal,
             "ended_by": self.ended_by,
             "spindle": self.spindle,
+            "estimate": self.estimate.to_json(),
+            "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
             **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
         }
@@ -93,6 +100,9 @@ class RunOptions:
     on_event: Callable[[Event], None] | None = None
     strict: bool = False  # macro lines that do not parse are errors at load, not warnings
     on_warning: Callable[[Diagnostic], None] | None = None  # each load warning, once, as it is found
+    on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
+    feed_override: float = 100.0   # percent
+    rapid_override: float = 100.0  # percent, at most 100
 
 
 def packaged_macro() -> Path:
@@ -108,23 +118,27 @@ class Run:
         self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         self.kinematics = self._load_kinematics()
-        sinks: list[MoveSink] = []
+        overrides = Overrides(options.feed_override, options.rapid_override)
+        sinks: list[TimedSink] = []
         if options.trace:
             sinks.append(TraceWriter(ensure_parent(options.trace)))
         if options.samples:
             sinks.append(SamplesWriter(ensure_parent(options.samples)))
         if options.events:
             sinks.append(EventsWriter(ensure_parent(options.events)))
-        if options.on_move or options.on_event:
-            sinks.append(CallbackSink(options.on_move, options.on_event))
-        self.motion = MotionStage(self.config, self.kinematics, sinks, self._write_param,
+        if options.on_move or options.on_event or options.on_timed_move:
+            sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
+        self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
+        self.motion = MotionStage(self.config, self.kinematics, self.planner, self._write_param,
                                   sample_always=options.samples is not None)
+        self.planner.joints_of = self.motion.joints_at
         self.pipeline = Pipeline(STAGES, self.motion, self.config)
         self.interpreter = Interpreter(self.pipeline.head, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
+        self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)
@@ -257,6 +271,8 @@ class Run:
             error_record=error.to_json() if error else None,
             warnings=list(self.warnings),
             spindle=interp.spindle_state(),
+            estimate=self.planner.estimate,
+            limits=self.planner.limits.to_json(),
         )
 
 

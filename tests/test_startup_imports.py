@@ -1,7 +1,8 @@
 """Start-up cost: what a short run and ``ecnc --help`` import.
 
-numpy (~100 ms) and lark (~50 ms) dominate the start of a three-line job, so a run whose joints
-are simply the position must not load numpy, and ``ecnc --help`` loads neither.  Each check runs
+numpy (~100 ms) and lark (~50 ms) dominate the start of a three-line job.  The motion planner
+times moves with numpy, so a job that moves loads it; a job that only computes (a macro test, a
+variables job) must not, and ``ecnc --help`` loads neither.  Each check runs
 in a fresh interpreter, because this test process has imported everything already.
 """
 from __future__ import annotations
@@ -33,12 +34,12 @@ def _imported_modules(importtime_log: str) -> set[str]:
             if line.startswith("import time:") and "|" in line}
 
 
-def test_a_trivial_job_does_not_import_numpy(tmp_path: Path) -> None:
-    job = tmp_path / "three.nc"
-    job.write_text("G0 X1\nG1 Y1 F100\nG2 X2 Y2 R1\nM30\n")  # the arc checks its extremes without sampling
+def test_a_job_that_does_not_move_does_not_import_numpy(tmp_path: Path) -> None:
+    job = tmp_path / "compute.nc"
+    job.write_text("#1 = 2\nIf [#1 > 1]\n  #2 = [#1 * 3]\nEndIf\nM30\n")
     out = _python("-c", RUN_TRIVIAL_JOB, str(job), str(tmp_path / "trace.csv")).stdout.split()
-    assert out == ["(2.0,", "2.0,", "0.0,", "0.0,", "0.0,", "0.0)", "3", "False"]
-    assert len((tmp_path / "trace.csv").read_text().splitlines()) == 4  # header and three moves
+    assert out == ["(0.0,", "0.0,", "0.0,", "0.0,", "0.0,", "0.0)", "0", "False"]
+    assert len((tmp_path / "trace.csv").read_text().splitlines()) == 1  # the header only
 
 
 def test_samples_still_load_numpy(tmp_path: Path) -> None:
@@ -47,7 +48,7 @@ def test_samples_still_load_numpy(tmp_path: Path) -> None:
     samples = tmp_path / "samples.csv"
     _python("-m", "edingcnc_lang", "run", str(job), "--samples", str(samples))
     rows = samples.read_text().splitlines()
-    assert rows[0].startswith("t,x,y,z") and rows[-1].split(",")[1] == "1.0"
+    assert rows[0].startswith("t,x,y,z") and rows[-1].split(",")[1] == "1.0"  # the move ends at rest, sampled
 
 
 @pytest.mark.parametrize("args", [["--help"], ["run", "--help"], ["kins", "--help"]])

@@ -1,6 +1,7 @@
 """``ecnc run JOB``: run a job on the virtual machine and report what it did."""
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -26,9 +27,14 @@ if TYPE_CHECKING:
 @click.option("--events", metavar="FILE", type=OUTPUT_FILE,
               help="Write every move (with its spindle speed) and event as JSON Lines.")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
-@click.option("-q", "--quiet", is_flag=True, help="No progress line on stderr (shown on a terminal after a second).")
+@click.option("--feed-override", metavar="PCT", type=click.FloatRange(0, 1000, min_open=True), default=100.0,
+              help="Feed override knob in percent (default 100; M48/M49/M50 in the job switch it).")
+@click.option("--rapid-override", metavar="PCT", type=click.FloatRange(0, 100, min_open=True), default=100.0,
+              help="Rapid override knob in percent, at most 100 (default 100).")
+@click.option("-q", "--quiet", is_flag=True,
+              help="No progress line or summary on stderr (shown on a terminal).")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
-        events: str | None, save_vars: bool, quiet: bool) -> int:
+        events: str | None, save_vars: bool, feed_override: float, rapid_override: float, quiet: bool) -> int:
     """Run JOB as the controller would (in simulation) and report what the machine does.
 
     JOB - reads the job from standard input.
@@ -39,7 +45,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
                                   samples=Path(samples) if samples else None,
-                                  events=Path(events) if events else None, save_vars=save_vars)
+                                  events=Path(events) if events else None, save_vars=save_vars,
+                                  feed_override=feed_override, rapid_override=rapid_override)
     # an error carries the state so far: main() prints it with --json
     run = Run(options)
     if job == STDIN:
@@ -52,6 +59,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
         import json  # only with --json: a short run starts faster without it
 
         print(json.dumps(result.to_json(), indent=1))
+    if progress.wanted(quiet):  # for people at a terminal (not with --quiet); scripts read --json
+        print(result.estimate.summary(), file=sys.stderr)
     return EXIT_OK
 
 

@@ -39,7 +39,7 @@ Interpreter._EXECUTE = {kind: getattr(Interpreter, name)
                         for kind, name in part.STATEMENTS.items()}
 
 # Steps that share one method: the modal groups whose step only records the code.
-_STEP_ALIASES = {"units": "modal", "path_control": "modal", "distance": "modal", "return_mode": "modal"}
+_STEP_ALIASES = {"units": "modal", "distance": "modal", "return_mode": "modal"}
 Interpreter._LINE_STEPS = tuple(
     (getattr(Interpreter, f"_step_{_STEP_ALIASES.get(name, name)}"), source, key)
     for name, source, key in t.ORDER_OF_EXECUTION)

@@ -43,7 +43,19 @@ class LineSteps(MachineState):
         self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
 
     def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        self.canon.event(Event("override", self.path, self.line, {"m": code // 10}))
+        """M48..M51; the planner follows them (``M50 P0`` switches the feed override off)."""
+        data = {"m": code // 10, **({"p": words["P"]} if "P" in words else {})}
+        self.canon.event(Event("override", self.path, self.line, data))
+
+    def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
+                           span: n.Span) -> None:
+        """G61/G61.1/G64 [P tolerance]: the planner stops at every corner or blends within P (mm)."""
+        self.modal["path_control"] = code
+        tolerance = words["P"] * self.scale if "P" in words else self.config.g64_p
+        if tolerance < 0:
+            raise self.fail("G64 P: the path tolerance must be 0 or more", span)
+        self.canon.event(Event("path_control", self.path, self.line,
+                               {"mode": t.code_name("G", code), "p": tolerance}))
 
     def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._io(code // 10, words, span)

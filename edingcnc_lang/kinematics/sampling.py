@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -65,6 +66,46 @@ def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsi
     return direction * (sweep + 2.0 * math.pi * (abs(turns) - 1))
 
 
+@dataclass(frozen=True)
+class ArcFrame:
+    """An arc's circle in its plane: in-plane axes ``u``, ``v``, centre, start and end radius,
+    start angle, signed sweep, and its XYZ length (helix included)."""
+
+    u: int
+    v: int
+    center: tuple[float, float]
+    r0: float
+    r1: float
+    start_angle: float
+    sweep: float
+    linear: float
+
+
+def arc_frame(start: Sequence[float], end: Sequence[float], center: Sequence[float], normal: int, turns: int,
+              full_circle_epsilon: float = 1e-12) -> ArcFrame:
+    """The circle of an arc about ``center`` in the plane normal to axis ``normal`` (see ``sample_arc``)."""
+    u, v = (normal + 1) % 3, (normal + 2) % 3
+    cu, cv = float(center[u]), float(center[v])
+    r0 = math.hypot(start[u] - cu, start[v] - cv)
+    r1 = math.hypot(end[u] - cu, end[v] - cv)
+    a0 = math.atan2(start[v] - cv, start[u] - cu)
+    sweep = arc_sweep(a0, math.atan2(end[v] - cv, end[u] - cu), turns, full_circle_epsilon)
+    linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal])
+    return ArcFrame(u, v, (cu, cv), r0, r1, a0, sweep, linear)
+
+
+def arc_points(start: Sequence[float], end: Sequence[float], frame: ArcFrame, s: np.ndarray) -> np.ndarray:
+    """Poses at fractions ``s`` (0..1) of an arc's sweep; s = 1 is the end point exactly."""
+    p0, p1 = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    angle = frame.start_angle + s * frame.sweep
+    radius = frame.r0 + s * (frame.r1 - frame.r0)
+    pts = p0 + s[:, None] * (p1 - p0)
+    pts[:, frame.u] = frame.center[0] + radius * np.cos(angle)
+    pts[:, frame.v] = frame.center[1] + radius * np.sin(angle)
+    pts[s >= 1.0] = p1
+    return pts
+
+
 def sample_arc(start: Sequence[float], end: Sequence[float], center: Sequence[float], normal: int,
                turns: int, feed: float, dt: float, full_circle_epsilon: float = 1e-12
                ) -> tuple[np.ndarray, np.ndarray]:
@@ -75,21 +116,9 @@ def sample_arc(start: Sequence[float], end: Sequence[float], center: Sequence[fl
     normal axis.  The radius blends linearly from the start to the end radius (a slightly
     inconsistent end point still ends exactly); the normal axis and a, b, c move linearly.
     """
-    p0, p1 = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
-    u, v = (normal + 1) % 3, (normal + 2) % 3
-    cu, cv = float(center[u]), float(center[v])
-    r0 = math.hypot(p0[u] - cu, p0[v] - cv)
-    r1 = math.hypot(p1[u] - cu, p1[v] - cv)
-    a0 = math.atan2(p0[v] - cv, p0[u] - cu)
-    sweep = arc_sweep(a0, math.atan2(p1[v] - cv, p1[u] - cu), turns, full_circle_epsilon)
-    delta = p1 - p0
-    linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, delta[normal])
-    t = _times(_path_length(linear, delta[3:]), feed, dt)
+    frame = arc_frame(start, end, center, normal, turns, full_circle_epsilon)
+    t = _times(_path_length(frame.linear, np.subtract(end[3:], start[3:])), feed, dt)
     s = t / t[-1] if t[-1] > 0.0 else np.ones(1)
-    angle = a0 + s * sweep
-    radius = r0 + s * (r1 - r0)
-    pts = p0 + s[:, None] * delta
-    pts[:, u] = cu + radius * np.cos(angle)
-    pts[:, v] = cv + radius * np.sin(angle)
-    pts[-1] = p1
+    pts = arc_points(start, end, frame, s)
+    pts[-1] = np.asarray(end, dtype=float)
     return t, pts

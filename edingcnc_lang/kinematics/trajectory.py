@@ -19,6 +19,8 @@ from edingcnc_lang.canon import PLANES, Move
 if TYPE_CHECKING:
     import numpy as np
 
+    from edingcnc_lang.kinematics.sampling import ArcFrame
+
 
 @dataclass(frozen=True)
 class Geometry:
@@ -39,6 +41,26 @@ class Geometry:
             return sample_line(self.start, self.end, speed, dt)
         return sample_arc(self.start, self.end, self.center, self.normal, self.turns, speed, dt,
                           self.full_circle_epsilon)
+
+    def arc_frame(self) -> ArcFrame:
+        """The circle of an arc move (not for straight moves)."""
+        from edingcnc_lang.kinematics.sampling import arc_frame
+
+        assert self.center is not None
+        return arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
+
+    def points_at(self, s: np.ndarray) -> np.ndarray:
+        """Poses at fractions ``s`` (0..1) of the path: for arcs, of the sweep; s = 1 is the end exactly."""
+        import numpy as np
+
+        if self.center is None:
+            p0, p1 = np.asarray(self.start, dtype=float), np.asarray(self.end, dtype=float)
+            pts = p0 + s[:, None] * (p1 - p0)
+            pts[s >= 1.0] = p1
+            return pts
+        from edingcnc_lang.kinematics.sampling import arc_points
+
+        return arc_points(self.start, self.end, self.arc_frame(), s)
 
 
 def geometry_of(move: Move, full_circle_epsilon: float = 1e-12) -> Geometry:

@@ -10,6 +10,9 @@ import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from ..parser import parse_line
+from .formatting import split_comment
+
 _NOQA = re.compile(r";\s*noqa\s*:\s*([A-Za-z0-9_]+(?:\s*,\s*[A-Za-z0-9_]+)*)\s*$", re.IGNORECASE)
 _NOQA_ALL = re.compile(r";\s*noqa\s*$", re.IGNORECASE)
 _UNCLOSED = re.compile(r"(?:Sub \S+|If|While) \(line (\d+)\) has no (EndSub|EndIf|EndWhile)( before)?")
@@ -17,6 +20,7 @@ _BRACKETS = re.compile(r"write (\S+)\)$")
 _FRAGMENT = re.compile(r"brackets: (\S+) \(")
 _EXTRA = re.compile(r"^(\d+) extra")
 _INDENT = re.compile(r"[ \t]*")
+_CONDITION = re.compile(r"\s*(if|while)\s+(.*?)(?:\s+then)?\s*$", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -100,6 +104,20 @@ def _drop_extra_brackets(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return [Fix("Remove the extra ']'", (Edit(finding.line, extra.start(), extra.end(), ""),))]
 
 
+def _bracket_condition(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+    text = lines[finding.line] if finding.line < len(lines) else ""
+    code, _comment, _paren = split_comment(text)
+    match = _CONDITION.match(code)
+    if not match:
+        return []
+    fixed = f"[{match.group(2)}]"
+    try:
+        parse_line(code[:match.start(2)] + fixed + code[match.end(2):])
+    except Exception:  # noqa: BLE001 - brackets alone do not repair this line: offer nothing
+        return []
+    return [Fix(f"Write {match.group(1)} {fixed}", (Edit(finding.line, match.start(2), match.end(2), fixed),))]
+
+
 def _unit_line(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return [Fix(f"Add ';@unit {unit}' as the first line", (Edit(0, 0, 0, f";@unit {unit}\n"),), unit == "mm")
             for unit in ("mm", "inch")]
@@ -116,6 +134,7 @@ FIXERS: dict[str, Fixer] = {
     "S205": _end_sub_first,
     "D403": _drop_hash,
     "E105": _add_brackets,
+    "E106": _bracket_condition,
     "V304": _drop_extra_brackets,
     "F600": _unit_line,
     "F603": _comment_out,

@@ -15,12 +15,13 @@ from ..lint.model import SourceFile
 from ..lint.walk import dialog_fields, literal_index
 from ..printer import format_number
 from ..tables import ARG_PARAMS, code_key, is_read_only
-from .lexer import Token, code_number, token_at
+from .lexer import Token, code_number, token_at, tokens
 from .model import LanguageModel, m_code_sub
 
 _COMMENT = re.compile(r"\s*(?:;(?P<semi>.*)|\((?P<paren>[^)]*)\)\s*)$")
 _AFTER_NAME = re.compile(r"\s*(?:/\s*)?sub\s+[A-Za-z0-9_]+\s*(?P<rest>.*)$", re.IGNORECASE)
 MAX_DOC_LINES = 12
+_NUMBERS_ARE_VARIABLES = frozenset({"dlgmsg", "gettoolinfo", "getjobdistance"})
 
 
 def hover_text(model: LanguageModel, path: str, line: int, col: int) -> str | None:
@@ -35,6 +36,8 @@ def hover_text(model: LanguageModel, path: str, line: int, col: int) -> str | No
         return _code(model, path, token)
     if token.kind == "param":
         return _param(model, path, int(token.text[1:]))
+    if token.kind == "number" and token.text.isdigit() and _names_variables(file.line(line + 1)):
+        return _param(model, path, int(token.text))
     if token.kind in ("function", "keyword", "command"):
         entry = knowledge.word(token.text)
         return entry.markdown() if entry else None
@@ -42,6 +45,12 @@ def hover_text(model: LanguageModel, path: str, line: int, col: int) -> str | No
         found = model.resolve(path, token.text)
         return sub_markdown(*found) if found else None
     return None
+
+
+def _names_variables(text: str) -> bool:
+    """A command whose bare numbers are parameter numbers: ``dlgmsg "Width" 27``, ``GetToolInfo next 40``."""
+    head = tokens(text)
+    return bool(head) and head[0].kind == "command" and head[0].text.lower() in _NUMBERS_ARE_VARIABLES
 
 
 def _code(model: LanguageModel, path: str, token: Token) -> str | None:

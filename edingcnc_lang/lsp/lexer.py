@@ -18,6 +18,7 @@ _PIECES = re.compile(r"""
   | (?P<param>\#\d+)
   | (?P<function>(?:abs|acos|asin|atan|cos|exp|fix|fup|ln|round|sin|sqrt|tan)(?=\s*\[))
   | (?P<code>[GM]\s*\d+(?:\.\d+)?)
+  | (?P<number>\d+(?:\.\d*)?|\.\d+)
   | (?P<other>[A-Za-z_]{2,}[A-Za-z0-9_]*|[A-Za-z][-+]?[\d.]*|.)
 """, re.IGNORECASE | re.VERBOSE)
 
@@ -26,7 +27,7 @@ _PIECES = re.compile(r"""
 class Token:
     """A piece of a line: its kind, its text and where it is (end exclusive)."""
 
-    kind: str  # "code" | "param" | "function" | "keyword" | "command" | "sub" | "string" | "comment" | "other"
+    kind: str  # "code" | "param" | "number" | "function" | "keyword" | "command" | "sub" | "string" | "comment" | "other"
     text: str
     start: int
     end: int

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from .. import nodes as n
 from ..lint.model import SourceFile
 from ..lint.project import sub_key
+from ..lint.walk import walk
 from ..tables import code_key
 from .lexer import code_number, token_at
 from .model import LanguageModel, Place, definition_place, m_code_sub
@@ -70,6 +71,20 @@ def workspace_symbols(model: LanguageModel, query: str) -> list[tuple[str, Place
     wanted = query.lower()
     return [(sub.name, definition_place(file, sub))
             for file in model.workspace() for name, sub in file.subs.items() if wanted in name]
+
+
+def folding_ranges(model: LanguageModel, path: str) -> list[tuple[int, int]]:
+    """(first, last) 0-based lines of each Sub, If and While, the end line left visible."""
+    file = model.source(path)
+    if file is None:
+        return []
+    found = []
+    for stmt, _scope in walk(file.body):
+        if isinstance(stmt, (n.Sub, n.If, n.While)):
+            last = min(stmt.end_span.line, len(file.lines) + 1) - 2  # before EndSub/EndIf/EndWhile
+            if last > stmt.span.line - 1:
+                found.append((stmt.span.line - 1, last))
+    return found
 
 
 def _symbol(file: SourceFile, sub: n.Sub) -> Symbol:

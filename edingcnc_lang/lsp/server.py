@@ -185,6 +185,19 @@ def _document_symbols(ls: EcncServer, params: t.DocumentSymbolParams) -> list[t.
         for symbol in navigation.document_symbols(ls.model, path)]
 
 
+@server.feature(t.TEXT_DOCUMENT_FOLDING_RANGE)
+def _folding_ranges(ls: EcncServer, params: t.FoldingRangeParams) -> list[t.FoldingRange]:
+    return [t.FoldingRange(start_line=first, end_line=last, kind=t.FoldingRangeKind.Region)
+            for first, last in navigation.folding_ranges(ls.model, ls.path(params.text_document.uri))]
+
+
+@server.feature(t.WORKSPACE_DID_CHANGE_WATCHED_FILES)
+def _watched_files(ls: EcncServer, params: t.DidChangeWatchedFilesParams) -> None:
+    """A macro file changed on disk (not in the editor): the open files beside it are checked again."""
+    for change in params.changes:
+        ls.relint_folder(ls.path(change.uri))
+
+
 @server.feature(t.WORKSPACE_SYMBOL)
 def _workspace_symbols(ls: EcncServer, params: t.WorkspaceSymbolParams) -> list[t.SymbolInformation]:
     return [t.SymbolInformation(name=name, kind=t.SymbolKind.Function, location=ls.location(place),

@@ -10,7 +10,11 @@ function activate(context) {
     "edingcnc",
     "EdingCNC language server",
     { command, args },
-    { documentSelector: [{ scheme: "file", language: "edingcnc" }, { scheme: "untitled", language: "edingcnc" }] },
+    {
+      documentSelector: [{ scheme: "file", language: "edingcnc" }, { scheme: "untitled", language: "edingcnc" }],
+      // macro.cnc edited outside VS Code: the server checks the open files beside it again
+      synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher("**/*.[cC][nN][cC]") },
+    },
   );
   context.subscriptions.push(client);
   return client.start();

@@ -150,6 +150,7 @@ def test_latin1_crlf_macro_file_is_read_like_the_linter_reads_it(client: LspClie
     (6, 1, ["**G0**: rapid move", "Modal group: motion"]),
     (6, 13, ["**#5221**: G54 offset X", "Persistent"]),
     (7, 2, ["**dlgmsg**: dialog", "15 fields"]),
+    (7, 24, ["**#28**: user variable"]),  # a dlgmsg field number is a parameter
     (1, 8, ["**Sub drill** (macro.cnc, line 2)", "drill one hole at the current XY", "Z-5, retract to R2"]),
     (2, 1, ["**Sub m100**"]),
     (5, 1, ["**M6**: tool change", "Modal group: tool change", "**Sub change_tool**"]),
@@ -246,6 +247,8 @@ def quick_fixes(client: LspClient, uri: str, diagnostics: list[dict[str, Any]]) 
     (";@unit mm\nSub a\nSub b\nEndSub\n", "S205", ";@unit mm\nSub a\nEndSub\nSub b\nEndSub\n"),
     (';@unit mm\ndlgmsg "Setup" "Width" #27\n', "D403", ';@unit mm\ndlgmsg "Setup" "Width" 27\n'),
     (";@unit mm\nG0 X10+5\n", "E105", ";@unit mm\nG0 X[10+5]\n"),
+    (";@unit mm\nIf [#1 > 0] AND [#2 > 0] THEN ; both\nEndIf\n", "E106",
+     ";@unit mm\nIf [[#1 > 0] AND [#2 > 0]] THEN ; both\nEndIf\n"),
     (";@unit mm\nIf [#1 > 0]] ; check\nEndIf\n", "V304", ";@unit mm\nIf [#1 > 0] ; check\nEndIf\n"),
     ("Sub a\nEndSub\n", "F600", ";@unit mm\nSub a\nEndSub\n"),
     (";@unit mm\nCheck the vise first\n", "F603", ";@unit mm\n; Check the vise first\n"),
@@ -325,3 +328,19 @@ def test_incremental_changes_and_utf16_columns(client: LspClient, folder: Path) 
     found = client.diagnostics(uri)
     assert found[0]["range"]["start"] == {"line": 0, "character": 16}  # X is code point 15
     assert "**G0**" in hover(client, uri, 0, 14)
+
+
+def test_folding_ranges_cover_subs_ifs_and_whiles(client: LspClient, folder: Path) -> None:
+    text = ";@unit mm\nSub a\n  If [#1 == 1]\n    G0 X1\n  Else\n    G0 X2\n  EndIf\n  While [0]\n  EndWhile\nEndSub\n"
+    uri = client.open(folder / "fold.cnc", text)
+    found = client.request("textDocument/foldingRange", {"textDocument": {"uri": uri}})
+    assert sorted((r["startLine"], r["endLine"]) for r in found) == [(1, 8), (2, 5)]  # an empty While folds nothing
+
+
+def test_macro_file_changed_on_disk_rechecks_the_open_job(client: LspClient, folder: Path) -> None:
+    uri = client.open(folder / "job.nc")
+    assert (5, "S208") in codes(client.diagnostics(uri))
+    macro = folder / "macro.cnc"
+    macro.write_text(MACRO + "Sub nowhere\nEndSub\n")
+    client.notify("workspace/didChangeWatchedFiles", {"changes": [{"uri": macro.as_uri(), "type": 2}]})
+    assert (5, "S208") not in codes(client.diagnostics(uri))

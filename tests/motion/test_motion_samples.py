@@ -27,15 +27,18 @@ class ScalarCoreXY(KinematicsPlugin):
 
 def test_feed_move_is_sampled_every_interpolation_time(run_job, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     samples = tmp_path / "s.csv"
-    outcome = run_job("G1 X10 F600\n", None, "--samples", str(samples))  # 10 mm/s for 1 s
+    outcome = run_job("G1 X10 F600\n", None, "--samples", str(samples))  # 10 mm/s, 10,000 mm/s^2: 1.001 s
     assert outcome.code == 0, outcome.err
     header, rows = read_csv(samples)
     assert header == list(SAMPLES_COLUMNS)
     data = np.array(rows)
-    assert len(data) == 200
-    np.testing.assert_allclose(data[:, 0], np.arange(1, 201) * 0.005)
-    np.testing.assert_allclose(data[:, 1], np.arange(1, 201) * 0.05)
-    np.testing.assert_array_equal(data[:, 7:13], data[:, 1:7])        # trivial: joints = position
+    assert len(data) == 201                                            # 200 ticks, then the end at rest
+    np.testing.assert_allclose(data[:200, 0], np.arange(1, 201) * 0.005)
+    assert data[-1, 0] == pytest.approx(1.001) and data[-1, 1] == 10.0
+    cruise = data[:200]                                                # speeding up takes 0.001 s, 0.005 mm
+    np.testing.assert_allclose(cruise[:, 1], 10.0 * cruise[:, 0] - 0.005, atol=1e-12)
+    np.testing.assert_allclose(cruise[:, 14], 10.0)                    # v: the feed
+    np.testing.assert_array_equal(data[:, 7:13], data[:, 1:7])         # trivial: joints = position
 
 
 def test_interpolation_time_comes_from_the_ini(run_job, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
@@ -44,9 +47,11 @@ def test_interpolation_time_comes_from_the_ini(run_job, tmp_path: Path) -> None:
                       "--samples", str(samples))
     assert outcome.code == 0, outcome.err
     t = np.array(read_csv(samples)[1])[:, 0]
-    assert len(t) == 200
-    np.testing.assert_allclose(t[:100], np.arange(1, 101) * 0.01)
-    np.testing.assert_allclose(t[100:], 1.5 + np.arange(1, 101) * 0.01)   # the dwell adds its time
+    move = 1.0 + 1.0 / 5000.0                                            # L/v + v/a
+    np.testing.assert_allclose(t[:100], np.arange(1, 101) * 0.01)      # on the global 100 Hz grid
+    second = t[t > move + 0.5]                                          # the dwell adds its time
+    assert second[0] == pytest.approx(1.51) and second[-1] == pytest.approx(2 * move + 0.5)
+    np.testing.assert_allclose(np.diff(second[:-1]), 0.01)
 
 
 def test_rapids_run_at_the_slowest_joints_max_velocity(run_job, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
@@ -56,7 +61,7 @@ def test_rapids_run_at_the_slowest_joints_max_velocity(run_job, tmp_path: Path) 
     outcome = run_job("G0 X100 Y50\n", sections, "--samples", str(samples))
     assert outcome.code == 0, outcome.err
     data = np.array(read_csv(samples)[1])
-    assert data[-1, 0] == pytest.approx(2.0)                         # Y: 50 mm at 25 mm/s
+    assert data[-1, 0] == pytest.approx(2.0 + 50 / 5000)             # Y: 50 mm at 25 mm/s, plus v/a
     assert np.diff(data[:, 2]).max() == pytest.approx(25 * 0.005)
 
 
@@ -89,10 +94,10 @@ def test_trace_joints_are_the_last_sample_of_each_move(run_job, tmp_path: Path) 
     assert outcome.code == 0, outcome.err
     _, moves = read_csv(trace)
     data = np.array(read_csv(samples)[1])
-    for move in moves[-2:]:
+    for move in moves[-1:]:                                          # it ends at rest: its end point is a sample
         row = data[np.all(np.isclose(data[:, 1:7], move[2:8], atol=1e-12), axis=1)][-1]
         assert list(row[7:13]) == move[8:14]
-    arc = data[data[:, 0] > data[np.isclose(data[:, 1:4], (10, 10, 150)).all(axis=1)][-1, 0]]
+    arc = data[data[:, 0] > moves[-2][-1]]                               # after the G1 ends (trace column t)
     np.testing.assert_allclose(np.hypot(arc[:, 1], arc[:, 2] - 10), 10.0)   # the arc, sampled on its circle
 
 
