@@ -8,6 +8,7 @@ of a one-line file), and, measured in this process, how the rest splits into
 parsing and the rules.
 
     python benchmarks/bench_lint.py [--lines N] [--repeat N]
+    python benchmarks/bench_lint.py --files 400 --jobs 2   # many files: -j 1 beside -j N
 """
 from __future__ import annotations
 
@@ -100,11 +101,29 @@ def _split(path: Path, repeat: int) -> tuple[float, float]:
     return min(parse), min(rules)
 
 
+def bench_many(files: int, lines: int, jobs: int, repeat: int) -> None:
+    """``ecnc lint -j 1`` and ``-j N`` on a folder of ``files`` generated files of ``lines`` lines each."""
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp) / "jobs"
+        folder.mkdir()
+        text = generate(Path(tmp), lines).read_text(encoding="utf-8")
+        for index in range(files):
+            (folder / f"job{index:04d}.nc").write_text(text, encoding="utf-8")
+        one = _median_wall([*ECNC, "lint", "-j", "1", str(folder)], repeat)
+        many = _median_wall([*ECNC, "lint", "-j", str(jobs), str(folder)], repeat)
+    print(f"{files} files of {lines} lines: -j 1 {one:.2f} s, -j {jobs} {many:.2f} s ({one / many:.2f}x)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--lines", type=int, default=30_000)
     parser.add_argument("--repeat", type=int, default=7)
+    parser.add_argument("--files", type=int, help="Many files instead: this many, of --lines lines each.")
+    parser.add_argument("--jobs", type=int, default=2, help="With --files: the -j to compare with -j 1.")
     args = parser.parse_args()
+    if args.files:
+        bench_many(args.files, args.lines, args.jobs, args.repeat)
+        return
     with tempfile.TemporaryDirectory() as tmp:
         path = generate(Path(tmp), args.lines)
         one = Path(tmp) / "alone" / "one.cnc"  # a folder of its own: no macro.cnc beside it to load

@@ -1,6 +1,6 @@
 """The parameter store #1..#5999, with the live system variables.
 
-Positions (#5001.., #5071..) are computed when read instead of being copied
+Positions (#5001.., #5071..) and the spindle speed (#5070, which follows X under G96) are computed when read instead of being copied
 after every move; writes to the offset parameters tell the owner to refresh its
 cached offsets.  Which parameters were written is remembered for reports and
 for writing the persistent ones back to cnc.ini.
@@ -12,7 +12,7 @@ from collections.abc import Callable, Mapping
 from . import tables as t
 from .errors import Location, MachineError
 
-LIVE_RANGES = (range(t.POS_WORK, t.POS_WORK + 6), range(t.POS_MACHINE, t.POS_MACHINE + 6))
+LIVE_RANGES = (range(t.POS_WORK, t.POS_WORK + 6), range(t.SPINDLE_SPEED, t.POS_MACHINE + 6))
 OFFSET_RANGES = (range(t.G92_OFFSET, t.G92_OFFSET + 6), range(t.COORD_SYSTEM, t.COORD_OFFSETS + 9 * t.COORD_STRIDE))
 
 

@@ -1,6 +1,7 @@
 """``ecnc lint PATH...``: report mistakes in macro files, jobs and cnc.ini without running them."""
 from __future__ import annotations
 
+import os
 import sys
 from typing import TYPE_CHECKING
 
@@ -41,14 +42,16 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
 @click.option("--list-codes", "show_codes", is_flag=True, help="Print every code with its severity and summary.")
 @click.option("--explain", metavar="CODE", type=LINT_CODE, help="Print the long explanation of CODE (as ecnc help CODE).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress line on stderr (shown on a terminal after a second).")
+@click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
+              help="Check the files on N processes (0: one per CPU); see docs/lint.md.")
 def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini: str | None, fmt: str,
          select: tuple[str, ...], ignore: tuple[str, ...], target: str | None, no_source: bool,
-         show_codes: bool, explain: str | None, quiet: bool) -> int:
+         show_codes: bool, explain: str | None, quiet: bool, jobs: int) -> int:
     """Check PATHs (files, or folders of *.cnc *.nc *.ngc *.tap *.txt); exit 1 if anything is found.
 
     PATH - reads a job from standard input (its macro files: --macro, --user-macro).
     """
-    from ..lint import LintOptions, lint_paths
+    from ..lint import LintOptions, lint_paths_parallel
     from ..lint.driver import expand
     from ..lint.formats import FORMATS, list_codes
 
@@ -66,7 +69,8 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
     show = progress.wanted(quiet)
     count = len(expand(p for p in paths if p != STDIN)) if show else 0
     with whole_trees(), progress.Progress(lambda: (0, 0, f"checking {count:,} files"), show):
-        findings = _lint_with_stdin(paths, options) if STDIN in paths else lint_paths(list(paths), options)
+        findings = (_lint_with_stdin(paths, options) if STDIN in paths
+                    else lint_paths_parallel(paths, options, jobs or os.cpu_count() or 1))
     output = FORMATS[fmt](findings, not no_source)
     if output or fmt != "text":
         print(styled(output, sys.stdout) if fmt == "text" else output)

@@ -57,8 +57,6 @@ class SpindleModes(MachineState):
             self.rpm = clamp_rpm(self.speed, config.spindle_max_rpm, config.spindle_min_rpm)
             data = {"mode": "rpm", "speed": self.speed, "max_rpm": config.spindle_max_rpm}
         rpm = self.rpm_at(self.pos[0])
-        if self.spindle != 5:
-            self.params.set(t.SPINDLE_SPEED, rpm / 60.0)
         self.canon.event(Event("spindle_speed", self.path, self.line, {**data, "rpm": rpm}))
 
     def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -66,7 +64,6 @@ class SpindleModes(MachineState):
         on = self.spindle != 5
         rpm = self.rpm_at(self.pos[0])
         self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
-        self.params.set(t.SPINDLE_SPEED, rpm / 60.0 if on else 0.0)
         self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed,
                                                                  "rpm": rpm if on else 0.0}))
 

@@ -2,5 +2,6 @@
 from __future__ import annotations
 
 from .driver import LintOptions, UnknownCode, lint_paths, parse_codes
+from .parallel import lint_paths_parallel
 
-__all__ = ["LintOptions", "UnknownCode", "lint_paths", "parse_codes"]
+__all__ = ["LintOptions", "UnknownCode", "lint_paths", "lint_paths_parallel", "parse_codes"]

@@ -11,14 +11,13 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from .. import nodes as n
-from ..tables import ARG_PARAMS, PROBE_TRIPPED, code_key
+from ..tables import ARG_PARAMS, PROBE_TRIPPED
 from .facts import Code, FileFacts, gather, indexed_reads
 from .model import SourceFile
-from .names import TOOL_CHANGE_SUB, is_entry_point, m_sub_number
+from .names import TOOL_CHANGE, TOOL_CHANGE_SUB, is_entry_point, m_code_sub, m_sub_number
 from .walk import Scope, dialog_fields, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)
-TOOL_CHANGE = code_key(6)
 # Commands that store a result in the variable whose number they are given.
 _WRITING_COMMANDS = frozenset({"gettoolinfo", "getjobdistance"})
 
@@ -99,9 +98,8 @@ class Project:
             if scope.sub and scope.sub.name.lower() == TOOL_CHANGE_SUB:
                 own = TOOL_CHANGE // 10
             for key, _word in self.codes(file, stmt, "M"):
-                whole, tenth = divmod(key, 10)
-                name = TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
-                if tenth or whole == own:
+                name = m_code_sub(key)
+                if name is None or key // 10 == own:
                     continue
                 found = self.resolve(file, name)
                 if found:

@@ -12,11 +12,12 @@ from .. import knowledge
 from .. import nodes as n
 from ..lint.evaluate import evaluate
 from ..lint.model import SourceFile
+from ..lint.names import m_code_sub
 from ..lint.walk import dialog_fields, literal_index
 from ..printer import format_number
 from ..tables import ARG_PARAMS, code_key, is_read_only
 from .lexer import Token, code_number, token_at, tokens
-from .model import LanguageModel, m_code_sub
+from .model import LanguageModel
 
 _COMMENT = re.compile(r"\s*(?:;(?P<semi>.*)|\((?P<paren>[^)]*)\)\s*)$")
 _AFTER_NAME = re.compile(r"\s*(?:/\s*)?sub\s+[A-Za-z0-9_]+\s*(?P<rest>.*)$", re.IGNORECASE)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from .. import knowledge
 
 _HEAD = re.compile(r"\s*(?:/\s*)?([A-Za-z_][A-Za-z0-9_]*)")
-_SUB_NAME = re.compile(r"\s*(?:/\s*)?(?:sub|gosub)\s+([A-Za-z0-9_]+)", re.IGNORECASE)
+SUB_NAME = re.compile(r"\s*(?:/\s*)?(?:sub|gosub)\s+([A-Za-z0-9_]+)", re.IGNORECASE)
 _PIECES = re.compile(r"""
     (?P<string>"[^"]*"?)
   | (?P<comment>;.*|\([^)]*\)?)
@@ -45,7 +45,7 @@ def tokens(line: str) -> list[Token]:
     if head and entry and entry.kind in ("keyword", "command"):
         found.append(Token(entry.kind, head.group(1), head.start(1), head.end(1)))
         pos = head.end(1)
-        name = _SUB_NAME.match(line)
+        name = SUB_NAME.match(line)
         if name:
             found.append(Token("sub", name.group(1), name.start(1), name.end(1)))
             pos = name.end(1)

@@ -8,7 +8,6 @@ editor jumps exactly where ``ecnc lint`` looks (the file, then ``macro.cnc`` and
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -19,16 +18,14 @@ from ..diagnostics import Diagnostic
 from ..errors import EcncError, Location
 from ..lint.driver import SOURCE_SUFFIXES, is_macro_name, lint_paths, macros_beside
 from ..lint.model import SourceFile, UnreadableFile, load_source
-from ..lint.names import TOOL_CHANGE_SUB
-from ..lint.project import Project, SubKey, sub_key
-from ..tables import code_key
+from ..lint.names import m_code_sub
+from ..lint.project import Project, SubKey
+from .lexer import SUB_NAME
 
 # Files of a folder bigger than this are left out of references and workspace symbols: they are CAM
 # output (long runs of moves), not macro code, and reading them on every request would be slow.
 MAX_INDEXED_BYTES = 512 * 1024
 MAX_WORKSPACE_FILES = 500
-_SUB_LINE = re.compile(r"\s*(?:/\s*)?(?:sub|gosub)\s+([A-Za-z0-9_]+)", re.IGNORECASE)
-TOOL_CHANGE = code_key(6)
 
 
 @dataclass(frozen=True)
@@ -39,14 +36,6 @@ class Place:
     line: int
     start: int
     end: int
-
-
-def m_code_sub(key: int) -> str | None:
-    """The sub an M code calls when it exists: ``m100`` for M100, ``change_tool`` for M6."""
-    whole, tenth = divmod(key, 10)
-    if tenth:
-        return None
-    return TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"
 
 
 class LanguageModel:
@@ -64,6 +53,8 @@ class LanguageModel:
         if text is None:
             self.texts.pop(path, None)
             self._real.pop(os.path.realpath(path), None)
+            for macro in (False, True):  # the editor's version is gone: read the disk next time
+                self._parsed.pop((path, macro), None)
         else:
             self.texts[path] = text
             self._real[os.path.realpath(path)] = path
@@ -168,7 +159,7 @@ def definition_place(file: SourceFile, sub: n.Sub) -> Place:
 def sub_name_place(file: SourceFile, line: int) -> Place:
     """Where the name is on a ``Sub name`` or ``GoSub name`` line (1-based ``line``)."""
     text = file.line(line)
-    match = _SUB_LINE.match(text)
+    match = SUB_NAME.match(text)
     if match:
         return Place(file.path, line - 1, match.start(1), match.end(1))
     return Place(file.path, line - 1, 0, len(text))

@@ -10,11 +10,12 @@ from dataclasses import dataclass
 
 from .. import nodes as n
 from ..lint.model import SourceFile
+from ..lint.names import m_code_sub
 from ..lint.project import sub_key
 from ..lint.walk import walk
 from ..tables import code_key
 from .lexer import code_number, token_at
-from .model import LanguageModel, Place, definition_place, m_code_sub
+from .model import LanguageModel, Place, definition_place
 
 
 @dataclass(frozen=True)

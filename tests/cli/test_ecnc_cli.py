@@ -55,10 +55,10 @@ def test_a_group_alone_prints_its_help_as_a_usage_error(command: list[str], name
 ], ids=["ecnc", "run", "parse", "lint", "kins list", "kins inverse", "kins forward", "kins build"])
 def test_an_unknown_option_is_a_usage_error_of_that_command(command: list[str], arguments: list[str],
                                                             job: Path) -> None:
-    result = invoke(*command, *(a.format(job=job) for a in arguments), "--bogus")
+    result = invoke(*command, *(a.format(job=job) for a in arguments), "--xyzzy")
     assert (result.exit_code, result.stdout) == (2, "")
     assert result.stderr.startswith(" ".join(["usage: ecnc", *command]))
-    assert result.stderr.endswith(": error: unrecognized arguments: --bogus\n")
+    assert result.stderr.endswith(": error: unrecognized arguments: --xyzzy\n")
 
 
 @pytest.mark.parametrize("command", [

@@ -165,3 +165,15 @@ def test_g76_in_diameter_mode_halves_i_j_k_and_ends_on_the_drive_line(tmp_path: 
     assert cuts[0].end[0] == pytest.approx(7 - 1 - 0.2) and cuts[-1].end[0] == pytest.approx(7 - 1 - 0.92)
     assert all(m.feed == pytest.approx(750.0) for m in cuts)
     assert (moves[-1].end[0], moves[-1].end[2]) == (7.0, -20.0)
+
+
+def test_spindle_speed_variable_follows_x_under_css(tmp_path: Path) -> None:
+    _, _, result = run(tmp_path, "G0 X100\nG96 S120 D3000 M3\n#100 = #5070\nG0 X50\n#101 = #5070\nM5\n#102 = #5070\n")
+    rps = [result.variables[n] for n in (100, 101, 102)]  # type: ignore[attr-defined]
+    assert rps[0] == pytest.approx(120_000 / (2 * math.pi * 50) / 60)
+    assert rps[1] == pytest.approx(2 * rps[0]) and rps[2] == 0.0
+
+
+def test_css_in_inches_is_feet_per_minute(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G20\nG0 X2\nG96 S500 D3000 M3\nG0 Z0.1\n")
+    assert moves[-1].spindle == pytest.approx(500 * 304.8 / (2 * math.pi * 25.4))

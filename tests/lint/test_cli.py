@@ -190,7 +190,7 @@ def test_the_garbage_collector_is_paused_only_while_linting(job: Path, monkeypat
         seen.append(gc.isenabled())
         return real(*args, **kwargs)  # type: ignore[arg-type]
 
-    monkeypatch.setattr("edingcnc_lang.lint.lint_paths", spy)
+    monkeypatch.setattr("edingcnc_lang.lint.parallel.lint_paths", spy)  # what the CLI calls with -j 1
     assert gc.isenabled()
     assert run(job).exit_code == 1
     assert seen == [False]  # big acyclic trees: the collector would only waste time on them
