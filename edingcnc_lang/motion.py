@@ -28,7 +28,7 @@ from .geometry import arc_extremes, sweep
 from .kinematics import abi
 from .kinematics.base import Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
-from .kinematics.trajectory import Dynamics, Geometry, dynamics, geometry_of
+from .kinematics.trajectory import CURVATURE_SHARE, Dynamics, Geometry, dynamics, geometry_of
 
 if TYPE_CHECKING:
     import numpy as np
@@ -43,7 +43,7 @@ class PlannerStage(Protocol):
     """The next stage: takes every executed move with its joints and limits, and the events."""
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits,
-             cap: float = math.inf) -> None: ...
+             cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
     def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
                        limits: dict[str, AxisLimits]) -> None: ...
@@ -124,7 +124,7 @@ class MotionStage:
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
         checked = move.kind != "home"  # homing is what puts the joints in their range: not checked
-        cap = math.inf
+        cap = accel = math.inf
         if self._identity() and not self.sample_always:
             samples = None
             if checked:
@@ -132,7 +132,7 @@ class MotionStage:
             joints = move.end
         else:
             start_time = self.time
-            samples, speed = self._sample(move)
+            samples, speed, accel = self._sample(move)
             cap = math.inf if self._identity() else speed
             joints = as_pose(samples.joints[-1])
             if checked and self._identity():
@@ -143,7 +143,7 @@ class MotionStage:
         self.moves += 1
         if self.active is not None:
             self._user_output(self.active, _located(move))
-        self.planner.move(move, joints, samples, self._limits_for(move), cap)
+        self.planner.move(move, joints, samples, self._limits_for(move), cap, accel)
 
     def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         """Straight moves in bulk; joints = position and no samples make this the cheap case."""
@@ -356,8 +356,9 @@ class MotionStage:
             answer = ask(move.start, move.end, geo.center, normal, geo.turns) if ask else None
         return None if answer is None else AxisLimits(_positive(answer[0]), _positive(answer[1]))
 
-    def _sample(self, move: Move) -> tuple[Samples, float]:
-        """Sample a move at the speed it may run at, evaluate the joints on every sample; return both.
+    def _sample(self, move: Move) -> tuple[Samples, float, float]:
+        """Sample a move at the speed it may run at and evaluate the joints on every sample; return the
+        samples, that speed and the path acceleration the joints allow (inf while joints = position).
 
         Feed moves run at the programmed feed (times the feed override) unless an axis limit
         (Cartesian, or the joints' velocities and accelerations) needs them slower, as the
@@ -377,21 +378,30 @@ class MotionStage:
         joint_velocity = self._joint_limits.velocity * (self._rapid_velocity_factor if fastest else 1.0)
         feed = move.feed / 60.0 * (1.0 if move.sync > 0.0 else self.planner.overrides.feed_factor)
         speed = feed if not fastest else _first_guess(geo, limits.velocity)
+        joint_dynamics = None
         for attempt in range(PLAN_PASSES + 1):
             t, pos = geo.sample(speed, dt)
             factor = dynamics(0.0, start, t, pos, dt).speed_factor(limits.velocity, limits.acceleration)
             joints = self._joints_of(pos, where) if not self._identity() else pos.copy()
             if joint_timed:
-                v_ratio, a_ratio = dynamics(0.0, start_joints, t, joints, dt).ratios(
-                    joint_velocity, self._joint_limits.acceleration)
-                factor = max(factor, math.sqrt(a_ratio.max()), v_ratio.max())
+                joint_dynamics = dynamics(0.0, start_joints, t, joints, dt)
+                v_ratio, a_ratio = joint_dynamics.ratios(joint_velocity, self._joint_limits.acceleration)
+                # the joints' path curvature may use CURVATURE_SHARE of their acceleration
+                factor = max(factor, math.sqrt(a_ratio.max() / CURVATURE_SHARE), v_ratio.max())
             done = factor <= 1.0 + 1e-9 and (not fastest or factor >= 0.999 or factor == 0.0)
             if done or attempt == PLAN_PASSES or not math.isfinite(speed / factor):
                 break
             speed /= factor
+        accel = math.inf
+        if joint_dynamics is not None and speed > 0.0:
+            # a joint moving g mm per mm of path speeds up g times as hard, with what the curvature leaves
+            gain = joint_dynamics.velocity / speed
+            room = np.maximum(self._joint_limits.acceleration - joint_dynamics.acceleration, 0.0)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                accel = float(np.nanmin(np.where(gain > 0.0, room / gain, np.inf)))
         start_time = self.time
         self.time += float(t[-1])
-        return Samples(t + start_time, pos, joints), speed
+        return Samples(t + start_time, pos, joints), speed, accel
 
     def _limit_error(self, move: Move, axis: int, value: float) -> MachineError:
         joint = self.config.joints[axis]

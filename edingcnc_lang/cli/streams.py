@@ -28,7 +28,12 @@ class ClosedStream(io.TextIOBase):
 
 
 def make_streams_usable() -> None:
-    """Replace a closed stdout or stderr (see the module's docstring); let text stdout can't encode be escaped."""
+    """Replace a closed stdin, stdout or stderr (see the module's docstring); let text stdout can't encode be escaped.
+
+    A closed stdin reads as empty (``ecnc mdi <&-`` ends at once, ``ecnc run - <&-`` runs nothing).
+    """
+    if sys.stdin is None:
+        sys.stdin = open(os.devnull)  # noqa: SIM115 - lives as long as the process
     if sys.stderr is None:
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - lives as long as the process
     if sys.stdout is None:

@@ -22,6 +22,12 @@ if TYPE_CHECKING:
     from edingcnc_lang.kinematics.sampling import ArcFrame
 
 
+# On a curve the acceleration goes to two jobs: turning (v^2 / r) and speeding up along it.  As in
+# LinuxCNC, the turn may use at most sqrt(3)/2 of an axis' (or joint's) acceleration and the change
+# of speed gets what is left, so that together they stay within the limit (docs/planner.md).
+CURVATURE_SHARE = math.sqrt(3.0) / 2.0
+
+
 @dataclass(frozen=True)
 class Geometry:
     """The path of a move in machine coordinates; ``center`` is None for a straight move."""

@@ -16,7 +16,7 @@ from pathlib import Path
 from ..codes import CODES
 from ..diagnostics import Diagnostic
 from ..source import iter_file_lines
-from . import rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
+from . import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
 from .model import SourceFile, load_source
 from .project import Project
 from .registry import RULES

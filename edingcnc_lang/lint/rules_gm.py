@@ -51,14 +51,14 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
                              "put them on separate lines", word.span)
 
 
-@rule("G508")
+@rule("G509")
 def unknown_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """What ``run`` stops on at the first unknown G code, found at the desk."""
     for block in project.facts(file).blocks:
         for key, word in block.g:
             if key not in G_GROUPS:
                 hint = f": {UNKNOWN_G_HINTS[key]}" if key in UNKNOWN_G_HINTS else ""
-                yield at("G508", f"{code_name('G', key)} is not an EdingCNC code, the controller stops here with "
+                yield at("G509", f"{code_name('G', key)} is not an EdingCNC code, the controller stops here with "
                          f"'unknown G code'{hint}", word.span)
 
 

@@ -58,6 +58,8 @@ class Estimate:
         self.feed_distance += feed_distance
         self.seconds += rapid_seconds + feed_seconds
         self.moves += count
+        if not (rapid_seconds or feed_seconds or rapid_distance or feed_distance):
+            return  # moves of zero length (a tool change macro already where it goes): no share for the tool
         share = self.per_tool.setdefault(tool, ToolTime())
         share.seconds += rapid_seconds + feed_seconds
         share.rapid_seconds += rapid_seconds
@@ -81,7 +83,8 @@ class Estimate:
 
     def summary(self) -> str:
         """One line for people: ``2,431 moves, 1 h 12 min 5 s, 84.2 m``."""
-        return f"{self.moves:,} moves, {format_duration(self.seconds)}, {format_distance(self.rapid_distance + self.feed_distance)}"
+        moves = f"{self.moves:,} move{'' if self.moves == 1 else 's'}"
+        return f"{moves}, {format_duration(self.seconds)}, {format_distance(self.rapid_distance + self.feed_distance)}"
 
 
 def format_duration(seconds: float) -> str:

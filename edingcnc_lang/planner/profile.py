@@ -26,7 +26,8 @@ def plan_nodes(length: np.ndarray, accel: np.ndarray, cap2: np.ndarray, start2: 
     backward = np.minimum.accumulate((cap2 + reach)[::-1])[::-1] - reach
     backward[0] = min(float(backward[0]), start2)
     forward = np.minimum.accumulate(backward - reach) + reach
-    return np.maximum(forward, 0.0)
+    # the offsets cost a few ulps of the running sum: keep caps (stops above all) exact
+    return np.clip(forward, 0.0, np.maximum(cap2, 0.0))
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..kinematics.trajectory import Geometry
+from ..kinematics.trajectory import CURVATURE_SHARE, Geometry
+
+MAX_CURVATURE_SHARE = 0.95  # lafArcfeedFactor may raise the turn's share, never to all of it
+
 
 @dataclass(frozen=True)
 class Segments:
@@ -62,8 +65,8 @@ def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.nda
     ``speed`` is each move's own speed limit (the programmed feed with its override, a plug-in's or
     the joints' limit; inf for rapids); ``vlim``/``alim`` (6, n) the axis limits each move runs
     against, or (6,) when they are the same for all.  Arcs also keep v^2 / r within the in-plane
-    acceleration (times ``arc_accel_factor``), except arcs shorter than ``min_arc_length``, which
-    the controller runs as one straight chord.
+    acceleration's ``CURVATURE_SHARE`` (times ``arc_accel_factor``) and speed up with what is left,
+    except arcs shorter than ``min_arc_length``, which the controller runs as one straight chord.
     """
     vlim = vlim if vlim.ndim == 2 else vlim[:, None]
     alim = alim if alim.ndim == 2 else alim[:, None]
@@ -89,6 +92,9 @@ def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.nda
         with np.errstate(divide="ignore"):
             vmax[index], accel[index] = 1.0 / np.max(fraction / row_v), 1.0 / np.max(fraction / row_a)
         if arc_len >= min_arc_length and radius > 0.0:
-            centripetal = min(row_a[u], row_a[v]) * arc_accel_factor
-            speed[index] = min(speed[index], math.sqrt(centripetal * radius))
+            in_plane = min(row_a[u], row_a[v])
+            centripetal = in_plane * min(CURVATURE_SHARE * arc_accel_factor, MAX_CURVATURE_SHARE)
+            speed[index] = min(speed[index], vmax[index], math.sqrt(centripetal * radius))
+            # speeding up along the arc gets what the circle leaves of the in-plane acceleration
+            accel[index] = min(accel[index], in_plane - speed[index] ** 2 / radius)
     return Segments(length, xyz_length, tangent_in, tangent_out, np.minimum(vmax, speed), accel)

@@ -76,8 +76,10 @@ class Planner:
         self._clear()
 
     # ------------------------------------------------------------------ input
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits, cap: float = math.inf) -> None:
-        """One move with the limits it runs against; ``cap`` is a speed the kinematics' joints allow (mm/s)."""
+    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits, cap: float = math.inf,
+             accel_cap: float = math.inf) -> None:
+        """One move with the limits it runs against; ``cap`` and ``accel_cap`` are the path speed (mm/s) and
+        acceleration (mm/s^2) the kinematics' joints allow."""
         if self._ends and move.start != self._ends[-1]:
             self.flush()  # the position jumped (a kinematics switch): nothing to blend
         if not self._ends:
@@ -89,6 +91,7 @@ class Planner:
         self._feed.append(move.feed)
         self._kind.append(KIND_CODES[move.kind])
         self._cap.append(cap)
+        self._accel_cap.append(accel_cap)
         # a spindle-synchronised cut (G33, G76) follows the spindle: the feed override does not act on it
         self._state.append(self._state_id(limit, limit, 1.0 if move.sync > 0.0 else self.overrides.feed_factor))
         self._joints.append(None if samples is None else samples.joints)
@@ -112,6 +115,7 @@ class Planner:
         self._feed.extend([item[3] for item in batch])
         self._kind.extend([STRAIGHT] * count)
         self._cap.extend([math.inf] * count)
+        self._accel_cap.extend([math.inf] * count)
         state = self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]),
                                self.overrides.feed_factor)
         self._state.extend([state] * count)
@@ -158,6 +162,7 @@ class Planner:
         self._feed: list[float] = []    # mm/min as programmed (0 for rapids)
         self._kind: list[int] = []      # a KIND_CODES value, or STRAIGHT: rapid if the feed is 0, else linear
         self._cap: list[float] = []     # the speed the kinematics' joints allow
+        self._accel_cap: list[float] = []  # the path acceleration they allow
         self._state: list[int] = []     # index into self._states
         self._joints: list[Any] = []    # the joints sampled along the move, None where they are the position
         self._sampled = 0               # how many of them are not None
@@ -220,10 +225,11 @@ class Planner:
         seg = segments(starts, ends, speed, vlim, alim, self._arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
         moving = np.flatnonzero(seg.length > 0.0)  # moves of zero length take no time and do not stop the machine
         exact = exact[moving]
-        length, vmax, accel = seg.length[moving], seg.vmax[moving], seg.accel[moving]
+        all_accel = np.minimum(seg.accel, np.array(self._accel_cap))
+        length, vmax, accel = seg.length[moving], seg.vmax[moving], all_accel[moving]
         before, after = moving[:-1], moving[1:]
         corner = corner_speeds2(seg.tangent_out[:, before], seg.tangent_in[:, after], seg.length[before],
-                                seg.length[after], np.minimum(seg.accel[before], seg.accel[after]),
+                                seg.length[after], np.minimum(all_accel[before], all_accel[after]),
                                 tolerance[state[after]], cfg.laf_angle)
         corner = np.where(exact[:-1] | exact[1:], 0.0, np.minimum(corner, np.minimum(vmax[:-1], vmax[1:]) ** 2))
         first = 0.0 if len(exact) and exact[0] else self._start2
@@ -255,7 +261,7 @@ class Planner:
         """Forget the first ``count`` collected moves (already committed)."""
         if count:
             self._origin = self._ends[count - 1]
-        for values in (self._ends, self._feed, self._kind, self._cap, self._state, self._joints):
+        for values in (self._ends, self._feed, self._kind, self._cap, self._accel_cap, self._state, self._joints):
             del values[:count]
         if self._sampled:
             self._sampled = sum(j is not None for j in self._joints)

@@ -5,7 +5,8 @@ effect (data: ``side`` "left" | "right" | "off", ``radius`` in mm, ``plane``).  
 the path sideways by the tool radius in the selected plane:
 
 - the entry move (the first move after G41/G42) ends a radius to the side of its programmed end,
-  square to its direction; it must be longer than the radius;
+  square to its direction (an entry arc: on the line from its end to its centre); it must be
+  longer than the radius;
 - at an outside (convex) corner the tool goes round the corner point on an arc of the tool
   radius (a G0 goes straight to where that arc would end);
 - at an inside (concave) corner the previous move is cut back to where the tool touches both
@@ -23,7 +24,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import replace
 
-from ..canon import Canon, Event, Move, Pose
+from ..canon import Arc, Canon, Event, Move, Pose
 from ..config import MachineConfig
 from ..errors import Location, MachineError
 from .base import FLUSHING_EVENTS, Stage, each_move
@@ -269,10 +270,10 @@ class CutterCompensation(Stage):
 
     # ---------------------------------------------------------------- arcs
     def _arc(self, move: Move) -> None:
-        if self.first:
-            raise _refuse(move, "the entry move after G41/G42 must be a straight move (an arc entry is not "
-                               "supported)")
         assert move.arc is not None
+        if self.first:
+            self._arc_entry(move, move.arc)
+            return
         frame = self.frame
         start, end_p = self.program, frame.point(move.end)
         center = frame.center(move.arc)
@@ -321,6 +322,33 @@ class CutterCompensation(Stage):
             self.endpoint = current
         self._enqueue(Queued("arc", move.path, move.line, arc_end, move.feed, center=center, turn=turn, sweep=sweep))
         self.current = arc_end
+        self.program = end_p
+
+    def _arc_entry(self, move: Move, arc: Arc) -> None:
+        """An arc as the entry move: it ends a radius to the side of its end, on a circle through the tool."""
+        frame = self.frame
+        current = self._begin(move)
+        end_p, center = frame.point(move.end), frame.center(arc)
+        if math.dist(current, end_p) <= self.radius:
+            raise _refuse(move, "the entry arc must end further than the tool radius from where it starts")
+        if tool_inside_arc(self.side, arc.turn) and math.dist(center, end_p) <= self.radius:
+            raise _refuse(move, f"the tool radius {self.radius:.4f} mm does not fit inside the arc of radius "
+                                f"{math.dist(center, end_p):.4f} mm")
+        toward = (center, end_p) if tool_inside_arc(self.side, arc.turn) else (end_p, center)
+        end = at(end_p, self.radius, math.atan2(toward[0][1] - toward[1][1], toward[0][0] - toward[1][0]))
+        # the compensated arc's centre: on the line from its end towards the programmed centre,
+        # equally far from the end and from the start (the tool)
+        half = math.dist(current, end) / 2.0
+        towards_center = math.atan2(center[1] - end[1], center[0] - end[0])
+        cosine = math.cos(math.atan2(current[1] - end[1], current[0] - end[0]) - towards_center)
+        if abs(cosine) < 1e-4:
+            raise _refuse(move, "the tool radius is not smaller than the radius of the entry arc")
+        new_center = at(end, half / cosine, towards_center)
+        self.endpoint = None
+        self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, end), move.feed, center=new_center,
+                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end)))
+        self.first = False
+        self.current = frame.pose(move.end, end)
         self.program = end_p
 
     def _line_arc_corner(self, center: Point, arc_radius: float, theta: float, beta: float, turn: int,

@@ -115,3 +115,9 @@ def test_errors_with_stderr_closed_keep_their_exit_code(tmp_path: Path) -> None:
     write(tmp_path, "bad.nc", "G0 X[1\n")
     result = _shell("ecnc run bad.nc 2>&-", tmp_path)
     assert (result.returncode, result.stdout) == (65, "")
+
+
+def test_a_closed_stdin_reads_as_empty(tmp_path: Path) -> None:
+    assert _shell("ecnc mdi <&-", tmp_path).returncode == 0
+    result = _shell("ecnc run --json - <&-", tmp_path)
+    assert result.returncode == 0 and json.loads(result.stdout)["moves"] == 0

@@ -79,7 +79,7 @@ REFUSALS = [
     ("G0 X-10\nG41 D1\nG1 X0 F100\nG1 X10\nG40\nG2 X0 I-5\n", 6, "after G40"),
     ("G41 D1.5\n", 1, "tool number"),
     ("G42.1\n", 1, "needs D"),
-    ("G0 X0 Y0\nG41 D1\nG2 X10 I5 F100\n", 3, "entry move after G41/G42 must be a straight move"),
+    ("G0 X0 Y0\nG41 D2\nG2 X4 I2 F100\n", 3, "entry arc must end further than the tool radius"),
 ]
 
 

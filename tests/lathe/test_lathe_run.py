@@ -5,6 +5,8 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from edingcnc_lang import RunOptions, run_string
 from edingcnc_lang.canon import Event, Move
@@ -177,3 +179,37 @@ def test_spindle_speed_variable_follows_x_under_css(tmp_path: Path) -> None:
 def test_css_in_inches_is_feet_per_minute(tmp_path: Path) -> None:
     moves, _, _ = run(tmp_path, "G20\nG0 X2\nG96 S500 D3000 M3\nG0 Z0.1\n")
     assert moves[-1].spindle == pytest.approx(500 * 304.8 / (2 * math.pi * 25.4))
+
+
+def test_offsets_read_x_as_a_diameter(tmp_path: Path) -> None:
+    job = "G0 X60 Z10\nG10 L20 P1 X50\n#100 = #5001\n#101 = #5221\nG92 X40\n#102 = #5001\n#103 = #5211\n"
+    _, _, result = run(tmp_path, job)
+    values = [result.variables[n] for n in range(100, 104)]  # type: ignore[attr-defined]
+    assert values == [50.0, 5.0, 40.0, 5.0]  # radius 30 shown as 50 -> offset 5; then G92 shifts 5 more
+
+
+def test_css_centre_is_work_x0_with_the_tool_offset(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G10 L2 P1 X7\nG43 H2\nG96 S100 D3000 M3\nG0 X40 Z5\n")
+    css = moves[0].css
+    assert css is not None and css.axis_x == pytest.approx(7 / 2 - 1.5 + 0.1)  # G10 L2 X is a diameter too
+    assert moves[0].spindle == pytest.approx(100_000 / (2 * math.pi * 20))
+
+
+@settings(max_examples=40)
+@given(st.lists(st.tuples(st.sampled_from(["G0", "G1", "G33"]), st.floats(0.5, 80).map(lambda v: round(v, 3)),
+                          st.floats(-60, 5).map(lambda v: round(v, 3))), min_size=1, max_size=8),
+       st.booleans())
+def test_diameter_mode_is_radius_mode_with_doubled_x(moves_in: list[tuple[str, float, float]], inch: bool) -> None:
+    import tempfile
+
+    def lines(factor: float) -> str:
+        body = "".join(f"{g} X{x * factor:.4f} Z{z}{' K1.5' if g == 'G33' else ''}\n" for g, x, z in moves_in)
+        return f"{'G20' if inch else 'G21'}\nG97 S500 M3\nG95 F0.1\n{body}"
+
+    with tempfile.TemporaryDirectory() as folder:
+        dia, _, _ = run(Path(folder), lines(2.0), diameter=True)
+    with tempfile.TemporaryDirectory() as folder:
+        rad, _, _ = run(Path(folder), lines(1.0), diameter=False)
+    assert [(m.kind, m.sync) for m in dia] == [(m.kind, m.sync) for m in rad]
+    for a, b in zip(dia, rad):
+        assert a.end == pytest.approx(b.end, abs=1e-9) and a.feed == pytest.approx(b.feed)

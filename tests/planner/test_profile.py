@@ -113,6 +113,7 @@ def test_planned_nodes_respect_caps_and_acceleration(length: list[float], speed:
     corners = data.draw(st.lists(st.floats(0.0, 1e6), min_size=n - 1, max_size=n - 1))
     cap2 = np.array([0.0, *corners, 0.0])
     node2 = plan_nodes(np.array(length), np.full(n, accel), cap2, 0.0)
-    assert (node2 <= cap2 * (1 + 1e-9) + 1e-9).all()
+    assert (node2 <= cap2).all()
     reach = 2 * accel * np.array(length)
-    assert (np.abs(np.diff(node2)) <= reach * (1 + 1e-9) + 1e-9).all()  # every change of speed is reachable
+    rounding = 1e-12 * reach.sum()  # the passes work on running sums of the reach
+    assert (np.abs(np.diff(node2)) <= reach * (1 + 1e-9) + rounding).all()  # every change of speed is reachable
