@@ -21,7 +21,10 @@ from .options import MachineOptions, machine_options
 from .style import styled
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     from ..canon import Pose
+    from ..host import DialogAnswer, DialogField
     from ..mdi import MdiOutcome
 
 PROMPT, MORE = "MDI> ", "...> "
@@ -41,7 +44,10 @@ def mdi(machine: MachineOptions) -> int:
     from ..mdi import MdiSession, open_blocks
 
     interactive = sys.stdin.isatty() and sys.stdout.isatty()
-    session = MdiSession(machine.run_options(show_messages=True))
+    options = machine.run_options(show_messages=True)
+    if interactive and not machine.answers:  # a dlgmsg asks, as the controller's dialog would
+        options.host.dialog = ask_dialog
+    session = MdiSession(options)
     if interactive:
         _history(load=True)
         print("ecnc mdi: G-code, macro statements or an expression; exit or Ctrl-D ends.")
@@ -100,6 +106,29 @@ def _show(outcome: MdiOutcome) -> None:
 
 def _pose(values: Pose) -> str:
     return " ".join(f"{axis}{value:.4f}" for axis, value in zip("XYZABC", values))
+
+
+def ask_dialog(title: str, fields: Sequence[DialogField]) -> DialogAnswer:
+    """A dlgmsg at the prompt: each field with its value (Enter keeps it), then OK; Ctrl-C cancels."""
+    from ..host import DialogAnswer
+
+    print(f"dialog: {title}")
+    values: dict[int, float] = {}
+    try:
+        for item in fields:
+            while True:
+                typed = input(f"  {item.label} (#{item.index}) [{item.value:g}]: ").strip()
+                try:
+                    if typed:
+                        values[item.index] = float(typed)
+                    break
+                except ValueError:
+                    print(f"  {typed!r} is not a number")
+        ok = input("OK? [Y/n] ").strip().lower() in ("", "y", "yes", "ok")
+    except (KeyboardInterrupt, EOFError):
+        print()
+        ok = False
+    return DialogAnswer(ok, values if ok else {})
 
 
 def _history(load: bool) -> None:

@@ -79,3 +79,21 @@ def test_the_session_api() -> None:
                                               (["Sub a", "EndSub"], 0), (["N10 if [1]"], 1), (["G0 X1"], 0)])
 def test_open_blocks(lines: list[str], depth: int) -> None:
     assert open_blocks(lines) == depth
+
+
+def test_a_dialog_at_the_prompt_asks_each_field(monkeypatch: pytest.MonkeyPatch,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    from edingcnc_lang.cli.mdi_cmd import ask_dialog
+    from edingcnc_lang.host import DialogField
+
+    typed = iter(["", "x", "2.5", "y"])
+    monkeypatch.setattr("builtins.input", lambda _prompt: next(typed))
+    answer = ask_dialog("Setup", [DialogField("Width", 27, 10.0), DialogField("Length", 28, 5.0)])
+    assert (answer.ok, dict(answer.values)) == (True, {28: 2.5})
+    assert "'x' is not a number" in capsys.readouterr().out
+
+    def interrupted(_prompt: str) -> str:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("builtins.input", interrupted)
+    assert not ask_dialog("Setup", [DialogField("Width", 27, 10.0)]).ok
