@@ -82,7 +82,7 @@ CODES: dict[str, Code] = _table(
     ("G506", E, "tool number over 99"),
     ("G507", E, "more than 4 M words on a line"),
     ("G508", W, "arc with the compensated tool inside it that is not larger than the tool radius"),
-    ("G509", E, "G code the controller does not know (e.g. LinuxCNC's lathe G7)"),
+    ("G509", E, "a G code the controller does not know (G7/G8: see diameterProgramming)"),
     ("F600", E, "macro file without an @unit directive on its first line (EdingCNC G1290)"),
     ("F601", W, "line longer than 256 characters"),
     ("F602", E, "line longer than 1055 characters"),

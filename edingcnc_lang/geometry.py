@@ -6,6 +6,7 @@ plane's normal, so "counter-clockwise" means the same in G17, G18 and G19.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 # A start/end radius difference up to this much is accepted (mm, or a fraction of the radius).
 RADIUS_TOLERANCE_MM = 0.002
@@ -70,3 +71,15 @@ def arc_extremes(center: tuple[float, float], radius: float, start_angle: float,
         if rel <= sweep_angle + 1e-12:
             points.append((center[0] + radius * math.cos(quadrant), center[1] + radius * math.sin(quadrant)))
     return points
+
+
+def scale_about(pose: Sequence[float], center: Sequence[float], factors: Sequence[float]) -> tuple[float, ...]:
+    """``pose`` with X, Y, Z scaled by ``factors`` about ``center`` (rotary axes unchanged)."""
+    return tuple(c + f * (p - c) for p, f, c in zip(pose[:3], factors, center)) + tuple(pose[3:])
+
+
+def rotate_about(pose: Sequence[float], pivot: Sequence[float], degrees: float) -> tuple[float, ...]:
+    """``pose`` turned by ``degrees`` (counter-clockwise seen from +Z) about the vertical through ``pivot``."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    dx, dy = pose[0] - pivot[0], pose[1] - pivot[1]
+    return (pivot[0] + c * dx - s * dy, pivot[1] + s * dx + c * dy, *pose[2:])

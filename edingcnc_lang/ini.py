@@ -10,11 +10,12 @@ asked for, which are reported at their ini line when they do not parse.  What th
 from __future__ import annotations
 
 import contextlib
+import glob
 import math
 import os
 import re
 import stat
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
@@ -225,8 +226,11 @@ def _update_variables(text: str, values: Mapping[int, float]) -> str:
     return "".join(body + end for body, end in lines)
 
 
-def _write_atomic(path: Path, data: bytes) -> None:
-    """Write beside the target and rename over it, so a failure leaves the old file intact."""
+def _write_atomic(path: Path, data: bytes, info: os.stat_result) -> bool:
+    """Write beside the target and rename over it, so a kill leaves the old file or the new one.
+
+    Returns False, having changed nothing, when the new file could not keep the old one's owner.
+    """
     import tempfile  # only when writing back (start-up time)
 
     tmp: str | None = None
@@ -236,26 +240,82 @@ def _write_atomic(path: Path, data: bytes) -> None:
             handle.write(data)
             handle.flush()
             os.fsync(handle.fileno())
-        os.chmod(tmp, stat.S_IMODE(path.stat().st_mode))
+        os.chmod(tmp, stat.S_IMODE(info.st_mode))
+        if (info.st_uid, info.st_gid) != (os.getuid(), os.getgid()) if hasattr(os, "getuid") else False:
+            try:
+                os.chown(tmp, info.st_uid, info.st_gid)
+            except OSError:  # someone else's file we may write: keep it theirs by writing in place
+                os.unlink(tmp)
+                return False
         os.replace(tmp, path)
-    except BaseException as exc:
+        return True
+    except BaseException:
         if tmp is not None:
             with contextlib.suppress(OSError):
                 os.unlink(tmp)
-        if isinstance(exc, OSError):
-            raise ConfigError(f"cannot write variables back: {exc.strerror or exc}",
-                              Location(str(path))) from exc
         raise
+
+
+def _write_in_place(path: Path, data: bytes) -> None:
+    """Rewrite the file itself: keeps its hard links and owner, but a kill mid-write can cut it short."""
+    with open(path, "r+b") as handle:
+        handle.write(data)
+        handle.truncate()
+        handle.flush()
+        os.fsync(handle.fileno())
+
+
+@contextlib.contextmanager
+def _locked(path: Path) -> Iterator[None]:
+    """Hold an exclusive lock on the ini's folder, so concurrent runs write back in turn.
+
+    The folder rather than the file, whose inode the atomic replace swaps, and rather than a lock
+    file, which would be left behind; without fcntl (Windows) there is no lock.
+    """
+    try:
+        import fcntl
+    except ImportError:
+        yield
+        return
+    fd = os.open(path.parent, os.O_RDONLY | getattr(os, "O_CLOEXEC", 0))
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)
+
+
+def _remove_stale_temporaries(path: Path) -> None:
+    """Temporary files of a write-back that was killed (only called under the lock, so none is live)."""
+    for stale in path.parent.glob(f".{glob.escape(path.name)}.*.tmp"):
+        with contextlib.suppress(OSError):
+            stale.unlink()
 
 
 def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -> None:
     """Store ``values`` as ``#n = value`` lines in ``[VARIABLES]``, changing nothing else in the file.
 
+    Under a lock, the file is read as it is now and only ``values`` change in it, so concurrent
+    runs each keep their own changes.  A read-only file is refused; the new file replaces the old
+    one atomically unless that would lose a hard link or the owner, then it is rewritten in place.
     The file is handled as Latin-1, which maps each byte to one character and back, so text in
     any encoding survives byte for byte (the ini syntax itself is ASCII).
     """
+    if not values:
+        return
     target = Path(os.path.realpath(path))
-    raw = _read_bytes(target)
-    bom = _BOM if raw.startswith(_BOM) else b""
-    text = _update_variables(raw[len(bom):].decode("latin-1"), values)
-    _write_atomic(target, bom + text.encode("latin-1"))
+    try:
+        with _locked(target):
+            info = target.stat()
+            if not info.st_mode & (stat.S_IWUSR | stat.S_IWGRP | stat.S_IWOTH) or not os.access(target, os.W_OK):
+                raise ConfigError("cannot write variables back: the file is read-only (mode "
+                                  f"{stat.S_IMODE(info.st_mode):04o}); make it writable or leave out --save-vars",
+                                  Location(str(path)))
+            _remove_stale_temporaries(target)
+            raw = _read_bytes(target)
+            bom = _BOM if raw.startswith(_BOM) else b""
+            data = bom + _update_variables(raw[len(bom):].decode("latin-1"), values).encode("latin-1")
+            if info.st_nlink > 1 or not _write_atomic(target, data, info):
+                _write_in_place(target, data)
+    except OSError as exc:
+        raise ConfigError(f"cannot write variables back: {exc.strerror or exc}", Location(str(path))) from exc

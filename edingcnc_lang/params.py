@@ -22,6 +22,7 @@ class Parameters:
     def __init__(self, live: Callable[[int], float], on_offsets: Callable[[], None]) -> None:
         self.values = [0.0] * (t.LAST_PARAM + 1)
         self.written: set[int] = set()
+        self._start: dict[int, float] = {}  # loaded values: what "changed" is measured against
         self._live = live
         self._on_offsets = on_offsets
         self._live_set = frozenset(i for r in LIVE_RANGES for i in r)
@@ -49,7 +50,12 @@ class Parameters:
         """Initial values (persisted variables, tool table) that do not count as written."""
         for index, value in values.items():
             self.values[index] = value
+        self._start.update(values)
         self._on_offsets()
 
     def snapshot_written(self) -> dict[int, float]:
         return {i: self.read(i) for i in sorted(self.written)}
+
+    def snapshot_changed(self) -> dict[int, float]:
+        """Written parameters whose value is not the one the run started with (what --save-vars stores)."""
+        return {i: v for i, v in self.snapshot_written().items() if v != self._start.get(i, 0.0)}

@@ -15,7 +15,7 @@ from typing import Any
 from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
-from .config import MachineConfig, is_persisted, load_config, save_variables
+from .config import MachineConfig, load_config, save_variables
 from .errors import EcncError, Interrupted, Location, MachineError
 from .host import Host
 from .interpreter import Interpreter
@@ -235,8 +235,7 @@ class Run:
             error.result = result  # type: ignore[attr-defined]
             raise error
         if self.options.save_vars and self.config.path:
-            save_variables(self.config.path, {i: v for i, v in interp.params.snapshot_written().items()
-                                              if is_persisted(i)})
+            save_variables(self.config.path, interp.params.snapshot_changed())
         return result
 
     def _flush(self, error: EcncError | None) -> EcncError | None:
@@ -258,7 +257,7 @@ class Run:
         kin = self.kinematics
         return RunResult(
             position=tuple(interp.reported_position()),  # type: ignore[arg-type]
-            machine=tuple(interp.pos),  # type: ignore[arg-type]
+            machine=interp.machine_frame(interp.pos),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
             messages=list(interp.messages),

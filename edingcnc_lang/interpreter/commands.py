@@ -18,9 +18,9 @@ class Commands(MachineState):
     def _exec_home(self, stmt: n.Home) -> None:
         self._kinematics_off()
         axis = AXES.index(stmt.axis)
-        end = list(self.pos)
+        end = list(self.machine_frame(self.pos))
         end[axis] = self.config.joints[axis].home_position
-        self._move("home", end)
+        self._machine_move("home", end)
 
     def _exec_prepare_delta(self, stmt: n.PrepareLinDeltaHome) -> None:
         self._kinematics_off()
@@ -28,10 +28,10 @@ class Commands(MachineState):
             else abs(self.config.joints[0].home_velocity)
         if velocity <= 0:
             raise self.fail("PrepareLinDeltaHome needs a positive velocity", stmt.span)
-        end = list(self.pos)
+        end = list(self.machine_frame(self.pos))
         for axis in range(3):
             end[axis] = self.config.joints[axis].home_position
-        self._move("home", end, velocity * 60.0)
+        self._machine_move("home", end, velocity * 60.0)
 
     def _kinematics_off(self) -> None:
         if self.kinematics_active:

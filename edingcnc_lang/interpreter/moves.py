@@ -93,9 +93,6 @@ class Moves(MachineState):
                     center = (machine[first], machine[second])
                 else:
                     d1, d2 = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
-                    if self.rotation and plane == "XY":
-                        c, sn = math.cos(math.radians(self.rotation[2])), math.sin(math.radians(self.rotation[2]))
-                        d1, d2 = c * d1 - sn * d2, sn * d1 + c * d2
                     center = (s[0] + d1, s[1] + d2)
                 check_radius(s, center, e)
         except ArcError as err:
@@ -134,6 +131,8 @@ class Moves(MachineState):
         A turn larger than tanKnifeAngleForLiftUp lifts the knife, turns it and lowers it
         again (three moves); a smaller one turns in place.  Returns the new C.
         """
+        if self.rotation is not None:  # the cut runs turned on the machine
+            direction += self.rotation[2]
         current = self.pos[5]
         target = current + ((direction - current + 180.0) % 360.0 - 180.0)
         turn = abs(target - current)
@@ -160,14 +159,13 @@ class Moves(MachineState):
             raise self.fail(f"G38.2 target is {distance:.4f} mm away; it must be at least {MIN_PROBE_DISTANCE} mm",
                             span)
         feed = self._feed_for(distance, words, span)
-        start = tuple(self.pos)
-        trip = self.host.probe(start, tuple(target)) if self.host.probe else tuple(target)  # type: ignore[arg-type]
-        end = list(trip) if trip is not None else target
-        self._move("probe", end, feed)
+        goal = self.machine_frame(target)  # the host sees machine coordinates
+        trip = self.host.probe(self.machine_frame(self.pos), goal) if self.host.probe else goal  # type: ignore[arg-type]
+        self._move("probe", self.program_frame(trip) if trip is not None else target, feed)
         if trip is not None:
             work = self.reported_position()
             for axis in range(6):
-                self.params.set(t.PROBE_MACHINE + axis, end[axis])
+                self.params.set(t.PROBE_MACHINE + axis, trip[axis])
                 self.params.set(t.PROBE_WORK + axis, work[axis])
-                self.params.set(t.PROBE_JOINTS + axis, end[axis])
+                self.params.set(t.PROBE_JOINTS + axis, trip[axis])
         self.params.set(t.PROBE_TRIPPED, 1.0 if trip is not None else 0.0)

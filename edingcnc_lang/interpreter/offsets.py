@@ -1,11 +1,12 @@
 """Coordinate systems and offsets: G54..G59.3, G92, G10, G28/G30, G53, G68, tool length."""
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 
 from .. import nodes as n
 from .. import tables as t
+from ..canon import Event
+from ..geometry import rotate_about, scale_about
 from .state import (
     AXIS_INDEX, G_10, G_28, G_30, G_69, G_91, G_92, G_92_1, G_92_2, G_92_3, LINEAR_AXES, MachineState,
 )
@@ -32,26 +33,40 @@ class CoordinateSystems(MachineState):
             off[2] += self.tool_z
             off[0] += self.tool_x
             self._offset = off
+            if self.rotation is not None:
+                self._sync_rotation(off)
         return self._offset
 
     def to_machine(self, work: list[float]) -> list[float]:
-        if self.rotation:
-            work = list(work)
-            px, py, angle = self.rotation
-            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
-            dx, dy = work[0] - px, work[1] - py
-            work[0], work[1] = px + c * dx - s * dy, py + s * dx + c * dy
+        """Programmed machine coordinates of a work position (G51/G68 are applied later, by stages)."""
         return [w + o for w, o in zip(work, self.offset())]
 
     def work_position(self, machine: list[float] | None = None) -> list[float]:
-        """Work coordinates (mm) of a machine position, in the program's (G68-rotated) frame."""
-        work = [m - o for m, o in zip(machine or self.pos, self.offset())]
-        if self.rotation:
-            px, py, angle = self.rotation
-            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
-            dx, dy = work[0] - px, work[1] - py
-            work[0], work[1] = px + c * dx + s * dy, py - s * dx + c * dy
-        return work
+        """Work coordinates (mm) of a programmed machine position: the program's own frame."""
+        return [m - o for m, o in zip(machine or self.pos, self.offset())]
+
+    # The interpreter's position is the programmed one; the scaling and rotation stages map it to
+    # the machine.  These two do the same for what is given in machine coordinates (G53, G28/G30,
+    # homing, probing, #5071..): the stages' maps, in the stages' order.
+    def machine_frame(self, pose: list[float] | tuple[float, ...]) -> tuple[float, ...]:
+        """Where the machine really is for a programmed pose."""
+        if self.rotation is not None:
+            pose = rotate_about(pose, self._rotation_pivot(), self.rotation[2])
+        if self.scaling is not None:
+            pose = scale_about(pose, (*self.scaling_center, 0.0), self.scaling)
+        return tuple(pose)
+
+    def program_frame(self, pose: list[float] | tuple[float, ...]) -> list[float]:
+        """The programmed pose that puts the machine at ``pose``."""
+        if self.scaling is not None:
+            pose = scale_about(pose, (*self.scaling_center, 0.0), [1.0 / f for f in self.scaling])
+        if self.rotation is not None:
+            pose = rotate_about(pose, self._rotation_pivot(), -self.rotation[2])
+        return list(pose)
+
+    def _machine_move(self, kind: str, machine: list[float], feed: float = 0.0) -> None:
+        """A move to a point given in machine coordinates."""
+        self._move(kind, self.program_frame(machine), feed)
 
     def reported_position(self, machine: list[float] | None = None) -> list[float]:
         """The work position as the controller shows it (#5001.., #5061..): X as a diameter in diameter mode."""
@@ -62,7 +77,7 @@ class CoordinateSystems(MachineState):
 
     def _live_param(self, index: int) -> float:
         if index >= t.POS_MACHINE:
-            return self.pos[index - t.POS_MACHINE]
+            return self.machine_frame(self.pos)[index - t.POS_MACHINE]
         if index == t.SPINDLE_SPEED:  # rev/s, following X under constant surface speed
             return self.rpm_at(self.pos[0]) / 60.0 if self.spindle != 5 else 0.0
         return self.reported_position()[index - t.POS_WORK]
@@ -79,24 +94,16 @@ class CoordinateSystems(MachineState):
         """Machine position the axis words of a line point at."""
         axes = self._axis_values(words)
         if machine:  # G53: machine coordinates, absolute
-            return [axes.get(i, p) for i, p in enumerate(self.pos)]
-        if self.rotation is None:  # the common case, without converting the whole position
-            target = list(self.pos)
-            if self.modal["distance"] == G_91:
-                for axis, number in axes.items():
-                    target[axis] += number
-            else:
-                offset = self.offset()
-                for axis, number in axes.items():
-                    target[axis] = number + offset[axis]
-            return target
-        work = self.work_position()
+            return self.program_frame([axes.get(i, p) for i, p in enumerate(self.machine_frame(self.pos))])
+        target = list(self.pos)
         if self.modal["distance"] == G_91:
             for axis, number in axes.items():
-                work[axis] += number
+                target[axis] += number
         else:
-            work = [axes.get(i, w) for i, w in enumerate(work)]
-        return self.to_machine(work)
+            offset = self.offset()
+            for axis, number in axes.items():
+                target[axis] = number + offset[axis]
+        return target
 
     def _select_coord_system(self, code: int) -> None:
         self.modal["coord_system"] = code
@@ -104,6 +111,8 @@ class CoordinateSystems(MachineState):
 
     def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         if code == G_69:
+            if self.rotation is not None:
+                self.canon.event(Event("rotation", self.path, self.line, {"on": False}))
             self.rotation = None
             self.params.set(t.G68_ACTIVE, 0.0)
         else:
@@ -114,7 +123,23 @@ class CoordinateSystems(MachineState):
             self.rotation = (px, py, angle)
             for offset, number in enumerate((1.0, px, py, 0.0, 0.0, 0.0, angle)):
                 self.params.set(t.G68_ACTIVE + offset, number)
+            self._sync_rotation(self.offset(), force=True)
         self.modal["rotation"] = code
+
+    def _rotation_pivot(self) -> tuple[float, float]:
+        """The G68 pivot in programmed machine coordinates (it moves with the work offsets)."""
+        assert self.rotation is not None
+        off = self.offset()
+        return (self.rotation[0] + off[0], self.rotation[1] + off[1])
+
+    def _sync_rotation(self, offset: list[float], force: bool = False) -> None:
+        """Tell the rotation stage where the pivot is now (after G68, or when an offset moved it)."""
+        assert self.rotation is not None
+        pivot = (self.rotation[0] + offset[0], self.rotation[1] + offset[1])
+        if force or pivot != self._sent_pivot:
+            self._sent_pivot = pivot
+            self.canon.event(Event("rotation", self.path, self.line,
+                                   {"on": True, "pivot": pivot, "angle": self.rotation[2]}))
 
     def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         level = int(words.get("L", -1))
@@ -149,22 +174,26 @@ class CoordinateSystems(MachineState):
         if axes:  # the intermediate point, in the current coordinates
             self._move("rapid", self._target(words))
         chosen = sorted(axes) if axes else list(range(6))
-        home = list(self.pos)
+        here = list(self.machine_frame(self.pos))  # the stored positions are machine coordinates
+        home = list(here)
         for axis in chosen:
             home[axis] = self.params.read(base + axis)
         if self.config.lathe:  # X first: the tool leaves the part before the carriage travels
             if 0 in chosen:
-                self._move("rapid", home[:1] + self.pos[1:])
+                self._machine_move("rapid", home[:1] + here[1:])
             if any(axis != 0 for axis in chosen):
-                self._move("rapid", home)
+                self._machine_move("rapid", home)
             return
-        z_first = home[2] > self.pos[2]
+        z_first = home[2] > here[2]
         if z_first and 2 in chosen:
-            self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
+            here[2] = home[2]
+            self._machine_move("rapid", list(here))
         if any(axis != 2 for axis in chosen):
-            self._move("rapid", [home[i] if i != 2 else self.pos[i] for i in range(6)])
+            here = [home[i] if i != 2 else here[i] for i in range(6)]
+            self._machine_move("rapid", list(here))
         if not z_first and 2 in chosen:
-            self._move("rapid", self.pos[:2] + [home[2]] + self.pos[3:])
+            here[2] = home[2]
+            self._machine_move("rapid", here)
 
     def _g92(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)

@@ -32,11 +32,11 @@ class Scaling(MachineState):
         work = (words.get("I", 0.0) * self.scale, words.get("J", 0.0) * self.scale)
         offset = self.offset()
         self.scaling = (*factors, 1.0)
+        self.scaling_center = (work[0] + offset[0], work[1] + offset[1])
         for index, value in enumerate((1.0, work[0], work[1], 0.0, *self.scaling)):
             self.params.set(t.SCALING_ACTIVE + index, value)
         self.canon.event(Event("scaling", self.path, self.line,
-                               {"on": True, "factors": self.scaling,
-                                "center": (work[0] + offset[0], work[1] + offset[1])}))
+                               {"on": True, "factors": self.scaling, "center": self.scaling_center}))
 
     def scaling_off(self) -> None:
         if self.scaling is not None:

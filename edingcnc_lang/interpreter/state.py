@@ -154,6 +154,8 @@ class MachineState:
         self.g92_active = False
         self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
+        self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
+        self._sent_pivot: tuple[float, float] | None = None     # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}

@@ -26,7 +26,7 @@ ROWS: tuple[Row, ...] = (
     (5061, 5066, "probe position {axis}, work", "Where the last G38.2 tripped, work coordinates."),
     (5067, 5067, "probe tripped", "1 if the last G38.2 touched, 0 if it reached its target without contact."),
     (5068, 5068, "probe input", "The live state of the probe input."),
-    (5070, 5070, "spindle speed", "The spindle speed in revolutions per second."),
+    (5070, 5070, "spindle speed", "The spindle speed in revolutions per second (under G96 it follows X)."),
     (5071, 5076, "machine position {axis}", "Current position in machine coordinates."),
     (5081, 5086, "probe position {axis}, joints", "Where the last G38.2 tripped, joint coordinates."),
     (5101, 5106, "negative soft limit {axis}", "From cnc.ini."),

@@ -16,6 +16,7 @@ from ..tables import (
     MAX_M_WORDS,
     MAX_TOOL,
     PROBE_TRIPPED,
+    UNKNOWN_G_HINTS,
     code_key,
     code_name,
 )
@@ -51,17 +52,6 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
                              "put them on separate lines", word.span)
 
 
-@rule("G509")
-def unknown_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    """What ``run`` stops on at the first unknown G code, found at the desk."""
-    for block in project.facts(file).blocks:
-        for key, word in block.g:
-            if key not in G_GROUPS:
-                hint = f": {UNKNOWN_G_HINTS[key]}" if key in UNKNOWN_G_HINTS else ""
-                yield at("G509", f"{code_name('G', key)} is not an EdingCNC code, the controller stops here with "
-                         f"'unknown G code'{hint}", word.span)
-
-
 @rule("G501", "G502", "G503", "G506", "G507")
 def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for codes in project.facts(file).blocks:
@@ -91,6 +81,16 @@ def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
     if len(m_words) > MAX_M_WORDS:
         yield at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
                  f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
+
+
+@rule("G509")
+def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """A literal G number outside the dialect's tables stops the job at run time (``unknown G code``)."""
+    for block in project.facts(file).blocks:
+        for key, word in block.g:
+            if key not in G_GROUPS:
+                hint = UNKNOWN_G_HINTS.get(key)
+                yield at("G509", f"unknown G code {code_name('G', key)}" + (f": {hint}" if hint else ""), word.span)
 
 
 def _probe_word(g: Iterable[Code]) -> n.Word | None:

@@ -99,10 +99,10 @@ class LanguageModel:
         """Macro files (``*.cnc``) under the workspace folders, and every open document."""
         paths = dict.fromkeys(self.texts)
         for root in self.roots:
-            for found in sorted(Path(root).rglob("*")):
+            for found in Path(root).rglob("*.[cC][nN][cC]"):
                 if len(paths) >= MAX_WORKSPACE_FILES:
                     break
-                if found.suffix.lower() == ".cnc" and _indexable(found):
+                if _indexable(found):
                     paths.setdefault(os.fspath(found))
         return [f for f in (self.source(p) for p in paths) if f is not None]
 

@@ -9,9 +9,10 @@ from __future__ import annotations
 
 from .base import LookaheadStage, Pipeline, Stage, StageFactory
 from .cutter_comp import CutterCompensation
+from .rotation import Rotation
 from .scaling import Scaling
 
 # First to last: the interpreter emits into the first; the last hands on to the motion stage.
-STAGES: tuple[StageFactory, ...] = (Scaling, CutterCompensation)
+STAGES: tuple[StageFactory, ...] = (Rotation, Scaling, CutterCompensation)
 
 __all__ = ["STAGES", "LookaheadStage", "Pipeline", "Stage", "StageFactory"]

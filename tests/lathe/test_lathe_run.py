@@ -213,3 +213,8 @@ def test_diameter_mode_is_radius_mode_with_doubled_x(moves_in: list[tuple[str, f
     assert [(m.kind, m.sync) for m in dia] == [(m.kind, m.sync) for m in rad]
     for a, b in zip(dia, rad):
         assert a.end == pytest.approx(b.end, abs=1e-9) and a.feed == pytest.approx(b.feed)
+
+
+def test_probe_results_follow_the_diameter_convention(tmp_path: Path) -> None:
+    _, _, result = run(tmp_path, "G0 X40 Z5\nG38.2 X10 F100\n#100 = #5061\n#101 = #5051\n")
+    assert result.variables[100] == 10.0 and result.variables[101] == 5.0  # type: ignore[attr-defined]

@@ -24,4 +24,9 @@ T99 M6
 T100 M6                  ; expect: G506
 M3 M8 M48 M54 P1
 M3 M8 M48 M54 P1 M62     ; expect: G507
+G7 G0 X20                ; expect: G509
+G12 X1                   ; expect: G509
+G96 S100 D2000 M3
+G97 S500
+G33 Z-1 K1
 M30

@@ -1,0 +1,46 @@
+"""G68 rotation as a pipeline stage: X and Y of every move turned about the pivot.
+
+The interpreter sends a ``rotation`` event when G68 takes effect (data: ``on``, ``pivot`` machine
+x y, ``angle`` in degrees counter-clockwise) and again when an offset change moves the pivot on
+the machine; G69 ends it.  Arcs in the XY plane turn with the rest; an arc in the XZ or YZ plane
+would leave its plane and is refused, naming its line.
+"""
+from __future__ import annotations
+
+from ..canon import Arc, Canon, Event, Move, Pose
+from ..config import MachineConfig
+from ..errors import Location, MachineError
+from ..geometry import rotate_about
+from .transform import PoseTransform, map_center
+
+
+class Rotation(PoseTransform):
+    """Turns X and Y about the G68 pivot while G68 is on."""
+
+    def __init__(self, next_canon: Canon, config: MachineConfig) -> None:
+        super().__init__(next_canon, config)
+        self.angle: float | None = None
+        self.pivot = (0.0, 0.0)
+
+    @property
+    def on(self) -> bool:
+        return self.angle is not None
+
+    def event(self, event: Event) -> None:
+        if event.kind == "rotation":
+            self.angle = float(event.data["angle"]) if event.data.get("on") else None
+            if self.angle is not None:
+                self.pivot = tuple(event.data["pivot"])  # type: ignore[assignment]
+        self.next.event(event)
+
+    def forward(self, pose: Pose) -> Pose:
+        return rotate_about(pose, self.pivot, self.angle) if self.angle else pose  # type: ignore[return-value]
+
+    def inverse(self, pose: Pose) -> Pose:
+        return rotate_about(pose, self.pivot, -self.angle) if self.angle else pose  # type: ignore[return-value]
+
+    def arc(self, move: Move, arc: Arc) -> Arc:
+        if arc.plane != "XY" and self.angle and self.angle % 360.0:
+            raise MachineError(f"an arc in the {arc.plane} plane cannot be turned by G68 (it turns the XY plane); "
+                               "use G17 arcs or G69 first", Location(move.path, move.line))
+        return Arc(map_center(arc, self.forward), arc.plane, arc.turn, arc.full_turns)
