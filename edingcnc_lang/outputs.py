@@ -10,6 +10,7 @@ from __future__ import annotations
 import io
 import math
 import os
+import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -27,8 +28,15 @@ TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
 
 
+STDOUT = "-"  # as an output path: standard output
+
+
 def _open_for_writing(path: Path) -> io.TextIOWrapper:
+    """The file to write; ``-`` is standard output (closing the returned stream leaves it open)."""
     try:
+        if str(path) == STDOUT:
+            sys.stdout.flush()  # anything printed before comes first
+            return open(sys.stdout.fileno(), "w", encoding="utf-8", newline="", buffering=1 << 16, closefd=False)
         return open(path, "w", encoding="utf-8", newline="", buffering=1 << 16)
     except OSError as err:
         raise EcncError(f"cannot write {path}: {err.strerror}") from None

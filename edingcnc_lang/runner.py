@@ -280,7 +280,7 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
 
     A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
     """
-    names = [str(p) for p in outputs if p is not None]
+    names = ["standard output" if str(p) == "-" else str(p) for p in outputs if p is not None]
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 
 

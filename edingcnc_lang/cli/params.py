@@ -17,6 +17,7 @@ if TYPE_CHECKING:
 
 
 STDIN = "-"  # as a job or lint path: read standard input
+STDOUT = "-"  # as an output file (--trace -): write standard output
 
 
 class _PathType(click.ParamType):

@@ -11,7 +11,7 @@ from ..errors import EXIT_OK
 from . import progress
 from .base import Command, usage_error
 from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options
-from .params import OUTPUT_FILE, STDIN
+from .params import OUTPUT_FILE, STDIN, STDOUT
 from .streams import STDIN_NAME, read_stdin
 
 if TYPE_CHECKING:
@@ -22,10 +22,10 @@ if TYPE_CHECKING:
 @job_or_stdin_argument
 @machine_options
 @json_option("Print the final machine state as JSON on stdout.")
-@click.option("--trace", metavar="FILE", type=OUTPUT_FILE, help="Write one CSV row per executed move.")
-@click.option("--samples", metavar="FILE", type=OUTPUT_FILE, help="Write the interpolated trajectory (.csv or .npz).")
+@click.option("--trace", metavar="FILE", type=OUTPUT_FILE, help="Write one CSV row per executed move (-: standard output).")
+@click.option("--samples", metavar="FILE", type=OUTPUT_FILE, help="Write the interpolated trajectory (.csv or .npz; -: CSV on standard output).")
 @click.option("--events", metavar="FILE", type=OUTPUT_FILE,
-              help="Write every move (with its spindle speed) and event as JSON Lines.")
+              help="Write every move (with its spindle speed) and event as JSON Lines (-: standard output).")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
 @click.option("--feed-override", metavar="PCT", type=click.FloatRange(0, 1000, min_open=True), default=100.0,
               help="Feed override knob in percent (default 100; M48/M49/M50 in the job switch it).")
@@ -43,6 +43,10 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
 
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
+    to_stdout = [name for name, value in (("--json", as_json), ("--trace -", trace), ("--samples -", samples),
+                                          ("--events -", events)) if value in (True, STDOUT)]
+    if len(to_stdout) > 1:
+        raise usage_error(f"only one output can go to standard output, not {' and '.join(to_stdout)}")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
                                   samples=Path(samples) if samples else None,
                                   events=Path(events) if events else None, save_vars=save_vars,

@@ -139,6 +139,8 @@ class MachineState:
         self.params = Parameters(self._live_param, self._offsets_changed)
         self.evaluator = Evaluator(self.params)
         self.modal: dict[str, int] = dict(DEFAULT_MODAL)
+        if not self.config.g64_active:  # [INTERPRETER] g64Active = 0: the machine starts in exact stop
+            self.modal["path_control"] = t.code_key(61)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
         self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)

@@ -16,7 +16,7 @@ from .. import nodes as n
 from ..cli.common import whole_trees
 from ..diagnostics import Diagnostic
 from ..errors import EcncError, Location
-from ..lint.driver import SOURCE_SUFFIXES, is_macro_name, lint_paths, macros_beside
+from ..lint.driver import SOURCE_SUFFIXES, LintOptions, is_macro_name, lint_paths, macros_beside
 from ..lint.model import SourceFile, UnreadableFile, load_source
 from ..lint.names import m_code_sub
 from ..lint.project import Project, SubKey
@@ -44,6 +44,7 @@ class LanguageModel:
     def __init__(self) -> None:
         self.texts: dict[str, str] = {}  # unsaved editor contents by absolute path
         self.roots: list[str] = []  # workspace folders, for workspace symbols
+        self.options = LintOptions()  # the codes the editor asked for (select, ignore)
         self._real: dict[str, str] = {}  # open documents by their real path (symbolic links resolved)
         self._parsed: dict[tuple[str, bool], tuple[object, SourceFile]] = {}
 
@@ -111,7 +112,7 @@ class LanguageModel:
         """What ``ecnc lint PATH`` reports, for the editor's text of every open file."""
         try:
             with whole_trees():
-                found = lint_paths([path], reader=self._read)
+                found = lint_paths([path], self.options, reader=self._read)
         except EcncError:  # a macro file beside it vanished while being read: lint again on the next change
             return []
         return [d for d in found if d.path == path]

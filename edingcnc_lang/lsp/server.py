@@ -19,7 +19,7 @@ from .. import __version__
 from ..cli.common import whole_trees
 from ..codes import Severity
 from ..diagnostics import Diagnostic
-from ..lint.driver import is_macro_name
+from ..lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes
 from . import actions, completion, formatting, hover, navigation
 from .lexer import token_at
 from .model import LanguageModel, Place
@@ -110,6 +110,22 @@ class EcncServer(LanguageServer):
 
 
 server = EcncServer()
+
+
+@server.feature(t.INITIALIZE)
+def _initialize(ls: EcncServer, params: t.InitializeParams) -> None:
+    """``initializationOptions``: ``{"select": "E,S208", "ignore": "F601"}`` as ``ecnc lint`` takes them."""
+    options = params.initialization_options if isinstance(params.initialization_options, dict) else {}
+
+    def codes(name: str) -> tuple[str, ...]:  # "E,S208" or ["E", "S208"]
+        value = options.get(name) or ""
+        return parse_codes(",".join(map(str, value)) if isinstance(value, list) else str(value))
+
+    try:
+        ls.model.options = LintOptions(select=codes("select"), ignore=codes("ignore"))
+    except UnknownCode as err:  # the editor still works, with every code
+        ls.window_show_message(t.ShowMessageParams(
+            type=t.MessageType.Warning, message=f"ecnc lsp: select/ignore ignored: no code starts with {err}"))
 
 
 @server.feature(t.INITIALIZED)

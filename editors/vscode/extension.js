@@ -5,13 +5,15 @@ const { LanguageClient } = require("vscode-languageclient/node");
 let client;
 
 function activate(context) {
-  const [command, ...args] = vscode.workspace.getConfiguration("edingcnc").get("server.command");
+  const config = vscode.workspace.getConfiguration("edingcnc");
+  const [command, ...args] = config.get("server.command");
   client = new LanguageClient(
     "edingcnc",
     "EdingCNC language server",
     { command, args },
     {
       documentSelector: [{ scheme: "file", language: "edingcnc" }, { scheme: "untitled", language: "edingcnc" }],
+      initializationOptions: { select: config.get("lint.select"), ignore: config.get("lint.ignore") },
       // macro.cnc edited outside VS Code: the server checks the open files beside it again
       synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher("**/*.[cC][nN][cC]") },
     },

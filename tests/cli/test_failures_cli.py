@@ -121,3 +121,20 @@ def test_a_closed_stdin_reads_as_empty(tmp_path: Path) -> None:
     assert _shell("ecnc mdi <&-", tmp_path).returncode == 0
     result = _shell("ecnc run --json - <&-", tmp_path)
     assert result.returncode == 0 and json.loads(result.stdout)["moves"] == 0
+
+
+def test_trace_to_standard_output(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\nG1 Y2 F100\n")
+    result = _shell("ecnc run job.nc --trace -", tmp_path)
+    assert result.returncode == 0
+    rows = result.stdout.splitlines()
+    assert rows[0].startswith("line,kind,x,y,z") and [r.split(",")[:2] for r in rows[1:]] == [["1", "rapid"],
+                                                                                              ["2", "linear"]]
+    assert _shell("ecnc run job.nc --trace - > /dev/full", tmp_path).stderr == (
+        "error: cannot write standard output: No space left on device\n")
+
+
+def test_only_one_output_on_standard_output(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X1\n")
+    result = invoke("run", job, "--json", "--trace", "-")
+    assert result.exit_code == 2 and "not --json and --trace -" in result.stderr

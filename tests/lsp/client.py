@@ -84,9 +84,10 @@ class LspClient:
             self._keep(self._take())
 
     # ----------------------------------------------------------------- session
-    def initialize(self, root: Path) -> dict[str, Any]:
+    def initialize(self, root: Path, options: dict[str, Any] | None = None) -> dict[str, Any]:
         result = self.request("initialize", {"processId": None, "rootUri": root.as_uri(), "capabilities": {},
-                                             "workspaceFolders": [{"uri": root.as_uri(), "name": root.name}]})
+                                             "workspaceFolders": [{"uri": root.as_uri(), "name": root.name}],
+                                             "initializationOptions": options})
         self.notify("initialized", {})
         return result
 

@@ -25,3 +25,19 @@ def test_without_the_lsp_extra_the_error_names_the_install_command() -> None:
     assert result.stderr.startswith("error: the language server needs pygls")
     assert "pip install 'edingcnc-lang[lsp]'" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_initialization_options_select_and_ignore_codes(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G38.2 Z-5 F100\nG0 X10+5\n")
+    lsp = LspClient()
+    lsp.initialize(tmp_path, {"ignore": "g504,E1"})
+    assert [d["code"] for d in lsp.diagnostics(lsp.open(job))] == ["G505"]
+    assert lsp.close() == 0
+    lsp = LspClient()
+    lsp.initialize(tmp_path, {"select": "Q9"})  # no such code: a warning, and every code is reported
+    found = lsp.diagnostics(lsp.open(job))
+    assert {d["code"] for d in found} == {"G504", "G505", "E105"}
+    warning = next(m for m in lsp.notifications if m.get("method") == "window/showMessage")
+    assert "no code starts with Q9" in warning["params"]["message"]
+    assert lsp.close() == 0

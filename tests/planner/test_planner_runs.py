@@ -250,3 +250,12 @@ def test_the_estimate_example(tmp_path: Path) -> None:
     assert sum(share.seconds for share in base.per_tool.values()) == pytest.approx(base.seconds)
     assert faster.rapid_seconds == pytest.approx(base.rapid_seconds)
     assert base.feed_seconds / 1.5 < faster.feed_seconds < base.feed_seconds  # acceleration does not scale
+
+
+def test_g64active_0_starts_in_exact_stop(tmp_path: Path) -> None:
+    ini = machine(tmp_path, interpreter="g64Active = 0\r\n")
+    job = "G1 X10 F3000\nX20\n"
+    result = run(tmp_path, job, ini=ini)
+    assert result.estimate.seconds == pytest.approx(2 * rest_to_rest(10.0, 50.0))
+    assert "G61" in result.modal
+    assert run(tmp_path, "G64\n" + job, ini=ini).estimate.seconds == pytest.approx(rest_to_rest(20.0, 50.0))
