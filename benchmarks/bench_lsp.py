@@ -1,10 +1,11 @@
 """``ecnc lsp`` answering an editor, on a 30,000-line macro.cnc and a job beside it.
 
 Drives the server over stdio with the test suite's JSON-RPC client, as an editor does, and
-prints the wall time of each kind of request next to ``ecnc lint`` of the same file: start-up to the initialize answer, diagnostics
-after opening the macro file and after an edit (the 0.3 s debounce included), hover, go to
-definition, completion and references from the job, and formatting the macro file.  Medians
-of ``--repeat`` runs; the macro code is bench_lint.py's (fixed seed).
+prints the wall time of each kind of request next to ``ecnc lint`` of the same file: start-up
+to the initialize answer, diagnostics after opening the macro file and after an edit (the
+0.3 s debounce included), hover, go to definition, completion and references from the job,
+and formatting the macro file.  Medians of ``--repeat`` runs; the macro code is
+bench_lint.py's (fixed seed).
 
     python benchmarks/bench_lsp.py [--lines N] [--repeat N]
 """
@@ -79,13 +80,15 @@ def main() -> None:
         rows.append(("diagnostics after an edit (0.3 s debounce included)", timed(edit, args.repeat)))
         job_uri = client.open(job)
         client.diagnostics(job_uri)
-        rows.append(("hover on a GoSub", timed(lambda: client.request("textDocument/hover", at(job_uri, 1, 8)), args.repeat)))
-        rows.append(("go to definition", timed(lambda: client.request("textDocument/definition", at(job_uri, 1, 8)), args.repeat)))
-        rows.append(("completion after GoSub", timed(lambda: client.request("textDocument/completion", at(job_uri, 2, 6)), args.repeat)))
+        for label, method, line, col in (("hover on a GoSub", "textDocument/hover", 1, 8),
+                                         ("go to definition", "textDocument/definition", 1, 8),
+                                         ("completion after GoSub", "textDocument/completion", 2, 6)):
+            rows.append((label, timed(lambda: client.request(method, at(job_uri, line, col)), args.repeat)))
         rows.append(("references of a sub (whole folder)", timed(lambda: client.request(
             "textDocument/references", {**at(job_uri, 1, 8), "context": {"includeDeclaration": True}}), args.repeat)))
-        rows.append((f"formatting the {args.lines}-line macro.cnc", timed(lambda: client.request("textDocument/formatting", {
-            "textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}}), args.repeat)))
+        formatting = {"textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}}
+        rows.append((f"formatting the {args.lines}-line macro.cnc",
+                     timed(lambda: client.request("textDocument/formatting", formatting), args.repeat)))
         client.close()
     width = max(len(label) for label, _ in rows)
     for label, seconds in rows:

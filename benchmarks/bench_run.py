@@ -6,11 +6,12 @@ memory (max RSS of the child process) as a table.  rs274 is optional: without
 it the reference column stays empty.
 
     python benchmarks/bench_run.py               # all benchmarks
-    python benchmarks/bench_run.py --only parse  # one of: parse run1m macro startup
+    python benchmarks/bench_run.py --only parse  # one of: parse run1m macro startup comp
 """
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import random
 import shutil
@@ -33,6 +34,16 @@ def write_g1_job(path: Path, lines: int, ngc: bool = False) -> None:
         for _ in range(lines):
             out.write(f"G1 X{rng.uniform(0, 300):.3f} Y{rng.uniform(0, 200):.3f} Z{rng.uniform(-5, 0):.3f}\n")
         out.write("M2\n")
+
+
+def write_comp_job(path: Path, lines: int) -> None:
+    """A spiral contour cut with cutter compensation (G41.1, 2 mm tool): every corner is computed."""
+    with open(path, "w") as out:
+        out.write("G21 G17 G90 G94 F1000\nG0 X-10 Y0\nG41.1 D2\nG1 X0 Y0\n")
+        for i in range(1, lines + 1):
+            angle, grow = i * 0.01, 1 + i * 1e-5
+            out.write(f"G1 X{100 * math.cos(angle) * grow:.3f} Y{100 * math.sin(angle) * grow:.3f}\n")
+        out.write("G40\nG1 X0 Y0\nM2\n")
 
 
 def write_macro_loop(path: Path, iterations: int, ngc: bool) -> None:
@@ -113,6 +124,16 @@ def bench_run(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
                     [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
 
 
+def bench_comp(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job, ngc = tmp / "comp_200k.nc", tmp / "comp_200k.ngc"
+    write_comp_job(job, 200_000)
+    write_comp_job(ngc, 200_000)
+    rs274 = shutil.which("rs274")
+    return [_versus("run 200k G1 lines with G41.1 compensation (--trace CSV) vs rs274 -g",
+                    ECNC + ["run", str(job), "--trace", str(tmp / "trace.csv")],
+                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
+
+
 def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     job = tmp / "g1_1m.nc"
     write_g1_job(job, 1_000_000)
@@ -145,6 +166,7 @@ def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
 
 BENCHES: dict[str, Callable[[Path, int], list[tuple[str, str, str, str]]]] = {
     "parse": bench_parse, "run": bench_run, "run1m": bench_run1m, "macro": bench_macro, "startup": bench_startup,
+    "comp": bench_comp,
 }
 
 

@@ -15,3 +15,14 @@ def test_a_missing_file_is_an_ecnc_error_in_the_api(tmp_path: Path) -> None:
             read(tmp_path / "missing.nc")
         assert caught.value.exit_code == EXIT_USAGE
         assert caught.value.format() == f"{tmp_path / 'missing.nc'}: error: cannot read: No such file or directory"
+
+
+@pytest.mark.parametrize("option", ["--trace", "--samples", "--events"])
+def test_an_empty_output_file_name_is_a_usage_error(tmp_path: Path, option: str) -> None:
+    from tests.cli_runner import invoke
+
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X1\n")
+    result = invoke("run", job, option, "")
+    assert result.exit_code == EXIT_USAGE
+    assert "the file name is empty" in result.stderr

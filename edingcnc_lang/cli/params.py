@@ -126,6 +126,8 @@ class OutputFile(_PathType):
     name = "file"
 
     def check(self, value: str) -> str | None:
+        if not value:  # --trace '' would otherwise be taken as no --trace at all
+            return "the file name is empty"
         return f"{value!r} is a folder, not a file" if os.path.isdir(value) else None
 
 

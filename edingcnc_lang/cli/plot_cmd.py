@@ -25,8 +25,8 @@ FORMATS = (".png", ".svg", ".pdf")
                    "X up); auto: top, or lathe for a job that never moves Y.")
 @click.option("--color", type=click.Choice(COLORS), default="tool", show_default=True,
               help="Colour the feed moves by tool, by kind, by programmed feed or by the planner's speed.")
-@click.option("--fit", type=click.Choice(("job", "machine")), default="job", show_default=True,
-              help="Fit the picture to the job, or to the machine's travel from cnc.ini.")
+@click.option("--fit", type=click.Choice(("job", "part", "machine")), default="job", show_default=True,
+              help="Fit the picture to the whole job, to the part's bounding box, or to the machine's travel.")
 @click.option("--joints", is_flag=True,
               help="Plot the joint positions over time instead (default file: JOB-joints.png).")
 def plot(job: str, machine: MachineOptions, output: str | None, view: str, color: str, fit: str,

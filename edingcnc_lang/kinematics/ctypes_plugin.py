@@ -61,9 +61,22 @@ def _values(struct: ctypes.Structure) -> Pose:
 
 
 def _load_library(path: Path) -> ctypes.CDLL:
-    """``__stdcall`` exports on Windows, the platform default elsewhere."""
+    """``__stdcall`` exports on Windows, the platform default elsewhere.
+
+    Always by absolute path: a bare ``polar.so`` would send the dynamic loader to the system's
+    library search path instead of the file that was found.
+    """
     loader = ctypes.WinDLL if sys.platform == "win32" else ctypes.CDLL  # type: ignore[attr-defined]
-    return loader(str(path))
+    return loader(str(Path(path).resolve()))
+
+
+def missing_exports(path: Path) -> list[str]:
+    """The required functions a built library does not export (``ecnc kins build`` checks its output)."""
+    try:
+        lib = _load_library(path)
+    except OSError as err:
+        raise PluginError(f"kinematics plug-in {path}: cannot load the library: {err}") from None
+    return [export for export in REQUIRED_EXPORTS if getattr(lib, export, None) is None]
 
 
 class CompiledKinematics(KinematicsPlugin):

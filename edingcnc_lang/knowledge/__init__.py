@@ -112,7 +112,8 @@ def named_variables() -> Iterator[Entry]:
 @cache
 def _words() -> dict[str, Entry]:
     found: dict[str, Entry] = {}
-    for kind, rows in (("keyword", commands.KEYWORDS), ("command", commands.COMMANDS), ("function", commands.FUNCTIONS)):
+    tables = (("keyword", commands.KEYWORDS), ("command", commands.COMMANDS), ("function", commands.FUNCTIONS))
+    for kind, rows in tables:
         for name, title, args, detail in rows:
             found[name.lower()] = Entry(kind, name, title, args, detail)
     return found

@@ -80,7 +80,8 @@ def _end_sub_first(finding: Finding, lines: Sequence[str]) -> list[Fix]:
 def _drop_hash(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     text = lines[finding.line] if finding.line < len(lines) else ""
     if finding.col < len(text) and text[finding.col] == "#":
-        return [Fix("Remove the '#' (dlgmsg fields are bare numbers)", (Edit(finding.line, finding.col, finding.col + 1, ""),))]
+        edit = Edit(finding.line, finding.col, finding.col + 1, "")
+        return [Fix("Remove the '#' (dlgmsg fields are bare numbers)", (edit,))]
     return []
 
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from .. import knowledge
 from ..lint.names import m_sub_number
 from .lexer import token_at
-from .model import LanguageModel
+from .model import LanguageModel, file_name
 
 _GOSUB = re.compile(r"\s*(?:/\s*)?gosub\s+([A-Za-z0-9_]*)$", re.IGNORECASE)
 _PARAM = re.compile(r"#(\d*)$")
@@ -67,8 +67,8 @@ def _subs(model: LanguageModel, path: str, start: int) -> list[Item]:
     items: dict[str, Item] = {}
     for source in found[1].files:
         for name, sub in source.subs.items():
-            where = source.path.replace("\\", "/").rsplit("/", 1)[-1]
-            items.setdefault(name, Item(sub.name, "sub", f"Sub in {where}, line {sub.span.line}", "", start))
+            items.setdefault(name, Item(sub.name, "sub", f"Sub in {file_name(source.path)}, line {sub.span.line}",
+                                        "", start))
     return list(items.values())
 
 

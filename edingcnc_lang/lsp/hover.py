@@ -17,7 +17,7 @@ from ..lint.walk import dialog_fields, literal_index
 from ..printer import format_number
 from ..tables import ARG_PARAMS, code_key, is_read_only
 from .lexer import Token, code_number, token_at, tokens
-from .model import LanguageModel
+from .model import LanguageModel, file_name
 
 _COMMENT = re.compile(r"\s*(?:;(?P<semi>.*)|\((?P<paren>[^)]*)\)\s*)$")
 _AFTER_NAME = re.compile(r"\s*(?:/\s*)?sub\s+[A-Za-z0-9_]+\s*(?P<rest>.*)$", re.IGNORECASE)
@@ -107,7 +107,7 @@ def constant_value(model: LanguageModel, path: str, number: int) -> float | None
 
 def sub_markdown(file: SourceFile, sub: n.Sub) -> str:
     """``Sub name`` with where it is and the comment lines that describe it."""
-    head = f"**Sub {sub.name}** ({_shown(file.path)}, line {sub.span.line})"
+    head = f"**Sub {sub.name}** ({file_name(file.path)}, line {sub.span.line})"
     doc = sub_comments(file, sub)
     return head + ("\n\n" + "\n".join(doc) if doc else "")
 
@@ -139,7 +139,3 @@ def _comment_into(found: list[str], text: str) -> bool:
     if body:  # a line of only dashes or stars is decoration
         found.append(body)
     return True
-
-
-def _shown(path: str) -> str:
-    return path.replace("\\", "/").rsplit("/", 1)[-1]

@@ -27,7 +27,8 @@ _PIECES = re.compile(r"""
 class Token:
     """A piece of a line: its kind, its text and where it is (end exclusive)."""
 
-    kind: str  # "code" | "param" | "number" | "function" | "keyword" | "command" | "sub" | "string" | "comment" | "other"
+    # "code" | "param" | "number" | "function" | "keyword" | "command" | "sub" | "string" | "comment" | "other"
+    kind: str
     text: str
     start: int
     end: int

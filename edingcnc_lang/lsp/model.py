@@ -153,6 +153,11 @@ class LanguageModel:
                         yield Place(call.caller.path, span.line - 1, span.col - 1, span.end_col - 1)
 
 
+def file_name(path: str) -> str:
+    """The last part of a path, also of a Windows one or an ``untitled:`` name, for labels."""
+    return path.replace("\\", "/").rsplit("/", 1)[-1]
+
+
 def definition_place(file: SourceFile, sub: n.Sub) -> Place:
     return sub_name_place(file, sub.span.line)
 

@@ -22,7 +22,7 @@ from ..diagnostics import Diagnostic
 from ..lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes
 from . import actions, completion, formatting, hover, navigation
 from .lexer import token_at
-from .model import LanguageModel, Place
+from .model import LanguageModel, Place, file_name
 
 DEBOUNCE_SECONDS = 0.3  # lint once typing pauses, not on every keystroke
 SOURCE = "ecnc"
@@ -69,7 +69,8 @@ class EcncServer(LanguageServer):
                           self.codec().range_to_client_units(self.lines(place.path), server))
 
     def client_range(self, path: str, line: int, start: int, end: int, end_line: int | None = None) -> t.Range:
-        server = ServerTextRange(ServerTextPosition(line, start), ServerTextPosition(line if end_line is None else end_line, end))
+        last = line if end_line is None else end_line
+        server = ServerTextRange(ServerTextPosition(line, start), ServerTextPosition(last, end))
         return self.codec().range_to_client_units(self.lines(path), server)
 
     # ----------------------------------------------------------------- diagnostics
@@ -110,6 +111,10 @@ class EcncServer(LanguageServer):
 
 
 server = EcncServer()
+
+
+def _markdown(text: str) -> t.MarkupContent:
+    return t.MarkupContent(kind=t.MarkupKind.Markdown, value=text)
 
 
 @server.feature(t.INITIALIZE)
@@ -175,7 +180,7 @@ def _did_close(ls: EcncServer, params: t.DidCloseTextDocumentParams) -> None:
 @server.feature(t.TEXT_DOCUMENT_HOVER)
 def _hover(ls: EcncServer, params: t.HoverParams) -> t.Hover | None:
     text = hover.hover_text(ls.model, *ls.server_position(params.text_document.uri, params.position))
-    return t.Hover(contents=t.MarkupContent(kind=t.MarkupKind.Markdown, value=text)) if text else None
+    return t.Hover(contents=_markdown(text)) if text else None
 
 
 @server.feature(t.TEXT_DOCUMENT_DEFINITION)
@@ -217,7 +222,7 @@ def _watched_files(ls: EcncServer, params: t.DidChangeWatchedFilesParams) -> Non
 @server.feature(t.WORKSPACE_SYMBOL)
 def _workspace_symbols(ls: EcncServer, params: t.WorkspaceSymbolParams) -> list[t.SymbolInformation]:
     return [t.SymbolInformation(name=name, kind=t.SymbolKind.Function, location=ls.location(place),
-                                container_name=place.path.replace("\\", "/").rsplit("/", 1)[-1])
+                                container_name=file_name(place.path))
             for name, place in navigation.workspace_symbols(ls.model, params.query)]
 
 
@@ -228,7 +233,7 @@ def _completion(ls: EcncServer, params: t.CompletionParams) -> t.CompletionList:
     for rank, item in enumerate(completion.complete(ls.model, path, line, col)):
         items.append(t.CompletionItem(
             label=item.label, kind=_KINDS[item.kind], detail=item.detail, sort_text=f"{rank:05d}",
-            documentation=t.MarkupContent(kind=t.MarkupKind.Markdown, value=item.documentation) if item.documentation else None,
+            documentation=_markdown(item.documentation) if item.documentation else None,
             text_edit=t.TextEdit(range=ls.client_range(path, line, item.start, col), new_text=item.label)))
     return t.CompletionList(is_incomplete=False, items=items)
 
@@ -245,7 +250,8 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
         start = ls.codec().position_from_client_units(lines, diagnostic.range.start)
         finding = actions.Finding(str(diagnostic.code or ""), start.line, start.character, diagnostic.message)
         for fix in actions.fixes(finding, lines):
-            edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text) for e in fix.edits]
+            edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text)
+                     for e in fix.edits]
             found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.QuickFix, diagnostics=[diagnostic],
                                       is_preferred=fix.preferred, edit=t.WorkspaceEdit(changes={uri: edits})))
     return found

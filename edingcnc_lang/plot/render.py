@@ -69,7 +69,9 @@ class Picture:
 
 def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "tool",
                   fit: str = "job") -> Picture:
-    """Draw ``path`` into ``out``; ``fit`` is ``job`` (the path) or ``machine`` (the whole travel)."""
+    """Draw ``path`` into ``out``; ``fit`` is ``job`` (the path and the work zero), ``part`` (the
+    part's bounding box: rapids to a tool changer far away are cut off) or ``machine`` (the whole
+    travel from cnc.ini)."""
     require_matplotlib()
     fmt = picture_format(out)
     if color == "speed" and path.speeds is None:
@@ -82,7 +84,11 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     ax = fig.add_axes((0.07, 0.08, 0.68, 0.82))
     fitted = _draw_path(fig, ax, path, view, color)
     _draw_work_zero(ax, path, project)
-    fitted += _draw_boxes(ax, path, project, include_limits=fit == "machine")
+    boxes = _draw_boxes(ax, path, project)
+    if fit == "part" and "part" in boxes:
+        fitted = [boxes["part"]]
+    else:
+        fitted += [boxes[name] for name in ("zero", "limits" if fit == "machine" else "") if name in boxes]
     _frame(ax, fitted, view)
     fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
@@ -193,14 +199,16 @@ def _draw_work_zero(ax: Axes, path: Toolpath, project: np.ndarray) -> None:
     ax.plot(*origin, marker="+", ms=7, color="black", mew=1.0, zorder=4)
 
 
-def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray, include_limits: bool) -> list[np.ndarray]:
-    """The part's bounding box with its size, and the machine's travel; returns points to fit."""
+def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray) -> dict[str, np.ndarray]:
+    """The part's bounding box with its size, and the machine's travel; returns the page points of
+    the work zero, the part box and the limits box, for whichever the picture is fitted to."""
     from matplotlib.collections import LineCollection
 
-    fitted = [np.asarray(path.work_zero, dtype=float)[None, :] @ project.T]
+    boxes = {"zero": np.asarray(path.work_zero, dtype=float)[None, :] @ project.T}
     bounds = path.bounds()
     if bounds is not None:
         edges = v.box_edges(*bounds) @ project.T
+        boxes["part"] = edges.reshape(-1, 2)
         ax.add_collection(LineCollection(edges, colors="#444444", linewidths=0.7, linestyles=":", zorder=3))
         top_left = edges.reshape(-1, 2)
         corner = (top_left[:, 0].min(), top_left[:, 1].max())
@@ -212,9 +220,8 @@ def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray, include_limits: b
         ax.add_collection(LineCollection(edges, colors="#b22222", linewidths=1.0, linestyles="-.",
                                          zorder=0.6))  # above the grid, which may fall on the limits
         ax.plot([], [], color="#b22222", lw=1.0, ls="-.", label="machine limits (cnc.ini)")
-        if include_limits:
-            fitted.append(edges.reshape(-1, 2))
-    return fitted
+        boxes["limits"] = edges.reshape(-1, 2)
+    return boxes
 
 
 def _frame(ax: Axes, fitted: list[np.ndarray], view: str) -> None:

@@ -209,7 +209,10 @@ class Recorder:
         final = result or (getattr(error, "result", None) if error else None)
         zero = (0.0, 0.0, 0.0)
         if final is not None:
-            zero = tuple(m - p for m, p in zip(final.machine[:3], final.position[:3]))  # type: ignore[assignment]
+            position = list(final.position[:3])
+            if config.diameter_mode:  # a lathe reports X as a diameter; the machine moves in radius
+                position[0] /= 2.0
+            zero = tuple(m - p for m, p in zip(final.machine[:3], position))  # type: ignore[assignment]
         return Toolpath(
             job=job, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
             lines=table[:, 2].astype(np.int32), files=table[:, 3].astype(np.int16),

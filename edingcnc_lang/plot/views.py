@@ -21,7 +21,7 @@ VIEWS: dict[str, tuple[tuple[tuple[float, float, float], tuple[float, float, flo
     "front": (((1.0, 0.0, 0.0), (0.0, 0.0, 1.0)), "X (mm)", "Z (mm)"),
     "side": (((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)), "Y (mm)", "Z (mm)"),
     "iso": (((_C, -_C, 0.0), (_S, _S, 1.0)), "", ""),
-    "lathe": (((0.0, 0.0, 1.0), (1.0, 0.0, 0.0)), "Z (mm)", "X (mm)"),
+    "lathe": (((0.0, 0.0, 1.0), (1.0, 0.0, 0.0)), "Z (mm)", "X (mm, radius)"),
 }
 VIEW_NAMES = ("auto", *VIEWS)
 COLOR_MODES = ("tool", "kind", "feed", "speed")
@@ -88,8 +88,8 @@ def duration_text(seconds: float) -> str:
 
 
 def size_text(lower: np.ndarray, upper: np.ndarray) -> str:
-    """The part's size, ``84.00 x 44.00 x 14.00 mm``."""
-    return " x ".join(f"{v:.2f}" for v in (upper - lower)) + " mm"
+    """The part's size, ``X 84.00 x Y 44.00 x Z 14.00 mm``."""
+    return " x ".join(f"{axis} {v:.2f}" for axis, v in zip("XYZ", upper - lower)) + " mm"
 
 
 def title_text(path: Toolpath) -> str:

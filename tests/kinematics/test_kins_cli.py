@@ -83,3 +83,27 @@ def test_build_failure_exits_70(tmp_path: Path) -> None:
     source.write_text("this is not C")
     code, _, err = run("build", str(source), "--cc", "no-such-cc")
     assert code == 70 and "cannot run the C compiler 'no-such-cc'" in err
+
+
+def test_build_of_a_source_missing_a_required_function_fails(tmp_path: Path) -> None:
+    if shutil.which("cc") is None:
+        pytest.skip("no C compiler (cc) on PATH")
+    source = tmp_path / "partial.c"
+    text = (Path(__file__).resolve().parents[2] / "kins" / "c" / "rotatekins.c").read_text()
+    source.write_text(text.replace("KinematicsForward(", "KinematicsForwardX("))
+    code, out, err = run("build", str(source), "-o", str(tmp_path / "partial.so"))
+    assert (code, out) == (70, "")
+    assert "does not export KinematicsForward: a kinematics plug-in must define every function" in err
+
+
+def test_a_compiled_plugin_named_by_bare_file_name_loads_from_the_current_folder(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    if shutil.which("cc") is None:
+        pytest.skip("no C compiler (cc) on PATH")
+    source = tmp_path / "polar.c"
+    source.write_text((Path(__file__).resolve().parents[2] / "kins" / "c" / "rotatekins.c").read_text())
+    assert run("build", str(source))[0] == 0
+    monkeypatch.chdir(tmp_path)  # "polar.so" alone: the dynamic loader would search the system's folders
+    code, out, err = run("inverse", "polar.so", "10", "0", "0", "0", "0", "-90")
+    assert code == 0, err
+    assert json.loads(out)["jy"] == pytest.approx(-10.0)

@@ -45,8 +45,9 @@ def _scopes(line: str) -> list[tuple[str, str]]:
                         ("keyword.other", "M3"), ("comment.line", "; go")]),
     ('dlgmsg "Width" 27', [("support.function", "dlgmsg"), ("string.quoted", '"Width"'), ("constant.numeric", "27")]),
     ("GoSub drill", [("keyword.control", "GoSub drill")]),
-    ("#1 = SQRT[#5067] MOD 2", [("variable.parameter", "#1"), ("keyword.operator", "="), ("support.function", "SQRT"),
-                                ("variable.parameter", "#5067"), ("keyword.operator", "MOD"), ("constant.numeric", "2")]),
+    ("#1 = SQRT[#5067] MOD 2", [("variable.parameter", "#1"), ("keyword.operator", "="),
+                                ("support.function", "SQRT"), ("variable.parameter", "#5067"),
+                                ("keyword.operator", "MOD"), ("constant.numeric", "2")]),
 ])
 def test_grammar_colours_real_lines(line: str, expected: list[tuple[str, str]]) -> None:
     assert _scopes(line) == expected
@@ -58,7 +59,8 @@ def test_extension_manifest_fits_the_server() -> None:
     assert set(language["extensions"]) == {".cnc", ".nc", ".ngc", ".tap"}
     assert (VSCODE / language["configuration"]).is_file()
     assert (VSCODE / manifest["contributes"]["grammars"][0]["path"]).resolve() == GRAMMAR
-    assert manifest["contributes"]["configuration"]["properties"]["edingcnc.server.command"]["default"] == ["ecnc", "lsp"]
+    settings = manifest["contributes"]["configuration"]["properties"]
+    assert settings["edingcnc.server.command"]["default"] == ["ecnc", "lsp"]
     json.loads((VSCODE / language["configuration"]).read_text())
 
 

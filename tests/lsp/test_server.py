@@ -200,7 +200,8 @@ def test_references_across_the_folder(client: LspClient, folder: Path) -> None:
 
 
 def test_document_and_workspace_symbols(client: LspClient, folder: Path) -> None:
-    symbols = client.request("textDocument/documentSymbol", {"textDocument": {"uri": client.open(folder / "macro.cnc")}})
+    uri = client.open(folder / "macro.cnc")
+    symbols = client.request("textDocument/documentSymbol", {"textDocument": {"uri": uri}})
     assert [(s["name"], s["range"]["start"]["line"], s["range"]["end"]["line"]) for s in symbols] == [
         ("drill", 1, 5), ("m100", 6, 8), ("change_tool", 9, 11)]
     found = client.request("workspace/symbol", {"query": "CHANGE"})

@@ -202,3 +202,15 @@ def test_fit_machine_shows_the_travel_from_the_ini(tmp_path: Path) -> None:
     assert sum(near(limit, p, reach=1) for p in edge) > len(edge) // 2  # dash-dotted: mostly drawn
     job_only = plot_toolpath(path, tmp_path / "job.png", view="top")
     assert job_only.to_pixels([[-400, -400, 0]])[0][0] < job_only.axes[0]  # fitted to the job, the box is outside
+
+
+def test_fit_part_cuts_off_far_rapids(tmp_path: Path) -> None:
+    job = write(tmp_path, "far.nc", "G21 G90\nG0 X500 Y500 Z100\nT1 M6\nG0 X10 Y10 Z2\nG1 Z-1 F100\n"
+                                    "G1 X30\nY30\nG0 Z100\nG0 X500 Y500\nM30\n")
+    path = record_job(job)
+    whole = plot_toolpath(path, tmp_path / "whole.png", view="top")
+    part = plot_toolpath(path, tmp_path / "part.png", view="top", fit="part")
+    (x0, _), (x1, _) = part.to_pixels([[10, 10, 0], [30, 10, 0]])
+    (w0, _), (w1, _) = whole.to_pixels([[10, 10, 0], [30, 10, 0]])
+    assert (x1 - x0) > 10 * (w1 - w0)  # the 20 mm cut fills the picture instead of a corner of it
+    assert part.to_pixels([[500, 500, 0]])[0][0] > part.axes[2]  # the tool change position is off the picture
