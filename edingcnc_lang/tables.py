@@ -116,6 +116,7 @@ COORD_SYSTEM = 5220        # 1..9
 COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + i
 COORD_STRIDE = 20
 SIMULATION = 5380
+SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..3 alternate spindles (M91..M93)
 RENDERING = 5397
 DIALOG_RESULT = 5398
 IO_RESULT = 5399
