@@ -309,7 +309,8 @@ class StatementReader:
         self.check_dialogs = mode == "check" if check_dialogs is None else check_dialogs
         # How plain word lines (most of a CAM job) are delivered: "tree" as Block nodes like any
         # line; "check" not at all at the top level (checking keeps nothing); "run" as PlainRun
-        # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute.
+        # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute;
+        # "lint" as PlainRun chunks at the top level (the linter keeps the few it needs) and nodes inside.
         self.mode = mode
         # Line numbers of the lines that are not plain: recorded by a "check" read, reused by a "run" read.
         self.non_plain: Sequence[int] = non_plain if non_plain is not None else array("I")
@@ -337,7 +338,7 @@ class StatementReader:
                     k = bisect_left(others, i)
                     j = others[k] if k < len(others) else count
                     if j > i:
-                        if self.mode == "run":
+                        if self.mode != "check":
                             for first in range(i, j, RUN_LENGTH):
                                 last = min(first + RUN_LENGTH, j)
                                 yield n.PlainRun(path, tuple(zip(range(base + first, base + last), chunk[first:last])))

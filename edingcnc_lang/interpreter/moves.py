@@ -89,6 +89,8 @@ class Moves(MachineState):
                 if self.config.absolute_center_coords:
                     work = self.work_position()
                     work[first], work[second] = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
+                    if self.diameter_mode and 0 in (first, second):  # an absolute X centre is a diameter too
+                        work[0] /= 2.0
                     machine = self.to_machine(work)
                     center = (machine[first], machine[second])
                 else:

@@ -17,7 +17,7 @@ from ..codes import CODES
 from ..diagnostics import Diagnostic
 from ..source import iter_file_lines
 from . import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
-from .model import SourceFile, load_source
+from .model import SourceFile, stream_source
 from .project import Project
 from .registry import RULES
 from .rules_config import check_config
@@ -113,7 +113,7 @@ class _Loader:
 
 
 def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = LintOptions(),
-               reader: Reader = load_source) -> list[Diagnostic]:
+               reader: Reader = stream_source) -> list[Diagnostic]:
     """Every finding in the files under ``paths``, filtered by the options, sorted by file and line.
 
     ``.ini`` files (given as paths or with ``--ini``) are checked as machine configurations; the

@@ -2,15 +2,16 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
 from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..errors import UnreadableFile
-from ..parser import StatementReader
+from ..parser import StatementReader, parse_line
 from ..source import iter_file_lines, iter_text_lines
+from .walk import ends_program
 
 
 @dataclass(frozen=True, eq=False)  # one object per file: compared and hashed by identity
@@ -30,18 +31,59 @@ class SourceFile:
         return self.lines[number - 1] if 0 < number <= len(self.lines) else ""
 
 
-def load_source(path: str | os.PathLike[str], is_macro: bool, text: str | None = None) -> SourceFile:
-    """Read and parse a file (or ``text``, its unsaved contents in an editor); syntax errors become findings."""
+def load_source(path: str | os.PathLike[str], is_macro: bool, text: str | None = None,
+                stream: bool = False) -> SourceFile:
+    """Read and parse a file (or ``text``, its unsaved contents in an editor); syntax errors become findings.
+
+    With ``stream`` the top-level plain motion lines that no rule can report on are not kept
+    (``ecnc lint`` of a million-line CAM job); the body is then not the whole file.
+    """
     shown = os.fspath(path)
     try:
         lines = tuple(iter_file_lines(path) if text is None else iter_text_lines(text))
     except OSError as exc:
         raise UnreadableFile.of(shown, exc) from None
-    reader = StatementReader(lines, shown)
-    body = tuple(reader)
+    reader = StatementReader(lines, shown, mode="lint" if stream else "tree")
+    body = tuple(_kept(reader, shown) if stream else reader)
     subs: dict[str, n.Sub] = {}
     for stmt in body:
         if isinstance(stmt, n.Sub):
             subs.setdefault(stmt.name.lower(), stmt)
     return SourceFile(shown, lines, body, reader.unit, tuple(reader.diagnostics), is_macro,
                       MappingProxyType(subs))
+
+
+def stream_source(path: str | os.PathLike[str], is_macro: bool) -> SourceFile:
+    """``load_source`` as ``ecnc lint`` reads files from disk: plain motion lines are not kept."""
+    return load_source(path, is_macro, stream=True)
+
+
+_MOTION_LETTERS = frozenset("GXYZABCFS")
+
+
+def _kept(reader: StatementReader, path: str) -> Iterator[n.Stmt]:
+    """The statements of a "lint" read, each top-level plain line a Block unless it is plain motion.
+
+    Plain motion (at most one G, which is G0 or G1, axis words, a non-zero F, S) gives no rule
+    anything to report, calls nothing and ends nothing; the statement after a program end is
+    always kept, since S209 reports it.
+    """
+    after_end = False
+    for stmt in reader:
+        if type(stmt) is not n.PlainRun:
+            yield stmt
+            after_end = ends_program(stmt)
+            continue
+        for lineno, text in stmt.lines:
+            block = parse_line(text, path, lineno)
+            assert isinstance(block, n.Block)
+            if after_end or not _plain_motion(block):
+                yield block
+                after_end = ends_program(block)
+
+
+def _plain_motion(block: n.Block) -> bool:
+    g = [w for w in block.words if w.letter == "G"]
+    return (len(g) <= 1 and all(w.value.value in (0.0, 1.0) for w in g)  # type: ignore[union-attr]
+            and all(w.letter in _MOTION_LETTERS for w in block.words)
+            and all(w.value.value != 0.0 for w in block.words if w.letter == "F"))  # type: ignore[union-attr]

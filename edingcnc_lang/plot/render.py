@@ -74,8 +74,6 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     travel from cnc.ini)."""
     require_matplotlib()
     fmt = picture_format(out)
-    if color == "speed" and path.speeds is None:
-        raise EcncError("--color speed needs the motion planner's speeds, which this run did not provide")
     from matplotlib.figure import Figure
 
     view = v.auto_view(path) if view == "auto" else view
@@ -141,7 +139,6 @@ def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> 
                     label=label)
         return fitted
     values = path.feeds if color == "feed" else path.speeds
-    assert values is not None
     rapid_pages, feed_pieces, feed_values = [], [], []
     for line in path.polylines(path.kinds.astype(np.int32)):
         page = line.points @ project.T

@@ -1,7 +1,7 @@
 """The toolpath of one run, recorded through the embedding API for pictures and the viewer.
 
-``record_job`` runs a job with ``RunOptions(on_move=..., on_event=...)`` and keeps every move
-with the tool in the spindle when it ran; ``Toolpath`` holds them as numpy columns and turns
+``record_job`` runs a job with ``RunOptions(on_timed_move=..., on_event=...)`` and keeps every
+move with the tool in the spindle when it ran and the motion planner's timing of it; ``Toolpath`` holds them as numpy columns and turns
 them into polylines (arcs sampled finely) for whoever draws them.  A run that stops with a
 runtime error still gives the path as far as it got, with the error kept beside it: a picture
 of where a macro went wrong is worth having.
@@ -22,6 +22,7 @@ from ..config import MachineConfig, load_config
 from ..errors import EcncError
 from ..kinematics.sampling import arc_sweep
 from ..kinematics.trajectory import geometry_of
+from ..planner.estimate import Timing
 from ..runner import RunOptions, RunResult, run_file
 from ..source import iter_file_lines
 
@@ -29,6 +30,7 @@ KINDS = ("rapid", "linear", "arc", "probe", "home")
 FEED_KINDS = frozenset({KINDS.index("linear"), KINDS.index("arc"), KINDS.index("probe")})
 RAPID_KINDS = frozenset({KINDS.index("rapid"), KINDS.index("home")})
 ARC_STEP = math.radians(3.0)  # 120 chords a turn: 0.014 mm off a 40 mm radius
+ROW = 8                       # values the recorder keeps per move (see Recorder.rows)
 WIDE = 1e5                    # mm: a limit this far out is "no limit configured" (the defaults are 1e6)
 
 
@@ -59,13 +61,14 @@ class Toolpath:
     arcs: dict[int, Arc]     # move index -> its circle
     work_zero: tuple[float, float, float]
     limits: tuple[np.ndarray, np.ndarray] | None  # lower and upper XYZ of the machine, when configured
+    times: np.ndarray        # (N, 2) planned start and end of each move, seconds from the job's start
+    speeds: np.ndarray       # (N,) the planner's top speed of each move, mm/min (deg/min for rotary-only moves)
+    seconds: float           # the planner's time estimate of the whole job (as far as it ran)
     result: RunResult | None = None
     error: EcncError | None = None
     joint_names: tuple[str, ...] = ()
     kinematics: str = "trivial"
     samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for
-    speeds: np.ndarray | None = None   # (N,) planned mm/min per move, when the planner provides it
-    seconds: float | None = None       # the planner's time estimate of the whole job
 
     def __len__(self) -> int:
         return len(self.kinds)
@@ -165,7 +168,7 @@ class Toolpath:
                        files=self.files[keep], feeds=self.feeds[keep], starts=self.starts[keep],
                        ends=self.ends[keep], joints=self.joints[keep],
                        arcs={renumber[i]: arc for i, arc in self.arcs.items() if i in renumber},
-                       speeds=None if self.speeds is None else self.speeds[keep])
+                       times=self.times[keep], speeds=self.speeds[keep])
 
 
 def _caller_lines(path: Toolpath) -> np.ndarray:
@@ -178,22 +181,23 @@ def _caller_lines(path: Toolpath) -> np.ndarray:
 
 
 class Recorder:
-    """The ``on_move``/``on_event`` callbacks that collect a run's moves with the tool in use."""
+    """The ``on_timed_move``/``on_event`` callbacks that collect a run's moves with the tool in use."""
 
     def __init__(self) -> None:
         # flat arrays of doubles, not lists of tuples: a million moves take ~180 MB, not ~750 MB
-        self.rows = array("d")    # kind, tool, line, file, feed per move
+        self.rows = array("d")    # kind, tool, line, file, feed, start s, end s, speed mm/s per move
         self.poses = array("d")   # start, end and joints per move, six values each
         self.arcs: dict[int, Arc] = {}
         self.paths: dict[str, int] = {}
         self.tool = 0
         self._kind = {kind: i for i, kind in enumerate(KINDS)}
 
-    def move(self, move: Move, joints: Pose) -> None:
+    def move(self, move: Move, joints: Pose, timing: Timing) -> None:
         file_index = self.paths.setdefault(move.path, len(self.paths))
         if move.arc is not None:
-            self.arcs[len(self.rows) // 5] = move.arc
-        self.rows.extend((self._kind.get(move.kind, 1), self.tool, move.line, file_index, move.feed))
+            self.arcs[len(self.rows) // ROW] = move.arc
+        self.rows.extend((self._kind.get(move.kind, 1), self.tool, move.line, file_index, move.feed,
+                          timing.start, timing.end, timing.speed))
         self.poses.extend(move.start)
         self.poses.extend(move.end)
         self.poses.extend(joints)
@@ -204,7 +208,7 @@ class Recorder:
 
     def toolpath(self, job: str, config: MachineConfig, result: RunResult | None,
                  error: EcncError | None) -> Toolpath:
-        table = np.frombuffer(self.rows, dtype=float).reshape(-1, 5)
+        table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         poses = np.frombuffer(self.poses, dtype=float).reshape(-1, 3, 6)
         final = result or (getattr(error, "result", None) if error else None)
         zero = (0.0, 0.0, 0.0)
@@ -216,7 +220,8 @@ class Recorder:
         return Toolpath(
             job=job, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
             lines=table[:, 2].astype(np.int32), files=table[:, 3].astype(np.int16),
-            paths=tuple(self.paths), feeds=table[:, 4].copy(),
+            paths=tuple(self.paths), feeds=table[:, 4].copy(), times=table[:, 5:7].copy(),
+            speeds=table[:, 7] * 60.0, seconds=final.estimate.seconds if final is not None else 0.0,
             starts=poses[:, 0].copy(), ends=poses[:, 1].copy(), joints=poses[:, 2].copy(), arcs=self.arcs,
             work_zero=zero, limits=machine_limits(config), result=final, error=error,
             joint_names=tuple(j.name for j in config.joints), kinematics=config.kinematics_name or "trivial")
@@ -253,12 +258,12 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
             return path
     options = options or RunOptions()
     recorder = Recorder()
-    outer_move, outer_event = options.on_move, options.on_event
+    outer_move, outer_event = options.on_timed_move, options.on_event
 
-    def on_move(move: Move, joints: Pose) -> None:
-        recorder.move(move, joints)
+    def on_timed_move(move: Move, joints: Pose, timing: Timing) -> None:
+        recorder.move(move, joints, timing)
         if outer_move:
-            outer_move(move, joints)
+            outer_move(move, joints, timing)
 
     def on_event(event: Event) -> None:
         recorder.event(event)
@@ -269,7 +274,7 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     result: RunResult | None = None
     error: EcncError | None = None
     try:
-        result = run_file(job, replace(options, on_move=on_move, on_event=on_event))
+        result = run_file(job, replace(options, on_timed_move=on_timed_move, on_event=on_event))
     except EcncError as err:
         if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration, plug-in loading
             raise

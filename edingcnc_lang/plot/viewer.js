@@ -31,6 +31,8 @@
   const file = decode(D.file, Uint16Array);
   const feed = decode(D.feed, Float32Array);
   const merged = decode(D.merged, Int32Array);
+  const time = decode(D.time, Float32Array);    // planned end of each move, seconds from the start
+  const speed = decode(D.speed, Float32Array);  // the planner's top speed, mm/min
   const index = new Int32Array(merged.length);  // the job's move number (from 0) each shown move ends at
   for (let i = 0, total = -1; i < merged.length; i++) index[i] = total += merged[i];
   const abc = decode(D.abc, Float32Array);
@@ -281,6 +283,11 @@
 
   // ---------------------------------------------------------------- readout and listing
   const fmt = (value) => (Math.abs(value) < 5e-5 ? 0 : value).toFixed(3);
+  function clock(seconds) {  // 1:02:03.4 or 2:03.4
+    const h = Math.floor(seconds / 3600), m = Math.floor(seconds / 60) % 60, s = seconds % 60;
+    const ss = (s < 10 ? "0" : "") + s.toFixed(1);
+    return h ? h + ":" + String(m).padStart(2, "0") + ":" + ss : m + ":" + ss;
+  }
 
   function readout() {
     const table = document.getElementById("readout");
@@ -303,6 +310,8 @@
     row("kind", D.kinds[kind[i]] + (merged[i] > 1 ? " (" + merged[i] + " moves merged)" : ""), true);
     row("tool", tool[i] ? "T" + tool[i] : "none", true);
     row("feed", isRapid(i) ? "rapid" : feed[i].toFixed(0) + " mm/min", true);
+    row("planned speed", speed[i].toFixed(0) + " mm/min", true);
+    row("time", clock(time[i]) + " of " + clock(D.seconds || 0), true);
     ["X", "Y", "Z"].forEach((a, k) => row(a, fmt(points[3 * p + k])));
     if (abc) ["A", "B", "C"].forEach((a, k) => row(a, fmt(abc[3 * i + k])));
     if (joints) {
@@ -340,17 +349,26 @@
   }
 
   // ---------------------------------------------------------------- player
-  let playing = false, lastTime = 0, carry = 0;
+  // the speed list: "N" plays N moves a second, "xN" N times real time (the planner's move times)
+  let playing = false, lastTime = 0, carry = 0, jobClock = 0;
   const playButton = document.getElementById("play");
-  function tick(time) {
+  function tick(now) {
     if (!playing) return;
-    const rate = Number(document.getElementById("speed").value);
-    carry += lastTime ? (time - lastTime) / 1000 * rate : 0;
-    lastTime = time;
-    const step = Math.floor(carry);
-    if (step > 0) {
-      carry -= step;
-      show(current + step);
+    const choice = document.getElementById("speed").value;
+    const elapsed = lastTime ? (now - lastTime) / 1000 : 0;
+    lastTime = now;
+    if (choice.startsWith("x")) {
+      jobClock += elapsed * Number(choice.slice(1));
+      let next = current;
+      while (next < count - 1 && time[next] < jobClock) next++;
+      if (next !== current) show(next);
+    } else {
+      carry += elapsed * Number(choice);
+      const step = Math.floor(carry);
+      if (step > 0) {
+        carry -= step;
+        show(current + step);
+      }
     }
     if (current >= count - 1) { togglePlay(); return; }
     requestAnimationFrame(tick);
@@ -362,6 +380,7 @@
       if (current >= count - 1) show(0);
       lastTime = 0;
       carry = 0;
+      jobClock = current > 0 ? time[current - 1] : 0;
       requestAnimationFrame(tick);
     }
   }

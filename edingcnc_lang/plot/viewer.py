@@ -94,6 +94,7 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "kind": _b64(path.kinds[keep], "u1"), "tool": _b64(path.tools[keep], "i4"),
         "line": _b64(path.lines[keep], "i4"), "file": _b64(path.files[keep], "u2"),
         "feed": _b64(path.feeds[keep], "f4"), "merged": _b64(thinned.count, "i4"),
+        "time": _b64(path.times[keep, 1], "f4"), "speed": _b64(path.speeds[keep], "f4"),
         "abc": _b64(abc, "f4") if np.any(abc) else None,
         "joints": _b64(path.joints[keep], "f4") if path.kinematics.lower() not in ("trivial", "") else None,
         "jointRows": _moving_joints(path), "kinematics": path.kinematics,

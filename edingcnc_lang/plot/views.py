@@ -101,7 +101,7 @@ def title_text(path: Toolpath) -> str:
         parts.append("tools " + ", ".join(f"T{t}" for t in tools))
     if path.kinematics.lower() not in ("", "trivial"):
         parts.append(f"kinematics {path.kinematics}")
-    if path.seconds is not None:
+    if path.seconds > 0.0:
         parts.append(f"about {duration_text(path.seconds)}")
     text = "  \u2014  ".join(parts)
     if path.error is not None:

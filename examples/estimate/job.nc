@@ -1,6 +1,6 @@
 (Pocket and outline for the estimate example)
 G10 L2 P1 X50 Y50 Z-80 (work zero: stock top at machine Z-80)
-; T1: 6 mm flat end mill - roughing the pocket (Tasche), G64 P0.02 from the ini
+; T1: 6 mm flat end mill - roughing the pocket (Tasche für T1, Ø 6), G64 P0.02 from the ini
 T1 M6
 S18000 M3
 G0 X100 Y100 Z5

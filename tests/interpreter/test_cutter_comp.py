@@ -93,3 +93,11 @@ def test_refusals_name_the_line(source: str, line: int, words: str, tmp_path: Pa
 def test_m30_ends_compensation_and_the_next_run_starts_without_it(tmp_path: Path) -> None:
     moves = xy_ends("G0 X-10\nG41 D1\nG1 X0 Y0 F100\nM30\n", tmp_path)
     assert moves[-1] == (3, 0.0, 2.0)
+
+
+def test_g19_compensates_in_y_and_z() -> None:
+    moves: list[Move] = []
+    run_string("G19\nG0 Y-10 Z0\nG41.1 D4\nG1 Y0 Z0 F100\nG1 Y20\nG40\nG1 Y30\nM30\n",
+               RunOptions(macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m)), path="job.nc")
+    along = next(m for m in moves if m.line == 5)
+    assert along.end[1:3] == pytest.approx((20.0, 2.0))  # left of +Y, seen from +X, is +Z

@@ -218,3 +218,10 @@ def test_diameter_mode_is_radius_mode_with_doubled_x(moves_in: list[tuple[str, f
 def test_probe_results_follow_the_diameter_convention(tmp_path: Path) -> None:
     _, _, result = run(tmp_path, "G0 X40 Z5\nG38.2 X10 F100\n#100 = #5061\n#101 = #5051\n")
     assert result.variables[100] == 10.0 and result.variables[101] == 5.0  # type: ignore[attr-defined]
+
+
+def test_absolute_arc_centre_x_is_a_diameter(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G0 X20 Z0\nG3 X40 Z-10 I20 K-10 F100\n",
+                      extra="[INTERPRETER]\nabsoluteCenterCoords = 1\n")
+    arc = moves[-1].arc
+    assert arc is not None and arc.center == pytest.approx((10.0, -10.0))  # (x, z): radius 10, as I20 says

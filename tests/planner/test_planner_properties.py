@@ -12,11 +12,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import RunOptions, run_string
-from edingcnc_lang.planner.estimate import Timing
 
 VELOCITY = np.array([120.0, 80.0, 30.0, 90.0, 90.0, 90.0])
 ACCEL = np.array([1500.0, 900.0, 400.0, 2000.0, 2000.0, 2000.0])
 SLACK = 1.0 + 1e-6
+SAMPLED_SLACK = 1.001  # with kinematics on, the joints' speeds are measured on samples: 0.1 % of sampling error
 
 
 def ini(folder: Path) -> Path:
@@ -84,3 +84,27 @@ def test_blending_is_between_exact_stop_and_one_move(points: list, feed: int, mo
     bound = (length / speed + speed / accel if length >= speed ** 2 / accel else 2 * math.sqrt(length / accel)) \
         if length else 0.0
     assert bound * (1 - 1e-9) <= blended <= exact * (1 + 1e-9)
+
+
+@settings(max_examples=20)
+@given(jobs.filter(lambda moves: all(code != "G0" for code, _, _ in moves)))
+def test_corexy_samples_respect_the_joints(moves: list) -> None:
+    """With kinematics on, the joints (here CoreXY's two belts) set the pace, not the axes."""
+    with tempfile.TemporaryDirectory() as folder:
+        machine = ini(Path(folder))
+        machine.write_text(machine.read_text() + "[KINEMATICS]\r\nkinematicsDLLName = corexy\r\n", newline="")
+        samples = Path(folder) / "s.csv"
+        ends: list[float] = []
+        run_string("KIN ON\n" + job_text(moves, "G64"), RunOptions(
+            ini=machine, samples=samples, on_timed_move=lambda m, j, timing: ends.append(timing.end)))
+        rows = samples.read_text().splitlines()[1:]
+    if len(rows) < 3:
+        return
+    data = np.array([[float(v) for v in row.split(",")] for row in rows])
+    t, joints = np.concatenate(([0.0], data[:, 0])), np.vstack((np.zeros(6), data[:, 7:13]))
+    velocity = np.diff(joints, axis=0) / np.diff(t)[:, None]
+    assert (np.abs(velocity) <= VELOCITY * SAMPLED_SLACK).all()
+    acceleration = np.diff(velocity, axis=0) / ((t[2:] - t[:-2]) / 2.0)[:, None]
+    straddles = np.array([((np.array(ends) > t0 + 1e-12) & (np.array(ends) < t2 - 1e-12)).any()
+                          for t0, t2 in zip(t[:-2], t[2:])])
+    assert (np.abs(acceleration[~straddles]) <= ACCEL * SAMPLED_SLACK).all()

@@ -71,6 +71,7 @@ def test_the_page_finishes_its_script_and_opens_at_a_move(pocket_page: Path, tmp
     assert drawn > 100  # moves drawn: those done and those to come
     assert re.search(r'<span id="counter">move 40 of 168</span>', log)
     assert re.search(r'<li class="current"><span class="n">\d+</span>', log)  # the program listing follows
+    assert "<th>planned speed</th>" in log and re.search(r"<th>time</th><td class=\"text\">\d+:\d\d\.\d of ", log)
 
 
 def test_a_kinematic_job_shows_its_joints(tmp_path: Path) -> None:

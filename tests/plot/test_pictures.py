@@ -127,10 +127,28 @@ def test_other_colour_modes_draw_the_same_contour(square, tmp_path: Path, mode: 
     assert all(near(~background, p, reach=1) for p in pixels)
 
 
-def test_speed_colour_needs_the_planner(square, tmp_path: Path) -> None:
-    square.speeds = None
-    with pytest.raises(EcncError, match="planner"):
-        plot_toolpath(square, tmp_path / "speed.png", color="speed")
+def test_colour_by_planned_speed_shows_slow_corners_and_fast_runs(tmp_path: Path) -> None:
+    """A long run reaches the programmed feed; a zigzag of 1 mm steps on a machine accelerating at
+    1500 mm/s^2 never does: they get the two ends of the scale."""
+    job = write(tmp_path, "speeds.nc", "G21 G90 G61\nT1 M6\nG0 X10 Y10 Z-5\nG1 Z-10 F300\nG1 X200 F6000\n"
+                                       + "".join(f"G1 X{200 + k + 1} Y{10 + (k + 1) % 2}\n" for k in range(10))
+                                       + "G0 Z-5\nM30\n")
+    path = record_job(job, RunOptions(ini=ROOT / "examples/estimate/cnc.ini"))
+    long_run = int(np.flatnonzero(path.lines == 5)[0])
+    zigzag = np.flatnonzero((path.lines > 5) & (path.lines < 16))
+    assert path.speeds[long_run] > 1.5 * path.speeds[zigzag].max()
+    assert path.speeds[long_run] <= 6000.0 + 1e-6
+    picture = plot_toolpath(path, tmp_path / "speed.png", view="top", color="speed")
+    image = imread(picture.path)
+    fast, slow = image_colour(image, picture, [100, 10, -1]), image_colour(image, picture, [205.5, 10.5, -1])
+    assert np.linalg.norm(fast - slow) > 0.3  # far apart on the colour scale
+
+
+def image_colour(image: np.ndarray, picture, point: list[float]) -> np.ndarray:
+    """The most saturated pixel near where ``point`` lands (the line's own colour, not its antialiased edge)."""
+    col, row = (int(round(v)) for v in picture.to_pixels([point])[0])
+    patch = image[row - 2:row + 3, col - 2:col + 3, :3].reshape(-1, 3)
+    return patch[np.argmax(patch.max(axis=1) - patch.min(axis=1))]
 
 
 @pytest.mark.parametrize("suffix, magic", [(".svg", b"<?xml"), (".pdf", b"%PDF"), (".PNG", b"\x89PNG")])
@@ -162,6 +180,7 @@ def test_title_names_the_job_its_tools_and_a_stop(tmp_path: Path) -> None:
     path = record_job(write(tmp_path, "two.nc", TWO_TOOLS + "errmsg \"late\"\n"))
     assert views.title_text(path).startswith("two.nc")
     assert "T1, T2" in views.title_text(path)
+    assert "about " in views.title_text(path) and path.seconds > 0  # the planner's estimate
     path.seconds = 4325.0
     assert "1 h 12 min 5 s" in views.title_text(path)
 

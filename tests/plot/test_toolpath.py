@@ -81,3 +81,21 @@ def test_a_job_without_moves_gives_an_empty_path(tmp_path: Path) -> None:
     path = record_job(write(tmp_path, "empty.nc", "(nothing to cut)\nM30\n"))
     assert len(path) == 0 and path.starts.shape == (0, 6) and path.bounds() is None
     assert list(path.polylines()) == []
+
+
+def test_every_move_carries_the_planners_timing(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "square.nc", SQUARE))
+    start, end = path.times[:, 0], path.times[:, 1]
+    assert (end >= start).all() and np.allclose(start[1:], end[:-1])  # back to back, in order
+    assert path.seconds == pytest.approx(end[-1])
+    feeds = path.kinds == KINDS.index("linear")
+    assert (path.speeds[feeds] > 0).all() and (path.speeds[feeds] <= path.feeds[feeds] + 1e-6).all()
+
+
+def test_callbacks_already_in_the_options_still_get_every_move(tmp_path: Path) -> None:
+    seen: list[tuple[int, float]] = []
+    events: list[str] = []
+    options = RunOptions(on_timed_move=lambda move, joints, timing: seen.append((move.line, timing.end)),
+                         on_event=lambda event: events.append(event.kind))
+    path = record_job(write(tmp_path, "square.nc", SQUARE), options)
+    assert [line for line, _ in seen] == path.lines.tolist() and "tool_change" in events
