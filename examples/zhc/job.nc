@@ -17,7 +17,8 @@ While [#111 < #4101]
   While [#110 < #4100]
     G0 Z[#4102]
     G0 X[#110 * #4104] Y[#111 * #4104]
-    G38.2 F[#4105] Z[#4103]
+    ; (no simulation guard: with --probe-surface the simulation really probes)
+    G38.2 F[#4105] Z[#4103]   ; noqa: G504
     If [#5067 == 1]
       ZHCADDPOINT
     EndIf
