@@ -18,6 +18,7 @@ from edingcnc_lang.kinematics.base import KinematicsDomainError, VectorisedKinem
 SIN_60 = math.sqrt(3.0) / 2.0
 COS_60 = 0.5
 JOINT_NAMES = ("X", "Y", "Z")
+SAFETY_SLACK = 1.0 + 1e-9  # relative: rounding of sampled arcs, far below any machine's resolution
 BLOCK = 16_384  # samples per pass of the inverse: a block's temporaries stay in the CPU cache
 
 
@@ -63,7 +64,8 @@ class DeltaKins(VectorisedKinematics):
         np.square(dy, out=dy)
         np.subtract(self.arm ** 2, radicand, out=radicand)
         np.subtract(radicand, dy, out=radicand)
-        far = np.hypot(x, y) > self.safety_radius if self.safety_radius > 0.0 else None  # 0: not set
+        # 0: not set; a point on the circle itself is inside (an arc sampled along it lands 1e-14 beyond)
+        far = np.hypot(x, y) > self.safety_radius * SAFETY_SLACK if self.safety_radius > 0.0 else None
         # one cheap pass when every sample is reachable; NaN fails ">=" and takes the exact check too
         if not radicand.min(initial=np.inf) >= 0.0 or (far is not None and far.any()):
             bad = (radicand < 0.0).any(axis=0)

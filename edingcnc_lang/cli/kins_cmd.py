@@ -54,19 +54,24 @@ def _switched_on(name: str, ini: str | None) -> Kinematics:
 def _pose(values: Sequence[float], names: Sequence[str]) -> Pose:
     if not 3 <= len(values) <= 6:
         raise usage_error(f"expected 3 to 6 numbers ({' '.join(n.upper() for n in names)}), got {len(values)}")
+    import math
+
+    for name, value in zip(names, values):
+        if not math.isfinite(value):
+            raise usage_error(f"{name.upper()} must be a finite number, not {value}")
     x, y, z, a, b, c = (*values, *[0.0] * (6 - len(values)))
     return (x, y, z, a, b, c)
 
 
-def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str, given: Pose) -> None:
-    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity out of finite input is the
-    plug-in's error."""
+def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str) -> None:
+    """JSON with repr-exact floats (json uses float.__repr__); NaN or infinity (from finite input, which
+    ``_pose`` ensures) is the plug-in's error."""
     import json
     import math
 
     from ..errors import PluginError
 
-    if all(math.isfinite(v) for v in given) and not all(math.isfinite(v) for v in values):
+    if not all(math.isfinite(v) for v in values):
         shown = " ".join(f"{n}={v}" for n, v in zip(names, values))
         raise PluginError(f"kinematics plug-in {plugin!r}: {call} returned a value that is not a finite number "
                           f"({shown}); a plug-in must raise KinematicsDomainError for a pose out of reach")
@@ -107,7 +112,7 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
-    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse", pos)
+    _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse")
     return EXIT_OK
 
 
@@ -116,7 +121,7 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
-    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward", joints)
+    _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward")
     return EXIT_OK
 
 

@@ -105,11 +105,19 @@ def test_an_unknown_lint_code_points_to_list_codes(job: Path) -> None:
     assert "argument --select: no code starts with Q9 (see --list-codes)" in result.stderr
 
 
-@pytest.mark.parametrize("coords", [["-5", "1", "2"], ["-.5", "-2.5e-3", "1E3"], ["-inf", "0", "0"]])
+@pytest.mark.parametrize("coords", [["-5", "1", "2"], ["-.5", "-2.5e-3", "1E3"]])
 def test_negative_numbers_are_coordinates(coords: list[str]) -> None:
     result = invoke("kins", "inverse", "trivial", *coords)
     assert result.exit_code == 0, result.stderr
     assert list(json.loads(result.stdout).values()) == [float(c) for c in coords] + [0.0, 0.0, 0.0]
+
+
+@pytest.mark.parametrize("value", ["-inf", "nan", "1e999"])
+def test_a_coordinate_must_be_finite(value: str) -> None:
+    """Read as a value (not an unknown option), then refused: the answer would not be valid JSON."""
+    result = invoke("kins", "inverse", "trivial", value, "0", "0")
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert "X must be a finite number" in result.stderr
 
 
 def test_options_may_stand_between_arguments(job: Path, tmp_path: Path) -> None:

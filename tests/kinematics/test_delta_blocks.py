@@ -6,6 +6,7 @@ unreachable or NaN sample in a later block is reported exactly as in a one-block
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -71,3 +72,17 @@ def test_nan_sample_is_not_unreachable_and_stays_nan() -> None:
 
 def test_empty_batch() -> None:
     assert deltakins.DeltaKins(SETTINGS).inverse_many(np.zeros((0, 6))).shape == (0, 6)
+
+
+def test_an_arc_along_the_safety_circle_runs() -> None:
+    """Points exactly on linDeltaSafetyRadius are inside, also the rounded samples of an arc along it."""
+    from edingcnc_lang import RunOptions, run_string
+
+    ini = Path(__file__).resolve().parents[2] / "examples" / "delta" / "cnc.ini"
+    job = ("PrepareLinDeltaHome 40\nhome x\nhome y\nhome z\nKIN ON\nG0 Z50\nG1 X100 Y0 F3000\n"
+           "G1 X0 Y100\nG2 X100 Y0 I0 J-100\nM30\n")
+    result = run_string(job, RunOptions(ini=ini))
+    assert result.machine[:2] == pytest.approx((100.0, 0.0), abs=1e-9)
+    kins = deltakins.DeltaKins({**SETTINGS, "lindeltasafetyradius": "100"})
+    with pytest.raises(KinematicsDomainError, match="beyond linDeltaSafetyRadius"):
+        kins.inverse((100.001, 0.0, 0.0, 0.0, 0.0, 0.0))
