@@ -91,3 +91,11 @@ def test_plot_as_a_real_process(tmp_path: Path) -> None:
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "s.png").exists()
+
+
+@pytest.mark.parametrize("command, name", [("plot", "p.png"), ("view", "v.html")])
+def test_a_missing_output_folder_is_told_before_the_job_runs(tmp_path: Path, command: str, name: str) -> None:
+    job = write(tmp_path, "square.nc", 'msg "the job started"\n' + SQUARE)
+    result = invoke(command, job, "-o", tmp_path / "missing" / name)
+    assert result.exit_code == 70 and "folder" in result.stderr and "does not exist" in result.stderr
+    assert "the job started" not in result.stderr
