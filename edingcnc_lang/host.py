@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from datetime import datetime
 
 from .canon import Pose
 
@@ -65,6 +66,7 @@ class Host:
     read_input: InputCallback | None = None   # input port -> 0/1 (M56, #5068)
     probe: ProbeCallback | None = None        # (start, target) machine poses -> trip point or None (no contact)
     message: MessageCallback | None = None    # (kind, text, path, line) as they happen
+    clock: Callable[[], datetime] | None = None  # the time %d shows in messages (default: now)
 
 
 def scripted_dialogs(answers: Sequence[DialogAnswer]) -> DialogCallback:

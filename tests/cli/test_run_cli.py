@@ -78,10 +78,20 @@ def test_syntax_error_exits_65_and_runs_nothing(tmp_path: Path) -> None:
     assert not trace.exists() or trace_rows(trace) == []
 
 
-def test_syntax_error_in_a_macro_file_exits_65_and_runs_nothing(tmp_path: Path) -> None:
+def test_a_macro_line_that_does_not_parse_is_a_warning_until_the_run_reaches_it(tmp_path: Path) -> None:
     macro = write(tmp_path, "macro.cnc", ";@unit mm\nSub m101\n  G0 Y[#25\nEndSub\n")
     trace = tmp_path / "t.csv"
     result = run_job(tmp_path, "G0 X1\nM101 Y3\n", "--trace", trace, macro=macro)
+    assert result.exit_code == 65
+    assert result.stderr.count(f"{macro}:3:7: warning:") == 1  # listed once, at load
+    assert f"{macro}:3:7: error:" in result.stderr  # the same message when M101 reaches it
+    assert len(trace_rows(trace)) == 1  # G0 X1 ran first
+
+
+def test_strict_makes_a_macro_syntax_error_stop_the_run_before_anything_moves(tmp_path: Path) -> None:
+    macro = write(tmp_path, "macro.cnc", ";@unit mm\nSub m101\n  G0 Y[#25\nEndSub\n")
+    trace = tmp_path / "t.csv"
+    result = run_job(tmp_path, "G0 X1\nM101 Y3\n", "--trace", trace, "--strict", macro=macro)
     assert result.exit_code == 65
     assert f"{macro}:3:7: error:" in result.stderr
     assert not trace.exists() or trace_rows(trace) == []

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from edingcnc_lang.diagnostics import SyntaxErrors
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.host import DialogAnswer, DialogField, Host, scripted_dialogs
 from edingcnc_lang.interpreter.state import format_value
@@ -127,9 +128,26 @@ def test_dialog_with_15_fields_is_fine_and_16_is_an_error() -> None:
     assert "16 fields" in err.message and str(err.location) == "job.nc:1:1"
 
 
-def test_hash_in_a_dialog_field_is_g1167() -> None:
-    err = error_of('dlgmsg "T" "Width" #27\n')
-    assert "G1167" in err.message and str(err.location) == "job.nc:1:20"
+@pytest.mark.parametrize("line, code, col", [
+    ('dlgmsg "T" "Width" #27', "D403", 20),       # a '#' before the field number
+    ('dlgmsg "T" #27 "Width" 27', "D402", 12),    # a value between the strings
+    ('dlgmsg "T" "Width" 27 "Depth"', "D402", 23),  # a label without its number
+])
+def test_dialog_shapes_the_controller_calls_g1167_stop_the_job_before_anything_moves(
+        line: str, code: str, col: int) -> None:
+    moves: list[object] = []
+    with pytest.raises(SyntaxErrors) as info:
+        run(f"G0 X1\n{line}\n", on_move=lambda move, joints: moves.append(move))
+    diag = info.value.diagnostics[0]
+    assert (diag.code, diag.line, diag.col) == (code, 2, col) and "G1167" in diag.message
+    assert moves == []
+
+
+def test_a_dialog_label_of_32_characters_is_refused_when_the_dialog_is_shown() -> None:
+    label = "x" * 32
+    err = error_of(f'G0 X1\ndlgmsg "T" "{label}" 27\n')
+    assert "unnamed string too long" in err.message and err.location.line == 2  # type: ignore[union-attr]
+    run(f'dlgmsg "T" "{label[:31]}" 27\n')
 
 
 @pytest.mark.parametrize("text", ["ok", "OK", "cancel", "ok:#27=5", "ok: #27=5, #28=-1e3"])
