@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.errors import MissingExtra
+from edingcnc_lang.errors import require_extra
 from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
@@ -22,10 +22,7 @@ STATUS_COLOURS = ("#4c9a2a", "#d9d9d9", "#d62728", "#ff7f0e")  # reached, out of
 
 
 def _pyplot():
-    try:
-        import matplotlib
-    except ImportError:
-        raise MissingExtra("ecnc kins plot needs matplotlib: pip install 'edingcnc-lang[plot]'") from None
+    matplotlib = require_extra("matplotlib", "plot", "ecnc kins plot")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
