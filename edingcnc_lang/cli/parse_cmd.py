@@ -5,7 +5,7 @@ import click
 
 from ..errors import EXIT_OK
 from .base import Command
-from .common import whole_trees
+from ..gcpause import whole_trees
 from .options import json_option
 from .params import INPUT_FILE, STDIN
 from .streams import STDIN_NAME, read_stdin
