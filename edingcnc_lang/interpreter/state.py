@@ -80,7 +80,6 @@ G_99 = G(99)
 PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
 # Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
 CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
-MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | t.CANNED_CYCLES
 DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
                  "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
