@@ -140,9 +140,9 @@ class Run:
         """The ini's plug-in; without an ini the built-in trivial kinematics (no plug-in lookup)."""
         if not self.config.path:
             return TrivialKinematics(self.config.kinematics_settings)
-        search = [Path(self.config.path).parent]
         try:
-            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
+            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings,
+                                   [self.config.folder])
         except EcncError as err:
             if err.location is None:  # point at the ini that names the plug-in
                 err.location = Location(self.config.path)
