@@ -61,6 +61,7 @@ class Move:
     spindle: float = 0.0
     css: Css | None = None
     sync: float = 0.0
+    caller: int = 0  # a move made inside a sub: the line of the outermost call (GoSub, M code, T M6)
 
 
 @dataclass(frozen=True, slots=True)

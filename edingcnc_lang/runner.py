@@ -56,6 +56,8 @@ class RunResult:
     spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
     estimate: Estimate = field(default_factory=Estimate)  # how long the run took, as planned
     limits: dict[str, Any] = field(default_factory=dict)  # the limits report (see docs/planner.md)
+    # where the work zero is in machine coordinates: G5x + G92 + tool offsets, not turned by G68 or G51
+    work_zero: Pose = (0.0,) * 6
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -272,6 +274,7 @@ class Run:
             spindle=interp.spindle_state(),
             estimate=self.planner.estimate,
             limits=self.planner.limits.to_json(),
+            work_zero=tuple(interp.offset()),  # type: ignore[arg-type]
         )
 
 

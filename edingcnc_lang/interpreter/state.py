@@ -266,7 +266,7 @@ class MachineState:
         css = self.css() if turning else None
         rpm = (css.rpm(end[0]) if css is not None else self.rpm) if turning else 0.0
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
-                             rpm, css, sync))
+                             rpm, css, sync, self.stack[0].line if self.stack else 0))
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
