@@ -153,3 +153,20 @@ def test_a_closed_pipe_on_standard_output_ends_quietly_with_exit_1(tmp_path: Pat
     process.stdout.close()
     stderr = process.stderr.read().decode()
     assert (process.wait(timeout=120), stderr) == (1, "")
+
+
+def test_control_bytes_of_the_job_are_escaped_in_errors_messages_and_findings(tmp_path: Path) -> None:
+    job = tmp_path / "esc.nc"
+    job.write_bytes(b'G0 X\x1b]0;HACKED\x07\x1b[2J\n')
+    messages = tmp_path / "msg.nc"
+    messages.write_bytes(b'msg "a\x1b[2Jb\x00"\n')
+    run, lint, said = invoke("run", job), invoke("lint", job), invoke("run", messages)
+    for output in (run.stderr, lint.stdout + lint.stderr, said.stderr):
+        assert "\x1b" not in output and "\x07" not in output and "\x00" not in output
+    assert f"{messages}:1: msg: a\\x1b[2Jb\\x00" in said.stderr
+    source, caret = run.stderr.splitlines()[-2:]
+    assert source == "    G0 X\\x1b]0;HACKED\\x07\\x1b[2J" and caret.index("^") == source.index("]")
+    assert "G0 X\\x1b]0;HACKED" in lint.stdout + lint.stderr
+    tabbed = tmp_path / "tab.nc"
+    tabbed.write_text("\tG0 X]\n")
+    assert invoke("run", tabbed).stderr.splitlines()[-2:] == ["    \tG0 X]", "    \t    ^"]
