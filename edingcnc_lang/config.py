@@ -132,10 +132,28 @@ class MachineConfig:
     cartesian_negative_limits: tuple[float, ...]
     cartesian_max_velocity: tuple[float, ...]
     cartesian_max_acceleration: tuple[float, ...]
+    tca_positive: tuple[float, ...]        # tool-change area, machine X Y Z (A B C unused); all 0: none
+    tca_negative: tuple[float, ...]
     user_output_start: int
     user_output_count: int
     tools: Mapping[int, ToolConfig]
     variables: Mapping[int, float]
+    sections: frozenset[str] = frozenset()  # the ini's section names, lower case: which ones it GAVE
+
+    @property
+    def folder(self) -> Path | None:
+        """The ini's folder: where plug-in and macro files named in it are looked for (None without an ini)."""
+        return Path(self.path).parent if self.path else None
+
+    def gives_cartesian_limits(self, axis: int) -> bool:
+        """Whether ``[KINEMATICS]`` sets both positiveLimit and negativeLimit of ``axis`` (else defaults)."""
+        letter = AXES[axis].lower()
+        return all(f"{side}limit{letter}" in self.kinematics_settings for side in ("positive", "negative"))
+
+    @property
+    def gives_joint_sections(self) -> bool:
+        """Whether the ini has any ``[JOINT_n]`` section (else the joints are the wide defaults)."""
+        return any(name.startswith("joint_") for name in self.sections)
 
     @property
     def lathe(self) -> bool:
@@ -187,6 +205,8 @@ class MachineConfig:
             cartesian_negative_limits=(-_WIDE_LIMIT,) * len(AXES),
             cartesian_max_velocity=(_WIDE_VELOCITY,) * len(AXES),
             cartesian_max_acceleration=(_WIDE_ACCELERATION,) * len(AXES),
+            tca_positive=(0.0,) * len(AXES),
+            tca_negative=(0.0,) * len(AXES),
             user_output_start=0,
             user_output_count=0,
             tools=MappingProxyType({}),
@@ -255,6 +275,8 @@ _CARTESIAN_FIELDS = (
     ("cartesian_negative_limits", "negativeLimit"),
     ("cartesian_max_velocity", "maxVelocity"),
     ("cartesian_max_acceleration", "maxAcceleration"),
+    ("tca_positive", "positiveLimitTCA"),  # the tool-change area (TCAGuard): X Y Z used
+    ("tca_negative", "negativeLimitTCA"),
 )
 _TOOL_DEFAULT = ToolConfig(number=0, length=0.0, diameter=0.0, width=0.0, x_delta=0.0, z_delta=0.0,
                            orientation=0, description="")
@@ -377,6 +399,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
         **_read_cartesian(ini, base),
         tools=_read_tools(ini),
         variables=_read_variables(ini),
+        sections=frozenset(ini.sections),
     )
     _validate(ini, config)
     return config
