@@ -22,13 +22,14 @@ from .interpreter import Interpreter
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
-from .motion import MotionStage
+from .motion import MotionStage, PlannerStage
 from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
 from .limits import DEFAULT_MAX_STEPS
 from .parser import check_file, parse_file, parse_text, read_statements
 from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
+from .planner.untimed import Untimed
 from .stages import STAGES, Pipeline
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
@@ -51,8 +52,9 @@ class RunResult:
     error: str | None = None  # the formatted message of the error that stopped the run
     error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
     spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
-    estimate: Estimate = field(default_factory=Estimate)  # how long the run took, as planned
-    limits: dict[str, Any] = field(default_factory=dict)  # the limits report (see docs/planner.md)
+    # how long the run took, as planned, and the limits report (docs/planner.md); None when not planned
+    estimate: Estimate | None = field(default_factory=Estimate)
+    limits: dict[str, Any] | None = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -69,7 +71,7 @@ class RunResult:
             "modal": self.modal,
             "ended_by": self.ended_by,
             "spindle": self.spindle,
-            "estimate": self.estimate.to_json(),
+            "estimate": self.estimate.to_json() if self.estimate is not None else None,
             "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
         }
@@ -97,6 +99,9 @@ class RunOptions:
     on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
     feed_override: float = 100.0   # percent
     rapid_override: float = 100.0  # percent, at most 100
+    # False: time the moves only if an output reads time (trace, samples, events, on_timed_move);
+    # otherwise the run skips the planner (no numpy) and its estimate and limits are None
+    plan: bool = True
 
 
 def packaged_macro() -> Path:
@@ -121,17 +126,24 @@ class Run:
             sinks.append(EventsWriter(ensure_parent(options.events)))
         if options.on_move or options.on_event or options.on_timed_move:
             sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
-        self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
-        self.motion = MotionStage(self.config, self.kinematics, self.planner, self._write_param,
+        self.planner: Planner | None = None
+        stage: PlannerStage
+        if options.plan or _reads_time(options):
+            stage = self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
+        else:
+            stage = Untimed(overrides, options.on_move, options.on_event)
+        self.motion = MotionStage(self.config, self.kinematics, stage, self._write_param,
                                   sample_always=options.samples is not None)
-        self.planner.joints_of = self.motion.joints_at
+        if self.planner is not None:
+            self.planner.joints_of = self.motion.joints_at
         self.pipeline = Pipeline(STAGES, self.motion, self.config)
         self.interpreter = Interpreter(self.pipeline.head, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
-        self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
+        if self.planner is not None:
+            self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)
@@ -245,8 +257,8 @@ class Run:
             error=error.format() if error else None,
             error_record=error.to_json() if error else None,
             spindle=interp.spindle_state(),
-            estimate=self.planner.estimate,
-            limits=self.planner.limits.to_json(),
+            estimate=self.planner.estimate if self.planner else None,
+            limits=self.planner.limits.to_json() if self.planner else None,
         )
 
 
@@ -257,6 +269,11 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
     """
     names = ["standard output" if str(p) == "-" else str(p) for p in outputs if p is not None]
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
+
+
+def _reads_time(options: RunOptions) -> bool:
+    """An output that reads each move's planned time: the trace's t column, samples, events, ``on_timed_move``."""
+    return bool(options.trace or options.samples or options.events or options.on_timed_move)
 
 
 def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:
