@@ -2,7 +2,8 @@
 
 Hypothesis profiles: ``ci`` (the default, and what ``.ci/run`` selects) derandomizes every property
 test so a run is repeatable; ``dev`` draws fresh random examples, ten times as many, for local
-hunting: ``python -m pytest --hypothesis-profile=dev``.
+hunting: ``python -m pytest --hypothesis-profile=dev``; ``fuzz`` runs 20,000 random examples per test
+(``python -m pytest tests/fuzz --hypothesis-profile=fuzz``).
 """
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
 settings.register_profile("dev", deadline=None, max_examples=1000)
+settings.register_profile("fuzz", deadline=None, max_examples=20_000)  # tests/fuzz, long local hunts
 settings.load_profile("ci")
 
 

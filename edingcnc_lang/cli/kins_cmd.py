@@ -80,19 +80,39 @@ def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str) -> N
 
 @click.command("list", cls=Command, short_help="Registered kinematics: name, type and version (tab separated).")
 @json_option("Print a JSON array instead of a table.")
-def list_kinematics(as_json: bool) -> int:
-    """Registered kinematics: name, type and version (tab separated)."""
+@ini_option("Also list the plug-in this cnc.ini names (kinematicsDLLName), loaded with its settings.")
+def list_kinematics(as_json: bool, ini: str | None) -> int:
+    """Registered kinematics: name, type and version (tab separated); with --ini also the ini's plug-in."""
     import json
 
     from ..kinematics.loader import available_kinematics
 
     rows = available_kinematics()
+    if ini:
+        rows.append(_ini_plugin(Path(ini)))
     if as_json:
         print(json.dumps([{"name": n, "type": t, "version": v} for n, t, v in rows]))
     else:
         for name, kin_type, version in rows:
             print(f"{name}\t{kin_type}\t{version}")
     return EXIT_OK
+
+
+def _ini_plugin(ini: Path) -> tuple[str, int, str]:
+    """(name as the ini writes it, type, version) of the ini's plug-in; a broken one says why, as in the list."""
+    from ..errors import PluginError
+    from ..ini import read_ini
+    from ..kinematics.loader import load_kinematics
+
+    name = read_ini(ini).get_str("KINEMATICS", "kinematicsDLLName", "").strip()
+    if not name:
+        raise usage_error(f"{ini} names no kinematics plug-in ([KINEMATICS] kinematicsDLLName)")
+    settings, search_dirs = _settings(ini)
+    try:
+        kins = load_kinematics(name, settings, search_dirs)
+    except PluginError as err:
+        return name, 0, f"failed to load: {err.message}"
+    return name, kins.kin_type(), kins.version()
 
 
 def _conversion(name: str, summary: str, values: str) -> click.Command:

@@ -46,6 +46,16 @@ def json_option(help: str) -> Callable[[F], F]:  # noqa: A002 - click's name
     return click.option("--json", "as_json", is_flag=True, help=help)
 
 
+def override_options(func: F) -> F:
+    """``--feed-override PCT`` and ``--rapid-override PCT``: the operator's knobs, which change the
+    planner's timing (passed as ``feed_override`` and ``rapid_override``)."""
+    func = click.option("--rapid-override", metavar="PCT", type=click.FloatRange(0, 100, min_open=True),
+                        default=100.0, help="Rapid override knob in percent, at most 100 (default 100).")(func)
+    return click.option("--feed-override", metavar="PCT", type=click.FloatRange(0, 1000, min_open=True),
+                        default=100.0,
+                        help="Feed override knob in percent (default 100; M48/M49/M50 in the job switch it).")(func)
+
+
 def job_argument(func: F) -> F:
     """``JOB``: the file to run, passed as ``job``."""
     return click.argument("job", metavar="JOB", type=EXISTING_FILE)(func)

@@ -6,7 +6,7 @@ from pathlib import Path
 import click
 
 from .base import Command, usage_error
-from .options import MachineOptions, job_argument, machine_options
+from .options import MachineOptions, job_argument, machine_options, override_options
 from .params import OUTPUT_FILE
 from .view_cmd import report
 
@@ -18,6 +18,7 @@ FORMATS = (".png", ".svg", ".pdf")
 @click.command("plot", cls=Command, short_help="Draw the toolpath of JOB as a PNG, SVG or PDF picture.")
 @job_argument
 @machine_options
+@override_options
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="Picture to write; .png, .svg or .pdf (default: JOB.png beside the job).")
 @click.option("--view", type=click.Choice(VIEWS), default="auto", show_default=True,
@@ -29,14 +30,15 @@ FORMATS = (".png", ".svg", ".pdf")
               help="Fit the picture to the whole job, to the part's bounding box, or to the machine's travel.")
 @click.option("--joints", is_flag=True,
               help="Plot the joint positions over time instead (default file: JOB-joints.png).")
-def plot(job: str, machine: MachineOptions, output: str | None, view: str, color: str, fit: str,
-         joints: bool) -> int:
+def plot(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
+         view: str, color: str, fit: str, joints: bool) -> int:
     """Run JOB and draw its toolpath: rapids dashed, feeds solid, arcs as arcs, the work zero, the
     part's bounding box and the machine limits. Prints the file written."""
     from ..plot.commands import plot_job
 
     if output and Path(output).suffix.lower() not in FORMATS:
         raise usage_error(f"--output {output}: the extension names the format, one of {', '.join(FORMATS)}")
-    written = plot_job(Path(job), machine.run_options(), Path(output) if output else None,
+    options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
+    written = plot_job(Path(job), options, Path(output) if output else None,
                        view=view, color=color, fit=fit, joints=joints)
     return report(written)

@@ -10,7 +10,7 @@ import click
 from ..errors import EXIT_OK
 from . import progress
 from .base import Command, usage_error
-from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options
+from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options, override_options
 from .params import OUTPUT_FILE, STDIN, STDOUT
 from .streams import STDIN_NAME, read_stdin
 
@@ -27,10 +27,7 @@ if TYPE_CHECKING:
 @click.option("--events", metavar="FILE", type=OUTPUT_FILE,
               help="Write every move (with its spindle speed) and event as JSON Lines (-: standard output).")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
-@click.option("--feed-override", metavar="PCT", type=click.FloatRange(0, 1000, min_open=True), default=100.0,
-              help="Feed override knob in percent (default 100; M48/M49/M50 in the job switch it).")
-@click.option("--rapid-override", metavar="PCT", type=click.FloatRange(0, 100, min_open=True), default=100.0,
-              help="Rapid override knob in percent, at most 100 (default 100).")
+@override_options
 @click.option("-q", "--quiet", is_flag=True,
               help="No progress line or summary on stderr (shown on a terminal).")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,

@@ -9,7 +9,7 @@ import click
 
 from ..errors import EXIT_OK, JobAborted
 from .base import Command
-from .options import MachineOptions, job_argument, machine_options
+from .options import MachineOptions, job_argument, machine_options, override_options
 from .params import OUTPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
@@ -35,6 +35,7 @@ class LineRange(click.ParamType):
 @click.command("view", cls=Command, short_help="Write an interactive 3D view of JOB as one HTML file.")
 @job_argument
 @machine_options
+@override_options
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="HTML file to write (default: JOB.html beside the job).")
 @click.option("--view", type=click.Choice(("auto", "top", "front", "side", "iso")), default="auto",
@@ -43,14 +44,15 @@ class LineRange(click.ParamType):
               help="Moves in the page before long runs of feed moves are thinned (default 25000).")
 @click.option("--lines", metavar="A:B", type=LineRange(),
               help="Only the moves made by job lines A to B (with the subs they call), in full.")
-def view(job: str, machine: MachineOptions, output: str | None, view: str, max_moves: int | None,
-         lines: tuple[int, int] | None) -> int:
+def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
+         view: str, max_moves: int | None, lines: tuple[int, int] | None) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
     from ..plot.commands import view_job
 
-    written = view_job(Path(job), machine.run_options(), Path(output) if output else None,
+    options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
+    written = view_job(Path(job), options, Path(output) if output else None,
                        max_moves=max_moves, lines=lines, view=view)
     return report(written)
 

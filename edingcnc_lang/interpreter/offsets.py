@@ -1,7 +1,8 @@
 """Coordinate systems and offsets: G54..G59.3, G92, G10, G28/G30, G53, G68, tool length."""
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
 
 from .. import nodes as n
 from .. import tables as t
@@ -64,6 +65,15 @@ class CoordinateSystems(MachineState):
             pose = rotate_about(pose, self._rotation_pivot(), -self.rotation[2])
         return list(pose)
 
+    @contextmanager
+    def machine_kept(self) -> Iterator[None]:
+        """Switching G51/G68 on, off or to new values never moves the machine: the current point
+        is re-expressed from where the machine is, through the new transform (as EdingCNC and
+        LinuxCNC derive the current point after any coordinate change)."""
+        machine = self.machine_frame(self.pos)
+        yield
+        self.pos = self.program_frame(machine)
+
     def _machine_move(self, kind: str, machine: list[float], feed: float = 0.0) -> None:
         """A move to a point given in machine coordinates."""
         self._move(kind, self.program_frame(machine), feed)
@@ -110,20 +120,21 @@ class CoordinateSystems(MachineState):
         self.params.set(t.COORD_SYSTEM, float(t.COORD_SYSTEM_CODES.index(code) + 1))
 
     def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
-        if code == G_69:
-            if self.rotation is not None:
-                self.canon.event(Event("rotation", self.path, self.line, {"on": False}))
-            self.rotation = None
-            self.params.set(t.G68_ACTIVE, 0.0)
-        else:
-            work = self.work_position()
-            px = words.get("X", work[0] / self.scale) * self.scale
-            py = words.get("Y", work[1] / self.scale) * self.scale
-            angle = words.get("R", 0.0)
-            self.rotation = (px, py, angle)
-            for offset, number in enumerate((1.0, px, py, 0.0, 0.0, 0.0, angle)):
-                self.params.set(t.G68_ACTIVE + offset, number)
-            self._sync_rotation(self.offset(), force=True)
+        with self.machine_kept():
+            if code == G_69:
+                if self.rotation is not None:
+                    self.canon.event(Event("rotation", self.path, self.line, {"on": False}))
+                self.rotation = None
+                self.params.set(t.G68_ACTIVE, 0.0)
+            else:
+                work = self.work_position()
+                px = words.get("X", work[0] / self.scale) * self.scale
+                py = words.get("Y", work[1] / self.scale) * self.scale
+                angle = words.get("R", 0.0)
+                self.rotation = (px, py, angle)
+                for offset, number in enumerate((1.0, px, py, 0.0, 0.0, 0.0, angle)):
+                    self.params.set(t.G68_ACTIVE + offset, number)
+                self._sync_rotation(self.offset(), force=True)
         self.modal["rotation"] = code
 
     def _rotation_pivot(self) -> tuple[float, float]:

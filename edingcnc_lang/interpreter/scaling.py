@@ -31,8 +31,9 @@ class Scaling(MachineState):
                 raise self.fail(f"G51 factor {format_value(factor)}: a factor of 0 would flatten the job", span)
         work = (words.get("I", 0.0) * self.scale, words.get("J", 0.0) * self.scale)
         offset = self.offset()
-        self.scaling = (*factors, 1.0)
-        self.scaling_center = (work[0] + offset[0], work[1] + offset[1])
+        with self.machine_kept():
+            self.scaling = (*factors, 1.0)
+            self.scaling_center = (work[0] + offset[0], work[1] + offset[1])
         for index, value in enumerate((1.0, work[0], work[1], 0.0, *self.scaling)):
             self.params.set(t.SCALING_ACTIVE + index, value)
         self.canon.event(Event("scaling", self.path, self.line,
@@ -40,6 +41,7 @@ class Scaling(MachineState):
 
     def scaling_off(self) -> None:
         if self.scaling is not None:
-            self.scaling = None
+            with self.machine_kept():
+                self.scaling = None
             self.params.set(t.SCALING_ACTIVE, 0.0)
             self.canon.event(Event("scaling", self.path, self.line, {"on": False}))

@@ -17,6 +17,9 @@ JOINT_LIMITS = 9
 KIN_LIMITS = 10
 USER1, USER2, USER3, USER4, USER5, USER6 = range(11, 17)
 
+SETTING = 100            # project decision: one [KINEMATICS] setting at load, see docs/kinematics.md
+SETTING_KEY_BYTES = 63   # the key, NUL-terminated in cData[0..63]; its value in dData[SETTING_VALUE]
+SETTING_VALUE = 8        # dData[8] (past cData): the value as a number, NaN when it is not one
 CONTROL_DATA_LEN = 12    # doubles in KIN_CONTROLDATA.dData
 USER_OUTPUT_LEN = 12     # at most this many user-output values
 

@@ -7,6 +7,7 @@ here unchanged apart from the build.
 from __future__ import annotations
 
 import ctypes
+import math
 import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -100,6 +101,23 @@ class CompiledKinematics(KinematicsPlugin):
             fn.restype, fn.argtypes = restype, argtypes
             self._fn[export] = fn
         self._lib = lib
+        self._pass_settings()
+
+    def _pass_settings(self) -> None:
+        """Hand each ``[KINEMATICS]`` setting to the library: control ID 100 with the lower-case key in
+        cData and the value as a number in dData[8] (NaN if it is not one); the answer is ignored, so a
+        plug-in that does not know the ID (it returns -1) is not bothered."""
+        for key, raw in self.settings.items():
+            name = key.encode("utf-8", "replace")
+            if len(name) > abi.SETTING_KEY_BYTES:
+                continue
+            block = KinControlData()
+            block.cData = name
+            try:
+                block.dData[abi.SETTING_VALUE] = float(raw.strip())
+            except ValueError:
+                block.dData[abi.SETTING_VALUE] = math.nan
+            self._fn["KinematicsControl"](abi.SETTING, ctypes.byref(block))
 
     def has_export(self, export: str) -> bool:
         """Whether an optional function such as ``KinematicsInverseMaxFeed`` is present."""

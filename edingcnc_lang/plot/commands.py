@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import EcncError, Location
+from ..outputs import ensure_parent
 from ..runner import RunOptions
 from .toolpath import Toolpath, record_job
 
@@ -45,9 +46,9 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
     """Run ``job`` and draw its toolpath (or with ``joints`` its joint positions over time) into ``out``."""
     from .render import picture_format, plot_toolpath, require_matplotlib
 
-    target = out or default_output(job, "-joints.png" if joints else ".png")
+    target = ensure_parent(out or default_output(job, "-joints.png" if joints else ".png"))
     require_matplotlib()
-    picture_format(target)  # a wrong extension is told before the job runs
+    picture_format(target)  # a wrong extension or a missing folder is told before the job runs
     path = record_job(job, options, samples=joints)
     if joints:
         from .joints import plot_joints
@@ -67,7 +68,7 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     from .views import auto_view
     from .viewer import MAX_MOVES, write_view
 
-    target = out or default_output(job, ".html")
+    target = ensure_parent(out or default_output(job, ".html"))
     path = record_job(job, options)
     if lines is not None:
         path = path.select_lines(*lines)

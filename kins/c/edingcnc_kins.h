@@ -63,6 +63,9 @@ typedef unsigned int CNC_KINEMATICS_INVERSE_FLAGS;
 #define KIN_CONTROL_ID_USER4 14
 #define KIN_CONTROL_ID_USER5 15
 #define KIN_CONTROL_ID_USER6 16
+/* edingcnc-lang: at load, once per [KINEMATICS] setting of cnc.ini: the lower-case key in cData
+   (NUL-terminated), its value as a number in dData[8] (NaN when it is not a number) */
+#define ECNC_KIN_CONTROL_ID_SETTING 100
 
 /* Kinematics types (KinematicsType(), also reported in #5150). */
 typedef int CNC_KINEMATICS_TYPE;

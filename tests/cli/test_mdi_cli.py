@@ -97,3 +97,11 @@ def test_a_dialog_at_the_prompt_asks_each_field(monkeypatch: pytest.MonkeyPatch,
 
     monkeypatch.setattr("builtins.input", interrupted)
     assert not ask_dialog("Setup", [DialogField("Width", 27, 10.0)]).ok
+
+
+def test_the_machine_line_says_where_the_machine_is_under_g51() -> None:
+    code, out, _ = mdi("G51 P2\nG1 X10 Y0 F600\n#5071\nG50\n#5071\n#5001\n")
+    assert code == 0
+    assert out == ["work    X10.0000 Y0.0000 Z0.0000 A0.0000 B0.0000 C0.0000",
+                   "machine X20.0000 Y0.0000 Z0.0000 A0.0000 B0.0000 C0.0000",
+                   "= 20", "= 20", "= 20"]

@@ -1,6 +1,7 @@
 """``ecnc plot`` and ``ecnc view`` as a user runs them: files written where expected, exit codes."""
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 import sys
@@ -91,3 +92,22 @@ def test_plot_as_a_real_process(tmp_path: Path) -> None:
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "s.png").exists()
+
+
+@pytest.mark.parametrize("command, name", [("plot", "p.png"), ("view", "v.html")])
+def test_a_missing_output_folder_is_told_before_the_job_runs(tmp_path: Path, command: str, name: str) -> None:
+    job = write(tmp_path, "square.nc", 'msg "the job started"\n' + SQUARE)
+    result = invoke(command, job, "-o", tmp_path / "missing" / name)
+    assert result.exit_code == 70 and "folder" in result.stderr and "does not exist" in result.stderr
+    assert "the job started" not in result.stderr
+
+
+def test_the_override_knobs_of_ecnc_run_change_the_viewers_estimate(tmp_path: Path) -> None:
+    job = write(tmp_path, "square.nc", SQUARE)
+    seconds = []
+    for args in ((), ("--feed-override", "50")):
+        out = tmp_path / f"v{len(args)}.html"
+        assert invoke("view", job, "-o", out, *args).exit_code == 0
+        seconds.append(float(re.search(r'"seconds":([0-9.e+-]+)', out.read_text(encoding="utf-8")).group(1)))
+    assert seconds[1] > 1.5 * seconds[0]  # the cut at half the feed takes about twice as long
+    assert invoke("plot", job, "--rapid-override", "150").exit_code == 2  # at most 100, as for ecnc run

@@ -41,5 +41,7 @@ def test_the_probe_host_sees_machine_coordinates() -> None:
 
 
 def test_the_pivot_follows_a_later_g92() -> None:
-    _, moves = run("G0 X5\nG68 X10 Y0 R90\nG92 X0\nG0 X20 Y0\n")  # pivot: work X10, machine X15 after G92
-    assert moves[-1] == pytest.approx((15.0, 10.0))
+    # G68 keeps the machine at X5 (work point (10, 5) in the turned frame); G92 X0 shifts the work by 10,
+    # so the pivot (work X10) is at machine X20, and work (20, 0) turns about it to (20, 10)
+    _, moves = run("G0 X5\nG68 X10 Y0 R90\nG92 X0\nG0 X20 Y0\n")
+    assert moves[-1] == pytest.approx((20.0, 10.0))

@@ -107,3 +107,59 @@ def test_a_compiled_plugin_named_by_bare_file_name_loads_from_the_current_folder
     code, out, err = run("inverse", "polar.so", "10", "0", "0", "0", "0", "-90")
     assert code == 0, err
     assert json.loads(out)["jy"] == pytest.approx(-10.0)
+
+
+GAIN_PLUGIN = r"""
+#include <math.h>
+#include <string.h>
+#include "edingcnc_kins.h"
+static double gain = 1.0;
+int KINS_CALL KinematicsControl(int id, KIN_CONTROLDATA *data)
+{
+    if (id == ECNC_KIN_CONTROL_ID_SETTING && strcmp(data->cData, "gain") == 0 && !isnan(data->dData[8])) {
+        gain = data->dData[8];
+        return 0;
+    }
+    return id >= CNC_KIN_CONTROL_ID_OPEN && id <= CNC_KIN_CONTROL_ID_ON ? 0 : -1;
+}
+int KINS_CALL KinematicsInverse(CNC_CART_DOUBLE p, CNC_JOINT_DOUBLE *j, const CNC_KINEMATICS_INVERSE_FLAGS *a,
+                                CNC_KINEMATICS_FORWARD_FLAGS *b, double t)
+{
+    j->jx = gain * p.x; j->jy = p.y; j->jz = p.z; j->ja = p.a; j->jb = p.b; j->jc = p.c;
+    return 0;
+}
+int KINS_CALL KinematicsForward(CNC_JOINT_DOUBLE j, CNC_CART_DOUBLE *p, const CNC_KINEMATICS_FORWARD_FLAGS *a,
+                                CNC_KINEMATICS_INVERSE_FLAGS *b, double t)
+{
+    p->x = j.jx / gain; p->y = j.jy; p->z = j.jz; p->a = j.ja; p->b = j.jb; p->c = j.jc;
+    return 0;
+}
+CNC_KINEMATICS_TYPE KINS_CALL KinematicsType(void) { return CNC_KINEMATICS_TYPE_CUSTOM_1; }
+char *KINS_CALL KinematicsVersion(void) { return "GAIN 1.0"; }
+"""
+
+
+def test_a_compiled_plugin_receives_its_ini_settings_at_load(tmp_path: Path) -> None:
+    if shutil.which("cc") is None:
+        pytest.skip("no C compiler (cc) on PATH")
+    source = tmp_path / "gain.c"
+    source.write_text(GAIN_PLUGIN)
+    assert run("build", str(source))[0] == 0, run("build", str(source))
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[KINEMATICS]\r\nkinematicsDLLName = gain.dll\r\nGain = 2.5\r\nnote = text\r\n")
+    code, out, err = run("inverse", "gain", "--ini", str(ini), "4", "1", "0")
+    assert code == 0, err
+    assert json.loads(out)["jx"] == 10.0
+
+
+def test_list_with_an_ini_adds_the_plugin_it_names(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text(DELTA_INI)
+    code, out, _ = run("list", "--ini", str(ini))
+    assert code == 0 and out.splitlines()[-1] == "deltakins.dll\t4\tEDINGCNC-LANG LINEAR DELTA 1.0"
+    ini.write_text("[KINEMATICS]\r\nkinematicsDLLName = missing.dll\r\n")
+    last = json.loads(run("list", "--json", "--ini", str(ini))[1])[-1]
+    assert (last["name"], last["type"]) == ("missing.dll", 0) and "failed to load" in last["version"]
+    ini.write_text("[TRAJECTORY]\r\n")
+    code, _, err = run("list", "--ini", str(ini))
+    assert code == 2 and "names no kinematics plug-in" in err
