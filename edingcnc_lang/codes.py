@@ -22,10 +22,18 @@ class Code:
     code: str
     severity: Severity
     summary: str
+    versions: frozenset[str] = frozenset()  # the controller versions it describes (empty: all)
 
 
 def _table(*rows: tuple[str, Severity, str]) -> dict[str, Code]:
-    return {code: Code(code, severity, summary) for code, severity, summary in rows}
+    return {code: Code(code, severity, summary, VERSIONS.get(code, frozenset()))
+            for code, severity, summary in rows}
+
+
+# Findings that describe one controller version's behaviour (ecnc lint --target).
+VERSIONS: dict[str, frozenset[str]] = {
+    "F600": frozenset({"5"}),  # G1290 "Macro does not specify unit" is EdingCNC 5's
+}
 
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -66,7 +74,7 @@ CODES: dict[str, Code] = _table(
     ("D402", E, "dlgmsg items out of order: a value where a label belongs (EdingCNC G1167)"),
     ("D403", E, "dlgmsg field index written with '#' (EdingCNC G1167)"),
     ("G500", E, "two words of one modal group on a line"),
-    ("G501", E, "G53 without G0 or G1 on the line"),
+    ("G501", E, "G53 without G0, G1 or G38.2 on the line"),
     ("G502", E, "G2/G3 arc without I, J, K or R"),
     ("G503", E, "feed rate 0 on a feed or probe move (EdingCNC G1516)"),
     ("G504", W, "G38.2 outside the simulation guard"),

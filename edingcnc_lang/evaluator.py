@@ -145,6 +145,8 @@ class Evaluator:
         return param_index(self.value(param.index), param.span)
 
     def _call(self, call: n.Call) -> float:
+        if call.name == "ATAN" and len(call.args) == 1:  # ATAN[x]: the plain arc tangent, in (-90, 90)
+            return math.degrees(math.atan(self.value(call.args[0])))
         if call.name == "ATAN":
             y, x = (self.value(a) for a in call.args)
             angle = math.degrees(math.atan2(y, x))

@@ -60,8 +60,9 @@ _CLOSERS = {"endsub": "EndSub", "endif": "EndIf", "endwhile": "EndWhile", "else"
 _KEYWORDS = frozenset({
     "sub", "endsub", "gosub", "if", "then", "else", "endif", "while", "endwhile", "msg", "warnmsg", "errmsg",
     "logmsg", "dlgmsg", "logfile", "home", "hometandem", "tanknife", "homeisestop", "tcaguard", "zhc",
-    "laserengrave", "kin", "preparelindeltahome", "zhcinitex", "zhcinit", "zhcaddpoint", "zhcs",
-    "gettoolinfo", "modbus", "getjobdistance", "exec"})
+    "laserengrave", "kin", "preparelindeltahome", "zhcinitex", "zhcinit", "zhcaddpoint", "zhccheck", "zhcs",
+    "zhcl", "gettoolinfo", "modbus", "getjobdistance", "getheightcontrolvact", "getheightcontrolvset",
+    "service", "exec"})
 # The keywords handled here; a line starting with another one goes to Lark untokenized.
 _HANDLED = frozenset({*_CLOSERS, *_MESSAGES, "sub", "gosub", "home", "hometandem", "logfile", "if", "while",
                       "dlgmsg"})
@@ -136,10 +137,9 @@ class _Line:
         self.i += 2
         first = self.expr()[0]
         end = self.expect("]")
-        if name != "ATAN":
-            return n.Call(name, (first,), self.span(col, end)), col, end
-        self.expect("/")
-        self.expect("[")
+        if name != "ATAN" or self.tokens[self.i][0] != "/" or self.tokens[self.i + 1][0] != "[":
+            return n.Call(name, (first,), self.span(col, end)), col, end  # ATAN[x]/2 divides: one operand
+        self.i += 2
         second = self.expr()[0]
         end = self.expect("]")
         return n.Call(name, (first, second), self.span(col, end)), col, end

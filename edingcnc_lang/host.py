@@ -6,8 +6,10 @@ target).  Nothing here is global: each run gets its own Host.
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from datetime import datetime
 
 from .canon import Pose
 
@@ -45,6 +47,8 @@ class DialogAnswer:
                 values[int(name.strip()[1:])] = float(value)
             except ValueError:
                 raise ValueError(f"answer {text!r}: field {item!r} is not #N=V") from None
+            if not math.isfinite(values[int(name.strip()[1:])]):
+                raise ValueError(f"answer {text!r}: field {item!r} is not a finite number")
         return cls(head == "ok", values)
 
 
@@ -62,6 +66,7 @@ class Host:
     read_input: InputCallback | None = None   # input port -> 0/1 (M56, #5068)
     probe: ProbeCallback | None = None        # (start, target) machine poses -> trip point or None (no contact)
     message: MessageCallback | None = None    # (kind, text, path, line) as they happen
+    clock: Callable[[], datetime] | None = None  # the time %d shows in messages (default: now)
 
 
 def scripted_dialogs(answers: Sequence[DialogAnswer]) -> DialogCallback:

@@ -133,6 +133,8 @@ class IniFile:
             return default
         if not _NUMBER.fullmatch(value.text):
             raise self._bad(section, key, value, "a number")
+        if not math.isfinite(float(value.text)):  # 1e999 overflows to infinity
+            raise self._bad(section, key, value, "a number within the range of a double")
         return float(value.text)
 
     def get_int(self, section: str, key: str, default: int) -> int:

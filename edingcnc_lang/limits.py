@@ -45,6 +45,11 @@ _NOT_CODE = re.compile(r'"[^"\n]*"|\([^)\n]*\)|;.*')
 # is a million steps), and a runaway While [1] stops in a minute or two with a clear error.
 DEFAULT_MAX_STEPS = 100_000_000
 
+# Samples of one move when a run samples the trajectory (kinematics, --samples, the planner):
+# each needs a few hundred bytes while the move is checked, so this bounds the memory; at the
+# usual 200 Hz it is a move of 83 minutes.
+MAX_MOVE_SAMPLES = 1_000_000
+
 Problem = tuple[str, str, int]  # code, message, column
 
 

@@ -374,6 +374,8 @@ class MotionStage:
         """
         import numpy as np
 
+        from .kinematics.sampling import TooManySamples
+
         dt = self.config.interpolation_time
         geo = geometry_of(move, self.config.full_circle_theta_epsilon)
         limits = self._limits_for(move)
@@ -386,7 +388,10 @@ class MotionStage:
         speed = feed if not fastest else _first_guess(geo, limits.velocity)
         joint_dynamics = None
         for attempt in range(PLAN_PASSES + 1):
-            t, pos = geo.sample(speed, dt)
+            try:
+                t, pos = geo.sample(speed, dt)
+            except TooManySamples as err:
+                raise MachineError(str(err), where) from None
             factor = dynamics(0.0, start, t, pos, dt).speed_factor(limits.velocity, limits.acceleration)
             joints = self._joints_of(pos, where) if not self._identity() else pos.copy()
             if joint_timed:

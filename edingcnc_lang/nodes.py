@@ -154,7 +154,14 @@ class PlainRun:
         return Span(self.path, first, 1, last, len(self.lines[-1][1]) + 1)
 
 
-MessageItem = Union[str, Expr]
+@dataclass(frozen=True, slots=True)
+class Stamp:
+    """``%d`` in a message: the date and time when the message is shown."""
+
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
+MessageItem = Union[str, Expr, Stamp]
 
 
 @dataclass(frozen=True, slots=True)
@@ -269,8 +276,22 @@ class Sub:
     end_span: Span = field(default=NO_SPAN, compare=False)
 
 
+@dataclass(frozen=True, slots=True)
+class BadLine:
+    """A macro-file line that does not parse, kept in place: an error only if a run reaches it.
+
+    The controller executes macro files line by line, so a line it never reaches cannot stop
+    it; a tolerant load keeps such lines as BadLine and warns once (see runner.load_macro).
+    """
+
+    code: str
+    message: str
+    col: int
+    span: Span = field(default=NO_SPAN, compare=False)
+
+
 Stmt = Union[Block, PlainBlock, PlainRun, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,
-             Command, GoSub, If, While, Sub]
+             Command, GoSub, If, While, Sub, BadLine]
 
 
 @dataclass(frozen=True, slots=True)

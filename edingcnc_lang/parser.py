@@ -3,38 +3,40 @@
 Each line is one statement, so the grammar parses a single line at a time and
 this module assembles the multi-line blocks (Sub, If, While) from the stream.
 Plain word lines (most CAM output) take a regular-expression fast path that
-builds exactly the Block the grammar would.  Lark trees never leave this module.
+builds exactly the Block the grammar would.  Lark trees never leave this module
+and ``tree_builder.py``, which turns them into AST nodes.
 """
 from __future__ import annotations
 
-import math
 import os
 import re
 from bisect import bisect_left
 from array import array
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from itertools import islice
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 
 from . import nodes as n
+from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
+from .dialogs import SYNTAX_CODES, dialog_fields
 from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
 from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, line_problem
 from .markers import Close, LineResult, Open
 from .prose import PROSE_MESSAGE, looks_like_prose
 from .source import iter_file_lines, iter_text_lines
+from .tree_builder import Builder as _Builder, LineError as _LineError, make_block as _make_block
 
 if TYPE_CHECKING:  # lark is imported when a line first needs the grammar (start-up time)
-    from lark import Lark, Token, Tree
+    from lark import Lark
     from lark.exceptions import UnexpectedInput
 
 GRAMMAR = Path(__file__).resolve().parent / "grammar" / "macro.lark"
 
-KIN_MODES = frozenset({"ON", "OFF", "CTRL", "X2A", "X2XA", "Y2A", "Y2YA", "Z2C", "Z2ZC", "Y2YAZ2ZC"})
 UNITS = frozenset({"mm", "inch"})
 
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
@@ -52,204 +54,6 @@ def _lark() -> Lark:
 
     return Lark.open(str(GRAMMAR), parser="lalr", lexer="contextual",
                      propagate_positions=True, maybe_placeholders=False, cache=True)
-
-
-# --------------------------------------------------------------------------- tree -> AST
-
-def _strip(name: str) -> str:
-    return name.rsplit("__", 1)[-1]
-
-
-class _Builder:
-    """Converts the Lark tree of one line into AST nodes with spans."""
-
-    def __init__(self, path: str, line: int) -> None:
-        self.path = path
-        self.line = line
-
-    def span(self, item: Tree | Token) -> n.Span:
-        if isinstance(item, str):
-            return n.Span(self.path, self.line, item.column or 0, self.line, item.end_column or 0)
-        meta = item.meta
-        if getattr(meta, "empty", True):
-            return n.Span(self.path, self.line, 0, self.line, 0)
-        return n.Span(self.path, self.line, meta.column, self.line, meta.end_column)
-
-    # expressions ------------------------------------------------------------
-    def expr(self, item: Tree | Token) -> n.Expr:
-        if isinstance(item, str):  # a bare NUMBER inlined by '?' rules
-            return n.Number(self._finite(item), self.span(item))
-        kind = _strip(item.data)
-        handler = self._EXPR[kind]
-        return handler(self, item)
-
-    def _number(self, tree: Tree) -> n.Expr:
-        return n.Number(self._finite(tree.children[0]), self.span(tree))
-
-    def _finite(self, token: Token) -> float:
-        value = float(token)
-        if math.isinf(value):
-            raise _LineError("E100", f"the number {str(token)[:12]}... is too large", token.column or 0)
-        return value
-
-    def _param(self, tree: Tree) -> n.Expr:
-        return n.Param(self.expr(tree.children[0]), self.span(tree))
-
-    def _unary(self, tree: Tree) -> n.Expr:
-        op, operand = str(tree.children[0]), self.expr(tree.children[1])
-        if isinstance(operand, n.Number):  # fold signs into literals: X-5 is Number(-5)
-            value = -operand.value if op == "-" else operand.value
-            return n.Number(value, self.span(tree))
-        return n.Unary(op, operand, self.span(tree))
-
-    def _binary(self, tree: Tree) -> n.Expr:
-        left, op, right = tree.children
-        return n.Binary(str(op).upper(), self.expr(left), self.expr(right), self.span(tree))
-
-    def _compare(self, tree: Tree) -> n.Expr:
-        left, op, right = tree.children
-        return n.Compare(_COMPARE_OPS[str(op).upper()], self.expr(left), self.expr(right),
-                         self.span(tree))
-
-    def _call(self, tree: Tree) -> n.Expr:
-        name, arg = tree.children
-        return n.Call(str(name).upper(), (self.expr(arg),), self.span(tree))
-
-    def _atan(self, tree: Tree) -> n.Expr:
-        _, y, _slash, x = tree.children
-        return n.Call("ATAN", (self.expr(y), self.expr(x)), self.span(tree))
-
-    _EXPR: dict[str, Callable[["_Builder", Tree], n.Expr]] = {
-        "number": _number, "param": _param, "unary": _unary, "binary": _binary,
-        "compare": _compare, "call": _call, "atan": _atan,
-    }
-
-    # statements -------------------------------------------------------------
-    def statement(self, tree: Tree) -> LineResult:
-        if not tree.children:
-            return None
-        stmt = tree.children[0]
-        return self._STMT[_strip(stmt.data)](self, stmt)
-
-    def _block(self, tree: Tree) -> n.Stmt:
-        words: list[n.Word] = []
-        assigns: list[n.Assign] = []
-        message: str | None = None
-        block_delete = False
-        for child in tree.children:
-            if isinstance(child, str):
-                if _strip(child.type) == "SLASH":
-                    block_delete = True
-                else:  # MSG_COMMENT: "(MSG text)"
-                    message = _MSG_TEXT.match(str(child)).group(1)  # type: ignore[union-attr]
-            elif _strip(child.data) == "word":
-                letter, value = child.children
-                words.append(n.Word(str(letter).upper(), self.expr(value), self.span(child)))
-            else:
-                target, value = child.children
-                param = self.expr(target)
-                assert isinstance(param, n.Param)
-                assigns.append(n.Assign(param, self.expr(value), self.span(child)))
-        return _make_block(words, assigns, message, block_delete, self.span(tree))
-
-    def _sub_head(self, tree: Tree) -> LineResult:
-        return Open("Sub", self.span(tree), name=str(tree.children[1]))
-
-    def _cond(self, tree: Tree) -> tuple[n.Expr, int]:
-        expr, *extra = tree.children
-        return self.expr(expr), len(extra)
-
-    def _if_head(self, tree: Tree) -> LineResult:
-        cond, extra = self._cond(tree.children[1])
-        return Open("If", self.span(tree), cond=cond, extra=extra)
-
-    def _while_head(self, tree: Tree) -> LineResult:
-        cond, extra = self._cond(tree.children[1])
-        return Open("While", self.span(tree), cond=cond, extra=extra)
-
-    def _close(kind: str) -> Callable[["_Builder", Tree], LineResult]:  # type: ignore[misc]
-        def handler(self: "_Builder", tree: Tree) -> LineResult:
-            return Close(kind, self.span(tree))
-        return handler
-
-    def _gosub(self, tree: Tree) -> n.Stmt:
-        return n.GoSub(str(tree.children[1]), self.span(tree))
-
-    def _items(self, children: list[Tree | Token]) -> tuple[n.MessageItem, ...]:
-        return tuple(str(c)[1:-1] if isinstance(c, str) and _strip(c.type) == "STRING"
-                     else self.expr(c) for c in children)
-
-    def _message(self, tree: Tree) -> n.Stmt:
-        kind = str(tree.children[0]).lower()
-        return n.Message(kind, self._items(tree.children[1:]), self.span(tree))
-
-    def _dialog(self, tree: Tree) -> n.Stmt:
-        return n.Dialog(self._items(tree.children[1:]), self.span(tree))
-
-    def _logfile(self, tree: Tree) -> n.Stmt:
-        name_tok = tree.children[1]
-        name = str(name_tok)
-        if _strip(name_tok.type) == "STRING":
-            name = name[1:-1]
-        mode = self.expr(tree.children[2]) if len(tree.children) > 2 else None
-        return n.LogFile(name, mode, self.span(tree))
-
-    def _home(self, tree: Tree) -> n.Stmt:
-        keyword, axis = tree.children
-        return n.Home(str(axis).upper(), str(keyword).lower() == "hometandem", self.span(tree))
-
-    def _switch(self, tree: Tree) -> n.Stmt:
-        name, state = tree.children
-        return n.Switch(str(name).lower(), str(state).lower() == "on", self.span(tree))
-
-    def _kin(self, tree: Tree) -> n.Stmt:
-        mode_tok = tree.children[1]
-        mode = str(mode_tok).upper()
-        if mode not in KIN_MODES:
-            raise _LineError("E107", f"unknown KIN mode '{mode_tok}' (expected ON, OFF, CTRL or one of "
-                             "X2A X2XA Y2A Y2YA Z2C Z2ZC Y2YAZ2ZC)", mode_tok.column)
-        args = tuple(self.expr(c) for c in tree.children[2:])
-        if args and mode != "CTRL":
-            raise _LineError("E100", f"KIN {mode} takes no arguments", self.span(tree.children[2]).col)
-        if mode == "CTRL" and not 1 <= len(args) <= 7:
-            raise _LineError("E100", "KIN CTRL needs a control id and up to 6 values", mode_tok.column)
-        return n.Kin(mode, args, self.span(tree))
-
-    def _prepare_delta(self, tree: Tree) -> n.Stmt:
-        vel = self.expr(tree.children[1]) if len(tree.children) > 1 else None
-        return n.PrepareLinDeltaHome(vel, self.span(tree))
-
-    def _command(self, tree: Tree) -> n.Stmt:
-        args = str(tree.children[1]).strip() if len(tree.children) > 1 else ""
-        return n.Command(str(tree.children[0]).lower(), args, self.span(tree))
-
-    def _percent(self, tree: Tree) -> LineResult:
-        return None
-
-    _STMT: dict[str, Callable[["_Builder", Tree], LineResult]] = {
-        "block": _block, "sub_head": _sub_head, "endsub": _close("EndSub"),
-        "if_head": _if_head, "else_": _close("Else"), "endif": _close("EndIf"),
-        "while_head": _while_head, "endwhile": _close("EndWhile"), "gosub": _gosub,
-        "message": _message, "dialog": _dialog, "logfile": _logfile, "home": _home,
-        "switch": _switch, "kin": _kin, "prepare_delta": _prepare_delta,
-        "command": _command, "percent": _percent,
-    }
-    del _close
-
-
-_MSG_TEXT = re.compile(r"\(\s*msg\b[ \t,]*([^)]*)\)", re.IGNORECASE)
-_COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<": "<", "LT": "<",
-                ">": ">", "GT": ">", "<=": "<=", "LE": "<=", ">=": ">=", "GE": ">="}
-
-
-def _make_block(words: list[n.Word], assigns: list[n.Assign], message: str | None,
-                block_delete: bool, span: n.Span) -> n.Block:
-    """Build a Block, moving a literal N word into ``line_number``."""
-    line_number = None
-    if words and words[0].letter == "N" and isinstance(words[0].value, n.Number):
-        line_number = int(words[0].value.value)
-        words = words[1:]
-    return n.Block(tuple(words), tuple(assigns), message, line_number, block_delete, span)
 
 
 def _word_matches(text: str) -> list[re.Match[str]]:
@@ -325,14 +129,6 @@ def is_fast_line(text: str) -> bool:
 
 # --------------------------------------------------------------------------- errors
 
-class _LineError(Exception):
-    """A problem found while converting one line (code, message, column)."""
-
-    def __init__(self, code: str, message: str, col: int) -> None:
-        super().__init__(message)
-        self.code, self.message, self.col = code, message, col
-
-
 # What is skipped whole while scanning delimiters: (closing character, code, message if it is missing).
 _ENCLOSED = {
     '"': ('"', "E104", "unterminated string: the '\"' at column {col} has no closing '\"'"),
@@ -369,6 +165,9 @@ def _scan_delimiters(text: str) -> _LineError | None:
 
 _WORD_BEFORE = re.compile(r"([A-Za-z])[ \t]*[^\sA-Za-z;(]*$")
 _CONDITION_LINE = re.compile(r"^\s*(if|while)(?![a-z0-9_])", re.IGNORECASE)
+# In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
+# such as "If the probe does not trip, ..." must not open a block.
+_TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
 
 
 def _explain(text: str, exc: UnexpectedInput) -> _LineError:
@@ -498,8 +297,16 @@ class StatementReader:
     """
 
     def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree",
-                 non_plain: Sequence[int] | None = None) -> None:
+                 non_plain: Sequence[int] | None = None, tolerant: bool = False,
+                 check_dialogs: bool | None = None) -> None:
         self.path = path
+        # A tolerant read (macro files) keeps a line that does not parse as a BadLine statement and
+        # lists it in ``warnings``: the controller only fails on the lines it executes.
+        self.tolerant = tolerant
+        self.warnings: list[Diagnostic] = []
+        # The dlgmsg shapes the controller calls a syntax error although the grammar takes them (G1167):
+        # a job's check reports them before anything moves.
+        self.check_dialogs = mode == "check" if check_dialogs is None else check_dialogs
         # How plain word lines (most of a CAM job) are delivered: "tree" as Block nodes like any
         # line; "check" not at all at the top level (checking keeps nothing); "run" as PlainRun
         # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute;
@@ -564,11 +371,7 @@ class StatementReader:
         try:
             result = parse_line(text, path, lineno)
         except _LineError as err:
-            self._error(err.code, err.message, lineno, err.col, text)
-            opener = _CONDITION_LINE.match(text)
-            if opener:  # keep the block structure so its EndIf/EndWhile still matches
-                span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
-                self._push(stack, Open(opener.group(1).capitalize(), span, cond=n.Number(0.0)), text)
+            yield from self._bad_line(stack, err, text, lineno)
             return
         if result is None:
             return
@@ -576,6 +379,8 @@ class StatementReader:
             if isinstance(result, Close) and result.kind != "Else":
                 self._skipped -= 1
             return
+        if self.check_dialogs and isinstance(result, n.Dialog):
+            self._check_dialog(result, text)
         if isinstance(result, Open):
             if result.kind == "Sub" and stack and not self._skipped:
                 self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
@@ -590,6 +395,36 @@ class StatementReader:
             stack[-1].add(result)
         else:
             yield result
+
+    def _bad_line(self, stack: list[_Frame], err: _LineError, text: str, lineno: int) -> Iterator[n.Stmt]:
+        """A line that does not parse: an error, or (tolerant) a warning and a BadLine in its place."""
+        path = self.path
+        opener = (_TOLERANT_CONDITION if self.tolerant else _CONDITION_LINE).match(text)
+        if self.tolerant:
+            self.warnings.append(replace(Diagnostic.make(err.code, err.message, path, lineno, err.col, text),
+                                         severity=Severity.WARNING))
+            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1))
+            if opener is None and stack:
+                stack[-1].add(bad)
+            elif opener is None:
+                yield bad
+        else:
+            self._error(err.code, err.message, lineno, err.col, text)
+        if opener:  # keep the block structure so its EndIf/EndWhile still matches
+            span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
+            head = Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0))
+            self._push(stack, head, text)
+            if self.tolerant and stack and stack[-1].opener is head:  # reaching the head is the error
+                stack[-1].add(n.BadLine(err.code, err.message, err.col, span))
+
+    def _check_dialog(self, dialog: n.Dialog, text: str) -> None:
+        """Report the dlgmsg shapes the controller refuses when it reads the line (G1167)."""
+        for problem in dialog_fields(dialog)[1]:
+            if problem.code in SYNTAX_CODES:
+                item = problem.item
+                col = (text.find(f'"{item}"') + 1 or dialog.span.col) if isinstance(item, str) \
+                    else (item.span.col if item is not None else dialog.span.col)
+                self._error(problem.code, problem.message, dialog.span.line, col, text)
 
     def _push(self, stack: list[_Frame], opener: Open, text: str) -> None:
         """Open a block; one nested deeper than MAX_BLOCK_DEPTH is reported and skipped to its end."""
@@ -666,9 +501,10 @@ class StatementReader:
 # --------------------------------------------------------------------------- whole files
 
 def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
-                    non_plain: Sequence[int] | None = None) -> StatementReader:
+                    non_plain: Sequence[int] | None = None, tolerant: bool = False) -> StatementReader:
     """A streaming reader over a file (statements are parsed as you iterate); see StatementReader."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain)
+    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain,
+                           tolerant=tolerant)
 
 
 @dataclass(frozen=True)

@@ -50,7 +50,10 @@ def _(expr: n.Unary) -> str:
 
 @expr_text.register
 def _(expr: n.Binary) -> str:
-    return f"{operand_text(expr.left)} {expr.op} {operand_text(expr.right)}"
+    left = operand_text(expr.left)
+    if expr.op == "/" and isinstance(expr.left, n.Call) and len(expr.left.args) == 1:
+        left = f"[{left}]"  # ATAN[x] / [y] would read as the two-operand ATAN
+    return f"{left} {expr.op} {operand_text(expr.right)}"
 
 
 @expr_text.register
@@ -84,7 +87,8 @@ def value_text(expr: n.Expr) -> str:
 
 
 def items_text(items: tuple[n.MessageItem, ...]) -> str:
-    return " ".join(f'"{item}"' if isinstance(item, str) else value_text(item) for item in items)
+    return " ".join(f'"{item}"' if isinstance(item, str) else "%d" if isinstance(item, n.Stamp)
+                    else value_text(item) for item in items)
 
 
 @singledispatch

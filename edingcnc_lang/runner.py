@@ -24,12 +24,14 @@ from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage, PlannerStage
 from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
+from .diagnostics import Diagnostic
 from .limits import DEFAULT_MAX_STEPS
-from .parser import check_file, parse_file, parse_text, read_statements
+from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
 from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
 from .planner.untimed import Untimed
+from .source import iter_text_lines
 from .stages import STAGES, Pipeline
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
@@ -51,6 +53,7 @@ class RunResult:
     ended_by: str = "end of file"   # "M2", "M30" or "end of file"
     error: str | None = None  # the formatted message of the error that stopped the run
     error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
+    warnings: list[Diagnostic] = field(default_factory=list)  # macro lines that do not parse (tolerant load)
     spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
     # how long the run took, as planned, and the limits report (docs/planner.md); None when not planned
     estimate: Estimate | None = field(default_factory=Estimate)
@@ -74,6 +77,7 @@ class RunResult:
             "estimate": self.estimate.to_json() if self.estimate is not None else None,
             "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
+            **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
         }
 
 
@@ -96,6 +100,8 @@ class RunOptions:
     save_vars: bool = False
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
+    strict: bool = False  # macro lines that do not parse are errors at load, not warnings
+    on_warning: Callable[[Diagnostic], None] | None = None  # each load warning, once, as it is found
     on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
     feed_override: float = 100.0   # percent
     rapid_override: float = 100.0  # percent, at most 100
@@ -114,6 +120,7 @@ class Run:
 
     def __init__(self, options: RunOptions) -> None:
         self.options = options
+        self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         self.kinematics = self._load_kinematics()
         overrides = Overrides(options.feed_override, options.rapid_override)
@@ -167,9 +174,23 @@ class Run:
         user = opts.user_macro or cfg.user_macro_file
         return [p for p in (user, main) if p is not None]
 
+    def load_macro(self, path: Path) -> n.Program:
+        """A macro file as the controller loads it: lines that do not parse wait (as BadLine) until
+        a run reaches them, each reported once as a warning; ``strict`` makes them errors here."""
+        if self.options.strict:
+            return parse_file(path)
+        reader = read_statements(path, tolerant=True)
+        body = tuple(reader)
+        reader.raise_errors()  # block structure (Sub/EndSub, If/EndIf) must still be right
+        for warning in reader.warnings:
+            self.warnings.append(warning)
+            if self.options.on_warning:
+                self.options.on_warning(warning)
+        return n.Program(reader.path, body, reader.unit)
+
     def load_macros(self) -> list[tuple[Path, n.Program]]:
-        """The macro files, parsed, in lookup order."""
-        return [(path, parse_file(path)) for path in self.macro_files()]
+        """The macro files, loaded, in lookup order."""
+        return [(path, self.load_macro(path)) for path in self.macro_files()]
 
     def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
         """What happens before a job's first line (and before an MDI session's): the macro files'
@@ -178,7 +199,8 @@ class Run:
         for _path, program in macros:
             interp.define_subs(program.subs.values())
         for _path, program in reversed(macros):  # top-level statements of macro files run once at load
-            interp.run(program.body)
+            # (prose between subs is never executed: the controller only runs a macro file's subs)
+            interp.run(stmt for stmt in program.body if not isinstance(stmt, n.BadLine))
         if self.config.initial_string:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
 
@@ -189,7 +211,9 @@ class Run:
                              checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
-        program = parse_text(text, path)
+        reader = StatementReader(iter_text_lines(text), path, check_dialogs=True)
+        program = n.Program(path, tuple(reader), reader.unit)
+        reader.raise_errors()
         macros = self.load_macros()
         return self._execute(lambda: program.body, program.subs, macros)
 
@@ -256,6 +280,7 @@ class Run:
             ended_by=interp.ended_by,
             error=error.format() if error else None,
             error_record=error.to_json() if error else None,
+            warnings=list(self.warnings),
             spindle=interp.spindle_state(),
             estimate=self.planner.estimate if self.planner else None,
             limits=self.planner.limits.to_json() if self.planner else None,
@@ -266,7 +291,11 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
     """A failed write, naming the file: the error's own, else the output files the run writes.
 
     A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
+    A closed pipe (``ecnc run --trace - | head``) is no failure of the run: it is raised again, so
+    the CLI ends quietly with exit 1 as after any closed pipe.
     """
+    if isinstance(err, BrokenPipeError):
+        raise err
     names = ["standard output" if str(p) == "-" else str(p) for p in outputs if p is not None]
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 

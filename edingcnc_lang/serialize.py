@@ -1,8 +1,10 @@
 """AST -> JSON-ready data, for ``ecnc parse --json`` and the golden AST dumps."""
 from __future__ import annotations
 
+import json
+from collections.abc import Callable, Iterable
 from dataclasses import fields, is_dataclass
-from typing import Any
+from typing import Any, TextIO
 
 from . import nodes as n
 
@@ -25,3 +27,19 @@ def to_data(node: Any, with_spans: bool = True) -> Any:
     if isinstance(node, tuple):
         return [to_data(item, with_spans) for item in node]
     return node
+
+
+def write_program(path: str, body: Iterable[n.Stmt], unit: Callable[[], str | None], out: TextIO,
+                  with_spans: bool = True) -> None:
+    """Write ``json.dumps(to_data(Program(path, body, unit())), indent=1)`` statement by statement.
+
+    ``body`` may be a streaming reader, so memory stays that of one statement; ``unit`` is asked
+    after it, as a reader knows the ``@unit`` line only once it has read it.
+    """
+    out.write('{\n "type": "Program",\n "path": ' + json.dumps(path) + ',\n "body": [')
+    first = True
+    for stmt in body:
+        out.write(("\n  " if first else ",\n  ") + json.dumps(to_data(stmt, with_spans), indent=1).replace("\n", "\n  "))
+        first = False
+    out.write("]" if first else "\n ]")
+    out.write(',\n "unit": ' + json.dumps(unit()) + "\n}\n")

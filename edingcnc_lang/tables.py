@@ -61,6 +61,11 @@ UNKNOWN_G_HINTS: Mapping[int, str] = MappingProxyType({
                  "when cnc.ini sets [INTERPRETER] diameterProgramming = 1",
     code_key(8): "LinuxCNC's radius mode is not an EdingCNC code; a lathe takes X as a radius "
                  "when cnc.ini sets [INTERPRETER] diameterProgramming = 0",
+    code_key(90.1): "LinuxCNC's absolute arc centres; EdingCNC sets this for all arcs with cnc.ini "
+                    "[INTERPRETER] absoluteCenterCoords = 1",
+    code_key(91.1): "LinuxCNC's incremental arc centres; EdingCNC's default (absoluteCenterCoords = 0)",
+    code_key(15): "polar coordinates of other controls are not an EdingCNC code",
+    code_key(16): "polar coordinates of other controls are not an EdingCNC code",
 })
 
 # G codes that take the axis words of their line (so a motion on the same line may not).
@@ -111,6 +116,7 @@ COORD_SYSTEM = 5220        # 1..9
 COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + i
 COORD_STRIDE = 20
 SIMULATION = 5380
+SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..3 alternate spindles (M91..M93)
 RENDERING = 5397
 DIALOG_RESULT = 5398
 IO_RESULT = 5399

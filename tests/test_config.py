@@ -163,6 +163,8 @@ def test_integral_float_is_accepted_as_int(tmp_path: Path) -> None:
     ("[TRAJECTORY]\n\ninterpolationTime = 0,005\n", 3, "interpolationTime in [TRAJECTORY]: expected a number"),
     ("[TOOL_4]\norientation = 1.5\n", 2, "orientation in [TOOL_4]: expected a whole number, got '1.5'"),
     ("[VARIABLES]\n#4000 = 0.0\n#4001 = nan\n", 3, "#4001 in [VARIABLES]: expected a number"),
+    ("[VARIABLES]\n#4002 = 1e999\n", 2, "#4002 in [VARIABLES]: expected a number within the range"),
+    ("[JOINT_0]\nmaxVelocity = -1e400\n", 2, "maxVelocity in [JOINT_0]: expected a number within the range"),
 ])
 def test_bad_number_is_located(tmp_path: Path, text: str, line: int, fragment: str) -> None:
     path = write(tmp_path, text, eol="\r\n")

@@ -35,6 +35,9 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
               help="Output format.")
 @click.option("--select", metavar="CODES", type=LINT_CODES, default=(), help="Only these codes or prefixes (E,S208,G5).")
 @click.option("--ignore", metavar="CODES", type=LINT_CODES, default=(), help="Leave out these codes or prefixes.")
+@click.option("--target", metavar="VERSION", type=click.Choice(("4.03", "5")),
+              help="Controller version the findings describe (default: target under [tool.ecnc] in "
+                   "ecnc.toml or pyproject.toml, else the --ini's version line, else 5).")
 @click.option("--no-source", is_flag=True, help="Text format: leave out the source line and caret.")
 @click.option("--list-codes", "show_codes", is_flag=True, help="Print every code with its severity and summary.")
 @click.option("--explain", metavar="CODE", type=LINT_CODE, help="Print the long explanation of CODE (as ecnc help CODE).")
@@ -42,8 +45,8 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
 @click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
               help="Check the files on N processes (0: one per CPU); see docs/lint.md.")
 def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini: str | None, fmt: str,
-         select: tuple[str, ...], ignore: tuple[str, ...], no_source: bool, show_codes: bool,
-         explain: str | None, quiet: bool, jobs: int) -> int:
+         select: tuple[str, ...], ignore: tuple[str, ...], target: str | None, no_source: bool,
+         show_codes: bool, explain: str | None, quiet: bool, jobs: int) -> int:
     """Check PATHs (files, or folders of *.cnc *.nc *.ngc *.tap *.txt); exit 1 if anything is found.
 
     PATH - reads a job from standard input (its macro files: --macro, --user-macro).
@@ -62,7 +65,7 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
         return EXIT_OK
     if not paths and not ini:
         raise usage_error("give at least one file or folder to lint")
-    options = LintOptions(macro, user_macro, ini, select, ignore)
+    options = LintOptions(macro, user_macro, ini, select, ignore, target)
     show = progress.wanted(quiet)
     count = len(expand(p for p in paths if p != STDIN)) if show else 0
     with whole_trees(), progress.Progress(lambda: (0, 0, f"checking {count:,} files"), show):

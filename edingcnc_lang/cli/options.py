@@ -2,7 +2,7 @@
 
 ``@machine_options`` gives a command the virtual machine a job runs on (``--ini``, ``--macro``,
 ``--user-macro``, ``--answer``, ``--max-steps``, ``--log-dir``, ``--allow-exec``,
-``--no-simulation``, ``--block-delete``) and hands the command one ``machine: MachineOptions``
+``--no-simulation``, ``--block-delete``, ``--strict``, ``--probe-surface``) and hands the command one ``machine: MachineOptions``
 argument, which builds the ``RunOptions`` of the Python API.  See docs/cli.md, "Adding a command".
 """
 from __future__ import annotations
@@ -19,6 +19,7 @@ import click
 from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
+    from ..diagnostics import Diagnostic
     from ..host import DialogAnswer
     from ..runner import RunOptions
 
@@ -79,6 +80,8 @@ class MachineOptions:
     allow_exec: bool = False
     no_simulation: bool = False
     block_delete: bool = False
+    strict: bool = False
+    probe_surface: str | None = None
 
     def run_options(self, show_messages: bool = True, **extra: Any) -> RunOptions:
         """``RunOptions`` for these options; ``extra`` sets the rest (``trace=Path(...)``, ...).
@@ -89,14 +92,21 @@ class MachineOptions:
         from ..limits import DEFAULT_MAX_STEPS
         from ..runner import RunOptions
 
+        probe = None
+        if self.probe_surface:
+            from ..heightmap import ProbeAt, read_surface
+
+            probe = ProbeAt(read_surface(self.probe_surface))
+
         def path(value: str | None) -> Path | None:
             return Path(value) if value else None
 
         message = print_message if show_messages else None
         return RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro),
-                          host=Host(dialog=scripted_dialogs(list(self.answers)), message=message),
-                          max_steps=self.max_steps or DEFAULT_MAX_STEPS, log_dir=path(self.log_dir), allow_exec=self.allow_exec,
-                          simulation=not self.no_simulation, block_delete=self.block_delete, **extra)
+                          host=Host(dialog=scripted_dialogs(list(self.answers)), message=message, probe=probe),
+                          max_steps=self.max_steps or DEFAULT_MAX_STEPS, log_dir=path(self.log_dir),
+                          allow_exec=self.allow_exec, simulation=not self.no_simulation,
+                          block_delete=self.block_delete, strict=self.strict, on_warning=print_warning, **extra)
 
 
 def print_message(kind: str, text: str, path: str, line: int) -> None:
@@ -105,6 +115,11 @@ def print_message(kind: str, text: str, path: str, line: int) -> None:
         from .style import styled
 
         print(styled(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", sys.stderr), file=sys.stderr)
+
+
+def print_warning(diagnostic: Diagnostic) -> None:
+    """A macro-file line that does not parse, reported once at load: ``PATH:LINE:COL: warning: ...``."""
+    print(diagnostic.format(), file=sys.stderr)
 
 
 _MACHINE_OPTIONS = (
@@ -120,6 +135,10 @@ _MACHINE_OPTIONS = (
     click.option("--allow-exec", is_flag=True, help="Let Exec start external programs."),
     click.option("--no-simulation", is_flag=True, help="Run with #5380 = 0 (as if on the real machine)."),
     click.option("--block-delete", is_flag=True, help="Skip lines that start with '/'."),
+    click.option("--strict", is_flag=True, help="Macro-file lines that do not parse are errors at load "
+                 "(default: a warning each, and an error only if the run reaches the line)."),
+    click.option("--probe-surface", metavar="FILE", type=EXISTING_FILE,
+                 help="CSV height map x,y,z (machine coordinates): G38.2 trips where the probe meets it."),
 )
 _MACHINE_NAMES = tuple(MachineOptions.__dataclass_fields__)
 

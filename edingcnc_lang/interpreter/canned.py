@@ -65,6 +65,9 @@ class CannedCycles(MachineState):
         except CycleError as err:
             raise self.fail(str(err), span) from None
         hole = list(work)
+        cost = int(repeats) * (1 + len(steps))
+        if self.max_steps is not None and cost > self.max_steps - self.steps:
+            self.spend(cost, span)  # L1000000000: the budget error now, not after minutes of drilling
         for _ in range(int(repeats)):
             self.spend(1 + len(steps), span)
             for axis, letter in ((first, AXES[first]), (second, AXES[second])):

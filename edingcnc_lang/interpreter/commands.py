@@ -7,6 +7,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..canon import AXES, Event
 from ..evaluator import param_index
+from . import height_comp
 from .state import MachineState
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
@@ -48,6 +49,9 @@ class Commands(MachineState):
             self.kinematics_active = stmt.mode != "OFF"
 
     def _exec_switch(self, stmt: n.Switch) -> None:
+        if stmt.name == "zhc":
+            self._zhc_switch(stmt.on, stmt.span)  # type: ignore[attr-defined]  (height_comp.py)
+            return
         if stmt.name == "tanknife":
             self.tanknife = stmt.on
             work_zero = tuple(self.offset()[:3])  # the bend knife's Z band is in work coordinates
@@ -78,6 +82,21 @@ class Commands(MachineState):
             self._tool_cursor = int(value) if following else t.MAX_TOOL
         self.params.write(index, value, self.where(stmt.span))
 
+    def _get_job_distance(self, stmt: n.Command) -> None:
+        """``GetJobDistance N``: the distance the tool has travelled so far (mm, rapids included) into #N."""
+        self.params.write(self._variable_argument(stmt, "GetJobDistance 100"), self.job_distance, self.where(stmt.span))
+
+    def _get_height_control(self, stmt: n.Command) -> None:
+        """``GetHeightControlVact/Vset N``: a torch height control voltage into #N (no THC in simulation: 0)."""
+        self.params.write(self._variable_argument(stmt, f"{stmt.name} 100"), 0.0, self.where(stmt.span))
+
+    def _variable_argument(self, stmt: n.Command, example: str) -> int:
+        """The bare parameter number a command writes to (``GetJobDistance 100``)."""
+        text = stmt.args.strip()
+        if not text.isdigit():
+            raise self.fail(f"{stmt.name} expects a parameter number written without '#', e.g. {example}", stmt.span)
+        return param_index(float(text), stmt.span)
+
     def _exec_program(self, stmt: n.Command) -> None:
         if not self.allow_exec:
             self.message("warn", f"Exec {stmt.args} was not run: running programs needs --allow-exec")
@@ -93,7 +112,9 @@ class Commands(MachineState):
 
 
 # Named commands with a meaning of their own, by lower-case name; any other command is an event.
-COMMANDS: dict[str, str] = {"gettoolinfo": "_get_tool_info", "exec": "_exec_program"}
+COMMANDS: dict[str, str] = {"gettoolinfo": "_get_tool_info", "exec": "_exec_program",
+                            "getjobdistance": "_get_job_distance", "getheightcontrolvact": "_get_height_control",
+                            "getheightcontrolvset": "_get_height_control", **height_comp.COMMANDS}
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).

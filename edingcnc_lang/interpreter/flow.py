@@ -4,6 +4,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from .. import nodes as n
+from ..diagnostics import Diagnostic, SyntaxErrors
 from ..errors import EcncError
 from .state import CallFrame, MAX_CALL_DEPTH, MachineState, ProgramEnd
 
@@ -73,9 +74,15 @@ class ControlFlow(MachineState):
     def _exec_gosub(self, stmt: n.GoSub) -> None:
         self.call_sub(stmt.name, stmt.span)
 
+    def _exec_bad_line(self, stmt: n.BadLine) -> None:
+        """A macro-file line that does not parse, reached: the syntax error it was warned about (exit 65)."""
+        span = stmt.span
+        raise SyntaxErrors([Diagnostic.make(stmt.code, stmt.message, span.path, span.line, stmt.col)])
+
     def _exec_sub(self, stmt: n.Sub) -> None:
         raise self.fail(f"Sub {stmt.name} is defined inside a block; subs must be at the top level", stmt.span)
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).
-STATEMENTS = {n.If: "_exec_if", n.While: "_exec_while", n.GoSub: "_exec_gosub", n.Sub: "_exec_sub"}
+STATEMENTS = {n.If: "_exec_if", n.While: "_exec_while", n.GoSub: "_exec_gosub", n.Sub: "_exec_sub",
+              n.BadLine: "_exec_bad_line"}

@@ -18,6 +18,7 @@ from .canned import CannedCycles
 from .commands import Commands
 from .compensation import CompensationSteps
 from .flow import ControlFlow
+from .height_comp import HeightComp
 from .line import LineWords
 from .messages import Messages
 from .moves import Moves
@@ -29,7 +30,7 @@ from .threads import Threading
 
 
 class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, Scaling, CoordinateSystems,
-                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands):
+                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 

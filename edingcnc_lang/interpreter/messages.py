@@ -1,9 +1,11 @@
 """Messages, dialogs and the log file (msg, warnmsg, errmsg, dlgmsg, logmsg, logfile)."""
 from __future__ import annotations
 
+import math
 import os
 import stat
 from collections.abc import Mapping
+from datetime import datetime
 from pathlib import Path, PureWindowsPath
 from typing import TextIO
 
@@ -13,15 +15,22 @@ from ..canon import Event
 from ..errors import JobAborted, Location
 from ..evaluator import param_index
 from ..host import DialogAnswer, DialogField
-from .state import MAX_DIALOG_FIELDS, MachineState, format_value
+from ..dialogs import dialog_fields
+from .state import MachineState, format_value
+
+STAMP_FORMAT = "%Y-%m-%d %H:%M:%S"
 
 
 class Messages(MachineState):
     """What the job tells the operator or asks of them; each message is also an event on the canon."""
 
     def _text(self, items: tuple[n.MessageItem, ...]) -> str:
-        return "".join(item if isinstance(item, str) else format_value(self.evaluator.value(item))
-                       for item in items)
+        return "".join(item if isinstance(item, str) else self._stamp() if isinstance(item, n.Stamp)
+                       else format_value(self.evaluator.value(item)) for item in items)
+
+    def _stamp(self) -> str:
+        """``%d``: the date and time now, as ``YYYY-MM-DD HH:MM:SS`` (sortable, the same everywhere)."""
+        return (self.host.clock or datetime.now)().strftime(STAMP_FORMAT)
 
     def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None:
         event = Event(kind, self.path, self.line, {"text": text, **(data or {})})
@@ -42,28 +51,21 @@ class Messages(MachineState):
 
     def _exec_dialog(self, stmt: n.Dialog) -> None:
         items = stmt.items
-        if not items or not isinstance(items[0], str):
-            raise self.fail("dlgmsg needs a title string first", stmt.span)
-        fields: list[DialogField] = []
-        rest = list(items[1:])
-        while rest:
-            label = rest.pop(0)
-            if not isinstance(label, str):
-                raise self.fail("dlgmsg expects \"label\" number pairs after the title (EdingCNC error G1167)",
-                                label.span)
-            if not rest or not isinstance(rest[0], n.Number):
-                where = rest[0].span if rest and not isinstance(rest[0], str) else stmt.span
-                raise self.fail(f"dlgmsg field \"{label}\" needs a parameter number written without '#' "
-                                "(EdingCNC error G1167)", where)
-            number = rest.pop(0)
-            index = param_index(number.value, number.span)  # type: ignore[union-attr]
-            fields.append(DialogField(label, index, self.params.read(index)))
-        if len(fields) > MAX_DIALOG_FIELDS:
-            raise self.fail(f"dlgmsg has {len(fields)} fields; at most {MAX_DIALOG_FIELDS} fit", stmt.span)
+        shape, problems = dialog_fields(stmt)
+        if problems:  # the first one, as the controller stops at it
+            problem = problems[0]
+            item = problem.item
+            raise self.fail(problem.message, stmt.span if item is None or isinstance(item, str) else item.span)
+        indices = [param_index(f.index.value, f.index.span) for f in shape]
+        fields = [DialogField(f.label, index, self.params.read(index)) for f, index in zip(shape, indices)]
         answer = (self.host.dialog(items[0], fields) if self.host.dialog else None) or DialogAnswer()
         unknown = set(answer.values) - {f.index for f in fields}
         if unknown:
             raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)
+        endless = sorted(i for i, v in answer.values.items() if not math.isfinite(v))
+        if endless:  # a host's answer; the CLI refuses these already
+            raise self.fail(f"the answer sets #{endless[0]} to {answer.values[endless[0]]}, not a finite number",
+                            stmt.span)
         if answer.ok:
             for index, value in answer.values.items():
                 self.params.write(index, value, self.where(stmt.span))

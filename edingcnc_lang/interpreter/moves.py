@@ -39,13 +39,13 @@ class Moves(MachineState):
         elif (not has_axes or non_modal in t.AXIS_WORD_USERS or g.get("rotation") == G_68
               or g.get("scaling") == G_51):  # their X Y are a pivot or factors, not a target
             if g53:
-                raise self.fail("G53 needs an axis word and G0 or G1", span)
+                raise self.fail("G53 needs an axis word and G0, G1 or G38.2", span)
             return
         motion = self.modal["motion"]
         if motion == G_80:
             raise self.fail("axis words without a motion mode: G80 is active, add G0 or G1", span)
-        if g53 and motion not in (G_0, G_1):
-            raise self.fail("G53 moves in machine coordinates only with G0 or G1", span)
+        if g53 and motion not in (G_0, G_1, G_38_2):  # G53 G38.2: probing in machine coordinates (zero_z)
+            raise self.fail("G53 moves in machine coordinates only with G0, G1 or G38.2", span)
         if g53:
             self.refuse_with_comp("G53", span)
         if motion in t.CANNED_CYCLES:

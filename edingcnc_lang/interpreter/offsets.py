@@ -155,17 +155,25 @@ class CoordinateSystems(MachineState):
     def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         level = int(words.get("L", -1))
         p = words.get("P")
-        if level == 1:
+        if level in (1, 10, 11):
             tool = int(p) if p is not None else -1
             if not 1 <= tool <= t.MAX_TOOL:
-                raise self.fail("G10 L1 needs a tool number P1..P99", span)
-            if "Z" in words:
-                self.params.set(t.TOOL_LENGTH + tool, words["Z"] * self.scale)
+                raise self.fail(f"G10 L{level} needs a tool number P1..P99", span)
+            if level == 1:  # the values as given
+                length, x_offset = words.get("Z"), words.get("X")
+                length = None if length is None else length * self.scale
+                x_offset = None if x_offset is None else x_offset * self.scale
+            else:  # from the current position: what makes it read Z (X) in the active system (L10) or G59.3 (L11)
+                length, x_offset = self._tool_from_position(level, words)
+            if length is not None:
+                self.params.set(t.TOOL_LENGTH + tool, length)
+            if x_offset is not None and self.config.lathe:
+                self.params.set(t.TOOL_X_OFFSET + tool, x_offset)
             if "R" in words:
                 self.params.set(t.TOOL_DIAMETER + tool, 2 * words["R"] * self.scale)
             return
         if level not in (2, 20):
-            raise self.fail("G10 needs L1 (tool table), L2 or L20 (coordinate system)", span)
+            raise self.fail("G10 needs L1, L10 or L11 (tool table), L2 or L20 (coordinate system)", span)
         system = int(p) if p is not None else -1
         if p is None or p != system or not 0 <= system <= 9:
             raise self.fail(f"G10 L{level} needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)", span)
@@ -177,6 +185,18 @@ class CoordinateSystems(MachineState):
                     int(self.params.read(t.COORD_SYSTEM)), axis))
                 number = self.pos[axis] - number - others
             self.params.set(t.coord_offset_param(system, axis), number)
+
+    def _tool_from_position(self, level: int, words: Mapping[str, float]) -> tuple[float | None, float | None]:
+        """G10 L10/L11: the tool length (and lathe X offset) with which the current position reads the
+        programmed Z (X): in the active coordinate system with G92 (L10), or in G59.3 without it (L11)."""
+        offsets = self.offset()
+        if level == 10:
+            base_x, base_z = offsets[0] - self.tool_x, offsets[2] - self.tool_z
+        else:
+            base_x, base_z = (self.params.read(t.coord_offset_param(9, axis)) for axis in (0, 2))
+        length = self.pos[2] - base_z - words["Z"] * self.scale if "Z" in words else None
+        x_offset = self.pos[0] - base_x - words["X"] * self.scale if "X" in words else None
+        return length, x_offset
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)

@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 
 from .. import nodes as n
 from .. import tables as t
-from ..canon import AXES, Arc, Canon, Event, Move, Pose
+from ..canon import AXES, PLANES, Arc, Canon, Event, Move, Pose
 from ..config import MachineConfig
 from ..errors import Location, MachineError
 from ..evaluator import Evaluator
@@ -25,7 +25,6 @@ from ..spindle import Css, SpindleError, mean_rpm_points
 
 INCH = 25.4
 MAX_CALL_DEPTH = 64
-MAX_DIALOG_FIELDS = 15
 MIN_PROBE_DISTANCE = 0.254
 G = t.code_key  # G(38.2) -> 382
 
@@ -33,7 +32,9 @@ AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
 AXIS_SET = frozenset(AXES)
 LINEAR_AXES = frozenset("XYZ")
 UNSUPPORTED_MOTION = frozenset(t.code_key(c) for c in (74, 87))  # left-hand tapping, back boring
-PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1, 60))  # M0, M1, M60
+PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1))  # M0, M1 (M60 ends the program like M30)
+SPINDLE_SELECT = (90, 91, 92, 93)  # M90 standard spindle, M91..M93 alternate spindles (#5390 = 0..3)
+ROTARY = (3, 4, 5)
 
 # G codes as integer tenths, computed once (they are compared on every line).
 G_0 = G(0)
@@ -100,11 +101,27 @@ class CallFrame:
 
 
 def format_value(value: float) -> str:
-    """How numbers appear in messages: integers plainly, others with up to 4 decimals."""
+    """How numbers appear in messages: integers plainly, others with up to 4 decimals; an infinite
+    or NaN value (only an embedding program can make one) as ``inf``, ``-inf`` or ``nan``."""
+    if not math.isfinite(value):
+        return str(value)
     if value == int(value) and abs(value) < 1e15:
         return str(int(value))
     return f"{value:.4f}".rstrip("0").rstrip(".")
 
+
+
+def path_length(start: Pose, end: Pose | list[float], arc: Arc | None) -> float:
+    """How far the tool travels along a move (mm): the helix of an arc, else the straight XYZ line."""
+    if arc is None:
+        return xyz_distance(start, end)
+    first, second, normal = PLANES[arc.plane]
+    cx, cy = (arc.center[1], arc.center[0]) if arc.plane == "XZ" else arc.center
+    a0 = math.atan2(start[second] - cy, start[first] - cx)
+    a1 = math.atan2(end[second] - cy, end[first] - cx)
+    turned = ((a1 - a0) * arc.turn) % (2 * math.pi) + 2 * math.pi * arc.full_turns
+    radius = math.hypot(start[first] - cx, start[second] - cy)
+    return math.hypot(radius * turned, end[normal] - start[normal])
 
 
 def xyz_distance(a: list[float] | Pose, b: list[float] | Pose) -> float:
@@ -163,6 +180,8 @@ class MachineState:
         self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
         self.tanknife = False
+        self.clamped = False               # M26: the rotary axes are clamped until M27
+        self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         self.ended_by = "end of file"
         self.messages: list[Event] = []
         self.path = "<string>"
@@ -242,11 +261,14 @@ class MachineState:
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
               sync: float = 0.0) -> None:
         start = tuple(self.pos)
+        if self.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
+            raise self.fail("a rotary axis cannot move while it is clamped (M26): release it with M27 first")
         turning = self.spindle != 5
         css = self.css() if turning else None
         rpm = (css.rpm(end[0]) if css is not None else self.rpm) if turning else 0.0
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
                              rpm, css, sync))
+        self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
     def mean_rpm(self, xs: list[float], span: n.Span | None) -> float:

@@ -9,7 +9,7 @@ from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
     G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
-    format_value,
+    SPINDLE_SELECT, format_value,
 )
 
 
@@ -61,7 +61,12 @@ class LineSteps(MachineState):
         self._io(code // 10, words, span)
 
     def _step_m_state(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        self.canon.event(Event("m_code", self.path, self.line, {"m": code // 10}))
+        m = code // 10
+        if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
+            self.clamped = m == 26
+        elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M93 the alternate spindles 1..3
+            self.params.set(t.SPINDLE_SELECTED, float(m - SPINDLE_SELECT[0]))
+        self.canon.event(Event("m_code", self.path, self.line, {"m": m}))
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         if code == G_4:
@@ -146,7 +151,7 @@ class LineSteps(MachineState):
                 self.tool_x = words.get("I", 0.0) * self.scale if lathe else 0.0
             elif tool:
                 read = self.params.read
-                self.tool_z = read(t.TOOL_LENGTH + tool) + (read(t.TOOL_Z_WEAR + tool) if lathe else 0.0)
+                self.tool_z = read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool)  # zDelta: wear, mill and lathe
                 self.tool_x = read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool) if lathe else 0.0
             else:
                 self.tool_z = 0.0

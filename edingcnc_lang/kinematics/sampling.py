@@ -16,8 +16,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from edingcnc_lang.limits import MAX_MOVE_SAMPLES
+
 # Sample times closer than this fraction of dt to the end are merged into the end point.
 _END_SLACK = 1e-9
+
+
+class TooManySamples(ValueError):
+    """A move that would need more than MAX_MOVE_SAMPLES samples (the caller names the job's line)."""
 
 
 def _times(length: float, feed: float, dt: float) -> np.ndarray:
@@ -27,6 +33,10 @@ def _times(length: float, feed: float, dt: float) -> np.ndarray:
     if length <= 0.0:
         return np.zeros(1)
     duration = length / feed
+    if duration / dt > MAX_MOVE_SAMPLES:
+        raise TooManySamples(f"this move takes {duration:.6g} s, {duration / dt:.3g} samples at the interpolation "
+                             f"time of {dt:g} s; a move may have at most {MAX_MOVE_SAMPLES:,} (the memory they "
+                             "need): raise its feed or split it")
     count = max(1, math.ceil(duration / dt - _END_SLACK))
     t = np.arange(1, count + 1, dtype=float) * dt
     t[-1] = duration

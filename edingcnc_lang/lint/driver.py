@@ -21,6 +21,7 @@ from .model import SourceFile, stream_source
 from .project import Project
 from .registry import RULES
 from .rules_config import check_config
+from .targets import applies, resolve
 
 SOURCE_SUFFIXES = frozenset({".cnc", ".nc", ".ngc", ".tap", ".txt"})
 CONFIG_SUFFIX = ".ini"
@@ -42,6 +43,7 @@ class LintOptions:
     ini: str | None = None
     select: tuple[str, ...] = ()  # codes or prefixes; empty selects everything
     ignore: tuple[str, ...] = ()
+    target: str | None = None  # controller version ("4.03", "5"); None: see lint.targets.resolve
 
 
 def parse_codes(text: str | None) -> tuple[str, ...]:
@@ -118,6 +120,9 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     variables their kinematics writes count as written for V302.  ``reader`` parses a file; the
     language server passes one that reads the editor's unsaved text and keeps parsed files.
     """
+    paths = [os.fspath(p) for p in paths]
+    inis = [options.ini] if options.ini else [p for p in paths if p.lower().endswith(CONFIG_SUFFIX)]
+    target = resolve(options.target, paths, inis[0] if inis else None)
     given = [Path(p) for p in (options.macro, options.user_macro) if p]
     given_resolved = {g.resolve() for g in given}
     loader = _Loader(given, reader)
@@ -142,15 +147,15 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     for file in dict.fromkeys(targets):
         for rule in active:  # the parser's nesting limits keep every walk within the stack
             found.extend(rule.check(file, project))
-    return _finish(found, options, {f.path: f.lines for f in loader.files.values()})
+    return _finish(found, options, target, {f.path: f.lines for f in loader.files.values()})
 
 
-def _finish(found: list[Diagnostic], options: LintOptions,
+def _finish(found: list[Diagnostic], options: LintOptions, target: str,
             lines: dict[str, tuple[str, ...]]) -> list[Diagnostic]:
-    """Attach source lines, apply --select/--ignore and noqa, sort and drop duplicates."""
+    """Attach source lines, apply the target, --select/--ignore and noqa, sort and drop duplicates."""
     kept: dict[tuple[str, int, int, str, str], Diagnostic] = {}
     for diag in found:
-        if not wanted(diag.code, options):
+        if not wanted(diag.code, options) or not applies(diag.code, target):
             continue
         if diag.path not in lines:
             lines[diag.path] = _read_lines(diag.path)

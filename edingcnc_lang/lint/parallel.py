@@ -12,11 +12,13 @@ from __future__ import annotations
 import gc
 import os
 from collections.abc import Iterable, Sequence
+from dataclasses import replace
 from concurrent.futures import ProcessPoolExecutor
 from multiprocessing import get_context
 
 from ..diagnostics import Diagnostic
 from .driver import CONFIG_SUFFIX, LintOptions, expand, lint_paths
+from .targets import resolve
 
 GROUPS_PER_JOB = 4  # more groups than workers, so a slow group does not leave the others idle
 
@@ -31,6 +33,9 @@ def lint_paths_parallel(paths: Iterable[str | os.PathLike[str]], options: LintOp
     if jobs <= 1 or len(sources) < 2 or not all(os.access(p, os.R_OK) for p in sources):
         return lint_paths(given, options)  # (an unreadable file is reported from here, with its path)
     groups = split(sources, min(len(sources), jobs * GROUPS_PER_JOB))
+    # one controller version for every group: the one the whole command line resolves to
+    options = replace(options, target=resolve(options.target, [os.fspath(p) for p in given],
+                                              options.ini or (configs[0] if configs else None)))
     # spawn, not fork: the same on every platform, and safe beside the CLI's progress thread
     with ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("spawn")) as pool:
         found = [d for part in pool.map(_lint_group, [[*group, *configs] for group in groups],

@@ -19,7 +19,7 @@ from .walk import Scope, dialog_fields, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 # Commands that store a result in the variable whose number they are given.
-_WRITING_COMMANDS = frozenset({"gettoolinfo", "getjobdistance"})
+_WRITING_COMMANDS = frozenset({"gettoolinfo", "getjobdistance", "getheightcontrolvact", "getheightcontrolvset"})
 
 
 @dataclass(frozen=True)

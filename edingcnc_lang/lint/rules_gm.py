@@ -11,6 +11,7 @@ from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..tables import (
     G_GROUPS,
+    UNKNOWN_G_HINTS,
     M_GROUPS,
     MAX_M_WORDS,
     MAX_TOOL,
@@ -29,7 +30,7 @@ from .walk import Scope
 PROBE = code_key(38.2)
 ARCS = frozenset(code_key(c) for c in (2, 3))
 G53 = code_key(53)
-G53_MOTIONS = frozenset(code_key(c) for c in (0, 1))
+G53_MOTIONS = frozenset(code_key(c) for c in (0, 1, 38.2))  # G53 G38.2: probing in machine coordinates
 FEED_MOVES = frozenset(code_key(c) for c in (1, 2, 3, 38.2, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 AXES = frozenset("XYZABC")
 CENTRE = frozenset("IJKR")
@@ -61,7 +62,7 @@ def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
     block, g = codes.block, dict(codes.g)
     letters = {w.letter: w for w in block.words}
     if G53 in g and not G53_MOTIONS & g.keys():
-        yield at("G501", "G53 (machine coordinates) needs G0 or G1 on the same line, e.g. G53 G0 Z0",
+        yield at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. G53 G0 Z0",
                  g[G53].span)
     arc = next((k for k in g if k in ARCS), None)
     if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():

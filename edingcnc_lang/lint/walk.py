@@ -124,7 +124,7 @@ def expressions(stmt: n.Stmt) -> Iterator[n.Expr]:
     elif isinstance(stmt, (n.If, n.While)):
         yield stmt.cond
     elif isinstance(stmt, n.Message):
-        yield from (item for item in stmt.items if not isinstance(item, str))
+        yield from (item for item in stmt.items if not isinstance(item, (str, n.Stamp)))
     elif isinstance(stmt, n.LogFile) and stmt.mode is not None:
         yield stmt.mode
     elif isinstance(stmt, n.Kin):

@@ -2,17 +2,19 @@
 
 To add a stage: write a ``Stage`` (or ``LookaheadStage``) subclass in a module of its own here
 and put its class in ``STAGES`` at the place it belongs; it is built with the next canon and the
-machine configuration.  A stage may import ``canon``, ``config``, ``geometry`` and ``errors``,
-never the interpreter or the motion stage.
+machine configuration.  A stage may import ``canon``, ``config``, ``geometry``, ``heightmap`` and
+``errors``, never the interpreter or the motion stage.
 """
 from __future__ import annotations
 
 from .base import LookaheadStage, Pipeline, Stage, StageFactory
 from .cutter_comp import CutterCompensation
+from .height_comp import HeightCompensation
 from .rotation import Rotation
 from .scaling import Scaling
 
 # First to last: the interpreter emits into the first; the last hands on to the motion stage.
-STAGES: tuple[StageFactory, ...] = (Rotation, Scaling, CutterCompensation)
+# Height compensation comes last: it follows the surface under the path the machine really cuts.
+STAGES: tuple[StageFactory, ...] = (Rotation, Scaling, CutterCompensation, HeightCompensation)
 
 __all__ = ["STAGES", "LookaheadStage", "Pipeline", "Stage", "StageFactory"]

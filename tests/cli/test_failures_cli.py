@@ -148,3 +148,18 @@ def test_only_one_output_on_standard_output(tmp_path: Path) -> None:
     job = write(tmp_path, "job.nc", "G0 X1\n")
     result = invoke("run", job, "--json", "--trace", "-")
     assert result.exit_code == 2 and "not --json and --trace -" in result.stderr
+
+
+@pytest.mark.parametrize("option", ["--trace", "--events", "--samples"])
+def test_a_closed_pipe_on_standard_output_ends_quietly_with_exit_1(tmp_path: Path, option: str) -> None:
+    # far more rows than a pipe buffers, so the writes go on after the reader is gone (`ecnc ... | head -1`)
+    job = write(tmp_path, "big.nc", "#1 = 0\nWhile [#1 < 20000]\n  G1 X[#1 MOD 100] Y[#1 MOD 7] F3000\n"
+                                     "  #1 = [#1 + 1]\nEndWhile\n")
+    process = subprocess.Popen([*ECNC, "run", str(job), option, "-"], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, cwd=tmp_path,
+                               env={**os.environ, "PYTHONPATH": str(Path.cwd())})
+    assert process.stdout is not None and process.stderr is not None
+    assert process.stdout.readline()
+    process.stdout.close()
+    stderr = process.stderr.read().decode()
+    assert (process.wait(timeout=120), stderr) == (1, "")

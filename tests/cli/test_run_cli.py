@@ -78,10 +78,20 @@ def test_syntax_error_exits_65_and_runs_nothing(tmp_path: Path) -> None:
     assert not trace.exists() or trace_rows(trace) == []
 
 
-def test_syntax_error_in_a_macro_file_exits_65_and_runs_nothing(tmp_path: Path) -> None:
+def test_a_macro_line_that_does_not_parse_is_a_warning_until_the_run_reaches_it(tmp_path: Path) -> None:
     macro = write(tmp_path, "macro.cnc", ";@unit mm\nSub m101\n  G0 Y[#25\nEndSub\n")
     trace = tmp_path / "t.csv"
     result = run_job(tmp_path, "G0 X1\nM101 Y3\n", "--trace", trace, macro=macro)
+    assert result.exit_code == 65
+    assert result.stderr.count(f"{macro}:3:7: warning:") == 1  # listed once, at load
+    assert f"{macro}:3:7: error:" in result.stderr  # the same message when M101 reaches it
+    assert len(trace_rows(trace)) == 1  # G0 X1 ran first
+
+
+def test_strict_makes_a_macro_syntax_error_stop_the_run_before_anything_moves(tmp_path: Path) -> None:
+    macro = write(tmp_path, "macro.cnc", ";@unit mm\nSub m101\n  G0 Y[#25\nEndSub\n")
+    trace = tmp_path / "t.csv"
+    result = run_job(tmp_path, "G0 X1\nM101 Y3\n", "--trace", trace, "--strict", macro=macro)
     assert result.exit_code == 65
     assert f"{macro}:3:7: error:" in result.stderr
     assert not trace.exists() or trace_rows(trace) == []
@@ -215,6 +225,19 @@ def test_answers_in_order(tmp_path: Path) -> None:
     result = run_job(tmp_path, source, "--json", "--answer", "ok:#27=5", "--answer", "cancel")
     v = json.loads(result.stdout)["variables"]
     assert (v["27"], v["28"], v["100"], v["101"], v["102"]) == (5.0, 2.0, 1.0, -1.0, 1.0)
+
+
+@pytest.mark.parametrize("answer", ["ok:#27=1e400", "ok:#27=nan", "ok:#27=-inf"])
+def test_a_non_finite_answer_is_a_usage_error(tmp_path: Path, answer: str) -> None:
+    result = run_job(tmp_path, 'dlgmsg "Maße" "Breite" 27 "Höhe" 28\nmsg "b=" #27\n', "--answer", answer)
+    assert result.exit_code == 2 and "not a finite number" in result.stderr and "Traceback" not in result.output
+
+
+def test_an_infinite_ini_variable_is_a_located_config_error(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[VARIABLES]\r\n#4002 = 1e999\r\n")
+    result = run_job(tmp_path, 'msg "v=" #4002\n', "--ini", ini)
+    assert result.exit_code == 70 and result.stderr.startswith(f"{ini}:2: error: #4002 in [VARIABLES]")
 
 
 def test_max_steps(tmp_path: Path) -> None:

@@ -7,8 +7,10 @@ from pathlib import Path
 
 import pytest
 
+from edingcnc_lang.diagnostics import SyntaxErrors
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.host import DialogAnswer, DialogField, Host, scripted_dialogs
+from edingcnc_lang.interpreter.state import format_value
 from edingcnc_lang.runner import RunOptions, RunResult, run_file, run_string
 
 EMPTY_MACRO = Path(__file__).parent / "data" / "empty_macro.cnc"
@@ -107,6 +109,18 @@ def test_dialog_answer_for_a_parameter_that_is_not_a_field_is_an_error() -> None
     assert "#29" in error_of(DIALOG, host=answering("ok:#29=1")).message
 
 
+@pytest.mark.parametrize("value", [float("inf"), float("nan")])
+def test_a_host_answering_a_non_finite_value_is_an_error_at_the_dlgmsg(value: float) -> None:
+    host = Host(dialog=scripted_dialogs([DialogAnswer(True, {27: value})]))
+    err = error_of(DIALOG, host=host)
+    assert "#27" in err.message and "not a finite number" in err.message and str(err.location) == "job.nc:3:1"
+
+
+def test_non_finite_values_format_as_inf_and_nan() -> None:
+    assert [format_value(v) for v in (float("inf"), float("-inf"), float("nan"), 2.0, 0.5)] == [
+        "inf", "-inf", "nan", "2", "0.5"]
+
+
 def test_dialog_with_15_fields_is_fine_and_16_is_an_error() -> None:
     fields = " ".join(f'"f{i}" {30 + i}' for i in range(16))
     run(f'dlgmsg "T" {" ".join(fields.split(" ")[:30])}\n')
@@ -114,9 +128,26 @@ def test_dialog_with_15_fields_is_fine_and_16_is_an_error() -> None:
     assert "16 fields" in err.message and str(err.location) == "job.nc:1:1"
 
 
-def test_hash_in_a_dialog_field_is_g1167() -> None:
-    err = error_of('dlgmsg "T" "Width" #27\n')
-    assert "G1167" in err.message and str(err.location) == "job.nc:1:20"
+@pytest.mark.parametrize("line, code, col", [
+    ('dlgmsg "T" "Width" #27', "D403", 20),       # a '#' before the field number
+    ('dlgmsg "T" #27 "Width" 27', "D402", 12),    # a value between the strings
+    ('dlgmsg "T" "Width" 27 "Depth"', "D402", 23),  # a label without its number
+])
+def test_dialog_shapes_the_controller_calls_g1167_stop_the_job_before_anything_moves(
+        line: str, code: str, col: int) -> None:
+    moves: list[object] = []
+    with pytest.raises(SyntaxErrors) as info:
+        run(f"G0 X1\n{line}\n", on_move=lambda move, joints: moves.append(move))
+    diag = info.value.diagnostics[0]
+    assert (diag.code, diag.line, diag.col) == (code, 2, col) and "G1167" in diag.message
+    assert moves == []
+
+
+def test_a_dialog_label_of_32_characters_is_refused_when_the_dialog_is_shown() -> None:
+    label = "x" * 32
+    err = error_of(f'G0 X1\ndlgmsg "T" "{label}" 27\n')
+    assert "unnamed string too long" in err.message and err.location.line == 2  # type: ignore[union-attr]
+    run(f'dlgmsg "T" "{label[:31]}" 27\n')
 
 
 @pytest.mark.parametrize("text", ["ok", "OK", "cancel", "ok:#27=5", "ok: #27=5, #28=-1e3"])
@@ -124,7 +155,8 @@ def test_answer_texts_parse(text: str) -> None:
     DialogAnswer.parse(text)
 
 
-@pytest.mark.parametrize("text", ["yes", "cancel:#27=1", "ok:27=5", "ok:#27", "ok:#x=1", "ok:#27=abc"])
+@pytest.mark.parametrize("text", ["yes", "cancel:#27=1", "ok:27=5", "ok:#27", "ok:#x=1", "ok:#27=abc",
+                                  "ok:#27=1e400", "ok:#27=nan", "ok:#27=-inf"])
 def test_bad_answer_texts_are_refused(text: str) -> None:
     with pytest.raises(ValueError):
         DialogAnswer.parse(text)

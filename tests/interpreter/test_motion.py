@@ -177,7 +177,7 @@ def test_g53_moves_in_machine_coordinates_for_one_line() -> None:
 
 
 @pytest.mark.parametrize(("source", "words"), [
-    ("G53 G2 X1 R3 F100\n", "G0 or G1"),
+    ("G53 G2 X1 R3 F100\n", "G0, G1 or G38.2"),
     ("G41 D1\nG53 G0 X1\n", "cutter compensation"),
     ("G53\n", "axis word"),
 ])

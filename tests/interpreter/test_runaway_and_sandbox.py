@@ -80,3 +80,14 @@ def test_an_m_code_without_a_built_in_reaching_its_own_sub_again_is_an_error() -
 def test_an_m_code_with_a_built_in_runs_it_inside_its_own_sub() -> None:
     result = run_string("M3 S100\nM30\nSub m3\n  GoSub helper\nEndSub\nSub helper\n  M3\nEndSub\n")
     assert (result.error, result.ended_by) == (None, "M30")
+
+
+def test_a_repeat_count_past_the_budget_fails_at_once() -> None:
+    err = error_of("G0 Z5\nG81 X1 Y1 Z-1 R1 F100 L[10**300]\n")  # the default budget: no minutes of drilling
+    assert err.location.line == 2 and "step budget of 100,000,000 steps exhausted" in err.message  # type: ignore[union-attr]
+
+
+def test_a_move_of_more_samples_than_the_limit_is_an_error_not_gigabytes(tmp_path: Path) -> None:
+    err = error_of("G0 X10\nG1 X100000 F1\n", samples=tmp_path / "s.csv")  # 1.2e9 samples at 200 Hz
+    assert err.location.line == 2  # type: ignore[union-attr]
+    assert f"a move may have at most {limits.MAX_MOVE_SAMPLES:,}" in err.message

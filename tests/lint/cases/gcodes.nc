@@ -8,6 +8,10 @@ G53 G0 Z0
 G0 G53 X0
 G53 X10                  ; expect: G501
 G53 G2 X1 Y1 R5          ; expect: G501
+; probing in machine coordinates (the stock zero_z) is no G501
+G53 G38.2 Z-10 F100      ; noqa: G504,G505
+G7 X20                   ; expect: G509
+G90.1                    ; expect: G509
 G2 X10 Y0 I5 J0
 G3 X0 Y0 R5
 G2 I5                    ; a full circle: centre given, no end point

@@ -1,0 +1,99 @@
+"""Z height compensation commands: ZHCINIT, ZHCINITEX, ZHCADDPOINT, ZHC on/off, ZHCS, ZHCL, ZHCcheck.
+
+The grid lies in machine X/Y, from the work zero at ``ZHCINIT`` (the stock ``zhcmgrid`` sub
+probes ``x[i * gridSize] y[j * gridSize]`` in work coordinates).  ``ZHCADDPOINT`` stores the
+last probe's work Z at the grid point nearest its XY, so the table holds surface heights
+relative to the work Z zero and a job's ``Z-0.1`` means 0.1 below the surface while ZHC is on.
+Applying the table to the moves is the ``HeightCompensation`` stage's job (``stages/``).
+"""
+from __future__ import annotations
+
+from pathlib import Path, PureWindowsPath
+
+from .. import nodes as n
+from .. import tables as t
+from ..canon import Event
+from ..errors import EcncError
+from ..heightmap import ZhcTable
+from ..parser import parse_line
+from .state import MachineState
+
+
+class HeightComp(MachineState):
+    """The ZHC table of one machine and the commands that build, save and switch it."""
+
+    zhc: ZhcTable | None = None
+
+    def _command_values(self, stmt: n.Command, count: int, usage: str) -> list[float]:
+        """The ``count`` numeric arguments of a command (``ZHCINIT [#4104] 10 [#4101]``), evaluated."""
+        message = parse_line(f"msg {stmt.args}", stmt.span.path, stmt.span.line) if stmt.args else None
+        items = message.items if isinstance(message, n.Message) else ()
+        if len(items) != count or any(isinstance(item, (str, n.Stamp)) for item in items):
+            raise self.fail(f"{usage} (got {stmt.args or 'nothing'!r})", stmt.span)
+        return [self.evaluator.value(item) for item in items]  # type: ignore[arg-type]
+
+    def _zhc_init(self, stmt: n.Command) -> None:
+        if stmt.name == "zhcinit":
+            size, nx, ny = self._command_values(stmt, 3, "ZHCINIT expects gridSize nX nY, e.g. ZHCINIT 10 5 4")
+            dx = dy = size
+        else:
+            dx, dy, nx, ny = self._command_values(stmt, 4, "ZHCINITEX expects gridSizeX gridSizeY nX nY")
+        if dx <= 0 or dy <= 0 or nx < 1 or ny < 1 or nx != int(nx) or ny != int(ny) or nx * ny > 100_000:
+            raise self.fail(f"{stmt.name.upper()}: grid sizes must be above 0 and nX, nY whole numbers from 1 "
+                            f"(at most 100,000 points); got {dx:g} x {dy:g} mm, {nx:g} x {ny:g} points", stmt.span)
+        origin = self.offset()
+        self.zhc = ZhcTable.empty(int(nx), int(ny), origin[0], origin[1], dx, dy)
+
+    def _zhc_add_point(self, stmt: n.Command) -> None:
+        if self.zhc is None:
+            raise self.fail("ZHCADDPOINT before ZHCINIT: there is no grid to add the point to", stmt.span)
+        if self.params.read(t.PROBE_TRIPPED) != 1.0:
+            raise self.fail("ZHCADDPOINT: the last G38.2 did not touch (#5067 is not 1)", stmt.span)
+        x, y = self.params.read(t.PROBE_MACHINE), self.params.read(t.PROBE_MACHINE + 1)
+        if self.zhc.add(x, y, self.params.read(t.PROBE_WORK + 2)) is None:
+            raise self.fail(f"ZHCADDPOINT: the probe point X{x:g} Y{y:g} (machine) is not on the ZHC grid",
+                            stmt.span)
+
+    def _zhc_switch(self, on: bool, span: n.Span) -> None:
+        table = self.zhc
+        if on and (table is None or not table.complete()):
+            measured = f"{len(table.measured())} of {table.nx * table.ny} points are measured" if table else \
+                "there is no height table (probe one with ZHCINIT and ZHCADDPOINT, or load one with ZHCL)"
+            raise self.fail(f"ZHC on: {measured}", span)
+        self.params.set(t.ZHC_ACTIVE, 1.0 if on else 0.0)
+        data: dict[str, object] = {"on": on}
+        if on:
+            assert table is not None
+            data["map"] = table.height_map()
+        self.canon.event(Event("zhc", self.path, self.line, data))
+
+    def _zhc_file(self, stmt: n.Command) -> Path:
+        """The file ZHCS/ZHCL name, inside the log folder like logfile's (a path is reduced to its name)."""
+        name = PureWindowsPath(stmt.args.strip().strip('"')).name
+        if name in ("", ".", ".."):
+            raise self.fail(f"{stmt.name.upper()} needs a file name", stmt.span)
+        return (self.log_dir or Path(self.path).resolve().parent) / name
+
+    def _zhc_save(self, stmt: n.Command) -> None:
+        if self.zhc is None:
+            raise self.fail("ZHCS before ZHCINIT: there is no height table to save", stmt.span)
+        path = self._zhc_file(stmt)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        self.zhc.save(path)
+        self.canon.event(Event("zhcs", self.path, self.line, {"file": str(path)}))
+
+    def _zhc_load(self, stmt: n.Command) -> None:
+        try:
+            self.zhc = ZhcTable.load(self._zhc_file(stmt))
+        except EcncError as err:
+            raise self.fail(f"ZHCL: {err.format().removeprefix('error: ')}", stmt.span) from None
+
+    def _zhc_check(self, stmt: n.Command) -> None:
+        if self.zhc is None:
+            raise self.fail("ZHCcheck before ZHCINIT or ZHCL: there is no height table", stmt.span)
+        self.message("msg", self.zhc.statistics())
+
+
+# Named commands of this part, by lower-case name (commands.py dispatches them).
+COMMANDS = {"zhcinit": "_zhc_init", "zhcinitex": "_zhc_init", "zhcaddpoint": "_zhc_add_point",
+            "zhcs": "_zhc_save", "zhcl": "_zhc_load", "zhccheck": "_zhc_check"}

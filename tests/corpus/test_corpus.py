@@ -1,0 +1,96 @@
+"""The corpus: realistic macro files in the styles users publish, each loaded and every sub run.
+
+The files (``files/``) mix what real macro files contain: CRLF and Latin-1, prose lines that were
+never commented out (between subs and in a block that is never reached), ``%d`` in messages,
+one-operand ATAN in a probing routine, a ZHC grid sub, ``G53 G38.2``, ``ZHCcheck``, spindle
+selection, THC readouts and the rotary clamp.  Loading warns about the prose lines only; every
+sub then runs to its end.  The probe touches a tilted board (Z) and a slightly skewed wall (Y).
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang.canon import Pose
+from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.host import Host
+from edingcnc_lang.runner import RunOptions, RunResult, run_string
+from edingcnc_lang.parser import read_statements
+from edingcnc_lang import nodes as n
+
+FILES = Path(__file__).resolve().parent / "files"
+BOARD = ProbeAt(HeightMap((0.0, 100.0), (0.0, 100.0), ((0.0, 0.5), (0.25, 0.75))))
+WALL_ANGLE = 2.0  # degrees: the wall the vendor's edge probing touches, at Y = 10 + X tan(2)
+
+
+def touch(start: Pose, target: Pose) -> Pose | None:
+    """Z moves meet the board; Y moves meet the wall."""
+    if abs(target[1] - start[1]) > 1e-9:
+        wall = 10.0 + start[0] * math.tan(math.radians(WALL_ANGLE))
+        return (*target[:1], wall, *target[2:]) if min(start[1], target[1]) <= wall <= max(start[1], target[1]) else None
+    return BOARD(start, target)
+
+
+# file -> the lines that do not parse (warned about at load, never reached)
+CORPUS = {
+    "vendor_macro.cnc": [],
+    "shared_macro.cnc": [],
+    "conversational_addon.cnc": [4, 5, 6, 27, 28, 29],
+    "user_macro.cnc": [],
+}
+
+
+def subs_of(path: Path) -> list[str]:
+    return [stmt.name for stmt in read_statements(path, tolerant=True) if isinstance(stmt, n.Sub)]
+
+
+def run_sub(path: Path, name: str, tmp_path: Path) -> RunResult:
+    warnings: list[object] = []
+    return run_string(f"GoSub {name}\nM30\n", RunOptions(macro=path, host=Host(probe=touch), log_dir=tmp_path,
+                                                           on_warning=warnings.append))
+
+
+def test_every_corpus_file_is_listed() -> None:
+    assert sorted(p.name for p in FILES.glob("*.cnc")) == sorted(CORPUS)
+
+
+@pytest.mark.parametrize("name", sorted(CORPUS))
+def test_loading_warns_about_exactly_the_lines_that_do_not_parse(name: str, tmp_path: Path) -> None:
+    result = run_string("M30\n", RunOptions(macro=FILES / name, log_dir=tmp_path))
+    assert [w.line for w in result.warnings] == CORPUS[name]
+    assert all(w.severity.value == "warning" for w in result.warnings)
+
+
+@pytest.mark.parametrize("name, sub", [(name, sub) for name in sorted(CORPUS) for sub in subs_of(FILES / name)])
+def test_every_sub_runs(name: str, sub: str, tmp_path: Path) -> None:
+    result = run_sub(FILES / name, sub, tmp_path)
+    assert result.ended_by == "M30", result.error
+
+
+def test_the_vendor_edge_probe_measures_the_wall_angle_with_one_operand_atan(tmp_path: Path) -> None:
+    result = run_sub(FILES / "vendor_macro.cnc", "user_1", tmp_path)
+    assert result.variables[103] == pytest.approx(WALL_ANGLE)
+    assert result.variables[5196] == pytest.approx(WALL_ANGLE)  # G68 R: the angle in #5196
+
+
+def test_the_shared_zhc_grid_is_saved_and_the_engraving_follows_the_board(tmp_path: Path) -> None:
+    moves: list[object] = []
+    result = run_string("GoSub engrave_on_surface\nM30\n", RunOptions(
+        macro=FILES / "shared_macro.cnc", host=Host(probe=touch), log_dir=tmp_path,
+        on_move=lambda move, joints: moves.append(move)))
+    assert (tmp_path / "zHeightCompTable.txt").is_file()
+    texts = [m.data["text"] for m in result.messages]
+    assert any(text.startswith("ZHC table 4 x 3 points, 20 x 20 mm: 12 measured") for text in texts)
+    cut = [m for m in moves if m.kind == "linear" and m.end[2] < 0]  # type: ignore[attr-defined]
+    assert cut and all(m.end[2] == pytest.approx(-0.2 + BOARD.surface.height(m.end[0], min(m.end[1], 40.0)), abs=1e-6)
+                       for m in cut)  # type: ignore[attr-defined]
+
+
+def test_the_unreached_prose_stops_the_run_when_it_is_reached(tmp_path: Path) -> None:
+    from edingcnc_lang.diagnostics import SyntaxErrors
+
+    with pytest.raises(SyntaxErrors) as info:
+        run_string("#4699 = 1\nGoSub notes\n", RunOptions(macro=FILES / "conversational_addon.cnc"))
+    assert info.value.diagnostics[0].line == 27 and info.value.exit_code == 65
