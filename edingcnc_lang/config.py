@@ -136,6 +136,22 @@ class MachineConfig:
     user_output_count: int
     tools: Mapping[int, ToolConfig]
     variables: Mapping[int, float]
+    sections: frozenset[str] = frozenset()  # the ini's section names, lower case: which ones it GAVE
+
+    @property
+    def folder(self) -> Path | None:
+        """The ini's folder: where plug-in and macro files named in it are looked for (None without an ini)."""
+        return Path(self.path).parent if self.path else None
+
+    def gives_cartesian_limits(self, axis: int) -> bool:
+        """Whether ``[KINEMATICS]`` sets both positiveLimit and negativeLimit of ``axis`` (else defaults)."""
+        letter = AXES[axis].lower()
+        return all(f"{side}limit{letter}" in self.kinematics_settings for side in ("positive", "negative"))
+
+    @property
+    def gives_joint_sections(self) -> bool:
+        """Whether the ini has any ``[JOINT_n]`` section (else the joints are the wide defaults)."""
+        return any(name.startswith("joint_") for name in self.sections)
 
     @property
     def lathe(self) -> bool:
@@ -385,6 +401,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
         **_read_cartesian(ini, base),
         tools=_read_tools(ini),
         variables=_read_variables(ini),
+        sections=frozenset(ini.sections),
     )
     _validate(ini, config)
     return config

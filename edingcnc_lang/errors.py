@@ -6,7 +6,9 @@ belongs to an error is part of its type (see docs/cli.md).
 """
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass
+from types import ModuleType
 
 EXIT_OK = 0
 EXIT_FINDINGS = 1
@@ -84,6 +86,20 @@ class MissingExtra(EcncError):
     """An optional dependency (an extra such as ``plot``) is not installed: say how to install it."""
 
     exit_code = EXIT_USAGE
+
+
+def require_extra(module: str, extra: str, feature: str) -> ModuleType:
+    """Import ``module`` or fail with the one wording of how to install the ``extra`` that brings it.
+
+    ``feature`` says who needs it ("the language server", "ecnc kins plot"), so the user knows
+    why an optional package is asked for.
+    """
+    try:
+        return importlib.import_module(module)
+    except ImportError as err:
+        missing = err.name or module
+        raise MissingExtra(f"{feature} needs {module} ({missing} is missing): "
+                           f"pip install 'edingcnc-lang[{extra}]'") from None
 
 
 class MachineError(EcncError):

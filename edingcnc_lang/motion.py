@@ -27,7 +27,7 @@ from .config import MachineConfig
 from .errors import EcncError, Location, MachineError, PluginError
 from .geometry import arc_extremes, sweep
 from .kinematics import abi
-from .kinematics.base import Kinematics, KinematicsDomainError, as_pose
+from .kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
 from .kinematics.trajectory import CURVATURE_SHARE, Dynamics, Geometry, dynamics, geometry_of
 
@@ -288,7 +288,7 @@ class MotionStage:
             if err.location is None:
                 err.location = where
             raise
-        except Exception as err:  # noqa: BLE001 - a user plug-in may raise anything
+        except PLUGIN_FAILURES as err:  # noqa: BLE001 - a user plug-in may raise anything
             name = getattr(self.active or self.plugin, "name", "?")
             raise PluginError(f"kinematics plug-in {name} failed: {type(err).__name__}: {err}", where) from None
 

@@ -58,6 +58,8 @@ class RunResult:
     # how long the run took, as planned, and the limits report (docs/planner.md); None when not planned
     estimate: Estimate | None = field(default_factory=Estimate)
     limits: dict[str, Any] | None = field(default_factory=dict)
+    # where the work zero is in machine coordinates: G5x + G92 + tool offsets, not turned by G68 or G51
+    work_zero: Pose = (0.0,) * 6
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -159,9 +161,9 @@ class Run:
         """The ini's plug-in; without an ini the built-in trivial kinematics (no plug-in lookup)."""
         if not self.config.path:
             return TrivialKinematics(self.config.kinematics_settings)
-        search = [Path(self.config.path).parent]
         try:
-            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
+            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings,
+                                   [self.config.folder])
         except EcncError as err:
             if err.location is None:  # point at the ini that names the plug-in
                 err.location = Location(self.config.path)
@@ -284,6 +286,7 @@ class Run:
             spindle=interp.spindle_state(),
             estimate=self.planner.estimate if self.planner else None,
             limits=self.planner.limits.to_json() if self.planner else None,
+            work_zero=tuple(interp.offset()),  # type: ignore[arg-type]
         )
 
 

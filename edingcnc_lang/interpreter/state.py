@@ -81,7 +81,6 @@ G_99 = G(99)
 PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
 # Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
 CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
-MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | t.CANNED_CYCLES
 DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
                  "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
@@ -267,7 +266,7 @@ class MachineState:
         css = self.css() if turning else None
         rpm = (css.rpm(end[0]) if css is not None else self.rpm) if turning else 0.0
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
-                             rpm, css, sync))
+                             rpm, css, sync, self.stack[0].line if self.stack else 0))
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
