@@ -132,6 +132,8 @@ class MachineConfig:
     cartesian_negative_limits: tuple[float, ...]
     cartesian_max_velocity: tuple[float, ...]
     cartesian_max_acceleration: tuple[float, ...]
+    tca_positive: tuple[float, ...]        # tool-change area, machine X Y Z (A B C unused); all 0: none
+    tca_negative: tuple[float, ...]
     user_output_start: int
     user_output_count: int
     tools: Mapping[int, ToolConfig]
@@ -203,6 +205,8 @@ class MachineConfig:
             cartesian_negative_limits=(-_WIDE_LIMIT,) * len(AXES),
             cartesian_max_velocity=(_WIDE_VELOCITY,) * len(AXES),
             cartesian_max_acceleration=(_WIDE_ACCELERATION,) * len(AXES),
+            tca_positive=(0.0,) * len(AXES),
+            tca_negative=(0.0,) * len(AXES),
             user_output_start=0,
             user_output_count=0,
             tools=MappingProxyType({}),
@@ -271,6 +275,8 @@ _CARTESIAN_FIELDS = (
     ("cartesian_negative_limits", "negativeLimit"),
     ("cartesian_max_velocity", "maxVelocity"),
     ("cartesian_max_acceleration", "maxAcceleration"),
+    ("tca_positive", "positiveLimitTCA"),  # the tool-change area (TCAGuard): X Y Z used
+    ("tca_negative", "negativeLimitTCA"),
 )
 _TOOL_DEFAULT = ToolConfig(number=0, length=0.0, diameter=0.0, width=0.0, x_delta=0.0, z_delta=0.0,
                            orientation=0, description="")
