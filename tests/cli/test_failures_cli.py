@@ -53,6 +53,16 @@ def test_a_configuration_error_is_a_json_error_too(tmp_path: Path) -> None:
     assert json.loads(result.stdout)["error"]["kind"] in ("plugin", "configuration")
 
 
+def test_a_limit_of_zero_is_a_configuration_error_naming_its_key(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X1\nG1 X5 F100\nM30\n")
+    ini = write(tmp_path, "cnc.ini", "[JOINT_0]\nname = X\nmaxVelocity = 0\nmaxAcceleration = 1000\n")
+    result = invoke("run", "--ini", ini, job)
+    assert result.exit_code == 70
+    assert result.stderr.startswith(f"{ini}:3: error: maxVelocity = 0 in [JOINT_0] must be greater than 0")
+    lint = invoke("lint", "--format", "json", "--ini", ini, job)
+    assert [(d["line"], d["code"]) for d in json.loads(lint.stdout)] == [(3, "C701")]
+
+
 def test_a_usage_error_with_json_is_a_json_error(tmp_path: Path) -> None:
     result = invoke("run", "--json", tmp_path / "missing.nc")
     assert result.exit_code == 2 and result.stderr.startswith("usage: ecnc run")
