@@ -60,9 +60,9 @@ G_GROUPS: Mapping[int, str] = _groups({
     "scaling": (50, 51),
     "non_modal": (4, 10, 28, 30, 53, 92, 92.1, 92.2, 92.3),
 })
-# The canned cycles the interpreter runs (cycles.py expands each into moves; G74/G76/G87 are
+# The canned cycles the interpreter runs (cycles.py expands each into moves; G76 is the lathe's,
 # reported as unsupported).
-CANNED_CYCLES = frozenset(code_key(c) for c in (73, 81, 82, 83, 84, 85, 86, 88, 89))
+CANNED_CYCLES = frozenset(code_key(c) for c in (73, 74, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 
 M_GROUPS: Mapping[int, str] = _groups({
     "stopping": (0, 1, 2, 30, 60),
@@ -135,7 +135,7 @@ COORD_SYSTEM = 5220        # 1..9
 COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + i
 COORD_STRIDE = 20
 SIMULATION = 5380
-SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..3 alternate spindles (M91..M93)
+SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..7 alternate spindles (M91..M97)
 RENDERING = 5397
 DIALOG_RESULT = 5398
 IO_RESULT = 5399

@@ -37,7 +37,7 @@ class BulkPath(MachineState):
         stage that the bulk moves pass through like any other.  Anything unusual, including every error, is left to the
         general path so messages stay exactly the same.
         """
-        if self.tanknife or self.clamped or self.modal["feed_mode"] != G_94 or self.config.lathe:
+        if self.tanknife or self.clamped or self.tca_guard or self.modal["feed_mode"] != G_94 or self.config.lathe:
             return first  # (a lathe's moves carry the spindle speed along them, which bulk rows do not)
         motion: int | None = self.modal["motion"]
         if motion not in (G_0, G_1):
