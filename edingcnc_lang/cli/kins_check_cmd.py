@@ -104,9 +104,9 @@ def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     from ..kinematics.workbench import check as workbench
     from ..kinematics.workbench.envelope import plot_envelope
 
-    from ..plot.formats import picture_target
+    from ..plot.formats import picture_format
 
-    fmt = picture_target(Path(output))  # before the workspace is searched
+    fmt = picture_format(Path(output))  # before the workspace is searched
     options = _options(**workspace)
     machine = workbench.read_machine(options.ini)
     kins = workbench.load_plugin(plugin, machine)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..errors import EXIT_USAGE, EcncError, MissingExtra
+from ..errors import EXIT_USAGE, EcncError, require_extra
 
 FORMATS = (".png", ".svg", ".pdf")
 
@@ -17,12 +17,8 @@ class PictureNameError(EcncError):
 
 
 def require_matplotlib() -> None:
-    """Fail with how to install matplotlib, rather than an ImportError traceback."""
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        raise MissingExtra("pictures need matplotlib, which is not installed: "
-                           "pip install 'edingcnc-lang[plot]'") from None
+    """Fail with how to install matplotlib (the ``plot`` extra), rather than an ImportError traceback."""
+    require_extra("matplotlib", "plot", "drawing a picture")
 
 
 def picture_format(out: Path) -> str:

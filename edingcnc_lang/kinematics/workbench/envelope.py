@@ -11,19 +11,20 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.plot.formats import picture_target
+from edingcnc_lang.canon import AXES
+from edingcnc_lang.errors import require_extra
 from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
+from edingcnc_lang.plot.formats import picture_format
 
 SLICES = ((0, 1, 2), (0, 2, 1), (1, 2, 0))  # (horizontal axis, vertical axis, the axis held at its middle)
 STATUS_COLOURS = ("#4c9a2a", "#d9d9d9", "#d62728", "#ff7f0e")  # reached, out of reach, raised, NaN
 
 
 def _pyplot():
-    import matplotlib
-
+    matplotlib = require_extra("matplotlib", "plot", "ecnc kins plot")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
@@ -44,12 +45,11 @@ def slice_grid(space: Workspace, across: int, up: int, resolution: int) -> tuple
 def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, resolution: int = 60,
                   fmt: str | None = None) -> Path:
     """Draw the slices into ``output`` (PNG, SVG or PDF by its extension, ``fmt`` when already checked)."""
-    fmt = fmt or picture_target(Path(output))
+    fmt = fmt or picture_format(Path(output))
     plt = _pyplot()
     from matplotlib.colors import ListedColormap
 
     fig, grid = plt.subplots(2, 3, figsize=(15, 9.5), constrained_layout=True)
-    names = "XYZABC"
     axes_all = [a for a in space.varying if a < 3] or space.varying
     for col, (across, up, held) in enumerate(SLICES):
         poses, xs, ys = slice_grid(space, across, up, resolution)
@@ -59,16 +59,16 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
         reach.imshow(status, origin="lower", extent=extent, aspect="auto", interpolation="nearest",
                      cmap=ListedColormap(STATUS_COLOURS), vmin=0, vmax=len(STATUS_COLOURS) - 1)
         held_at = space.centre[held]
-        reach.set_title(f"reachable: {names[across]}{names[up]} at {names[held]}={held_at:g}")
+        reach.set_title(f"reachable: {AXES[across]}{AXES[up]} at {AXES[held]}={held_at:g}")
         conds = np.full(len(poses), np.nan)
         ok = (status.ravel() == Status.OK)
         conds[ok] = jacobian_conditions(kins, poses[ok], space, axes_all)
         image = cond.imshow(np.log10(np.clip(conds, 1.0, 1e12)).reshape(len(ys), len(xs)), origin="lower",
                             extent=extent, aspect="auto", interpolation="nearest", cmap="magma_r", vmin=0, vmax=6)
-        cond.set_title(f"log10 condition number: {names[across]}{names[up]}")
+        cond.set_title(f"log10 condition number: {AXES[across]}{AXES[up]}")
         for ax in (reach, cond):
-            ax.set_xlabel(f"{names[across]} ({'mm' if across < 3 else 'deg'})")
-            ax.set_ylabel(f"{names[up]} ({'mm' if up < 3 else 'deg'})")
+            ax.set_xlabel(f"{AXES[across]} ({'mm' if across < 3 else 'deg'})")
+            ax.set_ylabel(f"{AXES[up]} ({'mm' if up < 3 else 'deg'})")
     fig.colorbar(image, ax=list(grid[1]), shrink=0.8, label="log10 condition number (6 = singular)")
     legend = [plt.Rectangle((0, 0), 1, 1, color=c) for c in STATUS_COLOURS]
     fig.legend(legend, ["reached", "out of reach", "raised", "NaN / inf"], loc="outside upper right", ncols=4)
