@@ -5,8 +5,8 @@ Each test reads the written image back and finds the path's colour at the pixels
 """
 from __future__ import annotations
 
-import builtins
 import re
+import sys
 from pathlib import Path
 
 import click
@@ -166,14 +166,7 @@ def test_an_unknown_extension_is_a_plain_error(square, tmp_path: Path) -> None:
 
 
 def test_without_matplotlib_the_message_says_how_to_install_it(monkeypatch: pytest.MonkeyPatch) -> None:
-    real_import = builtins.__import__
-
-    def no_matplotlib(name: str, *args, **kwargs):
-        if name.split(".")[0] == "matplotlib":
-            raise ImportError(name)
-        return real_import(name, *args, **kwargs)
-
-    monkeypatch.setattr(builtins, "__import__", no_matplotlib)
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # what an import finds when it is not installed
     with pytest.raises(MissingExtra, match=r"pip install 'edingcnc-lang\[plot\]'") as caught:
         require_matplotlib()
     assert caught.value.exit_code == 2
