@@ -361,6 +361,14 @@ _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
     ("KINEMATICS", "userOutputStartVariable",
      lambda c: c.user_output_start == 0 or c.user_output_count > 0,
      "is set but userOutputNumVariables is 0, so nothing would be written (set it to 1..12)"),
+    # a joint or axis that may not move or speed up is a broken configuration, not "no limit"
+    *((f"JOINT_{i}", key, lambda c, i=i, name=name: getattr(c.joints[i], name) > 0, f"must be greater than 0 ({unit})")
+      for i in range(len(AXES))
+      for name, key, unit in (("max_velocity", "maxVelocity", "mm/s"), ("max_acceleration", "maxAcceleration", "mm/s^2"))),
+    *(("KINEMATICS", prefix + axis, lambda c, i=i, name=name: getattr(c, name)[i] > 0, f"must be greater than 0 ({unit})")
+      for name, prefix, unit in (("cartesian_max_velocity", "maxVelocity", "mm/s"),
+                                 ("cartesian_max_acceleration", "maxAcceleration", "mm/s^2"))
+      for i, axis in enumerate(AXES)),
 )
 
 
