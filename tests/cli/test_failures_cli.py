@@ -121,6 +121,22 @@ def test_a_trace_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
     assert result.returncode == 70 and "/dev/full" in result.stderr and "Traceback" not in result.stderr
 
 
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
+def test_an_events_file_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\nM3 S1000\nG1 X2 F100\n")
+    result = _shell("ecnc run job.nc --events /dev/full", tmp_path)
+    assert result.returncode == 70
+    assert result.stderr == "error: cannot write /dev/full: No space left on device\n"
+
+
+def test_samples_with_another_extension_is_a_usage_error(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\n")
+    result = _shell("ecnc run job.nc --samples out.xyz", tmp_path)
+    assert result.returncode == 2 and not (tmp_path / "out.xyz").exists()
+    assert ("ecnc run: error: --samples out.xyz: the samples file must end in .csv or .npz "
+            "(or be - for CSV on standard output)") in result.stderr
+
+
 def test_errors_with_stderr_closed_keep_their_exit_code(tmp_path: Path) -> None:
     write(tmp_path, "bad.nc", "G0 X[1\n")
     result = _shell("ecnc run bad.nc 2>&-", tmp_path)
