@@ -1,10 +1,10 @@
 """What the motion planner adds to ``ecnc run``: a 200,000-move job, planning time against the rest.
 
-The target (issue 13) is that planning adds at most 25 % to a run.  A run cannot be made without
-the planner, so this times the planner stage's own calls inside ``run_file`` (the wrapper costs
-less than a microsecond per call, and the fast path calls it once per batch of lines) and reports
-them against everything else, as the median of ``--repeat`` runs in fresh processes.  It also
-times the planner alone on the same moves (moves/s).
+The target (issue 13) is that planning adds at most 25 % to a run.  This times the planner stage's
+own calls inside ``run_file`` (the wrapper costs less than a microsecond per call, and the fast path
+calls it once per batch of lines) and reports them against everything else, as the median of
+``--repeat`` runs in fresh processes; and, directly, the same run with ``RunOptions(plan=False)``
+(no planner at all), the two alternating.  It also times the planner alone on the same moves.
 
     python benchmarks/bench_planner.py [--moves 200000] [--repeat 5]
 """
@@ -24,7 +24,7 @@ from bench_run import write_g1_job
 CHILD = r"""
 import json, sys, time
 from edingcnc_lang.planner import stage
-from edingcnc_lang import run_file
+from edingcnc_lang import RunOptions, run_file
 spent = [0.0]
 def timed(name):
     original = getattr(stage.Planner, name)
@@ -39,9 +39,9 @@ for name in ("move", "straight_moves", "event", "flush", "close"):
     timed(name)
 import numpy  # loaded by the first planned window in a normal run; loaded here so it is not counted
 start = time.perf_counter()
-result = run_file(sys.argv[1])
+result = run_file(sys.argv[1], RunOptions(plan=sys.argv[2] == "plan"))
 total = time.perf_counter() - start
-print(json.dumps({"total": total, "planner": spent[0], "seconds": result.estimate.seconds}))
+print(json.dumps({"total": total, "planner": spent[0], "seconds": result.estimate.seconds if result.estimate else 0}))
 """
 
 ALONE = r"""
@@ -74,8 +74,13 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as folder:
         job = Path(folder) / "job.nc"
         write_g1_job(job, args.moves)
-        runs = [json.loads(subprocess.run([sys.executable, "-c", CHILD, str(job)], capture_output=True, text=True,
-                                          check=True).stdout) for _ in range(args.repeat)]
+        def child(mode: str) -> dict[str, float]:
+            return json.loads(subprocess.run([sys.executable, "-c", CHILD, str(job), mode], capture_output=True,
+                                             text=True, check=True).stdout)
+
+        pairs = [(child("plan"), child("noplan")) for _ in range(args.repeat)]
+        runs = [planned for planned, _ in pairs]
+        unplanned = statistics.median(r["total"] for _, r in pairs)
         alone = [float(subprocess.run([sys.executable, "-c", ALONE, str(args.moves)], capture_output=True, text=True,
                                       check=True).stdout) for _ in range(args.repeat)]
     share = [r["planner"] / (r["total"] - r["planner"]) for r in runs]
@@ -87,6 +92,8 @@ def main() -> None:
         ("  of which planning", f"{planning:.2f} s", ""),
         ("  planning added to the rest of the run", f"{statistics.median(share) * 100:.1f} % "
          f"({min(share) * 100:.1f}-{max(share) * 100:.1f} %)", "<= 25 %"),
+        ("the same run with RunOptions(plan=False)", f"{unplanned:.2f} s", ""),
+        ("  planned run over it", f"{(total / unplanned - 1) * 100:.1f} %", "<= 25 %"),
         ("planner alone, same moves", f"{args.moves / statistics.median(alone) / 1e6:.2f} M moves/s", ""),
         ("estimated job time", f"{runs[0]['seconds'] / 3600:.1f} h", ""),
     ]

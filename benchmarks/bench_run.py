@@ -155,13 +155,17 @@ def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     """A three-line job from process start, and its lead over Python alone and Python importing click."""
     job = tmp / "three.nc"
     job.write_text("G0 X1\nG1 Y1 F100\nM30\n")
+    trace = tmp / "three.csv"
     res = median_runs({"ecnc": ECNC_SCRIPT + ["run", str(job)], "python": [sys.executable, "-c", "pass"],
-                       "click": [sys.executable, "-c", "import click"]}, max(repeat * 4, 21))
-    ecnc, python, click = (res[name][0] * 1000 for name in ("ecnc", "python", "click"))
+                       "click": [sys.executable, "-c", "import click"],
+                       "planned": ECNC_SCRIPT + ["run", str(job), "--trace", str(trace)]}, max(repeat * 4, 21))
+    ecnc, python, click, planned = (res[name][0] * 1000 for name in ("ecnc", "python", "click", "planned"))
     label = "ecnc run of a three-line job, from process start"
     return [(f"{label} (reference: python -c pass)", f"{ecnc:.0f} ms", f"{python:.0f} ms", f"lead {ecnc - python:.0f} ms"),
             (f"{label} (reference: python -c 'import click')", f"{ecnc:.0f} ms", f"{click:.0f} ms",
-             f"lead {ecnc - click:.0f} ms")]
+             f"lead {ecnc - click:.0f} ms"),
+            ("the same with --trace FILE (the trace's t column: planned, loads numpy)", f"{planned:.0f} ms",
+             f"{click:.0f} ms", f"lead {planned - click:.0f} ms")]
 
 
 BENCHES: dict[str, Callable[[Path, int], list[tuple[str, str, str, str]]]] = {

@@ -15,6 +15,16 @@ from .spindle import Css
 Pose = tuple[float, ...]  # six values: x y z a b c (or the joints jx .. jc)
 AXES = "XYZABC"
 
+
+def format_pose(values: Sequence[float] | None, names: Sequence[str] = AXES, spec: str = ".6g") -> str:
+    """``X10 Y-2.5 Z0 A0 B0 C0``: one word per value, for every message and report that shows a pose.
+
+    ``None`` is ``-`` (no pose); NaN stays visible.  ``names`` may be joint names instead of axes.
+    """
+    if values is None:
+        return "-"
+    return " ".join(f"{name}{float(v):{spec}}" for name, v in zip(names, values))
+
 # Arc planes: the two in-plane axis indices and the normal axis index.
 PLANES: Mapping[str, tuple[int, int, int]] = {"XY": (0, 1, 2), "XZ": (2, 0, 1), "YZ": (1, 2, 0)}
 
@@ -51,6 +61,7 @@ class Move:
     spindle: float = 0.0
     css: Css | None = None
     sync: float = 0.0
+    caller: int = 0  # a move made inside a sub: the line of the outermost call (GoSub, M code, T M6)
 
 
 @dataclass(frozen=True, slots=True)

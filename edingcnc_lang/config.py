@@ -132,10 +132,28 @@ class MachineConfig:
     cartesian_negative_limits: tuple[float, ...]
     cartesian_max_velocity: tuple[float, ...]
     cartesian_max_acceleration: tuple[float, ...]
+    tca_positive: tuple[float, ...]        # tool-change area, machine X Y Z (A B C unused); all 0: none
+    tca_negative: tuple[float, ...]
     user_output_start: int
     user_output_count: int
     tools: Mapping[int, ToolConfig]
     variables: Mapping[int, float]
+    sections: frozenset[str] = frozenset()  # the ini's section names, lower case: which ones it GAVE
+
+    @property
+    def folder(self) -> Path | None:
+        """The ini's folder: where plug-in and macro files named in it are looked for (None without an ini)."""
+        return Path(self.path).parent if self.path else None
+
+    def gives_cartesian_limits(self, axis: int) -> bool:
+        """Whether ``[KINEMATICS]`` sets both positiveLimit and negativeLimit of ``axis`` (else defaults)."""
+        letter = AXES[axis].lower()
+        return all(f"{side}limit{letter}" in self.kinematics_settings for side in ("positive", "negative"))
+
+    @property
+    def gives_joint_sections(self) -> bool:
+        """Whether the ini has any ``[JOINT_n]`` section (else the joints are the wide defaults)."""
+        return any(name.startswith("joint_") for name in self.sections)
 
     @property
     def lathe(self) -> bool:
@@ -187,6 +205,8 @@ class MachineConfig:
             cartesian_negative_limits=(-_WIDE_LIMIT,) * len(AXES),
             cartesian_max_velocity=(_WIDE_VELOCITY,) * len(AXES),
             cartesian_max_acceleration=(_WIDE_ACCELERATION,) * len(AXES),
+            tca_positive=(0.0,) * len(AXES),
+            tca_negative=(0.0,) * len(AXES),
             user_output_start=0,
             user_output_count=0,
             tools=MappingProxyType({}),
@@ -255,6 +275,8 @@ _CARTESIAN_FIELDS = (
     ("cartesian_negative_limits", "negativeLimit"),
     ("cartesian_max_velocity", "maxVelocity"),
     ("cartesian_max_acceleration", "maxAcceleration"),
+    ("tca_positive", "positiveLimitTCA"),  # the tool-change area (TCAGuard): X Y Z used
+    ("tca_negative", "negativeLimitTCA"),
 )
 _TOOL_DEFAULT = ToolConfig(number=0, length=0.0, diameter=0.0, width=0.0, x_delta=0.0, z_delta=0.0,
                            orientation=0, description="")
@@ -339,6 +361,14 @@ _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
     ("KINEMATICS", "userOutputStartVariable",
      lambda c: c.user_output_start == 0 or c.user_output_count > 0,
      "is set but userOutputNumVariables is 0, so nothing would be written (set it to 1..12)"),
+    # a joint or axis that may not move or speed up is a broken configuration, not "no limit"
+    *((f"JOINT_{i}", key, lambda c, i=i, name=name: getattr(c.joints[i], name) > 0, f"must be greater than 0 ({unit})")
+      for i in range(len(AXES))
+      for name, key, unit in (("max_velocity", "maxVelocity", "mm/s"), ("max_acceleration", "maxAcceleration", "mm/s^2"))),
+    *(("KINEMATICS", prefix + axis, lambda c, i=i, name=name: getattr(c, name)[i] > 0, f"must be greater than 0 ({unit})")
+      for name, prefix, unit in (("cartesian_max_velocity", "maxVelocity", "mm/s"),
+                                 ("cartesian_max_acceleration", "maxAcceleration", "mm/s^2"))
+      for i, axis in enumerate(AXES)),
 )
 
 
@@ -377,6 +407,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
         **_read_cartesian(ini, base),
         tools=_read_tools(ini),
         variables=_read_variables(ini),
+        sections=frozenset(ini.sections),
     )
     _validate(ini, config)
     return config

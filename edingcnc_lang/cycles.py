@@ -1,4 +1,4 @@
-"""Canned drilling cycles (G73, G81-G89) expanded into plain moves.
+"""Canned drilling cycles (G73, G74, G81-G89) expanded into plain moves.
 
 Works along the drilling axis only: given the hole position and the
 clearance, R and bottom levels it returns the sequence of (kind, depth)
@@ -17,7 +17,7 @@ PECK_CLEARANCE_MM = 0.254  # G83 re-entry above the last depth, G73 chip-break r
 class Step:
     """One action at the hole: a rapid or feed along the drilling axis, a dwell, or a spindle switch."""
 
-    kind: str  # "rapid" | "feed" | "dwell" | "spindle_stop" | "spindle_start"
+    kind: str  # "rapid" | "feed" | "dwell" | "spindle_stop" | "spindle_start" | "spindle_reverse" | "shift" | "center"
     level: float = 0.0  # drilling-axis coordinate (rapid/feed); seconds for dwell
 
 
@@ -65,6 +65,20 @@ def g84(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]
     return [Step("feed", bottom), Step("feed", r), Step("rapid", clear)]
 
 
+def g74(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    # left-hand tapping: in with the spindle as it turns (M4), reversed at the bottom to come out
+    return [Step("feed", bottom), Step("dwell", p), Step("spindle_reverse"), Step("feed", r),
+            Step("spindle_start"), Step("rapid", clear)]
+
+
+def g87(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
+    # back boring (q is the level bored up to): oriented stop, shifted by I J past the bar, down below the
+    # part, back on centre, bore upwards with the spindle on, stop, shift, out, back on centre
+    return [Step("spindle_stop"), Step("shift"), Step("rapid", bottom), Step("center"), Step("spindle_start"),
+            Step("feed", q), Step("dwell", p), Step("spindle_stop"), Step("shift"), Step("rapid", clear),
+            Step("center"), Step("spindle_start")]
+
+
 def g85(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
     return [Step("feed", bottom), Step("feed", r), Step("rapid", clear)]
 
@@ -87,6 +101,6 @@ def g89(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]
 CycleFn = Callable[[float, float, float, float, float], list[Step]]
 
 # Keyed by G number in integer tenths; the flags say which cycles need Q > 0.
-CYCLES: dict[int, CycleFn] = {730: g73, 810: g81, 820: g82, 830: g83, 840: g84, 850: g85, 860: g86,
-                              880: g88, 890: g89}
+CYCLES: dict[int, CycleFn] = {730: g73, 740: g74, 810: g81, 820: g82, 830: g83, 840: g84, 850: g85, 860: g86,
+                              870: g87, 880: g88, 890: g89}
 NEEDS_Q = frozenset({730, 830})

@@ -9,8 +9,9 @@ its joints, the limits it runs against and the speed the joints allow to the pla
 (``planner/``), which times it and feeds the output sinks.
 See docs/kinematics.md ("Running jobs") for the rules.
 
-numpy is imported by the sampling methods only: while the joints are simply the position (no
-kinematics, trivial kinematics, no bend knife) and no samples are written, a run never loads it.
+numpy is imported by the sampling methods and for the limits a move is timed against: while the
+joints are simply the position (no kinematics, trivial kinematics, no bend knife), no samples are
+written and nothing reads time (the planner is ``planner.untimed``), a run never loads it.
 """
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ from .config import MachineConfig
 from .errors import EcncError, Location, MachineError, PluginError
 from .geometry import arc_extremes, sweep
 from .kinematics import abi
-from .kinematics.base import Kinematics, KinematicsDomainError, as_pose
+from .kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
 from .kinematics.trajectory import CURVATURE_SHARE, Dynamics, Geometry, dynamics, geometry_of
 
@@ -42,11 +43,14 @@ PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the 
 class PlannerStage(Protocol):
     """The next stage: takes every executed move with its joints and limits, and the events."""
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits,
+    # False: the stage does not time moves (``planner.untimed``), so they need no limits (nor numpy)
+    needs_limits: bool
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
     def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                       limits: dict[str, AxisLimits]) -> None: ...
+                       limits: dict[str, AxisLimits] | None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -143,7 +147,8 @@ class MotionStage:
         self.moves += 1
         if self.active is not None:
             self._user_output(self.active, _located(move))
-        self.planner.move(move, joints, samples, self._limits_for(move), cap, accel)
+        self.planner.move(move, joints, samples, self._limits_for(move) if self.planner.needs_limits else None,
+                          cap, accel)
 
     def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
         """Straight moves in bulk; joints = position and no samples make this the cheap case."""
@@ -173,7 +178,8 @@ class MotionStage:
         if batch:
             self.moves += len(batch)
             self.joints = batch[-1][2]
-            self.planner.straight_moves(path, start, batch, self._straight_limits)
+            self.planner.straight_moves(path, start, batch,
+                                        self._straight_limits if self.planner.needs_limits else None)
 
     @cached_property
     def _straight_limits(self) -> dict[str, AxisLimits]:
@@ -282,7 +288,7 @@ class MotionStage:
             if err.location is None:
                 err.location = where
             raise
-        except Exception as err:  # noqa: BLE001 - a user plug-in may raise anything
+        except PLUGIN_FAILURES as err:  # noqa: BLE001 - a user plug-in may raise anything
             name = getattr(self.active or self.plugin, "name", "?")
             raise PluginError(f"kinematics plug-in {name} failed: {type(err).__name__}: {err}", where) from None
 

@@ -22,7 +22,7 @@ from .interpreter import Interpreter
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
-from .motion import MotionStage
+from .motion import MotionStage, PlannerStage
 from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
 from .diagnostics import Diagnostic
 from .limits import DEFAULT_MAX_STEPS
@@ -30,6 +30,7 @@ from .parser import StatementReader, check_file, parse_file, parse_text, read_st
 from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
+from .planner.untimed import Untimed
 from .source import iter_text_lines
 from .stages import STAGES, Pipeline
 
@@ -54,8 +55,11 @@ class RunResult:
     error_record: dict[str, Any] | None = None  # the same error as the --json ``error`` object
     warnings: list[Diagnostic] = field(default_factory=list)  # macro lines that do not parse (tolerant load)
     spindle: dict[str, Any] = field(default_factory=dict)  # direction, G96/G97, S, rpm, max_rpm
-    estimate: Estimate = field(default_factory=Estimate)  # how long the run took, as planned
-    limits: dict[str, Any] = field(default_factory=dict)  # the limits report (see docs/planner.md)
+    # how long the run took, as planned, and the limits report (docs/planner.md); None when not planned
+    estimate: Estimate | None = field(default_factory=Estimate)
+    limits: dict[str, Any] | None = field(default_factory=dict)
+    # where the work zero is in machine coordinates: G5x + G92 + tool offsets, not turned by G68 or G51
+    work_zero: Pose = (0.0,) * 6
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -72,7 +76,7 @@ class RunResult:
             "modal": self.modal,
             "ended_by": self.ended_by,
             "spindle": self.spindle,
-            "estimate": self.estimate.to_json(),
+            "estimate": self.estimate.to_json() if self.estimate is not None else None,
             "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
             **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
@@ -103,6 +107,9 @@ class RunOptions:
     on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
     feed_override: float = 100.0   # percent
     rapid_override: float = 100.0  # percent, at most 100
+    # False: time the moves only if an output reads time (trace, samples, events, on_timed_move);
+    # otherwise the run skips the planner (no numpy) and its estimate and limits are None
+    plan: bool = True
 
 
 def packaged_macro() -> Path:
@@ -128,17 +135,24 @@ class Run:
             sinks.append(EventsWriter(ensure_parent(options.events)))
         if options.on_move or options.on_event or options.on_timed_move:
             sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
-        self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
-        self.motion = MotionStage(self.config, self.kinematics, self.planner, self._write_param,
+        self.planner: Planner | None = None
+        stage: PlannerStage
+        if options.plan or _reads_time(options):
+            stage = self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
+        else:
+            stage = Untimed(overrides, options.on_move, options.on_event)
+        self.motion = MotionStage(self.config, self.kinematics, stage, self._write_param,
                                   sample_always=options.samples is not None)
-        self.planner.joints_of = self.motion.joints_at
+        if self.planner is not None:
+            self.planner.joints_of = self.motion.joints_at
         self.pipeline = Pipeline(STAGES, self.motion, self.config)
         self.interpreter = Interpreter(self.pipeline.head, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete)
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
-        self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
+        if self.planner is not None:
+            self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)
@@ -147,9 +161,9 @@ class Run:
         """The ini's plug-in; without an ini the built-in trivial kinematics (no plug-in lookup)."""
         if not self.config.path:
             return TrivialKinematics(self.config.kinematics_settings)
-        search = [Path(self.config.path).parent]
         try:
-            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings, search)
+            return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings,
+                                   [self.config.folder])
         except EcncError as err:
             if err.location is None:  # point at the ini that names the plug-in
                 err.location = Location(self.config.path)
@@ -221,7 +235,7 @@ class Run:
             error = MachineError("blocks and sub calls are nested too deeply to run",
                                  Location(interp.path, interp.line))
         except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
-            error = _write_error(err, (self.options.trace, self.options.samples))
+            error = _write_error(err, self._outputs)
         except KeyboardInterrupt:  # Ctrl-C: say where the job was, report the state so far (exit 130)
             error = Interrupted("interrupted (Ctrl-C)", Location(interp.path, interp.line))
         finally:
@@ -229,7 +243,7 @@ class Run:
             try:
                 self.motion.close()
             except OSError as err:
-                error = error or _write_error(err, (self.options.trace, self.options.samples))
+                error = error or _write_error(err, self._outputs)
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -238,6 +252,11 @@ class Run:
             save_variables(self.config.path, interp.params.snapshot_changed())
         return result
 
+    @property
+    def _outputs(self) -> tuple[Path | None, ...]:
+        """The files the run writes, to name in an error when a buffered write fails without a name."""
+        return (self.options.trace, self.options.samples, self.options.events)
+
     def _flush(self, error: EcncError | None) -> EcncError | None:
         """Emit the moves the pipeline still holds; on a failed run the first error is the one reported."""
         try:
@@ -245,7 +264,7 @@ class Run:
         except EcncError as err:
             return error or err
         except OSError as err:
-            return error or _write_error(err)
+            return error or _write_error(err, self._outputs)
         return error
 
     def result(self, error: EcncError | None = None) -> RunResult:
@@ -270,18 +289,28 @@ class Run:
             error_record=error.to_json() if error else None,
             warnings=list(self.warnings),
             spindle=interp.spindle_state(),
-            estimate=self.planner.estimate,
-            limits=self.planner.limits.to_json(),
+            estimate=self.planner.estimate if self.planner else None,
+            limits=self.planner.limits.to_json() if self.planner else None,
+            work_zero=tuple(interp.offset()),  # type: ignore[arg-type]
         )
 
 
 def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError:
     """A failed write, naming the file: the error's own, else the output files the run writes.
 
-    A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
+    A buffered write that fails (a full disk) carries no file name; it is the trace, samples or events file.
+    A closed pipe (``ecnc run --trace - | head``) is no failure of the run: it is raised again, so
+    the CLI ends quietly with exit 1 as after any closed pipe.
     """
+    if isinstance(err, BrokenPipeError):
+        raise err
     names = ["standard output" if str(p) == "-" else str(p) for p in outputs if p is not None]
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
+
+
+def _reads_time(options: RunOptions) -> bool:
+    """An output that reads each move's planned time: the trace's t column, samples, events, ``on_timed_move``."""
+    return bool(options.trace or options.samples or options.events or options.on_timed_move)
 
 
 def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:

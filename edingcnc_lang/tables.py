@@ -21,6 +21,25 @@ def code_name(letter: str, key: int) -> str:
     return f"{letter}{whole}" + (f".{tenth}" if tenth else "")
 
 
+TOOL_CHANGE_SUB = "change_tool"  # the sub M6 calls when it is defined
+TOOL_CHANGE = code_key(6)
+
+
+def m_sub_name(key: int) -> str | None:
+    """The sub an M code without a built-in runs (``m100`` for M100), None for M codes with a tenth.
+
+    The interpreter and the linter both name the sub this way, so what a job runs and what the
+    linter links an M code to cannot differ.
+    """
+    whole, tenth = divmod(key, 10)
+    return None if tenth else f"m{whole}"
+
+
+def m_code_sub(key: int) -> str | None:
+    """The sub an M code (integer tenths) runs if it is defined: ``m100``, ``change_tool`` for M6."""
+    return TOOL_CHANGE_SUB if key == TOOL_CHANGE else m_sub_name(key)
+
+
 def _groups(spec: dict[str, tuple[float, ...]]) -> Mapping[int, str]:
     return MappingProxyType({code_key(c): group for group, codes in spec.items() for c in codes})
 
@@ -41,9 +60,9 @@ G_GROUPS: Mapping[int, str] = _groups({
     "scaling": (50, 51),
     "non_modal": (4, 10, 28, 30, 53, 92, 92.1, 92.2, 92.3),
 })
-# The canned cycles the interpreter runs (cycles.py expands each into moves; G74/G76/G87 are
+# The canned cycles the interpreter runs (cycles.py expands each into moves; G76 is the lathe's,
 # reported as unsupported).
-CANNED_CYCLES = frozenset(code_key(c) for c in (73, 81, 82, 83, 84, 85, 86, 88, 89))
+CANNED_CYCLES = frozenset(code_key(c) for c in (73, 74, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 
 M_GROUPS: Mapping[int, str] = _groups({
     "stopping": (0, 1, 2, 30, 60),
@@ -116,7 +135,7 @@ COORD_SYSTEM = 5220        # 1..9
 COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + i
 COORD_STRIDE = 20
 SIMULATION = 5380
-SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..3 alternate spindles (M91..M93)
+SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..7 alternate spindles (M91..M97)
 RENDERING = 5397
 DIALOG_RESULT = 5398
 IO_RESULT = 5399

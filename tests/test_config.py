@@ -327,3 +327,17 @@ def test_save_then_load_round_trips(tmp_path_factory: pytest.TempPathFactory,
     for number, value in values.items():
         assert loaded[number] == pytest.approx(value, abs=1e-6)
     assert b"\n" not in path.read_bytes().replace(b"\r\n", b"")
+
+
+@pytest.mark.parametrize(("text", "line", "fragment"), [
+    ("[JOINT_0]\nname = X\nmaxVelocity = 0\n", 3, "maxVelocity = 0 in [JOINT_0] must be greater than 0 (mm/s)"),
+    ("[JOINT_5]\nmaxAcceleration = -5 ; not used\n", 2, "maxAcceleration = -5 in [JOINT_5] must be greater than 0"),
+    ("[KINEMATICS]\nmaxVelocityB = 0.0\n", 2, "maxVelocityB = 0.0 in [KINEMATICS] must be greater than 0"),
+    ("[KINEMATICS]\nmaxVelocityX = 25\nmaxAccelerationC = -1\n", 3, "maxAccelerationC = -1 in [KINEMATICS]"),
+])
+def test_a_limit_of_zero_or_less_is_an_error(tmp_path: Path, text: str, line: int, fragment: str) -> None:
+    path = write(tmp_path, text, eol="\r\n")
+    with pytest.raises(ConfigError) as info:
+        load_config(path)
+    assert (info.value.location.path, info.value.location.line) == (str(path), line)
+    assert fragment in info.value.message

@@ -1,12 +1,15 @@
 """Start-up cost: what a short run and ``ecnc --help`` import.
 
 numpy (~100 ms) and lark (~50 ms) dominate the start of a three-line job.  The motion planner
-times moves with numpy, so a job that moves loads it; a job that only computes (a macro test, a
-variables job) must not, and ``ecnc --help`` loads neither.  Each check runs
-in a fresh interpreter, because this test process has imported everything already.
+times moves with numpy, so it runs only when an output reads time (``--json``, the trace, samples,
+events, the summary line on a terminal, ``on_timed_move``; the API plans by default): a plain
+``ecnc run`` of a job that moves loads no numpy, nor does a job that only computes (a macro test,
+a variables job), and ``ecnc --help`` loads neither.  Each check runs in a fresh interpreter,
+because this test process has imported everything already.
 """
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -40,6 +43,51 @@ def test_a_job_that_does_not_move_does_not_import_numpy(tmp_path: Path) -> None:
     out = _python("-c", RUN_TRIVIAL_JOB, str(job), str(tmp_path / "trace.csv")).stdout.split()
     assert out == ["(0.0,", "0.0,", "0.0,", "0.0,", "0.0,", "0.0)", "0", "False"]
     assert len((tmp_path / "trace.csv").read_text().splitlines()) == 1  # the header only
+
+
+MOVING_JOB = "G0 X1\nG1 X5 F100\nG2 X7 Y0 I1 J0\nG0 Z2\nM30\n"
+
+RUN_UNPLANNED = """
+import sys
+from edingcnc_lang import RunOptions, run_file
+moves = []
+result = run_file(sys.argv[1], RunOptions(plan=False, on_move=lambda move, joints: moves.append(move.line)))
+print(moves, result.estimate, result.limits, 'numpy' in sys.modules)
+"""
+
+
+def test_a_plain_run_of_a_job_that_moves_does_not_import_numpy(tmp_path: Path) -> None:
+    job = tmp_path / "moves.nc"
+    job.write_text(MOVING_JOB)
+    result = _python("-X", "importtime", "-m", "edingcnc_lang", "run", str(job))
+    modules = _imported_modules(result.stderr)
+    assert "edingcnc_lang.motion" in modules  # the job really ran
+    assert not {"numpy", "edingcnc_lang.planner.profile", "edingcnc_lang.planner.segments"} & modules
+
+
+def test_an_unplanned_api_run_reports_moves_but_no_estimate(tmp_path: Path) -> None:
+    job = tmp_path / "moves.nc"
+    job.write_text(MOVING_JOB)
+    assert _python("-c", RUN_UNPLANNED, str(job)).stdout.split() == ["[1,", "2,", "3,", "4]", "None", "None", "False"]
+
+
+def _planned_seconds(output: str, stdout: str) -> float:
+    """The job's planned duration as each output tells it."""
+    if output == "--json":
+        return float(json.loads(stdout)["estimate"]["seconds"])
+    if output == "--trace":
+        return float(stdout.splitlines()[-1].rsplit(",", 1)[1])  # the t column of the last move
+    return max(json.loads(line).get("t", 0.0) for line in stdout.splitlines())
+
+
+@pytest.mark.parametrize("output", ["--json", "--trace", "--events"])
+def test_outputs_that_read_time_still_plan(tmp_path: Path, output: str) -> None:
+    job = tmp_path / "moves.nc"
+    job.write_text(MOVING_JOB)
+    args = [output] if output == "--json" else [output, "-"]
+    result = _python("-X", "importtime", "-m", "edingcnc_lang", "run", str(job), *args)
+    assert "numpy" in _imported_modules(result.stderr)
+    assert _planned_seconds(output, result.stdout) > 2.4  # 4 mm at 100 mm/min alone take 2.4 s
 
 
 def test_samples_still_load_numpy(tmp_path: Path) -> None:

@@ -31,11 +31,12 @@ kins = LazyGroup("kins", lazy=SUBCOMMANDS, short_help="List, evaluate, build and
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
     """The ``[KINEMATICS]`` section and the ini's folder (where plug-in files are looked for)."""
-    from ..ini import read_ini
+    from ..config import load_config
 
     if ini is None:
         return {}, ()
-    return read_ini(ini).section("KINEMATICS"), (ini.parent,)
+    config = load_config(ini)
+    return config.kinematics_settings, (config.folder,) if config.folder else ()
 
 
 def _switched_on(name: str, ini: str | None) -> Kinematics:

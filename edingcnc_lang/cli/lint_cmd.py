@@ -10,7 +10,7 @@ import click
 from ..errors import EXIT_FINDINGS, EXIT_OK
 from . import progress
 from .base import Command, usage_error
-from .common import whole_trees
+from ..gcpause import whole_trees
 from .options import ini_option, macro_options
 from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN
 from .streams import STDIN_NAME, read_stdin

@@ -105,7 +105,9 @@ def _show(outcome: MdiOutcome) -> None:
 
 
 def _pose(values: Pose) -> str:
-    return " ".join(f"{axis}{value:.4f}" for axis, value in zip("XYZABC", values))
+    from ..canon import format_pose
+
+    return format_pose(values, spec=".4f")
 
 
 def ask_dialog(title: str, fields: Sequence[DialogField]) -> DialogAnswer:

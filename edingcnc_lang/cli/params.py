@@ -229,7 +229,6 @@ class Answer(click.ParamType):
         return [CompletionItem(word) for word in ("ok", "cancel", "ok:#") if word.startswith(incomplete)]
 
 
-EXISTING_PATH = ExistingPath()
 EXISTING_FILE = ExistingFile()
 INPUT_PATH = ExistingPath(stdin=True)  # a path to lint, or - for standard input
 INPUT_FILE = ExistingFile(stdin=True)  # a job or file to parse, or - for standard input

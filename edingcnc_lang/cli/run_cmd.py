@@ -44,10 +44,19 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
                                           ("--events -", events)) if value in (True, STDOUT)]
     if len(to_stdout) > 1:
         raise usage_error(f"only one output can go to standard output, not {' and '.join(to_stdout)}")
+    if samples:
+        from ..outputs import samples_format_problem
+
+        problem = samples_format_problem(Path(samples))
+        if problem:
+            raise usage_error(f"--samples {problem}")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
                                   samples=Path(samples) if samples else None,
                                   events=Path(events) if events else None, save_vars=save_vars,
-                                  feed_override=feed_override, rapid_override=rapid_override)
+                                  feed_override=feed_override, rapid_override=rapid_override,
+                                  # the summary line and --json report the planner's estimate; the
+                                  # trace, samples and events make the runner plan anyway
+                                  plan=as_json or progress.wanted(quiet))
     # an error carries the state so far: main() prints it with --json
     run = Run(options)
     if job == STDIN:
@@ -60,7 +69,7 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
         import json  # only with --json: a short run starts faster without it
 
         print(json.dumps(result.to_json(), indent=1))
-    if progress.wanted(quiet):  # for people at a terminal (not with --quiet); scripts read --json
+    if progress.wanted(quiet) and result.estimate is not None:  # for people at a terminal; scripts read --json
         print(result.estimate.summary(), file=sys.stderr)
     return EXIT_OK
 

@@ -32,11 +32,12 @@ class BulkPath(MachineState):
         """Execute lines[first:] as long as each is a plain G0/G1 move; returns the first it left.
 
         This is the per-line work of ``_exec_plain`` and ``_execute_line`` for the case that
-        dominates CAM output (axis words, F, G0/G1, N only; G94; no G68, tangential knife or lathe),
-        done without building nodes.  Anything unusual, including every error, is left to the
+        dominates CAM output (axis words, F, G0/G1, N only; G94; no tangential knife, not on a
+        lathe), done without building nodes.  G68 does not stop it: rotation is a later pipeline
+        stage that the bulk moves pass through like any other.  Anything unusual, including every error, is left to the
         general path so messages stay exactly the same.
         """
-        if self.tanknife or self.clamped or self.modal["feed_mode"] != G_94 or self.config.lathe:
+        if self.tanknife or self.clamped or self.tca_guard or self.modal["feed_mode"] != G_94 or self.config.lathe:
             return first  # (a lathe's moves carry the spindle speed along them, which bulk rows do not)
         motion: int | None = self.modal["motion"]
         if motion not in (G_0, G_1):

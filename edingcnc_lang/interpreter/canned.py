@@ -7,7 +7,9 @@ from typing import TYPE_CHECKING
 from .. import nodes as n
 from .. import tables as t
 from ..canon import AXES, PLANES, Event
-from .state import G_91, G_93, G_99, MachineState, PLANE_OF, format_value
+from .state import CENTER_WORDS, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
+
+G_87 = t.code_key(87)
 
 if TYPE_CHECKING:
     from ..cycles import Step
@@ -15,6 +17,8 @@ if TYPE_CHECKING:
 
 class CannedCycles(MachineState):
     """Every hole and peck counts against the step budget."""
+
+    cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
 
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         from ..cycles import (  # most jobs drill nothing: not worth its import time
@@ -27,7 +31,10 @@ class CannedCycles(MachineState):
         first, second, normal = PLANES[plane]
         drill = AXES[normal]
         sticky = self.cycle_words
-        for letter, key in (("R", "R"), (drill, "Z"), ("P", "P"), ("Q", "Q")):
+        back_boring = motion == G_87
+        shift_letters = CENTER_WORDS[plane]  # G87's I J K: the sideways shift in the plane, K the bored level
+        for letter, key in (("R", "R"), (drill, "Z"), ("P", "P"), ("Q", "Q"),
+                            *(((shift_letters[0], "I"), (shift_letters[1], "J"), ("K", "K")) if back_boring else ())):
             if letter in words:
                 sticky[key] = words[letter]
         if any(a in words for a in "ABC"):
@@ -38,6 +45,8 @@ class CannedCycles(MachineState):
         for needed in ("R", "Z"):
             if needed not in sticky:
                 raise self.fail(f"{t.code_name('G', motion)} needs {needed if needed == 'R' else drill}", span)
+        if back_boring and "K" not in sticky:
+            raise self.fail("G87 needs K, the level the back bore ends at (between the bottom and R)", span)
         if motion in NEEDS_Q and sticky.get("Q", 0) <= 0:
             raise self.fail(f"{t.code_name('G', motion)} needs a peck depth Q greater than 0", span)
         repeats = words.get("L", 1)
@@ -60,8 +69,15 @@ class CannedCycles(MachineState):
             old = self.cycle_initial = r_level
         clear = r_level if self.modal["return_mode"] == G_99 else old
         dwell = sticky.get("P", 0.0) / (1000.0 if self.config.g4_in_milliseconds else 1.0)
+        extra = sticky.get("Q", 0.0) * scale
+        if back_boring:
+            extra = (r_level if incremental else 0.0) + sticky["K"] * scale
+            if not bottom <= extra <= r_level:
+                raise self.fail(f"G87 K ({format_value(extra / scale)}) must lie between the bottom "
+                                f"{drill} ({format_value(bottom / scale)}) and R ({format_value(r_level / scale)})", span)
+            self.cycle_shift = {first: sticky.get("I", 0.0) * scale, second: sticky.get("J", 0.0) * scale}
         try:
-            steps = CYCLES[motion](r_level, bottom, clear, dwell, sticky.get("Q", 0.0) * scale)
+            steps = CYCLES[motion](r_level, bottom, clear, dwell, extra)
         except CycleError as err:
             raise self.fail(str(err), span) from None
         hole = list(work)
@@ -86,9 +102,19 @@ class CannedCycles(MachineState):
         self._move("rapid" if kind == "rapid" else "linear", self.to_machine(point), feed if kind == "feed" else 0.0)
 
     def _cycle_steps(self, steps: list[Step], hole: list[float], normal: int, feed: float) -> None:
+        at = list(hole)  # where the tool is across the hole: its centre, or shifted past the bar (G87)
+        at[normal] = self.work_position()[normal]
         for step in steps:
             if step.kind in ("rapid", "feed"):
-                self._cycle_move(step.kind, hole, normal, step.level, feed)
+                self._cycle_move(step.kind, at, normal, step.level, feed)
+                at[normal] = step.level
+            elif step.kind in ("shift", "center"):
+                for axis, offset in self.cycle_shift.items():
+                    at[axis] = hole[axis] + (offset if step.kind == "shift" else 0.0)
+                self._move("rapid", self.to_machine(at))
+            elif step.kind == "spindle_reverse":
+                self.canon.event(Event("spindle", self.path, self.line,
+                                       {"m": 3 if self.spindle == 4 else 4, "speed": self.speed}))
             elif step.kind == "dwell":
                 self.canon.event(Event("dwell", self.path, self.line, {"seconds": step.level}))
             else:

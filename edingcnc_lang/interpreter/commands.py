@@ -52,6 +52,8 @@ class Commands(MachineState):
         if stmt.name == "zhc":
             self._zhc_switch(stmt.on, stmt.span)  # type: ignore[attr-defined]  (height_comp.py)
             return
+        if stmt.name == "tcaguard":
+            self.tca_guard = stmt.on
         if stmt.name == "tanknife":
             self.tanknife = stmt.on
             work_zero = tuple(self.offset()[:3])  # the bend knife's Z band is in work coordinates

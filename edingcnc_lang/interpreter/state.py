@@ -31,9 +31,9 @@ G = t.code_key  # G(38.2) -> 382
 AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
 AXIS_SET = frozenset(AXES)
 LINEAR_AXES = frozenset("XYZ")
-UNSUPPORTED_MOTION = frozenset(t.code_key(c) for c in (74, 87))  # left-hand tapping, back boring
+UNSUPPORTED_MOTION: frozenset[int] = frozenset()  # every motion code of the tables runs
 PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1))  # M0, M1 (M60 ends the program like M30)
-SPINDLE_SELECT = (90, 91, 92, 93)  # M90 standard spindle, M91..M93 alternate spindles (#5390 = 0..3)
+SPINDLE_SELECT = tuple(range(90, 98))  # M90 standard spindle, M91..M97 alternate spindles (#5390 = 0..7)
 ROTARY = (3, 4, 5)
 
 # G codes as integer tenths, computed once (they are compared on every line).
@@ -81,7 +81,6 @@ G_99 = G(99)
 PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
 # Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
 CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
-MOTION_CODES = frozenset(G(c) for c in (0, 1, 2, 3, 38.2)) | t.CANNED_CYCLES
 DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
                  "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
@@ -109,6 +108,24 @@ def format_value(value: float) -> str:
         return str(int(value))
     return f"{value:.4f}".rstrip("0").rstrip(".")
 
+
+
+def enters_box(start: Pose, end: Pose | list[float], low: tuple[float, ...], high: tuple[float, ...]) -> bool:
+    """Whether the straight XYZ line from start to end goes into the box from outside (an empty box: never)."""
+    if all(a >= b for a, b in zip(low[:3], high[:3])) or all(low[i] <= start[i] <= high[i] for i in range(3)):
+        return False  # no area configured, or already inside it (leaving is allowed)
+    t0, t1 = 0.0, 1.0
+    for axis in range(3):
+        a, d = start[axis], end[axis] - start[axis]
+        if abs(d) < 1e-12:
+            if not low[axis] <= a <= high[axis]:
+                return False
+            continue
+        u0, u1 = sorted(((low[axis] - a) / d, (high[axis] - a) / d))
+        t0, t1 = max(t0, u0), min(t1, u1)
+        if t0 > t1:
+            return False
+    return True
 
 
 def path_length(start: Pose, end: Pose | list[float], arc: Arc | None) -> float:
@@ -181,6 +198,8 @@ class MachineState:
         self.kinematics_active = False
         self.tanknife = False
         self.clamped = False               # M26: the rotary axes are clamped until M27
+        self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
+        self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         self.ended_by = "end of file"
         self.messages: list[Event] = []
@@ -263,11 +282,16 @@ class MachineState:
         start = tuple(self.pos)
         if self.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
             raise self.fail("a rotary axis cannot move while it is clamped (M26): release it with M27 first")
+        if self.tca_guard and kind != "home" and enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
+            low, high = self.config.tca_negative, self.config.tca_positive
+            raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
+                            f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
+                            "cnc.ini [KINEMATICS] ...TCA): switch it off with TCAGuard off first")
         turning = self.spindle != 5
         css = self.css() if turning else None
         rpm = (css.rpm(end[0]) if css is not None else self.rpm) if turning else 0.0
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
-                             rpm, css, sync))
+                             rpm, css, sync, self.stack[0].line if self.stack else 0))
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 

@@ -102,10 +102,10 @@ class LineSteps(MachineState):
         self._stop(code, span)
 
     def _tool_change(self, span: n.Span) -> None:
-        if "change_tool" in self.subs and all(f.name != "change_tool" for f in self.stack):
+        if t.TOOL_CHANGE_SUB in self.subs and all(f.name != t.TOOL_CHANGE_SUB for f in self.stack):
             self.params.set(t.TOOL_NEW, float(self.selected_tool))
             self.params.set(t.TOOL_CHANGED, 0.0)
-            self.call_sub("change_tool", span)
+            self.call_sub(t.TOOL_CHANGE_SUB, span)
             return
         old = int(self.params.read(t.TOOL_CURRENT))
         self.params.set(t.TOOL_CURRENT, float(self.selected_tool))
@@ -116,6 +116,9 @@ class LineSteps(MachineState):
 
     def _io(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         port = int(words.get("P", words.get("E", 0)))
+        if "E" in words and code in (54, 55, 57):  # a PWM output: M54 E<n> Q<0..1000>, M55 E<n>, M57 E<n>
+            self._pwm(code, port, words, span)
+            return
         if code in (54, 55):
             self.outputs[port] = code == 54
             self.canon.event(Event("output", self.path, self.line, {"port": port, "on": code == 54,
@@ -128,6 +131,17 @@ class LineSteps(MachineState):
             self.params.set(t.IO_RESULT, level)
         else:
             self.params.set(t.IO_RESULT, 1.0 if self.outputs.get(port) else 0.0)
+
+    def _pwm(self, code: int, port: int, words: Mapping[str, float], span: n.Span) -> None:
+        """PWM outputs: M54 E Q sets the duty (0..1000 per mille), M55 E sets 0, M57 E reads it into #5399."""
+        if code == 57:
+            self.params.set(t.IO_RESULT, self.pwm.get(port, 0.0))
+            return
+        duty = words.get("Q", 0.0) if code == 54 else 0.0
+        if not 0.0 <= duty <= 1000.0:
+            raise self.fail(f"M54 E{port} Q{format_value(duty)}: the PWM value Q must lie in 0..1000", span)
+        self.pwm[port] = duty
+        self.canon.event(Event("output", self.path, self.line, {"port": port, "on": duty > 0, "pwm": duty}))
 
     def _dwell(self, words: Mapping[str, float], span: n.Span) -> None:
         if "P" not in words or words["P"] < 0:

@@ -2,7 +2,7 @@
 
 A synchronised move advances ``pitch`` mm of path per spindle revolution, so it runs at pitch x
 rpm and is a ``linear`` move whose ``Move.sync`` is the pitch.  G76's passes come from the pure
-``threading.py``; this part checks the words it owns (plane, axis words, the spindle) and turns
+``thread_passes.py``; this part checks the words it owns (plane, axis words, the spindle) and turns
 the passes into machine moves.
 """
 from __future__ import annotations
@@ -11,7 +11,7 @@ from collections.abc import Mapping
 
 from .. import nodes as n
 from ..canon import Event
-from ..threading import G76Words, ThreadError, g76
+from ..thread_passes import G76Words, ThreadError, g76
 from .state import G, G_40, MachineState, PLANE_OF, format_value, xyz_distance
 
 G_33 = G(33)

@@ -18,6 +18,9 @@ if TYPE_CHECKING:
 Pose = tuple[float, float, float, float, float, float]
 AXES = ("x", "y", "z", "a", "b", "c")
 JOINTS = ("jx", "jy", "jz", "ja", "jb", "jc")
+# What a user plug-in may raise that is its failure, not ecnc's: any exception, and sys.exit() (which
+# would otherwise end ecnc silently with the plug-in's status).  Ctrl-C (KeyboardInterrupt) still stops.
+PLUGIN_FAILURES: tuple[type[BaseException], ...] = (Exception, SystemExit)
 
 
 class KinematicsDomainError(MachineError):

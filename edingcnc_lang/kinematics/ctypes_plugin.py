@@ -13,6 +13,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from edingcnc_lang.canon import format_pose
 from edingcnc_lang.errors import PluginError
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import KinematicsDomainError, KinematicsPlugin, Pose, as_pose
@@ -135,8 +136,7 @@ class CompiledKinematics(KinematicsPlugin):
         rc = self._fn["KinematicsInverse"](CncCartDouble(*pos), ctypes.byref(joints), ctypes.byref(Flags(0)),
                                            ctypes.byref(Flags(0)), tool_length)
         if rc != 0:
-            where = " ".join(f"{axis.upper()}{v:g}" for axis, v in zip("xyzabc", pos))
-            raise KinematicsDomainError(f"{self.name}: {where} is out of reach (KinematicsInverse returned {rc})")
+            raise KinematicsDomainError(f"{self.name}: {format_pose(pos)} is out of reach (KinematicsInverse returned {rc})")
         return _values(joints)
 
     def forward(self, joints: Pose, tool_length: float = 0.0) -> Pose:

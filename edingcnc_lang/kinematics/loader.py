@@ -18,7 +18,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.errors import EcncError, PluginError
-from edingcnc_lang.kinematics.base import Kinematics, KinematicsPlugin
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsPlugin
 from edingcnc_lang.kinematics.shipped import import_shipped
 
 if TYPE_CHECKING:
@@ -53,7 +53,7 @@ def _file_candidates(path: Path) -> list[Path]:
     return [base.with_name(base.name + ".so"), base.with_name(base.name + ".py")]
 
 
-def _find_file(name_or_path: str, search_dirs: Sequence[Path]) -> Path | None:
+def find_plugin_file(name_or_path: str, search_dirs: Sequence[Path]) -> Path | None:
     """A typed path (folder parts or a .py/.so suffix) is tried as given; every name in the search folders."""
     path = Path(name_or_path)
     typed = path.is_absolute() or len(path.parts) > 1 or path.suffix.lower() in (".py", ".so")
@@ -86,7 +86,7 @@ def _import_file(path: Path) -> ModuleType:
     module = importlib.util.module_from_spec(spec)
     try:
         spec.loader.exec_module(module)
-    except Exception as err:  # the user's module may fail in any way
+    except PLUGIN_FAILURES as err:  # the user's module may fail in any way
         raise PluginError(f"kinematics plug-in {path}: importing it failed: {type(err).__name__}: {err}") from None
     return module
 
@@ -108,7 +108,7 @@ def _plugin_class(module: ModuleType, label: str) -> Callable[..., Any]:
 def _construct(factory: Callable[..., Any], label: str, settings: Mapping[str, str]) -> Kinematics:
     try:
         kins = factory(settings)
-    except Exception as err:  # a plug-in's constructor may fail in any way
+    except PLUGIN_FAILURES as err:  # a plug-in's constructor may fail in any way
         reason = err.message if isinstance(err, EcncError) else f"{type(err).__name__}: {err}"
         raise PluginError(f"kinematics plug-in {label}: constructing it failed: {reason}") from None
     missing = [m for m in REQUIRED_METHODS if not callable(getattr(kins, m, None))]
@@ -145,7 +145,7 @@ def _registered_factory(name: str) -> Callable[..., Any] | None:
     if entry is not None:
         try:
             return entry.load()
-        except Exception as err:  # a third-party entry point may fail in any way
+        except PLUGIN_FAILURES as err:  # a third-party entry point may fail in any way
             raise PluginError(f"kinematics plug-in {name!r}: loading entry point {entry.value} failed: "
                               f"{type(err).__name__}: {err}") from None
     return _import_builtin(name) if name in BUILTIN else None
@@ -159,7 +159,7 @@ def registered_names() -> list[str]:
 def load_kinematics(name_or_path: str, settings: Mapping[str, str],
                     search_dirs: Sequence[Path] = ()) -> Kinematics:
     """Construct the kinematics ``name_or_path`` (see the module docstring for the search order)."""
-    path = _find_file(name_or_path, search_dirs)
+    path = find_plugin_file(name_or_path, search_dirs)
     if path is not None:
         return _load_file(path, settings)
     name = _plugin_name(name_or_path)

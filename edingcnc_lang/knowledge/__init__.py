@@ -12,10 +12,10 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cache
 
+from ..canon import AXES
 from ..tables import G_GROUPS, LETTER_ARGS, M_GROUPS, code_key, code_name, is_read_only
 from . import commands, gm, variables
 
-AXES = "XYZABC"
 # Numbers cnc.ini [VARIABLES] keeps from run to run besides #4000..#4999 (dialect reference, section 10).
 PERSISTENT = (range(4000, 5000), range(5008, 5009), range(5013, 5015), range(5161, 5167), range(5181, 5187),
               range(5211, 5217), range(5220, 5387), range(5390, 5394))

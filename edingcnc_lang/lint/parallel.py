@@ -9,7 +9,6 @@ its own macro files.  ``jobs=1`` is ``lint_paths`` itself: one project, one proc
 """
 from __future__ import annotations
 
-import gc
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
@@ -17,6 +16,7 @@ from concurrent.futures import ProcessPoolExecutor
 from multiprocessing import get_context
 
 from ..diagnostics import Diagnostic
+from ..gcpause import whole_trees
 from .driver import CONFIG_SUFFIX, LintOptions, expand, lint_paths
 from .targets import resolve
 
@@ -46,11 +46,8 @@ def lint_paths_parallel(paths: Iterable[str | os.PathLike[str]], options: LintOp
 
 def _lint_group(paths: list[str], options: LintOptions) -> list[Diagnostic]:
     """One group, in a worker; the cyclic GC is paused as the CLI pauses it (the trees are acyclic)."""
-    gc.disable()
-    try:
+    with whole_trees():
         return lint_paths(paths, options)
-    finally:
-        gc.enable()
 
 
 def split(items: Sequence[str], count: int) -> list[list[str]]:

@@ -10,13 +10,7 @@ from __future__ import annotations
 import os
 import sys
 
-from ..errors import EXIT_USAGE, EcncError
-
-
-class MissingExtra(EcncError):
-    """pygls is not installed: the user needs ``pip install 'edingcnc-lang[lsp]'`` (exit 2)."""
-
-    exit_code = EXIT_USAGE
+from ..errors import require_extra
 
 
 def main() -> int:
@@ -25,11 +19,9 @@ def main() -> int:
     The protocol gets its own handle on stdout, which the server closes at the end; anything
     else printed meanwhile goes to stderr, so it cannot corrupt the protocol stream.
     """
-    try:
-        from .server import server
-    except ImportError as err:  # only pygls/lsprotocol can be missing here
-        raise MissingExtra(f"the language server needs pygls ({err.name} is missing): "
-                           "pip install 'edingcnc-lang[lsp]'") from None
+    require_extra("pygls", "lsp", "the language server")
+    require_extra("lsprotocol", "lsp", "the language server")
+    from .server import server
     protocol_out = os.fdopen(os.dup(sys.stdout.fileno()), "wb")
     saved, sys.stdout = sys.stdout, sys.stderr
     try:

@@ -1,7 +1,8 @@
 """``python -m edingcnc_lang.lsp``: the language server, also without the ``ecnc`` command."""
 import sys
 
-from . import MissingExtra, main
+from ..errors import MissingExtra
+from . import main
 
 try:
     sys.exit(main())

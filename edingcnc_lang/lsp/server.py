@@ -16,7 +16,7 @@ from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
 from .. import __version__
-from ..cli.common import whole_trees
+from ..gcpause import whole_trees
 from ..codes import Severity
 from ..diagnostics import Diagnostic
 from ..lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes

@@ -55,6 +55,8 @@ class TimedSink(Protocol):
 class Planner:
     """One run's planner: ``move``/``straight_moves``/``event`` in program order, ``close`` at the end."""
 
+    needs_limits = True  # every move comes with the limits it runs against
+
     def __init__(self, config: MachineConfig, sinks: Sequence[TimedSink], overrides: Overrides, *, tool: int = 0,
                  joints_of: Callable[[np.ndarray], np.ndarray] | None = None, want_samples: bool = False) -> None:
         self.config = config

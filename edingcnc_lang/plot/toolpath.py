@@ -30,7 +30,7 @@ KINDS = ("rapid", "linear", "arc", "probe", "home")
 FEED_KINDS = frozenset({KINDS.index("linear"), KINDS.index("arc"), KINDS.index("probe")})
 RAPID_KINDS = frozenset({KINDS.index("rapid"), KINDS.index("home")})
 ARC_STEP = math.radians(3.0)  # 120 chords a turn: 0.014 mm off a 40 mm radius
-ROW = 8                       # values the recorder keeps per move (see Recorder.rows)
+ROW = 9                       # values the recorder keeps per move (see Recorder.rows)
 WIDE = 1e5                    # mm: a limit this far out is "no limit configured" (the defaults are 1e6)
 
 
@@ -52,6 +52,7 @@ class Toolpath:
     kinds: np.ndarray        # (N,) int8, index into KINDS
     tools: np.ndarray        # (N,) int32, the tool in the spindle
     lines: np.ndarray        # (N,) int32, source line of the move
+    callers: np.ndarray      # (N,) int32, a move made in a sub: the job line that called it (else 0)
     files: np.ndarray        # (N,) int16, index into ``paths``
     paths: tuple[str, ...]
     feeds: np.ndarray        # (N,) mm/min, 0 for rapids
@@ -165,6 +166,7 @@ class Toolpath:
         indices = np.flatnonzero(keep)
         renumber = {int(old): new for new, old in enumerate(indices)}
         return replace(self, kinds=self.kinds[keep], tools=self.tools[keep], lines=self.lines[keep],
+                       callers=self.callers[keep],
                        files=self.files[keep], feeds=self.feeds[keep], starts=self.starts[keep],
                        ends=self.ends[keep], joints=self.joints[keep],
                        arcs={renumber[i]: arc for i, arc in self.arcs.items() if i in renumber},
@@ -172,12 +174,11 @@ class Toolpath:
 
 
 def _caller_lines(path: Toolpath) -> np.ndarray:
-    """For each move, the job line it belongs to: its own line in the job, else the last job line before it."""
+    """For each move, the job line it belongs to: the line that called its sub (GoSub, M code,
+    T M6), else its own line in the job; 0 for a move from neither (nothing in the job made it)."""
     job_index = path.paths.index(path.job) if path.job in path.paths else -1
-    in_job = path.files == job_index
-    lines = np.where(in_job, path.lines, 0)
-    last = np.maximum.accumulate(np.where(in_job, np.arange(len(lines)), -1)) if len(lines) else lines
-    return np.where(last >= 0, lines[np.maximum(last, 0)], 0)
+    own = np.where(path.files == job_index, path.lines, 0)
+    return np.where(path.callers > 0, path.callers, own)
 
 
 class Recorder:
@@ -185,7 +186,7 @@ class Recorder:
 
     def __init__(self) -> None:
         # flat arrays of doubles, not lists of tuples: a million moves take ~180 MB, not ~750 MB
-        self.rows = array("d")    # kind, tool, line, file, feed, start s, end s, speed mm/s per move
+        self.rows = array("d")    # kind, tool, line, file, feed, start s, end s, speed mm/s, caller per move
         self.poses = array("d")   # start, end and joints per move, six values each
         self.arcs: dict[int, Arc] = {}
         self.paths: dict[str, int] = {}
@@ -197,7 +198,7 @@ class Recorder:
         if move.arc is not None:
             self.arcs[len(self.rows) // ROW] = move.arc
         self.rows.extend((self._kind.get(move.kind, 1), self.tool, move.line, file_index, move.feed,
-                          timing.start, timing.end, timing.speed))
+                          timing.start, timing.end, timing.speed, move.caller))
         self.poses.extend(move.start)
         self.poses.extend(move.end)
         self.poses.extend(joints)
@@ -211,15 +212,11 @@ class Recorder:
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         poses = np.frombuffer(self.poses, dtype=float).reshape(-1, 3, 6)
         final = result or (getattr(error, "result", None) if error else None)
-        zero = (0.0, 0.0, 0.0)
-        if final is not None:
-            position = list(final.position[:3])
-            if config.diameter_mode:  # a lathe reports X as a diameter; the machine moves in radius
-                position[0] /= 2.0
-            zero = tuple(m - p for m, p in zip(final.machine[:3], position))  # type: ignore[assignment]
+        zero = tuple(final.work_zero[:3]) if final is not None else (0.0, 0.0, 0.0)
         return Toolpath(
             job=job, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
-            lines=table[:, 2].astype(np.int32), files=table[:, 3].astype(np.int16),
+            lines=table[:, 2].astype(np.int32), callers=table[:, 8].astype(np.int32),
+            files=table[:, 3].astype(np.int16),
             paths=tuple(self.paths), feeds=table[:, 4].copy(), times=table[:, 5:7].copy(),
             speeds=table[:, 7] * 60.0, seconds=final.estimate.seconds if final is not None else 0.0,
             starts=poses[:, 0].copy(), ends=poses[:, 1].copy(), joints=poses[:, 2].copy(), arcs=self.arcs,

@@ -84,10 +84,12 @@ class Queued:
     center: Point | None = None    # arcs, in the frame
     turn: int = 0                  # arcs: +1 counter-clockwise, -1 clockwise
     sweep: float = 0.0             # arcs: the angle swept when queued
+    caller: int = 0                # the programmed move's ``Move.caller``
 
     def to_move(self, start: Pose, frame: Frame) -> Move:
         arc = None
         if self.center is not None:
             closed = math.dist(frame.point(start), frame.point(self.end)) < 1e-9
             arc = Arc(frame.named(self.center), frame.plane, self.turn, 1 if closed else 0)
-        return Move(self.kind, self.path, self.line, start, tuple(self.end), self.feed, arc)  # type: ignore[arg-type]
+        return Move(self.kind, self.path, self.line, start, tuple(self.end), self.feed, arc,  # type: ignore[arg-type]
+                    caller=self.caller)

@@ -183,7 +183,7 @@ class CutterCompensation(Stage):
         start = self.program
         current = frame.point(self.current)
         if target == start:  # no motion in the plane: it keeps the compensated position
-            self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, current), move.feed))
+            self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, current), move.feed, caller=move.caller))
             self.current = frame.pose(move.end, current)
             return
         side, radius = self.side, self.radius
@@ -211,9 +211,9 @@ class CutterCompensation(Stage):
             corner = frame.pose(move.end, mid, self.current[frame.normal])
             if move.kind == "linear":
                 self._enqueue(Queued("arc", move.path, move.line, corner, move.feed, center=start,
-                                     turn=-1 if side == LEFT else 1))
+                                     turn=-1 if side == LEFT else 1, caller=move.caller))
             else:
-                self._enqueue(Queued("rapid", move.path, move.line, corner, 0.0))
+                self._enqueue(Queued("rapid", move.path, move.line, corner, 0.0, caller=move.caller))
             self._dequeue()
             self.endpoint = mid
         elif concave:
@@ -229,7 +229,7 @@ class CutterCompensation(Stage):
             self._dequeue()
             self.endpoint = current
         self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, end), move.feed,
-                             direction=(target[0] - start[0], target[1] - start[1])))
+                             direction=(target[0] - start[0], target[1] - start[1]), caller=move.caller))
         self.current = frame.pose(move.end, end)
         self.program = target
 
@@ -243,7 +243,7 @@ class CutterCompensation(Stage):
         end = at(target, self.radius, alpha)
         self.endpoint = current
         self._enqueue(Queued(move.kind, move.path, move.line, self.frame.pose(move.end, end), move.feed,
-                             direction=(math.cos(alpha), math.sin(alpha))))
+                             direction=(math.cos(alpha), math.sin(alpha)), caller=move.caller))
         self.first = False
         self.current = self.frame.pose(move.end, end)
         self.program = target
@@ -314,13 +314,13 @@ class CutterCompensation(Stage):
             corner = at(start, radius, delta)
             self._dequeue()
             self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, corner, self.current[frame.normal]),
-                                 move.feed, center=start, turn=-1 if side == LEFT else 1))
+                                 move.feed, center=start, turn=-1 if side == LEFT else 1, caller=move.caller))
             self._dequeue()
             self.endpoint = corner
         else:
             self._dequeue()
             self.endpoint = current
-        self._enqueue(Queued("arc", move.path, move.line, arc_end, move.feed, center=center, turn=turn, sweep=sweep))
+        self._enqueue(Queued("arc", move.path, move.line, arc_end, move.feed, center=center, turn=turn, sweep=sweep, caller=move.caller))
         self.current = arc_end
         self.program = end_p
 
@@ -346,7 +346,7 @@ class CutterCompensation(Stage):
         new_center = at(end, half / cosine, towards_center)
         self.endpoint = None
         self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, end), move.feed, center=new_center,
-                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end)))
+                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end), caller=move.caller))
         self.first = False
         self.current = frame.pose(move.end, end)
         self.program = end_p

@@ -48,7 +48,7 @@ class PoseTransform(Stage):
             start = self.at if self.at is not None else self.forward(move.start)
             arc = self.arc(move, move.arc) if move.arc is not None and self.on else move.arc
             end = self.forward(move.end) if self.on else move.end
-            move = Move(move.kind, move.path, move.line, start, end, move.feed, arc)
+            move = Move(move.kind, move.path, move.line, start, end, move.feed, arc, caller=move.caller)
         self.next.move(move)
         self.at = move.end
 

@@ -53,6 +53,16 @@ def test_a_configuration_error_is_a_json_error_too(tmp_path: Path) -> None:
     assert json.loads(result.stdout)["error"]["kind"] in ("plugin", "configuration")
 
 
+def test_a_limit_of_zero_is_a_configuration_error_naming_its_key(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X1\nG1 X5 F100\nM30\n")
+    ini = write(tmp_path, "cnc.ini", "[JOINT_0]\nname = X\nmaxVelocity = 0\nmaxAcceleration = 1000\n")
+    result = invoke("run", "--ini", ini, job)
+    assert result.exit_code == 70
+    assert result.stderr.startswith(f"{ini}:3: error: maxVelocity = 0 in [JOINT_0] must be greater than 0")
+    lint = invoke("lint", "--format", "json", "--ini", ini, job)
+    assert [(d["line"], d["code"]) for d in json.loads(lint.stdout)] == [(3, "C701")]
+
+
 def test_a_usage_error_with_json_is_a_json_error(tmp_path: Path) -> None:
     result = invoke("run", "--json", tmp_path / "missing.nc")
     assert result.exit_code == 2 and result.stderr.startswith("usage: ecnc run")
@@ -111,6 +121,22 @@ def test_a_trace_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
     assert result.returncode == 70 and "/dev/full" in result.stderr and "Traceback" not in result.stderr
 
 
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
+def test_an_events_file_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\nM3 S1000\nG1 X2 F100\n")
+    result = _shell("ecnc run job.nc --events /dev/full", tmp_path)
+    assert result.returncode == 70
+    assert result.stderr == "error: cannot write /dev/full: No space left on device\n"
+
+
+def test_samples_with_another_extension_is_a_usage_error(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\n")
+    result = _shell("ecnc run job.nc --samples out.xyz", tmp_path)
+    assert result.returncode == 2 and not (tmp_path / "out.xyz").exists()
+    assert ("ecnc run: error: --samples out.xyz: the samples file must end in .csv or .npz "
+            "(or be - for CSV on standard output)") in result.stderr
+
+
 def test_errors_with_stderr_closed_keep_their_exit_code(tmp_path: Path) -> None:
     write(tmp_path, "bad.nc", "G0 X[1\n")
     result = _shell("ecnc run bad.nc 2>&-", tmp_path)
@@ -138,3 +164,35 @@ def test_only_one_output_on_standard_output(tmp_path: Path) -> None:
     job = write(tmp_path, "job.nc", "G0 X1\n")
     result = invoke("run", job, "--json", "--trace", "-")
     assert result.exit_code == 2 and "not --json and --trace -" in result.stderr
+
+
+@pytest.mark.parametrize("option", ["--trace", "--events", "--samples"])
+def test_a_closed_pipe_on_standard_output_ends_quietly_with_exit_1(tmp_path: Path, option: str) -> None:
+    # far more rows than a pipe buffers, so the writes go on after the reader is gone (`ecnc ... | head -1`)
+    job = write(tmp_path, "big.nc", "#1 = 0\nWhile [#1 < 20000]\n  G1 X[#1 MOD 100] Y[#1 MOD 7] F3000\n"
+                                     "  #1 = [#1 + 1]\nEndWhile\n")
+    process = subprocess.Popen([*ECNC, "run", str(job), option, "-"], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, cwd=tmp_path,
+                               env={**os.environ, "PYTHONPATH": str(Path.cwd())})
+    assert process.stdout is not None and process.stderr is not None
+    assert process.stdout.readline()
+    process.stdout.close()
+    stderr = process.stderr.read().decode()
+    assert (process.wait(timeout=120), stderr) == (1, "")
+
+
+def test_control_bytes_of_the_job_are_escaped_in_errors_messages_and_findings(tmp_path: Path) -> None:
+    job = tmp_path / "esc.nc"
+    job.write_bytes(b'G0 X\x1b]0;HACKED\x07\x1b[2J\n')
+    messages = tmp_path / "msg.nc"
+    messages.write_bytes(b'msg "a\x1b[2Jb\x00"\n')
+    run, lint, said = invoke("run", job), invoke("lint", job), invoke("run", messages)
+    for output in (run.stderr, lint.stdout + lint.stderr, said.stderr):
+        assert "\x1b" not in output and "\x07" not in output and "\x00" not in output
+    assert f"{messages}:1: msg: a\\x1b[2Jb\\x00" in said.stderr
+    source, caret = run.stderr.splitlines()[-2:]
+    assert source == "    G0 X\\x1b]0;HACKED\\x07\\x1b[2J" and caret.index("^") == source.index("]")
+    assert "G0 X\\x1b]0;HACKED" in lint.stdout + lint.stderr
+    tabbed = tmp_path / "tab.nc"
+    tabbed.write_text("\tG0 X]\n")
+    assert invoke("run", tabbed).stderr.splitlines()[-2:] == ["    \tG0 X]", "    \t    ^"]

@@ -38,7 +38,7 @@ def test_json_report() -> None:
 
 
 @pytest.mark.parametrize("box, message", [
-    ("1,2,3", "--box takes X0 X1 Y0 Y1 Z0 Z1"),
+    ("1,2,3", "--box takes X0,X1,Y0,Y1,Z0,Z1 and optionally A0,A1,B0,B1,C0,C1 (6 to 12 numbers, got 3)"),
     ("a,b,c,d,e,f", "--box: not a list of numbers"),
 ])
 def test_bad_box_is_a_usage_error(box: str, message: str) -> None:
@@ -93,3 +93,39 @@ def test_kins_inverse_refuses_nan_from_a_plugin() -> None:
     assert result.exit_code == 70 and result.stdout == ""
     assert "inverse returned a value that is not a finite number (jx=100.0 jy=100.0 jz=nan" in result.stderr
     assert "KinematicsDomainError" in result.stderr
+
+
+def test_a_plugin_that_calls_sys_exit_at_import_is_a_plugin_error(tmp_path: Path) -> None:
+    boom = tmp_path / "boom.py"
+    boom.write_text("raise SystemExit(3)\n")
+    result = invoke("kins", "check", boom, *QUICK)
+    assert result.exit_code == 70
+    assert f"kinematics plug-in {boom}: importing it failed: SystemExit: 3" in result.stderr
+
+
+def test_a_plugin_that_calls_sys_exit_in_inverse_is_a_k402_finding(tmp_path: Path) -> None:
+    quits = tmp_path / "quits.py"
+    quits.write_text("import sys\n"
+                     "from edingcnc_lang.kinematics.builtin import TrivialKinematics\n\n\n"
+                     "class Quits(TrivialKinematics):\n"
+                     "    def inverse(self, pos, tool_length=0.0):\n"
+                     "        if pos[0] > 50:\n"
+                     "            sys.exit(4)\n"
+                     "        return super().inverse(pos, tool_length)\n\n\n"
+                     "KINEMATICS = Quits\n")
+    result = invoke("kins", "check", quits, "--box=-100,100,-100,100,0,10", *QUICK)
+    assert result.exit_code == 1, result.output
+    assert "K402 domain: inverse raised" in result.stdout and "SystemExit: 4" in result.stdout
+
+
+def test_cartesian_limits_come_from_load_config_and_a_bad_one_names_its_line(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[KINEMATICS]\npositiveLimitX = 50\nnegativeLimitX = -50\npositiveLimitY = 40\n"
+                   "negativeLimitY = -40\npositiveLimitZ = 10\nnegativeLimitZ = 0\n")
+    good = invoke("kins", "check", "trivial", "--ini", ini, *QUICK)
+    assert good.exit_code == 0, good.output
+    assert "workspace (cnc.ini [KINEMATICS] limits): X -50..50  Y -40..40  Z 0..10" in good.stdout
+    ini.write_text(ini.read_text().replace("positiveLimitY = 40", "positiveLimitY = 4o"))
+    bad = invoke("kins", "check", "trivial", "--ini", ini, *QUICK)
+    assert bad.exit_code == 70
+    assert bad.stderr == f"{ini}:4: error: positiveLimitY in [KINEMATICS]: expected a number, got '4o'\n"

@@ -43,13 +43,13 @@ def test_the_step_budget_counts_lines_the_same_in_files_and_strings(tmp_path: Pa
     assert outcomes[0] == 3
 
 
-@pytest.mark.parametrize("code", ["G74 X1 Z-1 R1 F100", "G87 X1 Z-1 R1 F100"])
-def test_unsupported_motion_codes_are_errors_not_probe_moves(code: str) -> None:
+def test_g74_and_g87_run_as_cycles_never_as_probe_moves() -> None:
     moves: list[Move] = []
+    run_string("G0 Z5\nG74 X1 Z-1 R1 F100\nG87 X1 Z-1 R1 K0 F100\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    assert "probe" not in {m.kind for m in moves} and {m.line for m in moves} == {1, 2, 3}
     with pytest.raises(EcncError) as info:
-        run_string(f"G0 Z5\n{code}\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
-    assert "not supported" in info.value.message
-    assert [m.kind for m in moves] == ["rapid"]
+        run_string("G0 Z5\nG87 X1 Z-1 R1 F100\n")
+    assert "G87 needs K" in info.value.message
 
 
 def test_feed_per_revolution_in_inches_is_converted() -> None:

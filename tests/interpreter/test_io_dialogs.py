@@ -35,8 +35,8 @@ def error_of(source: str, **options: object) -> MachineError:
 
 def test_outputs_set_clear_and_read_back() -> None:
     v = run("M54 P3\nM57 P3\n#100 = #5399\nM55 P3\nM57 P3\n#101 = #5399\nM57 P4\n#102 = #5399\n"
-            "M54 E2 Q500\nM57 P2\n#103 = #5399\n").variables
-    assert (v[100], v[101], v[102], v[103]) == (1.0, 0.0, 0.0, 1.0)
+            "M54 E2 Q500\nM57 E2\n#103 = #5399\n").variables
+    assert (v[100], v[101], v[102], v[103]) == (1.0, 0.0, 0.0, 500.0)  # a PWM output reads back its value
 
 
 def test_inputs_come_from_the_host() -> None:

@@ -99,3 +99,30 @@ def test_callbacks_already_in_the_options_still_get_every_move(tmp_path: Path) -
                          on_event=lambda event: events.append(event.kind))
     path = record_job(write(tmp_path, "square.nc", SQUARE), options)
     assert [line for line, _ in seen] == path.lines.tolist() and "tool_change" in events
+
+
+SUB_IN_JOB = "G0 X0 Y0\nGoSub sq\nG0 Z5\nGoSub sq\nM30\nSub sq\n G1 X10 F500\n G1 Y10\nEndSub\n"
+
+
+def test_a_subs_moves_count_with_the_gosub_line_also_when_the_sub_is_in_the_job(tmp_path: Path) -> None:
+    path = record_job(write(tmp_path, "sqj2.nc", SUB_IN_JOB, newline="\r\n"))
+    assert path.select_lines(2, 2).lines.tolist() == [7, 8]
+    assert path.select_lines(3, 3).lines.tolist() == [3]
+    assert path.select_lines(4, 4).lines.tolist() == [7, 8]
+    assert path.select_lines(6, 9).lines.tolist() == []  # the sub's own lines make no moves of the job
+
+
+def test_a_macro_subs_moves_count_with_the_line_that_called_it(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X0 Y0\nGoSub sq\nG0 Z5\nGoSub sq\nM30\n")
+    macro = write(tmp_path, "sq.cnc", "Sub sq\n G1 X10 F500\n G1 Y10\n G1 X0\nEndSub\n")
+    path = record_job(job, RunOptions(user_macro=macro))
+    assert len(path.select_lines(1, 1)) == 1
+    part = path.select_lines(2, 3)
+    assert part.lines.tolist() == [2, 3, 4, 3] and part.callers.tolist() == [2, 2, 2, 0]
+
+
+def test_the_work_zero_is_the_coordinate_systems_origin_under_rotation_and_scaling(tmp_path: Path) -> None:
+    rotated = write(tmp_path, "rot.nc", "G21 G17 G90\nG0 X0 Y0 Z5\nG68 X0 Y0 R90\nG1 X10 F1000\nG1 Y5\n")
+    assert record_job(rotated).work_zero == (0.0, 0.0, 0.0)
+    scaled = write(tmp_path, "scale.nc", "G10 L2 P1 X20 Y10 Z-3\nG54 G0 X0 Y0\nG51 X5 Y5 P2\nG1 X10 F500\n")
+    assert record_job(scaled).work_zero == pytest.approx((20.0, 10.0, -3.0))

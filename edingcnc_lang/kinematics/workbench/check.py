@@ -40,24 +40,24 @@ class CheckOptions:
 
 @dataclass(frozen=True)
 class Machine:
-    """What the ini says about the plug-in: its settings, where plug-in files are, the joint limits."""
+    """What the ini says about the plug-in: its settings, where plug-in files are, the limits it GAVE."""
 
     settings: Mapping[str, str]
     search_dirs: tuple[Path, ...]
-    joint_limits: tuple[tuple[float, float], ...] | None
+    joint_limits: tuple[tuple[float, float], ...] | None  # None: the ini has no [JOINT_n] section
+    cartesian: Workspace | None = None                    # None: the ini does not limit X, Y and Z
 
 
 def read_machine(ini: str | None) -> Machine:
+    """The ini read once by ``load_config`` (so its values are checked as a run checks them)."""
     if ini is None:
         return Machine({}, (), None)
     from edingcnc_lang.config import load_config
-    from edingcnc_lang.ini import read_ini
 
-    path = Path(ini)
-    raw = read_ini(path)
-    limits = tuple((j.negative_limit, j.positive_limit) for j in load_config(path).joints)
-    has_joint_sections = any(name.startswith("joint_") for name in raw.sections)
-    return Machine(raw.section("KINEMATICS"), (path.parent,), limits if has_joint_sections else None)
+    config = load_config(ini)
+    limits = tuple((j.negative_limit, j.positive_limit) for j in config.joints)
+    return Machine(config.kinematics_settings, (config.folder,) if config.folder else (),
+                   limits if config.gives_joint_sections else None, from_cartesian_limits(config))
 
 
 def load_plugin(name: str, machine: Machine) -> Kinematics:
@@ -68,16 +68,16 @@ def load_plugin(name: str, machine: Machine) -> Kinematics:
 
 def is_compiled_file(name: str, machine: Machine) -> bool:
     """Whether ``name`` resolves to a shared library (checked out of process)."""
-    from edingcnc_lang.kinematics.loader import _find_file
+    from edingcnc_lang.kinematics.loader import find_plugin_file
 
-    found = _find_file(name, machine.search_dirs)
+    found = find_plugin_file(name, machine.search_dirs)
     return found is not None and found.suffix.lower() == ".so"
 
 
 def workspace_for(kins: Kinematics, options: CheckOptions, machine: Machine) -> Workspace:
     if options.box is not None:
         return parse_box(options.box)
-    space = from_cartesian_limits(machine.settings) if options.ini else None
+    space = machine.cartesian
     if space is None and machine.joint_limits is not None:
         space = from_joint_limits(kins, machine.joint_limits, options.seed)
     return space or default_workspace()

@@ -13,7 +13,8 @@ import numpy as np
 from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench import check
 from edingcnc_lang.kinematics.workbench.evaluate import call_each
-from edingcnc_lang.kinematics.workbench.findings import AXIS_LETTERS, JOINT_NAMES, format_pose
+from edingcnc_lang.canon import AXES, format_pose
+from edingcnc_lang.kinematics.workbench.findings import JOINT_NAMES
 from edingcnc_lang.kinematics.workbench.geometry_checks import tolerance
 from edingcnc_lang.kinematics.workbench.plugin_checks import switch_on
 
@@ -100,7 +101,7 @@ def compare_loaded(ka: Kinematics, kb: Kinematics, a: str, b: str, options: chec
     joints = out_a.values[both]
     fwd_a, fwd_b = call_each(ka.forward, joints), call_each(kb.forward, joints)
     fine = fwd_a.ok & fwd_b.ok
-    result.forward = _largest(fwd_a.values[fine], fwd_b.values[fine], poses[both][fine], AXIS_LETTERS)
+    result.forward = _largest(fwd_a.values[fine], fwd_b.values[fine], poses[both][fine], AXES)
     differs = out_a.ok != out_b.ok
     result.reach_differs = int(differs.sum()) + int((fwd_a.ok != fwd_b.ok).sum())
     if differs.any():

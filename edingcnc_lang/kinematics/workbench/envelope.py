@@ -11,7 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.errors import MissingExtra
+from edingcnc_lang.canon import AXES
+from edingcnc_lang.errors import require_extra
 from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
@@ -22,10 +23,7 @@ STATUS_COLOURS = ("#4c9a2a", "#d9d9d9", "#d62728", "#ff7f0e")  # reached, out of
 
 
 def _pyplot():
-    try:
-        import matplotlib
-    except ImportError:
-        raise MissingExtra("ecnc kins plot needs matplotlib: pip install 'edingcnc-lang[plot]'") from None
+    matplotlib = require_extra("matplotlib", "plot", "ecnc kins plot")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
@@ -49,7 +47,6 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
     from matplotlib.colors import ListedColormap
 
     fig, grid = plt.subplots(2, 3, figsize=(15, 9.5), constrained_layout=True)
-    names = "XYZABC"
     axes_all = [a for a in space.varying if a < 3] or space.varying
     for col, (across, up, held) in enumerate(SLICES):
         poses, xs, ys = slice_grid(space, across, up, resolution)
@@ -59,16 +56,16 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
         reach.imshow(status, origin="lower", extent=extent, aspect="auto", interpolation="nearest",
                      cmap=ListedColormap(STATUS_COLOURS), vmin=0, vmax=len(STATUS_COLOURS) - 1)
         held_at = space.centre[held]
-        reach.set_title(f"reachable: {names[across]}{names[up]} at {names[held]}={held_at:g}")
+        reach.set_title(f"reachable: {AXES[across]}{AXES[up]} at {AXES[held]}={held_at:g}")
         conds = np.full(len(poses), np.nan)
         ok = (status.ravel() == Status.OK)
         conds[ok] = jacobian_conditions(kins, poses[ok], space, axes_all)
         image = cond.imshow(np.log10(np.clip(conds, 1.0, 1e12)).reshape(len(ys), len(xs)), origin="lower",
                             extent=extent, aspect="auto", interpolation="nearest", cmap="magma_r", vmin=0, vmax=6)
-        cond.set_title(f"log10 condition number: {names[across]}{names[up]}")
+        cond.set_title(f"log10 condition number: {AXES[across]}{AXES[up]}")
         for ax in (reach, cond):
-            ax.set_xlabel(f"{names[across]} ({'mm' if across < 3 else 'deg'})")
-            ax.set_ylabel(f"{names[up]} ({'mm' if up < 3 else 'deg'})")
+            ax.set_xlabel(f"{AXES[across]} ({'mm' if across < 3 else 'deg'})")
+            ax.set_ylabel(f"{AXES[up]} ({'mm' if up < 3 else 'deg'})")
     fig.colorbar(image, ax=list(grid[1]), shrink=0.8, label="log10 condition number (6 = singular)")
     legend = [plt.Rectangle((0, 0), 1, 1, color=c) for c in STATUS_COLOURS]
     fig.legend(legend, ["reached", "out of reach", "raised", "NaN / inf"], loc="outside upper right", ncols=4)

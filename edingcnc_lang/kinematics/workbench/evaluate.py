@@ -12,7 +12,7 @@ from enum import IntEnum
 
 import numpy as np
 
-from edingcnc_lang.kinematics.base import KinematicsDomainError, Pose
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, KinematicsDomainError, Pose
 
 
 class Status(IntEnum):
@@ -52,7 +52,7 @@ def call_each(fn: Callable[[Pose], Pose], rows: np.ndarray) -> Outcome:
             status[i] = Status.UNREACHABLE
             messages.setdefault(Status.UNREACHABLE, err.message)
             continue
-        except Exception as err:  # the plug-in is under test: any failure is a finding, not a crash
+        except PLUGIN_FAILURES as err:  # the plug-in is under test: any failure is a finding, not a crash
             status[i] = Status.RAISED
             messages.setdefault(Status.RAISED, f"{type(err).__name__}: {err}")
             continue

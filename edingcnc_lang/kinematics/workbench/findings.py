@@ -10,6 +10,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from edingcnc_lang.canon import AXES, format_pose
+
 # code -> (check, one-line summary); `ecnc kins check --json` and docs/kinematics.md use the same words.
 FINDING_CODES: dict[str, tuple[str, str]] = {
     "K101": ("round trip", "forward(inverse(p)) does not come back to p"),
@@ -31,15 +33,7 @@ FINDING_CODES: dict[str, tuple[str, str]] = {
     "K604": ("compiled", "a call did not return (hung)"),
 }
 
-AXIS_LETTERS = "XYZABC"
 JOINT_NAMES = ("jX", "jY", "jZ", "jA", "jB", "jC")
-
-
-def format_pose(values: Sequence[float] | None, names: Sequence[str] = AXIS_LETTERS) -> str:
-    """``X10 Y-2.5 Z0 A0 B0 C0`` with up to 6 significant digits; NaN stays visible."""
-    if values is None:
-        return "-"
-    return " ".join(f"{name}{float(v):.6g}" for name, v in zip(names, values))
 
 
 def format_joints(values: Sequence[float] | None) -> str:
@@ -120,7 +114,7 @@ class Report:
         return {
             "plugin": self.plugin, "type": self.kin_type, "version": self.version,
             "box": {"source": self.box_source,
-                    **{axis.lower(): [lo, hi] for axis, (lo, hi) in zip(AXIS_LETTERS, self.box)}},
+                    **{axis.lower(): [lo, hi] for axis, (lo, hi) in zip(AXES, self.box)}},
             "seed": self.seed, "samples": self.samples,
             "checks": {s.name: {"summary": s.summary, **{k: _jsonable(v) for k, v in s.figures.items()}}
                        for s in self.sections},
@@ -132,8 +126,8 @@ class Report:
         head = f"kins check {self.plugin}"
         if self.kin_type is not None:
             head += f" (type {self.kin_type}, {self.version!r})"
-        box = "  ".join(f"{a} {lo:g}..{hi:g}" for a, (lo, hi) in zip(AXIS_LETTERS, self.box) if lo != hi)
-        fixed = " ".join(f"{a}{lo:g}" for a, (lo, hi) in zip(AXIS_LETTERS, self.box) if lo == hi)
+        box = "  ".join(f"{a} {lo:g}..{hi:g}" for a, (lo, hi) in zip(AXES, self.box) if lo != hi)
+        fixed = " ".join(f"{a}{lo:g}" for a, (lo, hi) in zip(AXES, self.box) if lo == hi)
         lines = [head, f"workspace ({self.box_source}): {box}" + (f"; fixed {fixed}" if fixed else ""),
                  f"seed {self.seed}, {self.samples} sample poses"] if self.samples else [
                      head, "the check ended before it reached the workspace"]

@@ -10,9 +10,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from edingcnc_lang.kinematics.base import Kinematics
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics
 from edingcnc_lang.kinematics.workbench.evaluate import Outcome, Status, call_each
-from edingcnc_lang.kinematics.workbench.findings import Finding, Section, format_pose
+from edingcnc_lang.canon import format_pose
+from edingcnc_lang.kinematics.workbench.findings import Finding, Section
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
 
 RELATIVE_TOLERANCE = 1e-6
@@ -189,7 +190,7 @@ def _bisect(kins: Kinematics, a: np.ndarray, b: np.ndarray, delta: float) -> Fin
         mid = (a + b) / 2.0
         try:
             jm = np.asarray(kins.inverse(_tup(mid)), dtype=float)
-        except Exception:  # an unreachable gap inside a reachable step: not a continuity question
+        except PLUGIN_FAILURES:  # an unreachable gap inside a reachable step: not a continuity question
             return None
         if np.max(np.abs(jm - ja)) >= np.max(np.abs(jb - jm)):
             b, jb = mid, jm

@@ -8,7 +8,7 @@ import time
 import numpy as np
 
 from edingcnc_lang.kinematics import abi
-from edingcnc_lang.kinematics.base import Kinematics, KinematicsPlugin
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsPlugin
 from edingcnc_lang.kinematics.workbench.evaluate import call_each
 from edingcnc_lang.kinematics.workbench.findings import Finding, Section, format_joints
 from edingcnc_lang.kinematics.workbench.geometry_checks import Samples
@@ -32,7 +32,7 @@ def control_and_state(kins: Kinematics, samples: Samples, tol: float,
     for name, control_id in (("OFF", abi.OFF), ("ON", abi.ON)):
         try:
             rc = kins.control(control_id, [*at, *[0.0] * (abi.CONTROL_DATA_LEN - len(at))])
-        except Exception as err:  # a plug-in under test may fail in any way
+        except PLUGIN_FAILURES as err:  # a plug-in under test may fail in any way
             rc, detail = None, f"raised {type(err).__name__}: {err}"
         else:
             detail = f"returned {rc}"
@@ -40,12 +40,12 @@ def control_and_state(kins: Kinematics, samples: Samples, tol: float,
             findings.append(Finding("K501", f"KIN {name} (control ID {control_id}) {detail}"))
     try:
         kins.control(UNKNOWN_CONTROL_ID, [0.0] * abi.CONTROL_DATA_LEN)
-    except Exception as err:  # must answer -1, not raise
+    except PLUGIN_FAILURES as err:  # must answer -1, not raise
         findings.append(Finding("K501", f"control ID {UNKNOWN_CONTROL_ID} (unknown) raised {type(err).__name__}: "
                                 f"{err}; return -1 for IDs the plug-in does not handle"))
     try:
         output = [float(v) for v in kins.user_output()]
-    except Exception as err:  # noqa: BLE001 - reported as a finding
+    except PLUGIN_FAILURES as err:  # noqa: BLE001 - reported as a finding
         output, problem = [], f"user_output raised {type(err).__name__}: {err}"
     else:
         problem = ("" if len(output) <= abi.USER_OUTPUT_LEN and all(math.isfinite(v) for v in output)
@@ -125,7 +125,7 @@ def speed(kins: Kinematics, samples: Samples, budget: float = 0.2) -> Section:
         start = time.perf_counter()
         try:
             kins.inverse_many(batch)
-        except Exception:  # the sampled poses were reached one by one; a batch failure is not a speed figure
+        except PLUGIN_FAILURES:  # the sampled poses were reached one by one; a batch failure is not a speed figure
             figures["batch_inverse_per_second"] = None
         else:
             figures["batch_inverse_per_second"] = len(batch) / max(time.perf_counter() - start, 1e-9)
@@ -143,7 +143,7 @@ def _rate(fn, rows: np.ndarray, budget: float) -> float:
         for row in rows[:500]:
             try:
                 fn(tuple(float(v) for v in row))
-            except Exception:  # speed only; failures were reported by the other checks
+            except PLUGIN_FAILURES:  # speed only; failures were reported by the other checks
                 pass
         calls += min(len(rows), 500)
         elapsed = time.perf_counter() - start

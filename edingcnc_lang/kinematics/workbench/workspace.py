@@ -7,14 +7,17 @@ plug-in's forward kinematics; else a default cube.  Rotary axes whose limits mea
 """
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from edingcnc_lang.kinematics.base import Kinematics
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics
 
-AXES = "xyzabc"
+if TYPE_CHECKING:
+    from edingcnc_lang.config import MachineConfig
+
 DEFAULT_BOX = ((-100.0, 100.0), (-100.0, 100.0), (-100.0, 100.0), (0.0, 0.0), (0.0, 0.0), (0.0, 0.0))
 UNLIMITED = 10_000.0
 ONE_TURN = (-180.0, 180.0)
@@ -69,9 +72,10 @@ def _corners(space: Workspace) -> np.ndarray:
 
 
 def parse_box(values: Sequence[float]) -> Workspace:
-    """``X0 X1 Y0 Y1 Z0 Z1 [A0 A1 [B0 B1 [C0 C1]]]`` from the command line."""
+    """``X0,X1,Y0,Y1,Z0,Z1[,A0,A1[,B0,B1[,C0,C1]]]`` from the command line (one value, split into numbers)."""
     if len(values) % 2 or not 6 <= len(values) <= 12:
-        raise ValueError("--box takes X0 X1 Y0 Y1 Z0 Z1 and optionally A0 A1 B0 B1 C0 C1 (6 to 12 numbers)")
+        raise ValueError("--box takes X0,X1,Y0,Y1,Z0,Z1 and optionally A0,A1,B0,B1,C0,C1 (6 to 12 numbers, "
+                         f"got {len(values)}), e.g. --box=-200,200,-200,200,0,150")
     pairs = [(min(values[i], values[i + 1]), max(values[i], values[i + 1])) for i in range(0, len(values), 2)]
     pairs += [(0.0, 0.0)] * (6 - len(pairs))
     return Workspace(tuple(pairs), "--box")
@@ -84,23 +88,13 @@ def _limited(pair: tuple[float, float], axis: int) -> tuple[float, float]:
     return (min(lo, hi), max(lo, hi))
 
 
-def from_cartesian_limits(section: Mapping[str, str]) -> Workspace | None:
-    """The ``[KINEMATICS]`` positive/negativeLimit<axis> keys, if the ini gives the linear ones."""
-    def number(key: str) -> float | None:
-        try:
-            return float(section[key.lower()])
-        except (KeyError, ValueError):
-            return None
-
-    pairs = []
-    for axis, letter in enumerate(AXES.upper()):
-        lo, hi = number(f"negativeLimit{letter}"), number(f"positiveLimit{letter}")
-        if lo is None or hi is None:
-            if axis < 3:
-                return None
-            pairs.append((0.0, 0.0))
-            continue
-        pairs.append(_limited((lo, hi), axis))
+def from_cartesian_limits(config: MachineConfig) -> Workspace | None:
+    """The ``[KINEMATICS]`` positive/negativeLimit<axis> values (read and checked by ``load_config``),
+    if the ini gives the linear ones; a rotary axis it does not limit is held at 0."""
+    if not all(config.gives_cartesian_limits(axis) for axis in range(3)):
+        return None
+    pairs = [_limited((lo, hi), axis) if config.gives_cartesian_limits(axis) else (0.0, 0.0)
+             for axis, (lo, hi) in enumerate(zip(config.cartesian_negative_limits, config.cartesian_positive_limits))]
     return Workspace(tuple(pairs), "cnc.ini [KINEMATICS] limits")
 
 
@@ -116,7 +110,7 @@ def from_joint_limits(kins: Kinematics, joint_limits: Sequence[tuple[float, floa
     for row in joints:
         try:
             pose = kins.forward(tuple(float(v) for v in row))
-        except Exception:  # an unassemblable joint set is simply outside the workspace
+        except PLUGIN_FAILURES:  # an unassemblable joint set is simply outside the workspace
             continue
         if all(np.isfinite(pose)):
             poses.append(pose)

@@ -1,4 +1,4 @@
-"""G76 passes (threading.py) against hand-checked LinuxCNC numbers, and the cycle's errors."""
+"""G76 passes (thread_passes.py) against hand-checked LinuxCNC numbers, and the cycle's errors."""
 from __future__ import annotations
 
 import math
@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from edingcnc_lang.threading import G76Words, ThreadError, ThreadMove, g76
+from edingcnc_lang.thread_passes import G76Words, ThreadError, ThreadMove, g76
 
 
 def words(**changes: float | None) -> G76Words:

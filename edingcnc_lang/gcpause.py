@@ -1,4 +1,4 @@
-"""What command bodies share beyond click: pausing the garbage collector around whole syntax trees."""
+"""Pausing the cyclic garbage collector around whole syntax trees, for every front end (CLI, lint workers, LSP)."""
 from __future__ import annotations
 
 import gc
