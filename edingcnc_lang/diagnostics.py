@@ -8,7 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .codes import Severity, lookup
-from .errors import EXIT_SYNTAX, EcncError, Location
+from .errors import EXIT_SYNTAX, EcncError, Location, printable
 
 
 @dataclass(frozen=True)
@@ -35,11 +35,11 @@ class Diagnostic:
 
     def format(self, with_source: bool = True) -> str:
         """``PATH:LINE:COL: error: message`` and, if known, the line with a caret."""
-        text = f"{self.location}: {self.severity.value}: {self.message}"
+        text = printable(f"{self.location}: {self.severity.value}: {self.message}")
         if with_source and self.source:
             caret_col = max(self.col, 1)
-            prefix = "".join("\t" if ch == "\t" else " " for ch in self.source[:caret_col - 1])
-            text += f"\n    {self.source}\n    {prefix}^"
+            prefix = "".join("\t" if ch == "\t" else " " for ch in printable(self.source[:caret_col - 1]))
+            text += f"\n    {printable(self.source)}\n    {prefix}^"
         return text
 
 

@@ -7,6 +7,7 @@ belongs to an error is part of its type (see docs/cli.md).
 from __future__ import annotations
 
 import importlib
+import re
 from dataclasses import dataclass
 from types import ModuleType
 
@@ -16,6 +17,17 @@ EXIT_USAGE = 2
 EXIT_SYNTAX = 65
 EXIT_RUNTIME = 70
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a job stopped with Ctrl-C
+
+
+# Characters a terminal would act on rather than show: C0 controls but tab and newline, DEL, C1
+# controls (a Latin-1 job can hold them) and the bidirectional overrides that reorder what is shown.
+_UNPRINTABLE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+
+
+def printable(text: str) -> str:
+    """``text`` safe to show on a terminal: a control character becomes ``\\xNN`` (``\\uNNNN``), so a
+    job cannot retitle or clear the user's terminal through an error message or a ``msg``."""
+    return _UNPRINTABLE.sub(lambda m: f"\\x{ord(m[0]):02x}" if ord(m[0]) < 0x100 else f"\\u{ord(m[0]):04x}", text)
 
 
 @dataclass(frozen=True)
@@ -51,7 +63,7 @@ class EcncError(Exception):
     def format(self) -> str:
         """Render as ``PATH:LINE:COL: error: MESSAGE`` plus indented notes."""
         head = f"{self.location}: error: {self.message}" if self.location else f"error: {self.message}"
-        return "\n".join([head, *(f"  {n}" for n in self.notes)])
+        return printable("\n".join([head, *(f"  {n}" for n in self.notes)]))
 
     def to_json(self) -> dict[str, object]:
         """The ``error`` object of a ``--json`` document: kind, message, where, and the text as printed."""

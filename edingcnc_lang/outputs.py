@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .canon import Event, Move, Pose
-from .errors import EcncError
+from .errors import EcncError, UsageFailure
 from .motion import Samples
 from .planner.estimate import Timing
 
@@ -25,6 +25,16 @@ if TYPE_CHECKING:
 
 SIX_REPR = ",".join(["%r"] * 6)
 TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
+SAMPLES_FORMATS = (".csv", ".npz")  # by the file's extension; "-" is CSV on standard output
+
+
+def samples_format_problem(path: Path) -> str | None:
+    """Why ``path`` cannot take the samples (an extension that is neither .csv nor .npz), else None."""
+    if str(path) == "-" or path.suffix.lower() in SAMPLES_FORMATS:
+        return None
+    return f"{path}: the samples file must end in .csv or .npz (or be - for CSV on standard output)"
+
+
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
 
 
@@ -87,6 +97,9 @@ class SamplesWriter:
     """
 
     def __init__(self, path: Path) -> None:
+        problem = samples_format_problem(path)
+        if problem:
+            raise UsageFailure(problem)
         self.path = path
         self._npz = path.suffix.lower() == ".npz"
         self._chunks: list[np.ndarray] = []

@@ -235,7 +235,7 @@ class Run:
             error = MachineError("blocks and sub calls are nested too deeply to run",
                                  Location(interp.path, interp.line))
         except OSError as err:  # a trace, samples or log file that cannot be written (disk full, ...)
-            error = _write_error(err, (self.options.trace, self.options.samples))
+            error = _write_error(err, self._outputs)
         except KeyboardInterrupt:  # Ctrl-C: say where the job was, report the state so far (exit 130)
             error = Interrupted("interrupted (Ctrl-C)", Location(interp.path, interp.line))
         finally:
@@ -243,7 +243,7 @@ class Run:
             try:
                 self.motion.close()
             except OSError as err:
-                error = error or _write_error(err, (self.options.trace, self.options.samples))
+                error = error or _write_error(err, self._outputs)
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -252,6 +252,11 @@ class Run:
             save_variables(self.config.path, interp.params.snapshot_changed())
         return result
 
+    @property
+    def _outputs(self) -> tuple[Path | None, ...]:
+        """The files the run writes, to name in an error when a buffered write fails without a name."""
+        return (self.options.trace, self.options.samples, self.options.events)
+
     def _flush(self, error: EcncError | None) -> EcncError | None:
         """Emit the moves the pipeline still holds; on a failed run the first error is the one reported."""
         try:
@@ -259,7 +264,7 @@ class Run:
         except EcncError as err:
             return error or err
         except OSError as err:
-            return error or _write_error(err)
+            return error or _write_error(err, self._outputs)
         return error
 
     def result(self, error: EcncError | None = None) -> RunResult:
@@ -293,7 +298,7 @@ class Run:
 def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError:
     """A failed write, naming the file: the error's own, else the output files the run writes.
 
-    A buffered write that fails (a full disk) carries no file name; it is the trace or samples file.
+    A buffered write that fails (a full disk) carries no file name; it is the trace, samples or events file.
     A closed pipe (``ecnc run --trace - | head``) is no failure of the run: it is raised again, so
     the CLI ends quietly with exit 1 as after any closed pipe.
     """

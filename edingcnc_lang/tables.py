@@ -21,6 +21,25 @@ def code_name(letter: str, key: int) -> str:
     return f"{letter}{whole}" + (f".{tenth}" if tenth else "")
 
 
+TOOL_CHANGE_SUB = "change_tool"  # the sub M6 calls when it is defined
+TOOL_CHANGE = code_key(6)
+
+
+def m_sub_name(key: int) -> str | None:
+    """The sub an M code without a built-in runs (``m100`` for M100), None for M codes with a tenth.
+
+    The interpreter and the linter both name the sub this way, so what a job runs and what the
+    linter links an M code to cannot differ.
+    """
+    whole, tenth = divmod(key, 10)
+    return None if tenth else f"m{whole}"
+
+
+def m_code_sub(key: int) -> str | None:
+    """The sub an M code (integer tenths) runs if it is defined: ``m100``, ``change_tool`` for M6."""
+    return TOOL_CHANGE_SUB if key == TOOL_CHANGE else m_sub_name(key)
+
+
 def _groups(spec: dict[str, tuple[float, ...]]) -> Mapping[int, str]:
     return MappingProxyType({code_key(c): group for group, codes in spec.items() for c in codes})
 

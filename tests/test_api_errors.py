@@ -26,3 +26,14 @@ def test_an_empty_output_file_name_is_a_usage_error(tmp_path: Path, option: str)
     result = invoke("run", job, option, "")
     assert result.exit_code == EXIT_USAGE
     assert "the file name is empty" in result.stderr
+
+
+def test_samples_with_another_extension_is_refused_in_the_api(tmp_path: Path) -> None:
+    from edingcnc_lang import RunOptions
+    from edingcnc_lang.errors import UsageFailure
+
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X1\n")
+    with pytest.raises(UsageFailure, match=r"out\.xyz: the samples file must end in \.csv or \.npz") as caught:
+        run_file(job, RunOptions(samples=tmp_path / "out.xyz"))
+    assert caught.value.exit_code == EXIT_USAGE and not (tmp_path / "out.xyz").exists()

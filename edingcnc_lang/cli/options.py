@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
+from ..errors import printable
 from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
@@ -114,7 +115,7 @@ def print_message(kind: str, text: str, path: str, line: int) -> None:
     if kind in MESSAGE_LABEL:
         from .style import styled
 
-        print(styled(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}", sys.stderr), file=sys.stderr)
+        print(styled(printable(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}"), sys.stderr), file=sys.stderr)
 
 
 def print_warning(diagnostic: Diagnostic) -> None:

@@ -44,6 +44,12 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
                                           ("--events -", events)) if value in (True, STDOUT)]
     if len(to_stdout) > 1:
         raise usage_error(f"only one output can go to standard output, not {' and '.join(to_stdout)}")
+    if samples:
+        from ..outputs import samples_format_problem
+
+        problem = samples_format_problem(Path(samples))
+        if problem:
+            raise usage_error(f"--samples {problem}")
     options = machine.run_options(show_messages=not as_json, trace=Path(trace) if trace else None,
                                   samples=Path(samples) if samples else None,
                                   events=Path(events) if events else None, save_vars=save_vars,

@@ -79,10 +79,8 @@ class LineWords(MachineState):
         An M code with no built-in (M100, ...) inside its own sub, directly or through GoSub, is an
         error: there is nothing to run instead, and running nothing would hide the mistake.
         """
-        if key % 10:
-            return None
-        name = f"m{key // 10}"
-        if name not in self.subs:
+        name = t.m_sub_name(key)
+        if name is None or name not in self.subs:
             return None
         if all(frame.name != name for frame in self.stack):
             return name
@@ -98,7 +96,9 @@ class LineWords(MachineState):
         self._feed_speed_tool(words, span)  # F, S and T act as usual before the sub runs
         for i, letter in enumerate(t.LETTER_ARGS, 1):
             self.params.set(i, words.get(letter, t.ABSENT_ARGUMENT))
-        self.call_sub(f"m{key // 10}", span)
+        name = t.m_sub_name(key)
+        assert name is not None  # _user_m_sub chose this code: a whole M number
+        self.call_sub(name, span)
 
     def _execute_line(self, words: dict[str, float], g: Mapping[str, int], m: Mapping[str, int],
                       span: n.Span) -> None:

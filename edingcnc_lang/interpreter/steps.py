@@ -102,10 +102,10 @@ class LineSteps(MachineState):
         self._stop(code, span)
 
     def _tool_change(self, span: n.Span) -> None:
-        if "change_tool" in self.subs and all(f.name != "change_tool" for f in self.stack):
+        if t.TOOL_CHANGE_SUB in self.subs and all(f.name != t.TOOL_CHANGE_SUB for f in self.stack):
             self.params.set(t.TOOL_NEW, float(self.selected_tool))
             self.params.set(t.TOOL_CHANGED, 0.0)
-            self.call_sub("change_tool", span)
+            self.call_sub(t.TOOL_CHANGE_SUB, span)
             return
         old = int(self.params.read(t.TOOL_CURRENT))
         self.params.set(t.TOOL_CURRENT, float(self.selected_tool))

@@ -27,7 +27,7 @@ SOURCE_SUFFIXES = frozenset({".cnc", ".nc", ".ngc", ".tap", ".txt"})
 CONFIG_SUFFIX = ".ini"
 MACRO_NAMES = ("macro.cnc", "user_macro.cnc")
 Reader = Callable[[Path, bool], SourceFile]  # (path, is a macro file) -> the parsed file
-_NOQA = re.compile(r";\s*noqa\b(?:\s*:\s*([A-Za-z0-9_]+(?:\s*,\s*[A-Za-z0-9_]+)*))?\s*$", re.IGNORECASE)
+NOQA = re.compile(r";\s*noqa\b(?:\s*:\s*([A-Za-z0-9_]+(?:\s*,\s*[A-Za-z0-9_]+)*))?\s*$", re.IGNORECASE)
 
 
 class UnknownCode(ValueError):
@@ -179,7 +179,7 @@ def _line(lines: tuple[str, ...], number: int) -> str:
 
 def _silenced(code: str, source: str) -> bool:
     """``; noqa`` silences every finding on its line, ``; noqa: G503,V3`` only those codes."""
-    match = _NOQA.search(source)
+    match = NOQA.search(source)
     if not match:
         return False
     listed = match.group(1)

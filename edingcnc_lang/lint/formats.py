@@ -8,6 +8,7 @@ from pathlib import Path
 from .. import __version__
 from ..codes import CODES, Severity
 from ..diagnostics import Diagnostic
+from ..errors import printable
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning"}
@@ -17,7 +18,7 @@ def text(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
     """``PATH:LINE:COL: CODE message``, each followed by its source line and a caret."""
     out = []
     for d in findings:
-        head = f"{d.path}:{d.line}:{d.col}: {d.code} {d.message}"
+        head = printable(f"{d.path}:{d.line}:{d.col}: {d.code} {d.message}")
         caret = d.format(with_source).partition("\n")[2] if with_source else ""
         out.append(f"{head}\n{caret}" if caret else head)
     return "\n".join(out)

@@ -3,17 +3,14 @@ from __future__ import annotations
 
 import re
 
-from ..tables import code_key
+from ..tables import TOOL_CHANGE_SUB
 
 CONTROLLER_SUBS = frozenset(
-    {"change_tool", "home_all", "home_x", "home_y", "home_z", "home_a", "home_b", "home_c",
+    {TOOL_CHANGE_SUB, "home_all", "home_x", "home_y", "home_z", "home_a", "home_b", "home_c",
      "user_reset", "userreset", "start", "zhcmgrid", "zero_set_rotation", "xhc_probe_z"}
     | {f"user_{i}" for i in range(1, 51)}
     | {f"xhc_macro_{i}" for i in range(1, 10)}
 )
-TOOL_CHANGE_SUB = "change_tool"  # what M6 calls
-TOOL_CHANGE = code_key(6)
-
 _M_SUB = re.compile(r"m0*([1-9]\d{0,2})")
 
 
@@ -26,11 +23,3 @@ def m_sub_number(name: str) -> int | None:
 def is_entry_point(name: str) -> bool:
     """True for subs the controller or an M code calls, which need no GoSub anywhere."""
     return name.lower() in CONTROLLER_SUBS or m_sub_number(name) is not None
-
-
-def m_code_sub(key: int) -> str | None:
-    """The name of the sub an M code (integer tenths) runs if it is defined: ``m100``, ``change_tool`` for M6."""
-    whole, tenth = divmod(key, 10)
-    if tenth:
-        return None
-    return TOOL_CHANGE_SUB if key == TOOL_CHANGE else f"m{whole}"

@@ -11,10 +11,10 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from .. import nodes as n
-from ..tables import ARG_PARAMS, PROBE_TRIPPED
+from ..tables import ARG_PARAMS, PROBE_TRIPPED, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
 from .facts import Code, FileFacts, gather, indexed_reads
 from .model import SourceFile
-from .names import TOOL_CHANGE, TOOL_CHANGE_SUB, is_entry_point, m_code_sub, m_sub_number
+from .names import is_entry_point, m_sub_number
 from .walk import Scope, dialog_fields, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)

@@ -10,11 +10,10 @@ import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from ..lint.driver import NOQA
 from ..parser import parse_line
 from .formatting import split_comment
 
-_NOQA = re.compile(r";\s*noqa\s*:\s*([A-Za-z0-9_]+(?:\s*,\s*[A-Za-z0-9_]+)*)\s*$", re.IGNORECASE)
-_NOQA_ALL = re.compile(r";\s*noqa\s*$", re.IGNORECASE)
 _UNCLOSED = re.compile(r"(?:Sub \S+|If|While) \(line (\d+)\) has no (EndSub|EndIf|EndWhile)( before)?")
 _BRACKETS = re.compile(r"write (\S+)\)$")
 _FRAGMENT = re.compile(r"brackets: (\S+) \(")
@@ -152,9 +151,9 @@ def _noqa(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     if finding.line >= len(lines) or not finding.code:
         return []
     text = lines[finding.line]
-    if _NOQA_ALL.search(text):
+    listed = NOQA.search(text)  # the comment exactly as the linter reads it
+    if listed and listed.group(1) is None:  # a bare ; noqa already silences every finding
         return []
-    listed = _NOQA.search(text)
     if listed:
         edit = Edit(finding.line, listed.end(1), listed.end(1), f",{finding.code}")
     else:

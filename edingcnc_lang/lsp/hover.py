@@ -12,7 +12,7 @@ from .. import knowledge
 from .. import nodes as n
 from ..lint.evaluate import evaluate
 from ..lint.model import SourceFile
-from ..lint.names import m_code_sub
+from ..tables import m_code_sub
 from ..lint.walk import dialog_fields, literal_index
 from ..printer import format_number
 from ..tables import ARG_PARAMS, code_key, is_read_only

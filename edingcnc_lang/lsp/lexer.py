@@ -9,17 +9,19 @@ import re
 from dataclasses import dataclass
 
 from .. import knowledge
+from ..knowledge.commands import FUNCTIONS
 
+_FUNCTION_NAMES = "|".join(sorted((re.escape(row[0]) for row in FUNCTIONS), key=len, reverse=True))
 _HEAD = re.compile(r"\s*(?:/\s*)?([A-Za-z_][A-Za-z0-9_]*)")
 SUB_NAME = re.compile(r"\s*(?:/\s*)?(?:sub|gosub)\s+([A-Za-z0-9_]+)", re.IGNORECASE)
-_PIECES = re.compile(r"""
+_PIECES = re.compile(rf"""
     (?P<string>"[^"]*"?)
   | (?P<comment>;.*|\([^)]*\)?)
   | (?P<param>\#\d+)
-  | (?P<function>(?:abs|acos|asin|atan|cos|exp|fix|fup|ln|round|sin|sqrt|tan)(?=\s*\[))
+  | (?P<function>(?:{_FUNCTION_NAMES})(?=\s*\[))
   | (?P<code>[GM]\s*\d+(?:\.\d+)?)
   | (?P<number>\d+(?:\.\d*)?|\.\d+)
-  | (?P<other>[A-Za-z_]{2,}[A-Za-z0-9_]*|[A-Za-z][-+]?[\d.]*|.)
+  | (?P<other>[A-Za-z_]{{2,}}[A-Za-z0-9_]*|[A-Za-z][-+]?[\d.]*|.)
 """, re.IGNORECASE | re.VERBOSE)
 
 

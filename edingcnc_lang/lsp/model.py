@@ -18,7 +18,7 @@ from ..diagnostics import Diagnostic
 from ..errors import EcncError, Location
 from ..lint.driver import SOURCE_SUFFIXES, LintOptions, is_macro_name, lint_paths, macros_beside
 from ..lint.model import SourceFile, UnreadableFile, load_source
-from ..lint.names import m_code_sub
+from ..tables import m_code_sub
 from ..lint.project import Project, SubKey
 from .lexer import SUB_NAME
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 from .. import nodes as n
 from ..lint.model import SourceFile
-from ..lint.names import m_code_sub
+from ..tables import m_code_sub
 from ..lint.project import sub_key
 from ..lint.walk import walk
 from ..tables import code_key

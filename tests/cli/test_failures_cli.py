@@ -121,6 +121,22 @@ def test_a_trace_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
     assert result.returncode == 70 and "/dev/full" in result.stderr and "Traceback" not in result.stderr
 
 
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
+def test_an_events_file_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\nM3 S1000\nG1 X2 F100\n")
+    result = _shell("ecnc run job.nc --events /dev/full", tmp_path)
+    assert result.returncode == 70
+    assert result.stderr == "error: cannot write /dev/full: No space left on device\n"
+
+
+def test_samples_with_another_extension_is_a_usage_error(tmp_path: Path) -> None:
+    write(tmp_path, "job.nc", "G0 X1\n")
+    result = _shell("ecnc run job.nc --samples out.xyz", tmp_path)
+    assert result.returncode == 2 and not (tmp_path / "out.xyz").exists()
+    assert ("ecnc run: error: --samples out.xyz: the samples file must end in .csv or .npz "
+            "(or be - for CSV on standard output)") in result.stderr
+
+
 def test_errors_with_stderr_closed_keep_their_exit_code(tmp_path: Path) -> None:
     write(tmp_path, "bad.nc", "G0 X[1\n")
     result = _shell("ecnc run bad.nc 2>&-", tmp_path)
@@ -163,3 +179,20 @@ def test_a_closed_pipe_on_standard_output_ends_quietly_with_exit_1(tmp_path: Pat
     process.stdout.close()
     stderr = process.stderr.read().decode()
     assert (process.wait(timeout=120), stderr) == (1, "")
+
+
+def test_control_bytes_of_the_job_are_escaped_in_errors_messages_and_findings(tmp_path: Path) -> None:
+    job = tmp_path / "esc.nc"
+    job.write_bytes(b'G0 X\x1b]0;HACKED\x07\x1b[2J\n')
+    messages = tmp_path / "msg.nc"
+    messages.write_bytes(b'msg "a\x1b[2Jb\x00"\n')
+    run, lint, said = invoke("run", job), invoke("lint", job), invoke("run", messages)
+    for output in (run.stderr, lint.stdout + lint.stderr, said.stderr):
+        assert "\x1b" not in output and "\x07" not in output and "\x00" not in output
+    assert f"{messages}:1: msg: a\\x1b[2Jb\\x00" in said.stderr
+    source, caret = run.stderr.splitlines()[-2:]
+    assert source == "    G0 X\\x1b]0;HACKED\\x07\\x1b[2J" and caret.index("^") == source.index("]")
+    assert "G0 X\\x1b]0;HACKED" in lint.stdout + lint.stderr
+    tabbed = tmp_path / "tab.nc"
+    tabbed.write_text("\tG0 X]\n")
+    assert invoke("run", tabbed).stderr.splitlines()[-2:] == ["    \tG0 X]", "    \t    ^"]
