@@ -3,17 +3,22 @@
 Real macro files come as ASCII, UTF-8 (with or without BOM) and Latin-1 with
 CRLF or LF line ends.  Each line is decoded on its own (UTF-8 first, Latin-1 as
 fallback) so a stray byte never breaks a file and nothing is held in memory
-beyond the current line.
+beyond the current line.  A file that starts with a UTF-16 BOM (what Windows
+Notepad saves as "Unicode") is decoded as UTF-16.
 """
 from __future__ import annotations
 
+import codecs
 import os
 from collections.abc import Iterator
+from itertools import chain
+from typing import BinaryIO
 
 from .errors import UnreadableFile
 from .limits import MAX_LINE_LENGTH
 
 BOM = b"\xef\xbb\xbf"
+UTF16_BOMS = (codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)
 # Bytes kept of a line longer than the limit: enough for MAX_LINE_LENGTH + 1 characters in any
 # encoding, so the parser still sees it is too long; the rest is skipped, not held in memory.
 LONG_LINE_BYTES = 4 * (MAX_LINE_LENGTH + 1)
@@ -46,6 +51,9 @@ def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
         raise UnreadableFile.of(os.fspath(path), exc) from None
     with handle:
         head = handle.read(len(BOM))
+        if head.startswith(UTF16_BOMS):
+            yield from _utf16_lines(handle, head)
+            return
         pending = b"" if head == BOM else head
         skipping = False  # inside the rest of an over-long line
         while True:
@@ -73,6 +81,42 @@ def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
                 lines = [decode_line(raw) for raw in body.split(b"\n")]
             for line in lines:
                 yield line.rstrip("\r")
+
+
+def _utf16_lines(handle: BinaryIO, head: bytes) -> Iterator[str]:
+    """The lines of a UTF-16 file (``head``: its first bytes, BOM included), decoded as a stream and
+    cut after MAX_LINE_LENGTH + 1 characters like any other file's; a broken pair shows as U+FFFD."""
+    decoder = codecs.getincrementaldecoder("utf-16")(errors="replace")
+    limit = MAX_LINE_LENGTH + 1
+    pending, skipping = "", False
+    for block in chain([head], iter(lambda: handle.read(CHUNK), b"")):
+        text = decoder.decode(block)
+        if skipping:
+            end = text.find("\n")
+            if end < 0:
+                continue
+            skipping, text = False, text[end:]
+        lines = (pending + text).split("\n")
+        pending = lines.pop()
+        if len(pending) > limit:
+            pending, skipping = pending[:limit], True
+        for line in lines:
+            yield line.rstrip("\r")
+    if not skipping:
+        pending += decoder.decode(b"", final=True)
+    if pending:
+        yield pending.rstrip("\r")
+
+
+def decode_text(data: bytes) -> str:
+    """A whole file's bytes as text, decoded as ``iter_file_lines`` decodes a file (BOMs dropped)."""
+    if data.startswith(UTF16_BOMS):
+        return data.decode("utf-16", errors="replace")
+    data = data.removeprefix(BOM)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return "\n".join(decode_line(raw) for raw in data.split(b"\n"))
 
 
 def iter_text_lines(text: str) -> Iterator[str]:

@@ -21,7 +21,7 @@ class Result:
         return self.stdout + self.stderr
 
 
-def invoke(*args: object, input: str | None = None, env: dict[str, str] | None = None) -> Result:  # noqa: A002
+def invoke(*args: object, input: str | bytes | None = None, env: dict[str, str] | None = None) -> Result:  # noqa: A002
     """``ecnc ARGS...``.  An exception is not caught: a CLI that would end in a traceback fails
     the test right there."""
     result = CliRunner().invoke(ecnc, [str(arg) for arg in args], input=input, env=env, catch_exceptions=False,

@@ -44,18 +44,14 @@ def make_streams_usable() -> None:
 
 
 def read_stdin() -> str:
-    """All of standard input as text, decoded as files are: UTF-8 (BOM dropped), Latin-1 line by line if not."""
-    from ..source import BOM, decode_line
+    """All of standard input as text, decoded as files are: UTF-8 (BOM dropped), Latin-1 line by line if not,
+    UTF-16 after its BOM."""
+    from ..source import decode_text
 
     buffer = getattr(sys.stdin, "buffer", None)
     if buffer is None:  # already text (an embedding program's StringIO)
         return sys.stdin.read() if sys.stdin else ""
-    data = buffer.read()
-    data = data[len(BOM):] if data.startswith(BOM) else data
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError:
-        return "\n".join(decode_line(raw) for raw in data.split(b"\n"))
+    return decode_text(buffer.read())
 
 
 def flush_quietly() -> None:

@@ -249,3 +249,17 @@ def test_a_dash_reads_standard_input() -> None:
 
 def test_a_dash_after_double_dash_is_still_standard_input() -> None:
     assert invoke("parse", "--", "-", input="G0 X1\n").exit_code == 0
+
+
+@pytest.mark.parametrize("codec", ["utf-16-le", "utf-16-be"])
+def test_a_windows_unicode_job_is_decoded_as_utf16(tmp_path: Path, codec: str) -> None:
+    """Notepad's "Unicode" (UTF-16 with its BOM, CRLF): run, lint and standard input read the text."""
+    text = "(Maße in mm)\r\nG0 X10 Y5\r\nmsg \"Höhe \" #5001\r\nG1 X20 F100\r\n"
+    data = ("\ufeff" + text).encode(codec)
+    job = tmp_path / "unicode.nc"
+    job.write_bytes(data)
+    ran = json.loads(invoke("run", "--json", job).stdout)
+    assert ran["position"]["x"] == 20.0 and ran["messages"][0]["text"] == "Höhe 10"
+    assert invoke("lint", job).exit_code == 0
+    piped = invoke("run", "-", input=data)
+    assert piped.exit_code == 0 and "<stdin>:3: msg: Höhe 10" in piped.stderr

@@ -4,7 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import source
@@ -26,6 +26,7 @@ def _reference(path: Path) -> list[str]:
                 max_size=12).map(b"".join),
        chunk=st.sampled_from([1, 2, 7, 1 << 20]))
 def test_block_reading_matches_line_reading(tmp_path_factory: pytest.TempPathFactory, data: bytes, chunk: int) -> None:
+    assume(not data.startswith(source.UTF16_BOMS))  # UTF-16 files: the test below
     path = tmp_path_factory.mktemp("src") / "f.nc"
     path.write_bytes(data)
     expected = _reference(path)
@@ -34,3 +35,28 @@ def test_block_reading_matches_line_reading(tmp_path_factory: pytest.TempPathFac
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(source, "CHUNK", chunk)
         assert list(source.iter_file_lines(path)) == expected
+
+
+@settings(max_examples=100, deadline=None)
+@given(lines=st.lists(st.text(st.characters(blacklist_characters="\r\n", blacklist_categories=("Cs",)), max_size=8),
+                      max_size=6),
+       codec=st.sampled_from(["utf-16-le", "utf-16-be"]), eol=st.sampled_from(["\n", "\r\n"]),
+       chunk=st.sampled_from([1, 2, 3, 7, 1 << 20]))
+def test_utf16_files_with_a_bom_are_decoded(tmp_path_factory: pytest.TempPathFactory, lines: list[str], codec: str,
+                                            eol: str, chunk: int) -> None:
+    """What Windows Notepad saves as "Unicode" (UTF-16 with a BOM) reads as the text it holds."""
+    path = tmp_path_factory.mktemp("src") / "f.nc"
+    path.write_bytes(("\ufeff" + "".join(line + eol for line in lines)).encode(codec))
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(source, "CHUNK", chunk)
+        assert list(source.iter_file_lines(path)) == lines
+    assert source.decode_text(path.read_bytes()) == "".join(line + eol for line in lines)
+
+
+def test_a_utf16_line_longer_than_the_limit_is_cut(tmp_path: Path) -> None:
+    path = tmp_path / "long.nc"
+    path.write_bytes(("G0 X1\r\n(" + "x" * (3 * source.MAX_LINE_LENGTH) + ")\r\nG0 X2").encode("utf-16"))
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(source, "CHUNK", 4096)
+        lines = list(source.iter_file_lines(path))
+    assert lines[0] == "G0 X1" and len(lines[1]) == source.MAX_LINE_LENGTH + 1 and lines[2:] == ["G0 X2"]
