@@ -126,3 +126,15 @@ def test_the_work_zero_is_the_coordinate_systems_origin_under_rotation_and_scali
     assert record_job(rotated).work_zero == (0.0, 0.0, 0.0)
     scaled = write(tmp_path, "scale.nc", "G10 L2 P1 X20 Y10 Z-3\nG54 G0 X0 Y0\nG51 X5 Y5 P2\nG1 X10 F500\n")
     assert record_job(scaled).work_zero == pytest.approx((20.0, 10.0, -3.0))
+
+
+def test_the_caller_survives_cutter_compensation_rotation_and_a_tool_change_sub(tmp_path: Path) -> None:
+    """Moves rebuilt by the comp and rotation stages, and the change_tool sub's, keep their job line."""
+    job = write(tmp_path, "comp.nc", "G0 X0 Y0 Z5\nT1 M6\nGoSub prof\nM30\n"
+                "Sub prof\n G68 X0 Y0 R30\n G41 D1 G1 X10 Y0 F500\n G1 X20\n G1 Y10\n G40 G1 X30\n G69\nEndSub\n")
+    path = record_job(job)
+    assert path.error is None
+    own = path.files == path.paths.index(str(job))
+    assert set(path.callers[own & (path.lines >= 7)].tolist()) == {3}
+    assert set(path.callers[~own].tolist()) == {2}  # the change_tool sub of the macro file, called by T1 M6
+    assert len(path.select_lines(3, 3)) == int((own & (path.lines >= 7)).sum())
