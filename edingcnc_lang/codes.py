@@ -2,7 +2,8 @@
 
 Codes are stable public names (scripts filter on them).  The first letter
 groups them: E syntax, S structure, V expressions and variables, D dialogs,
-G G/M-code usage, F files, C configuration.
+G G/M-code usage, F files, C configuration; K is ``ecnc kins check``'s findings about a
+kinematics plug-in (``KINS_CODES``, not lint codes).
 """
 from __future__ import annotations
 
@@ -90,6 +91,31 @@ CODES: dict[str, Code] = _table(
     ("C700", E, "kinematics user output variables out of range in cnc.ini"),
     ("C701", E, "invalid value in cnc.ini"),
 )
+
+
+# K: ``ecnc kins check`` findings about a kinematics plug-in, code -> (check, one-line summary).  Kept
+# apart from CODES because ``ecnc lint`` never reports them (no --select K); ``ecnc help K101`` explains
+# them from docs/kinematics.md.  The digit after K groups them by check: 1 round trip, 2 continuity,
+# 3 singularities, 4 domain, 5 control and state, 6 compiled libraries.
+KINS_CODES: dict[str, tuple[str, str]] = {
+    "K101": ("round trip", "forward(inverse(p)) does not come back to p"),
+    "K102": ("round trip", "inverse(forward(j)) does not come back to the joints j the inverse gave"),
+    "K103": ("round trip", "forward fails on joints that the inverse produced"),
+    "K201": ("continuity", "neighbouring poses give joints that jump (a branch switch or a discontinuity)"),
+    "K202": ("continuity", "a joint angle wraps around (a jump of a whole turn) inside the workspace"),
+    "K301": ("singularity", "the Jacobian's condition number explodes: a singular pose inside the workspace"),
+    "K401": ("domain", "NaN or infinite values instead of a KinematicsDomainError"),
+    "K402": ("domain", "an exception other than KinematicsDomainError"),
+    "K403": ("domain", "no pose of the workspace is reachable"),
+    "K501": ("control", "a control call failed (KIN ON/OFF returned non-zero, or an unknown ID raised)"),
+    "K502": ("control", "the user output is not at most 12 finite numbers"),
+    "K503": ("state", "the same pose gives other joints later: hidden state drifts"),
+    "K504": ("state", "switching the kinematics OFF and ON again changes its answers"),
+    "K601": ("compiled", "the library cannot be loaded or lacks a required export"),
+    "K602": ("compiled", "a call crashed the process"),
+    "K603": ("compiled", "KinematicsType or KinematicsVersion returns a value the header does not allow"),
+    "K604": ("compiled", "a call did not return (hung)"),
+}
 
 
 def lookup(code: str) -> Code:

@@ -131,21 +131,28 @@ class ZhcTable:
         return (f"{head}, min {min(values):.4f}, max {max(values):.4f}, range {max(values) - min(values):.4f}, "
                 f"mean {mean:.4f}")
 
-    def save(self, path: str | os.PathLike[str]) -> None:
+    def to_text(self) -> str:
         """The documented text format: a header line, ``key value`` lines, then one row of heights per Y."""
         lines = [TABLE_HEADER, *(f"{key} {getattr(self, key):.6g}" for key in _TABLE_KEYS)]
         lines += [" ".join("nan" if z is None else f"{z:.6f}" for z in row) for row in self.heights]
+        return "\n".join(lines) + "\n"
+
+    def save(self, path: str | os.PathLike[str]) -> None:
         with open(path, "w", encoding="utf-8", newline="\n") as handle:
-            handle.write("\n".join(lines) + "\n")
+            handle.write(self.to_text())
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> "ZhcTable":
-        shown = os.fspath(path)
         try:
             with open(path, encoding="utf-8", errors="replace") as handle:
-                text = handle.read().splitlines()
+                return cls.from_text(handle.read(), os.fspath(path))
         except OSError as err:
-            raise HeightMapError(f"cannot read the height table: {err.strerror}", Location(shown)) from None
+            raise HeightMapError(f"cannot read the height table: {err.strerror}", Location(os.fspath(path))) from None
+
+    @classmethod
+    def from_text(cls, content: str, shown: str) -> "ZhcTable":
+        """A table from the text ``to_text`` writes; errors name ``shown`` and the line."""
+        text = content.splitlines()
         rows = [(number, line.split()) for number, line in enumerate(text, 1)
                 if line.strip() and not line.lstrip().startswith(";")]
         header: dict[str, float] = {}

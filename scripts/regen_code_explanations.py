@@ -1,9 +1,10 @@
-"""Regenerate edingcnc_lang/lint/explanations.json from docs/lint.md (``ecnc help CODE`` prints it).
+"""Regenerate edingcnc_lang/lint/explanations.json from docs/lint.md and docs/kinematics.md (``ecnc help CODE``).
 
-docs/lint.md is where each lint code is explained for people; this script copies, per code, its
+docs/lint.md is where each lint code is explained for people, docs/kinematics.md each ``ecnc kins
+check`` finding code (K101 ...); this script copies, per code, its
 table row (what is wrong, an example) and the paragraphs that start with the code (with the lists
 and code blocks that follow them) into package data, so an installed ``ecnc`` can explain a code
-without the docs at hand.  Run it after editing docs/lint.md:
+without the docs at hand.  Run it after editing either:
 
     python scripts/regen_code_explanations.py
 """
@@ -15,11 +16,14 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs" / "lint.md"
+KINS_DOCS = ROOT / "docs" / "kinematics.md"
 OUT = ROOT / "edingcnc_lang" / "lint" / "explanations.json"
 
 CODE = r"[A-Z]\d{3}"
 ROW = re.compile(rf"^\| ({CODE}) \| \w+ \| (.*?) \|(?: (.*?) \|)?$")
+KINS_ROW = re.compile(r"^\| (K\d{3}) \| [\w ]+ \| (.*?) \|()$")  # code | check | what is wrong
 STARTS_WITH_CODE = re.compile(rf"^\*{{0,2}}({CODE})\b")
+STARTS_WITH_KINS_CODE = re.compile(r"^\*{0,2}(K\d{3})\b")
 
 
 def _plain(text: str) -> str:
@@ -29,7 +33,8 @@ def _plain(text: str) -> str:
     return re.sub(r"\[(.+?)\]\((.+?)\)", r"\1 (\2)", text)
 
 
-def explanations(markdown: str) -> dict[str, str]:
+def explanations(markdown: str, row: re.Pattern[str] = ROW,
+                 starts: re.Pattern[str] = STARTS_WITH_CODE) -> dict[str, str]:
     """Per code: the table row as sentences, then the paragraphs about it."""
     rows: dict[str, list[str]] = {}
     notes: dict[str, list[str]] = {}
@@ -40,7 +45,7 @@ def explanations(markdown: str) -> dict[str, str]:
         if first.startswith("|"):
             owner = None
             for line in block.splitlines():
-                match = ROW.match(line.strip())
+                match = row.match(line.strip())
                 if match:
                     code, what, example = match.groups()
                     shown = example if example and example != "see below" else None
@@ -49,7 +54,7 @@ def explanations(markdown: str) -> dict[str, str]:
         if first.startswith("#"):
             owner = None
             continue
-        match = STARTS_WITH_CODE.match(first)
+        match = starts.match(first)
         if match:
             owner = match.group(1)
         if owner is not None:
@@ -58,9 +63,14 @@ def explanations(markdown: str) -> dict[str, str]:
             for code in sorted({*rows, *notes})}
 
 
+def all_explanations() -> dict[str, str]:
+    """The lint codes from docs/lint.md and the kins check codes from docs/kinematics.md."""
+    kins = explanations(KINS_DOCS.read_text(encoding="utf-8"), KINS_ROW, STARTS_WITH_KINS_CODE)
+    return dict(sorted({**explanations(DOCS.read_text(encoding="utf-8")), **kins}.items()))
+
+
 def main() -> None:
-    OUT.write_text(json.dumps(explanations(DOCS.read_text(encoding="utf-8")), indent=1, ensure_ascii=False) + "\n",
-                   encoding="utf-8")
+    OUT.write_text(json.dumps(all_explanations(), indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     print(f"wrote {OUT.relative_to(ROOT)}")
 
 

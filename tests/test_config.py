@@ -165,6 +165,11 @@ def test_integral_float_is_accepted_as_int(tmp_path: Path) -> None:
     ("[VARIABLES]\n#4000 = 0.0\n#4001 = nan\n", 3, "#4001 in [VARIABLES]: expected a number"),
     ("[VARIABLES]\n#4002 = 1e999\n", 2, "#4002 in [VARIABLES]: expected a number within the range"),
     ("[JOINT_0]\nmaxVelocity = -1e400\n", 2, "maxVelocity in [JOINT_0]: expected a number within the range"),
+    # a limit of 0 or less is a mistake in the file, not "no limit"
+    ("[JOINT_0]\nname = X\nmaxVelocity = 0\n", 3, "maxVelocity = 0 in [JOINT_0] must be greater than 0 (mm/s)"),
+    ("[JOINT_5]\nmaxAcceleration = -5 ; not used\n", 2, "maxAcceleration = -5 in [JOINT_5] must be greater than 0"),
+    ("[KINEMATICS]\nmaxVelocityB = 0.0\n", 2, "maxVelocityB = 0.0 in [KINEMATICS] must be greater than 0"),
+    ("[KINEMATICS]\nmaxVelocityX = 25\nmaxAccelerationC = -1\n", 3, "maxAccelerationC = -1 in [KINEMATICS]"),
 ])
 def test_bad_number_is_located(tmp_path: Path, text: str, line: int, fragment: str) -> None:
     path = write(tmp_path, text, eol="\r\n")
@@ -329,15 +334,13 @@ def test_save_then_load_round_trips(tmp_path_factory: pytest.TempPathFactory,
     assert b"\n" not in path.read_bytes().replace(b"\r\n", b"")
 
 
-@pytest.mark.parametrize(("text", "line", "fragment"), [
-    ("[JOINT_0]\nname = X\nmaxVelocity = 0\n", 3, "maxVelocity = 0 in [JOINT_0] must be greater than 0 (mm/s)"),
-    ("[JOINT_5]\nmaxAcceleration = -5 ; not used\n", 2, "maxAcceleration = -5 in [JOINT_5] must be greater than 0"),
-    ("[KINEMATICS]\nmaxVelocityB = 0.0\n", 2, "maxVelocityB = 0.0 in [KINEMATICS] must be greater than 0"),
-    ("[KINEMATICS]\nmaxVelocityX = 25\nmaxAccelerationC = -1\n", 3, "maxAccelerationC = -1 in [KINEMATICS]"),
-])
-def test_a_limit_of_zero_or_less_is_an_error(tmp_path: Path, text: str, line: int, fragment: str) -> None:
-    path = write(tmp_path, text, eol="\r\n")
-    with pytest.raises(ConfigError) as info:
-        load_config(path)
-    assert (info.value.location.path, info.value.location.line) == (str(path), line)
-    assert fragment in info.value.message
+def test_axis_limits_are_the_joints_on_a_trivial_machine_and_the_cartesian_box_with_kinematics() -> None:
+    """One answer for the limits report and the pictures: which travel applies to the axes."""
+    from edingcnc_lang.config import MachineConfig, load_config
+
+    root = Path(__file__).resolve().parent.parent
+    delta = load_config(root / "examples/delta/cnc.ini")
+    assert delta.axis_limits() == (list(delta.cartesian_negative_limits), list(delta.cartesian_positive_limits))
+    assert delta.axis_limits()[1][:3] == [400.0, 400.0, 200.0]  # not the carriages' 0..420 mm
+    plain = MachineConfig.default()
+    assert plain.axis_limits() == ([j.negative_limit for j in plain.joints], [j.positive_limit for j in plain.joints])

@@ -8,11 +8,12 @@ from .base import Command, usage_error
 from .params import HELP_TOPIC
 
 
-@click.command("help", cls=Command, short_help="Explain a lint code (ecnc help V302) or show a command's help.")
+@click.command("help", cls=Command, short_help="Explain a lint or kins check code (ecnc help V302) or show a command's help.")
 @click.argument("topic", metavar="[CODE | COMMAND...]", nargs=-1, type=HELP_TOPIC)
 @click.pass_context
 def help_command(ctx: click.Context, topic: tuple[str, ...]) -> int:
-    """Print the long explanation of lint CODE (as ecnc lint --explain CODE), or the help of
+    """Print the long explanation of lint CODE (as ecnc lint --explain CODE) or of a kins check
+    finding (ecnc help K101), or the help of
     COMMAND (ecnc help kins inverse); alone, the help of ecnc."""
     context = ctx.find_root()
     for word in topic:
@@ -33,14 +34,14 @@ def explain_or_fail(code: str) -> str:
     """The explanation of lint ``code``, else of a G/M code, parameter, command or function of the
     language (the table hover and completion use), or a usage error that points to the lists."""
     from ..lint import UnknownCode
-    from ..lint.explain import explain
+    from ..lint.explain import explain, explain_kins
 
     try:
         return explain(code)
     except UnknownCode:
         from ..knowledge import describe
 
-        text = describe(code)
+        text = explain_kins(code) or describe(code)
         if text is None:
             raise usage_error(f"no command or lint code {code!r} (see ecnc --help and ecnc lint --list-codes)") from None
         return text

@@ -8,13 +8,15 @@ Applying the table to the moves is the ``HeightCompensation`` stage's job (``sta
 """
 from __future__ import annotations
 
-from pathlib import Path, PureWindowsPath
+from pathlib import Path
+from typing import TextIO
 
 from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
 from ..errors import EcncError
 from ..heightmap import ZhcTable
+from ..job_files import OpenMode, job_file, open_job_file
 from ..parser import parse_line
 from .state import MachineState
 
@@ -68,23 +70,34 @@ class HeightComp(MachineState):
         self.canon.event(Event("zhc", self.path, self.line, data))
 
     def _zhc_file(self, stmt: n.Command) -> Path:
-        """The file ZHCS/ZHCL name, inside the log folder like logfile's (a path is reduced to its name)."""
-        name = PureWindowsPath(stmt.args.strip().strip('"')).name
-        if name in ("", ".", ".."):
-            raise self.fail(f"{stmt.name.upper()} needs a file name", stmt.span)
-        return (self.log_dir or Path(self.path).resolve().parent) / name
+        """The file ZHCS/ZHCL name, in the log folder under logfile's rules (job_files.py)."""
+        try:
+            return job_file(self.log_folder(), stmt.args.strip().strip('"'))
+        except ValueError as exc:
+            raise self.fail(f"{stmt.name.upper()} {exc}", stmt.span) from None
+
+    def _zhc_open(self, path: Path, mode: OpenMode, span: n.Span) -> TextIO:
+        try:
+            return open_job_file(path, mode)
+        except OSError as exc:
+            verb = "read" if mode == "read" else "write"
+            raise self.fail(f"cannot {verb} the height table {path}: {exc.strerror or exc}", span) from None
 
     def _zhc_save(self, stmt: n.Command) -> None:
         if self.zhc is None:
             raise self.fail("ZHCS before ZHCINIT: there is no height table to save", stmt.span)
         path = self._zhc_file(stmt)
         path.parent.mkdir(parents=True, exist_ok=True)
-        self.zhc.save(path)
+        with self._zhc_open(path, "write", stmt.span) as handle:
+            handle.write(self.zhc.to_text())
         self.canon.event(Event("zhcs", self.path, self.line, {"file": str(path)}))
 
     def _zhc_load(self, stmt: n.Command) -> None:
+        path = self._zhc_file(stmt)
+        with self._zhc_open(path, "read", stmt.span) as handle:
+            text = handle.read()
         try:
-            self.zhc = ZhcTable.load(self._zhc_file(stmt))
+            self.zhc = ZhcTable.from_text(text, str(path))
         except EcncError as err:
             raise self.fail(f"ZHCL: {err.format().removeprefix('error: ')}", stmt.span) from None
 

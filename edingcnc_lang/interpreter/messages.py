@@ -2,11 +2,8 @@
 from __future__ import annotations
 
 import math
-import os
-import stat
 from collections.abc import Mapping
 from datetime import datetime
-from pathlib import Path, PureWindowsPath
 from typing import TextIO
 
 from .. import nodes as n
@@ -14,6 +11,7 @@ from .. import tables as t
 from ..canon import Event
 from ..errors import JobAborted, Location
 from ..evaluator import param_index
+from ..job_files import job_file, open_job_file
 from ..host import DialogAnswer, DialogField
 from ..dialogs import dialog_fields
 from .state import MachineState, format_value
@@ -75,13 +73,10 @@ class Messages(MachineState):
 
     def _exec_logfile(self, stmt: n.LogFile) -> None:
         mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
-        name = PureWindowsPath(stmt.name).name  # never outside the log folder, whatever the path says
-        if name in ("", ".", ".."):
-            raise self.fail(f"logfile {stmt.name!r} names no file", stmt.span)
-        if any(ord(c) < 32 for c in name):
-            raise self.fail(f"logfile {stmt.name!r}: a file name cannot hold control characters", stmt.span)
-        folder = self.log_dir or Path(self.path).resolve().parent
-        self._log_file = folder / name
+        try:  # never outside the log folder, whatever the path says
+            self._log_file = job_file(self.log_folder(), stmt.name)
+        except ValueError as exc:
+            raise self.fail(f"logfile {exc}", stmt.span) from None
         if mode == 0:
             self._open_log(stmt.span, truncate=True).close()
 
@@ -97,35 +92,9 @@ class Messages(MachineState):
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
         assert self._log_file is not None
         try:
-            return open_own_file(self._log_file, truncate)
+            return open_job_file(self._log_file, "write" if truncate else "append")
         except OSError as exc:
             raise self.fail(f"cannot write the log file {self._log_file}: {exc.strerror or exc}", span) from None
-
-
-# Opening flags for a log file: never through a symbolic link, never blocking on a FIFO.
-_LOG_FLAGS = (os.O_WRONLY | os.O_CREAT | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
-              | getattr(os, "O_CLOEXEC", 0))
-
-
-def open_own_file(path: Path, truncate: bool) -> TextIO:
-    """Open ``path`` to append, refusing what would write elsewhere: a symbolic link (a job archive may
-    ship one pointing outside the folder), a hard link, a device or a FIFO.  Raises OSError."""
-    if not hasattr(os, "O_NOFOLLOW") and path.is_symlink():  # Windows: no O_NOFOLLOW
-        raise OSError(0, "it is a symbolic link; a job writes only files in its log folder")
-    try:
-        fd = os.open(path, _LOG_FLAGS, 0o666)
-    except OSError as exc:
-        if path.is_symlink():
-            raise OSError(exc.errno, "it is a symbolic link; a job writes only files in its log folder") from None
-        raise
-    info = os.fstat(fd)
-    if not stat.S_ISREG(info.st_mode) or info.st_nlink > 1:
-        os.close(fd)
-        raise OSError(0, "it is not a plain file of its own (a hard link, a device or a pipe); "
-                         "a job writes only files in its log folder")
-    if truncate:
-        os.ftruncate(fd, 0)
-    return os.fdopen(fd, "a", encoding="utf-8")
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).

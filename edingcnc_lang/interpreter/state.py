@@ -243,6 +243,10 @@ class MachineState:
             return Location(span.path, span.line, span.col)
         return Location(self.path, self.line)
 
+    def log_folder(self) -> Path:
+        """Where the files a job names (logfile, ZHCS, ZHCL) live: --log-dir, else the job's folder."""
+        return self.log_dir or Path(self.path).resolve().parent
+
     def fail(self, message: str, span: n.Span | None = None) -> MachineError:
         return MachineError(message, self.where(span))
 

@@ -1,6 +1,7 @@
-"""The long explanation of a lint code (``ecnc help CODE``, ``ecnc lint --explain CODE``).
+"""The long explanation of a lint code (``ecnc help CODE``, ``ecnc lint --explain CODE``), and of a
+``ecnc kins check`` finding code (``ecnc help K101``).
 
-The texts are docs/lint.md's, copied into package data by scripts/regen_code_explanations.py so
+The texts are docs/lint.md's and docs/kinematics.md's, copied into package data by scripts/regen_code_explanations.py so
 an installed ``ecnc`` has them; the registry (codes.py) gives the severity and summary.
 """
 from __future__ import annotations
@@ -9,7 +10,7 @@ import json
 from functools import cache
 from importlib import resources
 
-from ..codes import CODES
+from ..codes import CODES, KINS_CODES
 from .driver import UnknownCode
 
 
@@ -24,6 +25,18 @@ def explain(code: str) -> str:
     entry = CODES.get(code.strip().upper())
     if entry is None:
         raise UnknownCode(code)
-    head = f"{entry.code} ({entry.severity.value}): {entry.summary}"
-    text = _texts().get(entry.code)
+    return _with_text(entry.code, f"{entry.code} ({entry.severity.value}): {entry.summary}")
+
+
+def explain_kins(code: str) -> str | None:
+    """``K101 (kins check, round trip): summary`` and the long text; None for a code not in KINS_CODES."""
+    key = code.strip().upper()
+    if key not in KINS_CODES:
+        return None
+    check, summary = KINS_CODES[key]
+    return _with_text(key, f"{key} (kins check, {check}): {summary}")
+
+
+def _with_text(code: str, head: str) -> str:
+    text = _texts().get(code)
     return f"{head}\n\n{text}" if text else head

@@ -4,6 +4,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from ..codes import CODES
+from ..limits import MAX_LINE_LENGTH
 from ..diagnostics import Diagnostic
 from .model import SourceFile
 from .project import Project
@@ -33,6 +34,8 @@ def unit_directive(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 def line_length(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """The controller reads 256 characters a line as documented and 1055 at most."""
     for number, text in enumerate(file.lines, 1):
+        if len(text) > MAX_LINE_LENGTH:  # past the parser's limit: E110 says so (the line was cut when read)
+            continue
         if len(text) > MAX_LENGTH:
             yield at_line("F602", f"line is {len(text)} characters long; the controller reads at most "
                           f"{MAX_LENGTH}: split it", file, number, MAX_LENGTH + 1)

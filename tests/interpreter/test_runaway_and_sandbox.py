@@ -9,6 +9,8 @@ import pytest
 
 from edingcnc_lang import limits
 from edingcnc_lang.errors import MachineError
+from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.host import Host
 from edingcnc_lang.runner import RunOptions, run_string
 from tests.cli_runner import invoke
 
@@ -91,3 +93,38 @@ def test_a_move_of_more_samples_than_the_limit_is_an_error_not_gigabytes(tmp_pat
     err = error_of("G0 X10\nG1 X100000 F1\n", samples=tmp_path / "s.csv")  # 1.2e9 samples at 200 Hz
     assert err.location.line == 2  # type: ignore[union-attr]
     assert f"a move may have at most {limits.MAX_MOVE_SAMPLES:,}" in err.message
+
+
+ZHCS_JOB = "ZHCINIT 10 1 1\nG0 Z5\nG38.2 Z-5 F100\nZHCADDPOINT\nZHCS {name}\nM30\n"
+
+
+def zhc_error(logs: Path, name: str, save: bool) -> MachineError:
+    surface = HeightMap((0.0, 10.0), (0.0, 10.0), ((0.0, 0.0), (0.0, 0.0)))  # flat, for the probe to touch
+    source = ZHCS_JOB.format(name=name) if save else f"ZHCL {name}\nM30\n"
+    return error_of(source, log_dir=logs, host=Host(probe=ProbeAt(surface)))
+
+
+@pytest.mark.parametrize("save", [True, False], ids=["ZHCS", "ZHCL"])
+@pytest.mark.parametrize(("make", "reason"), [
+    (lambda logs: (logs / "t.txt").symlink_to(logs.parent / "outside.txt"), "it is a symbolic link"),
+    (lambda logs: os.link(logs.parent / "outside.txt", logs / "t.txt"), "it is not a plain file of its own"),
+])
+def test_zhcs_and_zhcl_refuse_links_like_logfile(logs: Path, make, reason: str, save: bool) -> None:  # type: ignore[no-untyped-def]
+    make(logs)
+    err = zhc_error(logs, "t.txt", save)
+    verb = "write" if save else "read"
+    assert err.format().startswith(f"job.nc:{5 if save else 1}:1: error: cannot {verb} the height table "
+                                   f"{logs / 't.txt'}: {reason}")
+    assert (logs.parent / "outside.txt").read_text() == "precious\n"
+
+
+@pytest.mark.parametrize("save", [True, False], ids=["ZHCS", "ZHCL"])
+def test_zhcs_and_zhcl_on_a_fifo_are_errors_not_hangs(logs: Path, save: bool) -> None:
+    os.mkfifo(logs / "f.txt")
+    assert zhc_error(logs, "f.txt", save).location.line == (5 if save else 1)  # type: ignore[union-attr]
+
+
+@pytest.mark.parametrize("save", [True, False], ids=["ZHCS", "ZHCL"])
+def test_zhc_file_names_with_control_characters_are_errors(logs: Path, save: bool) -> None:
+    err = zhc_error(logs, "a\0b.txt", save)
+    assert "a file name cannot hold control characters" in err.message

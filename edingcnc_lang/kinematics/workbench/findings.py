@@ -11,27 +11,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from edingcnc_lang.canon import AXES, format_pose
+from edingcnc_lang.codes import KINS_CODES
 
-# code -> (check, one-line summary); `ecnc kins check --json` and docs/kinematics.md use the same words.
-FINDING_CODES: dict[str, tuple[str, str]] = {
-    "K101": ("round trip", "forward(inverse(p)) does not come back to p"),
-    "K102": ("round trip", "inverse(forward(j)) does not come back to the joints j the inverse gave"),
-    "K103": ("round trip", "forward fails on joints that the inverse produced"),
-    "K201": ("continuity", "neighbouring poses give joints that jump (a branch switch or a discontinuity)"),
-    "K202": ("continuity", "a joint angle wraps around (a jump of a whole turn) inside the workspace"),
-    "K301": ("singularity", "the Jacobian's condition number explodes: a singular pose inside the workspace"),
-    "K401": ("domain", "NaN or infinite values instead of a KinematicsDomainError"),
-    "K402": ("domain", "an exception other than KinematicsDomainError"),
-    "K403": ("domain", "no pose of the workspace is reachable"),
-    "K501": ("control", "a control call failed (KIN ON/OFF returned non-zero, or an unknown ID raised)"),
-    "K502": ("control", "the user output is not at most 12 finite numbers"),
-    "K503": ("state", "the same pose gives other joints later: hidden state drifts"),
-    "K504": ("state", "switching the kinematics OFF and ON again changes its answers"),
-    "K601": ("compiled", "the library cannot be loaded or lacks a required export"),
-    "K602": ("compiled", "a call crashed the process"),
-    "K603": ("compiled", "KinematicsType or KinematicsVersion returns a value the header does not allow"),
-    "K604": ("compiled", "a call did not return (hung)"),
-}
+FINDING_CODES = KINS_CODES  # the registry's K group (codes.py)
 
 JOINT_NAMES = ("jX", "jY", "jZ", "jA", "jB", "jC")
 
