@@ -165,6 +165,13 @@ class MachineConfig:
         """X is programmed and reported as a diameter (only ever on a lathe)."""
         return self.lathe and self.diameter_programming
 
+    def axis_limits(self) -> tuple[list[float], list[float]]:
+        """Lower and upper travel of the axes X..C: the joints' limits on a trivial machine, the
+        ``[KINEMATICS]`` Cartesian limits with a kinematics plug-in (joints are not axes there)."""
+        if self.kinematics_name.lower() in ("", "trivial"):
+            return [j.negative_limit for j in self.joints], [j.positive_limit for j in self.joints]
+        return list(self.cartesian_negative_limits), list(self.cartesian_positive_limits)
+
     @classmethod
     def default(cls) -> MachineConfig:
         """The machine used without an ini: trivial kinematics, wide limits, 200 Hz, homed at 0."""

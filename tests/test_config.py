@@ -332,3 +332,15 @@ def test_save_then_load_round_trips(tmp_path_factory: pytest.TempPathFactory,
     for number, value in values.items():
         assert loaded[number] == pytest.approx(value, abs=1e-6)
     assert b"\n" not in path.read_bytes().replace(b"\r\n", b"")
+
+
+def test_axis_limits_are_the_joints_on_a_trivial_machine_and_the_cartesian_box_with_kinematics() -> None:
+    """One answer for the limits report and the pictures: which travel applies to the axes."""
+    from edingcnc_lang.config import MachineConfig, load_config
+
+    root = Path(__file__).resolve().parent.parent
+    delta = load_config(root / "examples/delta/cnc.ini")
+    assert delta.axis_limits() == (list(delta.cartesian_negative_limits), list(delta.cartesian_positive_limits))
+    assert delta.axis_limits()[1][:3] == [400.0, 400.0, 200.0]  # not the carriages' 0..420 mm
+    plain = MachineConfig.default()
+    assert plain.axis_limits() == ([j.negative_limit for j in plain.joints], [j.positive_limit for j in plain.joints])

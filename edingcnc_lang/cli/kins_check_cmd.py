@@ -104,12 +104,13 @@ def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     from ..kinematics.workbench import check as workbench
     from ..kinematics.workbench.envelope import plot_envelope
 
-    if Path(output).suffix.lower() not in (".png", ".svg", ".pdf"):
-        raise usage_error(f"-o {output}: the picture's name must end in .png, .svg or .pdf")
+    from ..plot.formats import picture_format
+
+    fmt = picture_format(Path(output))  # before the workspace is searched
     options = _options(**workspace)
     machine = workbench.read_machine(options.ini)
     kins = workbench.load_plugin(plugin, machine)
     space = workbench.workspace_for(kins, options, machine)
     workbench.plug.switch_on(kins, space.centre)
-    print(plot_envelope(kins, space, Path(output), plugin, resolution=resolution))
+    print(plot_envelope(kins, space, Path(output), plugin, resolution=resolution, fmt=fmt))
     return EXIT_OK

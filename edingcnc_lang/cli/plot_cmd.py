@@ -5,14 +5,11 @@ from pathlib import Path
 
 import click
 
-from .base import Command, usage_error
+from ..plot.names import COLOR_MODES, VIEW_NAMES
+from .base import Command
 from .options import MachineOptions, job_argument, machine_options, override_options
 from .params import OUTPUT_FILE
 from .view_cmd import report
-
-VIEWS = ("auto", "top", "front", "side", "iso", "lathe")
-COLORS = ("tool", "kind", "feed", "speed")
-FORMATS = (".png", ".svg", ".pdf")
 
 
 @click.command("plot", cls=Command, short_help="Draw the toolpath of JOB as a PNG, SVG or PDF picture.")
@@ -21,10 +18,10 @@ FORMATS = (".png", ".svg", ".pdf")
 @override_options
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="Picture to write; .png, .svg or .pdf (default: JOB.png beside the job).")
-@click.option("--view", type=click.Choice(VIEWS), default="auto", show_default=True,
+@click.option("--view", type=click.Choice(("auto", *VIEW_NAMES)), default="auto", show_default=True,
               help="Seen from above, the front, the right side, isometric, or the lathe's ZX plane (Z across, "
                    "X up); auto: top, or lathe for a job that never moves Y.")
-@click.option("--color", type=click.Choice(COLORS), default="tool", show_default=True,
+@click.option("--color", type=click.Choice(COLOR_MODES), default="tool", show_default=True,
               help="Colour the feed moves by tool, by kind, by programmed feed or by the planner's speed.")
 @click.option("--fit", type=click.Choice(("job", "part", "machine")), default="job", show_default=True,
               help="Fit the picture to the whole job, to the part's bounding box, or to the machine's travel.")
@@ -36,8 +33,6 @@ def plot(job: str, machine: MachineOptions, feed_override: float, rapid_override
     part's bounding box and the machine limits. Prints the file written."""
     from ..plot.commands import plot_job
 
-    if output and Path(output).suffix.lower() not in FORMATS:
-        raise usage_error(f"--output {output}: the extension names the format, one of {', '.join(FORMATS)}")
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     written = plot_job(Path(job), options, Path(output) if output else None,
                        view=view, color=color, fit=fit, joints=joints)

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..errors import EXIT_OK, JobAborted
+from ..plot.names import VIEW_NAMES
 from .base import Command
 from .options import MachineOptions, job_argument, machine_options, override_options
 from .params import OUTPUT_FILE, POSITIVE_INT
@@ -38,8 +39,8 @@ class LineRange(click.ParamType):
 @override_options
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="HTML file to write (default: JOB.html beside the job).")
-@click.option("--view", type=click.Choice(("auto", "top", "front", "side", "iso")), default="auto",
-              show_default=True, help="The view the page opens with; auto: iso, or front for a lathe job.")
+@click.option("--view", type=click.Choice(("auto", *VIEW_NAMES)), default="auto", show_default=True,
+              help="The view the page opens with; auto: iso, or lathe (Z across, X up) for a job that never moves Y.")
 @click.option("--max-moves", metavar="N", type=POSITIVE_INT,
               help="Moves in the page before long runs of feed moves are thinned (default 25000).")
 @click.option("--lines", metavar="A:B", type=LineRange(),

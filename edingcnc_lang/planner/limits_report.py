@@ -61,9 +61,7 @@ class LimitsReport:
         cfg = self.config
         joints_lower = [j.negative_limit for j in cfg.joints]
         joints_upper = [j.positive_limit for j in cfg.joints]
-        cartesian = cfg.kinematics_name.lower() not in ("", "trivial")
-        axes_lower = list(cfg.cartesian_negative_limits) if cartesian else joints_lower
-        axes_upper = list(cfg.cartesian_positive_limits) if cartesian else joints_upper
+        axes_lower, axes_upper = cfg.axis_limits()
         return {"axes": _table(self.axis_low, self.axis_high, axes_lower, axes_upper),
                 "joints": _table(self.joint_low, self.joint_high, joints_lower, joints_upper)}
 

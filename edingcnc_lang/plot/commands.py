@@ -12,6 +12,7 @@ from pathlib import Path
 from ..errors import EcncError, Location
 from ..outputs import ensure_parent
 from ..runner import RunOptions
+from .formats import picture_target
 from .toolpath import Toolpath, record_job
 
 
@@ -44,18 +45,17 @@ def parse_line_range(text: str) -> tuple[int, int]:
 def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str = "auto", color: str = "tool",
              fit: str = "job", joints: bool = False) -> Written:
     """Run ``job`` and draw its toolpath (or with ``joints`` its joint positions over time) into ``out``."""
-    from .render import picture_format, plot_toolpath, require_matplotlib
+    from .render import plot_toolpath
 
     target = ensure_parent(out or default_output(job, "-joints.png" if joints else ".png"))
-    require_matplotlib()
-    picture_format(target)  # a wrong extension or a missing folder is told before the job runs
+    fmt = picture_target(target)  # a wrong extension or a missing folder is told before the job runs
     path = record_job(job, options, samples=joints)
     if joints:
         from .joints import plot_joints
 
-        plot_joints(path, target)
+        plot_joints(path, target, fmt)
     else:
-        plot_toolpath(path, target, view=view, color=color, fit=fit)
+        plot_toolpath(path, target, view=view, color=color, fit=fit, fmt=fmt)
     return Written(target, path)
 
 
@@ -63,7 +63,7 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
              lines: tuple[int, int] | None = None, view: str = "auto") -> Written:
     """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given).
 
-    ``auto`` opens a lathe job (no Y motion) from the front and everything else in the iso view.
+    ``auto`` opens a lathe job (no Y motion) in the lathe view and everything else in the iso view.
     """
     from .views import auto_view
     from .viewer import MAX_MOVES, write_view
@@ -75,6 +75,6 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
         if not len(path):
             raise EcncError(f"lines {lines[0]} to {lines[1]} make no moves", Location(str(job)))
     if view == "auto":
-        view = "front" if auto_view(path) == "lathe" else "iso"
+        view = "lathe" if auto_view(path) == "lathe" else "iso"
     write_view(path, target, max_moves or MAX_MOVES, view=view)
     return Written(target, path)

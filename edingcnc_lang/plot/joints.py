@@ -12,7 +12,8 @@ import numpy as np
 
 from ..errors import EcncError, Location
 from . import views as v
-from .render import DPI, picture_format, require_matplotlib
+from .formats import picture_target
+from .render import DPI
 from .toolpath import Toolpath
 
 JOINT_COLUMNS = ("jx", "jy", "jz", "ja", "jb", "jc")
@@ -29,10 +30,9 @@ def moving_joints(path: Toolpath) -> list[int]:
     return moving or present
 
 
-def plot_joints(path: Toolpath, out: Path) -> Path:
-    """Draw the joint positions over time into ``out`` (PNG, SVG or PDF)."""
-    require_matplotlib()
-    fmt = picture_format(out)
+def plot_joints(path: Toolpath, out: Path, fmt: str | None = None) -> Path:
+    """Draw the joint positions over time into ``out`` (PNG, SVG or PDF; ``fmt`` when already checked)."""
+    fmt = fmt or picture_target(out)
     if not path.samples or not len(path.samples.get("t", ())):
         raise EcncError("the job made no moves, so there are no joint positions to plot", Location(path.job))
     from matplotlib.figure import Figure

@@ -15,38 +15,19 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..errors import EcncError, MissingExtra
 from . import views as v
+from .formats import picture_target
 from .toolpath import KINDS, Toolpath
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-FORMATS = (".png", ".svg", ".pdf")
 SIZE_INCHES = (11.0, 7.5)
 DPI = 100
 MARGIN = 0.06        # of the drawing's span, around what is fitted
 FEED_WIDTH = 1.3
 RAPID_WIDTH = 0.8
-
-
-def require_matplotlib() -> None:
-    """Fail with how to install matplotlib, rather than an ImportError traceback."""
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        raise MissingExtra("pictures need matplotlib, which is not installed: "
-                           "pip install 'edingcnc-lang[plot]'") from None
-
-
-def picture_format(out: Path) -> str:
-    """The format named by the file's extension; an unknown one is the user's mistake, told plainly."""
-    suffix = out.suffix.lower()
-    if suffix not in FORMATS:
-        raise EcncError(f"cannot write {out}: unknown picture format {suffix or '(none)'!r} "
-                        f"(use {', '.join(FORMATS)})")
-    return suffix[1:]
 
 
 @dataclass(frozen=True)
@@ -68,12 +49,11 @@ class Picture:
 
 
 def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "tool",
-                  fit: str = "job") -> Picture:
+                  fit: str = "job", fmt: str | None = None) -> Picture:
     """Draw ``path`` into ``out``; ``fit`` is ``job`` (the path and the work zero), ``part`` (the
     part's bounding box: rapids to a tool changer far away are cut off) or ``machine`` (the whole
-    travel from cnc.ini)."""
-    require_matplotlib()
-    fmt = picture_format(out)
+    travel from cnc.ini).  ``fmt``: the format its command already checked (see ``picture_target``)."""
+    fmt = fmt or picture_target(out)
     from matplotlib.figure import Figure
 
     view = v.auto_view(path) if view == "auto" else view

@@ -227,12 +227,7 @@ class Recorder:
 def machine_limits(config: MachineConfig) -> tuple[np.ndarray, np.ndarray] | None:
     """The XYZ travel from cnc.ini: the joints' limits on a trivial machine, else ``[KINEMATICS]``'s
     Cartesian limits; None when they are the wide built-in defaults (no ini, or not configured)."""
-    if config.kinematics_name.lower() in ("", "trivial"):
-        lower = [j.negative_limit for j in config.joints[:3]]
-        upper = [j.positive_limit for j in config.joints[:3]]
-    else:
-        lower = list(config.cartesian_negative_limits[:3])
-        upper = list(config.cartesian_positive_limits[:3])
+    lower, upper = (limits[:3] for limits in config.axis_limits())
     if len(lower) < 3 or any(abs(v) >= WIDE for v in (*lower, *upper)):
         return None
     return np.array(lower, dtype=float), np.array(upper, dtype=float)

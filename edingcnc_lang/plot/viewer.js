@@ -42,8 +42,10 @@
   const isRapid = (i) => rapidKinds.has(kind[i]);
 
   // ---------------------------------------------------------------- camera
-  const VIEWS = { top: [0, 0], front: [0, -90], side: [-90, -90], iso: [45, -54.7356] };  // yaw, pitch (deg)
-  const cam = { yaw: 0, pitch: 0, scale: 1, u: 0, v: 0 };
+  // yaw, pitch, roll (deg); lathe: seen from +Y and turned a quarter, so Z runs across and X up
+  const VIEWS = { top: [0, 0, 0], front: [0, -90, 0], side: [-90, -90, 0], iso: [45, -54.7356, 0],
+                  lathe: [180, -90, -90] };
+  const cam = { yaw: 0, pitch: 0, roll: 0, scale: 1, u: 0, v: 0 };
   const canvas = document.getElementById("view");
   const ctx = canvas.getContext("2d");
   let projected = new Float32Array(points.length / 3 * 2);
@@ -51,18 +53,21 @@
 
   function project(x, y, z) {
     const cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
-    const x1 = x * cy - y * sy, y1 = x * sy + y * cy;
-    return [x1, y1 * cp - z * sp];
+    const cr = Math.cos(cam.roll), sr = Math.sin(cam.roll);
+    const u = x * cy - y * sy, v = (x * sy + y * cy) * cp - z * sp;
+    return [u * cr - v * sr, u * sr + v * cr];
   }
 
   function projectAll() {
-    const key = cam.yaw + "," + cam.pitch;
+    const key = cam.yaw + "," + cam.pitch + "," + cam.roll;
     if (key === projectedFor) return;
     const cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
+    const cr = Math.cos(cam.roll), sr = Math.sin(cam.roll);
     for (let p = 0, q = 0; p < points.length; p += 3, q += 2) {
       const x = points[p], y = points[p + 1], z = points[p + 2];
-      projected[q] = x * cy - y * sy;
-      projected[q + 1] = (x * sy + y * cy) * cp - z * sp;
+      const u = x * cy - y * sy, v = (x * sy + y * cy) * cp - z * sp;
+      projected[q] = u * cr - v * sr;
+      projected[q + 1] = u * sr + v * cr;
     }
     projectedFor = key;
   }
@@ -99,7 +104,7 @@
   }
 
   function setView(name) {
-    [cam.yaw, cam.pitch] = VIEWS[name].map((deg) => deg * Math.PI / 180);
+    [cam.yaw, cam.pitch, cam.roll] = VIEWS[name].map((deg) => deg * Math.PI / 180);
     document.querySelectorAll("[data-view]").forEach((b) => b.classList.toggle("active", b.dataset.view === name));
     fit();
     draw();
@@ -439,7 +444,7 @@
     const keys = {
       ArrowLeft: () => show(current - 1), ArrowRight: () => show(current + 1), Home: () => show(0),
       End: () => show(count - 1), " ": togglePlay, t: () => setView("top"), f: () => setView("front"),
-      s: () => setView("side"), i: () => setView("iso"), 0: () => { fit(); draw(); },
+      s: () => setView("side"), i: () => setView("iso"), l: () => setView("lathe"), 0: () => { fit(); draw(); },
     };
     const action = keys[event.key];
     if (action) { event.preventDefault(); action(); }

@@ -9,6 +9,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from ..planner.estimate import format_duration
+from .names import VIEW_NAMES
 from .toolpath import FEED_KINDS, KINDS, RAPID_KINDS, Toolpath
 
 _C, _S = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
@@ -16,15 +18,14 @@ _C, _S = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
 # view -> (2x3 projection of machine XYZ onto the page, horizontal label, vertical label)
 # top: seen from +Z; front: from -Y; side: from +X; iso: from the front-left-top corner (-X, -Y, +Z);
 # lathe: the turning plane as a lathe hand sees it, the spindle axis Z across and X up.
-VIEWS: dict[str, tuple[tuple[tuple[float, float, float], tuple[float, float, float]], str, str]] = {
-    "top": (((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)), "X (mm)", "Y (mm)"),
-    "front": (((1.0, 0.0, 0.0), (0.0, 0.0, 1.0)), "X (mm)", "Z (mm)"),
-    "side": (((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)), "Y (mm)", "Z (mm)"),
-    "iso": (((_C, -_C, 0.0), (_S, _S, 1.0)), "", ""),
-    "lathe": (((0.0, 0.0, 1.0), (1.0, 0.0, 0.0)), "Z (mm)", "X (mm, radius)"),
-}
-VIEW_NAMES = ("auto", *VIEWS)
-COLOR_MODES = ("tool", "kind", "feed", "speed")
+VIEWS: dict[str, tuple[tuple[tuple[float, float, float], tuple[float, float, float]], str, str]] = dict(zip(
+    VIEW_NAMES, (
+        (((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)), "X (mm)", "Y (mm)"),
+        (((1.0, 0.0, 0.0), (0.0, 0.0, 1.0)), "X (mm)", "Z (mm)"),
+        (((0.0, 1.0, 0.0), (0.0, 0.0, 1.0)), "Y (mm)", "Z (mm)"),
+        (((_C, -_C, 0.0), (_S, _S, 1.0)), "", ""),
+        (((0.0, 0.0, 1.0), (1.0, 0.0, 0.0)), "Z (mm)", "X (mm, radius)"),
+    ), strict=True))
 
 TOOL_COLORS = ("#1f77b4", "#2ca02c", "#9467bd", "#d62728", "#ff7f0e", "#17becf", "#8c564b", "#e377c2",
                "#bcbd22", "#7f7f7f")
@@ -75,18 +76,6 @@ def is_rapid(kind: int) -> bool:
     return kind in RAPID_KINDS
 
 
-def duration_text(seconds: float) -> str:
-    """``1 h 12 min 5 s`` style, as a machinist reads it."""
-    whole = int(round(seconds))
-    hours, rest = divmod(whole, 3600)
-    minutes, secs = divmod(rest, 60)
-    parts = [f"{hours} h"] if hours else []
-    if hours or minutes:
-        parts.append(f"{minutes} min")
-    parts.append(f"{secs} s")
-    return " ".join(parts)
-
-
 def size_text(lower: np.ndarray, upper: np.ndarray) -> str:
     """The part's size, ``X 84.00 x Y 44.00 x Z 14.00 mm``."""
     return " x ".join(f"{axis} {v:.2f}" for axis, v in zip("XYZ", upper - lower)) + " mm"
@@ -102,7 +91,7 @@ def title_text(path: Toolpath) -> str:
     if path.kinematics.lower() not in ("", "trivial"):
         parts.append(f"kinematics {path.kinematics}")
     if path.seconds > 0.0:
-        parts.append(f"about {duration_text(path.seconds)}")
+        parts.append(f"about {format_duration(path.seconds)}")  # as the run summary says it
     text = "  \u2014  ".join(parts)
     if path.error is not None:
         text += "\nstopped: " + path.error.format().splitlines()[0]

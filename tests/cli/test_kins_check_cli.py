@@ -67,7 +67,7 @@ def test_plot_writes_the_picture(tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     bad = invoke("kins", "plot", "deltakins", "-o", tmp_path / "delta.txt")
-    assert bad.exit_code == 2 and ".png, .svg or .pdf" in bad.stderr
+    assert bad.exit_code == 2 and ".png, .svg, .pdf (not .txt)" in bad.stderr
 
 
 @pytest.mark.skipif(not (ROOT / "kins/c/rotatekins.c").exists(), reason="source checkout only")

@@ -61,7 +61,7 @@ def test_a_syntax_error_writes_nothing_and_exits_65(tmp_path: Path) -> None:
 def test_usage_errors_name_the_option(tmp_path: Path) -> None:
     job = write(tmp_path, "square.nc", SQUARE)
     result = invoke("plot", job, "-o", tmp_path / "p.jpg")
-    assert result.exit_code == 2 and "--output" in result.stderr and ".png" in result.stderr
+    assert result.exit_code == 2 and "p.jpg" in result.stderr and ".png" in result.stderr
     result = invoke("plot", job, "--view", "bottom")
     assert result.exit_code == 2 and "--view" in result.stderr
     result = invoke("view", job, "--lines", "9:3")
@@ -111,3 +111,16 @@ def test_the_override_knobs_of_ecnc_run_change_the_viewers_estimate(tmp_path: Pa
         seconds.append(float(re.search(r'"seconds":([0-9.e+-]+)', out.read_text(encoding="utf-8")).group(1)))
     assert seconds[1] > 1.5 * seconds[0]  # the cut at half the feed takes about twice as long
     assert invoke("plot", job, "--rapid-override", "150").exit_code == 2  # at most 100, as for ecnc run
+
+
+def test_plot_and_kins_plot_tell_a_wrong_picture_name_alike_before_any_work(tmp_path: Path) -> None:
+    job = write(tmp_path, "square.nc", SQUARE)
+    said = []
+    for args in (("plot", job), ("plot", job, "--joints"), ("kins", "plot", "deltakins")):
+        out = tmp_path / "p.jpg"
+        result = invoke(*args, "-o", out)
+        assert result.exit_code == 2 and not out.exists()
+        said.append(result.stderr.strip())
+    assert len(set(said)) == 1 and said[0].endswith(
+        f"error: cannot write {tmp_path / 'p.jpg'}: the extension names the picture format, one of "
+        ".png, .svg, .pdf (not .jpg)")

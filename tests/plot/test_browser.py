@@ -80,3 +80,27 @@ def test_a_kinematic_job_shows_its_joints(tmp_path: Path) -> None:
     assert console(log) == [], console(log)
     assert "joint 2 (Z)" in log and 'data-errors="0"' in log
     assert "joint 3 (A)" not in log  # only the joints that move are read out
+
+
+def test_a_lathe_job_opens_in_the_lathe_view_with_z_across(tmp_path: Path) -> None:
+    """Z to the right and X up: a long, thin turned part lies across the screen, not up it."""
+    from edingcnc_lang.plot.commands import view_job
+
+    job = tmp_path / "shaft.nc"
+    job.write_text("G18 G90 G21\nG0 X12 Z2\nG1 X10 F200\nG1 Z-120\nG1 X14\nG0 Z2\nM30\n")
+    page = view_job(job, RunOptions(), tmp_path / "shaft.html").out
+    log = chromium(page, tmp_path / "profile", "--dump-dom")
+    assert console(log) == [], console(log)
+    assert re.search(r'<button type="button" data-view="lathe"[^>]*class="active"', log), log[-2000:]
+    imread = pytest.importorskip("matplotlib.image").imread
+    shots = {}
+    for name in ("lathe", "front"):
+        shot = tmp_path / f"{name}.png"
+        chromium(page, tmp_path / f"profile-{name}", f"--screenshot={shot}", fragment=f"#view={name}")
+        canvas = imread(shot)[100:700, 50:900, :3]
+        colour = np.array([int(views.TOOL_COLORS[0][i:i + 2], 16) / 255 for i in (1, 3, 5)])
+        rows, cols = np.nonzero(np.linalg.norm(canvas - colour, axis=2) < 0.15)
+        assert len(rows) > 100, f"the cut is not on the {name} screenshot"
+        shots[name] = (np.ptp(cols), np.ptp(rows))
+    assert shots["lathe"][0] > 3 * shots["lathe"][1]  # Z across
+    assert shots["front"][1] > 3 * shots["front"][0]  # the front view puts Z up

@@ -5,9 +5,11 @@ Each test reads the written image back and finds the path's colour at the pixels
 """
 from __future__ import annotations
 
-import builtins
+import re
+import sys
 from pathlib import Path
 
+import click
 import numpy as np
 import pytest
 
@@ -19,7 +21,8 @@ from edingcnc_lang import RunOptions  # noqa: E402
 from edingcnc_lang.errors import EcncError, MissingExtra  # noqa: E402
 from edingcnc_lang.plot import views  # noqa: E402
 from edingcnc_lang.plot.joints import plot_joints  # noqa: E402
-from edingcnc_lang.plot.render import plot_toolpath, require_matplotlib  # noqa: E402
+from edingcnc_lang.plot.formats import require_matplotlib  # noqa: E402
+from edingcnc_lang.plot.render import plot_toolpath  # noqa: E402
 from edingcnc_lang.plot.toolpath import record_job  # noqa: E402
 from tests.plot.jobs import CIRCLE, SQUARE, TWO_TOOLS, write  # noqa: E402
 
@@ -158,19 +161,12 @@ def test_the_format_follows_the_extension(square, tmp_path: Path, suffix: str, m
 
 
 def test_an_unknown_extension_is_a_plain_error(square, tmp_path: Path) -> None:
-    with pytest.raises(EcncError, match=r"unknown picture format '\.jpg' \(use \.png, \.svg, \.pdf\)"):
+    with pytest.raises(EcncError, match=r"one of \.png, \.svg, \.pdf \(not \.jpg\)"):
         plot_toolpath(square, tmp_path / "square.jpg")
 
 
 def test_without_matplotlib_the_message_says_how_to_install_it(monkeypatch: pytest.MonkeyPatch) -> None:
-    real_import = builtins.__import__
-
-    def no_matplotlib(name: str, *args, **kwargs):
-        if name.split(".")[0] == "matplotlib":
-            raise ImportError(name)
-        return real_import(name, *args, **kwargs)
-
-    monkeypatch.setattr(builtins, "__import__", no_matplotlib)
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # what an import finds when it is not installed
     with pytest.raises(MissingExtra, match=r"pip install 'edingcnc-lang\[plot\]'") as caught:
         require_matplotlib()
     assert caught.value.exit_code == 2
@@ -233,3 +229,22 @@ def test_fit_part_cuts_off_far_rapids(tmp_path: Path) -> None:
     (w0, _), (w1, _) = whole.to_pixels([[10, 10, 0], [30, 10, 0]])
     assert (x1 - x0) > 10 * (w1 - w0)  # the 20 mm cut fills the picture instead of a corner of it
     assert part.to_pixels([[500, 500, 0]])[0][0] > part.axes[2]  # the tool change position is off the picture
+
+
+def test_the_title_gives_the_estimate_as_the_run_summary_does(square) -> None:
+    from edingcnc_lang.planner.estimate import format_duration
+
+    assert 0 < square.seconds < 59.0
+    title = views.title_text(square)
+    assert f"about {format_duration(square.seconds)}" in title and re.search(r"about \d+\.\d s", title)
+
+
+def test_the_commands_offer_exactly_the_views_and_colours_there_are() -> None:
+    from edingcnc_lang.cli.plot_cmd import plot
+    from edingcnc_lang.cli.view_cmd import view
+    from edingcnc_lang.plot.names import COLOR_MODES, VIEW_NAMES
+
+    choices = {(command.name, p.name): tuple(p.type.choices) for command in (plot, view) for p in command.params
+               if isinstance(p.type, click.Choice) and p.name in ("view", "color")}
+    assert choices[("plot", "view")] == choices[("view", "view")] == ("auto", *views.VIEWS) == ("auto", *VIEW_NAMES)
+    assert choices[("plot", "color")] == COLOR_MODES

@@ -17,6 +17,7 @@ from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
+from edingcnc_lang.plot.formats import picture_format
 
 SLICES = ((0, 1, 2), (0, 2, 1), (1, 2, 0))  # (horizontal axis, vertical axis, the axis held at its middle)
 STATUS_COLOURS = ("#4c9a2a", "#d9d9d9", "#d62728", "#ff7f0e")  # reached, out of reach, raised, NaN
@@ -41,8 +42,10 @@ def slice_grid(space: Workspace, across: int, up: int, resolution: int) -> tuple
     return poses, xs, ys
 
 
-def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, resolution: int = 60) -> Path:
-    """Draw the slices into ``output`` (PNG, SVG or PDF by its extension) and return the path."""
+def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, resolution: int = 60,
+                  fmt: str | None = None) -> Path:
+    """Draw the slices into ``output`` (PNG, SVG or PDF by its extension, ``fmt`` when already checked)."""
+    fmt = fmt or picture_format(Path(output))
     plt = _pyplot()
     from matplotlib.colors import ListedColormap
 
@@ -71,6 +74,6 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
     fig.legend(legend, ["reached", "out of reach", "raised", "NaN / inf"], loc="outside upper right", ncols=4)
     fig.suptitle(f"{label}: workspace from {space.source}", x=0.01, ha="left")
     output = Path(output)
-    fig.savefig(output, dpi=80)
+    fig.savefig(output, dpi=80, format=fmt)
     plt.close(fig)
     return output
