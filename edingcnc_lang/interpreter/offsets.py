@@ -18,10 +18,36 @@ class CoordinateSystems(MachineState):
     a parameter it depends on changes."""
 
     def _offsets_changed(self) -> None:
+        """An offset changed (G5x, G10, G92.., G43, a macro's write): under G68 the pivot moves with
+        the offsets, so the current point is re-expressed about the new pivot and the machine stays."""
+        pivot = self._rotation_pivot() if self.rotation is not None and self._offset is not None else None
         self._offset = None
         system = self.params.values[t.COORD_SYSTEM]  # a macro may select the system by writing #5220
         if system == int(system) and 1 <= system <= 9:
             self.modal["coord_system"] = t.COORD_SYSTEM_CODES[int(system) - 1]
+        if pivot is not None and self.rotation is not None:
+            moved = self._rotation_pivot()  # recomputes the offset and tells the rotation stage
+            if moved != pivot:
+                here = rotate_about(self.pos, pivot, self.rotation[2])
+                self.pos = list(rotate_about(here, moved, -self.rotation[2]))
+
+    def _offset_reading(self, reading: Mapping[int, float], base: list[float]) -> list[float]:
+        """The offset (machine minus work) with which the current point, the machine staying put,
+        reads ``reading`` on the given axes; the others read what they read with ``base``.  Under
+        G68 the reading is taken through the rotation (whose pivot moves with the offset), so X and
+        Y are solved together."""
+        if self.rotation is None:
+            return [self.pos[i] - reading[i] if i in reading else b for i, b in enumerate(base)]
+        pivot, angle = self.rotation[:2], self.rotation[2]
+        here = rotate_about(self.pos, self._rotation_pivot(), angle)
+        work = list(rotate_about([h - b for h, b in zip(here, base)], pivot, -angle))
+        for axis, number in reading.items():
+            work[axis] = number
+        return [h - w for h, w in zip(here, rotate_about(work, pivot, angle))]
+
+    def _solved_axes(self, axes: Mapping[int, float]) -> set[int]:
+        """The axes whose offset G92/G10 L20 set: the programmed ones, and X with Y under G68."""
+        return set(axes) | ({0, 1} if self.rotation is not None and axes.keys() & {0, 1} else set())
 
     def offset(self) -> list[float]:
         """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43)."""
@@ -177,13 +203,15 @@ class CoordinateSystems(MachineState):
         system = int(p) if p is not None else -1
         if p is None or p != system or not 0 <= system <= 9:
             raise self.fail(f"G10 L{level} needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)", span)
-        if system == 0:
-            system = int(self.params.read(t.COORD_SYSTEM))
-        for axis, number in self._axis_values(words).items():
-            if level == 20:
-                others = self.offset()[axis] - self.params.read(t.coord_offset_param(
-                    int(self.params.read(t.COORD_SYSTEM)), axis))
-                number = self.pos[axis] - number - others
+        active = int(self.params.read(t.COORD_SYSTEM))
+        system = system or active
+        axes = self._axis_values(words)
+        if level == 20:  # the offset that makes the current point read the words, in system P
+            others = [o - self.params.read(t.coord_offset_param(active, i)) for i, o in enumerate(self.offset())]
+            base = [self.params.read(t.coord_offset_param(system, i)) + o for i, o in enumerate(others)]
+            wanted = self._offset_reading(axes, base)
+            axes = {axis: wanted[axis] - others[axis] for axis in sorted(self._solved_axes(axes))}
+        for axis, number in axes.items():
             self.params.set(t.coord_offset_param(system, axis), number)
 
     def _tool_from_position(self, level: int, words: Mapping[str, float]) -> tuple[float | None, float | None]:
@@ -232,32 +260,36 @@ class CoordinateSystems(MachineState):
         if not axes:
             raise self.fail("G92 needs at least one axis word", span)
         system = int(self.params.read(t.COORD_SYSTEM))
-        for axis, number in axes.items():
+        wanted, solved = self._offset_reading(axes, self.offset()), self._solved_axes(axes)
+        values: dict[int, float] = {}
+        for axis in range(6):
             tool = self.tool_z if axis == 2 else self.tool_x if axis == 0 else 0.0
             g5x = self.params.read(t.coord_offset_param(system, axis))
-            self.params.set(t.G92_OFFSET + axis, self.pos[axis] - g5x - tool - number)
-        for axis in range(6):
-            if axis not in axes and not self.g92_active:
-                self.params.set(t.G92_OFFSET + axis, 0.0)
+            if axis in solved:
+                values[axis] = wanted[axis] - g5x - tool
+            elif not self.g92_active:
+                values[axis] = 0.0
+        for axis, number in values.items():
+            self.params.set(t.G92_OFFSET + axis, number)
         self.g92_active = True
-        self._offset = None
+        self._offsets_changed()
 
     def _g92_1(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)
         for axis in range(6):
             self.params.set(t.G92_OFFSET + axis, 0.0)
         self.g92_active = False
-        self._offset = None
+        self._offsets_changed()
 
     def _g92_2(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)
         self.g92_active = False
-        self._offset = None
+        self._offsets_changed()
 
     def _g92_3(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)
         self.g92_active = True
-        self._offset = None
+        self._offsets_changed()
 
 
 # The non-modal G codes this part runs (G4 and G53 belong to other steps), by method name.

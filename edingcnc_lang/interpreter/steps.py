@@ -171,7 +171,7 @@ class LineSteps(MachineState):
                 self.tool_z = 0.0
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
-        self._offset = None
+        self._offsets_changed()  # type: ignore[attr-defined]  (offsets.py)
 
     def _stop(self, code: int, span: n.Span) -> None:
         if code in PAUSE_CODES:

@@ -41,7 +41,11 @@ def test_the_probe_host_sees_machine_coordinates() -> None:
 
 
 def test_the_pivot_follows_a_later_g92() -> None:
-    # G68 keeps the machine at X5 (work point (10, 5) in the turned frame); G92 X0 shifts the work by 10,
-    # so the pivot (work X10) is at machine X20, and work (20, 0) turns about it to (20, 10)
-    _, moves = run("G0 X5\nG68 X10 Y0 R90\nG92 X0\nG0 X20 Y0\n")
-    assert moves[-1] == pytest.approx((20.0, 10.0))
+    # G68 keeps the machine at X5 (work point (10, 5) in the turned frame); G92 X0 makes that point read
+    # (0, 5) without moving the machine, so the pivot (work (10, 0)) sits at machine (5, 10); work
+    # (20, 0) is 20 along the turned X (machine +Y) and 5 back along the turned Y (machine +X): (10, 20)
+    result, moves = run("G0 X5\nG68 X10 Y0 R90\nG92 X0\n#1 = #5071 #2 = #5072 #3 = #5001 #4 = #5002\n"
+                        "G0 X20 Y0\n")
+    v = result.variables
+    assert (v[1], v[2], v[3], v[4]) == pytest.approx((5.0, 0.0, 0.0, 5.0))
+    assert moves[-1] == pytest.approx((10.0, 20.0))
