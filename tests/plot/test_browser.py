@@ -17,6 +17,8 @@ from edingcnc_lang.plot import views
 from edingcnc_lang.plot.toolpath import record_job
 from edingcnc_lang.plot.viewer import write_view
 
+from tests.plot.cdp import Browser
+
 ROOT = Path(__file__).resolve().parents[2]
 CHROMIUM = next((found for name in ("chromium", "chromium-browser") if (found := shutil.which(name))), None)
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="Chromium is not installed (Debian: apt-get install chromium)")
@@ -104,3 +106,92 @@ def test_a_lathe_job_opens_in_the_lathe_view_with_z_across(tmp_path: Path) -> No
         shots[name] = (np.ptp(cols), np.ptp(rows))
     assert shots["lathe"][0] > 3 * shots["lathe"][1]  # Z across
     assert shots["front"][1] > 3 * shots["front"][0]  # the front view puts Z up
+
+
+# ---------------------------------------------------------------- driven like a person, over DevTools
+def _text(browser: Browser, element: str) -> str:
+    return browser.evaluate(f"document.getElementById({element!r}).innerText")
+
+
+def _readout(browser: Browser) -> dict[str, str]:
+    rows = browser.evaluate("[...document.querySelectorAll('#readout tr')].map(r => [r.cells[0].innerText,"
+                            " r.cells[1].innerText])")
+    return dict(rows)
+
+
+def _canvas(browser: Browser) -> str:
+    return browser.evaluate("document.getElementById('view').toDataURL()")
+
+
+def _centre(browser: Browser, element: str) -> tuple[float, float, float]:
+    """The element's centre on the page and its width."""
+    box = browser.evaluate(f"(() => {{ const r = document.getElementById({element!r}).getBoundingClientRect();"
+                           " return [r.left + r.width / 2, r.top + r.height / 2, r.width]; })()")
+    return box[0], box[1], box[2]
+
+
+def _click(browser: Browser, x: float, y: float) -> None:
+    browser.mouse("mousePressed", x, y, button="left", clickCount=1)
+    browser.mouse("mouseReleased", x, y, button="left", clickCount=1)
+
+
+def test_the_slider_keys_play_and_mouse_drive_the_page(pocket_page: Path, tmp_path: Path) -> None:
+    """Real mouse and key events: the slider's readout is the run's move (line, tool, position),
+    the arrow keys step, play advances, a drag turns the view and the wheel zooms; nothing is logged."""
+    path = record_job(ROOT / "examples/pocket.nc")
+    with Browser(CHROMIUM, pocket_page.resolve().as_uri(), tmp_path / "profile", WINDOW) as browser:
+        assert browser.evaluate("document.getElementById('status').dataset.ready") == "1"
+        x, y, width = _centre(browser, "slider")
+        for fraction in (0.05, 0.5, 0.95):  # click on the slider's track, as a person does
+            _click(browser, x - width / 2 + fraction * width, y)
+            shown = _readout(browser)
+            number = int(shown["move"].split()[0])
+            assert abs(number - fraction * len(path)) < 0.05 * len(path), shown
+            move = number - 1
+            assert shown["source"] == f"pocket.nc:{path.lines[move]}"
+            assert shown["tool"] == f"T{path.tools[move]}"
+            for k, axis in enumerate("XYZ"):
+                assert float(shown[axis]) == pytest.approx(path.ends[move, k], abs=1e-3), (axis, shown)
+            assert _text(browser, "counter") == f"move {number} of {len(path)}"
+            current = browser.evaluate("document.querySelector('#listing li.current .n').innerText")
+            assert current == str(path.lines[move])  # the program listing highlights the move's line
+        browser.key("ArrowLeft", "ArrowLeft", 37)
+        assert int(_readout(browser)["move"].split()[0]) == number - 1
+        browser.key("Home", "Home", 36)
+        assert _text(browser, "counter") == f"move 1 of {len(path)}"
+
+        play_x, play_y, _ = _centre(browser, "play")
+        _click(browser, play_x, play_y)
+        assert _text(browser, "play") == "pause"
+        advanced = browser.evaluate("new Promise(done => { const start = document.getElementById('counter')"
+                                    ".innerText; const look = () => document.getElementById('counter').innerText"
+                                    " !== start ? done(true) : requestAnimationFrame(look); look(); })")
+        assert advanced  # the player moved on (waits as long as the browser needs, no clock in the test)
+        _click(browser, play_x, play_y)
+        assert _text(browser, "play") == "play"
+
+        cx, cy, _ = _centre(browser, "view")
+        before = _canvas(browser)
+        browser.mouse("mousePressed", cx, cy, button="left", clickCount=1)
+        browser.mouse("mouseMoved", cx + 80, cy + 30, button="left", buttons=1)
+        browser.mouse("mouseReleased", cx + 80, cy + 30, button="left", clickCount=1)
+        turned = _canvas(browser)
+        assert turned != before, "a drag did not turn the view"
+        assert browser.evaluate("document.querySelectorAll('[data-view].active').length") == 0
+        browser.mouse("mouseWheel", cx, cy, deltaX=0, deltaY=-300)
+        assert browser.evaluate("new Promise(done => requestAnimationFrame(() => done(1)))") == 1
+        assert _canvas(browser) != turned, "the wheel did not zoom"
+        browser.key("t", "KeyT", 84)
+        assert browser.evaluate("document.querySelector('[data-view].active').dataset.view") == "top"
+
+        assert browser.logged() == []
+        assert browser.evaluate("document.getElementById('status').dataset.errors") == "0"
+
+
+def test_the_devtools_client_does_see_what_a_page_logs(tmp_path: Path) -> None:
+    """The check above can fail: a page that logs and throws is caught."""
+    page = tmp_path / "noisy.html"
+    page.write_text("<html><body><script>console.error('boom'); missing();</script></body></html>")
+    with Browser(CHROMIUM, page.resolve().as_uri(), tmp_path / "profile") as browser:
+        logged = browser.logged()
+    assert any("boom" in line for line in logged) and any("missing" in line for line in logged), logged
