@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..errors import EcncError
 from . import views as v
 from .formats import picture_target
 from .toolpath import KINDS, Toolpath
@@ -22,6 +23,7 @@ from .toolpath import KINDS, Toolpath
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
+    from matplotlib.transforms import Bbox
 
 SIZE_INCHES = (11.0, 7.5)
 DPI = 100
@@ -40,6 +42,7 @@ class Picture:
     height: int
     matrix: np.ndarray  # 3x3: page coordinates -> display pixels, origin bottom left
     axes: tuple[int, int, int, int]  # the drawing area in PNG pixels: left, top, right, bottom
+    part_label: tuple[int, int, int, int] | None = None  # where the part's size is written, likewise
 
     def to_pixels(self, points: Sequence[Sequence[float]]) -> np.ndarray:
         """Machine XYZ points -> (column, row) pixels of the PNG, row 0 at the top."""
@@ -68,6 +71,7 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     else:
         fitted += [boxes[name] for name in ("zero", "limits" if fit == "machine" else "") if name in boxes]
     _frame(ax, fitted, view)
+    label = _label_part(fig, ax, path, view, boxes.get("part"))
     fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
     matrix = ax.transData.get_affine().get_matrix().copy()  # final: the axes sit where add_axes put them
@@ -78,7 +82,8 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
         raise EcncError(f"cannot write {out}: {err.strerror}") from None
     width, height = (int(round(s * DPI)) for s in SIZE_INCHES)
     axes = (int(extent.x0), int(height - extent.y1), int(extent.x1), int(height - extent.y0))
-    return Picture(out, view, width, height, matrix, axes)
+    where = None if label is None else (int(label.x0), int(height - label.y1), int(label.x1), int(height - label.y0))
+    return Picture(out, view, width, height, matrix, axes, where)
 
 
 def _segments(page: np.ndarray) -> np.ndarray:
@@ -187,10 +192,6 @@ def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray) -> dict[str, np.n
         edges = v.box_edges(*bounds) @ project.T
         boxes["part"] = edges.reshape(-1, 2)
         ax.add_collection(LineCollection(edges, colors="#444444", linewidths=0.7, linestyles=":", zorder=3))
-        top_left = edges.reshape(-1, 2)
-        corner = (top_left[:, 0].min(), top_left[:, 1].max())
-        ax.annotate(f"part {v.size_text(*bounds)}", corner, xytext=(0, 4), textcoords="offset points",
-                    fontsize=8, color="#444444")
         ax.plot([], [], color="#444444", lw=0.7, ls=":", label="part bounding box")
     if path.limits is not None:
         edges = v.box_edges(*path.limits) @ project.T
@@ -199,6 +200,32 @@ def _draw_boxes(ax: Axes, path: Toolpath, project: np.ndarray) -> dict[str, np.n
         ax.plot([], [], color="#b22222", lw=1.0, ls="-.", label="machine limits (cnc.ini)")
         boxes["limits"] = edges.reshape(-1, 2)
     return boxes
+
+
+def _label_part(fig: Figure, ax: Axes, path: Toolpath, view: str, corners: np.ndarray | None) -> Bbox | None:
+    """The part's size beside its box, at the first corner (above left, above right, below left,
+    below right) where the words stay inside the drawing: not over the legend, not cut off.
+    Called once the view is framed, since where the words fall depends on it."""
+    bounds = path.bounds()
+    if corners is None or bounds is None:
+        return None
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    inside = ax.get_window_extent(renderer)
+    (left, bottom), (right, top) = corners.min(axis=0), corners.max(axis=0)
+    label = None
+    for x, y, ha, va, dy in ((left, top, "left", "bottom", 4), (right, top, "right", "bottom", 4),
+                             (left, bottom, "left", "top", -4), (right, bottom, "right", "top", -4)):
+        if label is not None:
+            label.remove()
+        label = ax.annotate(f"part {v.size_text(*bounds, view=view)}", (x, y), xytext=(0, dy),
+                            textcoords="offset points", ha=ha, va=va, fontsize=8, color="#444444", zorder=5)
+        extent = label.get_window_extent(renderer)
+        if (extent.x0 >= inside.x0 and extent.x1 <= inside.x1
+                and extent.y0 >= inside.y0 and extent.y1 <= inside.y1):
+            break
+    return extent
 
 
 def _frame(ax: Axes, fitted: list[np.ndarray], view: str) -> None:

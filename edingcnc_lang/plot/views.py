@@ -76,9 +76,12 @@ def is_rapid(kind: int) -> bool:
     return kind in RAPID_KINDS
 
 
-def size_text(lower: np.ndarray, upper: np.ndarray) -> str:
-    """The part's size, ``X 84.00 x Y 44.00 x Z 14.00 mm``."""
-    return " x ".join(f"{axis} {v:.2f}" for axis, v in zip("XYZ", upper - lower)) + " mm"
+def size_text(lower: np.ndarray, upper: np.ndarray, view: str = "top") -> str:
+    """The part's size, ``X 84.00 x Y 44.00 x Z 14.00 mm``; in the lathe view the turning plane's
+    two, in the order the picture shows them (``Z 120.00 x X 4.00 mm``, X a radius): a lathe has no Y."""
+    size = dict(zip("XYZ", upper - lower))
+    axes = "ZX" if view == "lathe" else "XYZ"
+    return " x ".join(f"{axis} {size[axis]:.2f}" for axis in axes) + " mm"
 
 
 def title_text(path: Toolpath) -> str:

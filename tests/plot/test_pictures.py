@@ -248,3 +248,39 @@ def test_the_commands_offer_exactly_the_views_and_colours_there_are() -> None:
                if isinstance(p.type, click.Choice) and p.name in ("view", "color")}
     assert choices[("plot", "view")] == choices[("view", "view")] == ("auto", *views.VIEWS) == ("auto", *VIEW_NAMES)
     assert choices[("plot", "color")] == COLOR_MODES
+
+
+@pytest.mark.parametrize("corner", ["right top", "left bottom"])
+def test_the_part_size_is_written_inside_the_drawing(tmp_path: Path, corner: str) -> None:
+    """The size label stays in the drawing area, off the legend, wherever the part sits: a square
+    at the top right of the job (right of the legend's side) or at its bottom left."""
+    x, y = (300, 200) if corner == "right top" else (-300, -200)
+    job = write(tmp_path, "far.nc", f"G21 G90\nG0 X0 Y0 Z5\nG0 X{x} Y{y}\nG1 Z-1 F300\n"
+                                    f"G1 X{x + 40}\nY{y + 40}\nX{x}\nY{y}\nG0 Z5\nM30\n")
+    picture = plot_toolpath(record_job(job), tmp_path / "far.png", view="top")
+    assert picture.part_label is not None
+    left, top, right, bottom = picture.part_label
+    a_left, a_top, a_right, a_bottom = picture.axes
+    assert a_left <= left < right <= a_right and a_top <= top < bottom <= a_bottom, (picture.part_label, picture.axes)
+
+
+def test_a_lathe_part_is_sized_in_its_turning_plane() -> None:
+    """A lathe has no Y: the label gives Z across, then X, as the lathe view shows them."""
+    lower, upper = np.array([0.0, 0.0, -120.0]), np.array([7.0, 0.0, 2.0])
+    assert views.size_text(lower, upper, view="lathe") == "Z 122.00 x X 7.00 mm"
+    assert views.size_text(lower, upper) == "X 7.00 x Y 0.00 x Z 122.00 mm"
+
+
+def test_a_picture_that_cannot_be_written_is_a_plain_error(square, tmp_path: Path,
+                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    """A full disk or a denied folder: the message names the file, no traceback."""
+    import errno
+
+    from matplotlib.figure import Figure
+
+    def full(*args: object, **kwargs: object) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(Figure, "savefig", full)
+    with pytest.raises(EcncError, match="cannot write .*square.png: No space left on device"):
+        plot_toolpath(square, tmp_path / "square.png")
