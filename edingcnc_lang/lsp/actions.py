@@ -141,6 +141,14 @@ FIXERS: dict[str, Fixer] = {
 }
 
 
+def line_end(text: str | None) -> str:
+    """The line end a document uses (its first one), so that a fix adding a line writes the same:
+    the fixers write ``\n``, and a CRLF file edited in a client that does not convert (Neovim, Kate)
+    would otherwise get mixed line ends."""
+    first = (text or "").find("\n")
+    return "\r\n" if first > 0 and text[first - 1] == "\r" else "\n"  # type: ignore[index]
+
+
 def fixes(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     """The repairs for one finding, then the ``; noqa`` that silences it on its line."""
     fixer = FIXERS.get(finding.code)

@@ -243,6 +243,7 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
     uri = params.text_document.uri
     path = ls.path(uri)
     lines = ls.lines(path)
+    eol = actions.line_end(ls.model.texts.get(path))
     found: list[t.CodeAction] = []
     for diagnostic in params.context.diagnostics:
         if diagnostic.source != SOURCE:
@@ -250,8 +251,8 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
         start = ls.codec().position_from_client_units(lines, diagnostic.range.start)
         finding = actions.Finding(str(diagnostic.code or ""), start.line, start.character, diagnostic.message)
         for fix in actions.fixes(finding, lines):
-            edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text)
-                     for e in fix.edits]
+            edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end),
+                                new_text=e.text.replace("\n", eol)) for e in fix.edits]
             found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.QuickFix, diagnostics=[diagnostic],
                                       is_preferred=fix.preferred, edit=t.WorkspaceEdit(changes={uri: edits})))
     return found

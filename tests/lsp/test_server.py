@@ -268,6 +268,23 @@ def test_quick_fix_repairs_the_finding(client: LspClient, folder: Path, text: st
     assert code not in {d.code for d in lint_paths([path])}
 
 
+@pytest.mark.parametrize(("text", "code", "fixed"), [
+    (";@unit mm\nSub a\n  G0 X1\n", "S204", ";@unit mm\nSub a\n  G0 X1\nEndSub\n"),
+    (";@unit mm\nSub a\n  G0 X1\nSub b\nEndSub\n", "S205", ";@unit mm\nSub a\n  G0 X1\nEndSub\nSub b\nEndSub\n"),
+    ("Sub a\nEndSub\n", "F600", ";@unit mm\nSub a\nEndSub\n"),
+])
+def test_a_fix_that_adds_a_line_keeps_the_files_crlf(client: LspClient, folder: Path, text: str, code: str,
+                                                     fixed: str) -> None:
+    """A Windows macro file (CRLF, as EdingCNC writes them) stays CRLF: no bare LF slips in."""
+    text, fixed = text.replace("\n", "\r\n"), fixed.replace("\n", "\r\n")
+    path = folder / "crlf.cnc"
+    path.write_bytes(text.encode())
+    uri = client.open(path, text)
+    found = [d for d in client.diagnostics(uri) if d["code"] == code]
+    preferred = [a for a in quick_fixes(client, uri, found[:1]) if a.get("isPreferred")]
+    assert apply(text, preferred[0]["edit"]["changes"][uri]) == fixed
+
+
 def test_noqa_action_silences_any_finding(client: LspClient, folder: Path) -> None:
     text = "G38.2 Z-5 F100 ; noqa: G504\n"
     path = folder / "probe.nc"
