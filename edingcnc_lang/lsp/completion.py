@@ -46,7 +46,11 @@ def complete(model: LanguageModel, path: str, line: int, col: int) -> list[Item]
         return _subs(model, path, col - len(match.group(1)))
     match = _PARAM.search(before)
     if match:
-        return _params(file.lines if file else (), match.start())
+        lines = list(file.lines if file else ())
+        if line < len(lines):  # the number being typed is not one the file uses
+            rest = re.match(r"\d*", text[col:]).end()  # type: ignore[union-attr]
+            lines[line] = text[:match.start()] + text[col + rest:]
+        return _params(tuple(lines), match.start())
     items: list[Item] = []
     match = _CODE.search(before)
     if match:

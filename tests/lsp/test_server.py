@@ -233,6 +233,17 @@ def test_completion(client: LspClient, folder: Path) -> None:
     assert labels(client, uri, 6, 6) == []  # in a comment
 
 
+def test_the_number_being_typed_is_not_offered_as_used(client: LspClient, folder: Path) -> None:
+    """``#50`` half typed is not "used in this file": only the numbers the file really uses come first."""
+    job = folder / "job.nc"
+    job.write_text("#27 = 1\nG0 X#50\n")
+    uri = client.open(job)
+    items = client.request("textDocument/completion", at(uri, 1, 7))["items"]
+    used = [i["label"] for i in items if i["detail"].startswith("used in this file")]
+    assert used == ["#27"]
+    assert items[1]["label"] == "#5001"  # then the system variables
+
+
 # --------------------------------------------------------------------------- code actions
 
 
