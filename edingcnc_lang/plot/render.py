@@ -213,10 +213,11 @@ def _label_part(fig: Figure, ax: Axes, path: Toolpath, view: str, corners: np.nd
 
     renderer = FigureCanvasAgg(fig).get_renderer()
     inside = ax.get_window_extent(renderer)
-    (left, bottom), (right, top) = corners.min(axis=0), corners.max(axis=0)
     label = None
-    for x, y, ha, va, dy in ((left, top, "left", "bottom", 4), (right, top, "right", "bottom", 4),
-                             (left, bottom, "left", "top", -4), (right, bottom, "right", "top", -4)):
+    for (x, y), ha, va, dy in ((_vertex(corners, top=True, left=True), "left", "bottom", 4),
+                               (_vertex(corners, top=True, left=False), "right", "bottom", 4),
+                               (_vertex(corners, top=False, left=True), "left", "top", -4),
+                               (_vertex(corners, top=False, left=False), "right", "top", -4)):
         if label is not None:
             label.remove()
         label = ax.annotate(f"part {v.size_text(*bounds, view=view)}", (x, y), xytext=(0, dy),
@@ -226,6 +227,15 @@ def _label_part(fig: Figure, ax: Axes, path: Toolpath, view: str, corners: np.nd
                 and extent.y0 >= inside.y0 and extent.y1 <= inside.y1):
             break
     return extent
+
+
+def _vertex(corners: np.ndarray, top: bool, left: bool) -> tuple[float, float]:
+    """The box's highest (or lowest) drawn corner, the leftmost (or rightmost) of those at that
+    height: a true corner of the box in every view, the iso view's top vertex included."""
+    height = corners[:, 1].max() if top else corners[:, 1].min()
+    level = corners[np.isclose(corners[:, 1], height, rtol=0.0, atol=1e-6 * (1.0 + abs(height)))]
+    x = level[:, 0].min() if left else level[:, 0].max()
+    return float(x), float(height)
 
 
 def _frame(ax: Axes, fitted: list[np.ndarray], view: str) -> None:

@@ -284,3 +284,13 @@ def test_a_picture_that_cannot_be_written_is_a_plain_error(square, tmp_path: Pat
     monkeypatch.setattr(Figure, "savefig", full)
     with pytest.raises(EcncError, match="cannot write .*square.png: No space left on device"):
         plot_toolpath(square, tmp_path / "square.png")
+
+
+def test_the_iso_view_writes_the_part_size_at_the_box_top_corner(square, tmp_path: Path) -> None:
+    """In the iso view the box's top-left corner on paper is no corner of the box: the size is
+    written at the box's top vertex (its X, Y and Z maxima), not out in the empty page."""
+    picture = plot_toolpath(square, tmp_path / "iso.png", view="iso")
+    lower, upper = square.bounds()
+    col, row = picture.to_pixels([upper])[0]
+    left, top, right, bottom = picture.part_label
+    assert abs(left - col) <= 3 and 0 <= row - bottom <= 10, (picture.part_label, (col, row))
