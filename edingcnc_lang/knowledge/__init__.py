@@ -43,7 +43,7 @@ class Entry:
         """Plain text for a terminal: ``G38.2: straight probe`` and the details below."""
         lines = [f"{self.name}: {self.title}"]
         if self.words:
-            lines.append(("words: " if self.kind in ("G", "M") else "usage: ") + self.usage)
+            lines.append(("Words: " if self.kind in ("G", "M") else "Usage: ") + self.usage)
         lines += list(self.facts)
         if self.detail:
             lines.append(self.detail)

@@ -43,6 +43,16 @@ def test_describe(topic: str, first_line: str) -> None:
     assert text is not None and text.splitlines()[0] == first_line
 
 
+@pytest.mark.parametrize("topic", ["G38.2", "M3", "#5067", "#4100", "dlgmsg", "SQRT", "GoSub"])
+def test_help_and_hover_say_the_same(topic: str) -> None:
+    """``ecnc help`` and the editor's hover are one entry in two dresses: the same lines, the same
+    words (``Words:``, ``Usage:``, ``Modal group:``), only the markdown differs."""
+    entry = knowledge.lookup(topic)
+    assert entry is not None
+    plain = entry.markdown().replace("**", "").replace("`", "").split("\n\n")
+    assert plain == entry.text().splitlines()
+
+
 @pytest.mark.parametrize("topic", ["G999", "#0", "#6000", "M500", "frobnicate", ""])
 def test_describe_unknown_topics(topic: str) -> None:
     assert knowledge.describe(topic) is None
