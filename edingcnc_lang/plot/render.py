@@ -69,7 +69,7 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     if fit == "part" and "part" in boxes:
         fitted = [boxes["part"]]
     else:
-        fitted += [boxes[name] for name in ("zero", "limits" if fit == "machine" else "") if name in boxes]
+        fitted += [boxes[name] for name in ("zero", "part", "limits" if fit == "machine" else "") if name in boxes]
     _frame(ax, fitted, view)
     label = _label_part(fig, ax, path, view, boxes.get("part"))
     fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)

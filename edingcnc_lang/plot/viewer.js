@@ -95,6 +95,9 @@
     };
     for (let q = 0; q < projected.length; q += 2) extend(projected[q], projected[q + 1]);
     extend(...project(...D.workZero));
+    if (D.part) {  // the part's box is drawn: in the iso view its far corners can lie outside the path
+      for (let k = 0; k < 8; k++) extend(...project(...[0, 1, 2].map((a) => D.part[(k >> a) & 1][a])));
+    }
     if (!isFinite(lowU)) { lowU = lowV = -10; highU = highV = 10; }
     const [w, h] = size();
     cam.u = (lowU + highU) / 2;

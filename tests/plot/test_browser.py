@@ -195,3 +195,21 @@ def test_the_devtools_client_does_see_what_a_page_logs(tmp_path: Path) -> None:
     with Browser(CHROMIUM, page.resolve().as_uri(), tmp_path / "profile") as browser:
         logged = browser.logged()
     assert any("boom" in line for line in logged) and any("missing" in line for line in logged), logged
+
+
+def test_the_iso_view_shows_the_whole_part_box(tmp_path: Path) -> None:
+    """The page fits the part's box too: an L cut's box corner at X0 Y100, left of the path when
+    seen iso, is on the screen (the box's grey does not run into the canvas' left edge; rows above the
+    axis triad and the hint)."""
+    imread = pytest.importorskip("matplotlib.image").imread
+    job = tmp_path / "ell.nc"
+    job.write_text("G21 G90\nG0 X0 Y0 Z5\nG1 Z-1 F300\nG1 X100\nY100\nG0 Z5\nM30\n")
+    page = write_view(record_job(job), tmp_path / "ell.html")
+    shot = tmp_path / "ell.png"
+    chromium(page, tmp_path / "profile", f"--screenshot={shot}", fragment="#view=iso")
+    image = imread(shot)[:, :, :3]
+    canvas = image[100:650, :900, :]
+    grey = (np.ptp(canvas, axis=2) < 0.06) & (canvas.mean(axis=2) < 0.85)  # grey ink: the box's dots
+    cols = np.nonzero(grey.any(axis=0))[0]
+    assert len(cols) > 0, "the part box is not drawn"
+    assert cols.min() > 20, f"the part box runs off the left of the canvas (grey from column {cols.min()})"

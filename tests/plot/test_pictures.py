@@ -294,3 +294,16 @@ def test_the_iso_view_writes_the_part_size_at_the_box_top_corner(square, tmp_pat
     col, row = picture.to_pixels([upper])[0]
     left, top, right, bottom = picture.part_label
     assert abs(left - col) <= 3 and 0 <= row - bottom <= 10, (picture.part_label, (col, row))
+
+
+def test_the_iso_view_fits_the_part_box_whose_corner_lies_beside_the_path(tmp_path: Path) -> None:
+    """An L cut (along X, then along Y): the box's corner at X0 Y100 is no point of the path and,
+    seen iso, lies far left of it; the picture still shows the whole box."""
+    job = write(tmp_path, "ell.nc", "G21 G90\nG0 X0 Y0 Z5\nG1 Z-1 F300\nG1 X100\nY100\nG0 Z5\nM30\n")
+    path = record_job(job)
+    picture = plot_toolpath(path, tmp_path / "ell.png", view="iso")
+    lower, upper = path.bounds()
+    corners = [[(lower, upper)[(k >> a) & 1][a] for a in range(3)] for k in range(8)]
+    a_left, a_top, a_right, a_bottom = picture.axes
+    for col, row in picture.to_pixels(corners):
+        assert a_left < col < a_right and a_top < row < a_bottom, (col, row, picture.axes)
