@@ -221,7 +221,8 @@ def _label_part(fig: Figure, ax: Axes, path: Toolpath, view: str, corners: np.nd
         if label is not None:
             label.remove()
         label = ax.annotate(f"part {v.size_text(*bounds, view=view)}", (x, y), xytext=(0, dy),
-                            textcoords="offset points", ha=ha, va=va, fontsize=8, color="#444444", zorder=5)
+                            textcoords="offset points", ha=ha, va=va, fontsize=8, color="#444444", zorder=5,
+                            bbox={"boxstyle": "square,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8})
         extent = label.get_window_extent(renderer)
         if (extent.x0 >= inside.x0 and extent.x1 <= inside.x1
                 and extent.y0 >= inside.y0 and extent.y1 <= inside.y1):
