@@ -64,6 +64,21 @@ def test_extension_manifest_fits_the_server() -> None:
     json.loads((VSCODE / language["configuration"]).read_text())
 
 
+@pytest.mark.parametrize(("line", "words"), [
+    ("G38.2 Z-5 F100", ["G38.2", "Z", "5", "F100"]),
+    ("#5403 = #5063", ["#5403", "#5063"]),
+    ("GoSub measure_tool", ["GoSub", "measure_tool"]),
+    ("M101 P12000", ["M101", "P12000"]),
+])
+def test_a_word_is_what_the_server_hovers(line: str, words: list[str]) -> None:
+    """VS Code selects (double-click) and highlights by ``wordPattern``: a code is one word with its
+    decimals (``G38.2``, not ``G38``), a parameter keeps its ``#``."""
+    import re
+
+    pattern = json.loads((VSCODE / "language-configuration.json").read_text())["wordPattern"]
+    assert [m.group() for m in re.finditer(pattern, line)] == words
+
+
 @pytest.mark.skipif(shutil.which("node") is None, reason="node is not installed")
 def test_extension_script_is_valid_javascript() -> None:
     subprocess.run(["node", "--check", str(VSCODE / "extension.js")], check=True)
