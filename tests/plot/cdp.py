@@ -10,9 +10,13 @@ from __future__ import annotations
 import fcntl
 import json
 import os
+import select
 import subprocess
 from pathlib import Path
 from typing import Any
+
+
+WAIT = 60.0  # seconds; bounds how long a broken browser can hang the suite (no timing is asserted)
 
 
 class Browser:
@@ -69,6 +73,8 @@ class Browser:
 
     def _read(self) -> dict[str, Any]:
         while b"\0" not in self._buffer:
+            if not select.select([self._from_browser], [], [], WAIT)[0]:
+                raise RuntimeError(f"the browser said nothing for {WAIT:.0f} s")
             chunk = os.read(self._from_browser, 65536)
             if not chunk:
                 raise RuntimeError("the browser closed its pipe")
