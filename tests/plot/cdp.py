@@ -42,12 +42,16 @@ class Browser:
         self._buffer = b""
         self._next_id = 0
         self.events: list[dict[str, Any]] = []
-        target = self.call("Target.createTarget", url="about:blank")["targetId"]
-        self._session = self.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
-        self.send("Runtime.enable")
-        self.send("Page.enable")
-        self.send("Page.navigate", url=url)
-        self.wait_for("Page.loadEventFired")
+        try:
+            target = self.call("Target.createTarget", url="about:blank")["targetId"]
+            self._session = self.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
+            self.send("Runtime.enable")
+            self.send("Page.enable")
+            self.send("Page.navigate", url=url)
+            self.wait_for("Page.loadEventFired")
+        except BaseException:
+            self.close()  # no browser left running behind a failed start
+            raise
 
     def __enter__(self) -> Browser:
         return self
@@ -56,10 +60,11 @@ class Browser:
         self.close()
 
     def close(self) -> None:
-        try:
-            self.call("Browser.close")
-        except (OSError, RuntimeError):
-            pass
+        if self._process.poll() is None:
+            try:
+                self.call("Browser.close")
+            except (OSError, RuntimeError):
+                pass
         for fd in (self._to_browser, self._from_browser):
             try:
                 os.close(fd)
