@@ -109,7 +109,15 @@ def sub_markdown(file: SourceFile, sub: n.Sub) -> str:
     """``Sub name`` with where it is and the comment lines that describe it."""
     head = f"**Sub {sub.name}** ({file_name(file.path)}, line {sub.span.line})"
     doc = sub_comments(file, sub)
-    return head + ("\n\n" + "\n".join(doc) if doc else "")
+    return head + ("\n\n" + verbatim(doc) if doc else "")
+
+
+def verbatim(lines: list[str]) -> str:
+    """The author's comment lines as a plain-text block: markdown would run them into one paragraph
+    and an editor would hide ``<rpm>`` in ``; M101 P<rpm>`` as an HTML tag."""
+    longest = max((len(run) for text in lines for run in re.findall(r"`+", text)), default=0)
+    fence = "`" * max(3, longest + 1)
+    return f"{fence}text\n" + "\n".join(lines) + f"\n{fence}"
 
 
 def sub_comments(file: SourceFile, sub: n.Sub) -> list[str]:

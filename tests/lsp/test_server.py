@@ -162,6 +162,14 @@ def test_hover(client: LspClient, folder: Path, line: int, character: int, wante
         assert part in text
 
 
+def test_a_subs_comment_is_shown_as_written(client: LspClient, folder: Path) -> None:
+    """Line by line, and ``<rpm>`` stays visible: the comment is a plain-text block, not markdown."""
+    (folder / "macro.cnc").write_text(";@unit mm\nSub m101\n  ; Warm-up: M101 P<rpm>\n  ; ramp up _slowly_\n"
+                                      "  M3 S#16\nEndSub\n")
+    uri = client.open(folder / "job.nc", "M101 P8000\n")
+    assert hover(client, uri, 0, 1).endswith("\n\n```text\nWarm-up: M101 P<rpm>\nramp up _slowly_\n```")
+
+
 def test_hover_on_commands_functions_and_system_variables(client: LspClient, folder: Path) -> None:
     job = folder / "job.nc"
     job.write_text("KIN ON\ntanknife on\nZHCINIT 1 2\n#30 = SQRT[#5067]\n#31 = #30 ; #99 is only in a comment\n")
