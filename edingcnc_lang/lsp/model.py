@@ -97,10 +97,13 @@ class LanguageModel:
         return [f for f in (self.source(p) for p in sorted(paths)) if f is not None]
 
     def workspace(self) -> list[SourceFile]:
-        """Macro files (``*.cnc``) under the workspace folders, and every open document."""
+        """Macro files (``*.cnc``) under the workspace folders, and every open document.  An editor
+        that opened single files, with no workspace folder, gets the macro files beside them."""
         paths = dict.fromkeys(self.texts)
-        for root in self.roots:
-            for found in Path(root).rglob("*.[cC][nN][cC]"):
+        beside = {Path(p).parent: "*.[cC][nN][cC]" for p in self.texts if os.path.isabs(p)}
+        folders = {Path(root): "**/*.[cC][nN][cC]" for root in self.roots} or beside
+        for folder, pattern in folders.items():
+            for found in folder.glob(pattern):
                 if len(paths) >= MAX_WORKSPACE_FILES:
                     break
                 if _indexable(found):

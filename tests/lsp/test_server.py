@@ -162,6 +162,23 @@ def test_hover(client: LspClient, folder: Path, line: int, character: int, wante
         assert part in text
 
 
+def test_workspace_symbols_without_a_workspace_folder(tmp_path: Path) -> None:
+    """An editor that opened one file (no root, no folders) still finds the subs of the macro files
+    beside it."""
+    (tmp_path / "macro.cnc").write_text(MACRO, encoding="utf-8")
+    (tmp_path / "job.nc").write_text(JOB, encoding="utf-8")
+    lsp = LspClient()
+    lsp.request("initialize", {"processId": None, "rootUri": None, "capabilities": {}})
+    lsp.notify("initialized", {})
+    try:
+        uri = lsp.open(tmp_path / "job.nc")
+        lsp.diagnostics(uri)
+        found = lsp.request("workspace/symbol", {"query": "dri"})
+        assert [(s["name"], s["location"]["uri"].rsplit("/", 1)[1]) for s in found] == [("drill", "macro.cnc")]
+    finally:
+        assert lsp.close() == 0
+
+
 def test_a_subs_comment_is_shown_as_written(client: LspClient, folder: Path) -> None:
     """Line by line, and ``<rpm>`` stays visible: the comment is a plain-text block, not markdown."""
     (folder / "macro.cnc").write_text(";@unit mm\nSub m101\n  ; Warm-up: M101 P<rpm>\n  ; ramp up _slowly_\n"
