@@ -46,10 +46,10 @@ def grammar() -> dict[str, Any]:
             {"name": "keyword.control.edingcnc", "match": f"(?i)\\b({_alternatives(keywords)})\\b"},
             {"name": "support.function.command.edingcnc", "match": f"(?i)^\\s*/?\\s*({_alternatives(commands)})\\b"},
             {"name": "support.function.math.edingcnc", "match": f"(?i)\\b({_alternatives(functions)})(?=\\s*\\[)"},
+            {"name": "constant.numeric.line-number.edingcnc", "match": "(?i)^\\s*/?\\s*N\\d+"},  # before "/" the operator: /N20
             {"name": "keyword.operator.word.edingcnc", "match": f"(?i)\\b({_alternatives(list(OPERATORS))})\\b"},
             {"name": "keyword.operator.edingcnc", "match": "==|<>|!=|<=|>=|<|>|\\*\\*|[-+*/=]"},
             {"name": "variable.parameter.edingcnc", "match": "#+\\d*"},
-            {"name": "constant.numeric.line-number.edingcnc", "match": "(?i)^\\s*/?\\s*N\\d+"},
             {"name": "keyword.other.gcode.edingcnc", "match": "(?i)(?<![A-Za-z_])G\\s*\\d+(\\.\\d+)?"},
             {"name": "keyword.other.mcode.edingcnc", "match": "(?i)(?<![A-Za-z_])M\\s*\\d+"},
             {"name": "variable.other.word.edingcnc", "match": "(?i)(?<![A-Za-z_])[A-Z](?=\\s*[-+]?[\\d.\\[#])"},

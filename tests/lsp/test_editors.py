@@ -45,6 +45,8 @@ def _scopes(line: str) -> list[tuple[str, str]]:
                         ("keyword.other", "M3"), ("comment.line", "; go")]),
     ('dlgmsg "Width" 27', [("support.function", "dlgmsg"), ("string.quoted", '"Width"'), ("constant.numeric", "27")]),
     ("GoSub drill", [("keyword.control", "GoSub drill")]),
+    ("/N20 M3 S1000", [("constant.numeric", "/N20"), ("keyword.other", "M3"), ("variable.other", "S"),
+                       ("constant.numeric", "1000")]),
     ("#1 = SQRT[#5067] MOD 2", [("variable.parameter", "#1"), ("keyword.operator", "="),
                                 ("support.function", "SQRT"), ("variable.parameter", "#5067"),
                                 ("keyword.operator", "MOD"), ("constant.numeric", "2")]),
