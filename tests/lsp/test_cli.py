@@ -41,3 +41,22 @@ def test_initialization_options_select_and_ignore_codes(tmp_path: Path) -> None:
     warning = next(m for m in lsp.notifications if m.get("method") == "window/showMessage")
     assert "no code starts with Q9" in warning["params"]["message"]
     assert lsp.close() == 0
+
+
+def test_a_malformed_message_is_one_line_on_stderr_and_the_server_goes_on(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X10+5\n")
+    lsp = LspClient([sys.executable, "-m", "edingcnc_lang", "lsp", "--stdio"])
+    lsp.initialize(tmp_path)
+    assert lsp.proc.stdin is not None
+    lsp.proc.stdin.write(b"Content-Length: 9\r\n\r\n{not json")  # not JSON at all
+    lsp.notify("textDocument/hover", {"bad": 1})  # JSON, but not a hover request's shape
+    found = lsp.diagnostics(lsp.open(job))
+    assert [d["code"] for d in found] == ["E105"]  # still serving
+    lsp.request("shutdown")
+    lsp.notify("exit")
+    assert lsp.proc.wait(timeout=30) == 0
+    assert lsp.proc.stderr is not None
+    err = lsp.proc.stderr.read().decode()
+    assert "ecnc lsp: error: Unable to handle message: JSONDecodeError" in err
+    assert "Traceback" not in err
