@@ -78,9 +78,13 @@ class Project:
         return {"G": found.g, "M": found.m}[letter]
 
     # ----------------------------------------------------------------- calls
+    def searched(self, file: SourceFile) -> tuple[SourceFile, ...]:
+        """Where a call in ``file`` looks for its sub, in order: the file itself, then its macro files."""
+        return (file, *self._macros.get(file.path, ()))
+
     def resolve(self, file: SourceFile, name: str) -> tuple[SourceFile, n.Sub] | None:
         """The sub ``name`` as the controller finds it: in the file itself, then its macro files."""
-        for candidate in (file, *self._macros.get(file.path, ())):
+        for candidate in self.searched(file):
             sub = candidate.subs.get(name.lower())
             if sub is not None:
                 return candidate, sub

@@ -6,6 +6,7 @@ parser (S200..S206) and reported through the syntax rule.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
 from .. import nodes as n
 from ..diagnostics import Diagnostic
@@ -30,8 +31,13 @@ def duplicate_sub(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 def unknown_gosub(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for stmt, _ in project.walked(file):
         if isinstance(stmt, n.GoSub) and project.resolve(file, stmt.name) is None:
-            where = "this file" if file.is_macro else \
-                "this file or its macro files (--macro/--user-macro, or macro.cnc beside it)"
+            others = [Path(other.path).name for other in project.searched(file)[1:]]
+            if others:
+                where = "this file or " + " or ".join(others)
+            elif file.is_macro:
+                where = "this file"
+            else:
+                where = "this file or its macro files (--macro/--user-macro, or macro.cnc beside it)"
             yield at("S208", f"GoSub {stmt.name}: no Sub {stmt.name} in {where}", stmt.span)
 
 

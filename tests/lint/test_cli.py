@@ -195,3 +195,19 @@ def test_the_garbage_collector_is_paused_only_while_linting(job: Path, monkeypat
     assert run(job).exit_code == 1
     assert seen == [False]  # big acyclic trees: the collector would only waste time on them
     assert gc.isenabled()  # and an embedding program gets it back as it was
+
+
+def test_an_unknown_gosub_names_the_files_that_were_searched(tmp_path: Path) -> None:
+    (tmp_path / "macro.cnc").write_text(";@unit mm\nSub a\n    GoSub nothere\nEndSub\n")
+    (tmp_path / "user_macro.cnc").write_text(";@unit mm\nSub b\nEndSub\n")
+    job = tmp_path / "job.nc"
+    job.write_text("GoSub a\nGoSub zz\nM30\n")
+    lone = tmp_path / "lone" / "job.nc"
+    lone.parent.mkdir()
+    lone.write_text("GoSub zz\nM30\n")
+    result = run(tmp_path / "macro.cnc", job, lone, "--select", "S208", "--no-source")
+    assert result.exit_code == 1
+    assert "job.nc:2:1: S208 GoSub zz: no Sub zz in this file or macro.cnc or user_macro.cnc" in result.output
+    assert "macro.cnc:3:5: S208 GoSub nothere: no Sub nothere in this file or user_macro.cnc" in result.output
+    assert ("S208 GoSub zz: no Sub zz in this file or its macro files "
+            "(--macro/--user-macro, or macro.cnc beside it)") in result.output
