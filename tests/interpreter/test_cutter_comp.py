@@ -66,6 +66,8 @@ REFUSALS = [
     ("G0 X0 Y0\nG41 D1\nG1 X1 Y0 F100\n", 3, "entry move"),
     ("G0 X-10\nG41 D2\nG1 X0 Y0 F100\nG1 X20\nG1 Y20\nG1 X19\nG1 Y0\n", 7, "gouging"),
     ("G0 X-10\nG42 D2\nG1 X0 F100\nG2 X4 I2\n", 4, "does not fit inside the arc"),
+    # a CAM post's chord pocket entered square to its wall: the tool lands past the first chord (rs274: N5)
+    ("G0 X0 Y0\nG41 D2\nG1 X0 Y-20 F100\nX1.7431 Y-19.9239\nX3.4730 Y-19.6962\nX5.1764 Y-19.3185\n", 5, "gouging"),
     ("G41 D1\nG42 D1\n", 2, "already on"),
     ("G41 D1\nG18\n", 2, "changing the plane"),
     ("G41 D1\nG53 G0 X1\n", 2, "G53"),
@@ -87,7 +89,16 @@ REFUSALS = [
 def test_refusals_name_the_line(source: str, line: int, words: str, tmp_path: Path) -> None:
     err = error_of(source, tmp_path)
     assert words in err.message
-    assert err.location is not None and (err.location.path, err.location.line) == ("job.nc", line)
+    assert err.location is not None and (err.location.path, err.location.line, err.location.col) == ("job.nc", line, 1)
+
+
+def test_a_refusal_held_back_in_the_stage_names_the_column_where_its_line_starts(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X-10\nG42 D2\nG1 X0 F100\n    G2 X4 I2\n")
+    (tmp_path / "cnc.ini").write_text(TOOLS)
+    with pytest.raises(MachineError) as err:
+        run_file(job, RunOptions(macro=EMPTY_MACRO, ini=tmp_path / "cnc.ini"))
+    assert err.value.format().startswith(f"{job}:4:5: error: cutter compensation: the tool radius")
 
 
 def test_m30_ends_compensation_and_the_next_run_starts_without_it(tmp_path: Path) -> None:
