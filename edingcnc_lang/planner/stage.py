@@ -13,6 +13,7 @@ import math
 from collections import deque
 from collections.abc import Callable, Sequence
 from itertools import chain
+from operator import itemgetter
 from typing import TYPE_CHECKING, Any, Protocol
 
 from ..canon import Event, Move, Pose
@@ -32,6 +33,7 @@ RAPID, LINEAR, ARC, PROBE, HOME = range(5)
 KIND_CODES = {"rapid": RAPID, "linear": LINEAR, "arc": ARC, "probe": PROBE, "home": HOME}
 STRAIGHT = -1  # a move of the fast path: rapid if its feed is 0, else linear
 
+_END, _FEED = itemgetter(2), itemgetter(3)  # of a bulk batch's (kind, line, end, feed)
 WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
@@ -113,8 +115,8 @@ class Planner:
         if not self._ends:
             self._origin = start
         count = len(batch)
-        self._ends.extend([item[2] for item in batch])
-        self._feed.extend([item[3] for item in batch])
+        self._ends.extend(map(_END, batch))
+        self._feed.extend(map(_FEED, batch))
         self._kind.extend([STRAIGHT] * count)
         self._cap.extend([math.inf] * count)
         self._accel_cap.extend([math.inf] * count)
@@ -211,13 +213,14 @@ class Planner:
         ends = np.fromiter(chain.from_iterable(self._ends), float, 6 * n).reshape(n, 6).T.copy()  # columns
         starts = np.empty_like(ends)
         starts[:, 0], starts[:, 1:] = self._origin, ends[:, :-1]
-        feed, kind, state = np.array(self._feed), np.array(self._kind), np.array(self._state)
+        feed, kind, state = (np.fromiter(self._feed, float, n), np.fromiter(self._kind, np.int64, n),
+                             np.fromiter(self._state, np.int64, n))
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
         exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
         limit = np.where(kind == RAPID, rapid_limits[state], other_limits[state])
         exact = exact_mode[state] | (kind == RAPID) | (kind == PROBE) | (kind == HOME)
         fastest = (kind == RAPID) | (kind == HOME)
-        speed = np.minimum(np.array(self._cap), np.where(fastest, np.inf, feed * factor[state] / 60.0))
+        speed = np.minimum(np.fromiter(self._cap, float, n), np.where(fastest, np.inf, feed * factor[state] / 60.0))
         cfg = self.config
         if (limit == limit[0]).all():  # the usual case: one set of limits for the whole window
             vlim, alim = self._limit_sets[int(limit[0])]
@@ -227,7 +230,7 @@ class Planner:
         seg = segments(starts, ends, speed, vlim, alim, self._arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
         moving = np.flatnonzero(seg.length > 0.0)  # moves of zero length take no time and do not stop the machine
         exact = exact[moving]
-        all_accel = np.minimum(seg.accel, np.array(self._accel_cap))
+        all_accel = np.minimum(seg.accel, np.fromiter(self._accel_cap, float, n))
         length, vmax, accel = seg.length[moving], seg.vmax[moving], all_accel[moving]
         before, after = moving[:-1], moving[1:]
         corner = corner_speeds2(seg.tangent_out[:, before], seg.tangent_in[:, after], seg.length[before],
