@@ -112,3 +112,19 @@ def test_g19_compensates_in_y_and_z() -> None:
                RunOptions(macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m)), path="job.nc")
     along = next(m for m in moves if m.line == 5)
     assert along.end[1:3] == pytest.approx((20.0, 2.0))  # left of +Y, seen from +X, is +Z
+
+
+GOLDEN_TOOLS = Path(__file__).resolve().parent.parent / "golden" / "linuxcnc" / "tools.ini"
+# An inch contour whose last arc, joined near-tangentially, grows by more than 0.001 rad once G40 fixes
+# its end: rs274 refuses it at the G40 line ("Arc move in concave corner"), found by a random
+# comparison with rs274; in mm LinuxCNC allows 0.0254 rad (tests/golden: comp_near_tangent_arc_growth).
+INCH_ARC_GROWS_AT_G40 = ("G20 G17 G90 G94\nG0 X-30 Y0\nG42 D3\nG1 X0 Y0 F19.6850\n"
+                         "G3 X0.0820 Y0.2516 I-0.4791 J0.2954\nG2 X0.3910 Y0.1104 I0.1849 J-0.0041\n"
+                         "G2 X-0.6368 Y1.3299 I-0.5496 J0.5797\nG40\nG1 X0.3092 Y2.0371\nM2\n")
+
+
+def test_g40_checks_the_last_corner_as_any_move_does_and_inch_sweeps_are_strict() -> None:
+    with pytest.raises(MachineError) as err:
+        run_string(INCH_ARC_GROWS_AT_G40, RunOptions(macro=EMPTY_MACRO, ini=GOLDEN_TOOLS), path="job.nc")
+    assert "an arc in an inside corner cannot be reached" in err.value.message
+    assert err.value.location is not None and err.value.location.line == 8
