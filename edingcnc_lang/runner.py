@@ -17,7 +17,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, load_config, save_variables
-from .errors import EcncError, Interrupted, JobAborted, Location, MachineError
+from .errors import EcncError, Interrupted, Location, MachineError, MoveError
 from .host import Host
 from .interpreter import Interpreter
 from .kinematics.base import Kinematics
@@ -316,12 +316,11 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
 def _add_column(error: EcncError, texts: dict[str, str]) -> None:
     """Give a line-only location the column where that line's code starts.
 
-    The stages after the interpreter (cutter compensation, scaling, rotation, motion) see moves,
-    which carry a line but no column; the report still promises ``FILE:LINE:COL``.  Runtime errors
-    only: ``errmsg`` is reported as ``PATH:LINE`` like the other job messages (docs/cli.md).
+    The stages after the interpreter (cutter compensation, scaling, rotation) see moves, which
+    carry a line but no column; the report still promises ``FILE:LINE:COL``.
     """
     where = error.location
-    if not isinstance(error, MachineError) or isinstance(error, JobAborted):  # errmsg: PATH:LINE, as msg
+    if not isinstance(error, MoveError):
         return
     if where is None or not where.line or where.col:
         return
