@@ -7,6 +7,7 @@ collect its subs, then to execute it statement by statement as it streams in.
 from __future__ import annotations
 
 import os
+from itertools import islice
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -16,7 +17,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, load_config, save_variables
-from .errors import EcncError, Interrupted, Location, MachineError
+from .errors import EcncError, Interrupted, Location, MachineError, MoveError
 from .host import Host
 from .interpreter import Interpreter
 from .kinematics.base import Kinematics
@@ -31,7 +32,7 @@ from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
 from .planner.untimed import Untimed
-from .source import iter_text_lines
+from .source import iter_file_lines, iter_text_lines
 from .stages import STAGES, Pipeline
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
@@ -122,6 +123,7 @@ class Run:
 
     def __init__(self, options: RunOptions) -> None:
         self.options = options
+        self._texts: dict[str, str] = {}  # jobs run from a string, to find an error's column in
         self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         self.kinematics = self._load_kinematics()
@@ -213,6 +215,7 @@ class Run:
                              checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
+        self._texts[path] = text
         reader = StatementReader(iter_text_lines(text), path, check_dialogs=True)
         program = n.Program(path, tuple(reader), reader.unit)
         reader.raise_errors()
@@ -244,6 +247,8 @@ class Run:
                 self.motion.close()
             except OSError as err:
                 error = error or _write_error(err, self._outputs)
+        if error is not None:
+            _add_column(error, self._texts)
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -306,6 +311,26 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
         raise err
     names = ["standard output" if str(p) == "-" else str(p) for p in outputs if p is not None]
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
+
+
+def _add_column(error: EcncError, texts: dict[str, str]) -> None:
+    """Give a line-only location the column where that line's code starts.
+
+    The stages after the interpreter (cutter compensation, scaling, rotation) see moves, which
+    carry a line but no column; the report still promises ``FILE:LINE:COL``.
+    """
+    where = error.location
+    if not isinstance(error, MoveError):
+        return
+    if where is None or not where.line or where.col:
+        return
+    lines = iter_text_lines(texts[where.path]) if where.path in texts else iter_file_lines(where.path)
+    try:
+        line = next(islice(lines, where.line - 1, None), None)
+    except (EcncError, OSError, ValueError):  # not a file (standard input, an ini's string): the line alone
+        return
+    if line is not None:
+        error.location = Location(where.path, where.line, len(line) - len(line.lstrip()) + 1)
 
 
 def _reads_time(options: RunOptions) -> bool:

@@ -15,6 +15,7 @@ The passes are the ones LinuxCNC's interpreter makes for the same words (docs/la
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 MAX_PASSES = 10_000
@@ -54,34 +55,41 @@ class G76Words:
     l: float | None = None
 
 
-def _check(w: G76Words, start_z: float) -> None:
+def _check(w: G76Words, start_z: float, written: Mapping[str, float]) -> None:
+    """Refuse words that describe no thread, quoting them as the program wrote them (``written``:
+    before inch and diameter conversion, so ``J-0.3`` in diameter mode is not reported as J-0.15)."""
+    def shown(letter: str) -> str:
+        value = getattr(w, letter.lower())
+        return f"{letter}{written.get(letter, value):g}"
+
     for letter in "PZIJK":
         if getattr(w, letter.lower()) is None:
             raise ThreadError(f"G76 needs {letter} (P pitch, Z end, I crest offset, J first cut, K depth)")
     assert w.p is not None and w.z is not None and w.i is not None and w.j is not None and w.k is not None
     if w.p <= 0:
-        raise ThreadError(f"G76 P{w.p:g}: the pitch must be greater than 0")
+        raise ThreadError(f"G76 {shown('P')}: the pitch must be greater than 0")
     if w.i == 0:
         raise ThreadError("G76 I must not be 0 (negative: outside thread, positive: inside thread)")
     if w.j <= 0:
-        raise ThreadError(f"G76 J{w.j:g}: the first cut depth must be greater than 0")
+        raise ThreadError(f"G76 {shown('J')}: the first cut depth must be greater than 0")
     if w.k <= 0:
-        raise ThreadError(f"G76 K{w.k:g}: the thread depth must be greater than 0")
+        raise ThreadError(f"G76 {shown('K')}: the thread depth must be greater than 0")
     if w.k <= w.j:
-        raise ThreadError(f"G76 K{w.k:g} must be greater than J{w.j:g} (the first cut)")
+        raise ThreadError(f"G76 {shown('K')} must be greater than {shown('J')} (the first cut)")
     if w.h is not None and (w.h < 0 or w.h != int(w.h)):
-        raise ThreadError(f"G76 H{w.h:g}: the number of spring passes must be a whole number >= 0")
+        raise ThreadError(f"G76 {shown('H')}: the number of spring passes must be a whole number >= 0")
     if w.r is not None and w.r < 1.0:
-        raise ThreadError(f"G76 R{w.r:g}: the depth degression must be at least 1")
+        raise ThreadError(f"G76 {shown('R')}: the depth degression must be at least 1")
     if w.l is not None and w.l not in (0, 1, 2, 3):
-        raise ThreadError(f"G76 L{w.l:g}: the taper must be 0 (none), 1 (entry), 2 (exit) or 3 (both)")
+        raise ThreadError(f"G76 {shown('L')}: the taper must be 0 (none), 1 (entry), 2 (exit) or 3 (both)")
     if w.e is not None and w.e < 0:
-        raise ThreadError(f"G76 E{w.e:g}: the taper length must not be negative")
+        raise ThreadError(f"G76 {shown('E')}: the taper length must not be negative")
     drive = abs(w.z - start_z)
     if drive == 0:
         raise ThreadError("G76 Z is where the tool already is: the thread has no length")
     if w.e is not None and w.e > drive / 2:
-        raise ThreadError(f"G76 E{w.e:g} is longer than half the drive line ({drive / 2:g})")
+        unit = written.get("E", w.e) / w.e  # the drive line in the program's units, as E is
+        raise ThreadError(f"G76 {shown('E')} is longer than half the drive line ({drive / 2 * unit:g})")
 
 
 def _depths(w: G76Words) -> list[float]:
@@ -100,9 +108,13 @@ def _depths(w: G76Words) -> list[float]:
     return depths + [w.k] * (1 + int(w.h or 0))
 
 
-def g76(w: G76Words, start_x: float, start_z: float) -> list[ThreadMove]:
-    """Every move of the cycle from (start_x, start_z); the last one returns to the drive line at Z."""
-    _check(w, start_z)
+def g76(w: G76Words, start_x: float, start_z: float,
+        written: Mapping[str, float] | None = None) -> list[ThreadMove]:
+    """Every move of the cycle from (start_x, start_z); the last one returns to the drive line at Z.
+
+    ``written``: the words as programmed (letter -> value), for the error messages.
+    """
+    _check(w, start_z, written or {})
     assert w.p is not None and w.z is not None and w.i is not None and w.k is not None
     inward = -1.0 if w.i < 0 else 1.0      # outside threads cut towards the centre (-X)
     crest = start_x + w.i                  # the thread's crest line

@@ -91,7 +91,7 @@ class Threading(MachineState):
             values["z"] = self._target({"Z": words["Z"]})[2]
         start = list(self.pos)
         try:
-            passes = g76(G76Words(**values), start[0], start[2])
+            passes = g76(G76Words(**values), start[0], start[2], words)
         except ThreadError as err:
             raise self.fail(str(err), span) from None
         self.spend(len(passes) // 4, span)

@@ -45,8 +45,10 @@ class Project:
     """The files being linted and the macro files each one can call into."""
 
     def __init__(self, files: Sequence[SourceFile], macros: Mapping[str, Sequence[SourceFile]],
-                 extra_written: frozenset[int] = frozenset()) -> None:
+                 extra_written: frozenset[int] = frozenset(),
+                 tool_diameters: Mapping[int, float] | None = None) -> None:
         self.files = tuple(files)
+        self.tool_diameters = dict(tool_diameters or {})  # [TOOL_n] diameter (mm) of the --ini, for G41/G42 D
         self._macros = macros
         self._extra_written = extra_written
         self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}

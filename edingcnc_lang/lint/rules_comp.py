@@ -1,8 +1,9 @@
 """Cutter compensation rules: what the run would refuse, found without running.
 
-The lint follows a file's lines in order (not its control flow) and knows a tool radius only
-when the file states it with literals: ``G41.1/G42.1 D<diameter>`` or ``G10 L1 P<n> R<radius>``
-before ``G41/G42 D<n>``.  Radius and arc sizes are both in the program's units.
+The lint follows a file's lines in order (not its control flow) and knows a tool radius when the
+file states it with literals (``G41.1/G42.1 D<diameter>``, ``G10 L1 P<n> R<radius>`` before
+``G41/G42 D<n>``) or when ``--ini`` gives the tool table (``[TOOL_n] diameter``, mm; divided by
+25.4 after a literal G20).  Radius and arc sizes are both in the program's units.
 """
 from __future__ import annotations
 
@@ -24,22 +25,27 @@ DIAMETER = frozenset(code_key(c) for c in (41.1, 42.1))
 COMP = LEFT | frozenset(code_key(c) for c in (42, 42.1))
 PLANES = {code_key(17): ("I", "J"), code_key(18): ("I", "K"), code_key(19): ("J", "K")}
 G2, G3 = code_key(2), code_key(3)
+G20, G21 = code_key(20), code_key(21)
+MM_PER_INCH = 25.4
 
 
 class _Comp:
     """Compensation as the lines so far leave it: side (+1 left, -1 right, 0 off), radius, plane."""
 
-    def __init__(self) -> None:
+    def __init__(self, tool_diameters: dict[int, float]) -> None:
         self.side = 0
         self.radius: float | None = None
         self.centre_words = PLANES[code_key(17)]
         self.tool_radius: dict[int, float] = {}  # from G10 L1 P R
+        self.table = tool_diameters              # the ini's diameters, mm
+        self.inch = False
 
     def words(self, codes: BlockCodes) -> dict[str, float | None]:
         return {w.letter: evaluate(w.value) for w in codes.block.words if w.letter not in "GM"}
 
     def update(self, codes: BlockCodes, words: dict[str, float | None]) -> None:
         keys = {key for key, _ in codes.g}
+        self.inch = True if G20 in keys else False if G21 in keys else self.inch
         self.centre_words = next((PLANES[k] for k in keys if k in PLANES), self.centre_words)
         if G10 in keys and words.get("L") == 1 and words.get("P") is not None and words.get("R") is not None:
             self.tool_radius[int(words["P"])] = abs(words["R"])  # type: ignore[arg-type]
@@ -53,12 +59,18 @@ class _Comp:
         if code in DIAMETER:
             self.radius = abs(d) / 2.0 if d is not None else None
         else:
-            self.radius = self.tool_radius.get(int(d)) if d is not None and d == int(d) else None
+            self.radius = self._tool_radius(int(d)) if d is not None and d == int(d) else None
+
+    def _tool_radius(self, tool: int) -> float | None:
+        if tool in self.tool_radius:
+            return self.tool_radius[tool]
+        diameter = self.table.get(tool)
+        return None if diameter is None else abs(diameter) / 2.0 / (MM_PER_INCH if self.inch else 1.0)
 
 
 @rule("G508")
 def arc_too_small_for_the_tool(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    comp = _Comp()
+    comp = _Comp(project.tool_diameters)
     for codes in project.facts(file).blocks:
         words = comp.words(codes)
         comp.update(codes, words)

@@ -13,6 +13,7 @@ import math
 from collections import deque
 from collections.abc import Callable, Sequence
 from itertools import chain
+from operator import itemgetter
 from typing import TYPE_CHECKING, Any, Protocol
 
 from ..canon import Event, Move, Pose
@@ -21,6 +22,7 @@ from ..kinematics.trajectory import Geometry, geometry_of
 from .estimate import Estimate, Timing
 from .limits_report import LimitsReport
 from .overrides import Overrides
+from .runs import Runs
 
 if TYPE_CHECKING:
     import numpy as np
@@ -32,6 +34,7 @@ RAPID, LINEAR, ARC, PROBE, HOME = range(5)
 KIND_CODES = {"rapid": RAPID, "linear": LINEAR, "arc": ARC, "probe": PROBE, "home": HOME}
 STRAIGHT = -1  # a move of the fast path: rapid if its feed is 0, else linear
 
+_END, _FEED = itemgetter(2), itemgetter(3)  # of a bulk batch's (kind, line, end, feed)
 WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
@@ -91,11 +94,11 @@ class Planner:
         limit = self._limit_id(limits)
         self._ends.append(move.end)
         self._feed.append(move.feed)
-        self._kind.append(KIND_CODES[move.kind])
-        self._cap.append(cap)
-        self._accel_cap.append(accel_cap)
+        self._kind.add(KIND_CODES[move.kind])
+        self._cap.add(cap)
+        self._accel_cap.add(accel_cap)
         # a spindle-synchronised cut (G33, G76) follows the spindle: the feed override does not act on it
-        self._state.append(self._state_id(limit, limit, 1.0 if move.sync > 0.0 else self.overrides.feed_factor))
+        self._state.add(self._state_id(limit, limit, 1.0 if move.sync > 0.0 else self.overrides.feed_factor))
         self._joints.append(None if samples is None else samples.joints)
         self._sampled += samples is not None
         self._queue.append(("move", move, joints))
@@ -113,14 +116,14 @@ class Planner:
         if not self._ends:
             self._origin = start
         count = len(batch)
-        self._ends.extend([item[2] for item in batch])
-        self._feed.extend([item[3] for item in batch])
-        self._kind.extend([STRAIGHT] * count)
-        self._cap.extend([math.inf] * count)
-        self._accel_cap.extend([math.inf] * count)
+        self._ends.extend(map(_END, batch))
+        self._feed.extend(map(_FEED, batch))
+        self._kind.add(STRAIGHT, count)
+        self._cap.add(math.inf, count)
+        self._accel_cap.add(math.inf, count)
         state = self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]),
                                self.overrides.feed_factor)
-        self._state.extend([state] * count)
+        self._state.add(state, count)
         self._joints.extend([None] * count)
         self._queue.append(("batch", path, list(batch)))
         self._after_add()
@@ -162,10 +165,10 @@ class Planner:
         # one entry per collected move
         self._ends: list[Pose] = []
         self._feed: list[float] = []    # mm/min as programmed (0 for rapids)
-        self._kind: list[int] = []      # a KIND_CODES value, or STRAIGHT: rapid if the feed is 0, else linear
-        self._cap: list[float] = []     # the speed the kinematics' joints allow
-        self._accel_cap: list[float] = []  # the path acceleration they allow
-        self._state: list[int] = []     # index into self._states
+        self._kind = Runs()             # a KIND_CODES value, or STRAIGHT: rapid if the feed is 0, else linear
+        self._cap = Runs()              # the speed the kinematics' joints allow
+        self._accel_cap = Runs()        # the path acceleration they allow
+        self._state = Runs()            # index into self._states
         self._joints: list[Any] = []    # the joints sampled along the move, None where they are the position
         self._sampled = 0               # how many of them are not None
         self._arcs: dict[int, Geometry] = {}
@@ -211,13 +214,13 @@ class Planner:
         ends = np.fromiter(chain.from_iterable(self._ends), float, 6 * n).reshape(n, 6).T.copy()  # columns
         starts = np.empty_like(ends)
         starts[:, 0], starts[:, 1:] = self._origin, ends[:, :-1]
-        feed, kind, state = np.array(self._feed), np.array(self._kind), np.array(self._state)
+        feed, kind, state = np.fromiter(self._feed, float, n), self._kind.array(np.int64), self._state.array(np.int64)
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
         exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
         limit = np.where(kind == RAPID, rapid_limits[state], other_limits[state])
         exact = exact_mode[state] | (kind == RAPID) | (kind == PROBE) | (kind == HOME)
         fastest = (kind == RAPID) | (kind == HOME)
-        speed = np.minimum(np.array(self._cap), np.where(fastest, np.inf, feed * factor[state] / 60.0))
+        speed = np.minimum(self._cap.array(float), np.where(fastest, np.inf, feed * factor[state] / 60.0))
         cfg = self.config
         if (limit == limit[0]).all():  # the usual case: one set of limits for the whole window
             vlim, alim = self._limit_sets[int(limit[0])]
@@ -227,7 +230,7 @@ class Planner:
         seg = segments(starts, ends, speed, vlim, alim, self._arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
         moving = np.flatnonzero(seg.length > 0.0)  # moves of zero length take no time and do not stop the machine
         exact = exact[moving]
-        all_accel = np.minimum(seg.accel, np.array(self._accel_cap))
+        all_accel = np.minimum(seg.accel, self._accel_cap.array(float))
         length, vmax, accel = seg.length[moving], seg.vmax[moving], all_accel[moving]
         before, after = moving[:-1], moving[1:]
         corner = corner_speeds2(seg.tangent_out[:, before], seg.tangent_in[:, after], seg.length[before],
@@ -263,8 +266,10 @@ class Planner:
         """Forget the first ``count`` collected moves (already committed)."""
         if count:
             self._origin = self._ends[count - 1]
-        for values in (self._ends, self._feed, self._kind, self._cap, self._accel_cap, self._state, self._joints):
+        for values in (self._ends, self._feed, self._joints):
             del values[:count]
+        for runs in (self._kind, self._cap, self._accel_cap, self._state):
+            runs.drop(count)
         if self._sampled:
             self._sampled = sum(j is not None for j in self._joints)
         self._arcs = {i - count: g for i, g in self._arcs.items() if i >= count}

@@ -13,7 +13,11 @@ from ..canon import PLANES, Arc, Move, Pose
 LEFT = 1
 RIGHT = -1
 CONCAVE_TOLERANCE = 0.05  # radians: corners sharper than this either way are corners, as in LinuxCNC
-ARC_SWEEP_SLACK = 0.001   # radians an arc whose end moved back may grow by before it counts as gouging
+# Radians an arc whose end moved back may grow by before it counts as gouging.  LinuxCNC 2.9 compares
+# the angles with a slack chosen by the program's units (0.0254 under G21, 0.001 under G20, as if they
+# were lengths); we take the same, so the same near-tangent arcs pass and the same ones are refused.
+ARC_SWEEP_SLACK_MM = 0.0254
+ARC_SWEEP_SLACK_INCH = 0.001
 
 Point = tuple[float, float]
 

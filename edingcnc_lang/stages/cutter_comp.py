@@ -26,10 +26,11 @@ from dataclasses import replace
 
 from ..canon import Arc, Canon, Event, Move, Pose
 from ..config import MachineConfig
-from ..errors import Location, MachineError
+from ..errors import Location, MoveError
 from .base import FLUSHING_EVENTS, Stage, each_move
 from .comp_geometry import (
-    ARC_SWEEP_SLACK,
+    ARC_SWEEP_SLACK_INCH,
+    ARC_SWEEP_SLACK_MM,
     CONCAVE_TOLERANCE,
     LEFT,
     RIGHT,
@@ -45,8 +46,8 @@ SIDES = {"left": LEFT, "right": RIGHT}
 HALF_PI = math.pi / 2
 
 
-def _refuse(move: Move, what: str) -> MachineError:
-    return MachineError(f"cutter compensation: {what}", Location(move.path, move.line))
+def _refuse(move: Move | Event, what: str) -> MoveError:
+    return MoveError(f"cutter compensation: {what}", Location(move.path, move.line))
 
 
 class CutterCompensation(Stage):
@@ -56,6 +57,7 @@ class CutterCompensation(Stage):
         super().__init__(next_canon, config)
         self.side = 0                      # LEFT, RIGHT or 0 (off, or a radius of 0)
         self.radius = 0.0
+        self.sweep_slack = ARC_SWEEP_SLACK_MM  # by the program's units when compensation came on
         self.frame = Frame("XY")
         self.first = True                  # the next move is the entry move
         self.program: Point = (0.0, 0.0)   # programmed in-plane end of the last move
@@ -113,10 +115,11 @@ class CutterCompensation(Stage):
             self.side = side if radius > 0 else 0
             self.radius = radius
             self.frame = Frame(str(event.data.get("plane", "XY")))
+            self.sweep_slack = ARC_SWEEP_SLACK_INCH if event.data.get("inch") else ARC_SWEEP_SLACK_MM
             self.first = True
             return
-        if self.side and not self.first:  # G40: the last move ends at its compensated end
-            self._move_endpoint_and_flush(self.frame.point(self.current), None)
+        if self.side and not self.first:  # G40: the last move ends at its compensated end (checked as any corner)
+            self._move_endpoint_and_flush(self.frame.point(self.current), event)
             self.exit_from = tuple(self.current)  # type: ignore[assignment]
         self.side = 0
         self.first = True
@@ -146,8 +149,11 @@ class CutterCompensation(Stage):
             self.next.move(move)
             self.emitted = move.end
 
-    def _move_endpoint_and_flush(self, point: Point, move: Move | None) -> None:
-        """End every queued move at ``point`` (cut back into a corner), refusing reversals; hand them on."""
+    def _move_endpoint_and_flush(self, point: Point, move: Move | Event | None) -> None:
+        """End every queued move at ``point`` (cut back into a corner), refusing reversals; hand them on.
+
+        ``move``: what moved the end (the next move, or the G40 event), named by a refusal.
+        """
         frame = self.frame
         for item in self.queue:
             if isinstance(item, Event):
@@ -155,7 +161,7 @@ class CutterCompensation(Stage):
             if item.center is not None:
                 new_sweep = find_turn(self.endpoint, item.center, item.turn, point) if self.endpoint else 0.0
                 if (move is not None and item.sweep and self.endpoint is not None
-                        and abs(new_sweep) > abs(item.sweep) + ARC_SWEEP_SLACK):
+                        and abs(new_sweep) > abs(item.sweep) + self.sweep_slack):
                     raise _refuse(move, "an arc in an inside corner cannot be reached by the tool without gouging")
             elif move is not None and self.endpoint is not None:
                 dx, dy = point[0] - self.endpoint[0], point[1] - self.endpoint[1]

@@ -66,6 +66,8 @@ REFUSALS = [
     ("G0 X0 Y0\nG41 D1\nG1 X1 Y0 F100\n", 3, "entry move"),
     ("G0 X-10\nG41 D2\nG1 X0 Y0 F100\nG1 X20\nG1 Y20\nG1 X19\nG1 Y0\n", 7, "gouging"),
     ("G0 X-10\nG42 D2\nG1 X0 F100\nG2 X4 I2\n", 4, "does not fit inside the arc"),
+    # a CAM post's chord pocket entered square to its wall: the tool lands past the first chord (rs274: N5)
+    ("G0 X0 Y0\nG41 D2\nG1 X0 Y-20 F100\nX1.7431 Y-19.9239\nX3.4730 Y-19.6962\nX5.1764 Y-19.3185\n", 5, "gouging"),
     ("G41 D1\nG42 D1\n", 2, "already on"),
     ("G41 D1\nG18\n", 2, "changing the plane"),
     ("G41 D1\nG53 G0 X1\n", 2, "G53"),
@@ -87,7 +89,16 @@ REFUSALS = [
 def test_refusals_name_the_line(source: str, line: int, words: str, tmp_path: Path) -> None:
     err = error_of(source, tmp_path)
     assert words in err.message
-    assert err.location is not None and (err.location.path, err.location.line) == ("job.nc", line)
+    assert err.location is not None and (err.location.path, err.location.line, err.location.col) == ("job.nc", line, 1)
+
+
+def test_a_refusal_held_back_in_the_stage_names_the_column_where_its_line_starts(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X-10\nG42 D2\nG1 X0 F100\n    G2 X4 I2\n")
+    (tmp_path / "cnc.ini").write_text(TOOLS)
+    with pytest.raises(MachineError) as err:
+        run_file(job, RunOptions(macro=EMPTY_MACRO, ini=tmp_path / "cnc.ini"))
+    assert err.value.format().startswith(f"{job}:4:5: error: cutter compensation: the tool radius")
 
 
 def test_m30_ends_compensation_and_the_next_run_starts_without_it(tmp_path: Path) -> None:
@@ -101,3 +112,19 @@ def test_g19_compensates_in_y_and_z() -> None:
                RunOptions(macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m)), path="job.nc")
     along = next(m for m in moves if m.line == 5)
     assert along.end[1:3] == pytest.approx((20.0, 2.0))  # left of +Y, seen from +X, is +Z
+
+
+GOLDEN_TOOLS = Path(__file__).resolve().parent.parent / "golden" / "linuxcnc" / "tools.ini"
+# An inch contour whose last arc, joined near-tangentially, grows by more than 0.001 rad once G40 fixes
+# its end: rs274 refuses it at the G40 line ("Arc move in concave corner"), found by a random
+# comparison with rs274; in mm LinuxCNC allows 0.0254 rad (tests/golden: comp_near_tangent_arc_growth).
+INCH_ARC_GROWS_AT_G40 = ("G20 G17 G90 G94\nG0 X-30 Y0\nG42 D3\nG1 X0 Y0 F19.6850\n"
+                         "G3 X0.0820 Y0.2516 I-0.4791 J0.2954\nG2 X0.3910 Y0.1104 I0.1849 J-0.0041\n"
+                         "G2 X-0.6368 Y1.3299 I-0.5496 J0.5797\nG40\nG1 X0.3092 Y2.0371\nM2\n")
+
+
+def test_g40_checks_the_last_corner_as_any_move_does_and_inch_sweeps_are_strict() -> None:
+    with pytest.raises(MachineError) as err:
+        run_string(INCH_ARC_GROWS_AT_G40, RunOptions(macro=EMPTY_MACRO, ini=GOLDEN_TOOLS), path="job.nc")
+    assert "an arc in an inside corner cannot be reached" in err.value.message
+    assert err.value.location is not None and err.value.location.line == 8

@@ -154,9 +154,13 @@ def test_g33_1_taps_in_reverses_and_comes_back(tmp_path: Path) -> None:
     ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 E6\n", "longer than half the drive line"),
     ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 H-2\n", "spring passes"),
     ("G97 S100 M3\nG0 X20 Z0\nG76 P-1 Z-10 I-1 J0.1 K0.6\n", "P-1: the pitch must be greater than 0"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J-0.1 K0.6\n", "first cut depth must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J-0.1 K0.6\n", "J-0.1: the first cut depth must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K-0.6\n", "K-0.6: the thread depth must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.8 K0.6\n", "K0.6 must be greater than J0.8"),
+    ("G20\nG97 S100 M3\nG0 X1 Z0\nG76 P0.05 Z-1 I-0.04 J0.004 K0.03 E0.6\n", "E0.6 is longer than half the drive line (0.5)"),
 ])
 def test_threading_errors_name_the_line(tmp_path: Path, job: str, message: str) -> None:
+    """The words are quoted as written: in the program's units, I J K as diameters here."""
     text = failure(tmp_path, job)
     assert message in text and f"<string>:{job.count(chr(10))}:" in text
 
