@@ -41,6 +41,13 @@ def test_an_error_prints_its_message_and_the_session_goes_on() -> None:
     assert out[-2] == "work    X2.0000 Y0.0000 Z0.0000 A0.0000 B0.0000 C0.0000"
 
 
+def test_an_errmsg_is_printed_once_and_the_session_goes_on() -> None:
+    code, out, err = mdi('errmsg "spindle not ready " 3\nG0 X2\n')
+    assert code == 70
+    assert err.splitlines() == ["<mdi>:1: error: spindle not ready 3"]
+    assert out[0] == "work    X2.0000 Y0.0000 Z0.0000 A0.0000 B0.0000 C0.0000"
+
+
 def test_blocks_are_read_until_closed_and_subs_can_be_called(tmp_path: Path) -> None:
     macro = tmp_path / "macro.cnc"
     macro.write_text("Sub park\n  G0 Z5\nEndSub\n")
