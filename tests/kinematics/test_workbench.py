@@ -71,10 +71,26 @@ def test_crash_in_a_compiled_plugin_is_a_finding_naming_call_and_pose(built: Pat
     ("nan_corner.py", None, {"K401"}),
     ("branch_flip.py", (50, 150, -50, 50, 0, 10), {"K201"}),
     ("drifting.py", None, {"K503", "K504"}),
+    ("polar_atan.py", None, {"K101", "K201"}),
+    ("trunnion_sign.py", None, {"K101", "K102"}),  # the default cube: A is proven over a turn
 ])
 def test_broken_plugins_are_caught_by_the_right_finding(plugin: str, box, expected: set[str]) -> None:
     report = check_plugin(str(BROKEN / plugin), CheckOptions(box=box, **QUICK))
     assert codes(report) == expected, report.format()
+
+
+def test_a_rotary_axis_that_moves_other_joints_is_proven_over_a_turn() -> None:
+    """Without --box or --ini, A B C are held at 0 unless turning one moves another joint: a
+    trunnion's A, the virtual C of rotatekins; never a rotary passed through (trivial, deltakins)."""
+    def box(name: str) -> tuple[tuple[float, float], ...]:
+        return tuple(tuple(pair) for pair in check_plugin(name, CheckOptions(**QUICK)).box)
+
+    assert box(str(BROKEN / "trunnion_sign.py"))[3:] == ((-180.0, 180.0), (0.0, 0.0), (0.0, 0.0))
+    assert box("rotatekins")[3:] == ((0.0, 0.0), (0.0, 0.0), (-180.0, 180.0))
+    for name in ("trivial", "deltakins", str(BROKEN / "polar_atan.py")):
+        assert box(name)[3:] == ((0.0, 0.0),) * 3, name
+    given = check_plugin(str(BROKEN / "trunnion_sign.py"), CheckOptions(box=(-10, 10, -10, 10, -10, 10), **QUICK))
+    assert given.ok  # a --box is taken as given, even one that holds A
 
 
 def test_a_jump_is_shown_with_both_poses_and_joints() -> None:
