@@ -403,7 +403,7 @@ class StatementReader:
         if self.tolerant:
             self.warnings.append(replace(Diagnostic.make(err.code, err.message, path, lineno, err.col, text),
                                          severity=Severity.WARNING))
-            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1))
+            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1), text)
             if opener is None and stack:
                 stack[-1].add(bad)
             elif opener is None:
@@ -415,7 +415,7 @@ class StatementReader:
             head = Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0))
             self._push(stack, head, text)
             if self.tolerant and stack and stack[-1].opener is head:  # reaching the head is the error
-                stack[-1].add(n.BadLine(err.code, err.message, err.col, span))
+                stack[-1].add(n.BadLine(err.code, err.message, err.col, span, text))
 
     def _check_dialog(self, dialog: n.Dialog, text: str) -> None:
         """Report the dlgmsg shapes the controller refuses when it reads the line (G1167)."""

@@ -39,6 +39,8 @@ CORPUS = {
     "shared_macro.cnc": [],
     "conversational_addon.cnc": [4, 5, 6, 27, 28, 29],
     "user_macro.cnc": [],
+    "bzt_macro.cnc": [112, 113, 114],
+    "shop_macro.cnc": [],
 }
 
 
@@ -94,3 +96,23 @@ def test_the_unreached_prose_stops_the_run_when_it_is_reached(tmp_path: Path) ->
     with pytest.raises(SyntaxErrors) as info:
         run_string("#4699 = 1\nGoSub notes\n", RunOptions(macro=FILES / "conversational_addon.cnc"))
     assert info.value.diagnostics[0].line == 27 and info.value.exit_code == 65
+
+
+def test_the_crlf_latin1_prose_is_the_same_message_at_load_and_when_reached(tmp_path: Path) -> None:
+    """bzt_macro.cnc: CRLF, Latin-1 accents, and a retired sub whose note was never commented out."""
+    from edingcnc_lang.diagnostics import SyntaxErrors
+
+    loaded = run_string("M30\n", RunOptions(macro=FILES / "bzt_macro.cnc", log_dir=tmp_path))
+    with pytest.raises(SyntaxErrors) as info:
+        run_string("#4005 = 99\nGoSub user_9\n", RunOptions(macro=FILES / "bzt_macro.cnc", log_dir=tmp_path))
+    assert info.value.exit_code == 65
+    assert info.value.diagnostics[0].format() == loaded.warnings[0].format().replace("warning:", "error:")
+    assert "Werkzeuglänge" in loaded.warnings[0].format()  # the Latin-1 line, decoded
+
+
+def test_the_translated_vendor_style_measures_its_angle_both_ways(tmp_path: Path) -> None:
+    """shop_macro.cnc: lower-case keywords, msg"..." without a space, g4p0.2, #5015..#5025 as scratch."""
+    result = run_sub(FILES / "shop_macro.cnc", "zero_set_rotation", tmp_path)
+    assert result.variables[5024] == pytest.approx(math.degrees(math.atan2(3, 100)))
+    assert result.variables[5025] == pytest.approx(result.variables[5024])
+    assert result.variables[5196] == pytest.approx(result.variables[5024])
