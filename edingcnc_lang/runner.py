@@ -180,7 +180,7 @@ class Run:
         """A macro file as the controller loads it: lines that do not parse wait (as BadLine) until
         a run reaches them, each reported once as a warning; ``strict`` makes them errors here."""
         if self.options.strict:
-            return parse_file(path)
+            return parse_file(path, check_dialogs=True)
         reader = read_statements(path, tolerant=True)
         body = tuple(reader)
         reader.raise_errors()  # block structure (Sub/EndSub, If/EndIf) must still be right
