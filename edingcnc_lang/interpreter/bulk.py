@@ -7,7 +7,7 @@ from .. import nodes as n
 from ..canon import AXES
 from ..errors import EcncError
 from ..parser import plain_block, plain_words
-from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState
+from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState, xyz_distance
 
 _NUM = r"([+-]?(?:\d+\.?\d*|\.\d+))[ \t]*"
 CAM_LINE = re.compile(r"[ \t]*(?:[Gg][ \t]*" + _NUM + ")?" + "".join(
@@ -131,12 +131,14 @@ class BulkPath(MachineState):
             except EcncError as err:  # a move was refused: the state is that of the move before it
                 failed = next((k for k, item in enumerate(batch)
                                if err.location is not None and item[1] == err.location.line), 0)
+                self.job_distance += _travelled(self.pos, batch[:failed])
                 if failed:
                     self.pos = list(batch[failed - 1][2])
                 self.feed = feeds[failed]
                 self.modal["motion"] = G_1 if batch[failed][0] == "linear" else G_0
                 self.line = batch[failed][1]
                 raise
+            self.job_distance += _travelled(self.pos, batch)
         self.pos = list(pos)
         self.feed = feed
         if motion is not None:
@@ -170,3 +172,12 @@ class BulkPath(MachineState):
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).
 STATEMENTS = {n.PlainRun: "_exec_plain_run"}
+
+
+def _travelled(start: list[float], batch: list[tuple[str, int, tuple[float, ...], float]]) -> float:
+    """The XYZ length of a batch of straight moves from ``start`` (GetJobDistance counts it)."""
+    total, here = 0.0, start
+    for _kind, _line, end, _feed in batch:
+        total += xyz_distance(here, end)
+        here = list(end)
+    return total

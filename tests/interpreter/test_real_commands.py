@@ -111,6 +111,18 @@ def test_get_job_distance_counts_lines_arcs_and_rapids() -> None:
     assert result.variables[100] == pytest.approx(20 + 10 * math.pi)
 
 
+def test_get_job_distance_counts_the_bulk_moves_of_a_job_file(tmp_path: Path) -> None:
+    """A job file's plain G0/G1 lines take the bulk path; their travel counts as any other move's."""
+    from edingcnc_lang.runner import run_file
+
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X10\nG1 Y10 F100\nX0 Y0 Z-5\nGetJobDistance 100\nG1 X3 Y4 Z-5\nGetJobDistance 101\n")
+    result = run_file(job, RunOptions())
+    first = 20 + math.sqrt(200 + 25)
+    assert result.variables[100] == pytest.approx(first)
+    assert result.variables[101] == pytest.approx(first + 5)
+
+
 def test_height_control_voltages_read_zero_in_simulation() -> None:
     assert run("#101 = 5\nGetHeightControlVact 101\nGetHeightControlVset 102\n").variables[101] == 0.0
     assert "parameter number" in error_of("GetJobDistance #100\n").message
