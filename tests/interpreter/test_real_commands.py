@@ -136,6 +136,14 @@ def test_g10_l10_and_l11_set_the_tool_length_from_the_position() -> None:
     assert result.variables[100] == pytest.approx(2.0)
 
 
+def test_g10_l10_leaves_the_wear_out_so_the_position_reads_z_under_g43() -> None:
+    """G43 adds zDelta to the length; G10 L10 must set the length that, with the wear, reads Z."""
+    result = run("#5903 = 0.2\nG0 Z20\nG10 L10 P3 Z0\nG43 H3\n#100 = #5003\nG10 L11 P3 Z5\nG43 H3\n#101 = #5003\n")
+    assert result.variables[5403] == pytest.approx(20 - 5 - 0.2)
+    assert result.variables[100] == pytest.approx(0.0)
+    assert result.variables[101] == pytest.approx(5.0)
+
+
 def test_g43_adds_the_tool_wear(tmp_path: Path) -> None:
     result = run("#5405 = 20\n#5905 = -0.05\nG43 H5\n")
     assert result.variables[5013] == pytest.approx(19.95)
