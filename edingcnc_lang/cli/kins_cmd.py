@@ -46,6 +46,11 @@ def _switched_on(name: str, ini: str | None) -> Kinematics:
 
     settings, search_dirs = _settings(Path(ini) if ini else None)
     kins = load_kinematics(name, settings, search_dirs)
+    from ..kinematics.workbench.isolate import GUARD_VARIABLE, guard_calls
+
+    guard = os.environ.get(GUARD_VARIABLE)
+    if guard and hasattr(kins, "_fn"):  # in the child of _in_child: record each call before it is made
+        guard_calls(kins, guard)
     rc = kins.control(abi.ON, [0.0] * abi.CONTROL_DATA_LEN)
     if rc != 0:
         raise PluginError(f"kinematics plug-in {name!r}: switching it ON failed (control returned {rc})")
@@ -133,6 +138,9 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
+    isolated = _in_child("inverse", name, ini, pos)
+    if isolated is not None:
+        return isolated
     _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse")
     return EXIT_OK
 
@@ -142,8 +150,31 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
+    isolated = _in_child("forward", name, ini, joints)
+    if isolated is not None:
+        return isolated
     _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward")
     return EXIT_OK
+
+
+def _in_child(command: str, name: str, ini: str | None, values: Pose) -> int | None:
+    """A compiled plug-in is called in a child process, so that a crash in the library is an error
+    naming the call and the pose (exit 70) instead of killing ecnc; None: call it here."""
+    import sys
+
+    from ..kinematics.loader import find_plugin_file
+    from ..kinematics.workbench.isolate import GUARD_VARIABLE, run_command_isolated
+
+    if GUARD_VARIABLE in os.environ:  # this is the child
+        return None
+    found = find_plugin_file(name, _settings(Path(ini) if ini else None)[1])
+    if found is None or found.suffix.lower() != ".so":
+        return None
+    argv = ["kins", command, name, *(["--ini", ini] if ini else []), "--", *(repr(v) for v in values)]
+    status, out, err = run_command_isolated(argv)
+    sys.stdout.write(out)
+    sys.stderr.write(err)
+    return status
 
 
 @click.command("build", cls=Command,

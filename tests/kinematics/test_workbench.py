@@ -175,3 +175,18 @@ def test_envelope_picture_shows_reach_and_its_edge(tmp_path: Path) -> None:
     green = ((abs(pixels[..., 0] - 0x4c / 255) < 0.02) & (abs(pixels[..., 1] - 0x9a / 255) < 0.02)).sum()
     grey = ((abs(pixels - 0xd9 / 255) < 0.02).all(axis=-1)).sum()
     assert green > 20_000 and grey > 5_000  # the reachable triangle and the unreachable rim are both drawn
+
+
+@needs_cc
+def test_kins_inverse_survives_a_crashing_compiled_plugin(built: Path) -> None:
+    """`ecnc kins inverse` calls a compiled plug-in in a child: a crash is exit 70 naming the call and
+    the pose, never a dead ecnc (SIGSEGV); a pose that does not crash answers as in-process."""
+    from tests.cli_runner import invoke
+
+    crashed = invoke("kins", "inverse", str(built / "crash_corner.so"), "100", "100", "-100")
+    assert crashed.exit_code == 70 and crashed.stdout == ""
+    assert crashed.stderr.endswith("KinematicsInverse crashed the process (SIGSEGV) at X100 Y100 Z-100 A0 B0 C0\n")
+    compared = invoke("kins", "compare", "trivial", str(built / "crash_corner.so"), "--samples", "50")
+    assert compared.exit_code == 70 and "(SIGSEGV) at X100 Y100" in compared.stderr
+    fine = invoke("kins", "forward", str(built / "rotatekins.so"), "--", "-1", "2", "3")
+    assert (fine.exit_code, fine.stdout) == (0, '{"x": -1.0, "y": 2.0, "z": 3.0, "a": 0.0, "b": 0.0, "c": 0.0}\n')
