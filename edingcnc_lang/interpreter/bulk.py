@@ -1,13 +1,14 @@
 """The bulk path: runs of plain G0/G1 lines executed without building nodes."""
 from __future__ import annotations
 
+import math
 import re
 
 from .. import nodes as n
 from ..canon import AXES
 from ..errors import EcncError
 from ..parser import plain_block, plain_words
-from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState, xyz_distance
+from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState
 
 _NUM = r"([+-]?(?:\d+\.?\d*|\.\d+))[ \t]*"
 CAM_LINE = re.compile(r"[ \t]*(?:[Gg][ \t]*" + _NUM + ")?" + "".join(
@@ -176,8 +177,5 @@ STATEMENTS = {n.PlainRun: "_exec_plain_run"}
 
 def _travelled(start: list[float], batch: list[tuple[str, int, tuple[float, ...], float]]) -> float:
     """The XYZ length of a batch of straight moves from ``start`` (GetJobDistance counts it)."""
-    total, here = 0.0, start
-    for _kind, _line, end, _feed in batch:
-        total += xyz_distance(here, end)
-        here = list(end)
-    return total
+    points = [start[:3], *(end[:3] for _kind, _line, end, _feed in batch)]
+    return sum(map(math.dist, points, points[1:]))
