@@ -33,6 +33,7 @@ from .planner.stage import Planner, TimedSink
 from .planner.untimed import Untimed
 from .source import iter_text_lines
 from .stages import STAGES, Pipeline
+from .stages.height_comp import HeightCompensation
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
@@ -267,6 +268,13 @@ class Run:
             return error or _write_error(err, self._outputs)
         return error
 
+    def machine_position(self) -> tuple[float, ...]:
+        """Where the machine is: the programmed pose through G68 and G51, plus the Z that height
+        compensation added at the end of the last move (ZHC follows the surface in machine Z)."""
+        machine = list(self.interpreter.machine_frame(self.interpreter.pos))
+        machine[2] += sum(stage.applied for stage in self.pipeline.stages if isinstance(stage, HeightCompensation))
+        return tuple(machine)
+
     def result(self, error: EcncError | None = None) -> RunResult:
         interp = self.interpreter
         motion = interp.modal["motion"]
@@ -276,7 +284,7 @@ class Run:
         kin = self.kinematics
         return RunResult(
             position=tuple(interp.reported_position()),  # type: ignore[arg-type]
-            machine=interp.machine_frame(interp.pos),  # type: ignore[arg-type]
+            machine=self.machine_position(),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
             messages=list(interp.messages),

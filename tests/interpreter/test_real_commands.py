@@ -106,6 +106,17 @@ def test_m90_to_m93_select_the_spindle_in_5390(m: int, value: float) -> None:
     assert run(f"M{m}\n").variables[5390] == value
 
 
+def test_the_machine_position_of_a_run_includes_the_height_compensation() -> None:
+    """--json's machine Z (and MDI's machine line) is where the machine is, as the trace shows it:
+    the work Z plus the surface height under it while ZHC is on; after ZHC off the next move ramps back."""
+    moves: list[Move] = []
+    result = run(GRID + "ZHC on\nG0 X50 Y30 Z-0.1\n", moves)
+    height = 50 / 250 + 30 / 300
+    assert result.machine[2] == pytest.approx(-0.1 + height) == pytest.approx(moves[-1].end[2])
+    assert result.position[2] == pytest.approx(-0.1)
+    assert run(GRID + "ZHC on\nG0 X50 Y30 Z-0.1\nZHC off\nG0 X60\n").machine[2] == pytest.approx(-0.1)
+
+
 def test_get_job_distance_counts_lines_arcs_and_rapids() -> None:
     result = run("G0 X10\nG1 X10 Y10 F100\nG2 X10 Y10 I5 J0\nGetJobDistance 100\n")
     assert result.variables[100] == pytest.approx(20 + 10 * math.pi)
