@@ -13,6 +13,7 @@ import click
 
 from ..errors import EXIT_FINDINGS, EXIT_OK
 from .base import Command, usage_error
+from .kins_cmd import guarded, in_child_if_compiled
 from .options import ini_option, json_option
 from .params import KINEMATICS_NAME, OUTPUT_FILE, POSITIVE_INT
 
@@ -52,6 +53,14 @@ def _options(ini: str | None, box: str | None, seed: int, samples: int, toleranc
     if tolerance is not None and not tolerance > 0.0:
         raise usage_error(f"--tolerance must be a positive number, not {tolerance:g}")
     return CheckOptions(ini=ini, box=values, seed=seed, samples=samples, tolerance=tolerance, **extra)
+
+
+def _workspace_argv(ini: str | None, box: str | None, seed: int, samples: int, tolerance: float | None) -> list[str]:
+    """The workspace options again, for the same command in a child process."""
+    argv = ["--seed", str(seed), "--samples", str(samples)]
+    argv += ["--ini", ini] if ini else []
+    argv += [f"--box={box}"] if box is not None else []
+    return argv + ([f"--tolerance={tolerance!r}"] if tolerance is not None else [])
 
 
 def _print_json(data: object) -> None:
@@ -108,8 +117,12 @@ def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
 
     fmt = picture_format(Path(output))  # before the workspace is searched
     options = _options(**workspace)
+    isolated = in_child_if_compiled(plugin, options.ini, [
+        "kins", "plot", "-o", output, "--resolution", str(resolution), *_workspace_argv(**workspace), "--", plugin])
+    if isolated is not None:
+        return isolated
     machine = workbench.read_machine(options.ini)
-    kins = workbench.load_plugin(plugin, machine)
+    kins = guarded(workbench.load_plugin(plugin, machine))
     space = workbench.workspace_for(kins, options, machine)
     workbench.plug.switch_on(kins, space.centre)
     print(plot_envelope(kins, space, Path(output), plugin, resolution=resolution, fmt=fmt))

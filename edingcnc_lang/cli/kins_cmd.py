@@ -45,12 +45,7 @@ def _switched_on(name: str, ini: str | None) -> Kinematics:
     from ..kinematics.loader import load_kinematics
 
     settings, search_dirs = _settings(Path(ini) if ini else None)
-    kins = load_kinematics(name, settings, search_dirs)
-    from ..kinematics.workbench.isolate import GUARD_VARIABLE, guard_calls
-
-    guard = os.environ.get(GUARD_VARIABLE)
-    if guard and hasattr(kins, "_fn"):  # in the child of _in_child: record each call before it is made
-        guard_calls(kins, guard)
+    kins = guarded(load_kinematics(name, settings, search_dirs))
     rc = kins.control(abi.ON, [0.0] * abi.CONTROL_DATA_LEN)
     if rc != 0:
         raise PluginError(f"kinematics plug-in {name!r}: switching it ON failed (control returned {rc})")
@@ -158,8 +153,15 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
 
 
 def _in_child(command: str, name: str, ini: str | None, values: Pose) -> int | None:
-    """A compiled plug-in is called in a child process, so that a crash in the library is an error
-    naming the call and the pose (exit 70) instead of killing ecnc; None: call it here."""
+    """inverse/forward of a compiled plug-in, in a child process (see in_child_if_compiled)."""
+    return in_child_if_compiled(name, ini, ["kins", command, *(["--ini", ini] if ini else []), "--", name,
+                                            *(repr(v) for v in values)])
+
+
+def in_child_if_compiled(name: str, ini: str | None, argv: list[str]) -> int | None:
+    """Run ``ecnc ARGV`` in a child process when ``name`` is a compiled plug-in, so that a crash in
+    the library is an error naming the call and the pose (exit 70) instead of killing ecnc; its
+    output is passed on and its status returned.  None: not compiled, or already the child."""
     import sys
 
     from ..kinematics.loader import find_plugin_file
@@ -170,11 +172,20 @@ def _in_child(command: str, name: str, ini: str | None, values: Pose) -> int | N
     found = find_plugin_file(name, _settings(Path(ini) if ini else None)[1])
     if found is None or found.suffix.lower() != ".so":
         return None
-    argv = ["kins", command, name, *(["--ini", ini] if ini else []), "--", *(repr(v) for v in values)]
-    status, out, err = run_command_isolated(argv)
+    status, out, err = run_command_isolated(argv, name)
     sys.stdout.write(out)
     sys.stderr.write(err)
     return status
+
+
+def guarded(kins: Kinematics) -> Kinematics:
+    """In the child of in_child_if_compiled, a compiled plug-in's calls are recorded before they are made."""
+    from ..kinematics.workbench.isolate import GUARD_VARIABLE, guard_calls
+
+    guard = os.environ.get(GUARD_VARIABLE)
+    if guard and hasattr(kins, "_fn"):
+        guard_calls(kins, guard)
+    return kins
 
 
 @click.command("build", cls=Command,

@@ -178,7 +178,7 @@ def test_envelope_picture_shows_reach_and_its_edge(tmp_path: Path) -> None:
 
 
 @needs_cc
-def test_kins_inverse_survives_a_crashing_compiled_plugin(built: Path) -> None:
+def test_kins_inverse_and_plot_survive_a_crashing_compiled_plugin(built: Path) -> None:
     """`ecnc kins inverse` calls a compiled plug-in in a child: a crash is exit 70 naming the call and
     the pose, never a dead ecnc (SIGSEGV); a pose that does not crash answers as in-process."""
     from tests.cli_runner import invoke
@@ -186,6 +186,9 @@ def test_kins_inverse_survives_a_crashing_compiled_plugin(built: Path) -> None:
     crashed = invoke("kins", "inverse", str(built / "crash_corner.so"), "100", "100", "-100")
     assert crashed.exit_code == 70 and crashed.stdout == ""
     assert crashed.stderr.endswith("KinematicsInverse crashed the process (SIGSEGV) at X100 Y100 Z-100 A0 B0 C0\n")
+    plotted = invoke("kins", "plot", str(built / "crash_corner.so"), "-o", str(built / "crash.png"),
+                     "--resolution", "12")
+    assert plotted.exit_code == 70 and "KinematicsInverse crashed the process (SIGSEGV) at X" in plotted.stderr
     compared = invoke("kins", "compare", "trivial", str(built / "crash_corner.so"), "--samples", "50")
     assert compared.exit_code == 70 and "(SIGSEGV) at X100 Y100" in compared.stderr
     fine = invoke("kins", "forward", str(built / "rotatekins.so"), "--", "-1", "2", "3")

@@ -57,7 +57,7 @@ def run_isolated(command: str, payload: Mapping[str, Any], fallback: Report, tim
 GUARD_VARIABLE = "_ECNC_KINS_GUARD"  # set in the child of run_command_isolated: the file calls are recorded in
 
 
-def run_command_isolated(argv: list[str]) -> tuple[int, str, str]:
+def run_command_isolated(argv: list[str], plugin: str) -> tuple[int, str, str]:
     """``ecnc ARGV`` in a child process that records the plug-in's calls (``ecnc kins inverse|forward``
     on a compiled plug-in): (exit status, stdout, stderr); a crash in the library is a PluginError
     naming the call and the pose, as ``ecnc kins check`` reports it (K602)."""
@@ -72,7 +72,7 @@ def run_command_isolated(argv: list[str]) -> tuple[int, str, str]:
         finding = _last_call(guard, "K602", f"crashed the process ({signal.Signals(-done.returncode).name})")
     finally:
         os.unlink(guard)
-    raise PluginError(f"kinematics plug-in {argv[2]!r}: {crash_text(finding)}")
+    raise PluginError(f"kinematics plug-in {plugin!r}: {crash_text(finding)}")
 
 
 def crash_text(finding: Finding) -> str:
