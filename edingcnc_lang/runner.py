@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -19,6 +20,7 @@ from .config import MachineConfig, load_config, save_variables
 from .errors import EcncError, Interrupted, Location, MachineError
 from .host import Host
 from .interpreter import Interpreter
+from .interpreter.commands import tools_used
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
@@ -31,7 +33,7 @@ from .planner.estimate import Estimate, Timing
 from .planner.overrides import Overrides
 from .planner.stage import Planner, TimedSink
 from .planner.untimed import Untimed
-from .source import iter_text_lines
+from .source import iter_file_lines, iter_text_lines
 from .stages import STAGES, Pipeline
 from .stages.height_comp import HeightCompensation
 
@@ -209,6 +211,7 @@ class Run:
 
     def execute_file(self, job: Path) -> RunResult:
         checked = check_file(job)
+        self.interpreter.job_tools = cache(lambda: tools_used(iter_file_lines(job)))
         macros = self.load_macros()
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
                              checked.subs, macros)
@@ -217,6 +220,7 @@ class Run:
         reader = StatementReader(iter_text_lines(text), path, check_dialogs=True)
         program = n.Program(path, tuple(reader), reader.unit)
         reader.raise_errors()
+        self.interpreter.job_tools = cache(lambda: tools_used(iter_text_lines(text)))
         macros = self.load_macros()
         return self._execute(lambda: program.body, program.subs, macros)
 

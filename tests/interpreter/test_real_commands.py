@@ -134,6 +134,21 @@ def test_get_job_distance_counts_the_bulk_moves_of_a_job_file(tmp_path: Path) ->
     assert result.variables[101] == pytest.approx(first + 5)
 
 
+def test_get_tool_info_enumerates_the_tools_the_loaded_job_uses(tmp_path: Path) -> None:
+    """As the stock macro.cnc's measure_used_tools: the job's T words, not the tool table's entries."""
+    from edingcnc_lang.interpreter.commands import tools_used
+    from edingcnc_lang.runner import run_file
+
+    macro = tmp_path / "macro.cnc"
+    macro.write_text("Sub used\n  GetToolInfo num 100\n  GetToolInfo first 101\n  GetToolInfo next 102\n"
+                     "  GetToolInfo next 103\nEndSub\nSub change_tool\nEndSub\n")
+    job = tmp_path / "job.nc"
+    job.write_text("GoSub used\nT4 M6 (T9 is the spare)\nG0 X1\nmsg \"T7 next\"\nM6 T2 ; T8\nZHCINIT 10 2 2\nT0\n")
+    result = run_file(job, RunOptions(macro=macro))
+    assert [result.variables[i] for i in (100, 101, 102, 103)] == [2.0, 2.0, 4.0, -1.0]
+    assert tools_used(["t3m6", "G43 H3 T12", "M6 T[#1]", "GetToolInfo first 5"]) == [3, 12]
+
+
 def test_height_control_voltages_read_zero_in_simulation() -> None:
     assert run("#101 = 5\nGetHeightControlVact 101\nGetHeightControlVset 102\n").variables[101] == 0.0
     assert "parameter number" in error_of("GetJobDistance #100\n").message
