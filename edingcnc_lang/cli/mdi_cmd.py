@@ -98,7 +98,7 @@ def _lines(interactive: bool, prompt: object) -> Iterator[str | None]:
 
 def _show(outcome: MdiOutcome) -> None:
     if outcome.value is not None:
-        print(f"= {outcome.value:.10g}")
+        print(f"= {outcome.value + 0.0:.10g}")  # + 0.0: -0 shows as 0
     elif outcome.moved:
         print(f"work    {_pose(outcome.position)}\nmachine {_pose(outcome.machine)}")
     if outcome.ended:

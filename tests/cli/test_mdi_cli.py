@@ -31,6 +31,8 @@ def test_expressions_and_parameters_print_their_value() -> None:
     code, out, _ = mdi("#100 = 2.5\n#100\n[#100 * 2]\nSIN[30] + 1\nG0 X3\n#5001\n")
     assert code == 0
     assert out[:3] == ["= 2.5", "= 5", "= 1.5"] and out[-1] == "= 3"
+    code, out, _ = mdi("-#5001\n[ATAN[1]]\n")
+    assert (code, out) == (0, ["= 0", "= 45"])  # never "-0"
 
 
 def test_an_error_prints_its_message_and_the_session_goes_on() -> None:
