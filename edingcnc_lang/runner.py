@@ -210,7 +210,11 @@ class Run:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
 
     def execute_file(self, job: Path) -> RunResult:
-        checked = check_file(job)
+        try:
+            checked = check_file(job)
+        except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move
+            raise Interrupted("interrupted (Ctrl-C) while checking the job, before its first move",
+                              Location(os.fspath(job))) from None
         self.interpreter.job_tools = cache(lambda: tools_used(iter_file_lines(job)))
         macros = self.load_macros()
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
