@@ -106,7 +106,7 @@ class MdiSession:
 
     def _outcome(self, value: float | None, moved: bool, ended: bool) -> MdiOutcome:
         position = tuple(self._interp.work_position())
-        return MdiOutcome(value, moved, position, tuple(self._interp.machine_frame(self._interp.pos)), ended)  # type: ignore[arg-type]
+        return MdiOutcome(value, moved, position, self._run.machine_position(), ended)  # type: ignore[arg-type]
 
     def _flush(self) -> None:
         self._run.pipeline.flush()

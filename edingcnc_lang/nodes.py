@@ -288,6 +288,7 @@ class BadLine:
     message: str
     col: int
     span: Span = field(default=NO_SPAN, compare=False)
+    source: str = field(default="", compare=False)  # the line, so the error shows it as the warning did
 
 
 Stmt = Union[Block, PlainBlock, PlainRun, Message, Dialog, LogFile, Home, Switch, Kin, PrepareLinDeltaHome,

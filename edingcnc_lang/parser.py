@@ -379,8 +379,8 @@ class StatementReader:
             if isinstance(result, Close) and result.kind != "Else":
                 self._skipped -= 1
             return
-        if self.check_dialogs and isinstance(result, n.Dialog):
-            self._check_dialog(result, text)
+        if isinstance(result, n.Dialog) and (self.check_dialogs or self.tolerant):
+            result = self._check_dialog(result, text)
         if isinstance(result, Open):
             if result.kind == "Sub" and stack and not self._skipped:
                 self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
@@ -403,7 +403,7 @@ class StatementReader:
         if self.tolerant:
             self.warnings.append(replace(Diagnostic.make(err.code, err.message, path, lineno, err.col, text),
                                          severity=Severity.WARNING))
-            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1))
+            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1), text)
             if opener is None and stack:
                 stack[-1].add(bad)
             elif opener is None:
@@ -415,16 +415,25 @@ class StatementReader:
             head = Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0))
             self._push(stack, head, text)
             if self.tolerant and stack and stack[-1].opener is head:  # reaching the head is the error
-                stack[-1].add(n.BadLine(err.code, err.message, err.col, span))
+                stack[-1].add(n.BadLine(err.code, err.message, err.col, span, text))
 
-    def _check_dialog(self, dialog: n.Dialog, text: str) -> None:
-        """Report the dlgmsg shapes the controller refuses when it reads the line (G1167)."""
+    def _check_dialog(self, dialog: n.Dialog, text: str) -> n.Stmt:
+        """Report the dlgmsg shapes the controller refuses when it reads the line (G1167); a tolerant
+        read warns and keeps the line as a BadLine, an error only if a run reaches it."""
+        bad: n.Stmt = dialog
         for problem in dialog_fields(dialog)[1]:
             if problem.code in SYNTAX_CODES:
                 item = problem.item
                 col = (text.find(f'"{item}"') + 1 or dialog.span.col) if isinstance(item, str) \
                     else (item.span.col if item is not None else dialog.span.col)
-                self._error(problem.code, problem.message, dialog.span.line, col, text)
+                if not self.tolerant:
+                    self._error(problem.code, problem.message, dialog.span.line, col, text)
+                    continue
+                self.warnings.append(replace(Diagnostic.make(problem.code, problem.message, self.path,
+                                                             dialog.span.line, col, text), severity=Severity.WARNING))
+                if bad is dialog:
+                    bad = n.BadLine(problem.code, problem.message, col, dialog.span, text)
+        return bad
 
     def _push(self, stack: list[_Frame], opener: Open, text: str) -> None:
         """Open a block; one nested deeper than MAX_BLOCK_DEPTH is reported and skipped to its end."""
@@ -501,10 +510,11 @@ class StatementReader:
 # --------------------------------------------------------------------------- whole files
 
 def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
-                    non_plain: Sequence[int] | None = None, tolerant: bool = False) -> StatementReader:
+                    non_plain: Sequence[int] | None = None, tolerant: bool = False,
+                    check_dialogs: bool | None = None) -> StatementReader:
     """A streaming reader over a file (statements are parsed as you iterate); see StatementReader."""
     return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain,
-                           tolerant=tolerant)
+                           tolerant=tolerant, check_dialogs=check_dialogs)
 
 
 @dataclass(frozen=True)
@@ -531,9 +541,10 @@ def parse_text(text: str, path: str = "<string>") -> n.Program:
     return _collect(StatementReader(iter_text_lines(text), path))
 
 
-def parse_file(path: str | os.PathLike[str]) -> n.Program:
-    """Parse a whole file; raises SyntaxErrors listing every error found."""
-    return _collect(read_statements(path))
+def parse_file(path: str | os.PathLike[str], *, check_dialogs: bool = False) -> n.Program:
+    """Parse a whole file; raises SyntaxErrors listing every error found (with ``check_dialogs``
+    also the dlgmsg shapes the controller refuses, G1167)."""
+    return _collect(read_statements(path, check_dialogs=check_dialogs))
 
 
 def _collect(reader: StatementReader) -> n.Program:

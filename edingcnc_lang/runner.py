@@ -10,6 +10,7 @@ import os
 from itertools import islice
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +21,7 @@ from .config import MachineConfig, load_config, save_variables
 from .errors import EcncError, Interrupted, Location, MachineError, MoveError
 from .host import Host
 from .interpreter import Interpreter
+from .interpreter.commands import tools_used
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
@@ -34,6 +36,7 @@ from .planner.stage import Planner, TimedSink
 from .planner.untimed import Untimed
 from .source import iter_file_lines, iter_text_lines
 from .stages import STAGES, Pipeline
+from .stages.height_comp import HeightCompensation
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
@@ -182,7 +185,7 @@ class Run:
         """A macro file as the controller loads it: lines that do not parse wait (as BadLine) until
         a run reaches them, each reported once as a warning; ``strict`` makes them errors here."""
         if self.options.strict:
-            return parse_file(path)
+            return parse_file(path, check_dialogs=True)
         reader = read_statements(path, tolerant=True)
         body = tuple(reader)
         reader.raise_errors()  # block structure (Sub/EndSub, If/EndIf) must still be right
@@ -209,7 +212,12 @@ class Run:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
 
     def execute_file(self, job: Path) -> RunResult:
-        checked = check_file(job)
+        try:
+            checked = check_file(job)
+        except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move
+            raise Interrupted("interrupted (Ctrl-C) while checking the job, before its first move",
+                              Location(os.fspath(job))) from None
+        self.interpreter.job_tools = cache(lambda: tools_used(iter_file_lines(job)))
         macros = self.load_macros()
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
                              checked.subs, macros)
@@ -219,6 +227,7 @@ class Run:
         reader = StatementReader(iter_text_lines(text), path, check_dialogs=True)
         program = n.Program(path, tuple(reader), reader.unit)
         reader.raise_errors()
+        self.interpreter.job_tools = cache(lambda: tools_used(iter_text_lines(text)))
         macros = self.load_macros()
         return self._execute(lambda: program.body, program.subs, macros)
 
@@ -272,6 +281,13 @@ class Run:
             return error or _write_error(err, self._outputs)
         return error
 
+    def machine_position(self) -> tuple[float, ...]:
+        """Where the machine is: the programmed pose through G68 and G51, plus the Z that height
+        compensation added at the end of the last move (ZHC follows the surface in machine Z)."""
+        machine = list(self.interpreter.machine_frame(self.interpreter.pos))
+        machine[2] += sum(stage.applied for stage in self.pipeline.stages if isinstance(stage, HeightCompensation))
+        return tuple(machine)
+
     def result(self, error: EcncError | None = None) -> RunResult:
         interp = self.interpreter
         motion = interp.modal["motion"]
@@ -281,7 +297,7 @@ class Run:
         kin = self.kinematics
         return RunResult(
             position=tuple(interp.reported_position()),  # type: ignore[arg-type]
-            machine=interp.machine_frame(interp.pos),  # type: ignore[arg-type]
+            machine=self.machine_position(),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
             messages=list(interp.messages),

@@ -149,7 +149,7 @@ def usage_message(err: click.UsageError) -> str:
     suggestions: list[str] = []
     if isinstance(err, click.NoSuchOption):
         message = f"unrecognized arguments: {err.option_name}"
-        suggestions = list(err.possibilities or [])
+        suggestions = _completions_of(err) or list(err.possibilities or [])
     elif isinstance(err, UnknownCommand):
         message, suggestions = err.message, err.possibilities
     elif isinstance(err, click.MissingParameter):
@@ -162,6 +162,16 @@ def usage_message(err: click.UsageError) -> str:
     if suggestions:
         message += f" (did you mean {' or '.join(suggestions)}?)"
     return message
+
+
+def _completions_of(err: click.NoSuchOption) -> list[str]:
+    """The long options that ``--no`` abbreviates: abbreviations are refused, so name them in full."""
+    name, ctx = err.option_name, err.ctx
+    if ctx is None or not name.startswith("--") or "=" in name:
+        return []
+    longs = {opt for param in ctx.command.get_params(ctx) for opt in (*param.opts, *param.secondary_opts)
+             if opt.startswith(name) and opt != name}
+    return sorted(longs)[:4]
 
 
 def show_usage_error(err: click.UsageError) -> None:

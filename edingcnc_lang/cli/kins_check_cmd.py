@@ -13,8 +13,9 @@ import click
 
 from ..errors import EXIT_FINDINGS, EXIT_OK
 from .base import Command, usage_error
+from .kins_cmd import guarded, in_child_if_compiled
 from .options import ini_option, json_option
-from .params import OUTPUT_FILE, POSITIVE_INT
+from .params import KINEMATICS_NAME, OUTPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
     from ..kinematics.workbench import CheckOptions
@@ -54,6 +55,14 @@ def _options(ini: str | None, box: str | None, seed: int, samples: int, toleranc
     return CheckOptions(ini=ini, box=values, seed=seed, samples=samples, tolerance=tolerance, **extra)
 
 
+def _workspace_argv(ini: str | None, box: str | None, seed: int, samples: int, tolerance: float | None) -> list[str]:
+    """The workspace options again, for the same command in a child process."""
+    argv = ["--seed", str(seed), "--samples", str(samples)]
+    argv += ["--ini", ini] if ini else []
+    argv += [f"--box={box}"] if box is not None else []
+    return argv + ([f"--tolerance={tolerance!r}"] if tolerance is not None else [])
+
+
 def _print_json(data: object) -> None:
     import json
 
@@ -63,7 +72,7 @@ def _print_json(data: object) -> None:
 @click.command("check", cls=Command, help=f"Prove a plug-in over a workspace: round trip, continuity, "
                f"singularities, domain, control and state, the compiled ABI and speed.\n\n{PLUGIN_HELP}",
                short_help="Prove a plug-in: round trip, continuity, singularities, domain, state, speed.")
-@click.argument("plugin", metavar="PLUGIN")
+@click.argument("plugin", metavar="PLUGIN", type=KINEMATICS_NAME)
 @_workspace_options
 @click.option("--no-speed", is_flag=True, help="Leave out the speed measurement (a faster check).")
 @json_option("Print the report as JSON.")
@@ -78,8 +87,8 @@ def check(plugin: str, no_speed: bool, as_json: bool, **workspace: Any) -> int:
 @click.command("compare", cls=Command, help=f"Run two plug-ins on the same seeded poses (e.g. a C port and the "
                f"Python it came from): the largest difference per joint and axis, and where.\n\n{PLUGIN_HELP}",
                short_help="Two plug-ins on the same poses: the largest difference per joint, and where.")
-@click.argument("a", metavar="A")
-@click.argument("b", metavar="B")
+@click.argument("a", metavar="A", type=KINEMATICS_NAME)
+@click.argument("b", metavar="B", type=KINEMATICS_NAME)
 @_workspace_options
 @json_option("Print the comparison as JSON.")
 def compare(a: str, b: str, as_json: bool, **workspace: Any) -> int:
@@ -93,7 +102,7 @@ def compare(a: str, b: str, as_json: bool, **workspace: Any) -> int:
 @click.command("plot", cls=Command, help=f"Draw the reachable workspace and the Jacobian's condition number in "
                f"three slices through the centre (needs the plot extra).\n\n{PLUGIN_HELP}",
                short_help="Picture the reachable workspace and its singular regions (PNG, SVG, PDF).")
-@click.argument("plugin", metavar="PLUGIN")
+@click.argument("plugin", metavar="PLUGIN", type=KINEMATICS_NAME)
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE, required=True,
               help="Picture to write: .png, .svg or .pdf.")
 @click.option("--resolution", type=POSITIVE_INT, default=60, show_default=True, help="Grid points per side.")
@@ -108,8 +117,12 @@ def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
 
     fmt = picture_format(Path(output))  # before the workspace is searched
     options = _options(**workspace)
+    isolated = in_child_if_compiled(plugin, options.ini, [
+        "kins", "plot", "-o", output, "--resolution", str(resolution), *_workspace_argv(**workspace), "--", plugin])
+    if isolated is not None:
+        return isolated
     machine = workbench.read_machine(options.ini)
-    kins = workbench.load_plugin(plugin, machine)
+    kins = guarded(workbench.load_plugin(plugin, machine))
     space = workbench.workspace_for(kins, options, machine)
     workbench.plug.switch_on(kins, space.centre)
     print(plot_envelope(kins, space, Path(output), plugin, resolution=resolution, fmt=fmt))

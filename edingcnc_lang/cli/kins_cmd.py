@@ -45,7 +45,7 @@ def _switched_on(name: str, ini: str | None) -> Kinematics:
     from ..kinematics.loader import load_kinematics
 
     settings, search_dirs = _settings(Path(ini) if ini else None)
-    kins = load_kinematics(name, settings, search_dirs)
+    kins = guarded(load_kinematics(name, settings, search_dirs))
     rc = kins.control(abi.ON, [0.0] * abi.CONTROL_DATA_LEN)
     if rc != 0:
         raise PluginError(f"kinematics plug-in {name!r}: switching it ON failed (control returned {rc})")
@@ -133,6 +133,9 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
+    isolated = _in_child("inverse", name, ini, pos)
+    if isolated is not None:
+        return isolated
     _print_pose(_switched_on(name, ini).inverse(pos), JOINTS, name, "inverse")
     return EXIT_OK
 
@@ -142,8 +145,47 @@ def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
     from ..kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
+    isolated = _in_child("forward", name, ini, joints)
+    if isolated is not None:
+        return isolated
     _print_pose(_switched_on(name, ini).forward(joints), AXES, name, "forward")
     return EXIT_OK
+
+
+def _in_child(command: str, name: str, ini: str | None, values: Pose) -> int | None:
+    """inverse/forward of a compiled plug-in, in a child process (see in_child_if_compiled)."""
+    return in_child_if_compiled(name, ini, ["kins", command, *(["--ini", ini] if ini else []), "--", name,
+                                            *(repr(v) for v in values)])
+
+
+def in_child_if_compiled(name: str, ini: str | None, argv: list[str]) -> int | None:
+    """Run ``ecnc ARGV`` in a child process when ``name`` is a compiled plug-in, so that a crash in
+    the library is an error naming the call and the pose (exit 70) instead of killing ecnc; its
+    output is passed on and its status returned.  None: not compiled, or already the child."""
+    import sys
+
+    from ..kinematics.loader import find_plugin_file
+    from ..kinematics.workbench.isolate import GUARD_VARIABLE, run_command_isolated
+
+    if GUARD_VARIABLE in os.environ:  # this is the child
+        return None
+    found = find_plugin_file(name, _settings(Path(ini) if ini else None)[1])
+    if found is None or found.suffix.lower() != ".so":
+        return None
+    status, out, err = run_command_isolated(argv, name)
+    sys.stdout.write(out)
+    sys.stderr.write(err)
+    return status
+
+
+def guarded(kins: Kinematics) -> Kinematics:
+    """In the child of in_child_if_compiled, a compiled plug-in's calls are recorded before they are made."""
+    from ..kinematics.workbench.isolate import GUARD_VARIABLE, guard_calls
+
+    guard = os.environ.get(GUARD_VARIABLE)
+    if guard and hasattr(kins, "_fn"):
+        guard_calls(kins, guard)
+    return kins
 
 
 @click.command("build", cls=Command,

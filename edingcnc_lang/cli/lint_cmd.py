@@ -66,7 +66,7 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
     if not paths and not ini:
         raise usage_error("give at least one file or folder to lint")
     options = LintOptions(macro, user_macro, ini, select, ignore, target)
-    show = progress.wanted(quiet)
+    show = progress.wanted(quiet or fmt != "text")  # json, sarif, github: output for programs, kept clean
     count = len(expand(p for p in paths if p != STDIN)) if show else 0
     with whole_trees(), progress.Progress(lambda: (0, 0, f"checking {count:,} files"), show):
         findings = (_lint_with_stdin(paths, options) if STDIN in paths

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_OK, EcncError
+from ..errors import EXIT_OK, EcncError, JobAborted
 from .base import Command
 from .options import MachineOptions, machine_options
 from .style import styled
@@ -65,7 +65,8 @@ def mdi(machine: MachineOptions) -> int:
         try:
             _show(session.execute(text))
         except EcncError as err:
-            print(styled(err.format(), sys.stderr), file=sys.stderr)
+            if not isinstance(err, JobAborted):  # an errmsg text was shown as it ran
+                print(styled(err.format(), sys.stderr), file=sys.stderr)
             status = status or err.exit_code
         except KeyboardInterrupt:
             print(styled(session.interrupted().format(), sys.stderr), file=sys.stderr)
@@ -97,7 +98,7 @@ def _lines(interactive: bool, prompt: object) -> Iterator[str | None]:
 
 def _show(outcome: MdiOutcome) -> None:
     if outcome.value is not None:
-        print(f"= {outcome.value:.10g}")
+        print(f"= {outcome.value + 0.0:.10g}")  # + 0.0: -0 shows as 0
     elif outcome.moved:
         print(f"work    {_pose(outcome.position)}\nmachine {_pose(outcome.machine)}")
     if outcome.ended:

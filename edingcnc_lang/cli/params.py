@@ -149,10 +149,12 @@ class PositiveInt(click.ParamType):
         return number
 
 
-def _codes_starting(text: str) -> list[str]:
-    from ..codes import CODES
+def _codes_starting(text: str, kins: bool = False) -> list[str]:
+    """Lint codes (and with ``kins`` the ``ecnc kins check`` codes) that start with ``text``."""
+    from ..codes import CODES, KINS_CODES
 
-    return [code for code in CODES if code.startswith(text.upper())]
+    codes = [*CODES, *KINS_CODES] if kins else CODES
+    return [code for code in codes if code.startswith(text.upper())]
 
 
 class LintCodes(click.ParamType):
@@ -195,7 +197,8 @@ class HelpTopic(LintCode):
             group = group.get_command(ctx, word) if isinstance(group, click.Group) else None
         commands = group.list_commands(ctx) if isinstance(group, click.Group) else []
         found = [CompletionItem(name) for name in commands if name.startswith(incomplete)]
-        return found + (super().shell_complete(ctx, param, incomplete) if group is ctx.find_root().command else [])
+        codes = _codes_starting(incomplete, kins=True) if group is ctx.find_root().command else []
+        return found + [CompletionItem(code) for code in codes]
 
 
 class KinematicsName(click.ParamType):

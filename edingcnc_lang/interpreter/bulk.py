@@ -1,6 +1,7 @@
 """The bulk path: runs of plain G0/G1 lines executed without building nodes."""
 from __future__ import annotations
 
+import math
 import re
 
 from .. import nodes as n
@@ -131,12 +132,14 @@ class BulkPath(MachineState):
             except EcncError as err:  # a move was refused: the state is that of the move before it
                 failed = next((k for k, item in enumerate(batch)
                                if err.location is not None and item[1] == err.location.line), 0)
+                self.job_distance += _travelled(self.pos, batch[:failed])
                 if failed:
                     self.pos = list(batch[failed - 1][2])
                 self.feed = feeds[failed]
                 self.modal["motion"] = G_1 if batch[failed][0] == "linear" else G_0
                 self.line = batch[failed][1]
                 raise
+            self.job_distance += _travelled(self.pos, batch)
         self.pos = list(pos)
         self.feed = feed
         if motion is not None:
@@ -170,3 +173,9 @@ class BulkPath(MachineState):
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).
 STATEMENTS = {n.PlainRun: "_exec_plain_run"}
+
+
+def _travelled(start: list[float], batch: list[tuple[str, int, tuple[float, ...], float]]) -> float:
+    """The XYZ length of a batch of straight moves from ``start`` (GetJobDistance counts it)."""
+    points = [start[:3], *(end[:3] for _kind, _line, end, _feed in batch)]
+    return sum(map(math.dist, points, points[1:]))

@@ -104,6 +104,8 @@ class CannedCycles(MachineState):
     def _cycle_steps(self, steps: list[Step], hole: list[float], normal: int, feed: float) -> None:
         at = list(hole)  # where the tool is across the hole: its centre, or shifted past the bar (G87)
         at[normal] = self.work_position()[normal]
+        programmed = self.spindle  # what "spindle_start" turns back to
+        switched = {"spindle_stop": 5, "spindle_start": programmed, "spindle_reverse": 3 if programmed == 4 else 4}
         for step in steps:
             if step.kind in ("rapid", "feed"):
                 self._cycle_move(step.kind, at, normal, step.level, feed)
@@ -112,12 +114,10 @@ class CannedCycles(MachineState):
                 for axis, offset in self.cycle_shift.items():
                     at[axis] = hole[axis] + (offset if step.kind == "shift" else 0.0)
                 self._move("rapid", self.to_machine(at))
-            elif step.kind == "spindle_reverse":
-                self.canon.event(Event("spindle", self.path, self.line,
-                                       {"m": 3 if self.spindle == 4 else 4, "speed": self.speed}))
             elif step.kind == "dwell":
                 self.canon.event(Event("dwell", self.path, self.line, {"seconds": step.level}))
-            else:
-                self.canon.event(Event("spindle", self.path, self.line,
-                                       {"m": 5 if step.kind == "spindle_stop" else self.spindle,
-                                        "speed": self.speed}))
+            else:  # the spindle stops, starts or reverses: the moves after it carry its new speed
+                self.spindle = switched[step.kind]
+                on = self.spindle != 5
+                self.canon.event(Event("spindle", self.path, self.line, {
+                    "m": self.spindle, "speed": self.speed, "rpm": self.rpm_at(self.pos[0]) if on else 0.0}))

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 from .. import nodes as n
 from .. import tables as t
@@ -11,6 +12,19 @@ from . import height_comp
 from .state import MachineState
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
+_NOT_CODE = re.compile(r'\([^)]*\)?|"[^"]*"?|;.*')  # comments and message texts
+_T_WORD = re.compile(r"(?<![A-Za-z_#])[Tt][ \t]*\+?(\d+)")
+
+
+def tools_used(lines: Iterable[str]) -> list[int]:
+    """The tool numbers a job's T words name (literal ones, T0 = no tool left out), in order: what
+    ``GetToolInfo`` enumerates, as the controller scans the loaded G-code (the stock macro.cnc's
+    ``measure_used_tools``)."""
+    found: set[int] = set()
+    for line in lines:
+        found.update(int(number) for number in _T_WORD.findall(_NOT_CODE.sub(" ", line)))
+    found.discard(0)
+    return sorted(found)
 
 
 class Commands(MachineState):
@@ -73,7 +87,7 @@ class Commands(MachineState):
         if len(parts) != 2 or parts[0].lower() not in ("first", "next", "num") or not parts[1].isdigit():
             raise self.fail("GetToolInfo expects first|next|num and a parameter number, e.g. "
                             "GetToolInfo first 100", stmt.span)
-        tools = sorted(k for k, tool in self.config.tools.items() if tool.length or tool.diameter)
+        tools = self.job_tools()
         kind, index = parts[0].lower(), param_index(float(parts[1]), stmt.span)
         if kind == "num":
             value = float(len(tools))

@@ -77,7 +77,7 @@ class ControlFlow(MachineState):
     def _exec_bad_line(self, stmt: n.BadLine) -> None:
         """A macro-file line that does not parse, reached: the syntax error it was warned about (exit 65)."""
         span = stmt.span
-        raise SyntaxErrors([Diagnostic.make(stmt.code, stmt.message, span.path, span.line, stmt.col)])
+        raise SyntaxErrors([Diagnostic.make(stmt.code, stmt.message, span.path, span.line, stmt.col, stmt.source)])
 
     def _exec_sub(self, stmt: n.Sub) -> None:
         raise self.fail(f"Sub {stmt.name} is defined inside a block; subs must be at the top level", stmt.span)

@@ -190,7 +190,7 @@ class CoordinateSystems(MachineState):
                 length = None if length is None else length * self.scale
                 x_offset = None if x_offset is None else x_offset * self.scale
             else:  # from the current position: what makes it read Z (X) in the active system (L10) or G59.3 (L11)
-                length, x_offset = self._tool_from_position(level, words)
+                length, x_offset = self._tool_from_position(level, tool, words)
             if length is not None:
                 self.params.set(t.TOOL_LENGTH + tool, length)
             if x_offset is not None and self.config.lathe:
@@ -214,16 +214,21 @@ class CoordinateSystems(MachineState):
         for axis, number in axes.items():
             self.params.set(t.coord_offset_param(system, axis), number)
 
-    def _tool_from_position(self, level: int, words: Mapping[str, float]) -> tuple[float | None, float | None]:
+    def _tool_from_position(self, level: int, tool: int,
+                            words: Mapping[str, float]) -> tuple[float | None, float | None]:
         """G10 L10/L11: the tool length (and lathe X offset) with which the current position reads the
-        programmed Z (X): in the active coordinate system with G92 (L10), or in G59.3 without it (L11)."""
+        programmed Z (X): in the active coordinate system with G92 (L10), or in G59.3 without it (L11).
+        G43 adds the tool's wear (zDelta, xDelta) to what is set here, so it is left out of it; in
+        diameter mode X is a diameter, as in a move."""
         offsets = self.offset()
         if level == 10:
             base_x, base_z = offsets[0] - self.tool_x, offsets[2] - self.tool_z
         else:
             base_x, base_z = (self.params.read(t.coord_offset_param(9, axis)) for axis in (0, 2))
-        length = self.pos[2] - base_z - words["Z"] * self.scale if "Z" in words else None
-        x_offset = self.pos[0] - base_x - words["X"] * self.scale if "X" in words else None
+        wear_x, wear_z = (self.params.read(base + tool) for base in (t.TOOL_X_WEAR, t.TOOL_Z_WEAR))
+        wanted = self._axis_values(words)  # X a radius also in diameter mode
+        length = self.pos[2] - base_z - wanted[2] - wear_z if 2 in wanted else None
+        x_offset = self.pos[0] - base_x - wanted[0] - wear_x if 0 in wanted else None
         return length, x_offset
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:

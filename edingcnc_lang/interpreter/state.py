@@ -8,7 +8,7 @@ line steps, offsets, motion, ...) are mixins on top of it, assembled in ``machin
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, ClassVar
@@ -201,6 +201,9 @@ class MachineState:
         self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
+        # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
+        # the runner sets it, an MDI session has no loaded job.
+        self.job_tools: Callable[[], Sequence[int]] = tuple
         self.ended_by = "end of file"
         self.messages: list[Event] = []
         self.path = "<string>"

@@ -54,7 +54,7 @@ COMMANDS: tuple[Row, ...] = (
     ("GetHeightControlVset", "torch height control: set voltage", "N", "Writes the set arc voltage into #N (0 in simulation)."),
     ("Service", "service command", "cmd", "Service functions of the controller (oil pump, counters); reported as an event by ecnc."),
     ("LaserEngrave", "laser engraving mode", "on|off", ""),
-    ("GetToolInfo", "enumerate the tool table", "num|first|next N", "Writes into #N (-1 after the last tool); num counts the tools."),
+    ("GetToolInfo", "enumerate the tools the loaded job uses", "num|first|next N", "Writes into #N (-1 after the last tool); num counts the tools."),
     ("GetJobDistance", "job distance", "N", "Writes the job's path length into #N."),
     ("modbus", "Modbus transfer", "s.. f.. a.. ...", "Accepted and reported as an event by ecnc."),
     ("Exec", "run an external program", "command", "ecnc never runs it unless explicitly allowed."),

@@ -57,7 +57,7 @@ def resolve(given: str | None, paths: Sequence[str | os.PathLike[str]], ini: str
     if ini:
         version = read_ini(ini).get("SYSTEM", "version")
         if version is not None and version.text.strip():
-            return normalise(version.text, Location(os.fspath(ini)))
+            return normalise(version.text, Location(os.fspath(ini), version.line))
     return NEWEST
 
 

@@ -223,6 +223,9 @@ def test_exit_status_of_the_programs(program: list[str], tmp_path: Path) -> None
     (["rn"], "ecnc: error: unknown command 'rn' (did you mean run?)"),
     (["kins", "inverce"], "ecnc kins: error: unknown command 'inverce' (did you mean inverse?)"),
     (["run", "{job}", "--jsn"], "ecnc run: error: unrecognized arguments: --jsn (did you mean --json"),
+    # an abbreviation is refused, and answered with the options it would abbreviate
+    (["run", "{job}", "--no"], "ecnc run: error: unrecognized arguments: --no (did you mean --no-simulation?)"),
+    (["run", "{job}", "--jso"], "ecnc run: error: unrecognized arguments: --jso (did you mean --json?)"),
 ])
 def test_a_mistyped_command_or_option_gets_a_suggestion(args: list[str], message: str, job: Path) -> None:
     result = invoke(*(a.format(job=job) for a in args))

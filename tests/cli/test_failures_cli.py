@@ -79,6 +79,20 @@ def test_ctrl_c_in_a_run_names_the_line(tmp_path: Path, monkeypatch: pytest.Monk
     assert (result.exit_code, result.stderr) == (130, f"{job}:3: error: interrupted (Ctrl-C)\n")
 
 
+def test_ctrl_c_while_the_job_is_checked_names_the_job(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A long job is read through before its first move: Ctrl-C then says so, naming the job."""
+    def interrupted(*_args: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(edingcnc_lang.runner, "check_file", interrupted)
+    job = write(tmp_path, "job.nc", "G0 X1\n")
+    result = invoke("run", job)
+    assert (result.exit_code, result.stderr) == (
+        130, f"{job}: error: interrupted (Ctrl-C) while checking the job, before its first move\n")
+    error = json.loads(invoke("run", "--json", job).stdout)["error"]
+    assert (error["kind"], error["file"]) == ("interrupted", str(job))
+
+
 def test_a_real_sigint_ends_a_long_run_with_130(tmp_path: Path) -> None:
     job = write(tmp_path, "loop.nc", "#1 = 0\nWhile [1]\n  #1 = [#1 + 1]\nEndWhile\n")
     process = subprocess.Popen([*ECNC, "run", str(job), "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)

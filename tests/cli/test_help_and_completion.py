@@ -66,6 +66,14 @@ def test_completion_of_commands_options_codes_and_kinematics() -> None:
     assert "V302" in complete("ecnc help V3")
 
 
+def test_completion_of_the_workbench_plugins_and_codes() -> None:
+    """kins check/compare/plot take PLUGIN like inverse does; help completes the K codes too."""
+    assert {"trivial", "rotatekins", "deltakins"} <= set(complete("ecnc kins check "))
+    assert complete("ecnc kins compare rotatekins cor") == ["corexy"]
+    assert complete("ecnc kins plot delt") == ["deltakins"]
+    assert "K101" in complete("ecnc help K1")
+
+
 def test_completion_of_ini_files(tmp_path: Path) -> None:
     for name in ("cnc.ini", "OTHER.INI", "job.nc"):
         (tmp_path / name).write_text("")

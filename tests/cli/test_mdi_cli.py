@@ -31,6 +31,8 @@ def test_expressions_and_parameters_print_their_value() -> None:
     code, out, _ = mdi("#100 = 2.5\n#100\n[#100 * 2]\nSIN[30] + 1\nG0 X3\n#5001\n")
     assert code == 0
     assert out[:3] == ["= 2.5", "= 5", "= 1.5"] and out[-1] == "= 3"
+    code, out, _ = mdi("-#5001\n[ATAN[1]]\n")
+    assert (code, out) == (0, ["= 0", "= 45"])  # never "-0"
 
 
 def test_an_error_prints_its_message_and_the_session_goes_on() -> None:
@@ -39,6 +41,13 @@ def test_an_error_prints_its_message_and_the_session_goes_on() -> None:
     assert err.splitlines()[0].startswith("<mdi>:2:") and "division by zero" in err
     assert "<mdi>:3:5: error: unclosed '['" in err
     assert out[-2] == "work    X2.0000 Y0.0000 Z0.0000 A0.0000 B0.0000 C0.0000"
+
+
+def test_an_errmsg_is_printed_once_and_the_session_goes_on() -> None:
+    code, out, err = mdi('errmsg "spindle not ready " 3\nG0 X2\n')
+    assert code == 70
+    assert err.splitlines() == ["<mdi>:1: error: spindle not ready 3"]
+    assert out[0] == "work    X2.0000 Y0.0000 Z0.0000 A0.0000 B0.0000 C0.0000"
 
 
 def test_blocks_are_read_until_closed_and_subs_can_be_called(tmp_path: Path) -> None:

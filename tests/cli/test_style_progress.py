@@ -58,3 +58,16 @@ def test_progress_is_only_for_a_terminal(monkeypatch: pytest.MonkeyPatch) -> Non
     assert not progress.wanted(False)
     monkeypatch.setattr("sys.stderr", Terminal())
     assert progress.wanted(False) and not progress.wanted(True)
+
+
+def test_lint_shows_no_progress_with_a_format_for_programs(monkeypatch: pytest.MonkeyPatch, tmp_path) -> None:
+    """--format json, sarif or github is read by programs: like run's --json, no progress line."""
+    from tests.cli_runner import invoke
+
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X1\n")
+    asked: list[bool] = []
+    monkeypatch.setattr(progress, "wanted", lambda quiet: asked.append(quiet) or False)
+    for fmt in ("text", "json", "sarif", "github"):
+        assert invoke("lint", "--format", fmt, job).exit_code == 0
+    assert asked == [False, True, True, True]

@@ -3,7 +3,8 @@
 The files (``files/``) mix what real macro files contain: CRLF and Latin-1, prose lines that were
 never commented out (between subs and in a block that is never reached), ``%d`` in messages,
 one-operand ATAN in a probing routine, a ZHC grid sub, ``G53 G38.2``, ``ZHCcheck``, spindle
-selection, THC readouts and the rotary clamp.  Loading warns about the prose lines only; every
+selection, THC readouts and the rotary clamp; the stock macro.cnc's tool setter shape (GetToolInfo
+over the job's tools, ``#[5400 + n]`` writes, ``m6t[#5011]``, bare ``f30`` lines).  Loading warns about the prose lines only; every
 sub then runs to its end.  The probe touches a tilted board (Z) and a slightly skewed wall (Y).
 """
 from __future__ import annotations
@@ -39,6 +40,9 @@ CORPUS = {
     "shared_macro.cnc": [],
     "conversational_addon.cnc": [4, 5, 6, 27, 28, 29],
     "user_macro.cnc": [],
+    "bzt_macro.cnc": [112, 113, 114],
+    "shop_macro.cnc": [],
+    "toolsetter_macro.cnc": [],
 }
 
 
@@ -94,3 +98,37 @@ def test_the_unreached_prose_stops_the_run_when_it_is_reached(tmp_path: Path) ->
     with pytest.raises(SyntaxErrors) as info:
         run_string("#4699 = 1\nGoSub notes\n", RunOptions(macro=FILES / "conversational_addon.cnc"))
     assert info.value.diagnostics[0].line == 27 and info.value.exit_code == 65
+
+
+def test_the_crlf_latin1_prose_is_the_same_message_at_load_and_when_reached(tmp_path: Path) -> None:
+    """bzt_macro.cnc: CRLF, Latin-1 accents, and a retired sub whose note was never commented out."""
+    from edingcnc_lang.diagnostics import SyntaxErrors
+
+    loaded = run_string("M30\n", RunOptions(macro=FILES / "bzt_macro.cnc", log_dir=tmp_path))
+    with pytest.raises(SyntaxErrors) as info:
+        run_string("#4005 = 99\nGoSub user_9\n", RunOptions(macro=FILES / "bzt_macro.cnc", log_dir=tmp_path))
+    assert info.value.exit_code == 65
+    assert info.value.diagnostics[0].format() == loaded.warnings[0].format().replace("warning:", "error:")
+    assert "Werkzeuglänge" in loaded.warnings[0].format()  # the Latin-1 line, decoded
+
+
+def test_the_translated_vendor_style_measures_its_angle_both_ways(tmp_path: Path) -> None:
+    """shop_macro.cnc: lower-case keywords, msg"..." without a space, g4p0.2, #5015..#5025 as scratch."""
+    result = run_sub(FILES / "shop_macro.cnc", "zero_set_rotation", tmp_path)
+    assert result.variables[5024] == pytest.approx(math.degrees(math.atan2(3, 100)))
+    assert result.variables[5025] == pytest.approx(result.variables[5024])
+    assert result.variables[5196] == pytest.approx(result.variables[5024])
+
+
+def test_the_toolsetter_measures_the_tools_the_job_uses(tmp_path: Path) -> None:
+    """toolsetter_macro.cnc (the stock macro.cnc's shape): GetToolInfo walks the job's T words, the
+    dialog ticks them, and each ticked tool is measured and stored with #[5400 + n]."""
+    from edingcnc_lang.runner import run_file
+
+    job = tmp_path / "job.nc"
+    job.write_text("GoSub measure_used_tools\nT1 M6\nG0 X1\nT3 M6\nG0 X2\nM30\n")
+    result = run_file(job, RunOptions(macro=FILES / "toolsetter_macro.cnc", host=Host(probe=touch), log_dir=tmp_path))
+    assert result.ended_by == "M30", result.error
+    assert result.variables[5025] == 3.0  # the last tool measured
+    assert [result.variables[5030 + n] for n in (1, 2, 3)] == [1.0, 0.0, 1.0]
+    assert {1, 3} <= {int(k) - 5400 for k in result.variables if 5401 <= int(k) <= 5499}

@@ -106,9 +106,47 @@ def test_m90_to_m93_select_the_spindle_in_5390(m: int, value: float) -> None:
     assert run(f"M{m}\n").variables[5390] == value
 
 
+def test_the_machine_position_of_a_run_includes_the_height_compensation() -> None:
+    """--json's machine Z (and MDI's machine line) is where the machine is, as the trace shows it:
+    the work Z plus the surface height under it while ZHC is on; after ZHC off the next move ramps back."""
+    moves: list[Move] = []
+    result = run(GRID + "ZHC on\nG0 X50 Y30 Z-0.1\n", moves)
+    height = 50 / 250 + 30 / 300
+    assert result.machine[2] == pytest.approx(-0.1 + height) == pytest.approx(moves[-1].end[2])
+    assert result.position[2] == pytest.approx(-0.1)
+    assert run(GRID + "ZHC on\nG0 X50 Y30 Z-0.1\nZHC off\nG0 X60\n").machine[2] == pytest.approx(-0.1)
+
+
 def test_get_job_distance_counts_lines_arcs_and_rapids() -> None:
     result = run("G0 X10\nG1 X10 Y10 F100\nG2 X10 Y10 I5 J0\nGetJobDistance 100\n")
     assert result.variables[100] == pytest.approx(20 + 10 * math.pi)
+
+
+def test_get_job_distance_counts_the_bulk_moves_of_a_job_file(tmp_path: Path) -> None:
+    """A job file's plain G0/G1 lines take the bulk path; their travel counts as any other move's."""
+    from edingcnc_lang.runner import run_file
+
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X10\nG1 Y10 F100\nX0 Y0 Z-5\nGetJobDistance 100\nG1 X3 Y4 Z-5\nGetJobDistance 101\n")
+    result = run_file(job, RunOptions())
+    first = 20 + math.sqrt(200 + 25)
+    assert result.variables[100] == pytest.approx(first)
+    assert result.variables[101] == pytest.approx(first + 5)
+
+
+def test_get_tool_info_enumerates_the_tools_the_loaded_job_uses(tmp_path: Path) -> None:
+    """As the stock macro.cnc's measure_used_tools: the job's T words, not the tool table's entries."""
+    from edingcnc_lang.interpreter.commands import tools_used
+    from edingcnc_lang.runner import run_file
+
+    macro = tmp_path / "macro.cnc"
+    macro.write_text("Sub used\n  GetToolInfo num 100\n  GetToolInfo first 101\n  GetToolInfo next 102\n"
+                     "  GetToolInfo next 103\nEndSub\nSub change_tool\nEndSub\n")
+    job = tmp_path / "job.nc"
+    job.write_text("GoSub used\nT4 M6 (T9 is the spare)\nG0 X1\nmsg \"T7 next\"\nM6 T2 ; T8\nZHCINIT 10 2 2\nT0\n")
+    result = run_file(job, RunOptions(macro=macro))
+    assert [result.variables[i] for i in (100, 101, 102, 103)] == [2.0, 2.0, 4.0, -1.0]
+    assert tools_used(["t3m6", "G43 H3 T12", "M6 T[#1]", "GetToolInfo first 5"]) == [3, 12]
 
 
 def test_height_control_voltages_read_zero_in_simulation() -> None:
@@ -122,6 +160,14 @@ def test_g10_l10_and_l11_set_the_tool_length_from_the_position() -> None:
     assert result.variables[5403] == pytest.approx(-80 + 30 - 2)  # machine Z -80 is work Z -50 in G54 (Z-30)
     assert result.variables[5404] == pytest.approx(-80 + 40)  # the same against G59.3 (Z-40)
     assert result.variables[100] == pytest.approx(2.0)
+
+
+def test_g10_l10_leaves_the_wear_out_so_the_position_reads_z_under_g43() -> None:
+    """G43 adds zDelta to the length; G10 L10 must set the length that, with the wear, reads Z."""
+    result = run("#5903 = 0.2\nG0 Z20\nG10 L10 P3 Z0\nG43 H3\n#100 = #5003\nG10 L11 P3 Z5\nG43 H3\n#101 = #5003\n")
+    assert result.variables[5403] == pytest.approx(20 - 5 - 0.2)
+    assert result.variables[100] == pytest.approx(0.0)
+    assert result.variables[101] == pytest.approx(5.0)
 
 
 def test_g43_adds_the_tool_wear(tmp_path: Path) -> None:

@@ -27,6 +27,7 @@ def test_g74_taps_left_handed_reversing_the_spindle_at_the_bottom() -> None:
                      ("linear", 5.0, 2.0, 250.0), ("rapid", 5.0, 2.0, 0.0)]
     spindle = [e.data["m"] for e in events if e.kind == "spindle" and e.line == 3]
     assert spindle == [3, 4]  # reversed to come out, then turning as programmed again
+    assert [e.data["rpm"] for e in events if e.kind == "spindle" and e.line == 3] == [500.0, 500.0]
 
 
 def test_g87_back_bores_from_below() -> None:
@@ -40,6 +41,10 @@ def test_g87_back_bores_from_below() -> None:
                     ("rapid", 13.0, -12.0), ("rapid", 13.0, 5.0),        # shifted, out to the start level
                     ("rapid", 10.0, 5.0)]
     assert [e.data["m"] for e in events if e.kind == "spindle" and e.line == 3] == [5, 3, 5, 3]
+    # the bar passes the part with the spindle stopped: those moves carry 0 rpm, the bore 800
+    assert [m.spindle for m in moves if m.line == 3] == [800.0, 800.0, 0.0, 0.0, 0.0, 800.0, 0.0, 0.0, 0.0]
+    after = run("M3 S800\nG0 Z5\nG98 G87 X10 Y0 Z-20 R2 I3 J0 K-12 F100\n").spindle
+    assert (after["m"], after["rpm"]) == (3, 800.0)  # turning as programmed after the cycle
 
 
 @pytest.mark.parametrize("text, message", [

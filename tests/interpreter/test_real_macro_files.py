@@ -83,6 +83,26 @@ def test_a_broken_if_head_in_a_macro_file_keeps_its_block_and_fails_when_reached
     assert info.value.diagnostics[0].line == 2
 
 
+def test_a_dlgmsg_the_controller_refuses_is_a_bad_line_in_a_macro_file(tmp_path: Path) -> None:
+    """G1167 (a value between the strings, a label without its number) in a macro file: a warning at
+    load, the same syntax error (exit 65) when reached, refused at load under strict."""
+    macro = tmp_path / "m.cnc"
+    macro.write_text('Sub s\n  dlgmsg "Setup" #27 "Width" 27\nEndSub\nSub t\n  dlgmsg "T" "Depth"\n'
+                     '  G0 Z1\nEndSub\nSub u\n  G0 Y1\nEndSub\n')
+    result = run_string("GoSub u\n", RunOptions(macro=macro))
+    assert result.machine[1] == 1.0
+    assert [(w.line, w.code, w.severity.value) for w in result.warnings] == [(2, "D402", "warning"),
+                                                                             (5, "D402", "warning")]
+    for sub, line in (("s", 2), ("t", 5)):
+        with pytest.raises(SyntaxErrors) as info:
+            run_string(f"GoSub {sub}\n", RunOptions(macro=macro))
+        assert info.value.exit_code == 65 and info.value.diagnostics[0].line == line
+        assert "EdingCNC G1167" in info.value.diagnostics[0].message
+    with pytest.raises(SyntaxErrors) as info:
+        run_string("GoSub u\n", RunOptions(macro=macro, strict=True))
+    assert [d.line for d in info.value.diagnostics] == [2, 5]
+
+
 def test_jobs_are_still_checked_in_full_before_the_first_move() -> None:
     moves: list[object] = []
     with pytest.raises(SyntaxErrors):

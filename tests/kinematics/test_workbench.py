@@ -71,10 +71,26 @@ def test_crash_in_a_compiled_plugin_is_a_finding_naming_call_and_pose(built: Pat
     ("nan_corner.py", None, {"K401"}),
     ("branch_flip.py", (50, 150, -50, 50, 0, 10), {"K201"}),
     ("drifting.py", None, {"K503", "K504"}),
+    ("polar_atan.py", None, {"K101", "K201"}),
+    ("trunnion_sign.py", None, {"K101", "K102"}),  # the default cube: A is proven over a turn
 ])
 def test_broken_plugins_are_caught_by_the_right_finding(plugin: str, box, expected: set[str]) -> None:
     report = check_plugin(str(BROKEN / plugin), CheckOptions(box=box, **QUICK))
     assert codes(report) == expected, report.format()
+
+
+def test_a_rotary_axis_that_moves_other_joints_is_proven_over_a_turn() -> None:
+    """Without --box or --ini, A B C are held at 0 unless turning one moves another joint: a
+    trunnion's A, the virtual C of rotatekins; never a rotary passed through (trivial, deltakins)."""
+    def box(name: str) -> tuple[tuple[float, float], ...]:
+        return tuple(tuple(pair) for pair in check_plugin(name, CheckOptions(**QUICK)).box)
+
+    assert box(str(BROKEN / "trunnion_sign.py"))[3:] == ((-180.0, 180.0), (0.0, 0.0), (0.0, 0.0))
+    assert box("rotatekins")[3:] == ((0.0, 0.0), (0.0, 0.0), (-180.0, 180.0))
+    for name in ("trivial", "deltakins", str(BROKEN / "polar_atan.py")):
+        assert box(name)[3:] == ((0.0, 0.0),) * 3, name
+    given = check_plugin(str(BROKEN / "trunnion_sign.py"), CheckOptions(box=(-10, 10, -10, 10, -10, 10), **QUICK))
+    assert given.ok  # a --box is taken as given, even one that holds A
 
 
 def test_a_jump_is_shown_with_both_poses_and_joints() -> None:
@@ -159,3 +175,21 @@ def test_envelope_picture_shows_reach_and_its_edge(tmp_path: Path) -> None:
     green = ((abs(pixels[..., 0] - 0x4c / 255) < 0.02) & (abs(pixels[..., 1] - 0x9a / 255) < 0.02)).sum()
     grey = ((abs(pixels - 0xd9 / 255) < 0.02).all(axis=-1)).sum()
     assert green > 20_000 and grey > 5_000  # the reachable triangle and the unreachable rim are both drawn
+
+
+@needs_cc
+def test_kins_inverse_and_plot_survive_a_crashing_compiled_plugin(built: Path) -> None:
+    """`ecnc kins inverse` calls a compiled plug-in in a child: a crash is exit 70 naming the call and
+    the pose, never a dead ecnc (SIGSEGV); a pose that does not crash answers as in-process."""
+    from tests.cli_runner import invoke
+
+    crashed = invoke("kins", "inverse", str(built / "crash_corner.so"), "100", "100", "-100")
+    assert crashed.exit_code == 70 and crashed.stdout == ""
+    assert crashed.stderr.endswith("KinematicsInverse crashed the process (SIGSEGV) at X100 Y100 Z-100 A0 B0 C0\n")
+    plotted = invoke("kins", "plot", str(built / "crash_corner.so"), "-o", str(built / "crash.png"),
+                     "--resolution", "12")
+    assert plotted.exit_code == 70 and "KinematicsInverse crashed the process (SIGSEGV) at X" in plotted.stderr
+    compared = invoke("kins", "compare", "trivial", str(built / "crash_corner.so"), "--samples", "50")
+    assert compared.exit_code == 70 and "(SIGSEGV) at X100 Y100" in compared.stderr
+    fine = invoke("kins", "forward", str(built / "rotatekins.so"), "--", "-1", "2", "3")
+    assert (fine.exit_code, fine.stdout) == (0, '{"x": -1.0, "y": 2.0, "z": 3.0, "a": 0.0, "b": 0.0, "c": 0.0}\n')

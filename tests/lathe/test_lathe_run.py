@@ -229,3 +229,15 @@ def test_absolute_arc_centre_x_is_a_diameter(tmp_path: Path) -> None:
                       extra="[INTERPRETER]\nabsoluteCenterCoords = 1\n")
     arc = moves[-1].arc
     assert arc is not None and arc.center == pytest.approx((10.0, -10.0))  # (x, z): radius 10, as I20 says
+
+
+@pytest.mark.parametrize("diameter", [True, False])
+def test_g10_l10_x_on_a_lathe_reads_the_programmed_x_with_the_wear(tmp_path: Path, diameter: bool) -> None:
+    """G10 L10 P2 X.. takes X as a move does (a diameter in diameter mode) and leaves xDelta (#5802)
+    out of the offset it sets, so that under G43 the current position reads the X written."""
+    x = 30.0 if diameter else 15.0  # the same point: radius 15
+    _, _, result = run(tmp_path, f"G0 X{x:g} Z5\nG10 L10 P2 X{x:g} Z5\nG43 H2\n#100 = #5001\n#101 = #5003\n",
+                       diameter)
+    assert result.variables[5602] == pytest.approx(-0.1)  # radius 15 - 15 - wear 0.1
+    assert result.variables[5402] == pytest.approx(-0.25)
+    assert (result.variables[100], result.variables[101]) == pytest.approx((x, 5.0))

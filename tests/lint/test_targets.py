@@ -42,6 +42,11 @@ def test_a_bad_target_is_a_usage_error(tmp_path: Path) -> None:
     (tmp_path / "ecnc.toml").write_text('[tool.ecnc]\ntarget = "3.1"\n')
     result = invoke("lint", tmp_path / "m.cnc")
     assert result.exit_code == 2 and "unknown controller version '3.1'" in result.stderr
+    (tmp_path / "ecnc.toml").unlink()
+    (tmp_path / "cnc.ini").write_text('[SYSTEM]\nmachineType = 0\nversion = "garbage"\n')
+    result = invoke("lint", "--ini", tmp_path / "cnc.ini", tmp_path / "m.cnc")
+    assert result.exit_code == 2
+    assert result.stderr.startswith(f"{tmp_path / 'cnc.ini'}:3: error: unknown controller version 'garbage'")
 
 
 def test_unknown_g_codes_are_found_for_every_target(tmp_path: Path) -> None:

@@ -12,12 +12,13 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang.errors import PluginError
-from edingcnc_lang.kinematics.base import Kinematics
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics
 from edingcnc_lang.kinematics.workbench import geometry_checks as geo
 from edingcnc_lang.kinematics.workbench import plugin_checks as plug
 from edingcnc_lang.kinematics.workbench.evaluate import call_each
 from edingcnc_lang.kinematics.workbench.findings import Finding, Report, report_from_json
 from edingcnc_lang.kinematics.workbench.workspace import (Workspace, default_workspace, from_cartesian_limits,
+                                                             turning_rotaries,
                                                           from_joint_limits, parse_box)
 
 
@@ -80,7 +81,12 @@ def workspace_for(kins: Kinematics, options: CheckOptions, machine: Machine) -> 
     space = machine.cartesian
     if space is None and machine.joint_limits is not None:
         space = from_joint_limits(kins, machine.joint_limits, options.seed)
-    return space or default_workspace()
+    space = space or default_workspace()
+    try:  # ON as the checks will switch it, so that a virtual axis is active while it is tried
+        plug.switch_on(kins, space.centre)
+    except PLUGIN_FAILURES:  # the control check reports it
+        return space
+    return turning_rotaries(kins, space)
 
 
 def check_plugin(name: str, options: CheckOptions = CheckOptions()) -> Report:

@@ -78,12 +78,13 @@ def compare_plugins(a: str, b: str, options: check.CheckOptions = check.CheckOpt
     machine = check.read_machine(options.ini)
     if options.isolate and (check.is_compiled_file(a, machine) or check.is_compiled_file(b, machine)):
         from edingcnc_lang.errors import PluginError
-        from edingcnc_lang.kinematics.workbench.isolate import run_isolated
+        from edingcnc_lang.kinematics.workbench.findings import report_from_json
+        from edingcnc_lang.kinematics.workbench.isolate import crash_text, run_isolated
 
         frame = check._crash_report(f"{a} / {b}", options)
         result = run_isolated("compare", {"a": a, "b": b, "options": options.to_json()}, fallback=frame)
         if "findings" in result:  # the child crashed: the frame came back with the crash in it
-            raise PluginError("; ".join(f["message"] for f in result["findings"]))
+            raise PluginError("; ".join(crash_text(f) for f in report_from_json(result).findings))
         return _from_json(result)
     return compare_loaded(check.load_plugin(a, machine), check.load_plugin(b, machine), a, b, options, machine)
 

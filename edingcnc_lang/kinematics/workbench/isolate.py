@@ -54,6 +54,36 @@ def run_isolated(command: str, payload: Mapping[str, Any], fallback: Report, tim
         os.unlink(guard)
 
 
+GUARD_VARIABLE = "_ECNC_KINS_GUARD"  # set in the child of run_command_isolated: the file calls are recorded in
+
+
+def run_command_isolated(argv: list[str], plugin: str) -> tuple[int, str, str]:
+    """``ecnc ARGV`` in a child process that records the plug-in's calls (``ecnc kins inverse|forward``
+    on a compiled plug-in): (exit status, stdout, stderr); a crash in the library is a PluginError
+    naming the call and the pose, as ``ecnc kins check`` reports it (K602)."""
+    fd, guard = tempfile.mkstemp(prefix="ecnc-kins-guard-")
+    try:
+        os.write(fd, bytes(8 * RECORD))
+        os.close(fd)
+        done = subprocess.run([sys.executable, "-m", "edingcnc_lang", *argv], capture_output=True, text=True,
+                              check=False, env={**os.environ, GUARD_VARIABLE: guard})
+        if done.returncode >= 0:
+            return done.returncode, done.stdout, done.stderr
+        finding = _last_call(guard, "K602", f"crashed the process ({signal.Signals(-done.returncode).name})")
+    finally:
+        os.unlink(guard)
+    raise PluginError(f"kinematics plug-in {plugin!r}: {crash_text(finding)}")
+
+
+def crash_text(finding: Finding) -> str:
+    """A K602/K604 finding as an error's text: the call, what happened and where."""
+    from edingcnc_lang.kinematics.workbench.findings import format_joints, format_pose
+
+    where = (f" at {format_pose(finding.pose)}" if finding.pose is not None else
+             f" at {format_joints(finding.joints)}" if finding.joints is not None else "")
+    return finding.message + where
+
+
 def _last_call(guard: str, code: str, what: str) -> Finding:
     record = np.fromfile(guard, dtype=np.float64, count=RECORD)
     call = int(record[0])

@@ -3,7 +3,9 @@
 The box comes from, in order: ``--box``; the Cartesian limits of the ini (``[KINEMATICS]
 positiveLimitX`` ...); the joint limits of the ini (``[JOINT_n] positiveLimit``) mapped through the
 plug-in's forward kinematics; else a default cube.  Rotary axes whose limits mean "unlimited"
-(|limit| >= 10000, as cnc.ini writes 99999) are proven over one turn, -180..180.
+(|limit| >= 10000, as cnc.ini writes 99999) are proven over one turn, -180..180, and so is a
+rotary axis that neither the ini nor the default limits but that turns the machine (moving it
+moves another joint than its own): a 5-axis plug-in is never proven at A0 B0 C0 alone.
 """
 from __future__ import annotations
 
@@ -119,6 +121,54 @@ def from_joint_limits(kins: Kinematics, joint_limits: Sequence[tuple[float, floa
     found = np.array(poses)
     pairs = tuple((float(lo), float(hi)) for lo, hi in zip(found.min(axis=0), found.max(axis=0)))
     return Workspace(pairs, "cnc.ini joint limits through the plug-in's forward kinematics")
+
+
+PROBE_ANGLES = (-150.0, 90.0)  # where a rotary axis is tried to see whether it turns the machine
+
+
+def turning_rotaries(kins: Kinematics, space: Workspace) -> Workspace:
+    """``space`` with every fixed rotary axis that moves another joint than its own widened to one
+    turn: an ini or the default cube that holds A, B or C must not hide a 5-axis plug-in's rotary
+    geometry (the ``--box`` is taken as given).  The plug-in is expected to be ON."""
+    box = list(space.box)
+    # off the centre: a rotation about the centre would leave it where it is
+    centre = [float(v) for v in space.lows + space.extents * np.array([0.71, 0.29, 0.62, 0.5, 0.5, 0.5])]
+    base = _joints(kins, centre)
+    if base is None:
+        return space
+    turned = []
+    for axis in (3, 4, 5):
+        if box[axis][0] == box[axis][1] and any(_turns(kins, centre, base, axis, angle) for angle in PROBE_ANGLES):
+            box[axis] = ONE_TURN
+            turned.append("XYZABC"[axis])
+    if not turned:
+        return space
+    return Workspace(tuple(box), (f"{space.source}; {' '.join(turned)} over one turn, "
+                                    f"as {'it moves' if len(turned) == 1 else 'they move'} the joints"))
+
+
+def _joints(kins: Kinematics, pose: Sequence[float]) -> np.ndarray | None:
+    try:
+        joints = np.array(kins.inverse(tuple(float(v) for v in pose)), dtype=float)
+    except PLUGIN_FAILURES:
+        return None
+    return joints if joints.shape == (6,) and np.isfinite(joints).all() else None
+
+
+def _turns(kins: Kinematics, centre: list[float], base: np.ndarray, axis: int, angle: float) -> bool:
+    """Whether turning ``axis`` to ``angle`` moves any joint but its own (which may pass it through,
+    or ignore it: a polar table's C joint comes from X and Y)."""
+    pose = list(centre)
+    pose[axis] = angle
+    joints = _joints(kins, pose)
+    if joints is None:  # an error or NaN there: the axis matters, and the checks will say how
+        return True
+    others = [i for i in range(6) if i != axis]
+    return not np.allclose(joints[others], base[others], rtol=1e-9, atol=1e-9 * space_scale(centre))
+
+
+def space_scale(pose: Sequence[float]) -> float:
+    return max(1.0, float(np.max(np.abs(pose))))
 
 
 def default_workspace() -> Workspace:
