@@ -60,8 +60,8 @@ G_GROUPS: Mapping[int, str] = _groups({
     "scaling": (50, 51),
     "non_modal": (4, 10, 28, 30, 53, 92, 92.1, 92.2, 92.3),
 })
-# The canned cycles the interpreter runs (cycles.py expands each into moves; G76 is the lathe's,
-# reported as unsupported).
+# The canned cycles the interpreter runs (cycles.py expands each into moves; G76, the lathe's
+# threading cycle, is spindle-synchronised motion in interpreter/threads.py).
 CANNED_CYCLES = frozenset(code_key(c) for c in (73, 74, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 
 M_GROUPS: Mapping[int, str] = _groups({
@@ -86,6 +86,17 @@ UNKNOWN_G_HINTS: Mapping[int, str] = MappingProxyType({
     code_key(15): "polar coordinates of other controls are not an EdingCNC code",
     code_key(16): "polar coordinates of other controls are not an EdingCNC code",
 })
+
+# G codes only a lathe knows (cnc.ini [SYSTEM] machineType = 1): constant surface speed needs X
+# to be the distance from the spindle's axis, and G76 threads a turning part.  A mill stops at them.
+LATHE_ONLY_G = frozenset(code_key(c) for c in (76, 96))
+
+
+def lathe_code_message(key: int) -> str:
+    """What a mill says of a lathe code (shared by the run and ``ecnc lint --ini``)."""
+    return (f"{code_name('G', key)} is a lathe code and this machine is a mill: "
+            "a lathe's cnc.ini (--ini) sets [SYSTEM] machineType = 1")
+
 
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))

@@ -72,7 +72,7 @@ G_ROWS: tuple[Row, ...] = (
     (76, "threading cycle", "P Z I J K R Q H E L",
      "Multi-pass thread from the current position to Z: P pitch, I crest offset (negative outside), J first cut, "
      "K thread depth, R degression, Q compound angle, H spring passes, E/L taper. XZ plane (G18); "
-     "I J K are diameters in diameter mode."),
+     "I J K are diameters in diameter mode. Lathe only (machineType = 1)."),
     (80, "cancel canned cycle", "", "Ends the active canned cycle; axis words alone no longer drill."),
     (81, "drilling cycle", "X Y Z R L F", "Rapid to R, feed to Z, rapid out (to the start Z with G98, to R with G99). L repeats."),
     (82, "drilling cycle with dwell", "X Y Z R P L F", "As G81 with a dwell of P seconds at the bottom."),
@@ -94,7 +94,7 @@ G_ROWS: tuple[Row, ...] = (
     (95, "units per revolution feed", "", "F is mm (or inch) per spindle revolution."),
     (96, "constant surface speed", "S D",
      "S is the surface speed (m/min, ft/min in G20): the spindle speed follows the X radius, at most D rpm "
-     "(and cnc.ini's spindleNmax)."),
+     "(and cnc.ini's spindleNmax). Lathe only (machineType = 1)."),
     (97, "spindle speed in rpm", "S", "S is the spindle speed in rpm (the default); without S the current speed is kept."),
     (98, "canned cycle returns to the start Z", "", "Retract to the Z the cycle started from."),
     (99, "canned cycle returns to R", "", "Retract to the R plane."),

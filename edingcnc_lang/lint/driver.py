@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from ..codes import CODES
-from ..config import load_config
+from ..config import MachineConfig, load_config
 from ..diagnostics import Diagnostic
 from ..errors import EcncError
 from ..source import iter_file_lines
@@ -138,30 +138,33 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
         else:
             targets.append(loader.load(path, is_macro_name(path) or path.resolve() in given_resolved))
     tool_diameters: dict[int, float] = {}
+    mill = False
     for config in dict.fromkeys(configs):
         diags, outputs = check_config(config)
         found.extend(diags)
         written |= outputs
-        if not diags:
-            tool_diameters.update(_tool_diameters(config))
+        machine = None if diags else _valid_config(config)
+        if machine is not None:
+            tool_diameters.update({number: tool.diameter for number, tool in machine.tools.items() if tool.diameter})
+            mill = mill or not machine.lathe
     for file in list(loader.files.values()):  # also loads the macro files of every file
         loader.macros_for(Path(file.path))
     macros = {file.path: loader.macros_for(Path(file.path)) for file in loader.files.values()}
     active = [r for r in RULES if any(wanted(c, options) for c in r.codes)]
-    project = Project(list(loader.files.values()), macros, written, tool_diameters)
+    project = Project(list(loader.files.values()), macros, written, tool_diameters, mill)
     for file in dict.fromkeys(targets):
         for rule in active:  # the parser's nesting limits keep every walk within the stack
             found.extend(rule.check(file, project))
     return _finish(found, options, target, {f.path: f.lines for f in loader.files.values()})
 
 
-def _tool_diameters(path: Path) -> dict[int, float]:
-    """The tool table of a valid ini (``[TOOL_n] diameter``, mm), for the compensation rules."""
+def _valid_config(path: Path) -> MachineConfig | None:
+    """The machine of an ini check_config passed: its tool table (``[TOOL_n] diameter``, mm) for the
+    compensation rules, its machine type for the lathe codes."""
     try:
-        config = load_config(path)
+        return load_config(path)
     except EcncError:  # already reported by check_config
-        return {}
-    return {number: tool.diameter for number, tool in config.tools.items() if tool.diameter}
+        return None
 
 
 def _finish(found: list[Diagnostic], options: LintOptions, target: str,

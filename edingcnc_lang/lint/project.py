@@ -46,9 +46,10 @@ class Project:
 
     def __init__(self, files: Sequence[SourceFile], macros: Mapping[str, Sequence[SourceFile]],
                  extra_written: frozenset[int] = frozenset(),
-                 tool_diameters: Mapping[int, float] | None = None) -> None:
+                 tool_diameters: Mapping[int, float] | None = None, mill: bool = False) -> None:
         self.files = tuple(files)
         self.tool_diameters = dict(tool_diameters or {})  # [TOOL_n] diameter (mm) of the --ini, for G41/G42 D
+        self.mill = mill  # the --ini is a mill's (machineType = 0): lathe codes stop the job there
         self._macros = macros
         self._extra_written = extra_written
         self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}

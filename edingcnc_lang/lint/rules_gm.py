@@ -11,7 +11,7 @@ from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..tables import (
     G_GROUPS,
-    UNKNOWN_G_HINTS,
+    LATHE_ONLY_G,
     M_GROUPS,
     MAX_M_WORDS,
     MAX_TOOL,
@@ -19,6 +19,7 @@ from ..tables import (
     UNKNOWN_G_HINTS,
     code_key,
     code_name,
+    lathe_code_message,
 )
 from .evaluate import evaluate
 from .facts import BlockCodes, Code
@@ -85,12 +86,15 @@ def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
 
 @rule("G509")
 def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    """A literal G number outside the dialect's tables stops the job at run time (``unknown G code``)."""
+    """A literal G number outside the dialect's tables stops the job at run time (``unknown G code``),
+    and so does a lathe code on the mill the ``--ini`` describes."""
     for block in project.facts(file).blocks:
         for key, word in block.g:
             if key not in G_GROUPS:
                 hint = UNKNOWN_G_HINTS.get(key)
                 yield at("G509", f"unknown G code {code_name('G', key)}" + (f": {hint}" if hint else ""), word.span)
+            elif project.mill and key in LATHE_ONLY_G:
+                yield at("G509", lathe_code_message(key), word.span)
 
 
 def _probe_word(g: Iterable[Code]) -> n.Word | None:

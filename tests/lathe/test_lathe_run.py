@@ -64,6 +64,16 @@ def test_linuxcnc_diameter_codes_are_errors_with_a_hint(tmp_path: Path, code: st
     assert f":2:1: error: unknown G code {code}: " in message and hint in message
 
 
+@pytest.mark.parametrize("line", ["G96 S200 D2000", "G76 P1.5 Z-20 I-1 J0.1 K1"])
+def test_lathe_codes_stop_a_mill_at_their_line(line: str) -> None:
+    with pytest.raises(EcncError) as info:
+        run_string(f"G21\nM3 S500\n{line}\n")
+    code = line.split()[0]
+    assert info.value.format().startswith(f"<string>:3:1: error: {code} is a lathe code and this machine is a mill: ")
+    assert "machineType = 1" in info.value.format()
+    run_string("G21\nG97 S500 M3\nG95 G1 Z-1 F0.1\nG33 Z-5 K1\nG94\n")  # spindle modes a mill has too
+
+
 def test_g28_moves_x_first_on_a_lathe(tmp_path: Path) -> None:
     moves, _, _ = run(tmp_path, "#5161 = 100\n#5163 = 300\nG0 X20 Z-50\nG28\n")
     assert [(m.end[0], m.end[2]) for m in moves[1:]] == [(100.0, -50.0), (100.0, 300.0)]
