@@ -8,8 +8,11 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-# A start/end radius difference up to this much is accepted (mm, or a fraction of the radius).
+# A start/end radius difference up to this much is accepted (in the program's units, or a fraction
+# of the radius): LinuxCNC's TOLERANCE_MM / TOLERANCE_INCH, so a CAM post that prints inches to
+# four decimals passes here as it does there.
 RADIUS_TOLERANCE_MM = 0.002
+RADIUS_TOLERANCE_INCH = 0.0002
 RADIUS_TOLERANCE_REL = 0.001
 TINY = 1e-12
 
@@ -18,8 +21,13 @@ class ArcError(ValueError):
     """Arc words that describe no circle; the message is for the user."""
 
 
+def radius_tolerance(inch: bool) -> float:
+    """The absolute radius tolerance in mm for a program in inches (G20) or millimetres."""
+    return RADIUS_TOLERANCE_INCH * 25.4 if inch else RADIUS_TOLERANCE_MM
+
+
 def center_from_radius(start: tuple[float, float], end: tuple[float, float], radius: float,
-                       clockwise: bool) -> tuple[float, float]:
+                       clockwise: bool, tolerance: float = RADIUS_TOLERANCE_MM) -> tuple[float, float]:
     """Centre of the arc through start and end with signed radius R (R < 0: more than 180 degrees)."""
     (s1, s2), (e1, e2) = start, end
     if math.hypot(e1 - s1, e2 - s2) < TINY:
@@ -27,7 +35,7 @@ def center_from_radius(start: tuple[float, float], end: tuple[float, float], rad
     abs_r = abs(radius)
     mid1, mid2 = (s1 + e1) / 2.0, (s2 + e2) / 2.0
     half = math.hypot(mid1 - e1, mid2 - e2)
-    if half - abs_r > RADIUS_TOLERANCE_MM:
+    if half - abs_r > tolerance:
         raise ArcError(f"R{radius:g} is too small to reach the end point: the chord is {2 * half:.4f} mm long")
     if half / abs_r > 1.0 - TINY:
         half = abs_r
@@ -37,13 +45,13 @@ def center_from_radius(start: tuple[float, float], end: tuple[float, float], rad
 
 
 def check_radius(start: tuple[float, float], center: tuple[float, float],
-                 end: tuple[float, float]) -> tuple[float, float]:
+                 end: tuple[float, float], tolerance: float = RADIUS_TOLERANCE_MM) -> tuple[float, float]:
     """Both radii of an IJK arc; raises ArcError when they differ beyond the tolerance."""
     r1 = math.hypot(start[0] - center[0], start[1] - center[1])
     r2 = math.hypot(end[0] - center[0], end[1] - center[1])
     if r1 < TINY:
         raise ArcError("the arc centre lies on its start point (radius 0)")
-    if abs(r1 - r2) > max(RADIUS_TOLERANCE_MM, RADIUS_TOLERANCE_REL * r1):
+    if abs(r1 - r2) > max(tolerance, RADIUS_TOLERANCE_REL * r1):
         raise ArcError(f"start and end are not on one circle: start radius {r1:.4f}, end radius {r2:.4f}")
     return r1, r2
 

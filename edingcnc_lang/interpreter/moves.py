@@ -7,7 +7,7 @@ from collections.abc import Mapping
 from .. import nodes as n
 from .. import tables as t
 from ..canon import PLANES, Arc
-from ..geometry import ArcError, center_from_radius, check_radius, sweep
+from ..geometry import ArcError, center_from_radius, check_radius, radius_tolerance, sweep
 from .state import (
     AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_51, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
     MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
@@ -79,9 +79,10 @@ class Moves(MachineState):
         e = (end[first], end[second])
         scale = self.scale
         center: tuple[float, float] | None = None
+        tolerance = radius_tolerance(scale != 1.0)
         try:
             if "R" in words:
-                center = center_from_radius(s, e, words["R"] * scale, clockwise)
+                center = center_from_radius(s, e, words["R"] * scale, clockwise, tolerance)
             else:
                 w1, w2 = CENTER_WORDS[plane]
                 if w1 not in words and w2 not in words:
@@ -96,7 +97,7 @@ class Moves(MachineState):
                 else:
                     d1, d2 = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
                     center = (s[0] + d1, s[1] + d2)
-                check_radius(s, center, e)
+                check_radius(s, center, e, tolerance)
         except ArcError as err:
             where = (f"start ({fmt_point(s)})" + (f", centre ({fmt_point(center)})" if center else "")
                      + f", end ({fmt_point(e)})")

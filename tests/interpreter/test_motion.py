@@ -98,6 +98,13 @@ def test_radius_mismatch_within_tolerance_is_accepted() -> None:
     assert run("G0 X10\nG2 X0 Y10.001 I-10 J0 F100\n")[1][-1].kind == "arc"
 
 
+def test_radius_tolerance_is_linuxcncs_in_the_programs_units() -> None:
+    # radii 0.05 and 0.05015: 0.00015 apart, over 0.1 % of the radius; 0.0038 mm is past
+    # the 0.002 mm of a G21 program but within the 0.0002 in of a G20 one (as rs274 has it)
+    assert run("G20 G0 X0 Y0\nG2 X0.10015 Y0 I0.05 J0 F10\n")[1][-1].kind == "arc"
+    assert "not on one circle" in error_of("G21 G0 X0 Y0\nG2 X2.5438 Y0 I1.27 J0 F10\n").message
+
+
 ARC_ERRORS = [
     ("G0 X10\nG2 X0 Y10 R4 F100\n", "R4"),
     ("G0 X10\nG2 X0 Y10 F100\n", "I/J"),
