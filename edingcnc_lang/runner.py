@@ -18,7 +18,7 @@ from . import nodes as n
 from . import tables as t
 from .canon import AXES, Event, Move, Pose
 from .config import MachineConfig, load_config, save_variables
-from .errors import EcncError, Interrupted, Location, MachineError, MoveError
+from .errors import EcncError, Interrupted, Location, MachineError
 from .host import Host
 from .interpreter import Interpreter
 from .interpreter.commands import tools_used
@@ -332,12 +332,11 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
 def _add_column(error: EcncError, texts: dict[str, str]) -> None:
     """Give a line-only location the column where that line's code starts.
 
-    The stages after the interpreter (cutter compensation, scaling, rotation) see moves, which
-    carry a line but no column; the report still promises ``FILE:LINE:COL``.
+    The stages after the interpreter (cutter compensation, scaling, rotation, height compensation)
+    and the motion stage (limits, kinematics) see moves, which carry a line but no column; the
+    report still promises ``FILE:LINE:COL``.
     """
     where = error.location
-    if not isinstance(error, MoveError):
-        return
     if where is None or not where.line or where.col:
         return
     lines = iter_text_lines(texts[where.path]) if where.path in texts else iter_file_lines(where.path)

@@ -27,7 +27,7 @@ def write(folder: Path, name: str, text: str) -> Path:
 @pytest.mark.parametrize(("source", "kind", "line", "column", "code"), [
     ("G0 X1\nG0 X[1\n", "syntax", 2, 5, 65),
     ("G0 X1\n#1 = [2 / 0]\n", "runtime", 2, 7, 70),
-    ('G0 X1\nerrmsg "stop"\n', "errmsg", 2, None, 70),
+    ('G0 X1\nerrmsg "stop"\n', "errmsg", 2, 1, 70),
 ])
 def test_json_failures_carry_an_error_object(tmp_path: Path, source: str, kind: str, line: int,
                                              column: int | None, code: int) -> None:
@@ -76,7 +76,7 @@ def test_ctrl_c_in_a_run_names_the_line(tmp_path: Path, monkeypatch: pytest.Monk
     monkeypatch.setattr(edingcnc_lang.cli.options, "print_message", interrupt)
     job = write(tmp_path, "job.nc", 'G0 X1\nG0 X2\nmsg "here"\nG0 X3\n')
     result = invoke("run", job)
-    assert (result.exit_code, result.stderr) == (130, f"{job}:3: error: interrupted (Ctrl-C)\n")
+    assert (result.exit_code, result.stderr) == (130, f"{job}:3:1: error: interrupted (Ctrl-C)\n")
 
 
 def test_ctrl_c_while_the_job_is_checked_names_the_job(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

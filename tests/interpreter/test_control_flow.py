@@ -273,7 +273,7 @@ def test_messages_are_collected_with_kind_file_and_line() -> None:
 
 def test_errmsg_aborts_with_its_text() -> None:
     err = error_of('G0 X1\nIf [#5001 > 0]\n  errmsg "X is "#5001", stop"\nEndIf\nG0 X2\n')
-    assert err.format() == "job.nc:3: error: X is 1, stop"
+    assert err.format() == "job.nc:3:3: error: X is 1, stop"
     partial: RunResult = err.result  # type: ignore[attr-defined]
     assert partial.position[0] == 1.0
     assert [(m.kind, m.data["text"]) for m in partial.messages] == [("error", "X is 1, stop")]

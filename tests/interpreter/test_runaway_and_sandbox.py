@@ -74,7 +74,7 @@ def test_an_m_code_without_a_built_in_reaching_its_own_sub_again_is_an_error() -
     source = "M101\nM30\nSub m101\n  GoSub helper\nEndSub\nSub helper\n  M101\nEndSub\n"
     err = error_of(source)
     assert err.format().splitlines() == [
-        "job.nc:7: error: M101 inside Sub m101, which is already running: M101 has no built-in action to "
+        "job.nc:7:3: error: M101 inside Sub m101, which is already running: M101 has no built-in action to "
         "run instead; write GoSub m101 if the recursion is meant",
         "  in Sub helper, called from job.nc:4", "  in Sub m101, called from job.nc:1"]
 

@@ -63,7 +63,7 @@ def test_rotatekins_ctrl_sets_the_point_and_angle_without_moving(run_job) -> Non
 def test_unknown_control_id_is_an_error_naming_the_line(run_job) -> None:  # type: ignore[no-untyped-def]
     outcome = run_job("G0 X10\nKIN CTRL 40 1 2\n", {**joints(), "KINEMATICS": {"kinematicsDLLName": "rotatekins"}})
     assert outcome.code == 70
-    assert "job.nc:2: error: kinematics rotatekins: control 40 returned -1" in outcome.err
+    assert "job.nc:2:1: error: kinematics rotatekins: control 40 returned -1" in outcome.err
 
 
 def test_compiled_plugin_named_by_path_runs_a_job(run_job, compiled_rotatekins: Path) -> None:  # type: ignore[no-untyped-def]
@@ -110,13 +110,13 @@ def test_y2a_wraps_about_the_work_zero(run_job) -> None:  # type: ignore[no-unty
 def test_y2a_without_a_radius_is_an_error(run_job) -> None:  # type: ignore[no-untyped-def]
     outcome = run_job("G0 X1\nKIN Y2A\n", joints())
     assert outcome.code == 70
-    assert "job.nc:2: error:" in outcome.err and "aAxisCalibratedCilinderRadius" in outcome.err
+    assert "job.nc:2:1: error:" in outcome.err and "aAxisCalibratedCilinderRadius" in outcome.err
 
 
 def test_switching_never_makes_a_joint_jump(run_job) -> None:  # type: ignore[no-untyped-def]
     outcome = run_job("G0 Z-3\nG0 C5\nKIN Z2ZC\n", {**joints(), "KINEMATICS": CYLINDER})
     assert outcome.code == 70
-    assert "job.nc:3: error: KIN Z2ZC would make joint C jump from 5.0000 to -3.0000" in outcome.err
+    assert "job.nc:3:1: error: KIN Z2ZC would make joint C jump from 5.0000 to -3.0000" in outcome.err
 
 
 def test_homing_switches_kinematics_off_until_kin_on(run_job) -> None:  # type: ignore[no-untyped-def]

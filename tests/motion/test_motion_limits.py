@@ -20,7 +20,7 @@ SLOW_XY = {**ROTATE, **{f"JOINT_{i}": {"negativeLimit": -500, "positiveLimit": 5
 def assert_error(outcome, line: int, *parts: str) -> None:  # type: ignore[no-untyped-def]
     assert outcome.code == 70, outcome.err
     first = outcome.err.strip().splitlines()[0]
-    assert f"job.nc:{line}: error: " in first, first
+    assert f"job.nc:{line}:1: error: " in first, first
     for part in parts:
         assert part in first, first
 

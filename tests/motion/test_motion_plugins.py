@@ -65,7 +65,7 @@ def test_plugin_that_raises(run_job, tmp_path: Path, fail: int, job: str, line: 
                             message: str) -> None:  # type: ignore[no-untyped-def]
     outcome = run_job(job, plugin_machine(tmp_path, PLUGIN, failIn=fail))
     assert outcome.code == 70
-    where = f"job.nc:{line}: error: " if line else "error: "
+    where = f"job.nc:{line}:1: error: " if line else "error: "
     assert f"{where}kinematics plug-in " in outcome.err and f"mykins.py{message}" in outcome.err
 
 
@@ -92,7 +92,7 @@ def test_missing_plugin(run_job) -> None:  # type: ignore[no-untyped-def]
 def test_plugin_batch_result_is_checked(run_job, tmp_path: Path, nan: int, message: str) -> None:  # type: ignore[no-untyped-def]
     outcome = run_job("KIN ON\n", plugin_machine(tmp_path, VECTOR, nan=nan))
     assert outcome.code == 70
-    assert "job.nc:1: error: kinematics plug-in " in outcome.err
+    assert "job.nc:1:1: error: kinematics plug-in " in outcome.err
     assert f"mykins.py failed: ValueError: {message}" in outcome.err
 
 
