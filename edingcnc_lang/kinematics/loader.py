@@ -12,12 +12,13 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import inspect
+import traceback
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
-from edingcnc_lang.errors import EcncError, PluginError
+from edingcnc_lang.errors import EcncError, Location, PluginError
 from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsPlugin
 from edingcnc_lang.kinematics.shipped import import_shipped
 
@@ -87,8 +88,20 @@ def _import_file(path: Path) -> ModuleType:
     try:
         spec.loader.exec_module(module)
     except PLUGIN_FAILURES as err:  # the user's module may fail in any way
-        raise PluginError(f"kinematics plug-in {path}: importing it failed: {type(err).__name__}: {err}") from None
+        detail = err.msg if isinstance(err, SyntaxError) else str(err)
+        raise PluginError(f"kinematics plug-in {path}: importing it failed: {type(err).__name__}: {detail}",
+                          _failure_location(err, path)) from None
     return module
+
+
+def _failure_location(err: BaseException, path: Path) -> Location | None:
+    """Where in the plug-in's own file its import failed, so the author is sent to the line."""
+    if isinstance(err, SyntaxError) and err.lineno:
+        return Location(str(path), err.lineno, err.offset or 0)
+    own = path.resolve()
+    lines = [line for frame, line in traceback.walk_tb(err.__traceback__)
+             if Path(frame.f_code.co_filename).resolve() == own]
+    return Location(str(path), lines[-1]) if lines else None
 
 
 def _plugin_class(module: ModuleType, label: str) -> Callable[..., Any]:

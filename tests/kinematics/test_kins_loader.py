@@ -112,6 +112,19 @@ def test_py_plugin_failures_name_the_plugin(tmp_path: Path, source: str, reason:
         load_kinematics(str(path), {})
 
 
+@pytest.mark.parametrize(("source", "where"), [
+    ("import math\n\ndef broken(:\n", ":3:12: error: "),
+    ("import math\n\ndef f():\n    return 1 / 0\n\nf()\n", ":4: error: "),
+    ("import no_such_module_xyz\n", ":1: error: "),
+])
+def test_a_py_plugin_that_fails_to_import_names_its_own_line(tmp_path: Path, source: str, where: str) -> None:
+    path = tmp_path / "userkins.py"
+    path.write_text(source)
+    with pytest.raises(PluginError) as info:
+        load_kinematics(str(path), {})
+    assert info.value.format().startswith(f"{path}{where}kinematics plug-in {path}: importing it failed: ")
+
+
 def test_so_path_that_is_not_a_library(tmp_path: Path) -> None:
     path = tmp_path / "fake.so"
     path.write_text("not an ELF file")
