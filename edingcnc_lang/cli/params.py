@@ -7,6 +7,7 @@ start without them.
 from __future__ import annotations
 
 import os
+import stat
 from typing import TYPE_CHECKING, Any
 
 import click
@@ -50,10 +51,21 @@ class _PathType(click.ParamType):
 
 
 def _unreadable(value: str) -> str | None:
+    """Why ``value`` cannot be read as input, or None.
+
+    A device (``/dev/zero``, ``/dev/urandom``) is refused: it never ends, so reading it would hang
+    and fill memory.  A FIFO is allowed, for a generator's output (``ecnc run <(gen)``).
+    """
     if not os.path.exists(value):
         return f"{value!r} does not exist"
     if not os.access(value, os.R_OK):
         return f"{value!r} is not readable"
+    try:
+        mode = os.stat(value).st_mode
+    except OSError as exc:
+        return f"{value!r} cannot be read: {exc.strerror or exc}"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return f"{value!r} is a device, not a file"
     return None
 
 
