@@ -12,6 +12,7 @@ import errno
 import io
 import os
 import sys
+from typing import TextIO
 
 
 STDIN_NAME = "<stdin>"  # how messages name a file read from standard input
@@ -27,6 +28,46 @@ class ClosedStream(io.TextIOBase):
         raise OSError(errno.EBADF, os.strerror(errno.EBADF))
 
 
+class QuietStream(io.TextIOBase):
+    """Stands for stderr: once a write fails (``2> /dev/full``) the rest goes to the null device.
+
+    There is no one left to tell, so the command carries on and keeps its exit code, as with a
+    closed stderr, instead of failing on its first message.
+    """
+
+    def __init__(self, stream: TextIO) -> None:
+        self._stream = stream
+
+    @property
+    def encoding(self) -> str:  # type: ignore[override]
+        return self._stream.encoding
+
+    def writable(self) -> bool:
+        return True
+
+    def isatty(self) -> bool:
+        return self._stream.isatty()
+
+    def fileno(self) -> int:
+        return self._stream.fileno()
+
+    def write(self, text: str) -> int:
+        try:
+            return self._stream.write(text)
+        except (OSError, ValueError):
+            self._give_up()
+            return len(text)
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()
+        except (OSError, ValueError):
+            self._give_up()
+
+    def _give_up(self) -> None:
+        self._stream = open(os.devnull, "w")  # noqa: SIM115 - lives as long as the process
+
+
 def make_streams_usable() -> None:
     """Replace a closed stdin, stdout or stderr (see the module's docstring); let text stdout can't encode be escaped.
 
@@ -36,6 +77,8 @@ def make_streams_usable() -> None:
         sys.stdin = open(os.devnull)  # noqa: SIM115 - lives as long as the process
     if sys.stderr is None:
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - lives as long as the process
+    elif sys.stderr is sys.__stderr__:  # not an embedding program's or a test's own stream
+        sys.stderr = QuietStream(sys.stderr)
     if sys.stdout is None:
         sys.stdout = ClosedStream()
     reconfigure = getattr(sys.stdout, "reconfigure", None)
