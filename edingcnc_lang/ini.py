@@ -287,6 +287,28 @@ def _locked(path: Path) -> Iterator[None]:
         os.close(fd)
 
 
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """Hold Ctrl-C and SIGTERM until the block is done, so a write-back is never cut short.
+
+    Above all the in-place rewrite (hard links, another owner), which a stop between writing and
+    truncating would leave half old, half new; a held signal takes effect right after.  Only in
+    the main thread, where Python handles signals, and only where signals can be blocked.
+    """
+    import signal
+    import threading
+
+    held = {signal.SIGINT, getattr(signal, "SIGTERM", signal.SIGINT)}
+    if not hasattr(signal, "pthread_sigmask") or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, before)
+
+
 def _remove_stale_temporaries(path: Path) -> None:
     """Temporary files of a write-back that was killed (only called under the lock, so none is live)."""
     for stale in path.parent.glob(f".{glob.escape(path.name)}.*.tmp"):
@@ -307,7 +329,7 @@ def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -
         return
     target = Path(os.path.realpath(path))
     try:
-        with _locked(target):
+        with _locked(target), _signals_held():
             info = target.stat()
             if not info.st_mode & (stat.S_IWUSR | stat.S_IWGRP | stat.S_IWOTH) or not os.access(target, os.W_OK):
                 raise ConfigError("cannot write variables back: the file is read-only (mode "
