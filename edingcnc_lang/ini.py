@@ -21,6 +21,7 @@ from pathlib import Path
 from types import MappingProxyType
 
 from edingcnc_lang.errors import ConfigError, Location
+from edingcnc_lang.limits import MAX_INI_BYTES
 
 _BOM = b"\xef\xbb\xbf"
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
@@ -92,11 +93,17 @@ def _classify(lines: list[tuple[str, str]]) -> list[tuple[str | None, _Entry | N
 
 
 def _read_bytes(path: Path) -> bytes:
+    """The whole file, up to MAX_INI_BYTES; a larger one is an error, not gigabytes of memory."""
     try:
-        return path.read_bytes()
+        with open(path, "rb") as handle:
+            raw = handle.read(MAX_INI_BYTES + 1)
     except OSError as exc:
         raise ConfigError(f"cannot read machine configuration: {exc.strerror or exc}",
                           Location(str(path))) from exc
+    if len(raw) > MAX_INI_BYTES:
+        raise ConfigError(f"machine configuration larger than {MAX_INI_BYTES // (1024 * 1024)} MB (the limit; a "
+                          "cnc.ini holds some 50 KB): is this the right file?", Location(str(path)))
+    return raw
 
 
 def _decode(raw: bytes) -> str:
