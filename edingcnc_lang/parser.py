@@ -501,10 +501,14 @@ class StatementReader:
 # --------------------------------------------------------------------------- whole files
 
 def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
-                    non_plain: Sequence[int] | None = None, tolerant: bool = False) -> StatementReader:
-    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain,
-                           tolerant=tolerant)
+                    non_plain: Sequence[int] | None = None, tolerant: bool = False,
+                    name: str | None = None) -> StatementReader:
+    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader.
+
+    ``name`` is what spans and errors call the file (``<stdin>`` for a copy of standard input).
+    """
+    return StatementReader(iter_file_lines(path), os.fspath(path) if name is None else name, mode=mode,
+                           non_plain=non_plain, tolerant=tolerant)
 
 
 @dataclass(frozen=True)
@@ -515,9 +519,9 @@ class CheckedFile:
     non_plain: Sequence[int]
 
 
-def check_file(path: str | os.PathLike[str]) -> CheckedFile:
+def check_file(path: str | os.PathLike[str], name: str | None = None) -> CheckedFile:
     """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong."""
-    reader = read_statements(path, mode="check")
+    reader = read_statements(path, mode="check", name=name)
     subs: dict[str, n.Sub] = {}
     for stmt in reader:
         if isinstance(stmt, n.Sub):

@@ -206,10 +206,11 @@ class Run:
         if self.config.initial_string:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
 
-    def execute_file(self, job: Path) -> RunResult:
-        checked = check_file(job)
+    def execute_file(self, job: Path, name: str | None = None) -> RunResult:
+        """Check the job, then run it as it streams in; ``name`` is what messages call it (default its path)."""
+        checked = check_file(job, name)
         macros = self.load_macros()
-        return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
+        return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain, name=name),
                              checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:

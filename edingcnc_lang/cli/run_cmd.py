@@ -12,7 +12,7 @@ from . import progress
 from .base import Command, usage_error
 from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options, override_options
 from .params import OUTPUT_FILE, STDIN, STDOUT
-from .streams import STDIN_NAME, read_stdin
+from .streams import STDIN_NAME, stdin_as_file
 
 if TYPE_CHECKING:
     from ..runner import Run
@@ -60,7 +60,8 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     # an error carries the state so far: main() prints it with --json
     run = Run(options)
     if job == STDIN:
-        result = run.execute_text(read_stdin(), STDIN_NAME)
+        with stdin_as_file() as copy:
+            result = run.execute_file(copy, STDIN_NAME)
     else:
         show = progress.wanted(quiet or as_json)
         with progress.Progress(_probe(run, job, progress.count_lines(job) if show else 0), show):

@@ -30,3 +30,27 @@ def test_a_syntax_error_anywhere_prints_only_the_error_record(tmp_path: Path) ->
     result = invoke("parse", "--json", job)
     assert result.exit_code == 65
     assert list(json.loads(result.stdout)) == ["error"]  # no half-written tree before it
+
+
+def _whole_text_refused(*args: object, **kwargs: object) -> None:
+    raise AssertionError("standard input was read whole instead of streamed")
+
+
+@pytest.mark.parametrize("command", [["parse", "-"], ["parse", "-", "--json"], ["run", "-", "--json"], ["lint", "-"]])
+def test_standard_input_streams_like_a_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                            command: list[str]) -> None:
+    """A million-line job on stdin took 2 GB when read whole; copied to a temporary file it streams."""
+    import tempfile
+
+    import edingcnc_lang.parser
+    import edingcnc_lang.runner
+
+    job = ROOT / "examples/pocket.nc"
+    from_file = invoke(*[job if arg == "-" else arg for arg in command])
+    monkeypatch.setattr(edingcnc_lang.parser, "parse_text", _whole_text_refused)
+    monkeypatch.setattr(edingcnc_lang.runner.Run, "execute_text", _whole_text_refused)
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    from_stdin = invoke(*command, input=job.read_bytes())
+    assert from_stdin.exit_code == from_file.exit_code == 0, from_stdin.stderr
+    assert from_stdin.stdout == from_file.stdout.replace(json.dumps(str(job)), json.dumps("<stdin>"))
+    assert list(tmp_path.iterdir()) == []  # the copy is gone
