@@ -7,11 +7,12 @@ start without them.
 from __future__ import annotations
 
 import os
-import stat
 from typing import TYPE_CHECKING, Any
 
 import click
 from click.shell_completion import CompletionItem
+
+from ..source import is_device
 
 if TYPE_CHECKING:
     from ..host import DialogAnswer
@@ -64,7 +65,7 @@ def _unreadable(value: str) -> str | None:
         mode = os.stat(value).st_mode
     except OSError as exc:
         return f"{value!r} cannot be read: {exc.strerror or exc}"
-    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+    if is_device(mode):
         return f"{value!r} is a device, not a file"
     return None
 
