@@ -215,6 +215,8 @@ def _explain(text: str, exc: UnexpectedInput) -> _LineError:
     lone = _LONE_LETTER.search(text[:col - 1].rstrip())
     if ch.isalpha() and lone:  # G1 X30 Y O30: the Y has no value
         return _LineError("E108", f"word '{lone.group(1).upper()}' needs a value", lone.start(1) + 1)
+    if ch == "\r":  # a file with lone CRs (classic Mac) reads as one long line
+        return _LineError("E100", "carriage return without a line feed: lines end in LF or CRLF", col)
     if isinstance(exc, UnexpectedCharacters):
         return _LineError("E100", f"unexpected character '{ch}'", col)
     token = str(exc.token) if isinstance(exc, UnexpectedToken) else ch
