@@ -30,6 +30,9 @@ class ClosedStream(io.TextIOBase):
     def write(self, text: str) -> int:
         raise OSError(errno.EBADF, os.strerror(errno.EBADF))
 
+    def fileno(self) -> int:  # what the language server asks for first
+        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+
 
 class QuietStream(io.TextIOBase):
     """Stands for stderr: once a write fails (``2> /dev/full``) the rest goes to the null device.

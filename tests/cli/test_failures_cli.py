@@ -110,11 +110,12 @@ def test_a_full_stderr_keeps_the_exit_code(tmp_path: Path, command: str, code: i
     assert result.returncode == code  # as with 2>&-: there is no one left to tell
 
 
-def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path) -> None:
+@pytest.mark.parametrize("command", ["ecnc run --json job.nc >&-", "ecnc lsp < /dev/null >&-"])
+def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path, command: str) -> None:
     write(tmp_path, "job.nc", "G0 X1\n")
-    result = _shell("ecnc run --json job.nc >&-", tmp_path)
+    result = _shell(command, tmp_path)
     assert result.returncode == 70
-    assert result.stderr == "error: cannot write standard output: Bad file descriptor\n"
+    assert result.stderr == "error: cannot write standard output: Bad file descriptor\n"  # not 'fileno'
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
