@@ -49,6 +49,10 @@ DEFAULT_MAX_STEPS = 100_000_000
 # 50 times its size in memory, so a larger file (a wrong --ini, a log renamed) is refused.
 MAX_INI_BYTES = 1024 * 1024
 
+# Nodes of a ZHC height table (ZHCINIT, ZHCINITEX, or a table ZHCL reads): a probed grid holds a
+# few hundred; the table is allocated whole, so its header is checked against this first.
+MAX_ZHC_POINTS = 100_000
+
 # Samples of one move when a run samples the trajectory (kinematics, --samples, the planner):
 # each needs a few hundred bytes while the move is checked, so this bounds the memory; at the
 # usual 200 Hz it is a move of 83 minutes.
