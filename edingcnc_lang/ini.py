@@ -299,21 +299,27 @@ def _signals_held() -> Iterator[None]:
     """Hold Ctrl-C and SIGTERM until the block is done, so a write-back is never cut short.
 
     Above all the in-place rewrite (hard links, another owner), which a stop between writing and
-    truncating would leave half old, half new; a held signal takes effect right after.  Only in
-    the main thread, where Python handles signals, and only where signals can be blocked.
+    truncating would leave half old, half new.  A signal that arrives meanwhile is noted and sent
+    again once the old handlers are back (a mask would not do: another thread may take it).
+    Only in the main thread, where Python handles signals.
     """
     import signal
     import threading
 
-    held = {signal.SIGINT, getattr(signal, "SIGTERM", signal.SIGINT)}
-    if not hasattr(signal, "pthread_sigmask") or threading.current_thread() is not threading.main_thread():
+    if threading.current_thread() is not threading.main_thread():
         yield
         return
-    before = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    received: list[int] = []
+    held = [sig for sig in (signal.SIGINT, getattr(signal, "SIGTERM", None))
+            if sig is not None and signal.getsignal(sig) is not None]
+    previous = {sig: signal.signal(sig, lambda signum, _frame: received.append(signum)) for sig in held}
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, before)
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+        for sig in received[:1]:
+            signal.raise_signal(sig)
 
 
 def _remove_stale_temporaries(path: Path) -> None:
