@@ -13,12 +13,12 @@ import click
 from click.shell_completion import CompletionItem
 
 from ..source import is_device
+from .streams import STDIN  # "-" as a job or lint path: read standard input (re-exported)
 
 if TYPE_CHECKING:
     from ..host import DialogAnswer
 
 
-STDIN = "-"  # as a job or lint path: read standard input
 STDOUT = "-"  # as an output file (--trace -): write standard output
 
 

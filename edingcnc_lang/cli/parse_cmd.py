@@ -1,7 +1,6 @@
 """``ecnc parse FILE [--json]``: check the syntax of a file, optionally dump its AST."""
 from __future__ import annotations
 
-import contextlib
 import sys
 
 import click
@@ -9,8 +8,8 @@ import click
 from ..errors import EXIT_OK
 from .base import Command
 from .options import json_option
-from .params import INPUT_FILE, STDIN
-from .streams import STDIN_NAME, stdin_as_file
+from .params import INPUT_FILE
+from .streams import job_to_read_twice
 
 
 @click.command("parse", cls=Command, short_help="Parse FILE without running it (exit 65 on syntax errors).")
@@ -22,10 +21,9 @@ def parse(file: str, as_json: bool, no_spans: bool) -> int:
     from ..parser import check_file, read_statements
     from ..serialize import write_program
 
-    with contextlib.ExitStack() as stack:
-        path, name = (stack.enter_context(stdin_as_file()), STDIN_NAME) if file == STDIN else (file, file)
+    with job_to_read_twice(file) as (path, name):
         check_file(path, name)  # streams: memory stays flat however long the file is
         if as_json:  # then written as it is read again
             reader = read_statements(path, name=name)
-            write_program(name, reader, lambda: reader.unit, sys.stdout, with_spans=not no_spans)
+            write_program(name or file, reader, lambda: reader.unit, sys.stdout, with_spans=not no_spans)
     return EXIT_OK

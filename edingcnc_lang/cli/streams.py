@@ -12,12 +12,14 @@ import contextlib
 import errno
 import io
 import os
+import stat
 import sys
 from collections.abc import Iterator
 from pathlib import Path
-from typing import TextIO
+from typing import BinaryIO, TextIO
 
 
+STDIN = "-"  # as a job or lint path: read standard input
 STDIN_NAME = "<stdin>"  # how messages name a file read from standard input
 
 
@@ -100,17 +102,42 @@ def stdin_as_file() -> Iterator[Path]:
     after its BOM) and streamed, so memory stays flat however long the input is (the whole text in
     memory took 2 GB for a million-line job).  No macro.cnc or cnc.ini lies beside it.
     """
+    buffer = getattr(sys.stdin, "buffer", None)
+    if buffer is None:  # already text (an embedding program's StringIO)
+        buffer = io.BytesIO(sys.stdin.read().encode("utf-8"))
+    with _copied(buffer) as path:
+        yield path
+
+
+@contextlib.contextmanager
+def job_to_read_twice(job: str) -> Iterator[tuple[Path, str | None]]:
+    """A job (``-`` for stdin) as a regular file that ``run`` and ``parse --json`` may read twice
+    (checked whole, then streamed again), and what messages call it (None: its path).
+
+    Standard input and a FIFO (``ecnc run <(generate-job)``) can be read only once: they are copied
+    to a temporary file first (a FIFO read twice ran nothing, silently).
+    """
+    if job == STDIN:
+        with stdin_as_file() as path:
+            yield path, STDIN_NAME
+        return
+    if stat.S_ISREG(os.stat(job).st_mode):
+        yield Path(job), None
+        return
+    with open(job, "rb") as source, _copied(source) as path:
+        yield path, str(Path(job))
+
+
+@contextlib.contextmanager
+def _copied(source: BinaryIO) -> Iterator[Path]:
+    """``source`` copied in blocks to a file in a private temporary folder, removed afterwards."""
     import shutil
     import tempfile
 
     with tempfile.TemporaryDirectory(prefix="ecnc-stdin-") as folder:
         path = Path(folder) / "stdin.nc"
-        buffer = getattr(sys.stdin, "buffer", None)
         with open(path, "wb") as spool:
-            if buffer is None:  # already text (an embedding program's StringIO)
-                spool.write(sys.stdin.read().encode("utf-8"))
-            else:
-                shutil.copyfileobj(buffer, spool, 1 << 20)
+            shutil.copyfileobj(source, spool, 1 << 20)
         yield path
 
 

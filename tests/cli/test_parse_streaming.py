@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import json
+import os
+import threading
 from pathlib import Path
 
 import pytest
@@ -54,3 +56,19 @@ def test_standard_input_streams_like_a_file(tmp_path: Path, monkeypatch: pytest.
     assert from_stdin.exit_code == from_file.exit_code == 0, from_stdin.stderr
     assert from_stdin.stdout == from_file.stdout.replace(json.dumps(str(job)), json.dumps("<stdin>"))
     assert list(tmp_path.iterdir()) == []  # the copy is gone
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+@pytest.mark.parametrize("command", [["run", "{job}", "--json"], ["parse", "{job}", "--json"]])
+def test_a_fifo_job_is_read_whole_though_it_can_be_read_only_once(tmp_path: Path, command: list[str]) -> None:
+    """ecnc run <(generate-job): checked, then run, from one copy (reading the FIFO twice ran nothing)."""
+    job = ROOT / "examples/pocket.nc"
+    fifo = tmp_path / "job.nc"
+    os.mkfifo(fifo)
+    writer = threading.Thread(target=fifo.write_bytes, args=(job.read_bytes(),))
+    writer.start()
+    from_fifo = invoke(*[arg.format(job=fifo) for arg in command])
+    writer.join()
+    from_file = invoke(*[arg.format(job=job) for arg in command])
+    assert from_fifo.exit_code == from_file.exit_code == 0, from_fifo.stderr
+    assert from_fifo.stdout == from_file.stdout.replace(json.dumps(str(job)), json.dumps(str(fifo)))
