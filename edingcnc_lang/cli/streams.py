@@ -136,8 +136,11 @@ def _copied(source: BinaryIO) -> Iterator[Path]:
 
     with tempfile.TemporaryDirectory(prefix="ecnc-stdin-") as folder:
         path = Path(folder) / "stdin.nc"
-        with open(path, "wb") as spool:
-            shutil.copyfileobj(source, spool, 1 << 20)
+        try:
+            with open(path, "wb") as spool:
+                shutil.copyfileobj(source, spool, 1 << 20)
+        except OSError as exc:  # a full temporary folder: name the copy, not standard output
+            raise OSError(exc.errno, exc.strerror, str(path)) from exc
         yield path
 
 

@@ -72,3 +72,16 @@ def test_a_fifo_job_is_read_whole_though_it_can_be_read_only_once(tmp_path: Path
     from_file = invoke(*[arg.format(job=job) for arg in command])
     assert from_fifo.exit_code == from_file.exit_code == 0, from_fifo.stderr
     assert from_fifo.stdout == from_file.stdout.replace(json.dumps(str(job)), json.dumps(str(fifo)))
+
+
+def test_a_full_temporary_folder_is_named_not_standard_output(monkeypatch: pytest.MonkeyPatch) -> None:
+    import errno
+    import shutil
+
+    def full(*args: object) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(shutil, "copyfileobj", full)
+    result = invoke("run", "-", input="G0 X1\n")
+    assert result.exit_code == 70
+    assert "stdin.nc: error: No space left on device" in result.stderr and "standard output" not in result.stderr
