@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from .canon import Pose
 from .errors import EcncError, Location
+from .limits import MAX_ZHC_POINTS
 
 TABLE_HEADER = "; ecnc ZHC height table"
 _TABLE_KEYS = ("nx", "ny", "x0", "y0", "dx", "dy")
@@ -89,6 +90,15 @@ class ZhcTable:
     dx: float
     dy: float
     heights: list[list[float | None]]
+
+    @staticmethod
+    def grid_problem(dx: float, dy: float, nx: float, ny: float) -> str | None:
+        """What is wrong with a grid's spacing and size, if anything (checked before it is allocated)."""
+        sizes_ok = all(math.isfinite(v) for v in (dx, dy, nx, ny)) and dx > 0 and dy > 0
+        if sizes_ok and nx >= 1 and ny >= 1 and nx == int(nx) and ny == int(ny) and nx * ny <= MAX_ZHC_POINTS:
+            return None
+        return (f"grid sizes must be above 0 and nX, nY whole numbers from 1 (at most {MAX_ZHC_POINTS:,} points); "
+                f"got {dx:g} x {dy:g} mm, {nx:g} x {ny:g} points")
 
     @classmethod
     def empty(cls, nx: int, ny: int, x0: float, y0: float, dx: float, dy: float) -> "ZhcTable":
@@ -163,6 +173,9 @@ class ZhcTable:
         missing = [key for key in _TABLE_KEYS if key not in header]
         if missing:
             raise HeightMapError(f"the table header lacks {', '.join(missing)}", Location(shown))
+        problem = cls.grid_problem(header["dx"], header["dy"], header["nx"], header["ny"])
+        if problem or not math.isfinite(header["x0"] + header["y0"]):
+            raise HeightMapError(problem or "x0 and y0 must be numbers", Location(shown))
         table = cls.empty(int(header["nx"]), int(header["ny"]), header["x0"], header["y0"], header["dx"], header["dy"])
         data = rows[len(_TABLE_KEYS):]
         if len(data) != table.ny:

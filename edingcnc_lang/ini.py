@@ -21,6 +21,7 @@ from pathlib import Path
 from types import MappingProxyType
 
 from edingcnc_lang.errors import ConfigError, Location
+from edingcnc_lang.limits import MAX_INI_BYTES
 
 _BOM = b"\xef\xbb\xbf"
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
@@ -92,11 +93,17 @@ def _classify(lines: list[tuple[str, str]]) -> list[tuple[str | None, _Entry | N
 
 
 def _read_bytes(path: Path) -> bytes:
+    """The whole file, up to MAX_INI_BYTES; a larger one is an error, not gigabytes of memory."""
     try:
-        return path.read_bytes()
+        with open(path, "rb") as handle:
+            raw = handle.read(MAX_INI_BYTES + 1)
     except OSError as exc:
         raise ConfigError(f"cannot read machine configuration: {exc.strerror or exc}",
                           Location(str(path))) from exc
+    if len(raw) > MAX_INI_BYTES:
+        raise ConfigError(f"machine configuration larger than {MAX_INI_BYTES // (1024 * 1024)} MB (the limit; a "
+                          "cnc.ini holds some 50 KB): is this the right file?", Location(str(path)))
+    return raw
 
 
 def _decode(raw: bytes) -> str:
@@ -287,6 +294,34 @@ def _locked(path: Path) -> Iterator[None]:
         os.close(fd)
 
 
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """Hold Ctrl-C and SIGTERM until the block is done, so a write-back is never cut short.
+
+    Above all the in-place rewrite (hard links, another owner), which a stop between writing and
+    truncating would leave half old, half new.  A signal that arrives meanwhile is noted and sent
+    again once the old handlers are back (a mask would not do: another thread may take it).
+    Only in the main thread, where Python handles signals.
+    """
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    received: list[int] = []
+    held = [sig for sig in (signal.SIGINT, getattr(signal, "SIGTERM", None))
+            if sig is not None and signal.getsignal(sig) is not None]
+    previous = {sig: signal.signal(sig, lambda signum, _frame: received.append(signum)) for sig in held}
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+        for sig in received[:1]:
+            signal.raise_signal(sig)
+
+
 def _remove_stale_temporaries(path: Path) -> None:
     """Temporary files of a write-back that was killed (only called under the lock, so none is live)."""
     for stale in path.parent.glob(f".{glob.escape(path.name)}.*.tmp"):
@@ -307,7 +342,7 @@ def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -
         return
     target = Path(os.path.realpath(path))
     try:
-        with _locked(target):
+        with _locked(target), _signals_held():
             info = target.stat()
             if not info.st_mode & (stat.S_IWUSR | stat.S_IWGRP | stat.S_IWOTH) or not os.access(target, os.W_OK):
                 raise ConfigError("cannot write variables back: the file is read-only (mode "

@@ -45,6 +45,14 @@ _NOT_CODE = re.compile(r'"[^"\n]*"|\([^)\n]*\)|;.*')
 # is a million steps), and a runaway While [1] stops in a minute or two with a clear error.
 DEFAULT_MAX_STEPS = 100_000_000
 
+# Bytes of a cnc.ini.  A real one holds a few hundred lines (about 50 KB); reading one takes some
+# 50 times its size in memory, so a larger file (a wrong --ini, a log renamed) is refused.
+MAX_INI_BYTES = 1024 * 1024
+
+# Nodes of a ZHC height table (ZHCINIT, ZHCINITEX, or a table ZHCL reads): a probed grid holds a
+# few hundred; the table is allocated whole, so its header is checked against this first.
+MAX_ZHC_POINTS = 100_000
+
 # Samples of one move when a run samples the trajectory (kinematics, --samples, the planner):
 # each needs a few hundred bytes while the move is checked, so this bounds the memory; at the
 # usual 200 Hz it is a move of 83 minutes.

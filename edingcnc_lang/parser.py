@@ -215,6 +215,8 @@ def _explain(text: str, exc: UnexpectedInput) -> _LineError:
     lone = _LONE_LETTER.search(text[:col - 1].rstrip())
     if ch.isalpha() and lone:  # G1 X30 Y O30: the Y has no value
         return _LineError("E108", f"word '{lone.group(1).upper()}' needs a value", lone.start(1) + 1)
+    if ch == "\r":  # a file with lone CRs (classic Mac) reads as one long line
+        return _LineError("E100", "carriage return without a line feed: lines end in LF or CRLF", col)
     if isinstance(exc, UnexpectedCharacters):
         return _LineError("E100", f"unexpected character '{ch}'", col)
     token = str(exc.token) if isinstance(exc, UnexpectedToken) else ch
@@ -511,10 +513,13 @@ class StatementReader:
 
 def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
                     non_plain: Sequence[int] | None = None, tolerant: bool = False,
-                    check_dialogs: bool | None = None) -> StatementReader:
-    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader."""
-    return StatementReader(iter_file_lines(path), os.fspath(path), mode=mode, non_plain=non_plain,
-                           tolerant=tolerant, check_dialogs=check_dialogs)
+                    check_dialogs: bool | None = None, name: str | None = None) -> StatementReader:
+    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader.
+
+    ``name`` is what spans and errors call the file (``<stdin>`` for a copy of standard input).
+    """
+    return StatementReader(iter_file_lines(path), os.fspath(path) if name is None else name, mode=mode,
+                           non_plain=non_plain, tolerant=tolerant, check_dialogs=check_dialogs)
 
 
 @dataclass(frozen=True)
@@ -525,9 +530,9 @@ class CheckedFile:
     non_plain: Sequence[int]
 
 
-def check_file(path: str | os.PathLike[str]) -> CheckedFile:
+def check_file(path: str | os.PathLike[str], name: str | None = None) -> CheckedFile:
     """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong."""
-    reader = read_statements(path, mode="check")
+    reader = read_statements(path, mode="check", name=name)
     subs: dict[str, n.Sub] = {}
     for stmt in reader:
         if isinstance(stmt, n.Sub):

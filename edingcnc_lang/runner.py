@@ -211,15 +211,16 @@ class Run:
         if self.config.initial_string:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
 
-    def execute_file(self, job: Path) -> RunResult:
+    def execute_file(self, job: Path, name: str | None = None) -> RunResult:
+        """Check the job, then run it as it streams in; ``name`` is what messages call it (default its path)."""
         try:
-            checked = check_file(job)
+            checked = check_file(job, name)
         except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move
             raise Interrupted("interrupted (Ctrl-C) while checking the job, before its first move",
-                              Location(os.fspath(job))) from None
+                              Location(name or os.fspath(job))) from None
         self.interpreter.job_tools = cache(lambda: tools_used(iter_file_lines(job)))
         macros = self.load_macros()
-        return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain),
+        return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain, name=name),
                              checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:

@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import codecs
 import os
+import stat
 from collections.abc import Iterator
 from itertools import chain
 from typing import BinaryIO
 
-from .errors import UnreadableFile
+from .errors import Location, UnreadableFile
 from .limits import MAX_LINE_LENGTH
 
 BOM = b"\xef\xbb\xbf"
@@ -35,6 +36,11 @@ def decode_line(raw: bytes) -> str:
 CHUNK = 1 << 20  # bytes read at a time
 
 
+def is_device(mode: int) -> bool:
+    """Whether a file of this ``st_mode`` is a device (``/dev/zero``): input that never ends, so never read."""
+    return stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+
+
 def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
     """Yield the lines of a file without their line ends (LF, with any CRs before it).
 
@@ -50,6 +56,8 @@ def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
     except OSError as exc:
         raise UnreadableFile.of(os.fspath(path), exc) from None
     with handle:
+        if is_device(os.fstat(handle.fileno()).st_mode):
+            raise UnreadableFile("cannot read: a device, not a file", Location(os.fspath(path)))
         head = handle.read(len(BOM))
         if head.startswith(UTF16_BOMS):
             yield from _utf16_lines(handle, head)

@@ -17,6 +17,14 @@ def test_a_missing_file_is_an_ecnc_error_in_the_api(tmp_path: Path) -> None:
         assert caught.value.format() == f"{tmp_path / 'missing.nc'}: error: cannot read: No such file or directory"
 
 
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero")
+def test_a_device_is_refused_not_read_for_ever_in_the_api() -> None:
+    for read in (run_file, parse_file):
+        with pytest.raises(UnreadableFile) as caught:
+            read(Path("/dev/zero"))  # never ends: reading it would hang
+        assert caught.value.format() == "/dev/zero: error: cannot read: a device, not a file"
+
+
 @pytest.mark.parametrize("option", ["--trace", "--samples", "--events"])
 def test_an_empty_output_file_name_is_a_usage_error(tmp_path: Path, option: str) -> None:
     from tests.cli_runner import invoke

@@ -20,6 +20,7 @@ from edingcnc_lang.config import (
 )
 from edingcnc_lang.errors import ConfigError
 from edingcnc_lang.ini import read_ini
+from edingcnc_lang.limits import MAX_INI_BYTES
 
 SAMPLE = Path("/work/shared/samples/cnc.ini")
 DATA = Path(__file__).parent / "data" / "config"
@@ -344,3 +345,12 @@ def test_axis_limits_are_the_joints_on_a_trivial_machine_and_the_cartesian_box_w
     assert delta.axis_limits()[1][:3] == [400.0, 400.0, 200.0]  # not the carriages' 0..420 mm
     plain = MachineConfig.default()
     assert plain.axis_limits() == ([j.negative_limit for j in plain.joints], [j.positive_limit for j in plain.joints])
+
+
+def test_an_ini_past_the_size_limit_is_an_error_not_gigabytes(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_bytes(b"[VARIABLES]\n" + b"#4000 = 1\n" * (MAX_INI_BYTES // 10))  # just past the limit
+    with pytest.raises(ConfigError, match=r"machine configuration larger than 1 MB \(the limit"):
+        read_ini(ini)
+    ini.write_bytes(ini.read_bytes()[:MAX_INI_BYTES])  # at the limit: read
+    assert read_ini(ini).get("variables", "#4000") is not None

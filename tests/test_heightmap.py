@@ -50,6 +50,13 @@ def test_zhc_table_fills_the_node_nearest_each_probe_and_round_trips(tmp_path: P
     ("nx 2\nny 1\nx0 0\ny0 0\ndx 1\ndy 1\n1 2 3\n", "3 heights on this row"),
     ("nx 2\nny 2\nx0 0\ny0 0\ndx 1\ndy 1\n1 2\n", "1 rows of heights"),
     ("nx 2\nny 1\nx0 0\ny0 0\ndx 1\ndy 1\n1 abc\n", "'abc' is not a number"),
+    # hostile headers (a job archive may ship the table): checked before the grid is allocated
+    ("nx 1e308\nny 2\nx0 0\ny0 0\ndx 1\ndy 1\n1 2\n", "at most 100,000 points"),  # was OverflowError
+    ("nx 100000\nny 100000\nx0 0\ny0 0\ndx 1\ndy 1\n1 2\n", "at most 100,000 points"),  # was 80 GB
+    ("nx nan\nny 1\nx0 0\ny0 0\ndx 1\ndy 1\n1 2\n", "nX, nY whole numbers"),  # was ValueError
+    ("nx 2.5\nny 1\nx0 0\ny0 0\ndx 1\ndy 1\n1 2\n", "nX, nY whole numbers"),
+    ("nx 2\nny 1\nx0 0\ny0 0\ndx 0\ndy 1\n1 2\n", "grid sizes must be above 0"),
+    ("nx 2\nny 1\nx0 nan\ny0 0\ndx 1\ndy 1\n1 2\n", "x0 and y0 must be numbers"),
 ])
 def test_a_broken_table_file_is_an_error_naming_the_file(tmp_path: Path, text: str, message: str) -> None:
     path = tmp_path / "t.txt"

@@ -3,13 +3,17 @@ lock; read-only files refused; hard links and owner kept; temporaries of killed 
 from __future__ import annotations
 
 import os
+import signal
 import stat
 import subprocess
 import sys
+import threading
+from collections.abc import Mapping
 from pathlib import Path
 
 import pytest
 
+from edingcnc_lang import ini as ini_module
 from edingcnc_lang.errors import ConfigError
 from edingcnc_lang.runner import RunOptions, run_string
 
@@ -78,3 +82,23 @@ def test_temporaries_of_a_killed_save_are_removed(ini: Path) -> None:
     unrelated.write_bytes(b"not ours")
     save(ini, "#4000 = 5\n")
     assert not stale.exists() and unrelated.exists()
+
+
+def test_a_ctrl_c_during_the_write_back_waits_until_the_file_is_whole(ini: Path,
+                                                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    os.link(ini, ini.parent / "link.ini")  # rewritten in place: a stop mid-write would cut it short
+    update = ini_module._update_variables
+
+    def interrupted(text: str, values: Mapping[int, float]) -> str:
+        os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C while the new text is being made
+        return update(text, values)
+
+    monkeypatch.setattr(ini_module, "_update_variables", interrupted)
+    other = threading.Event()  # a thread that could take the signal (a mask on the main thread did not hold)
+    threading.Thread(target=other.wait, daemon=True).start()
+    try:
+        with pytest.raises(KeyboardInterrupt):  # still stops the run, right after the write
+            ini_module.write_variables(ini, {4000: 5.0, 4123: 7.0})
+    finally:
+        other.set()
+    assert ini.read_bytes() == (INI.replace("#4000 = 1.000000", "#4000 = 5.000000") + "#4123 = 7.000000\r\n").encode()

@@ -13,7 +13,7 @@ from .base import Command, usage_error
 from ..gcpause import whole_trees
 from .options import ini_option, macro_options
 from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN
-from .streams import STDIN_NAME, read_stdin
+from .streams import STDIN_NAME, stdin_as_file
 from .style import styled
 
 if TYPE_CHECKING:
@@ -84,13 +84,9 @@ def _lint_with_stdin(paths: tuple[str, ...], options: LintOptions) -> list[Diagn
     macro.cnc beside it there) and its findings are renamed back.
     """
     import dataclasses
-    import tempfile
-    from pathlib import Path
 
     from ..lint import lint_paths
 
-    with tempfile.TemporaryDirectory(prefix="ecnc-stdin-") as folder:
-        job = Path(folder) / "stdin.nc"
-        job.write_text(read_stdin(), encoding="utf-8")
+    with stdin_as_file() as job:
         findings = lint_paths([str(job) if p == STDIN else p for p in paths], options)
     return [dataclasses.replace(d, path=STDIN_NAME) if d.path == str(job) else d for d in findings]

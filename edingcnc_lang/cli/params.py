@@ -12,11 +12,13 @@ from typing import TYPE_CHECKING, Any
 import click
 from click.shell_completion import CompletionItem
 
+from ..source import is_device
+from .streams import STDIN  # "-" as a job or lint path: read standard input (re-exported)
+
 if TYPE_CHECKING:
     from ..host import DialogAnswer
 
 
-STDIN = "-"  # as a job or lint path: read standard input
 STDOUT = "-"  # as an output file (--trace -): write standard output
 
 
@@ -50,10 +52,21 @@ class _PathType(click.ParamType):
 
 
 def _unreadable(value: str) -> str | None:
+    """Why ``value`` cannot be read as input, or None.
+
+    A device (``/dev/zero``, ``/dev/urandom``) is refused: it never ends, so reading it would hang
+    and fill memory.  A FIFO is allowed, for a generator's output (``ecnc run <(gen)``).
+    """
     if not os.path.exists(value):
         return f"{value!r} does not exist"
     if not os.access(value, os.R_OK):
         return f"{value!r} is not readable"
+    try:
+        mode = os.stat(value).st_mode
+    except OSError as exc:
+        return f"{value!r} cannot be read: {exc.strerror or exc}"
+    if is_device(mode):
+        return f"{value!r} is a device, not a file"
     return None
 
 

@@ -11,8 +11,8 @@ from ..errors import EXIT_OK
 from . import progress
 from .base import Command, usage_error
 from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options, override_options
-from .params import OUTPUT_FILE, STDIN, STDOUT
-from .streams import STDIN_NAME, read_stdin
+from .params import OUTPUT_FILE, STDOUT
+from .streams import STDIN_NAME, job_to_read_twice
 
 if TYPE_CHECKING:
     from ..runner import Run
@@ -59,12 +59,10 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
                                   plan=as_json or progress.wanted(quiet))
     # an error carries the state so far: main() prints it with --json
     run = Run(options)
-    if job == STDIN:
-        result = run.execute_text(read_stdin(), STDIN_NAME)
-    else:
-        show = progress.wanted(quiet or as_json)
-        with progress.Progress(_probe(run, job, progress.count_lines(job) if show else 0), show):
-            result = run.execute_file(Path(job))
+    with job_to_read_twice(job) as (path, name):
+        show = name != STDIN_NAME and progress.wanted(quiet or as_json)
+        with progress.Progress(_probe(run, job, progress.count_lines(str(path)) if show else 0), show):
+            result = run.execute_file(path, name)
     if as_json:
         import json  # only with --json: a short run starts faster without it
 

@@ -18,6 +18,7 @@ from ..errors import EcncError
 from ..heightmap import ZhcTable
 from ..job_files import OpenMode, job_file, open_job_file
 from ..parser import parse_line
+from ..tree_builder import LineError
 from .state import MachineState
 
 
@@ -28,7 +29,10 @@ class HeightComp(MachineState):
 
     def _command_values(self, stmt: n.Command, count: int, usage: str) -> list[float]:
         """The ``count`` numeric arguments of a command (``ZHCINIT [#4104] 10 [#4101]``), evaluated."""
-        message = parse_line(f"msg {stmt.args}", stmt.span.path, stmt.span.line) if stmt.args else None
+        try:
+            message = parse_line(f"msg {stmt.args}", stmt.span.path, stmt.span.line) if stmt.args else None
+        except LineError:  # ZHCINIT 10 5 nan: not a list of values
+            message = None
         items = message.items if isinstance(message, n.Message) else ()
         if len(items) != count or any(isinstance(item, (str, n.Stamp)) for item in items):
             raise self.fail(f"{usage} (got {stmt.args or 'nothing'!r})", stmt.span)
@@ -40,9 +44,9 @@ class HeightComp(MachineState):
             dx = dy = size
         else:
             dx, dy, nx, ny = self._command_values(stmt, 4, "ZHCINITEX expects gridSizeX gridSizeY nX nY")
-        if dx <= 0 or dy <= 0 or nx < 1 or ny < 1 or nx != int(nx) or ny != int(ny) or nx * ny > 100_000:
-            raise self.fail(f"{stmt.name.upper()}: grid sizes must be above 0 and nX, nY whole numbers from 1 "
-                            f"(at most 100,000 points); got {dx:g} x {dy:g} mm, {nx:g} x {ny:g} points", stmt.span)
+        problem = ZhcTable.grid_problem(dx, dy, nx, ny)
+        if problem:
+            raise self.fail(f"{stmt.name.upper()}: {problem}", stmt.span)
         origin = self.offset()
         self.zhc = ZhcTable.empty(int(nx), int(ny), origin[0], origin[1], dx, dy)
 

@@ -81,6 +81,16 @@ def test_a_folder_where_a_file_belongs_is_a_usage_error(tmp_path: Path) -> None:
     assert f"argument JOB: '{tmp_path}' is a folder, not a file" in result.stderr
 
 
+@pytest.mark.skipif(not os.path.exists(os.devnull) or os.name != "posix", reason="needs /dev/zero")
+@pytest.mark.parametrize("command", [["run", "/dev/zero"], ["parse", "/dev/zero"], ["lint", "/dev/zero"],
+                                     ["run", "{job}", "--ini", "/dev/zero"], ["run", "{job}", "--macro", "/dev/zero"],
+                                     ["run", "{job}", "--probe-surface", "/dev/zero"], ["mdi", "--ini", "/dev/zero"]])
+def test_a_device_as_an_input_file_is_a_usage_error_not_a_hang(command: list[str], job: Path) -> None:
+    result = invoke(*(a.format(job=job) for a in command))  # /dev/zero never ends: reading it would hang
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert "'/dev/zero' is a device, not a file" in result.stderr
+
+
 def test_log_dir_must_be_an_existing_folder(job: Path) -> None:
     result = invoke("run", job, "--log-dir", job)
     assert result.exit_code == 2

@@ -114,11 +114,22 @@ def test_version_works_with_stderr_closed(tmp_path: Path) -> None:
     assert (result.returncode, result.stdout) == (0, "ecnc, version 0.1.0\n")
 
 
-def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path) -> None:
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
+@pytest.mark.parametrize(("command", "code"), [("ecnc run job.nc", 0), ("ecnc run bad.nc", 65), ("ecnc lint bad.nc", 1),
+                                               ("ecnc run job.nc --bogus", 2), ("ecnc --version", 0)])
+def test_a_full_stderr_keeps_the_exit_code(tmp_path: Path, command: str, code: int) -> None:
+    write(tmp_path, "job.nc", 'G0 X1\nmsg "to stderr"\n')  # the message is the first write to fail
+    write(tmp_path, "bad.nc", "G0 X[1\n")
+    result = _shell(f"{command} 2> /dev/full", tmp_path)
+    assert result.returncode == code  # as with 2>&-: there is no one left to tell
+
+
+@pytest.mark.parametrize("command", ["ecnc run --json job.nc >&-", "ecnc lsp < /dev/null >&-"])
+def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path, command: str) -> None:
     write(tmp_path, "job.nc", "G0 X1\n")
-    result = _shell("ecnc run --json job.nc >&-", tmp_path)
+    result = _shell(command, tmp_path)
     assert result.returncode == 70
-    assert result.stderr == "error: cannot write standard output: Bad file descriptor\n"
+    assert result.stderr == "error: cannot write standard output: Bad file descriptor\n"  # not 'fileno'
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")

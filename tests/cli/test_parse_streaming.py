@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import json
+import os
+import threading
 from pathlib import Path
 
 import pytest
@@ -30,3 +32,56 @@ def test_a_syntax_error_anywhere_prints_only_the_error_record(tmp_path: Path) ->
     result = invoke("parse", "--json", job)
     assert result.exit_code == 65
     assert list(json.loads(result.stdout)) == ["error"]  # no half-written tree before it
+
+
+def _whole_text_refused(*args: object, **kwargs: object) -> None:
+    raise AssertionError("standard input was read whole instead of streamed")
+
+
+@pytest.mark.parametrize("command", [["parse", "-"], ["parse", "-", "--json"], ["run", "-", "--json"], ["lint", "-"]])
+def test_standard_input_streams_like_a_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                            command: list[str]) -> None:
+    """A million-line job on stdin took 2 GB when read whole; copied to a temporary file it streams."""
+    import tempfile
+
+    import edingcnc_lang.parser
+    import edingcnc_lang.runner
+
+    job = ROOT / "examples/pocket.nc"
+    from_file = invoke(*[job if arg == "-" else arg for arg in command])
+    monkeypatch.setattr(edingcnc_lang.parser, "parse_text", _whole_text_refused)
+    monkeypatch.setattr(edingcnc_lang.runner.Run, "execute_text", _whole_text_refused)
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    from_stdin = invoke(*command, input=job.read_bytes())
+    assert from_stdin.exit_code == from_file.exit_code == 0, from_stdin.stderr
+    assert from_stdin.stdout == from_file.stdout.replace(json.dumps(str(job)), json.dumps("<stdin>"))
+    assert list(tmp_path.iterdir()) == []  # the copy is gone
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+@pytest.mark.parametrize("command", [["run", "{job}", "--json"], ["parse", "{job}", "--json"]])
+def test_a_fifo_job_is_read_whole_though_it_can_be_read_only_once(tmp_path: Path, command: list[str]) -> None:
+    """ecnc run <(generate-job): checked, then run, from one copy (reading the FIFO twice ran nothing)."""
+    job = ROOT / "examples/pocket.nc"
+    fifo = tmp_path / "job.nc"
+    os.mkfifo(fifo)
+    writer = threading.Thread(target=fifo.write_bytes, args=(job.read_bytes(),))
+    writer.start()
+    from_fifo = invoke(*[arg.format(job=fifo) for arg in command])
+    writer.join()
+    from_file = invoke(*[arg.format(job=job) for arg in command])
+    assert from_fifo.exit_code == from_file.exit_code == 0, from_fifo.stderr
+    assert from_fifo.stdout == from_file.stdout.replace(json.dumps(str(job)), json.dumps(str(fifo)))
+
+
+def test_a_full_temporary_folder_is_named_not_standard_output(monkeypatch: pytest.MonkeyPatch) -> None:
+    import errno
+    import shutil
+
+    def full(*args: object) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(shutil, "copyfileobj", full)
+    result = invoke("run", "-", input="G0 X1\n")
+    assert result.exit_code == 70
+    assert "stdin.nc: error: No space left on device" in result.stderr and "standard output" not in result.stderr

@@ -14,6 +14,8 @@ ROOT = Path(__file__).resolve().parents[2]
 SEED_FILES = sorted([*ROOT.glob("examples/**/*.nc"), *ROOT.glob("examples/**/*.cnc"), ROOT / "stdlib" / "macro.cnc",
                      *ROOT.glob("tests/lint/cases/*.nc")])
 SEEDS = [path.read_bytes() for path in SEED_FILES if path.stat().st_size < 200_000]
+INI_SEEDS = [path.read_bytes() for path in sorted(ROOT.glob("examples/**/cnc.ini"))]
+ZHC_TABLE_SEEDS = [b"; ecnc ZHC height table\nnx 3\nny 2\nx0 0\ny0 0\ndx 10\ndy 10\n0.1 0.2 nan\n0.3 0.4 0.5\n"]
 
 numbers = st.one_of(st.integers(-99999, 99999).map(str),
                     st.floats(-1e6, 1e6, allow_nan=False).map(lambda v: f"{v:.4f}"),
@@ -58,9 +60,9 @@ programs = st.lists(st.tuples(statements, st.sampled_from(["\n", "\r\n"])).map("
 
 
 @st.composite
-def mutants(draw: st.DrawFn) -> bytes:
-    """A shipped file with a few edits: bytes deleted, repeated, swapped or replaced by delimiters."""
-    data = bytearray(draw(st.sampled_from(SEEDS)))
+def mutants(draw: st.DrawFn, seeds: list[bytes] = SEEDS) -> bytes:
+    """A shipped file (of ``seeds``) with a few edits: bytes deleted, repeated, swapped or replaced by delimiters."""
+    data = bytearray(draw(st.sampled_from(seeds)))
     for _ in range(draw(st.integers(1, 8))):
         if not data:
             break
@@ -74,7 +76,8 @@ def mutants(draw: st.DrawFn) -> bytes:
         elif kind == "insert":
             data[at:at] = draw(st.sampled_from([b"[", b"]", b"(", b")", b'"', b"#", b"-", b";", b"\x00", b"\xff\xfe",
                                                 b"\r", b"\n", b"If [1]\n", b"EndWhile\n", b"Sub x\n", b"M30\n",
-                                                b"GoSub x\n", b"9" * 400, b"[" * 300, b"\xc3"]))
+                                                b"GoSub x\n", b"9" * 400, b"[" * 300, b"\xc3", b"nan", b"1e400",
+                                                b"-1", b"[VARIABLES]\n"]))
         elif kind == "swap":
             other = draw(st.integers(0, len(data) - 1))
             data[at], data[other] = data[other], data[at]

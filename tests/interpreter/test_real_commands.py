@@ -78,6 +78,8 @@ def test_zhc_on_sets_5151_and_a_loaded_table_works_like_a_probed_one(tmp_path: P
     ("ZHCINIT 10 3 3\nG0 X100\nG38.2 Z-5 F100\nZHCADDPOINT\n", "is not on the ZHC grid"),
     ("ZHCINIT 10 3\n", "ZHCINIT expects gridSize nX nY"),
     ("ZHCINIT 0 3 3\n", "grid sizes must be above 0"),
+    ("ZHCINIT 10 5 nan\n", "ZHCINIT expects gridSize nX nY"),  # was a LineError traceback
+    ("ZHCINITEX 1 1 [\n", "ZHCINITEX expects gridSizeX gridSizeY nX nY"),
     ("ZHCL missing.txt\n", "cannot read the height table"),
 ])
 def test_zhc_mistakes_are_refused_with_the_reason(tmp_path: Path, text: str, message: str) -> None:

@@ -1,0 +1,1 @@
+(classic Mac line ends)G0 X1M30
