@@ -12,6 +12,7 @@ from ..plot.names import VIEW_NAMES
 from .base import Command
 from .options import MachineOptions, job_argument, machine_options, override_options
 from .params import OUTPUT_FILE, POSITIVE_INT
+from .streams import job_to_read_twice
 
 if TYPE_CHECKING:
     from ..plot.commands import Written
@@ -53,8 +54,11 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     from ..plot.commands import view_job
 
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
-    written = view_job(Path(job), options, Path(output) if output else None,
-                       max_moves=max_moves, lines=lines, view=view)
+    if output is None and not Path(job).is_file():  # a pipe has no folder to write JOB.png beside
+        raise click.UsageError(f"{job} is a pipe, not a file: name the file to write with -o FILE")
+    with job_to_read_twice(job) as (path, name):
+        written = view_job(path, options, Path(output) if output else None,
+                           max_moves=max_moves, lines=lines, view=view, name=name)
     return report(written)
 
 

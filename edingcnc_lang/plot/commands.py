@@ -43,13 +43,14 @@ def parse_line_range(text: str) -> tuple[int, int]:
 
 
 def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str = "auto", color: str = "tool",
-             fit: str = "job", joints: bool = False) -> Written:
-    """Run ``job`` and draw its toolpath (or with ``joints`` its joint positions over time) into ``out``."""
+             fit: str = "job", joints: bool = False, name: str | None = None) -> Written:
+    """Run ``job`` and draw its toolpath (or with ``joints`` its joint positions over time) into ``out``;
+    ``name`` is what messages and the title call the job (default its path)."""
     from .render import plot_toolpath
 
     target = ensure_parent(out or default_output(job, "-joints.png" if joints else ".png"))
     fmt = picture_target(target)  # a wrong extension or a missing folder is told before the job runs
-    path = record_job(job, options, samples=joints)
+    path = record_job(job, options, samples=joints, name=name)
     if joints:
         from .joints import plot_joints
 
@@ -60,7 +61,7 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
 
 
 def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves: int | None = None,
-             lines: tuple[int, int] | None = None, view: str = "auto") -> Written:
+             lines: tuple[int, int] | None = None, view: str = "auto", name: str | None = None) -> Written:
     """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given).
 
     ``auto`` opens a lathe job (no Y motion) in the lathe view and everything else in the iso view.
@@ -69,11 +70,11 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     from .viewer import MAX_MOVES, write_view
 
     target = ensure_parent(out or default_output(job, ".html"))
-    path = record_job(job, options)
+    path = record_job(job, options, name=name)
     if lines is not None:
         path = path.select_lines(*lines)
         if not len(path):
-            raise EcncError(f"lines {lines[0]} to {lines[1]} make no moves", Location(str(job)))
+            raise EcncError(f"lines {lines[0]} to {lines[1]} make no moves", Location(name or str(job)))
     if view == "auto":
         view = "lathe" if auto_view(path) == "lathe" else "iso"
     write_view(path, target, max_moves or MAX_MOVES, view=view)

@@ -12,7 +12,7 @@ import math
 import tempfile
 from array import array
 from collections.abc import Iterator
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -23,7 +23,7 @@ from ..errors import EcncError
 from ..kinematics.sampling import arc_sweep
 from ..kinematics.trajectory import geometry_of
 from ..planner.estimate import Timing
-from ..runner import RunOptions, RunResult, run_file
+from ..runner import Run, RunOptions, RunResult
 from ..source import iter_file_lines
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
@@ -70,6 +70,7 @@ class Toolpath:
     joint_names: tuple[str, ...] = ()
     kinematics: str = "trivial"
     samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for
+    copies: dict[str, str] = field(default_factory=dict)  # a name in ``paths`` -> the file to read its text from
 
     def __len__(self) -> int:
         return len(self.kinds)
@@ -151,7 +152,7 @@ class Toolpath:
             path = self.paths[file_index]
             chosen: dict[int, str] = {}
             try:
-                for number, text in enumerate(iter_file_lines(path), start=1):
+                for number, text in enumerate(iter_file_lines(self.copies.get(path, path)), start=1):
                     if number in numbers:
                         chosen[number] = text[:limit]
             except OSError:
@@ -233,8 +234,12 @@ def machine_limits(config: MachineConfig) -> tuple[np.ndarray, np.ndarray] | Non
     return np.array(lower, dtype=float), np.array(upper, dtype=float)
 
 
-def record_job(job: str | Path, options: RunOptions | None = None, samples: bool = False) -> Toolpath:
+def record_job(job: str | Path, options: RunOptions | None = None, samples: bool = False,
+               name: str | None = None) -> Toolpath:
     """Run ``job`` and return its toolpath; a runtime error is kept in ``Toolpath.error``.
+
+    ``name`` is what messages and the picture call the job (default its path; the CLI names a
+    piped job's temporary copy after the pipe).
 
     Syntax and configuration errors (nothing ran, or the machine could not be built) are raised.
     Callbacks already in ``options`` still receive every move and event.  With ``samples`` the
@@ -243,7 +248,7 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     if samples:
         with tempfile.TemporaryDirectory(prefix="ecnc-plot-") as folder:
             target = Path(folder) / "samples.npz"
-            path = record_job(job, replace(options or RunOptions(), samples=target))
+            path = record_job(job, replace(options or RunOptions(), samples=target), name=name)
             if target.exists():
                 with np.load(target) as data:
                     path.samples = {name: data[name] for name in data.files}
@@ -266,9 +271,12 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     result: RunResult | None = None
     error: EcncError | None = None
     try:
-        result = run_file(job, replace(options, on_timed_move=on_timed_move, on_event=on_event))
+        result = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event)).execute_file(Path(job), name)
     except EcncError as err:
         if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration, plug-in loading
             raise
         error = err
-    return recorder.toolpath(str(job), config, result, error)
+    path = recorder.toolpath(name or str(job), config, result, error)
+    if name is not None:  # a piped job: its lines are read from the copy that ran
+        path.copies[name] = str(job)
+    return path

@@ -124,3 +124,27 @@ def test_plot_and_kins_plot_tell_a_wrong_picture_name_alike_before_any_work(tmp_
     assert len(set(said)) == 1 and said[0].endswith(
         f"error: cannot write {tmp_path / 'p.jpg'}: the extension names the picture format, one of "
         ".png, .svg, .pdf (not .jpg)")
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "mkfifo"), reason="no FIFOs here")
+@pytest.mark.parametrize("command, out", [("plot", "p.png"), ("view", "p.html")])
+def test_a_piped_job_is_drawn_whole_and_needs_an_output_name(tmp_path: Path, command: str, out: str) -> None:
+    """ecnc plot <(generate-job): drawn from one copy (reading the pipe twice drew an empty picture)."""
+    import os
+    import threading
+
+    fifo = tmp_path / "gen.nc"
+    os.mkfifo(fifo)
+    refused = invoke(command, fifo)  # nothing is read: the pipe's writer is never started
+    assert refused.exit_code == 2 and "is a pipe, not a file: name the file to write with -o FILE" in refused.stderr
+    writer = threading.Thread(target=fifo.write_text, args=(SQUARE,))
+    writer.start()
+    result = invoke(command, fifo, "-o", tmp_path / out)
+    writer.join()
+    assert result.exit_code == 0, result.stderr
+    text = (tmp_path / out).read_bytes()
+    from_file = invoke(command, write(tmp_path, "square.nc", SQUARE), "-o", tmp_path / ("f" + out))
+    assert from_file.exit_code == 0
+    if command == "view":  # the program lines beside the picture come from the copy that ran
+        assert b"G1 X60 F1000" in text and b"G1 X60 F1000" in (tmp_path / ("f" + out)).read_bytes()
+    assert len(text) > 1000
