@@ -1,99 +1,43 @@
 """Parsing: source lines -> AST statements, streaming, with errors in the user's terms.
 
-Each line is one statement, so the grammar parses a single line at a time and
-this module assembles the multi-line blocks (Sub, If, While) from the stream.
-Plain word lines (most CAM output) take a regular-expression fast path that
-builds exactly the Block the grammar would.  Lark trees never leave this module
-and ``tree_builder.py``, which turns them into AST nodes.
+Each line is one statement, so a single line is parsed at a time (``line_parser.py``: the fast
+paths, the grammar, the error messages) and this module assembles the multi-line blocks (Sub,
+If, While) from the stream, in the four reading modes, and offers the whole-file entry points.
 """
 from __future__ import annotations
 
 import os
 import re
-from bisect import bisect_left
 from array import array
+from bisect import bisect_left
 from collections.abc import Iterable, Iterator, Sequence
-from itertools import islice
 from dataclasses import dataclass, field, replace
-from functools import lru_cache
-from pathlib import Path
-from typing import TYPE_CHECKING
-
+from itertools import islice
 
 from . import nodes as n
 from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
 from .dialogs import SYNTAX_CODES, dialog_fields
-from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
-from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, line_problem
-from .markers import Close, LineResult, Open
-from .prose import PROSE_MESSAGE, looks_like_prose
+from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
+from .line_parser import CONDITION_LINE, FAST_LINE, FAST_WORD, parse_line, plain_block
+from .line_parser import is_fast_line, parse_line_grammar, plain_words  # re-exported: the public API
+from .markers import Close, Open
 from .source import iter_file_lines, iter_text_lines
-from .tree_builder import Builder as _Builder, LineError as _LineError, make_block as _make_block
+from .tree_builder import LineError as _LineError
 
-if TYPE_CHECKING:  # lark is imported when a line first needs the grammar (start-up time)
-    from lark import Lark
-    from lark.exceptions import UnexpectedInput
-
-GRAMMAR = Path(__file__).resolve().parent / "grammar" / "macro.lark"
+__all__ = ["CHUNK_LINES", "RUN_LENGTH", "UNITS", "CheckedFile", "StatementReader", "check_file",
+           "is_fast_line", "parse_file", "parse_line", "parse_line_grammar", "parse_text", "plain_block",
+           "plain_words", "read_statements"]
 
 UNITS = frozenset({"mm", "inch"})
 
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
-_FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
-_FAST_LINE = re.compile(rf"^[ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$")
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
-_EMPTY_LINE = re.compile(r"^\s*(?:\((?!\s*msg\b)[^)\n]*\)\s*)*(?:;.*)?$", re.IGNORECASE)
-_FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
-
-
-@lru_cache(maxsize=1)
-def _lark() -> Lark:
-    """The line parser, built once per process from the packaged grammar files."""
-    from lark import Lark
-
-    return Lark.open(str(GRAMMAR), parser="lalr", lexer="contextual",
-                     propagate_positions=True, maybe_placeholders=False, cache=True)
-
-
-def _word_matches(text: str) -> list[re.Match[str]]:
-    """The ``letter number`` words of a plain line, its ``;`` comment left out."""
-    semicolon = text.find(";")
-    return list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
-
-
-def _fast_block(text: str, path: str, line: int) -> n.Block:
-    """The Block for a line of plain ``letter number`` words, without Lark."""
-    words = []
-    for match in _word_matches(text):
-        col, end = match.start() + 1, match.end() + 1
-        span = n.Span(path, line, col, line, end)
-        num_span = n.Span(path, line, match.start(2) + 1, line, end)
-        words.append(n.Word(match.group(1).upper(), n.Number(float(match.group(2)), num_span), span))
-    first, last = words[0].span, words[-1].span
-    return _make_block(words, [], None, False, n.Span(path, line, first.col, line, last.end_col))
-
-
-def plain_block(text: str, path: str, line: int) -> n.PlainBlock:
-    """The PlainBlock for a line of plain words: one node per line instead of one per word."""
-    matches = _word_matches(text)
-    words = [(m.group(1).upper(), float(m.group(2)), m.start() + 1) for m in matches]
-    line_number = None
-    if words[0][0] == "N":
-        line_number = int(words[0][1])
-        del words[0]
-    span = n.Span(path, line, matches[0].start() + 1, line, matches[-1].end() + 1)
-    return n.PlainBlock(tuple(words), line_number, span)
-
-
-def plain_words(text: str) -> list[tuple[str, str]]:
-    """(letter, number text) pairs of a plain word line, comment excluded."""
-    semicolon = text.find(";")
-    return _FAST_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
-
-
 CHUNK_LINES = 8192
-_NON_PLAIN = re.compile(rf"^(?![ \t]*(?:{_FAST_WORD}[ \t]*)+(?:;.*)?$).*$", re.MULTILINE)
+_NON_PLAIN = re.compile(rf"^(?![ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$).*$", re.MULTILINE)
+# In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
+# such as "If the probe does not trip, ..." must not open a block.
+_TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
 
 
 def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
@@ -111,7 +55,7 @@ def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
 def _non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines, found in one regex pass."""
     if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
-        return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not _FAST_LINE.match(text)]
+        return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
     joined = "\n".join(chunk)
     found = []
     index, position = 0, 0
@@ -120,141 +64,6 @@ def _non_plain_lines(chunk: list[str]) -> list[int]:
         position = match.start()
         found.append(index)
     return found
-
-
-def is_fast_line(text: str) -> bool:
-    """True when the fast path handles this line (used by the equivalence tests)."""
-    return _FAST_LINE.match(text) is not None
-
-
-# --------------------------------------------------------------------------- errors
-
-# What is skipped whole while scanning delimiters: (closing character, code, message if it is missing).
-_ENCLOSED = {
-    '"': ('"', "E104", "unterminated string: the '\"' at column {col} has no closing '\"'"),
-    "(": (")", "E103", "unclosed '(' comment opened at column {col}"),
-}
-
-
-def _scan_delimiters(text: str) -> _LineError | None:
-    """Explain unbalanced quotes, comments and brackets, which Lark reports poorly."""
-    opens: list[int] = []
-    i = 0
-    while i < len(text):
-        ch = text[i]
-        if ch in _ENCLOSED:
-            end, code, message = _ENCLOSED[ch]
-            close = text.find(end, i + 1)
-            if close < 0:
-                return _LineError(code, message.format(col=i + 1), i + 1)
-            i = close + 1
-            continue
-        if ch == ";":
-            break
-        if ch == "[":
-            opens.append(i + 1)
-        elif ch == "]":
-            if not opens:
-                return _LineError("E102", f"unbalanced ']' at column {i + 1} has no matching '['", i + 1)
-            opens.pop()
-        i += 1
-    if opens:
-        return _LineError("E101", f"unclosed '[' opened at column {opens[-1]}", opens[-1])
-    return None
-
-
-_WORD_BEFORE = re.compile(r"([A-Za-z])[ \t]*[^\sA-Za-z;(]*$")
-_CONDITION_LINE = re.compile(r"^\s*(if|while)(?![a-z0-9_])", re.IGNORECASE)
-# In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
-# such as "If the probe does not trip, ..." must not open a block.
-_TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
-
-
-def _explain(text: str, exc: UnexpectedInput) -> _LineError:
-    """Turn a Lark error on ``text`` into a message in the user's terms."""
-    from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
-
-    col = getattr(exc, "column", 0) or len(text) + 1
-    condition = _CONDITION_LINE.match(text)
-    if condition:
-        delim = _scan_delimiters(text)
-        if delim and delim.code != "E102":
-            return delim
-        keyword = condition.group(1).capitalize()
-        return _LineError("E106", f"{keyword} condition must be one bracketed expression, e.g. "
-                          f"{keyword} [[#1 > 0] and [#2 < 5]] (EdingCNC error G1171)", col)
-    delim = _scan_delimiters(text)
-    if delim:
-        return delim
-    ch = text[col - 1] if 0 < col <= len(text) else ""
-    if isinstance(exc, UnexpectedEOF) or (isinstance(exc, UnexpectedToken) and exc.token.type == "$END"):
-        word = _WORD_BEFORE.search(text.rstrip())
-        if word and not text.rstrip()[word.end(1):].strip():
-            return _LineError("E108", f"word '{word.group(1).upper()}' needs a value", word.start(1) + 1)
-        return _LineError("E100", "line ends too early", col)
-    if ch in "+-*/" or text[col - 1:col + 2].lower() in ("mod", "and", "xor") or text[col - 1:col + 1].lower() == "or":
-        word = _WORD_BEFORE.search(text[:col - 1])
-        if word:
-            start = word.start(1)
-            end = len(text)
-            for stop in (" ", "\t", ";", "("):
-                pos = text.find(stop, col)
-                if pos >= 0:
-                    end = min(end, pos)
-            fragment = text[start:end]
-            return _LineError("E105", f"expression needs brackets: {fragment} (write "
-                              f"{fragment[0]}[{fragment[1:].strip()}])", start + 1)
-    if looks_like_prose(text):
-        return _LineError("F603", PROSE_MESSAGE, len(text) - len(text.lstrip()) + 1)
-    glued = col > 1 and text[col - 2].isalpha()
-    if ch.isalpha() and glued:  # 'arameter': the P was taken as a word letter
-        start = len(text[:col - 1].rstrip(_LETTERS))
-        name = _NAME_AT.match(text, start).group()  # type: ignore[union-attr]
-        return _LineError("E100", f"'{name}' is neither a word (a letter and a value, like X10) nor a keyword; "
-                          "a note must be a comment: start it with ';'", start + 1)
-    lone = _LONE_LETTER.search(text[:col - 1].rstrip())
-    if ch.isalpha() and lone:  # G1 X30 Y O30: the Y has no value
-        return _LineError("E108", f"word '{lone.group(1).upper()}' needs a value", lone.start(1) + 1)
-    if ch == "\r":  # a file with lone CRs (classic Mac) reads as one long line
-        return _LineError("E100", "carriage return without a line feed: lines end in LF or CRLF", col)
-    if isinstance(exc, UnexpectedCharacters):
-        return _LineError("E100", f"unexpected character '{ch}'", col)
-    token = str(exc.token) if isinstance(exc, UnexpectedToken) else ch
-    return _LineError("E100", f"unexpected '{token}'", col)
-
-
-_LETTERS = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-_LONE_LETTER = re.compile(r"(?:^|[\s\d.\]])([A-Za-z])$")  # a word letter with nothing after it
-_NAME_AT = re.compile(r"[A-Za-z0-9_]+")
-
-
-# --------------------------------------------------------------------------- one line
-
-def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
-    """Parse one source line; raises _LineError on a syntax error or a line past the limits."""
-    if len(text) > MAX_LINE_LENGTH:
-        raise _LineError("E110", f"line is longer than {MAX_LINE_LENGTH} characters, the limit for one line "
-                         "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)
-    if _FAST_LINE.match(text):
-        return _fast_block(text, path, line)
-    if _EMPTY_LINE.match(text):  # blank or comments only
-        return None
-    problem = line_problem(text)
-    if problem is not None:
-        raise _LineError(*problem)
-    result = parse_fast(text, path, line)
-    return parse_line_grammar(text, path, line) if result is GIVE_UP else result  # type: ignore[return-value]
-
-
-def parse_line_grammar(text: str, path: str = "<string>", line: int = 1) -> LineResult:
-    """Parse one line with the Lark grammar only (the reference for the fast path)."""
-    from lark.exceptions import UnexpectedInput
-
-    try:
-        tree = _lark().parse(text)
-    except UnexpectedInput as exc:
-        raise _explain(text, exc) from None
-    return _Builder(path, line).statement(tree)
 
 
 # --------------------------------------------------------------------------- structure
@@ -367,7 +176,7 @@ class StatementReader:
         if lineno == 1 and self._read_unit(text):
             return
         if bulk and stack and self.mode == "run" and not self._skipped and len(text) <= MAX_LINE_LENGTH \
-                and _FAST_LINE.match(text):
+                and FAST_LINE.match(text):
             stack[-1].add(plain_block(text, path, lineno))
             return
         try:
@@ -401,7 +210,7 @@ class StatementReader:
     def _bad_line(self, stack: list[_Frame], err: _LineError, text: str, lineno: int) -> Iterator[n.Stmt]:
         """A line that does not parse: an error, or (tolerant) a warning and a BadLine in its place."""
         path = self.path
-        opener = (_TOLERANT_CONDITION if self.tolerant else _CONDITION_LINE).match(text)
+        opener = (_TOLERANT_CONDITION if self.tolerant else CONDITION_LINE).match(text)
         if self.tolerant:
             self.warnings.append(replace(Diagnostic.make(err.code, err.message, path, lineno, err.col, text),
                                          severity=Severity.WARNING))

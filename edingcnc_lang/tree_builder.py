@@ -1,6 +1,6 @@
 """Lark trees of one line -> AST nodes with spans (the grammar's half of the parser).
 
-``parser.py`` parses a line with the grammar and hands the tree to ``Builder``;
+``line_parser.py`` parses a line with the grammar and hands the tree to ``Builder``;
 mistakes the grammar cannot see (an unknown KIN mode, a number too large for a
 double) are raised here as ``LineError`` with the code and column to report.
 """

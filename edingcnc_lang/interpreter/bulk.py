@@ -7,7 +7,7 @@ import re
 from .. import nodes as n
 from ..canon import AXES
 from ..errors import EcncError
-from ..parser import plain_block, plain_words
+from ..line_parser import plain_block, plain_words
 from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState
 
 _NUM = r"([+-]?(?:\d+\.?\d*|\.\d+))[ \t]*"

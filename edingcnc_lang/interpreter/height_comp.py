@@ -17,7 +17,7 @@ from ..canon import Event
 from ..errors import EcncError
 from ..heightmap import ZhcTable
 from ..job_files import OpenMode, job_file, open_job_file
-from ..parser import parse_line
+from ..line_parser import parse_line
 from ..tree_builder import LineError
 from .state import MachineState
 

@@ -9,7 +9,8 @@ from types import MappingProxyType
 from .. import nodes as n
 from ..diagnostics import Diagnostic
 from ..errors import UnreadableFile
-from ..parser import StatementReader, parse_line
+from ..line_parser import parse_line
+from ..parser import StatementReader
 from ..source import iter_file_lines, iter_text_lines
 from .walk import ends_program
 

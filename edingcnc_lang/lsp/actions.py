@@ -11,7 +11,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from ..lint.driver import NOQA
-from ..parser import parse_line
+from ..line_parser import parse_line
 from .formatting import split_comment
 
 _UNCLOSED = re.compile(r"(?:Sub \S+|If|While) \(line (\d+)\) has no (EndSub|EndIf|EndWhile)( before)?")

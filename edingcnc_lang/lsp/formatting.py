@@ -11,8 +11,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from .. import nodes as n
+from ..line_parser import parse_line
 from ..markers import Close, Open
-from ..parser import StatementReader, parse_line
+from ..parser import StatementReader
 from ..printer import INDENT, bracketed, stmt_lines
 from ..source import iter_text_lines
 
