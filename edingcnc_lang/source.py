@@ -116,17 +116,6 @@ def _utf16_lines(handle: BinaryIO, head: bytes) -> Iterator[str]:
         yield pending.rstrip("\r")
 
 
-def decode_text(data: bytes) -> str:
-    """A whole file's bytes as text, decoded as ``iter_file_lines`` decodes a file (BOMs dropped)."""
-    if data.startswith(UTF16_BOMS):
-        return data.decode("utf-16", errors="replace")
-    data = data.removeprefix(BOM)
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError:
-        return "\n".join(decode_line(raw) for raw in data.split(b"\n"))
-
-
 def iter_text_lines(text: str) -> Iterator[str]:
     """Yield the lines of an in-memory string (BOM stripped)."""
     if text.startswith("\ufeff"):

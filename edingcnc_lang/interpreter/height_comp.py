@@ -103,7 +103,9 @@ class HeightComp(MachineState):
         try:
             self.zhc = ZhcTable.from_text(text, str(path))
         except EcncError as err:
-            raise self.fail(f"ZHCL: {err.format().removeprefix('error: ')}", stmt.span) from None
+            loc = err.location
+            where = f"{loc.path}, line {loc.line}" if loc is not None and loc.line else str(path)
+            raise self.fail(f"ZHCL: the height table {where} does not load: {err.message}", stmt.span) from None
 
     def _zhc_check(self, stmt: n.Command) -> None:
         if self.zhc is None:

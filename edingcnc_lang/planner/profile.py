@@ -78,7 +78,7 @@ def profiles(length: np.ndarray, vmax: np.ndarray, accel: np.ndarray, node2: np.
 
 def distance_at(p: Profiles, index: np.ndarray, tau: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Distance along, speed and acceleration of move ``index[k]`` at ``tau[k]`` seconds after its start."""
-    v0, peak, v1, a = p.v0[index], p.peak[index], p.v1[index], p.accel[index]
+    v0, peak, a = p.v0[index], p.peak[index], p.accel[index]
     t1, t2 = p.t_accel[index], p.t_accel[index] + p.t_cruise[index]
     with np.errstate(invalid="ignore"):
         a_fin = np.where(np.isfinite(a), a, 0.0)

@@ -175,3 +175,10 @@ def test_g10_l10_leaves_the_wear_out_so_the_position_reads_z_under_g43() -> None
 def test_g43_adds_the_tool_wear(tmp_path: Path) -> None:
     result = run("#5405 = 20\n#5905 = -0.05\nG43 H5\n")
     assert result.variables[5013] == pytest.approx(19.95)
+
+
+def test_a_height_table_that_does_not_load_is_named_once(tmp_path: Path) -> None:
+    (tmp_path / "bad.txt").write_text("; ecnc ZHC height table\nnx 1e308\nny 4\n")
+    err = error_of("ZHCL bad.txt\n", log_dir=tmp_path)
+    assert err.message.startswith(f"ZHCL: the height table {tmp_path / 'bad.txt'}")
+    assert err.message.count("error") == 0 and err.format().count(": error: ") == 1
