@@ -53,6 +53,10 @@ MAX_INI_BYTES = 1024 * 1024
 # few hundred; the table is allocated whole, so its header is checked against this first.
 MAX_ZHC_POINTS = 100_000
 
+# Bytes one run may write into its log files (logmsg): a real job logs a few lines per part; a
+# logmsg in a runaway loop would otherwise fill the disk before the step budget stops it.
+MAX_LOG_BYTES = 64 * 1024 * 1024
+
 # Samples of one move when a run samples the trajectory (kinematics, --samples, the planner):
 # each needs a few hundred bytes while the move is checked, so this bounds the memory; at the
 # usual 200 Hz it is a move of 83 minutes.

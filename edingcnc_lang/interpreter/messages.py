@@ -12,6 +12,7 @@ from ..canon import Event
 from ..errors import JobAborted, Location
 from ..evaluator import param_index
 from ..job_files import job_file, open_job_file
+from ..limits import MAX_LOG_BYTES
 from ..host import DialogAnswer, DialogField
 from ..dialogs import dialog_fields
 from .state import MachineState, format_value
@@ -84,8 +85,13 @@ class Messages(MachineState):
         if self._log_file is None:
             self._exec_logfile(n.LogFile("log.txt", None, span))
         assert self._log_file is not None
+        line = text + "\n"
+        self._logged += len(line.encode("utf-8", errors="replace"))
+        if self._logged > MAX_LOG_BYTES:
+            raise self.fail(f"logmsg: this run has written {MAX_LOG_BYTES // 2**20} MB to its log files, the most "
+                            "a run may write (a logmsg in a loop that does not end?)", span)
         with self._open_log(span) as handle:
-            handle.write(text + "\n")
+            handle.write(line)
         self.message("log", text, {"file": str(self._log_file)})
 
     def _open_log(self, span: n.Span, truncate: bool = False) -> TextIO:

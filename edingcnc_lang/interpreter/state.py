@@ -211,6 +211,7 @@ class MachineState:
         self._offset: list[float] | None = None
         self._tool_cursor = 0
         self._log_file: Path | None = None
+        self._logged = 0  # bytes written to log files by this run (limits.MAX_LOG_BYTES)
         self._init_params(simulation)
         if self.config.lathe:
             self.modal["plane"] = G_18

@@ -49,6 +49,15 @@ def test_a_fifo_in_the_log_folder_is_an_error_not_a_hang(logs: Path) -> None:
     assert error_of('logfile "f.txt"\nlogmsg "x"\n', log_dir=logs).location.line == 2  # type: ignore[union-attr]
 
 
+def test_a_logmsg_in_a_runaway_loop_stops_at_the_log_limit(logs: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from edingcnc_lang.interpreter import messages
+
+    monkeypatch.setattr(messages, "MAX_LOG_BYTES", 1000)  # 64 MB in a real run
+    err = error_of('#1 = 0\nWhile [1]\n  logmsg "pass "#1\n  #1 = [#1 + 1]\nEndWhile\n', log_dir=logs)
+    assert err.location.line == 3 and "the most a run may write" in err.message  # type: ignore[union-attr]
+    assert 950 < (logs / "log.txt").stat().st_size <= 1000
+
+
 @pytest.mark.parametrize(("name", "message"), [
     ("a\0b.txt", "logfile 'a\\x00b.txt': a file name cannot hold control characters"),
     ("a" * 300 + ".txt", "File name too long"),
