@@ -126,6 +126,7 @@ class Run:
 
     def __init__(self, options: RunOptions) -> None:
         self.options = options
+        self._files: dict[str, Path] = {}  # a job run under another name (a pipe's copy): name -> file
         self._texts: dict[str, str] = {}  # jobs run from a string, to find an error's column in
         self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
@@ -218,6 +219,8 @@ class Run:
         except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move
             raise Interrupted("interrupted (Ctrl-C) while checking the job, before its first move",
                               Location(name or os.fspath(job))) from None
+        if name is not None:
+            self._files[name] = job
         self.interpreter.job_tools = cache(lambda: tools_used(iter_file_lines(job)))
         macros = self.load_macros()
         return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain, name=name),
@@ -258,7 +261,7 @@ class Run:
             except OSError as err:
                 error = error or _write_error(err, self._outputs)
         if error is not None:
-            _add_column(error, self._texts)
+            _add_column(error, self._texts, self._files)
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -330,7 +333,7 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 
 
-def _add_column(error: EcncError, texts: dict[str, str]) -> None:
+def _add_column(error: EcncError, texts: dict[str, str], files: dict[str, Path]) -> None:
     """Give a line-only location the column where that line's code starts.
 
     The stages after the interpreter (cutter compensation, scaling, rotation, height compensation)
@@ -340,10 +343,16 @@ def _add_column(error: EcncError, texts: dict[str, str]) -> None:
     where = error.location
     if where is None or not where.line or where.col:
         return
-    lines = iter_text_lines(texts[where.path]) if where.path in texts else iter_file_lines(where.path)
     try:
+        if where.path in texts:
+            lines = iter_text_lines(texts[where.path])
+        else:
+            path = files.get(where.path, Path(where.path))
+            if not path.is_file():  # never open a pipe or a device again just for a column
+                return
+            lines = iter_file_lines(path)
         line = next(islice(lines, where.line - 1, None), None)
-    except (EcncError, OSError, ValueError):  # not a file (standard input, an ini's string): the line alone
+    except (EcncError, OSError, ValueError):  # not a file (an ini's string, a name with NUL): the line alone
         return
     if line is not None:
         error.location = Location(where.path, where.line, len(line) - len(line.lstrip()) + 1)

@@ -50,7 +50,7 @@ class LineWords(MachineState):
                     raise MachineError(f"unknown G code {t.code_name('G', key)}" + (f": {hint}" if hint else ""),
                                        Location(self.path, self.line, col))
                 group = f"user_{key}"
-            elif key in t.LATHE_ONLY_G and not self.config.lathe:
+            elif letter == "G" and key in t.LATHE_ONLY_G and not self.config.lathe:
                 raise MachineError(t.lathe_code_message(key), Location(self.path, self.line, col))
             if group in found:
                 raise MachineError(f"{t.code_name(letter, found[group])} and {t.code_name(letter, key)} are in the "

@@ -85,3 +85,20 @@ def test_a_full_temporary_folder_is_named_not_standard_output(monkeypatch: pytes
     result = invoke("run", "-", input="G0 X1\n")
     assert result.exit_code == 70
     assert "stdin.nc: error: No space left on device" in result.stderr and "standard output" not in result.stderr
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_a_piped_jobs_run_error_names_the_column_without_reading_the_pipe_again(tmp_path: Path) -> None:
+    """The column of an error found after the interpreter comes from the copy that ran (the pipe
+    itself, opened again, hung; standard input had no column)."""
+    job = "G0 X1\nG68 R30\nG18\n  G2 X1 Z1 R5 F100\n"
+    fifo = tmp_path / "gen.nc"
+    os.mkfifo(fifo)
+    writer = threading.Thread(target=fifo.write_text, args=(job,))
+    writer.start()
+    from_fifo = invoke("run", fifo)
+    writer.join()
+    from_stdin = invoke("run", "-", input=job)
+    assert from_fifo.exit_code == from_stdin.exit_code == 70
+    assert from_fifo.stderr.startswith(f"{fifo}:4:3: error: an arc in the XZ plane cannot be turned by G68")
+    assert from_stdin.stderr.startswith("<stdin>:4:3: error: an arc in the XZ plane cannot be turned by G68")

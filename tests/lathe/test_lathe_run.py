@@ -71,7 +71,7 @@ def test_lathe_codes_stop_a_mill_at_their_line(line: str) -> None:
     code = line.split()[0]
     assert info.value.format().startswith(f"<string>:3:1: error: {code} is a lathe code and this machine is a mill: ")
     assert "machineType = 1" in info.value.format()
-    run_string("G21\nG97 S500 M3\nG95 G1 Z-1 F0.1\nG33 Z-5 K1\nG94\n")  # spindle modes a mill has too
+    run_string("G21\nG97 S500 M3\nG95 G1 Z-1 F0.1\nG33 Z-5 K1\nG94\nM96\nM30\n")  # what a mill has too (M96 is not G96)
 
 
 def test_g28_moves_x_first_on_a_lathe(tmp_path: Path) -> None:
