@@ -126,6 +126,25 @@ def entry() -> NoReturn:
     skipped: it took ~20 ms of a short run. ``atexit`` handlers do not run. Code that embeds the
     command line calls ``main()``, which returns.
     """
-    code = main()
+    _terminate_cleanly()
+    try:
+        code = main()
+    except SystemExit as stop:  # SIGTERM: the temporary copy of a piped job is removed by now
+        code = stop.code if isinstance(stop.code, int) else EXIT_TERMINATED
     flush_quietly()
     os._exit(code)
+
+
+EXIT_TERMINATED = 128 + 15  # what a shell reports for a process ended by SIGTERM
+
+
+def _terminate_cleanly() -> None:
+    """``kill``/``timeout`` (SIGTERM) unwinds the command like Ctrl-C does, so ``with`` blocks still
+    clean up (the temporary copy of a job read from standard input or a pipe) before the exit."""
+    import signal
+
+    def stop(_signum: int, _frame: object) -> NoReturn:
+        raise SystemExit(EXIT_TERMINATED)
+
+    if hasattr(signal, "SIGTERM"):
+        signal.signal(signal.SIGTERM, stop)

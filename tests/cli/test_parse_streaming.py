@@ -102,3 +102,28 @@ def test_a_piped_jobs_run_error_names_the_column_without_reading_the_pipe_again(
     assert from_fifo.exit_code == from_stdin.exit_code == 70
     assert from_fifo.stderr.startswith(f"{fifo}:4:3: error: an arc in the XZ plane cannot be turned by G68")
     assert from_stdin.stderr.startswith("<stdin>:4:3: error: an arc in the XZ plane cannot be turned by G68")
+
+
+@pytest.mark.skipif(not hasattr(os, "kill"), reason="no signals here")
+def test_sigterm_removes_the_copy_of_a_piped_job(tmp_path: Path) -> None:
+    """``kill`` or ``timeout`` on ``ecnc run -`` unwinds like Ctrl-C: the job's copy is removed, exit 143."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    env = {**os.environ, "TMPDIR": str(tmp_path)}
+    proc = subprocess.Popen([sys.executable, "-m", "edingcnc_lang", "run", "-"], stdin=subprocess.PIPE,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    assert proc.stdin is not None
+    proc.stdin.write(b"G0 X1\n")
+    proc.stdin.flush()  # stdin stays open: ecnc is still copying the job when the signal comes
+    for _ in range(600):
+        if list(tmp_path.glob("ecnc-stdin-*/stdin.nc")):
+            break
+        time.sleep(0.05)
+    assert list(tmp_path.glob("ecnc-stdin-*/stdin.nc")), "the copy was never made"
+    proc.send_signal(signal.SIGTERM)
+    assert proc.wait(timeout=30) == 143
+    proc.stdin.close()
+    assert list(tmp_path.glob("ecnc-stdin-*")) == []
