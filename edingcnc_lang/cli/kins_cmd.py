@@ -164,14 +164,11 @@ def in_child_if_compiled(name: str, ini: str | None, argv: list[str]) -> int | N
     output is passed on and its status returned.  None: not compiled, or already the child."""
     import sys
 
-    from ..kinematics.loader import find_plugin_file
+    from ..kinematics.loader import is_compiled_plugin
     from ..kinematics.workbench.isolate import GUARD_VARIABLE, run_command_isolated
 
-    if GUARD_VARIABLE in os.environ:  # this is the child
-        return None
-    found = find_plugin_file(name, _settings(Path(ini) if ini else None)[1])
-    if found is None or found.suffix.lower() != ".so":
-        return None
+    if GUARD_VARIABLE in os.environ or not is_compiled_plugin(name, _settings(Path(ini) if ini else None)[1]):
+        return None  # already the child, or a Python plug-in
     status, out, err = run_command_isolated(argv, name)
     sys.stdout.write(out)
     sys.stderr.write(err)

@@ -54,6 +54,12 @@ def _file_candidates(path: Path) -> list[Path]:
     return [base.with_name(base.name + ".so"), base.with_name(base.name + ".py")]
 
 
+def is_compiled_plugin(name_or_path: str, search_dirs: Sequence[Path]) -> bool:
+    """Whether the plug-in resolves to a shared library (the workbench calls those out of process)."""
+    found = find_plugin_file(name_or_path, search_dirs)
+    return found is not None and found.suffix.lower() == ".so"
+
+
 def find_plugin_file(name_or_path: str, search_dirs: Sequence[Path]) -> Path | None:
     """A typed path (folder parts or a .py/.so suffix) is tried as given; every name in the search folders."""
     path = Path(name_or_path)

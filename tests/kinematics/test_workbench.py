@@ -193,3 +193,17 @@ def test_kins_inverse_and_plot_survive_a_crashing_compiled_plugin(built: Path) -
     assert compared.exit_code == 70 and "(SIGSEGV) at X100 Y100" in compared.stderr
     fine = invoke("kins", "forward", str(built / "rotatekins.so"), "--", "-1", "2", "3")
     assert (fine.exit_code, fine.stdout) == (0, '{"x": -1.0, "y": 2.0, "z": 3.0, "a": 0.0, "b": 0.0, "c": 0.0}\n')
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "mkfifo"), reason="no FIFOs here")
+def test_a_child_that_hangs_is_an_error_naming_the_wait(tmp_path: Path) -> None:
+    """kins inverse/forward of a compiled plug-in run in a child; one that never returns is K604's
+    text as an error, not a hang of ecnc (the child here waits on a FIFO nobody writes)."""
+    import os
+
+    from edingcnc_lang.kinematics.workbench.isolate import run_command_isolated
+
+    fifo = tmp_path / "never.nc"
+    os.mkfifo(fifo)
+    with pytest.raises(PluginError, match=r"kinematics plug-in 'x\.so': the plug-in did not return within 1 s"):
+        run_command_isolated(["run", str(fifo)], "x.so", timeout=1.0)

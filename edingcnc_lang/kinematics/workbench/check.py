@@ -69,10 +69,9 @@ def load_plugin(name: str, machine: Machine) -> Kinematics:
 
 def is_compiled_file(name: str, machine: Machine) -> bool:
     """Whether ``name`` resolves to a shared library (checked out of process)."""
-    from edingcnc_lang.kinematics.loader import find_plugin_file
+    from edingcnc_lang.kinematics.loader import is_compiled_plugin
 
-    found = find_plugin_file(name, machine.search_dirs)
-    return found is not None and found.suffix.lower() == ".so"
+    return is_compiled_plugin(name, machine.search_dirs)
 
 
 def workspace_for(kins: Kinematics, options: CheckOptions, machine: Machine) -> Workspace:

@@ -6,13 +6,14 @@ names the call and the pose.  The child's report comes back as JSON on its stand
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import signal
 import subprocess
 import sys
 import tempfile
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
 import numpy as np
@@ -25,12 +26,21 @@ RECORD = 8  # doubles: call number, then six pose or joint values (or the contro
 TIMEOUT = 300.0
 
 
-def run_isolated(command: str, payload: Mapping[str, Any], fallback: Report, timeout: float = TIMEOUT) -> dict:
-    """Run ``child.py COMMAND PAYLOAD GUARD``; return its JSON report, or ``fallback`` with the crash in it."""
+@contextlib.contextmanager
+def _guard_file() -> Iterator[str]:
+    """The small file a child records each library call in before making it (removed afterwards)."""
     fd, guard = tempfile.mkstemp(prefix="ecnc-kins-guard-")
     try:
         os.write(fd, bytes(8 * RECORD))
         os.close(fd)
+        yield guard
+    finally:
+        os.unlink(guard)
+
+
+def run_isolated(command: str, payload: Mapping[str, Any], fallback: Report, timeout: float = TIMEOUT) -> dict:
+    """Run ``child.py COMMAND PAYLOAD GUARD``; return its JSON report, or ``fallback`` with the crash in it."""
+    with _guard_file() as guard:
         argv = [sys.executable, "-m", "edingcnc_lang.kinematics.workbench.child", command, json.dumps(payload), guard]
         try:
             done = subprocess.run(argv, capture_output=True, text=True, timeout=timeout, check=False)
@@ -50,28 +60,25 @@ def run_isolated(command: str, payload: Mapping[str, Any], fallback: Report, tim
             fallback.findings.append(_last_call(guard, "K602", f"ended the process with exit {done.returncode}: "
                                                                f"{tail[0]}"))
         return fallback.to_json()
-    finally:
-        os.unlink(guard)
 
 
 GUARD_VARIABLE = "_ECNC_KINS_GUARD"  # set in the child of run_command_isolated: the file calls are recorded in
 
 
-def run_command_isolated(argv: list[str], plugin: str) -> tuple[int, str, str]:
+def run_command_isolated(argv: list[str], plugin: str, timeout: float = TIMEOUT) -> tuple[int, str, str]:
     """``ecnc ARGV`` in a child process that records the plug-in's calls (``ecnc kins inverse|forward``
-    on a compiled plug-in): (exit status, stdout, stderr); a crash in the library is a PluginError
-    naming the call and the pose, as ``ecnc kins check`` reports it (K602)."""
-    fd, guard = tempfile.mkstemp(prefix="ecnc-kins-guard-")
-    try:
-        os.write(fd, bytes(8 * RECORD))
-        os.close(fd)
-        done = subprocess.run([sys.executable, "-m", "edingcnc_lang", *argv], capture_output=True, text=True,
-                              check=False, env={**os.environ, GUARD_VARIABLE: guard})
-        if done.returncode >= 0:
-            return done.returncode, done.stdout, done.stderr
-        finding = _last_call(guard, "K602", f"crashed the process ({signal.Signals(-done.returncode).name})")
-    finally:
-        os.unlink(guard)
+    on a compiled plug-in): (exit status, stdout, stderr); a crash or a hang in the library is a
+    PluginError naming the call and the pose, as ``ecnc kins check`` reports it (K602, K604)."""
+    with _guard_file() as guard:
+        try:
+            done = subprocess.run([sys.executable, "-m", "edingcnc_lang", *argv], capture_output=True, text=True,
+                                  check=False, env={**os.environ, GUARD_VARIABLE: guard}, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            finding = _last_call(guard, "K604", f"did not return within {timeout:g} s")
+        else:
+            if done.returncode >= 0:
+                return done.returncode, done.stdout, done.stderr
+            finding = _last_call(guard, "K602", f"crashed the process ({signal.Signals(-done.returncode).name})")
     raise PluginError(f"kinematics plug-in {plugin!r}: {crash_text(finding)}")
 
 
