@@ -120,11 +120,6 @@ class MachineError(EcncError):
     kind = "runtime"
 
 
-class MoveError(MachineError):
-    """A move the pipeline refuses (cutter compensation, scaling, rotation): it knows the move's line,
-    not the column, which the runner adds (where that line's code starts)."""
-
-
 class JobAborted(MachineError):
     """``errmsg`` stopped the job; its text was already reported as a message when it ran."""
 

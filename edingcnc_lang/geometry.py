@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+from .tables import MM_PER_INCH
+
 # A start/end radius difference up to this much is accepted (in the program's units, or a fraction
 # of the radius): LinuxCNC's TOLERANCE_MM / TOLERANCE_INCH, so a CAM post that prints inches to
 # four decimals passes here as it does there.
@@ -23,7 +25,7 @@ class ArcError(ValueError):
 
 def radius_tolerance(inch: bool) -> float:
     """The absolute radius tolerance in mm for a program in inches (G20) or millimetres."""
-    return RADIUS_TOLERANCE_INCH * 25.4 if inch else RADIUS_TOLERANCE_MM
+    return RADIUS_TOLERANCE_INCH * MM_PER_INCH if inch else RADIUS_TOLERANCE_MM
 
 
 def center_from_radius(start: tuple[float, float], end: tuple[float, float], radius: float,

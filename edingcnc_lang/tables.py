@@ -101,6 +101,7 @@ def lathe_code_message(key: int) -> str:
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
 
+MM_PER_INCH = 25.4  # G20 programs: every length word is this many mm
 MAX_M_WORDS = 4
 LETTER_ARGS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"  # M-sub arguments: A=#1 .. Z=#26
 ABSENT_ARGUMENT = -1e10

@@ -9,8 +9,7 @@ from ..plot.names import COLOR_MODES, VIEW_NAMES
 from .base import Command
 from .options import MachineOptions, job_argument, machine_options, override_options
 from .params import OUTPUT_FILE
-from .view_cmd import report
-from .streams import job_to_read_twice
+from .view_cmd import job_to_draw, report
 
 
 @click.command("plot", cls=Command, short_help="Draw the toolpath of JOB as a PNG, SVG or PDF picture.")
@@ -35,9 +34,7 @@ def plot(job: str, machine: MachineOptions, feed_override: float, rapid_override
     from ..plot.commands import plot_job
 
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
-    if output is None and not Path(job).is_file():  # a pipe has no folder to write JOB.png beside
-        raise click.UsageError(f"{job} is a pipe, not a file: name the file to write with -o FILE")
-    with job_to_read_twice(job) as (path, name):
+    with job_to_draw(job, output) as (path, name):
         written = plot_job(path, options, Path(output) if output else None,
                            view=view, color=color, fit=fit, joints=joints, name=name)
     return report(written)

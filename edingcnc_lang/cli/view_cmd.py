@@ -1,7 +1,9 @@
 """``ecnc view JOB``: one self-contained HTML page with an interactive 3D view of the toolpath."""
 from __future__ import annotations
 
+import contextlib
 import sys
+from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -54,12 +56,20 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     from ..plot.commands import view_job
 
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
-    if output is None and not Path(job).is_file():  # a pipe has no folder to write JOB.png beside
-        raise click.UsageError(f"{job} is a pipe, not a file: name the file to write with -o FILE")
-    with job_to_read_twice(job) as (path, name):
+    with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
                            max_moves=max_moves, lines=lines, view=view, name=name)
     return report(written)
+
+
+@contextlib.contextmanager
+def job_to_draw(job: str, output: str | None) -> Iterator[tuple[Path, str | None]]:
+    """The job to run for a picture or a page, as ``job_to_read_twice`` gives it (a pipe copied);
+    a pipe needs ``-o``, since there is no folder to write ``JOB.png`` (``JOB.html``) beside."""
+    if output is None and not Path(job).is_file():
+        raise click.UsageError(f"{job} is a pipe, not a file: name the file to write with -o FILE")
+    with job_to_read_twice(job) as found:
+        yield found
 
 
 def report(written: Written) -> int:

@@ -39,7 +39,7 @@ class CompensationSteps(MachineState):
         side = "left" if code in (G_41, G_41_1) else "right"
         self.canon.event(Event("cutter_comp", self.path, self.line,
                                {"side": side, "radius": radius, "plane": PLANE_OF[self.modal["plane"]],
-                                "inch": self.scale != 1.0}))
+                                "inch": self.inch}))
 
     def _comp_radius(self, code: int, words: Mapping[str, float], span: n.Span) -> float:
         """The tool radius in mm; negative swaps the side (a tool smaller than the nominal one)."""

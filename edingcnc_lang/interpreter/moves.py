@@ -79,7 +79,7 @@ class Moves(MachineState):
         e = (end[first], end[second])
         scale = self.scale
         center: tuple[float, float] | None = None
-        tolerance = radius_tolerance(scale != 1.0)
+        tolerance = radius_tolerance(self.inch)
         try:
             if "R" in words:
                 center = center_from_radius(s, e, words["R"] * scale, clockwise, tolerance)

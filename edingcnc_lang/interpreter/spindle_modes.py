@@ -12,7 +12,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
 from ..spindle import FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits
-from .state import G_96, INCH, MachineState, format_value
+from .state import G_96, MachineState, format_value
 
 
 class SpindleModes(MachineState):
@@ -50,7 +50,7 @@ class SpindleModes(MachineState):
                 max_rpm, min_rpm = css_limits(self.css_max or None, config.spindle_max_rpm, config.spindle_min_rpm)
             except SpindleError as err:
                 raise self.fail(str(err), span) from None
-            per_unit = FT_PER_MIN if self.scale == INCH else M_PER_MIN
+            per_unit = FT_PER_MIN if self.inch else M_PER_MIN
             self.css_setting = (self.speed * per_unit, max_rpm, min_rpm)
             data = {"mode": "css", "speed": self.speed, "max_rpm": max_rpm}
         else:

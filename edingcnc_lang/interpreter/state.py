@@ -23,7 +23,7 @@ from ..host import Host
 from ..params import Parameters
 from ..spindle import Css, SpindleError, mean_rpm_points
 
-INCH = 25.4
+INCH = t.MM_PER_INCH
 MAX_CALL_DEPTH = 64
 MIN_PROBE_DISTANCE = 0.254
 G = t.code_key  # G(38.2) -> 382
@@ -239,8 +239,13 @@ class MachineState:
         self.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
 
     @property
+    def inch(self) -> bool:
+        """The program's lengths are inches (G20/G70)."""
+        return self.modal["units"] in (G_20, G_70)
+
+    @property
     def scale(self) -> float:
-        return INCH if self.modal["units"] in (G_20, G_70) else 1.0
+        return INCH if self.inch else 1.0
 
     def where(self, span: n.Span | None = None) -> Location:
         if span is not None and span.line:

@@ -11,7 +11,7 @@ import math
 from collections.abc import Iterator
 
 from ..diagnostics import Diagnostic
-from ..tables import code_key, code_name
+from ..tables import MM_PER_INCH, code_key, code_name
 from .evaluate import evaluate
 from .facts import BlockCodes
 from .model import SourceFile
@@ -26,7 +26,6 @@ COMP = LEFT | frozenset(code_key(c) for c in (42, 42.1))
 PLANES = {code_key(17): ("I", "J"), code_key(18): ("I", "K"), code_key(19): ("J", "K")}
 G2, G3 = code_key(2), code_key(3)
 G20, G21 = code_key(20), code_key(21)
-MM_PER_INCH = 25.4
 
 
 class _Comp:

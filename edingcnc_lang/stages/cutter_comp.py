@@ -26,7 +26,7 @@ from dataclasses import replace
 
 from ..canon import Arc, Canon, Event, Move, Pose
 from ..config import MachineConfig
-from ..errors import Location, MoveError
+from ..errors import Location, MachineError
 from .base import FLUSHING_EVENTS, Stage, each_move
 from .comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
@@ -46,8 +46,8 @@ SIDES = {"left": LEFT, "right": RIGHT}
 HALF_PI = math.pi / 2
 
 
-def _refuse(move: Move | Event, what: str) -> MoveError:
-    return MoveError(f"cutter compensation: {what}", Location(move.path, move.line))
+def _refuse(move: Move | Event, what: str) -> MachineError:
+    return MachineError(f"cutter compensation: {what}", Location(move.path, move.line))
 
 
 class CutterCompensation(Stage):

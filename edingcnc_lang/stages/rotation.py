@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from ..canon import Arc, Canon, Event, Move, Pose
 from ..config import MachineConfig
-from ..errors import Location, MoveError
+from ..errors import Location, MachineError
 from ..geometry import rotate_about
 from .transform import PoseTransform, map_center
 
@@ -41,6 +41,6 @@ class Rotation(PoseTransform):
 
     def arc(self, move: Move, arc: Arc) -> Arc:
         if arc.plane != "XY" and self.angle and self.angle % 360.0:
-            raise MoveError(f"an arc in the {arc.plane} plane cannot be turned by G68 (it turns the XY plane); "
+            raise MachineError(f"an arc in the {arc.plane} plane cannot be turned by G68 (it turns the XY plane); "
                                "use G17 arcs or G69 first", Location(move.path, move.line))
         return Arc(map_center(arc, self.forward), arc.plane, arc.turn, arc.full_turns)

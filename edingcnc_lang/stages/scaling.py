@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..canon import PLANES, Arc, Canon, Event, Move, Pose
 from ..config import MachineConfig
-from ..errors import Location, MoveError
+from ..errors import Location, MachineError
 from ..geometry import scale_about
 from .transform import PoseTransform, map_center
 
@@ -52,7 +52,7 @@ class Scaling(PoseTransform):
         first, second, _ = PLANES[arc.plane]
         f1, f2 = self.factors[first], self.factors[second]
         if abs(f1) != abs(f2):
-            raise MoveError(f"an arc cannot be scaled by different factors in the {arc.plane} plane "
+            raise MachineError(f"an arc cannot be scaled by different factors in the {arc.plane} plane "
                                f"({f1:g} and {f2:g}); use G51 P or break the arc into lines",
                                Location(move.path, move.line))
         turn = arc.turn if f1 * f2 > 0 else -arc.turn
