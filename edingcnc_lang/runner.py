@@ -22,6 +22,7 @@ from .errors import EcncError, Interrupted, Location, MachineError
 from .host import Host
 from .interpreter import Interpreter
 from .interpreter.commands import tools_used
+from .interpreter.observe import Observer
 from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
@@ -114,6 +115,8 @@ class RunOptions:
     # False: time the moves only if an output reads time (trace, samples, events, on_timed_move);
     # otherwise the run skips the planner (no numpy) and its estimate and limits are None
     plan: bool = True
+    # watches every statement, branch and sub call (the debugger, macro coverage): interpreter/observe.py
+    observer: Observer | None = None
 
 
 def packaged_macro() -> Path:
@@ -154,7 +157,8 @@ class Run:
         self.pipeline = Pipeline(STAGES, self.motion, self.config)
         self.interpreter = Interpreter(self.pipeline.head, self.config, options.host, max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
-                                       simulation=options.simulation, block_delete=options.block_delete)
+                                       simulation=options.simulation, block_delete=options.block_delete,
+                                       observer=options.observer)
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
         if self.planner is not None:

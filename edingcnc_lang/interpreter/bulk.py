@@ -29,6 +29,11 @@ class BulkPath(MachineState):
                 self.execute(plain_block(text, run.path, lineno))
                 done += 1
 
+    def _exec_plain_lines(self, run: n.PlainRun) -> None:
+        """Plain lines one statement at a time, for an observer that watches every line."""
+        for lineno, text in run.lines:
+            self.execute(plain_block(text, run.path, lineno))
+
     def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
         """Execute lines[first:] as long as each is a plain G0/G1 move; returns the first it left.
 

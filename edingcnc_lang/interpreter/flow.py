@@ -23,7 +23,10 @@ class ControlFlow(MachineState):
             for stmt in statements:
                 kind = type(stmt)
                 if kind is n.PlainRun:  # a chunk of lines, each counted as a statement
-                    self._exec_plain_run(stmt)  # type: ignore[arg-type]
+                    if self.observer is not None and self.observer.line_by_line(self, stmt):  # type: ignore[arg-type]
+                        self._exec_plain_lines(stmt)  # type: ignore[arg-type]
+                    else:
+                        self._exec_plain_run(stmt)  # type: ignore[arg-type]
                 elif kind is not n.Sub:
                     self.execute(stmt)
         except ProgramEnd:
@@ -39,12 +42,17 @@ class ControlFlow(MachineState):
             raise self.fail(f"GoSub {name}: calls nested deeper than {MAX_CALL_DEPTH} (endless recursion?)", span)
         frame = CallFrame(sub.name.lower(), self.path, self.line)
         self.stack.append(frame)
+        observer = self.observer
         try:
+            if observer is not None:
+                observer.call(self, frame, sub)
             self.execute_body(sub.body)
         except EcncError as err:
             err.notes = (*err.notes, f"in Sub {sub.name}, called from {frame.path}:{frame.line}")
             raise
         finally:
+            if observer is not None:
+                observer.ret(self, frame)
             self.stack.pop()
 
     def execute_body(self, body: tuple[n.Stmt, ...]) -> None:
@@ -57,16 +65,21 @@ class ControlFlow(MachineState):
         self.steps += 1
         if self.max_steps is not None and self.steps > self.max_steps:
             self.spend(0, span)  # reports the exhausted budget
+        if self.observer is not None:
+            self.observer.statement(self, stmt)
         self._EXECUTE[type(stmt)](self, stmt)
 
-    def _condition(self, expr: n.Expr) -> bool:
-        return self.evaluator.value(expr) != 0.0
+    def _condition(self, stmt: n.If | n.While) -> bool:
+        taken = self.evaluator.value(stmt.cond) != 0.0
+        if self.observer is not None:
+            self.observer.branch(self, stmt, taken)
+        return taken
 
     def _exec_if(self, stmt: n.If) -> None:
-        self.execute_body(stmt.then if self._condition(stmt.cond) else stmt.orelse)
+        self.execute_body(stmt.then if self._condition(stmt) else stmt.orelse)
 
     def _exec_while(self, stmt: n.While) -> None:
-        while self._condition(stmt.cond):
+        while self._condition(stmt):
             self.execute_body(stmt.body)
             self.path, self.line = stmt.span.path, stmt.span.line
             self.spend(1, stmt.span)

@@ -22,6 +22,7 @@ from ..evaluator import Evaluator
 from ..host import Host
 from ..params import Parameters
 from ..spindle import Css, SpindleError, mean_rpm_points
+from .observe import Observer
 
 INCH = t.MM_PER_INCH
 MAX_CALL_DEPTH = 64
@@ -159,8 +160,9 @@ class MachineState:
 
     def __init__(self, canon: Canon, config: MachineConfig | None = None, host: Host | None = None, *,
                  max_steps: int | None = None, log_dir: Path | None = None, allow_exec: bool = False,
-                 simulation: bool = True, block_delete: bool = False) -> None:
+                 simulation: bool = True, block_delete: bool = False, observer: Observer | None = None) -> None:
         self.canon = canon
+        self.observer = observer
         self.config = config or MachineConfig.default()
         self.host = host or Host()
         self.max_steps = max_steps
