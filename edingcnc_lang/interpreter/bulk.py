@@ -8,7 +8,7 @@ from .. import nodes as n
 from ..canon import AXES
 from ..errors import EcncError
 from ..line_parser import plain_block, plain_words
-from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState
+from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState, StatementTable
 
 _NUM = r"([+-]?(?:\d+\.?\d*|\.\d+))[ \t]*"
 CAM_LINE = re.compile(r"[ \t]*(?:[Gg][ \t]*" + _NUM + ")?" + "".join(
@@ -177,7 +177,7 @@ class BulkPath(MachineState):
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).
-STATEMENTS = {n.PlainRun: "_exec_plain_run"}
+STATEMENTS: StatementTable = {n.PlainRun: BulkPath._exec_plain_run}
 
 
 def _travelled(start: list[float], batch: list[tuple[str, int, tuple[float, ...], float]]) -> float:

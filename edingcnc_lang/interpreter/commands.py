@@ -9,7 +9,7 @@ from .. import tables as t
 from ..canon import AXES, Event
 from ..evaluator import param_index
 from . import height_comp
-from .state import MachineState
+from .state import CommandTable, MachineState, StatementTable
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
 _NOT_CODE = re.compile(r'\([^)]*\)?|"[^"]*"?|;.*')  # comments and message texts
@@ -64,7 +64,7 @@ class Commands(MachineState):
 
     def _exec_switch(self, stmt: n.Switch) -> None:
         if stmt.name == "zhc":
-            self._zhc_switch(stmt.on, stmt.span)  # type: ignore[attr-defined]  (height_comp.py)
+            self._zhc_switch(stmt.on, stmt.span)
             return
         if stmt.name == "tcaguard":
             self.tca_guard = stmt.on
@@ -78,7 +78,7 @@ class Commands(MachineState):
     def _exec_command(self, stmt: n.Command) -> None:
         handler = COMMANDS.get(stmt.name)
         if handler is not None:
-            getattr(self, handler)(stmt)
+            handler(self, stmt)
         else:
             self.canon.event(Event(stmt.name, self.path, self.line, {"args": stmt.args}))
 
@@ -128,11 +128,13 @@ class Commands(MachineState):
 
 
 # Named commands with a meaning of their own, by lower-case name; any other command is an event.
-COMMANDS: dict[str, str] = {"gettoolinfo": "_get_tool_info", "exec": "_exec_program",
-                            "getjobdistance": "_get_job_distance", "getheightcontrolvact": "_get_height_control",
-                            "getheightcontrolvset": "_get_height_control", **height_comp.COMMANDS}
+COMMANDS: CommandTable = {"gettoolinfo": Commands._get_tool_info, "exec": Commands._exec_program,
+                          "getjobdistance": Commands._get_job_distance,
+                          "getheightcontrolvact": Commands._get_height_control,
+                          "getheightcontrolvset": Commands._get_height_control, **height_comp.COMMANDS}
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).
-STATEMENTS = {n.Home: "_exec_home", n.PrepareLinDeltaHome: "_exec_prepare_delta", n.Kin: "_exec_kin",
-              n.Switch: "_exec_switch", n.Command: "_exec_command"}
+STATEMENTS: StatementTable = {n.Home: Commands._exec_home, n.PrepareLinDeltaHome: Commands._exec_prepare_delta,
+                              n.Kin: Commands._exec_kin, n.Switch: Commands._exec_switch,
+                              n.Command: Commands._exec_command}

@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
-from .state import G_40, G_41, G_41_1, G_42_1, PLANE_OF, MachineState, format_value
+from .state import G_40, G_41, G_41_1, G_42_1, PLANE_OF, MachineState, format_value, StepTable
 
 DIAMETER_CODES = frozenset({G_41_1, G_42_1})  # D is the diameter itself, not a tool number
 
@@ -53,3 +53,7 @@ class CompensationSteps(MachineState):
             raise self.fail(f"{name} D{format_value(tool)}: D is a tool number, T0..T{t.MAX_TOOL} "
                             f"(G41.1/G42.1 take a diameter)", span)
         return self.params.read(t.TOOL_DIAMETER + int(tool)) / 2.0 if tool else 0.0
+
+
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+STEPS: StepTable = {"plane": CompensationSteps._step_plane, "cutter_comp": CompensationSteps._step_cutter_comp}

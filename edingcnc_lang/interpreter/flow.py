@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from .. import nodes as n
 from ..diagnostics import Diagnostic, SyntaxErrors
 from ..errors import EcncError
-from .state import CallFrame, MAX_CALL_DEPTH, MachineState, ProgramEnd
+from .state import CallFrame, MAX_CALL_DEPTH, MachineState, ProgramEnd, StatementTable
 
 
 class ControlFlow(MachineState):
@@ -96,6 +96,7 @@ class ControlFlow(MachineState):
         raise self.fail(f"Sub {stmt.name} is defined inside a block; subs must be at the top level", stmt.span)
 
 
-# The statements this part executes, by method name (machine.py builds the dispatch table).
-STATEMENTS = {n.If: "_exec_if", n.While: "_exec_while", n.GoSub: "_exec_gosub", n.Sub: "_exec_sub",
-              n.BadLine: "_exec_bad_line"}
+# The statements this part executes (machine.py builds the dispatch table from every part's).
+STATEMENTS: StatementTable = {n.If: ControlFlow._exec_if, n.While: ControlFlow._exec_while,
+                              n.GoSub: ControlFlow._exec_gosub, n.Sub: ControlFlow._exec_sub,
+                              n.BadLine: ControlFlow._exec_bad_line}

@@ -19,7 +19,7 @@ from ..heightmap import ZhcTable
 from ..job_files import OpenMode, job_file, open_job_file
 from ..line_parser import parse_line
 from ..tree_builder import LineError
-from .state import MachineState
+from .state import CommandTable, MachineState
 
 
 class HeightComp(MachineState):
@@ -114,5 +114,6 @@ class HeightComp(MachineState):
 
 
 # Named commands of this part, by lower-case name (commands.py dispatches them).
-COMMANDS = {"zhcinit": "_zhc_init", "zhcinitex": "_zhc_init", "zhcaddpoint": "_zhc_add_point",
-            "zhcs": "_zhc_save", "zhcl": "_zhc_load", "zhccheck": "_zhc_check"}
+COMMANDS: CommandTable = {"zhcinit": HeightComp._zhc_init, "zhcinitex": HeightComp._zhc_init,
+                          "zhcaddpoint": HeightComp._zhc_add_point, "zhcs": HeightComp._zhc_save,
+                          "zhcl": HeightComp._zhc_load, "zhccheck": HeightComp._zhc_check}

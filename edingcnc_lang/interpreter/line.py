@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from .. import nodes as n
 from .. import tables as t
 from ..errors import Location, MachineError
-from .state import MachineState
+from .state import MachineState, StatementTable
 
 
 class LineWords(MachineState):
@@ -122,5 +122,5 @@ class LineWords(MachineState):
                 step(words[letter], words, {}, span)
 
 
-# The statements this part executes, by method name (machine.py builds the dispatch table).
-STATEMENTS = {n.Block: "_exec_block", n.PlainBlock: "_exec_plain"}
+# The statements this part executes (machine.py builds the dispatch table from every part's).
+STATEMENTS: StatementTable = {n.Block: LineWords._exec_block, n.PlainBlock: LineWords._exec_plain}

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 
 from .. import tables as t
-from . import bulk, commands, flow, line, messages
+from . import bulk, commands, compensation, flow, line, messages, scaling, spindle_modes, steps
 from .bulk import BulkPath
 from .canned import CannedCycles
 from .commands import Commands
@@ -34,14 +34,12 @@ class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationS
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 
-# Statement type -> the method that executes it, from each part's STATEMENTS table.
-Interpreter._EXECUTE = {kind: getattr(Interpreter, name)
-                        for part in (flow, line, bulk, messages, commands)
-                        for kind, name in part.STATEMENTS.items()}
+# Statement type -> the function that executes it, from each part's STATEMENTS table.
+Interpreter._EXECUTE = {kind: run for part in (flow, line, bulk, messages, commands)
+                        for kind, run in part.STATEMENTS.items()}
 
-# Steps that share one method: the modal groups whose step only records the code.
-_STEP_ALIASES = {"units": "modal", "distance": "modal", "return_mode": "modal"}
-Interpreter._LINE_STEPS = tuple(
-    (getattr(Interpreter, f"_step_{_STEP_ALIASES.get(name, name)}"), source, key)
-    for name, source, key in t.ORDER_OF_EXECUTION)
+# The line's steps in the controller's order (tables.ORDER_OF_EXECUTION), from each part's STEPS table;
+# a row of the order that no part performs fails here, at import.
+_STEPS = {name: step for part in (steps, spindle_modes, compensation, scaling) for name, step in part.STEPS.items()}
+Interpreter._LINE_STEPS = tuple((_STEPS[name], source, key) for name, source, key in t.ORDER_OF_EXECUTION)
 

@@ -15,7 +15,7 @@ from ..job_files import job_file, open_job_file
 from ..limits import MAX_LOG_BYTES
 from ..host import DialogAnswer, DialogField
 from ..dialogs import dialog_fields
-from .state import MachineState, format_value
+from .state import MachineState, format_value, StatementTable
 
 STAMP_FORMAT = "%Y-%m-%d %H:%M:%S"
 
@@ -55,9 +55,11 @@ class Messages(MachineState):
             problem = problems[0]
             item = problem.item
             raise self.fail(problem.message, stmt.span if item is None or isinstance(item, str) else item.span)
+        title = items[0]
+        assert isinstance(title, str)  # dialog_fields reported a dialog without its title string (D402)
         indices = [param_index(f.index.value, f.index.span) for f in shape]
         fields = [DialogField(f.label, index, self.params.read(index)) for f, index in zip(shape, indices)]
-        answer = (self.host.dialog(items[0], fields) if self.host.dialog else None) or DialogAnswer()
+        answer = (self.host.dialog(title, fields) if self.host.dialog else None) or DialogAnswer()
         unknown = set(answer.values) - {f.index for f in fields}
         if unknown:
             raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)
@@ -69,7 +71,7 @@ class Messages(MachineState):
             for index, value in answer.values.items():
                 self.params.write(index, value, self.where(stmt.span))
         self.params.set(t.DIALOG_RESULT, 1.0 if answer.ok else -1.0)
-        self.message("dialog", items[0], {"ok": answer.ok,
+        self.message("dialog", title, {"ok": answer.ok,
                                           "fields": {f.label: self.params.read(f.index) for f in fields}})
 
     def _exec_logfile(self, stmt: n.LogFile) -> None:
@@ -104,4 +106,5 @@ class Messages(MachineState):
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).
-STATEMENTS = {n.Message: "_exec_message", n.Dialog: "_exec_dialog", n.LogFile: "_exec_logfile"}
+STATEMENTS: StatementTable = {n.Message: Messages._exec_message, n.Dialog: Messages._exec_dialog,
+                              n.LogFile: Messages._exec_logfile}

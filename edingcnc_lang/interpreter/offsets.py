@@ -1,7 +1,7 @@
 """Coordinate systems and offsets: G54..G59.3, G92, G10, G28/G30, G53, G68, tool length."""
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 
 from .. import nodes as n
@@ -297,6 +297,8 @@ class CoordinateSystems(MachineState):
         self._offsets_changed()
 
 
-# The non-modal G codes this part runs (G4 and G53 belong to other steps), by method name.
-NON_MODAL: dict[int, str] = {G_10: "_g10", G_28: "_g28_g30", G_30: "_g28_g30", G_92: "_g92", G_92_1: "_g92_1",
-                             G_92_2: "_g92_2", G_92_3: "_g92_3"}
+# The non-modal G codes this part runs (G4 and G53 belong to other steps).
+NON_MODAL: dict[int, Callable[..., None]] = {  # (machine, code, words, span)
+    G_10: CoordinateSystems._g10, G_28: CoordinateSystems._g28_g30, G_30: CoordinateSystems._g28_g30,
+    G_92: CoordinateSystems._g92, G_92_1: CoordinateSystems._g92_1, G_92_2: CoordinateSystems._g92_2,
+    G_92_3: CoordinateSystems._g92_3}

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
-from .state import G_51, MachineState, format_value
+from .state import G_51, MachineState, format_value, StepTable
 
 
 class Scaling(MachineState):
@@ -45,3 +45,7 @@ class Scaling(MachineState):
                 self.scaling = None
             self.params.set(t.SCALING_ACTIVE, 0.0)
             self.canon.event(Event("scaling", self.path, self.line, {"on": False}))
+
+
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+STEPS: StepTable = {"scaling": Scaling._step_scaling}

@@ -12,7 +12,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
 from ..spindle import FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits
-from .state import G_96, MachineState, format_value
+from .state import G_96, MachineState, format_value, StepTable
 
 
 class SpindleModes(MachineState):
@@ -73,3 +73,7 @@ class SpindleModes(MachineState):
         return {"m": self.spindle, "mode": "G96" if css is not None else "G97", "s": self.speed,
                 "rpm": self.rpm_at(self.pos[0]) if self.spindle != 5 else 0.0,
                 "max_rpm": css[1] if css is not None else self.config.spindle_max_rpm}
+
+
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+STEPS: StepTable = {"spindle_mode": SpindleModes._step_spindle_mode, "spindle_speed": SpindleModes._step_spindle_speed, "spindle": SpindleModes._step_spindle}

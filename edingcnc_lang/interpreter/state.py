@@ -11,7 +11,8 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, ClassVar
+from contextlib import AbstractContextManager
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from .. import nodes as n
 from .. import tables as t
@@ -87,6 +88,13 @@ DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_4
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
 
 
+# Dispatch tables of the parts (machine.py merges them): functions, not method names, so every
+# entry is checked by mypy and seen by dead-code tools.  The methods take the part's own type.
+StatementTable = dict[type, Callable[..., None]]      # statement type -> (machine, stmt)
+StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
+CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
+
+
 class ProgramEnd(Exception):
     """M2/M30 (or the end of the file): stops execution wherever it is."""
 
@@ -155,7 +163,7 @@ class MachineState:
     """What one virtual machine knows; create one Interpreter per job run."""
 
     # Built by machine.py from the parts: statement type -> method, and the steps of a line in order.
-    _EXECUTE: ClassVar[dict[type, Callable[[Any, Any], None]]]
+    _EXECUTE: ClassVar[StatementTable]
     _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
 
     def __init__(self, canon: Canon, config: MachineConfig | None = None, host: Host | None = None, *,
@@ -343,3 +351,36 @@ class MachineState:
             raise self.fail("feed rate is 0: program an F word before this feed move (EdingCNC error G1516)",
                             span)
         return rate
+
+    if TYPE_CHECKING:
+        # What the parts call on each other.  Each is defined once, in the part named; machine.py
+        # assembles the parts into one class, and these declarations let mypy check every such call.
+        def execute(self, stmt: n.Stmt) -> None: ...                                         # flow.py
+        def call_sub(self, name: str, span: n.Span | None = None) -> None: ...              # flow.py
+        def _exec_plain_run(self, run: n.PlainRun) -> None: ...                              # bulk.py
+        def _exec_plain_lines(self, run: n.PlainRun) -> None: ...                            # bulk.py
+        def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None: ...  # messages.py
+        def offset(self) -> list[float]: ...                                                 # offsets.py
+        def _live_param(self, index: int) -> float: ...                                      # offsets.py
+        def _offsets_changed(self) -> None: ...                                              # offsets.py
+        def _target(self, words: Mapping[str, float], machine: bool = False) -> list[float]: ...  # offsets.py
+        def machine_kept(self) -> AbstractContextManager[None]: ...                          # offsets.py
+        def work_position(self, machine: list[float] | None = None) -> list[float]: ...      # offsets.py
+        def to_machine(self, work: list[float]) -> list[float]: ...                          # offsets.py
+        def machine_frame(self, pose: list[float] | tuple[float, ...]) -> tuple[float, ...]: ...  # offsets.py
+        def program_frame(self, pose: list[float] | tuple[float, ...]) -> list[float]: ...   # offsets.py
+        def reported_position(self, machine: list[float] | None = None) -> list[float]: ...  # offsets.py
+        def _machine_move(self, kind: str, machine: list[float], feed: float = 0.0) -> None: ...  # offsets.py
+        def _select_coord_system(self, code: int) -> None: ...                               # offsets.py
+        def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None: ...  # offsets.py
+        def scaling_off(self) -> None: ...                                                   # scaling.py
+        def _motion(self, words: Mapping[str, float], g: Mapping[str, int], non_modal: int | None,
+                    span: n.Span) -> None: ...                                               # moves.py
+        def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None: ...  # canned.py
+        def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
+        def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py
+        def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None: ...
+        def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                                span: n.Span) -> None: ...
+        def _step_tool_select(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                              span: n.Span) -> None: ...

@@ -9,7 +9,7 @@ from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
     G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
-    SPINDLE_SELECT, format_value,
+    SPINDLE_SELECT, format_value, StepTable,
 )
 
 
@@ -92,7 +92,7 @@ class LineSteps(MachineState):
     def _step_non_modal(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         handler = NON_MODAL.get(code)
         if handler is not None:
-            getattr(self, handler)(code, words, span)
+            handler(self, code, words, span)
 
     def _step_motion(self, code: int | None, words: Mapping[str, float], g: Mapping[str, int],
                      span: n.Span) -> None:
@@ -171,7 +171,7 @@ class LineSteps(MachineState):
                 self.tool_z = 0.0
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
-        self._offsets_changed()  # type: ignore[attr-defined]  (offsets.py)
+        self._offsets_changed()
 
     def _stop(self, code: int, span: n.Span) -> None:
         if code in PAUSE_CODES:
@@ -187,3 +187,7 @@ class LineSteps(MachineState):
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()
+
+
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+STEPS: StepTable = {"feed_mode": LineSteps._step_feed_mode, "feed": LineSteps._step_feed, "tool_select": LineSteps._step_tool_select, "tool_change": LineSteps._step_tool_change, "coolant": LineSteps._step_coolant, "overrides": LineSteps._step_overrides, "path_control": LineSteps._step_path_control, "io": LineSteps._step_io, "m_state": LineSteps._step_m_state, "dwell": LineSteps._step_dwell, "length_offset": LineSteps._step_length_offset, "coord_system": LineSteps._step_coord_system, "rotation": LineSteps._step_rotation, "non_modal": LineSteps._step_non_modal, "motion": LineSteps._step_motion, "stopping": LineSteps._step_stopping, "units": LineSteps._step_modal, "distance": LineSteps._step_modal, "return_mode": LineSteps._step_modal}

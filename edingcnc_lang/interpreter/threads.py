@@ -7,7 +7,7 @@ the passes into machine moves.
 """
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 from .. import nodes as n
 from ..canon import Event
@@ -17,8 +17,6 @@ from .state import G, G_40, MachineState, PLANE_OF, format_value, xyz_distance
 G_33 = G(33)
 G_33_1 = G(33.1)
 G_76 = G(76)
-# The synchronised motion codes and the method that runs each.
-SYNC_MOTION: Mapping[int, str] = {G_33: "_g33", G_33_1: "_g33_1", G_76: "_g76"}
 G76_LETTERS = "PZIJKRQHEL"
 G76_SCALED = frozenset("PZIJKE")     # lengths: converted from inch in G20
 G76_DIAMETERS = frozenset("IJK")     # halved in diameter mode, as LinuxCNC does in G7
@@ -33,7 +31,7 @@ class Threading(MachineState):
             raise self.fail(f"{name} needs the spindle turning: program M3 or M4 with an S word first", span)
         if self.modal["cutter_comp"] != G_40:
             raise self.fail(f"{name} is not allowed while cutter compensation (G41/G42) is on", span)
-        getattr(self, SYNC_MOTION[motion])(words, span)
+        SYNC_MOTION[motion](self, words, span)
 
     def _sync_move(self, end: list[float], pitch: float, span: n.Span) -> None:
         """One synchronised move from here to ``end`` (its feed: pitch x the mean spindle speed)."""
@@ -102,3 +100,8 @@ class Threading(MachineState):
                 self._move("rapid", end)
             else:
                 self._sync_move(end, move.pitch, span)
+
+
+# The synchronised motion codes and what runs each.
+SYNC_MOTION: Mapping[int, Callable[[Threading, Mapping[str, float], n.Span], None]] = {
+    G_33: Threading._g33, G_33_1: Threading._g33_1, G_76: Threading._g76}

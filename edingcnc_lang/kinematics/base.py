@@ -15,7 +15,7 @@ from edingcnc_lang.kinematics import abi
 if TYPE_CHECKING:
     import numpy as np
 
-Pose = tuple[float, float, float, float, float, float]
+Pose = tuple[float, ...]  # six values (x y z a b c, or the joints): the same Pose as canon.Pose
 AXES = ("x", "y", "z", "a", "b", "c")
 JOINTS = ("jx", "jy", "jz", "ja", "jb", "jc")
 # What a user plug-in may raise that is its failure, not ecnc's: any exception, and sys.exit() (which
