@@ -304,7 +304,7 @@ def _read_fields(ini: IniFile, section: str, table: tuple[tuple[str, str, _Kind]
     return {name: getattr(ini, f"get_{kind}")(section, key, getattr(defaults, name)) for name, key, kind in table}
 
 
-def _read_cartesian(ini: IniFile, base: MachineConfig) -> dict[str, tuple[float, ...]]:
+def _read_cartesian(ini: IniFile, base: MachineConfig) -> dict[str, Any]:
     return {name: tuple(ini.get_float("KINEMATICS", prefix + axis, default)
                         for axis, default in zip(AXES, getattr(base, name)))
             for name, prefix in _CARTESIAN_FIELDS}

@@ -56,7 +56,7 @@ class Builder:
         return handler(self, item)
 
     def _number(self, tree: Tree) -> n.Expr:
-        return n.Number(self._finite(tree.children[0]), self.span(tree))
+        return n.Number(self._finite(_token(tree.children[0])), self.span(tree))
 
     def _finite(self, token: Token) -> float:
         value = float(token)
@@ -113,7 +113,7 @@ class Builder:
         block_delete = False
         for child in tree.children:
             if isinstance(child, str):
-                if _strip(child.type) == "SLASH":
+                if _strip(_token(child).type) == "SLASH":
                     block_delete = True
                 else:  # MSG_COMMENT: "(MSG text)"
                     message = _MSG_TEXT.match(str(child)).group(1)  # type: ignore[union-attr]
@@ -169,7 +169,7 @@ class Builder:
         return n.Dialog(self._items(tree.children[1:]), self.span(tree))
 
     def _logfile(self, tree: Tree) -> n.Stmt:
-        name_tok = tree.children[1]
+        name_tok = _token(tree.children[1])
         name = str(name_tok)
         if _strip(name_tok.type) == "STRING":
             name = name[1:-1]
@@ -185,16 +185,16 @@ class Builder:
         return n.Switch(str(name).lower(), str(state).lower() == "on", self.span(tree))
 
     def _kin(self, tree: Tree) -> n.Stmt:
-        mode_tok = tree.children[1]
+        mode_tok = _token(tree.children[1])
         mode = str(mode_tok).upper()
         if mode not in KIN_MODES:
             raise LineError("E107", f"unknown KIN mode '{mode_tok}' (expected ON, OFF, CTRL or one of "
-                             "X2A X2XA Y2A Y2YA Z2C Z2ZC Y2YAZ2ZC)", mode_tok.column)
+                             "X2A X2XA Y2A Y2YA Z2C Z2ZC Y2YAZ2ZC)", mode_tok.column or 0)
         args = tuple(self.expr(c) for c in tree.children[2:])
         if args and mode != "CTRL":
             raise LineError("E100", f"KIN {mode} takes no arguments", self.span(tree.children[2]).col)
         if mode == "CTRL" and not 1 <= len(args) <= 7:
-            raise LineError("E100", "KIN CTRL needs a control id and up to 6 values", mode_tok.column)
+            raise LineError("E100", "KIN CTRL needs a control id and up to 6 values", mode_tok.column or 0)
         return n.Kin(mode, args, self.span(tree))
 
     def _prepare_delta(self, tree: Tree) -> n.Stmt:
@@ -232,3 +232,8 @@ def make_block(words: list[n.Word], assigns: list[n.Assign], message: str | None
         line_number = int(words[0].value.value)
         words = words[1:]
     return n.Block(tuple(words), tuple(assigns), message, line_number, block_delete, span)
+
+
+def _token(child: Token | Tree | str) -> Token:
+    """A child the grammar makes a token (a terminal), typed as one."""
+    return child  # type: ignore[return-value]

@@ -51,7 +51,7 @@ def mdi(machine: MachineOptions) -> int:
     if interactive:
         _history(load=True)
         print("ecnc mdi: G-code, macro statements or an expression; exit or Ctrl-D ends.")
-    status, pending = EXIT_OK, []
+    status, pending = EXIT_OK, list[str]()
     for line in _lines(interactive, lambda: MORE if pending else PROMPT):
         if line is None:  # Ctrl-C at the prompt: drop what was typed
             pending = []

@@ -86,7 +86,7 @@ def make_streams_usable() -> None:
     if sys.stderr is None:
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - lives as long as the process
     elif sys.stderr is sys.__stderr__:  # not an embedding program's or a test's own stream
-        sys.stderr = QuietStream(sys.stderr)
+        sys.stderr = QuietStream(sys.stderr)  # type: ignore[arg-type]  # a text stream, not None here
     if sys.stdout is None:
         sys.stdout = ClosedStream()
     reconfigure = getattr(sys.stdout, "reconfigure", None)

@@ -59,7 +59,7 @@ OPTIONAL_EXPORTS: dict[str, tuple[object, list[object]]] = {
 
 def _values(struct: ctypes.Structure) -> Pose:
     """The six doubles of a CNC_CART_DOUBLE or CNC_JOINT_DOUBLE as a Pose."""
-    return as_pose(getattr(struct, field) for field, _ in struct._fields_)
+    return as_pose([getattr(struct, name) for name, *_ in struct._fields_])
 
 
 def _load_library(path: Path) -> ctypes.CDLL:

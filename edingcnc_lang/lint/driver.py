@@ -122,9 +122,9 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     variables their kinematics writes count as written for V302.  ``reader`` parses a file; the
     language server passes one that reads the editor's unsaved text and keeps parsed files.
     """
-    paths = [os.fspath(p) for p in paths]
-    inis = [options.ini] if options.ini else [p for p in paths if p.lower().endswith(CONFIG_SUFFIX)]
-    target = resolve(options.target, paths, inis[0] if inis else None)
+    names = [os.fspath(p) for p in paths]
+    inis = [os.fspath(options.ini)] if options.ini else [p for p in names if p.lower().endswith(CONFIG_SUFFIX)]
+    target = resolve(options.target, names, inis[0] if inis else None)
     given = [Path(p) for p in (options.macro, options.user_macro) if p]
     given_resolved = {g.resolve() for g in given}
     loader = _Loader(given, reader)
@@ -132,7 +132,7 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     written: frozenset[int] = frozenset()
     targets: list[SourceFile] = []
     configs = [Path(options.ini)] if options.ini else []
-    for path in expand(paths):
+    for path in expand(names):
         if path.suffix.lower() == CONFIG_SUFFIX:
             configs.append(path)
         else:

@@ -139,7 +139,7 @@ def _draw_path(fig: Figure, ax: Axes, path: Toolpath, view: str, color: str) -> 
     if feed_pieces:
         feeds = np.concatenate(feed_pieces)
         fitted.append(feeds.reshape(-1, 2))
-        collection = LineCollection(feeds, cmap=v.SPEED_COLORMAP, linewidths=FEED_WIDTH, zorder=2)
+        collection = LineCollection(list(feeds), cmap=v.SPEED_COLORMAP, linewidths=FEED_WIDTH, zorder=2)
         collection.set_array(np.concatenate(feed_values))
         ax.add_collection(collection)
         if view == "top":

@@ -135,7 +135,7 @@ class Toolpath:
             chosen = np.ones(len(self), dtype=bool)
         indices = np.flatnonzero(chosen)
         points = [self.starts[indices, :3], self.ends[indices, :3]]
-        points += [self.move_points(i) for i in indices if i in self.arcs]
+        points += [self.move_points(int(i)) for i in indices if i in self.arcs]
         stacked = np.vstack(points)
         return stacked.min(axis=0), stacked.max(axis=0)
 
@@ -212,14 +212,14 @@ class Recorder:
                  error: EcncError | None) -> Toolpath:
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         poses = np.frombuffer(self.poses, dtype=float).reshape(-1, 3, 6)
-        final = result or (getattr(error, "result", None) if error else None)
-        zero = tuple(final.work_zero[:3]) if final is not None else (0.0, 0.0, 0.0)
+        final: RunResult | None = result or (getattr(error, "result", None) if error else None)
+        zero = (final.work_zero[0], final.work_zero[1], final.work_zero[2]) if final is not None else (0.0, 0.0, 0.0)
         return Toolpath(
             job=job, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
             lines=table[:, 2].astype(np.int32), callers=table[:, 8].astype(np.int32),
             files=table[:, 3].astype(np.int16),
             paths=tuple(self.paths), feeds=table[:, 4].copy(), times=table[:, 5:7].copy(),
-            speeds=table[:, 7] * 60.0, seconds=final.estimate.seconds if final is not None else 0.0,
+            speeds=table[:, 7] * 60.0, seconds=final.estimate.seconds if final is not None and final.estimate is not None else 0.0,
             starts=poses[:, 0].copy(), ends=poses[:, 1].copy(), joints=poses[:, 2].copy(), arcs=self.arcs,
             work_zero=zero, limits=machine_limits(config), result=final, error=error,
             joint_names=tuple(j.name for j in config.joints), kinematics=config.kinematics_name or "trivial")

@@ -48,7 +48,7 @@ def auto_view(path: Toolpath) -> str:
     return "lathe" if span[1] < 1e-9 and span[0] > 0.0 and span[2] > 0.0 else "top"
 
 
-def box_edges(lower: Sequence[float], upper: Sequence[float]) -> np.ndarray:
+def box_edges(lower: Sequence[float] | np.ndarray, upper: Sequence[float] | np.ndarray) -> np.ndarray:
     """The 12 edges of an axis-aligned box, as (12, 2, 3) segment end points."""
     lo, hi = np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)
     corners = np.array([[hi[a] if (k >> a) & 1 else lo[a] for a in range(3)] for k in range(8)])

@@ -144,7 +144,7 @@ def check_loaded(kins: Kinematics, label: str, options: CheckOptions, machine: M
 def options_from_json(data: Mapping[str, object]) -> CheckOptions:
     values = dict(data)
     if values.get("box") is not None:
-        values["box"] = tuple(float(v) for v in values["box"])  # type: ignore[union-attr]
+        values["box"] = tuple(float(v) for v in values["box"])  # type: ignore[attr-defined]  # JSON: a list
     return CheckOptions(**values)  # type: ignore[arg-type]
 
 

@@ -103,9 +103,9 @@ def round_trip(kins: Kinematics, samples: Samples, space: Workspace,
     worst_j = int(np.nanargmax(joint_err)) if np.isfinite(joint_err).any() else None
     if worst_p is not None and pos_err[worst_p] > tol:
         kins.inverse(_tup(poses[worst_p]))
-        back = kins.forward(_tup(joints[worst_p]))
+        found = kins.forward(_tup(joints[worst_p]))
         findings.append(Finding("K101", f"forward(inverse(p)) is {pos_err[worst_p]:.6g} away from p "
-                                f"(tolerance {tol:.3g}); forward gives {format_pose(back)}",
+                                f"(tolerance {tol:.3g}); forward gives {format_pose(found)}",
                                 pose=_tup(poses[worst_p]), joints=_tup(joints[worst_p]),
                                 value=float(pos_err[worst_p]), count=int((pos_err > tol).sum())))
     if worst_j is not None and joint_err[worst_j] > joint_tol:

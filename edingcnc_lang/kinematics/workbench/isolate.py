@@ -119,8 +119,9 @@ def _recorder(fn: Callable[..., Any], number: int, record: np.memmap) -> Callabl
     def call(*args: Any) -> Any:
         record[0] = number
         first = args[0] if args else None
-        if hasattr(first, "_fields_"):
-            record[1:7] = [getattr(first, f) for f, _ in first._fields_]
+        fields = getattr(first, "_fields_", None)
+        if fields is not None:
+            record[1:7] = [getattr(first, f) for f, *_ in fields]
         elif isinstance(first, int):
             record[1] = first
         record[7] += 1

@@ -115,7 +115,7 @@ def speed(kins: Kinematics, samples: Samples, budget: float = 0.2) -> Section:
     if not len(poses):
         return Section("speed", "not run: nothing reachable")
     joints = samples.inverse.values[samples.inverse.ok]
-    figures = {"inverse_per_second": _rate(kins.inverse, poses, budget),
+    figures: dict[str, float | None] = {"inverse_per_second": _rate(kins.inverse, poses, budget),
                "forward_per_second": _rate(kins.forward, joints, budget)}
     vectorised = type(kins).inverse_many is not KinematicsPlugin.inverse_many
     summary = (f"scalar inverse {figures['inverse_per_second']:,.0f} calls/s, forward "
@@ -128,8 +128,9 @@ def speed(kins: Kinematics, samples: Samples, budget: float = 0.2) -> Section:
         except PLUGIN_FAILURES:  # the sampled poses were reached one by one; a batch failure is not a speed figure
             figures["batch_inverse_per_second"] = None
         else:
-            figures["batch_inverse_per_second"] = len(batch) / max(time.perf_counter() - start, 1e-9)
-            summary += f"; batch inverse {figures['batch_inverse_per_second'] / 1e6:.3g} M samples/s"
+            rate = len(batch) / max(time.perf_counter() - start, 1e-9)
+            figures["batch_inverse_per_second"] = rate
+            summary += f"; batch inverse {rate / 1e6:.3g} M samples/s"
     else:
         summary += "; no batch inverse (inverse_many loops over the scalar call)"
     return Section("speed", summary, figures)
