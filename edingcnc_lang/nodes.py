@@ -232,6 +232,9 @@ class Command:
     name: str  # lower-case
     args: str
     span: Span = field(default=NO_SPAN, compare=False)
+    # the arguments as expressions (``ZHCINIT [#4104] 10 5``), when they read as a list of them;
+    # parsed with the line, so the machine evaluates them without a parser
+    values: tuple[Expr, ...] | None = None
 
 
 @dataclass(frozen=True, slots=True)

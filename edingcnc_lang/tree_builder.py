@@ -203,7 +203,22 @@ class Builder:
 
     def _command(self, tree: Tree) -> n.Stmt:
         args = str(tree.children[1]).strip() if len(tree.children) > 1 else ""
-        return n.Command(str(tree.children[0]).lower(), args, self.span(tree))
+        values = self._values(args, _token(tree.children[1]).column or 1) if args else None
+        return n.Command(str(tree.children[0]).lower(), args, self.span(tree), values)
+
+    def _values(self, args: str, col: int) -> tuple[n.Expr, ...] | None:
+        """A command's arguments read as expressions, each spanned where it stands in the line, or
+        None when they are not a list of expressions (a file name, words)."""
+        from .line_parser import _LineError, parse_line  # the line parser builds its trees here
+
+        pad = " " * max(0, col - 1 - len("msg "))  # "msg " ends where the arguments start
+        try:
+            message = parse_line(f"{pad}msg {args}", self.path, self.line)
+        except _LineError:
+            return None
+        if not isinstance(message, n.Message) or any(isinstance(item, (str, n.Stamp)) for item in message.items):
+            return None
+        return message.items  # type: ignore[return-value]  # (no strings or stamps: expressions)
 
     def _percent(self, tree: Tree) -> LineResult:
         return None

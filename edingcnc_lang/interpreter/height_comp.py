@@ -17,8 +17,6 @@ from ..canon import Event
 from ..errors import EcncError
 from ..heightmap import ZhcTable
 from ..job_files import OpenMode, job_file, open_job_file
-from ..line_parser import parse_line
-from ..tree_builder import LineError
 from .state import CommandTable, MachineState
 
 
@@ -28,15 +26,11 @@ class HeightComp(MachineState):
     zhc: ZhcTable | None = None
 
     def _command_values(self, stmt: n.Command, count: int, usage: str) -> list[float]:
-        """The ``count`` numeric arguments of a command (``ZHCINIT [#4104] 10 [#4101]``), evaluated."""
-        try:
-            message = parse_line(f"msg {stmt.args}", stmt.span.path, stmt.span.line) if stmt.args else None
-        except LineError:  # ZHCINIT 10 5 nan: not a list of values
-            message = None
-        items = message.items if isinstance(message, n.Message) else ()
-        if len(items) != count or any(isinstance(item, (str, n.Stamp)) for item in items):
+        """The ``count`` numeric arguments of a command (``ZHCINIT [#4104] 10 [#4101]``), evaluated
+        (the parser read them as expressions; ``ZHCINIT 10 5 nan`` has none)."""
+        if stmt.values is None or len(stmt.values) != count:
             raise self.fail(f"{usage} (got {stmt.args or 'nothing'!r})", stmt.span)
-        return [self.evaluator.value(item) for item in items]  # type: ignore[arg-type]
+        return [self.evaluator.value(item) for item in stmt.values]
 
     def _zhc_init(self, stmt: n.Command) -> None:
         if stmt.name == "zhcinit":
