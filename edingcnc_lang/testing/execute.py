@@ -21,7 +21,7 @@ from ..host import DialogAnswer, DialogField, Host
 from ..interpreter import Interpreter
 from ..limits import DEFAULT_MAX_STEPS
 from ..runner import Run, RunOptions
-from .coverage import CoverageData, CoverageObserver
+from .coverage import CoverageData, CoverageObserver, display_path
 from .spec import AXES as AXIS_KEYS
 from .spec import Forbid, TestCase
 
@@ -69,7 +69,7 @@ def run_case(case: TestCase, coverage: CoverageData | None = None) -> Outcome:
     observer = CoverageObserver(coverage) if coverage is not None else None
     with tempfile.TemporaryDirectory(prefix="ecnc-test-") as logs:  # logmsg/logfile write here, not beside the test
         options = RunOptions(
-            ini=case.ini, macro=case.macro, user_macro=case.user_macro,
+            ini=_shown(case.ini), macro=_shown(case.macro), user_macro=_shown(case.user_macro),
             host=Host(dialog=_Dialogs(case.answers, outcome), probe=_Probe(case, holder, outcome)),
             max_steps=case.max_steps or DEFAULT_MAX_STEPS, log_dir=Path(logs), simulation=case.simulation,
             on_move=watch.move, on_event=watch.event, plan=False, variables=case.vars, observer=observer)
@@ -80,7 +80,7 @@ def run_case(case: TestCase, coverage: CoverageData | None = None) -> Outcome:
                 observer.watch(run.macro_files())
             watch.interpreter = run.interpreter
             if case.job_file is not None:
-                run.execute_file(case.job_file)
+                run.execute_file(case.job_file, display_path(str(case.job_file)))
             else:
                 run.execute_text(case.job or "", JOB_NAME)
         except ProbeScriptError as err:
@@ -93,6 +93,11 @@ def run_case(case: TestCase, coverage: CoverageData | None = None) -> Outcome:
     outcome.violations = watch.violations()
     outcome.seconds = time.perf_counter() - started
     return outcome
+
+
+def _shown(path: Path | None) -> Path | None:
+    """A file as the run's messages should name it: relative to the current folder when below it."""
+    return Path(display_path(str(path))) if path is not None else None
 
 
 def _final_state(outcome: Outcome, run: Run) -> None:

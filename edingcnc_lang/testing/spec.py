@@ -328,7 +328,7 @@ class _Reader:
     def path(self, table: Mapping[str, Any], key: str) -> Path | None:
         if key not in table:
             return None
-        path = (self.folder / self.string(table, key)).resolve()
+        path = Path(os.path.abspath(self.folder / self.string(table, key)))
         if not path.is_file():
             raise self.error(f"{key} {table[key]!r}: no such file ({path})", self.line_of(key))
         return path
