@@ -39,6 +39,7 @@ MERGED_TABLES = ("vars", "expect", "forbid")  # [defaults] and a test's table ar
 class TestFileError(EcncError):
     """A test file that cannot be read or asks for something impossible: exit 65, nothing runs."""
 
+    __test__ = False  # not a pytest test class, whatever its name
     exit_code = EXIT_SYNTAX
     kind = "syntax"
 
@@ -111,9 +112,11 @@ def discover(paths: Iterable[str | os.PathLike[str]]) -> list[Path]:
         if not path.is_dir():
             found.append(path)
             continue
+        below = []
         for folder, dirs, files in os.walk(path):
-            dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d != "__pycache__")
-            found.extend(Path(folder, f) for f in sorted(files) if Path(f).match(TEST_GLOB))
+            dirs[:] = [d for d in dirs if not d.startswith(".") and d != "__pycache__"]
+            below.extend(Path(folder, f) for f in files if Path(f).match(TEST_GLOB))
+        found.extend(sorted(below))
     return list(dict.fromkeys(found))
 
 
