@@ -112,7 +112,7 @@ def discover(paths: Iterable[str | os.PathLike[str]]) -> list[Path]:
         if not path.is_dir():
             found.append(path)
             continue
-        below = []
+        below: list[Path] = []
         for folder, dirs, files in os.walk(path):
             dirs[:] = [d for d in dirs if not d.startswith(".") and d != "__pycache__"]
             below.extend(Path(folder, f) for f in files if Path(f).match(TEST_GLOB))
