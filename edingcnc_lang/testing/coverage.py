@@ -27,7 +27,8 @@ BRANCH_NAMES = {(n.If, True): "then", (n.If, False): "else", (n.While, True): "e
 
 @dataclass
 class CoverageData:
-    """What the runs reached, keyed by the macro file's absolute path; merged across tests and workers."""
+    """What the runs reached, keyed by the macro file's real path (a file reached through a symlink
+    is still one file); merged across tests and workers."""
 
     lines: set[tuple[str, int]] = field(default_factory=set)
     branches: set[tuple[str, int, bool]] = field(default_factory=set)
@@ -46,24 +47,27 @@ class CoverageObserver(Observer):
 
     def __init__(self, data: CoverageData) -> None:
         self.data = data
-        self.paths: frozenset[str] = frozenset()
+        self.paths: dict[str, str] = {}  # as spans name a macro file -> its real path (one key per file)
 
     def watch(self, macro_files: Iterable[str | os.PathLike[str]]) -> None:
         """The run's macro files (``Run.macro_files()``), named as their statements' spans name them."""
-        self.paths = frozenset(os.fspath(p) for p in macro_files)
-        self.data.files |= {os.path.abspath(p) for p in self.paths}
+        self.paths = {os.fspath(p): os.path.realpath(p) for p in macro_files}
+        self.data.files |= set(self.paths.values())
 
     def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
-        if machine.path in self.paths:
-            self.data.lines.add((os.path.abspath(machine.path), stmt.span.line))
+        real = self.paths.get(machine.path)
+        if real is not None:
+            self.data.lines.add((real, stmt.span.line))
 
     def branch(self, machine: MachineState, stmt: n.If | n.While, taken: bool) -> None:
-        if stmt.span.path in self.paths:
-            self.data.branches.add((os.path.abspath(stmt.span.path), stmt.span.line, taken))
+        real = self.paths.get(stmt.span.path)
+        if real is not None:
+            self.data.branches.add((real, stmt.span.line, taken))
 
     def call(self, machine: MachineState, frame: CallFrame, sub: n.Sub) -> None:
-        if sub.span.path in self.paths:
-            self.data.subs.add((os.path.abspath(sub.span.path), sub.name.lower()))
+        real = self.paths.get(sub.span.path)
+        if real is not None:
+            self.data.subs.add((real, sub.name.lower()))
 
     def line_by_line(self, machine: MachineState, run: n.PlainRun) -> bool:
         """Chunks of plain lines come only from jobs (macro files are read whole), which are not
