@@ -63,7 +63,7 @@ def write_coverage_html(files: Sequence[FileCoverage], folder: Path) -> Path:
                     f"<td>{cov.branches_hit}/{cov.branches_total}</td>"
                     f"<td>{html.escape(', '.join(cov.subs_never_run)) or '-'}</td></tr>")
     body = ("<table><tr><th>macro file</th><th>lines</th><th>branches</th><th>subs no test ran</th></tr>"
-            + "".join(rows) + "</table>")
+            + "\n".join(rows) + "</table>")
     index = folder / "index.html"
     index.write_text(_page("Macro coverage", body), encoding="utf-8")
     return index
@@ -85,7 +85,7 @@ def _file_page(cov: FileCoverage) -> str:
             f"{html.escape(', '.join(cov.subs_never_run)) or 'none'}</p>"
             "<p><span class=\"hit\">run</span> <span class=\"missed\">not run</span> "
             "<span class=\"partial\">a branch not taken</span></p>")
-    return _page(cov.path, head + "<table class=\"src\">" + "".join(rows) + "</table>")
+    return _page(cov.path, head + "<table class=\"src\">\n" + "\n".join(rows) + "\n</table>")
 
 
 def _page(title: str, body: str) -> str:

@@ -124,7 +124,7 @@ def load_file(path: str | os.PathLike[str]) -> list[TestCase]:
     """Every test of one file; a file that does not load raises ``TestFileError``."""
     name = os.fspath(path)
     try:
-        text = Path(path).read_bytes().decode("utf-8")
+        text = Path(path).read_bytes().decode("utf-8-sig")  # an editor's BOM is no mistake
     except OSError as err:
         raise TestFileError(f"cannot read the test file: {err.strerror or err}", Location(name)) from None
     except UnicodeDecodeError as err:

@@ -100,6 +100,13 @@ def test_a_file_that_is_not_utf8_is_an_error(tmp_path: Path) -> None:
     assert "must be UTF-8" in error_of(path)
 
 
+def test_a_bom_and_crlf_line_ends_are_read(tmp_path: Path) -> None:
+    path = tmp_path / "test_bom.toml"
+    path.write_bytes('\ufeff[[test]]\r\nname = "Fräse"\r\njob = "M30"\r\nfoo = 1\r\n'.encode("utf-8"))
+    assert error_of(path).endswith(":4: error: unknown key 'foo' (a test takes answers, expect, forbid, ini, job, "
+                                   "job_file, macro, max_steps, name, probe, simulation, user_macro, vars)")
+
+
 def test_discover_finds_test_files_below_folders_but_not_in_hidden_ones(tmp_path: Path) -> None:
     for name in ("a/test_one.toml", "a/b/test_two.toml", "a/other.toml", ".venv/test_no.toml", "pyproject.toml"):
         (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
