@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX
+from ..errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX, printable
 from .base import Command, usage_error
 from .params import OUTPUT_FILE, ExistingPath
 from .style import styled, wants_colour
@@ -40,6 +40,8 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
     from ..testing.spec import TestFileError, discover, load_file
 
     reports = _coverage_reports(cov_reports) if cov or cov_reports else []
+    if junit == "-":
+        raise usage_error("--junit needs a file: standard output carries the report")
     files = discover(paths or (".",))
     if not files:
         raise usage_error(f"no test_*.toml files in {', '.join(paths or ('.',))}")
@@ -62,7 +64,7 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
     colour = wants_colour(sys.stdout)
 
     def show(result: TestResult) -> None:
-        text = result.text
+        text = printable(result.text)  # a test's name or a job's msg text must not drive the terminal
         if colour:
             word, rest = text[:4], text[4:]
             text = click.style(word, fg="green" if word == "PASS" else "red", bold=True) + rest

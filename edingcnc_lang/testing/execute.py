@@ -16,7 +16,7 @@ from pathlib import Path
 
 from .. import tables as t
 from ..canon import AXES, Event, Move, Pose, format_pose
-from ..errors import EcncError, Location
+from ..errors import EcncError, Interrupted, Location
 from ..host import DialogAnswer, DialogField, Host
 from ..interpreter import Interpreter
 from ..limits import DEFAULT_MAX_STEPS
@@ -45,7 +45,7 @@ class Outcome:
     position: dict[str, float] = field(default_factory=dict)  # work position at the end (x..c)
     machine: dict[str, float] = field(default_factory=dict)
     messages: list[tuple[str, str]] = field(default_factory=list)  # (kind, text) of msg/warnmsg/logmsg/...
-    moves: list[Move] = field(default_factory=list)
+    moves: list[Move] = field(default_factory=list)  # only with keep_moves
     violations: list[str] = field(default_factory=list)  # forbid rules broken, one text per rule
     dialogs: int = 0
     probes: int = 0
@@ -57,14 +57,16 @@ class Outcome:
         return self.params[index]
 
 
-def run_case(case: TestCase, coverage: CoverageData | None = None) -> Outcome:
-    """Run one test on a fresh machine; every error of the run is kept in the outcome, never raised.
+def run_case(case: TestCase, coverage: CoverageData | None = None, keep_moves: bool = False) -> Outcome:
+    """Run one test on a fresh machine; every error of the run is kept in the outcome, never raised
+    (but Ctrl-C).
 
-    With ``coverage``, what the run reaches in its macro files is added to it.
+    With ``coverage``, what the run reaches in its macro files is added to it; ``keep_moves`` keeps
+    every move in ``Outcome.moves`` (for Python tests; the forbid rules need no list).
     """
     started = time.perf_counter()
     outcome = Outcome(case)
-    watch = _Watch(case.forbid)
+    watch = _Watch(case.forbid, keep_moves)
     holder: list[Run] = []
     observer = CoverageObserver(coverage) if coverage is not None else None
     with tempfile.TemporaryDirectory(prefix="ecnc-test-") as logs:  # logmsg/logfile write here, not beside the test
@@ -83,6 +85,8 @@ def run_case(case: TestCase, coverage: CoverageData | None = None) -> Outcome:
                 run.execute_file(case.job_file, display_path(str(case.job_file)))
             else:
                 run.execute_text(case.job or "", JOB_NAME)
+        except Interrupted:  # Ctrl-C ends every test, not this one
+            raise
         except ProbeScriptError as err:
             outcome.test_problem = err.message
         except EcncError as err:
@@ -164,8 +168,9 @@ class _Watch:
     is unplanned, so each move arrives while the interpreter is still on its line).
     """
 
-    def __init__(self, forbid: Forbid) -> None:
+    def __init__(self, forbid: Forbid, keep_moves: bool) -> None:
         self.forbid = forbid
+        self.keep_moves = keep_moves
         self.interpreter: Interpreter | None = None
         self.moves: list[Move] = []
         self.turning = False
@@ -178,7 +183,8 @@ class _Watch:
             self.turning = running and float(event.data.get("rpm") or 0.0) > 0.0
 
     def move(self, move: Move, _joints: Pose) -> None:
-        self.moves.append(move)
+        if self.keep_moves:
+            self.moves.append(move)
         forbid, interp = self.forbid, self.interpreter
         if interp is None:
             return

@@ -107,7 +107,7 @@ class MacroRunner:
             case = from_mapping(given, self.folder, self.name)
         except TestFileError as err:
             pytest.fail(err.format(), pytrace=False)
-        outcome = run_case(case)
+        outcome = run_case(case, keep_moves=True)
         if "expect" in keys or "forbid" in keys:
             found = failures(outcome)
             if found:

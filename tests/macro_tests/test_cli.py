@@ -108,3 +108,25 @@ def test_no_test_files_is_a_usage_error(tmp_path: Path, monkeypatch: pytest.Monk
     monkeypatch.chdir(tmp_path)
     result = invoke("test")
     assert result.exit_code == 2 and "no test_*.toml files in ." in result.stderr
+
+
+def test_control_characters_in_a_name_are_shown_escaped(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "test_esc.toml").write_text('[[test]]\nname = "clear\\u001b[2J"\njob = "M30\\n"\n')
+    assert invoke("test").stdout.splitlines()[0] == "PASS test_esc.toml:1: clear\\x1b[2J"
+
+
+def test_ctrl_c_stops_every_test_with_exit_130(folder: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from edingcnc_lang.runner import Run
+
+    def interrupted(self: Run, macros: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(Run, "start", interrupted)
+    result = invoke("test")
+    assert result.exit_code == 130 and result.stdout == "" and "interrupted (Ctrl-C)" in result.stderr
+
+
+def test_junit_to_standard_output_is_refused(folder: Path) -> None:
+    result = invoke("test", "--junit", "-")
+    assert result.exit_code == 2 and "--junit needs a file" in result.stderr
