@@ -2,7 +2,9 @@
 
 * ``test_*.toml`` files are collected: one pytest item per ``[[test]]``, failing with the same text
   ``ecnc test`` prints; a file that does not load is a collection error ``FILE:LINE: error: ...``.
-  Only files named ``test_*.toml`` are touched, so other TOML files (pyproject.toml) stay unread.
+  Only files named ``test_*.toml`` that hold a ``[[test]]`` table are collected, so other TOML files
+  (pyproject.toml, a project's ``test_settings.toml`` data) are left alone; ``-p no:ecnc`` turns
+  the plugin off.
 * The ``ecnc`` fixture runs a macro from a Python test::
 
       def test_probe(ecnc):
@@ -17,6 +19,7 @@ Nothing heavy is imported until a test runs, so pytest starts as fast with the p
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -33,9 +36,19 @@ if TYPE_CHECKING:
 
 
 def pytest_collect_file(parent: pytest.Collector, file_path: Path) -> pytest.Collector | None:
-    if file_path.match(TEST_GLOB):
+    """A ``test_*.toml`` file that holds a ``[[test]]`` table: another project's data file that
+    happens to be called ``test_settings.toml`` is left alone."""
+    if file_path.match(TEST_GLOB) and _has_tests(file_path):
         return MacroTestFile.from_parent(parent, path=file_path)
     return None
+
+
+def _has_tests(path: Path) -> bool:
+    try:
+        text = path.read_bytes().decode("utf-8", errors="replace")
+    except OSError:
+        return True  # let the collector report what cannot be read
+    return re.search(r"^\s*\[\[\s*test\s*\]\]", text, re.MULTILINE) is not None
 
 
 class MacroTestFile(pytest.File):

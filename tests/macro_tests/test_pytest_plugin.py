@@ -42,6 +42,7 @@ def test_toml_tests_and_the_fixture_under_pytest(tmp_path: Path) -> None:
     (tmp_path / "test_fixture.py").write_text(PYTHON)
     (tmp_path / "pyproject.toml").write_text("[tool.x]\nnot_a = 'test'\n")
     (tmp_path / "settings.toml").write_text("broken = [")  # not test_*.toml: never read
+    (tmp_path / "test_data.toml").write_text("broken = [")  # no [[test]] table: some other project's data
     done = pytest_in(tmp_path, "-p", "no:ecnc")
     out = done.stdout
     assert done.returncode == 1, out + done.stderr
