@@ -92,3 +92,10 @@ def test_forbid_rules_name_the_line_of_the_move(tmp_path: Path) -> None:
 def test_rules_hold_in_work_coordinates_and_probing_is_no_feed(tmp_path: Path) -> None:
     job = "G10 L2 P1 Z-50\nG0 Z1\nG38.2 Z-5 F100\nG0 Z3\nM30\n"  # machine Z -49 is work Z 1
     assert judge(tmp_path, job=job, forbid={"rapid_below_z": 1, "feed_with_spindle_off": True}) == []
+
+
+def test_forbid_rules_see_the_moves_of_a_job_files_bulk_path(tmp_path: Path) -> None:
+    (tmp_path / "job.nc").write_text("G0 X1\nG0 Z-1\nG1 X5 F100\nG0 Z-2\nM30\n")  # plain lines: run in chunks
+    assert judge(tmp_path, job_file="job.nc", forbid={"rapid_below_z": 0, "feed_with_spindle_off": True}) == [
+        f"forbid.rapid_below_z: the rapid at {tmp_path / 'job.nc'}:2 ends at work Z-1, below Z0 (and 1 more)",
+        f"forbid.feed_with_spindle_off: the linear move at {tmp_path / 'job.nc'}:3 feeds with the spindle off"]
