@@ -17,7 +17,7 @@ from pathlib import Path
 from .. import tables as t
 from ..canon import AXES, Event, Move, Pose, format_pose
 from ..errors import EcncError, Interrupted, Location
-from ..host import DialogAnswer, DialogField, Host
+from ..host import DialogAnswer, DialogCallback, DialogField, Host, scripted_dialogs
 from ..interpreter import Interpreter
 from ..limits import DEFAULT_MAX_STEPS
 from ..runner import Run, RunOptions
@@ -72,7 +72,7 @@ def run_case(case: TestCase, coverage: CoverageData | None = None, keep_moves: b
     with tempfile.TemporaryDirectory(prefix="ecnc-test-") as logs:  # logmsg/logfile write here, not beside the test
         options = RunOptions(
             ini=_shown(case.ini), macro=_shown(case.macro), user_macro=_shown(case.user_macro),
-            host=Host(dialog=_Dialogs(case.answers, outcome), probe=_Probe(case, holder, outcome)),
+            host=Host(dialog=_counted(scripted_dialogs(case.answers), outcome), probe=_Probe(case, holder, outcome)),
             max_steps=case.max_steps or DEFAULT_MAX_STEPS, log_dir=Path(logs), simulation=case.simulation,
             on_move=watch.move, on_event=watch.event, plan=False, variables=case.vars, observer=observer)
         try:
@@ -114,16 +114,14 @@ def _final_state(outcome: Outcome, run: Run) -> None:
     outcome.ended_by = interp.ended_by
 
 
-class _Dialogs:
-    """The test's answers in order, then OK with the values unchanged; counts the dialogs shown."""
+def _counted(dialog: DialogCallback, outcome: Outcome) -> DialogCallback:
+    """The dialog callback, counting the dialogs shown (answers left over fail the test)."""
 
-    def __init__(self, answers: Sequence[DialogAnswer], outcome: Outcome) -> None:
-        self.answers = list(answers)
-        self.outcome = outcome
+    def answer(title: str, fields: Sequence[DialogField]) -> DialogAnswer | None:
+        outcome.dialogs += 1
+        return dialog(title, fields)
 
-    def __call__(self, _title: str, _fields: Sequence[DialogField]) -> DialogAnswer | None:
-        self.outcome.dialogs += 1
-        return self.answers.pop(0) if self.answers else None
+    return answer
 
 
 class _Probe:
