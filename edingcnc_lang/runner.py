@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import os
 from itertools import islice
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
@@ -117,6 +117,9 @@ class RunOptions:
     plan: bool = True
     # watches every statement, branch and sub call (the debugger, macro coverage): interpreter/observe.py
     observer: Observer | None = None
+    # parameters set before the job's first line (after the macro files' top-level lines and the
+    # ini's initialString, before the start sub), as if the machine had them: a test's starting state
+    variables: Mapping[int, float] = field(default_factory=dict)
 
 
 def packaged_macro() -> Path:
@@ -246,6 +249,7 @@ class Run:
         error: EcncError | None = None
         try:
             self.start(macros)
+            self._set_variables()
             if "start" in interp.subs:
                 interp.call_sub("start")
             interp.run(statements())
@@ -273,6 +277,18 @@ class Run:
         if self.options.save_vars and self.config.path:
             save_variables(self.config.path, interp.params.snapshot_changed())
         return result
+
+    def _set_variables(self) -> None:
+        """``RunOptions.variables``: loaded like the ini's persisted values (they count as the start,
+        not as written by the run); a read-only system variable or a number out of range is refused."""
+        values = self.options.variables
+        for index in values:
+            if not t.FIRST_PARAM <= index <= t.LAST_PARAM:
+                raise EcncError(f"variables: #{index} is not a parameter (#{t.FIRST_PARAM}..#{t.LAST_PARAM})")
+            if t.is_read_only(index):
+                raise EcncError(f"variables: #{index} is a read-only system variable (the machine sets it)")
+        if values:
+            self.interpreter.params.load({i: float(v) for i, v in values.items()})
 
     @property
     def _outputs(self) -> tuple[Path | None, ...]:

@@ -1,0 +1,116 @@
+"""``ecnc test [PATH...]``: run the tests of ``test_*.toml`` files against macro files (docs/testing.md)."""
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import click
+
+from ..errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX, printable
+from .base import Command, usage_error
+from .params import OUTPUT_FILE, ExistingPath
+from .style import styled, wants_colour
+
+if TYPE_CHECKING:
+    from ..testing.coverage import CoverageData
+    from ..testing.session import TestResult
+
+
+@click.command("test", cls=Command, short_help="Run the tests of test_*.toml files; exit 1 if one fails.")
+@click.argument("paths", metavar="[PATH...]", nargs=-1, type=ExistingPath())
+@click.option("-k", "keyword", metavar="EXPR",
+              help="Only the tests whose FILE::NAME holds these words (and, or, not, parentheses).")
+@click.option("-x", "--exitfirst", is_flag=True, help="Stop at the first failing test.")
+@click.option("--junit", metavar="FILE", type=OUTPUT_FILE, help="Write the results as JUnit XML.")
+@click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
+              help="Run the test files on N processes (0: one per CPU).")
+@click.option("--cov", "cov", is_flag=True, help="Report the coverage of the macro files the tests ran.")
+@click.option("--cov-report", "cov_reports", metavar="term|json:FILE|html:DIR", multiple=True,
+              help="Coverage report (repeatable; implies --cov; default term).")
+def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: str | None, jobs: int,
+         cov: bool, cov_reports: tuple[str, ...]) -> int:
+    """Run the tests in PATHs (test_*.toml files, or folders searched for them; default: here).
+
+    One line per test (PASS or FAIL, and what differs), then "N passed, M failed".
+    Exit 0 all passed, 1 a test failed, 65 a test file does not load, 2 usage.
+    """
+    from ..testing.session import run_cases, select
+    from ..testing.spec import TestFileError, discover, load_file
+
+    reports = _coverage_reports(cov_reports) if cov or cov_reports else []
+    if junit == "-":
+        raise usage_error("--junit needs a file: standard output carries the report")
+    files = discover(paths or (".",))
+    if not files:
+        raise usage_error(f"no test_*.toml files in {', '.join(paths or ('.',))}")
+    loaded, broken = [], []
+    for path in files:
+        try:
+            loaded.append(load_file(path))
+        except TestFileError as err:
+            broken.append(err.format())
+    if broken:
+        print(styled("\n".join(broken), sys.stderr), file=sys.stderr)
+        return EXIT_SYNTAX
+    try:
+        chosen = [select(cases, keyword) for cases in loaded]
+    except ValueError as err:
+        raise usage_error(str(err)) from None
+    chosen = [cases for cases in chosen if cases]
+    if not chosen:
+        raise usage_error(f"no test matches -k {keyword!r}")
+    colour = wants_colour(sys.stdout)
+
+    def show(result: TestResult) -> None:
+        text = printable(result.text)  # a test's name or a job's msg text must not drive the terminal
+        if colour:
+            word, rest = text[:4], text[4:]
+            text = click.style(word, fg="green" if word == "PASS" else "red", bold=True) + rest
+        print(text, flush=True)
+
+    summary = run_cases(chosen, stop_first=exitfirst, jobs=jobs or os.cpu_count() or 1, coverage=bool(reports),
+                        report=show)
+    print(summary.line)
+    if junit:
+        from ..testing.reports import junit_xml
+
+        _write(junit, junit_xml(summary))
+    if reports and summary.coverage is not None:
+        _coverage(reports, summary.coverage)
+    return EXIT_FINDINGS if summary.failed else EXIT_OK
+
+
+def _coverage_reports(given: tuple[str, ...]) -> list[tuple[str, str]]:
+    """``term``, ``json:FILE``, ``html:DIR`` as (kind, target); a bad one is a usage error."""
+    reports = []
+    for item in given or ("term",):
+        kind, colon, target = item.partition(":")
+        if kind not in ("term", "json", "html") or (kind == "term") == bool(colon):
+            raise usage_error(f"--cov-report {item!r}: write term, json:FILE or html:DIR")
+        if kind != "term" and not target:
+            raise usage_error(f"--cov-report {item!r}: name the {'file' if kind == 'json' else 'folder'}")
+        reports.append((kind, target))
+    return reports
+
+
+def _coverage(reports: list[tuple[str, str]], data: CoverageData) -> None:
+    from ..testing.coverage import summarise
+    from ..testing.reports import coverage_json, coverage_term, write_coverage_html
+
+    files = summarise(data)
+    for kind, target in reports:
+        if kind == "term":
+            print(coverage_term(files))
+        elif kind == "json":
+            _write(target, coverage_json(files))
+        else:
+            print(f"coverage pages: {write_coverage_html(files, Path(target))}")
+
+
+def _write(target: str, text: str) -> None:
+    path = Path(target)
+    if path.parent != Path(""):
+        path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")

@@ -1,0 +1,122 @@
+"""The reports of ``ecnc test``: coverage as text, JSON or HTML pages, and JUnit XML for CI."""
+from __future__ import annotations
+
+import html
+import json
+import os
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+
+from ..source import iter_file_lines
+from .coverage import FileCoverage
+from .session import Summary
+
+COVERAGE_FORMATS = ("term", "json", "html")
+
+
+def percent(hit: int, total: int) -> str:
+    return f"{100.0 * hit / total:.0f}%" if total else "-"
+
+
+def ranges(lines: Iterable[int]) -> str:
+    """``3-5, 9, 12-13``: line numbers folded into runs."""
+    runs: list[list[int]] = []
+    for line in sorted(lines):
+        if runs and line == runs[-1][1] + 1:
+            runs[-1][1] = line
+        else:
+            runs.append([line, line])
+    return ", ".join(str(a) if a == b else f"{a}-{b}" for a, b in runs)
+
+
+def coverage_term(files: Sequence[FileCoverage]) -> str:
+    """A block per macro file: lines, branches, the lines missed and the subs never run."""
+    out = []
+    for cov in files:
+        out.append(f"{cov.path}: lines {len(cov.lines_hit)}/{cov.lines_total} "
+                   f"({percent(len(cov.lines_hit), cov.lines_total)}), branches {cov.branches_hit}/"
+                   f"{cov.branches_total} ({percent(cov.branches_hit, cov.branches_total)})")
+        if cov.missed:
+            out.append(f"  lines not run: {ranges(cov.missed)}")
+        if cov.branches_missed:
+            out.append("  branches not taken: " + ", ".join(f"{line} {name}" for line, name in cov.branches_missed))
+        if cov.subs_never_run:
+            out.append(f"  subs no test ran: {', '.join(cov.subs_never_run)}")
+    return "\n".join(out)
+
+
+def coverage_json(files: Sequence[FileCoverage]) -> str:
+    return json.dumps({"files": {cov.path: cov.to_json() for cov in files}}, indent=2) + "\n"
+
+
+def write_coverage_html(files: Sequence[FileCoverage], folder: Path) -> Path:
+    """``index.html`` listing the files, and a page per file with its lines coloured; returns the index."""
+    folder.mkdir(parents=True, exist_ok=True)
+    rows = []
+    for number, cov in enumerate(files, 1):
+        page = f"{number:02d}_{re.sub(r'[^A-Za-z0-9_.-]+', '_', Path(cov.path).name)}.html"
+        (folder / page).write_text(_file_page(cov), encoding="utf-8")
+        rows.append(f"<tr><td><a href=\"{html.escape(page)}\">{html.escape(cov.path)}</a></td>"
+                    f"<td>{len(cov.lines_hit)}/{cov.lines_total} ({percent(len(cov.lines_hit), cov.lines_total)})</td>"
+                    f"<td>{cov.branches_hit}/{cov.branches_total}</td>"
+                    f"<td>{html.escape(', '.join(cov.subs_never_run)) or '-'}</td></tr>")
+    body = ("<table><tr><th>macro file</th><th>lines</th><th>branches</th><th>subs no test ran</th></tr>"
+            + "\n".join(rows) + "</table>")
+    index = folder / "index.html"
+    index.write_text(_page("Macro coverage", body), encoding="utf-8")
+    return index
+
+
+def _file_page(cov: FileCoverage) -> str:
+    missed, hit = set(cov.missed), cov.lines_hit
+    partial: dict[int, list[str]] = {}
+    for line, name in cov.branches_missed:
+        partial.setdefault(line, []).append(name)
+    rows = []
+    for number, text in enumerate(iter_file_lines(cov.path), 1):
+        css = "missed" if number in missed else "partial" if number in partial else "hit" if number in hit else ""
+        note = f" title=\"branch not taken: {', '.join(partial[number])}\"" if number in partial else ""
+        rows.append(f"<tr class=\"{css}\"{note}><td class=\"n\">{number}</td>"
+                    f"<td><pre>{html.escape(text) or ' '}</pre></td></tr>")
+    head = (f"<p>lines {len(hit)}/{cov.lines_total} ({percent(len(hit), cov.lines_total)}), branches "
+            f"{cov.branches_hit}/{cov.branches_total}; subs no test ran: "
+            f"{html.escape(', '.join(cov.subs_never_run)) or 'none'}</p>"
+            "<p><span class=\"hit\">run</span> <span class=\"missed\">not run</span> "
+            "<span class=\"partial\">a branch not taken</span></p>")
+    return _page(cov.path, head + "<table class=\"src\">\n" + "\n".join(rows) + "\n</table>")
+
+
+def _page(title: str, body: str) -> str:
+    return ("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + html.escape(title) + "</title><style>"
+            "body{font-family:sans-serif} table{border-collapse:collapse} td,th{padding:0 .5em;text-align:left}"
+            "pre{margin:0} .n{color:#888;text-align:right} .hit{background:#dfd} .missed{background:#fdd}"
+            ".partial{background:#ffd}</style></head><body><h1>" + html.escape(title) + "</h1>" + body
+            + "</body></html>\n")
+
+
+def junit_xml(summary: Summary) -> str:
+    """JUnit XML: a testsuite per test file, a testcase per test with its failure text."""
+    root = ET.Element("testsuites", tests=str(len(summary.results)), failures=str(summary.failed),
+                      time=f"{summary.seconds:.3f}")
+    suites: dict[str, ET.Element] = {}
+    for result in summary.results:
+        suite = suites.get(result.file)
+        if suite is None:
+            suite = suites[result.file] = ET.SubElement(root, "testsuite", name=result.file, tests="0", failures="0")
+        suite.set("tests", str(int(suite.get("tests", "0")) + 1))
+        case = ET.SubElement(suite, "testcase", classname=_classname(result.file), name=result.name,
+                             file=result.file, line=str(result.line), time=f"{result.seconds:.3f}")
+        if not result.passed:
+            suite.set("failures", str(int(suite.get("failures", "0")) + 1))
+            failure = ET.SubElement(case, "failure", message=result.failures[0])
+            failure.text = "\n".join(result.failures)
+    ET.indent(root)
+    return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
+
+
+def _classname(file: str) -> str:
+    """``examples/tests/test_macro.toml`` -> ``examples.tests.test_macro`` (how CI tools group cases)."""
+    stem = os.path.splitext(file)[0]
+    return ".".join(part for part in re.split(r"[\\/]+", stem) if part not in ("", ".", ".."))

@@ -1,0 +1,175 @@
+"""Running many tests: selection by name (``-k``), stopping at the first failure (``-x``), test files
+on several processes (``-j``), and the result of each test as the reports show it."""
+from __future__ import annotations
+
+import re
+import time
+from collections.abc import Callable, Iterator, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor
+from dataclasses import dataclass, field
+from multiprocessing import get_context
+
+from .coverage import CoverageData
+from .spec import TestCase
+
+
+@dataclass(frozen=True)
+class TestResult:
+    """One test's verdict: no failures is a pass."""
+
+    __test__ = False  # not a pytest test class, whatever its name
+
+    name: str
+    file: str
+    line: int
+    failures: tuple[str, ...]
+    seconds: float = 0.0
+
+    @property
+    def passed(self) -> bool:
+        return not self.failures
+
+    @property
+    def text(self) -> str:
+        """The report's line: ``PASS FILE:LINE: NAME`` or ``FAIL FILE:LINE: NAME: difference; ...``."""
+        head = f"{'PASS' if self.passed else 'FAIL'} {self.file}:{self.line}: {self.name}"
+        return head if self.passed else f"{head}: {'; '.join(self.failures)}"
+
+
+@dataclass
+class Summary:
+    results: list[TestResult] = field(default_factory=list)
+    coverage: CoverageData | None = None
+    seconds: float = 0.0
+
+    @property
+    def passed(self) -> int:
+        return sum(r.passed for r in self.results)
+
+    @property
+    def failed(self) -> int:
+        return len(self.results) - self.passed
+
+    @property
+    def line(self) -> str:
+        return f"{self.passed} passed, {self.failed} failed"
+
+
+def check(case: TestCase, coverage: CoverageData | None = None) -> TestResult:
+    """Run one test and judge it."""
+    from .checks import failures
+    from .execute import run_case
+
+    outcome = run_case(case, coverage)
+    return TestResult(case.name, case.file, case.line, tuple(failures(outcome)), outcome.seconds)
+
+
+def run_cases(files: Sequence[Sequence[TestCase]], *, stop_first: bool = False, jobs: int = 1,
+              coverage: bool = False, report: Callable[[TestResult], None] = lambda _r: None) -> Summary:
+    """Run the tests of each file in turn (``jobs`` > 1: files on that many processes), calling
+    ``report`` with each result in file order as it is known."""
+    started = time.perf_counter()
+    summary = Summary(coverage=CoverageData() if coverage else None)
+    for results, data in _file_results(files, stop_first, jobs, coverage):
+        if summary.coverage is not None and data is not None:
+            summary.coverage.update(data)
+        for result in results:
+            summary.results.append(result)
+            report(result)
+        if stop_first and any(not r.passed for r in results):
+            break
+    summary.seconds = time.perf_counter() - started
+    return summary
+
+
+def run_file_cases(cases: Sequence[TestCase], stop_first: bool, coverage: bool
+                   ) -> tuple[list[TestResult], CoverageData | None]:
+    """One file's tests, in a worker or in this process."""
+    data = CoverageData() if coverage else None
+    results = []
+    for case in cases:
+        results.append(check(case, data))
+        if stop_first and not results[-1].passed:
+            break
+    return results, data
+
+
+def _file_results(files: Sequence[Sequence[TestCase]], stop_first: bool, jobs: int, coverage: bool
+                  ) -> Iterator[tuple[list[TestResult], CoverageData | None]]:
+    if jobs <= 1 or len(files) < 2:
+        for cases in files:
+            yield run_file_cases(cases, stop_first, coverage)
+        return
+    # spawn, not fork: the same on every platform (as ecnc lint -j)
+    pool = ProcessPoolExecutor(max_workers=min(jobs, len(files)), mp_context=get_context("spawn"))
+    try:
+        futures: list[Future[tuple[list[TestResult], CoverageData | None]]] = [
+            pool.submit(run_file_cases, cases, stop_first, coverage) for cases in files]
+        for future in futures:
+            yield future.result()
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+# --- -k EXPR ----------------------------------------------------------------------------------
+
+def keyword_matcher(expression: str) -> Callable[[str], bool]:
+    """``-k``: words matched case-insensitively as parts of ``FILE::NAME``, joined with ``and``,
+    ``or``, ``not`` and parentheses (``-k "tool and not measure"``).  A malformed expression raises
+    ``ValueError``."""
+    tokens = re.findall(r"\(|\)|[^\s()]+", expression)
+    position = 0
+
+    def peek() -> str | None:
+        return tokens[position].lower() if position < len(tokens) else None
+
+    def take() -> str:
+        nonlocal position
+        if position >= len(tokens):
+            raise ValueError(f"-k {expression!r}: the expression ends too early")
+        position += 1
+        return tokens[position - 1]
+
+    def either() -> Callable[[str], bool]:
+        parts = [both()]
+        while peek() == "or":
+            take()
+            parts.append(both())
+        return lambda text: any(p(text) for p in parts)
+
+    def both() -> Callable[[str], bool]:
+        parts = [single()]
+        while peek() == "and":
+            take()
+            parts.append(single())
+        return lambda text: all(p(text) for p in parts)
+
+    def single() -> Callable[[str], bool]:
+        token = take()
+        if token.lower() == "not":
+            inner = single()
+            return lambda text: not inner(text)
+        if token == "(":
+            inner = either()
+            if take() != ")":
+                raise ValueError(f"-k {expression!r}: a '(' is not closed")
+            return inner
+        if token == ")" or token.lower() in ("and", "or"):
+            raise ValueError(f"-k {expression!r}: {token!r} where a word belongs")
+        word = token.lower()
+        return lambda text: word in text
+
+    if not tokens:
+        raise ValueError("-k needs an expression")
+    matcher = either()
+    if position != len(tokens):
+        raise ValueError(f"-k {expression!r}: {tokens[position]!r} is not expected there")
+    return lambda text: matcher(text.lower())
+
+
+def select(cases: Sequence[TestCase], expression: str | None) -> list[TestCase]:
+    """The tests whose ``FILE::NAME`` matches ``-k``; all without one."""
+    if expression is None:
+        return list(cases)
+    matches = keyword_matcher(expression)
+    return [case for case in cases if matches(f"{case.file}::{case.name}")]
