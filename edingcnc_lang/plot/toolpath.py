@@ -20,6 +20,7 @@ import numpy as np
 from ..canon import Arc, Event, Move, Pose
 from ..config import MachineConfig, load_config
 from ..errors import EcncError
+from ..kinematics.base import declared_joint_kinds
 from ..kinematics.sampling import arc_sweep
 from ..kinematics.trajectory import geometry_of
 from ..planner.estimate import Timing
@@ -69,6 +70,7 @@ class Toolpath:
     result: RunResult | None = None
     error: EcncError | None = None
     joint_names: tuple[str, ...] = ()
+    joint_kinds: tuple[str, ...] | None = None  # "linear"/"rotary" per joint, as the plug-in declares them
     kinematics: str = "trivial"
     samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for
     copies: dict[str, str] = field(default_factory=dict)  # a name in ``paths`` -> the file to read its text from
@@ -286,13 +288,15 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     config = load_config(options.ini) if options.ini else MachineConfig.default()
     result: RunResult | None = None
     error: EcncError | None = None
+    run = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event))
     try:
-        result = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event)).execute_file(Path(job), name)
+        result = run.execute_file(Path(job), name)
     except EcncError as err:
         if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration, plug-in loading
             raise
         error = err
     path = recorder.toolpath(name or str(job), config, result, error)
+    path.joint_kinds = declared_joint_kinds(run.kinematics)
     if name is not None:  # a piped job: its lines are read from the copy that ran
         path.copies[name] = str(job)
     return path

@@ -8,7 +8,7 @@ L1, L2 = 200.0, 150.0
 
 
 class Scara(KinematicsPlugin):
-    JOINT_KINDS = ("rotary", "rotary", "linear", "rotary", "rotary", "rotary")
+    JOINT_KINDS = ("rotary", "rotary", "linear", "rotary", "rotary", "rotary")  # the arms turn
 
     def inverse(self, pos, tool_length=0.0):
         x, y, z, a, b, c = pos
