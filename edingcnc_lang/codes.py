@@ -90,6 +90,7 @@ CODES: dict[str, Code] = _table(
     ("F603", E, "line of prose text that is not a statement"),
     ("C700", E, "kinematics user output variables out of range in cnc.ini"),
     ("C701", E, "invalid value in cnc.ini"),
+    ("C702", W, "value in cnc.ini the toolchain does not know (an unknown machineType): run with a default"),
 )
 
 

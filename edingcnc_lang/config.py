@@ -10,11 +10,12 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
+from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import ConfigError
 
 if TYPE_CHECKING:
@@ -96,7 +97,13 @@ class TanKnifeConfig:
     rewind_turns: int
 
 
-MILLING, TURNING = 0, 1  # [SYSTEM] machineType
+# [SYSTEM] machineType: the values of the controller's CNC_MACHINE_TYPE (cnc_types.h of its API).
+MILLING, TURNING, TURNING_BACK_X, FOAMCUTTER, PLASMACUTTER, PRINTING_3D, LASER = range(7)
+MACHINE_TYPES: Mapping[int, str] = MappingProxyType({
+    MILLING: "milling", TURNING: "turning", TURNING_BACK_X: "turning, back tool lathe",
+    FOAMCUTTER: "4-axis foam cutter", PLASMACUTTER: "plasma cutter", PRINTING_3D: "3D printer", LASER: "laser",
+})
+LATHES = frozenset({TURNING, TURNING_BACK_X})
 
 
 @dataclass(frozen=True)
@@ -139,6 +146,7 @@ class MachineConfig:
     tools: Mapping[int, ToolConfig]
     variables: Mapping[int, float]
     sections: frozenset[str] = frozenset()  # the ini's section names, lower case: which ones it GAVE
+    warnings: tuple[Diagnostic, ...] = ()  # values accepted with a caveat (an unknown machineType, ...)
 
     @property
     def folder(self) -> Path | None:
@@ -157,8 +165,10 @@ class MachineConfig:
 
     @property
     def lathe(self) -> bool:
-        """A turning machine (``machineType = 1``): G18, X-first homing moves, X+Z tool offsets."""
-        return self.machine_type == TURNING
+        """A turning machine (``machineType`` 1, or 2 for a back tool lathe): G18, X-first homing
+        moves, X+Z tool offsets.  The back tool lathe's mirrored X changes only how the controller's
+        screen draws it, not the coordinates a job programs."""
+        return self.machine_type in LATHES
 
     @property
     def diameter_mode(self) -> bool:
@@ -343,12 +353,11 @@ def _resolve_macro(ini: IniFile, key: str, folder: Path) -> Path | None:
     return next((p for p in (as_written, beside_ini) if p.is_file()), None)
 
 
+SPINDLE = "SPINDLE"  # in _CHECKS: the section the main spindle's keys were read from (_spindle_section)
 # Checks made after reading: (section, key to report at, passes?, what the value must be).
 _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
-    ("SYSTEM", "machineType", lambda c: c.machine_type in (MILLING, TURNING),
-     "must be 0 (milling) or 1 (turning)"),
-    ("SPINDLE", "spindleNmax", lambda c: c.spindle_max_rpm >= 0, "must be 0 (no limit) or a speed in rpm"),
-    ("SPINDLE", "spindleNmin", lambda c: 0 <= c.spindle_min_rpm and (
+    (SPINDLE, "spindleNmax", lambda c: c.spindle_max_rpm >= 0, "must be 0 (no limit) or a speed in rpm"),
+    (SPINDLE, "spindleNmin", lambda c: 0 <= c.spindle_min_rpm and (
         c.spindle_max_rpm == 0 or c.spindle_min_rpm <= c.spindle_max_rpm),
      "must be 0 or a speed in rpm no higher than spindleNmax"),
     ("TRAJECTORY", "interpolationTime", lambda c: c.interpolation_time > 0,
@@ -379,14 +388,33 @@ _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
 )
 
 
+def _spindle_section(ini: IniFile) -> str:
+    """Where the main spindle's keys are: ``[SPINDLE_0]`` in 4.03 files (the manual, §3.7.2),
+    ``[SPINDLE]`` in older ones; the first that gives spindleNmax wins."""
+    return next((name for name in ("SPINDLE_0", "SPINDLE") if ini.get(name, "spindleNmax") is not None), "SPINDLE_0")
+
+
 def _validate(ini: IniFile, config: MachineConfig) -> None:
     from edingcnc_lang.ini import display_section
 
+    spindle = _spindle_section(ini)
     for section, key, passes, requirement in _CHECKS:
+        section = spindle if section == SPINDLE else section
         if not passes(config):
             shown = ini.get_str(section, key, "")
             raise ConfigError(f"{key} = {shown} in {display_section(section)} {requirement}",
                               ini.location(section, key))
+
+
+def _warnings(ini: IniFile, config: MachineConfig) -> tuple[Diagnostic, ...]:
+    """Values the controller may write that a run cannot honour fully: each a C702 warning at its line."""
+    if config.machine_type in MACHINE_TYPES:
+        return ()
+    known = ", ".join(f"{number} ({name})" for number, name in MACHINE_TYPES.items())
+    where = ini.location("SYSTEM", "machineType")
+    return (Diagnostic.make("C702", f"machineType = {config.machine_type} in [SYSTEM] is not a machine type "
+                            f"EdingCNC 4.03 writes ({known}); the job runs as on a milling machine",
+                            where.path, max(where.line, 1), 1),)
 
 
 def load_config(path: str | os.PathLike[str]) -> MachineConfig:
@@ -401,7 +429,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
     config = MachineConfig(
         path=ini.path,
         **_read_fields(ini, "SYSTEM", _SYSTEM_FIELDS, base),
-        **_read_fields(ini, "SPINDLE", _SPINDLE_FIELDS, base),
+        **_read_fields(ini, _spindle_section(ini), _SPINDLE_FIELDS, base),
         **_read_fields(ini, "INTERPRETER", _INTERPRETER_FIELDS, base),
         macro_file=_resolve_macro(ini, "macroFileName", folder),
         user_macro_file=_resolve_macro(ini, "userMacroFileName", folder),
@@ -417,7 +445,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
         sections=frozenset(ini.sections),
     )
     _validate(ini, config)
-    return config
+    return replace(config, warnings=_warnings(ini, config))
 
 
 def save_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -> None:

@@ -239,8 +239,25 @@ class MotionStage:
         pos = self._forward(self.joints, where)
         self._check_no_jump(pos, label, where)
         if kin is not None:
+            self._check_cartesian_start(pos, label, where)
             self._user_output(kin, where)
         return pos
+
+    def _check_cartesian_start(self, pos: Pose, label: str, where: Location) -> None:
+        """Kinematics switched on where the tool is outside ``[KINEMATICS]``'s Cartesian limits is an
+        error here, naming the pose: else the next move fails, with a message about that move."""
+        for axis, value in enumerate(pos):
+            low = self.config.cartesian_negative_limits[axis]
+            high = self.config.cartesian_positive_limits[axis]
+            if not low - SWITCH_TOLERANCE <= value <= high + SWITCH_TOLERANCE:  # (the forward transform rounds)
+                from .canon import format_pose
+
+                raise MachineError(
+                    f"{label} finds the tool at {format_pose(pos, spec='.4f')}: {AXES[axis]} is outside the "
+                    f"Cartesian limits [{low:g}, {high:g}] of [KINEMATICS], so no move could start there; "
+                    f"bring the joints to a pose inside them before {label.split(' (')[0]} (home the machine, or "
+                    f"move with kinematics off), or widen negativeLimit{AXES[axis]}/positiveLimit{AXES[axis]}",
+                    where)
 
     def _forward(self, joints: Pose, where: Location) -> Pose:
         """Cartesian position of ``joints`` under the active kinematics, bend knife correction removed."""

@@ -136,6 +136,8 @@ class Run:
         self._texts: dict[str, str] = {}  # jobs run from a string, to find an error's column in
         self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
+        for warning in self.config.warnings:
+            self._warn(warning)
         self.kinematics = self._load_kinematics()
         overrides = Overrides(options.feed_override, options.rapid_override)
         sinks: list[TimedSink] = []
@@ -198,10 +200,13 @@ class Run:
         body = tuple(reader)
         reader.raise_errors()  # block structure (Sub/EndSub, If/EndIf) must still be right
         for warning in reader.warnings:
-            self.warnings.append(warning)
-            if self.options.on_warning:
-                self.options.on_warning(warning)
+            self._warn(warning)
         return n.Program(reader.path, body, reader.unit)
+
+    def _warn(self, warning: Diagnostic) -> None:
+        self.warnings.append(warning)
+        if self.options.on_warning:
+            self.options.on_warning(warning)
 
     def load_macros(self) -> list[tuple[Path, n.Program]]:
         """The macro files, loaded, in lookup order."""

@@ -60,6 +60,20 @@ G_GROUPS: Mapping[int, str] = _groups({
     "scaling": (50, 51),
     "non_modal": (4, 10, 28, 30, 53, 92, 92.1, 92.2, 92.3),
 })
+G_80 = code_key(80)
+
+
+def same_line_winner(group: str, first: int, second: int) -> int | None:
+    """Which of two G codes of one modal group on one line takes effect; None: they conflict.
+
+    G80 beside another motion code gives way to it, as rs274 does (LinuxCNC's read_g): the CAM
+    safe-start line ``G0 G90 G40 G21 G17 G94 G80`` cancels no cycle twice and means G0.
+    """
+    if group == "motion" and G_80 in (first, second):
+        return second if first == G_80 else first
+    return None
+
+
 # The canned cycles the interpreter runs (cycles.py expands each into moves; G76, the lathe's
 # threading cycle, is spindle-synchronised motion in interpreter/threads.py).
 CANNED_CYCLES = frozenset(code_key(c) for c in (73, 74, 81, 82, 83, 84, 85, 86, 87, 88, 89))

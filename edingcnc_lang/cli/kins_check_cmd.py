@@ -125,5 +125,6 @@ def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     kins = guarded(workbench.load_plugin(plugin, machine))
     space = workbench.workspace_for(kins, options, machine)
     workbench.plug.switch_on(kins, space.centre)
-    print(plot_envelope(kins, space, Path(output), plugin, resolution=resolution, fmt=fmt))
+    print(plot_envelope(kins, space, Path(output), plugin, resolution=resolution, fmt=fmt,
+                        joint_limits=machine.joint_limits))
     return EXIT_OK

@@ -120,18 +120,32 @@ def ask_dialog(title: str, fields: Sequence[DialogField]) -> DialogAnswer:
     try:
         for item in fields:
             while True:
-                typed = input(f"  {item.label} (#{item.index}) [{item.value:g}]: ").strip()
+                typed = _answer_input(f"  {item.label} (#{item.index}) [{item.value:g}]: ").strip()
                 try:
                     if typed:
                         values[item.index] = float(typed)
                     break
                 except ValueError:
                     print(f"  {typed!r} is not a number")
-        ok = input("OK? [Y/n] ").strip().lower() in ("", "y", "yes", "ok")
+        ok = _answer_input("OK? [Y/n] ").strip().lower() in ("", "y", "yes", "ok")
     except (KeyboardInterrupt, EOFError):
         print()
         ok = False
     return DialogAnswer(ok, values if ok else {})
+
+
+def _answer_input(prompt: str) -> str:
+    """``input`` for a dialog's answer, which readline adds to the history like a command: taken
+    out again, so the history (and Up at the prompt) holds the commands typed, not 12.5 and y."""
+    typed = input(prompt)
+    try:
+        import readline
+    except ImportError:
+        return typed
+    length = readline.get_current_history_length()
+    if typed and length and readline.get_history_item(length) == typed:
+        readline.remove_history_item(length - 1)
+    return typed
 
 
 def _history(load: bool) -> None:

@@ -20,8 +20,10 @@ from ..errors import printable
 from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     from ..diagnostics import Diagnostic
-    from ..host import DialogAnswer
+    from ..host import DialogAnswer, DialogCallback, DialogField
     from ..runner import RunOptions
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -102,9 +104,10 @@ class MachineOptions:
         def path(value: str | None) -> Path | None:
             return Path(value) if value else None
 
-        message = print_message if show_messages else None
+        dialogs = ShownDialogs(scripted_dialogs(list(self.answers)))
+        message = dialogs.print_message if show_messages else None
         return RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro),
-                          host=Host(dialog=scripted_dialogs(list(self.answers)), message=message, probe=probe),
+                          host=Host(dialog=dialogs.ask, message=message, probe=probe),
                           max_steps=self.max_steps or DEFAULT_MAX_STEPS, log_dir=path(self.log_dir),
                           allow_exec=self.allow_exec, simulation=not self.no_simulation,
                           block_delete=self.block_delete, strict=self.strict, on_warning=print_warning, **extra)
@@ -116,6 +119,39 @@ def print_message(kind: str, text: str, path: str, line: int) -> None:
         from .style import styled
 
         print(styled(printable(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}"), sys.stderr), file=sys.stderr)
+
+
+class ShownDialogs:
+    """Dialogs answered from the command line (``--answer``), shown on stderr like a message, so a
+    tool-change prompt is not silent: ``PATH:LINE: dialog: TITLE``, each field with its value
+    before and after, and the answer given."""
+
+    def __init__(self, answers: DialogCallback) -> None:
+        self.answers = answers
+        self.asked: tuple[Sequence[DialogField], DialogAnswer | None] | None = None
+
+    def ask(self, title: str, fields: Sequence[DialogField]) -> DialogAnswer | None:
+        answer = self.answers(title, fields)
+        self.asked = (fields, answer)
+        return answer
+
+    def print_message(self, kind: str, text: str, path: str, line: int) -> None:
+        """``print_message``, and for a dialog this object answered: its fields and the answer."""
+        if kind != "dialog" or self.asked is None:
+            print_message(kind, text, path, line)
+            return
+        fields, answer = self.asked
+        self.asked = None
+        shown = [f"{path}:{line}: dialog: {text}"]
+        for item in fields:
+            after = answer.values.get(item.index, item.value) if answer and answer.ok else item.value
+            change = f" -> {after:g}" if after != item.value else ""
+            shown.append(f"    {item.label} (#{item.index}) = {item.value:g}{change}")
+        if answer is None:
+            shown.append("    answer: ok, values unchanged (no --answer left)")
+        else:
+            shown.append(f"    answer: {'ok' if answer.ok else 'cancel'} (--answer)")
+        print(printable("\n".join(shown)), file=sys.stderr)
 
 
 def print_warning(diagnostic: Diagnostic) -> None:

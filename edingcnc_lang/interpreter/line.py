@@ -52,7 +52,10 @@ class LineWords(MachineState):
                 group = f"user_{key}"
             elif letter == "G" and key in t.LATHE_ONLY_G and not self.config.lathe:
                 raise MachineError(t.lathe_code_message(key), Location(self.path, self.line, col))
-            if group in found:
+            winner = t.same_line_winner(group, found[group], key) if group in found and letter == "G" else None
+            if winner is not None:
+                key = winner
+            elif group in found:
                 raise MachineError(f"{t.code_name(letter, found[group])} and {t.code_name(letter, key)} are in the "
                                    "same modal group; use one per line", Location(self.path, self.line, col))
             found[group] = key

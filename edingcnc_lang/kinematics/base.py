@@ -85,6 +85,8 @@ class KinematicsPlugin:
     name: str = ""          # the loader fills in the plug-in name when a subclass leaves it empty
     KIN_TYPE: ClassVar[int] = abi.KinType.CUSTOM_1
     VERSION: ClassVar[str] = "0"
+    # What each joint is, for pictures and reports: a SCARA declares ("rotary", "rotary", "linear", ...).
+    JOINT_KINDS: ClassVar[tuple[str, ...] | None] = None  # None: by the joint's name (A B C rotary)
 
     def __init__(self, settings: Mapping[str, str]) -> None:
         self.settings = settings
@@ -163,3 +165,21 @@ class VectorisedKinematics(KinematicsPlugin):
     def forward_many(self, joints: np.ndarray, tool_length: float = 0.0) -> np.ndarray:
         """Batch forward kinematics (handy for plotting joint logs)."""
         return self.forward_rows(as_rows(joints), tool_length)
+
+
+JOINT_KIND_NAMES = ("linear", "rotary")
+
+
+def declared_joint_kinds(kins: object) -> tuple[str, ...] | None:
+    """A plug-in's ``JOINT_KINDS`` (six of "linear"/"rotary"), None when it declares none (compiled
+    plug-ins cannot); a malformed declaration is the plug-in's error."""
+    kinds = getattr(kins, "JOINT_KINDS", None)
+    if kinds is None:
+        return None
+    if not isinstance(kinds, (tuple, list)) or len(kinds) != len(JOINTS) or \
+            any(kind not in JOINT_KIND_NAMES for kind in kinds):
+        from edingcnc_lang.errors import PluginError
+
+        raise PluginError(f"kinematics plug-in {getattr(kins, 'name', '')!r}: JOINT_KINDS must be six of "
+                          f"{' or '.join(map(repr, JOINT_KIND_NAMES))}, got {kinds!r}")
+    return tuple(kinds)

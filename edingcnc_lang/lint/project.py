@@ -6,6 +6,7 @@ parameters are written anywhere: each is computed once, on first use.
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -20,6 +21,15 @@ from .walk import Scope, dialog_fields, walk
 SubKey = tuple[str, str]  # (path, lower-case name)
 # Commands that store a result in the variable whose number they are given.
 _WRITING_COMMANDS = frozenset({"gettoolinfo", "getjobdistance", "getheightcontrolvact", "getheightcontrolvset"})
+_MODBUS_TARGET = re.compile(r"u(\d+)", re.IGNORECASE)  # modbus ... u4000: a read's result goes to #4000
+
+
+def command_writes(command: n.Command) -> Iterator[int]:
+    """The variables a command sets: the bare numbers of the Get* commands, the ``uNNN`` of ``modbus``."""
+    if command.name in _WRITING_COMMANDS:
+        yield from (int(word) for word in command.args.split() if word.isdigit())
+    elif command.name == "modbus":
+        yield from (int(m.group(1)) for word in command.args.split() if (m := _MODBUS_TARGET.fullmatch(word)))
 
 
 @dataclass(frozen=True)
@@ -186,6 +196,5 @@ class Project:
             for dialog, _scope in facts.dialogs:
                 found.update(index for index, _ in dialog_fields(dialog))
             for command in facts.commands:
-                if command.name in _WRITING_COMMANDS:
-                    found.update(int(word) for word in command.args.split() if word.isdigit())
+                found.update(command_writes(command))
         return frozenset(found)

@@ -24,4 +24,4 @@ def check_config(path: str | os.PathLike[str]) -> tuple[list[Diagnostic], frozen
         line, col = (where.line, where.col) if where else (0, 0)
         return [Diagnostic.make(code, err.message, os.fspath(path), max(line, 1), max(col, 1))], frozenset()
     start, count = config.user_output_start, config.user_output_count
-    return [], frozenset(range(start, start + count)) if start else frozenset()
+    return list(config.warnings), frozenset(range(start, start + count)) if start else frozenset()

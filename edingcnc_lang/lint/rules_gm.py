@@ -20,6 +20,7 @@ from ..tables import (
     code_key,
     code_name,
     lathe_code_message,
+    same_line_winner,
 )
 from .evaluate import evaluate
 from .facts import BlockCodes, Code
@@ -47,7 +48,10 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
                 if group is None:
                     continue
                 first = seen.setdefault(group, key)
-                if first != key:
+                winner = same_line_winner(group, first, key) if letter == "G" and first != key else None
+                if winner is not None:
+                    seen[group] = winner
+                elif first != key:
                     yield at("G500", f"{code_name(letter, first)} and {code_name(letter, key)} are both in "
                              f"the {group.replace('_', ' ')} group: one line may hold only one of them; "
                              "put them on separate lines", word.span)

@@ -4,7 +4,9 @@ Some findings describe one version's behaviour (EdingCNC 5 refuses a macro file
 without ``@unit``, G1290; 4.03 does not care), so the linter needs a target.
 It is, first found wins: ``ecnc lint --target``, ``target`` under ``[tool.ecnc]``
 in the nearest ``pyproject.toml`` or ``ecnc.toml`` above the first path, the
-``[SYSTEM] version`` line of the ``--ini`` file, else the newest version.
+``[SYSTEM] version`` line of the ``--ini`` file or, as real 4.03 files have none, its
+``lastKnownServerVersion = "CNC V4.03.50"`` (the version of the controller that last wrote it),
+else the newest version.
 """
 from __future__ import annotations
 
@@ -21,12 +23,13 @@ else:  # Python 3.10: the same parser, as a package (a dependency there)
 
 from ..codes import CODES
 from ..errors import EXIT_USAGE, EcncError, Location
-from ..ini import read_ini
+from ..ini import IniValue, read_ini
 
 TARGETS = ("4.03", "5")
 NEWEST = TARGETS[-1]
 CONFIG_FILES = ("ecnc.toml", "pyproject.toml")
-_VERSION = re.compile(r"^\s*V?\s*(\d+)(?:\.(\d+))?", re.IGNORECASE)
+_VERSION = re.compile(r"^\s*(?:CNC\s*)?V?\s*(\d+)(?:\.(\d+))?", re.IGNORECASE)
+VERSION_KEYS = ("version", "lastKnownServerVersion")  # keys naming the controller version ([SYSTEM] first)
 
 
 class TargetError(EcncError):
@@ -36,7 +39,7 @@ class TargetError(EcncError):
 
 
 def normalise(text: str, where: Location | None = None) -> str:
-    """``"4.03"``, ``"V4.03.52"``, ``"5"``, ``"5.2"`` -> one of TARGETS."""
+    """``"4.03"``, ``"V4.03.52"``, ``"CNC V4.03.50"``, ``"5"``, ``"5.2"`` -> one of TARGETS."""
     match = _VERSION.match(text)
     major = match.group(1) if match else ""
     if major == "4":
@@ -60,10 +63,22 @@ def resolve(given: str | None, paths: Sequence[str | os.PathLike[str]], ini: str
     if configured:
         return configured
     if ini:
-        version = read_ini(ini).get("SYSTEM", "version")
-        if version is not None and version.text.strip():
+        version = ini_version(ini)
+        if version is not None:
             return normalise(version.text, Location(os.fspath(ini), version.line))
     return NEWEST
+
+
+def ini_version(path: str | os.PathLike[str]) -> IniValue | None:
+    """The controller version a cnc.ini names (see VERSION_KEYS), wherever in the file the key is."""
+    ini = read_ini(path)
+    sections = ["system", *(name for name in ini.sections if name != "system")]
+    for key in VERSION_KEYS:
+        for section in sections:
+            value = ini.get(section, key)
+            if value is not None and value.text.strip():
+                return value
+    return None
 
 
 def _from_config(paths: Sequence[str | os.PathLike[str]]) -> str | None:

@@ -11,6 +11,7 @@ from pathlib import Path
 from collections.abc import Sequence
 
 from lsprotocol import types as t
+from pygls.exceptions import JsonRpcException
 from pygls.lsp.server import LanguageServer
 from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
@@ -20,11 +21,12 @@ from ..gcpause import whole_trees
 from ..codes import Severity
 from ..diagnostics import Diagnostic
 from ..lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes
-from . import actions, completion, formatting, hover, navigation
+from . import actions, completion, formatting, hover, navigation, rename
 from .lexer import token_at
 from .model import LanguageModel, Place, file_name
 
 DEBOUNCE_SECONDS = 0.3  # lint once typing pauses, not on every keystroke
+REQUEST_FAILED = -32803  # LSP's RequestFailed: a rename refused, with the reason for the user
 SOURCE = "ecnc"
 _KINDS = {"code": t.CompletionItemKind.Keyword, "sub": t.CompletionItemKind.Function,
           "variable": t.CompletionItemKind.Variable, "keyword": t.CompletionItemKind.Keyword,
@@ -262,14 +264,40 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
 def _formatting(ls: EcncServer, params: t.DocumentFormattingParams) -> list[t.TextEdit] | None:
     path = ls.path(params.text_document.uri)
     file = ls.model.source(path)
-    if file is None or file.parse_errors:  # only a file that parses is formatted
+    if file is None:
         return None
     lines = file.lines
     options = params.options
-    with whole_trees():
+    with whole_trees():  # a file with syntax errors: the lines without one (formatting.py)
         formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t",
-                                            (file.body, file.unit))
+                                            None if file.parse_errors else (file.body, file.unit), partial=True)
     if formatted is None:
         return None
     return [t.TextEdit(range=ls.client_range(path, number, 0, len(old)), new_text=new)
             for number, (old, new) in enumerate(zip(lines, formatted)) if old != new]
+
+
+@server.feature(t.TEXT_DOCUMENT_PREPARE_RENAME)
+def _prepare_rename(ls: EcncServer, params: t.PrepareRenameParams) -> t.PrepareRenamePlaceholder | None:
+    path, line, col = ls.server_position(params.text_document.uri, params.position)
+    try:
+        target = rename.target_at(ls.model, path, line, col)
+    except rename.RenameRefused as err:
+        raise JsonRpcException(str(err), code=REQUEST_FAILED) from None
+    if target is None:
+        return None
+    place = target.place
+    return t.PrepareRenamePlaceholder(range=ls.location(place).range,
+                                      placeholder=ls.lines(path)[place.line][place.start:place.end])
+
+
+@server.feature(t.TEXT_DOCUMENT_RENAME)
+def _rename(ls: EcncServer, params: t.RenameParams) -> t.WorkspaceEdit | None:
+    path, line, col = ls.server_position(params.text_document.uri, params.position)
+    try:
+        found = rename.rename(ls.model, path, line, col, params.new_name)
+    except rename.RenameRefused as err:
+        raise JsonRpcException(str(err), code=REQUEST_FAILED) from None
+    text = rename.new_text(params.new_name)
+    return t.WorkspaceEdit(changes={ls.uri(file): [t.TextEdit(range=ls.location(place).range, new_text=text)
+                                                   for place in places] for file, places in found.items()})

@@ -30,6 +30,14 @@ def moving_joints(path: Toolpath) -> list[int]:
     return moving or present
 
 
+def joint_kind(path: Toolpath, joint: int) -> str:
+    """"rotary" or "linear": as the plug-in declares it (a SCARA's arms), else by the joint's name."""
+    if path.joint_kinds is not None:
+        return path.joint_kinds[joint]
+    name = path.joint_names[joint] if joint < len(path.joint_names) else JOINT_COLUMNS[joint]
+    return "rotary" if name.upper() in ("A", "B", "C", "JA", "JB", "JC") else "linear"
+
+
 def plot_joints(path: Toolpath, out: Path, fmt: str | None = None) -> Path:
     """Draw the joint positions over time into ``out`` (PNG, SVG or PDF; ``fmt`` when already checked)."""
     fmt = fmt or picture_target(out)
@@ -45,7 +53,7 @@ def plot_joints(path: Toolpath, out: Path, fmt: str | None = None) -> Path:
     for ax, joint in zip(axes, joints):
         name = path.joint_names[joint] if joint < len(path.joint_names) else JOINT_COLUMNS[joint]
         ax.plot(t, path.samples[JOINT_COLUMNS[joint]], color=v.TOOL_COLORS[joint % len(v.TOOL_COLORS)], lw=1.2)
-        unit = "deg" if name.upper() in ("A", "B", "C") else "mm"
+        unit = "deg" if joint_kind(path, joint) == "rotary" else "mm"
         ax.set_ylabel(f"joint {joint} ({name})\n{unit}", fontsize=8)
         ax.grid(True, color="#e0e0e0", lw=0.5)
     axes[-1].set_xlabel("time (s)")

@@ -20,6 +20,7 @@ import numpy as np
 from ..canon import Arc, Event, Move, Pose
 from ..config import MachineConfig, load_config
 from ..errors import EcncError
+from ..kinematics.base import declared_joint_kinds
 from ..kinematics.sampling import arc_sweep
 from ..kinematics.trajectory import geometry_of
 from ..planner.estimate import Timing
@@ -29,6 +30,7 @@ from ..source import iter_file_lines
 KINDS = ("rapid", "linear", "arc", "probe", "home")
 FEED_KINDS = frozenset({KINDS.index("linear"), KINDS.index("arc"), KINDS.index("probe")})
 RAPID_KINDS = frozenset({KINDS.index("rapid"), KINDS.index("home")})
+PROBE = KINDS.index("probe")
 ARC_STEP = math.radians(3.0)  # 120 chords a turn: 0.014 mm off a 40 mm radius
 ROW = 9                       # values the recorder keeps per move (see Recorder.rows)
 WIDE = 1e5                    # mm: a limit this far out is "no limit configured" (the defaults are 1e6)
@@ -68,6 +70,7 @@ class Toolpath:
     result: RunResult | None = None
     error: EcncError | None = None
     joint_names: tuple[str, ...] = ()
+    joint_kinds: tuple[str, ...] | None = None  # "linear"/"rotary" per joint, as the plug-in declares them
     kinematics: str = "trivial"
     samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for
     copies: dict[str, str] = field(default_factory=dict)  # a name in ``paths`` -> the file to read its text from
@@ -126,13 +129,28 @@ class Toolpath:
                 plain_from = index + 1
             yield Polyline(np.vstack(pieces), np.concatenate(owners), int(self.kinds[first]), int(self.tools[first]))
 
+    def part_moves(self) -> np.ndarray:
+        """Which moves cut the part: the feed moves (G1, arcs) that are not measuring.
+
+        Probing (G38.2) is measuring, and so is every move of a sub call that probes: the tool
+        change that drives to a tool setter at the far end of the table, a probing macro.  Without
+        this an 80 x 50 part next to a tool setter was labelled 470 x 160.  A job with no such
+        moves falls back to every feed move, then to every move.
+        """
+        cutting = np.isin(self.kinds, list(FEED_KINDS - {PROBE}))
+        probing = np.unique(self.callers[(self.kinds == PROBE) & (self.callers > 0)])
+        chosen = cutting & ~((self.callers > 0) & np.isin(self.callers, probing))
+        for fallback in (np.isin(self.kinds, list(FEED_KINDS)), np.ones(len(self), dtype=bool)):
+            if chosen.any():
+                break
+            chosen = fallback
+        return chosen
+
     def bounds(self, feed_only: bool = True) -> tuple[np.ndarray, np.ndarray] | None:
-        """Lower and upper XYZ of the path (feed moves only when there are any: the part)."""
+        """Lower and upper XYZ of the part (``part_moves``), or of the whole path."""
         if not len(self):
             return None
-        chosen = np.isin(self.kinds, list(FEED_KINDS)) if feed_only else np.ones(len(self), dtype=bool)
-        if feed_only and not chosen.any():
-            chosen = np.ones(len(self), dtype=bool)
+        chosen = self.part_moves() if feed_only else np.ones(len(self), dtype=bool)
         indices = np.flatnonzero(chosen)
         points = [self.starts[indices, :3], self.ends[indices, :3]]
         points += [self.move_points(int(i)) for i in indices if i in self.arcs]
@@ -270,13 +288,15 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     config = load_config(options.ini) if options.ini else MachineConfig.default()
     result: RunResult | None = None
     error: EcncError | None = None
+    run = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event))
     try:
-        result = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event)).execute_file(Path(job), name)
+        result = run.execute_file(Path(job), name)
     except EcncError as err:
         if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration, plug-in loading
             raise
         error = err
     path = recorder.toolpath(name or str(job), config, result, error)
+    path.joint_kinds = declared_joint_kinds(run.kinematics)
     if name is not None:  # a piped job: its lines are read from the copy that ran
         path.copies[name] = str(job)
     return path

@@ -38,7 +38,7 @@ def test_diameter_programming_needs_a_lathe(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("text, where, message", [
-    ("[SYSTEM]\nmachineType = 2\n", 2, "machineType = 2 in [SYSTEM] must be 0 (milling) or 1 (turning)"),
+    ("[SYSTEM]\nmachineType = lathe\n", 2, "machineType in [SYSTEM]: expected a whole number"),  # 2: a lathe now
     ("[SPINDLE]\nspindleNmax = -5\n", 2, "spindleNmax = -5 in [SPINDLE]"),
     ("[SPINDLE]\nspindleNmax = 1000\nspindleNmin = 2000\n", 3, "no higher than spindleNmax"),
     ("[SPINDLE]\nspindleNmax = fast\n", 2, "expected a number, got 'fast'"),

@@ -65,6 +65,18 @@ class LspClient:
                 return message.get("result")
             self._keep(message)
 
+    def request_error(self, method: str, params: Any = None) -> dict[str, Any]:
+        """A request the server must refuse: its error (code and message)."""
+        self._next += 1
+        ident = self._next
+        self._send({"id": ident, "method": method, "params": params})
+        while True:
+            message = self._take()
+            if message.get("id") == ident and "method" not in message:
+                assert "error" in message, message
+                return message["error"]
+            self._keep(message)
+
     def notify(self, method: str, params: Any = None) -> None:
         self._send({"method": method, "params": params})
 

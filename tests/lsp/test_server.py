@@ -353,10 +353,13 @@ def test_formatting_prints_each_statement_canonically(client: LspClient, folder:
                          "        #27 = 3\n    EndIf\nEndSub\n")
 
 
-def test_formatting_refuses_a_file_with_errors(client: LspClient, folder: Path) -> None:
+def test_formatting_keeps_the_lines_with_errors_and_formats_the_rest(client: LspClient, folder: Path) -> None:
+    """Issue 21: a file being written has errors; the lines that parse are formatted all the same."""
+    text = "g01 x1\nIf [#1 == 1]\ng0 x10+5\ng0   y2 ; here\n"
     path = folder / "broken.nc"
-    path.write_text("g01 x1\nIf [#1 == 1]\n")
-    assert format_request(client, client.open(path)) is None
+    path.write_text(text)
+    formatted = apply(text, format_request(client, client.open(path)))
+    assert formatted == "G1 X1\nIf [#1 == 1]\ng0 x10+5\nG0 Y2   ; here\n"  # the unclosed If, X10+5 as written
 
 
 # --------------------------------------------------------------------------- what editors really send

@@ -121,7 +121,7 @@ def check_loaded(kins: Kinematics, label: str, options: CheckOptions, machine: M
     rc = plug.switch_on(kins, at)
     rng = np.random.default_rng(options.seed)
     poses = space.random(options.samples, rng)
-    samples = geo.Samples(poses, call_each(kins.inverse, poses))
+    samples = geo.Samples(poses, call_each(kins.inverse, poses, machine.joint_limits), machine.joint_limits)
     tol = geo.tolerance(space, options.tolerance)
     report = Report(label, kins.kin_type(), kins.version(), space.source, space.box, options.seed, len(poses))
     if rc != 0:

@@ -7,6 +7,7 @@ matplotlib is the ``plot`` extra and is imported only here.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
@@ -20,7 +21,9 @@ from edingcnc_lang.kinematics.workbench.workspace import Workspace
 from edingcnc_lang.plot.formats import picture_format
 
 SLICES = ((0, 1, 2), (0, 2, 1), (1, 2, 0))  # (horizontal axis, vertical axis, the axis held at its middle)
-STATUS_COLOURS = ("#4c9a2a", "#d9d9d9", "#d62728", "#ff7f0e")  # reached, out of reach, raised, NaN
+# reached, out of reach, raised, NaN, beyond the ini's joint limits (by Status)
+STATUS_COLOURS = ("#4c9a2a", "#d9d9d9", "#d62728", "#ff7f0e", "#9ecae1")
+STATUS_LABELS = ("reached", "out of reach", "raised", "NaN / inf", "beyond the joint limits")
 
 
 def _pyplot():
@@ -43,8 +46,9 @@ def slice_grid(space: Workspace, across: int, up: int, resolution: int) -> tuple
 
 
 def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, resolution: int = 60,
-                  fmt: str | None = None) -> Path:
-    """Draw the slices into ``output`` (PNG, SVG or PDF by its extension, ``fmt`` when already checked)."""
+                  fmt: str | None = None, joint_limits: Sequence[tuple[float, float]] | None = None) -> Path:
+    """Draw the slices into ``output`` (PNG, SVG or PDF by its extension, ``fmt`` when already checked);
+    with ``joint_limits`` (the ini's) a pose whose joints lie beyond them is not shown as reached."""
     fmt = fmt or picture_format(Path(output))
     plt = _pyplot()
     from matplotlib.colors import ListedColormap
@@ -53,7 +57,7 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
     axes_all = [a for a in space.varying if a < 3] or space.varying
     for col, (across, up, held) in enumerate(SLICES):
         poses, xs, ys = slice_grid(space, across, up, resolution)
-        status = call_each(kins.inverse, poses).status.reshape(len(ys), len(xs))
+        status = call_each(kins.inverse, poses, joint_limits).status.reshape(len(ys), len(xs))
         reach, cond = grid[0][col], grid[1][col]
         extent = (xs[0], xs[-1], ys[0], ys[-1])
         reach.imshow(status, origin="lower", extent=extent, aspect="auto", interpolation="nearest",
@@ -71,7 +75,7 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
             ax.set_ylabel(f"{AXES[up]} ({'mm' if up < 3 else 'deg'})")
     fig.colorbar(image, ax=list(grid[1]), shrink=0.8, label="log10 condition number (6 = singular)")
     legend = [plt.Rectangle((0, 0), 1, 1, color=c) for c in STATUS_COLOURS]
-    fig.legend(legend, ["reached", "out of reach", "raised", "NaN / inf"], loc="outside upper right", ncols=4)
+    fig.legend(legend, STATUS_LABELS, loc="outside upper right", ncols=len(STATUS_LABELS))
     fig.suptitle(f"{label}: workspace from {space.source}", x=0.01, ha="left")
     output = Path(output)
     fig.savefig(output, dpi=80, format=fmt)

@@ -6,6 +6,7 @@ and a 200 mm delta are judged alike.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -29,6 +30,7 @@ class Samples:
 
     poses: np.ndarray
     inverse: Outcome
+    joint_limits: Sequence[tuple[float, float]] | None = None  # the ini's: beyond them is not reached
 
     @property
     def reached(self) -> np.ndarray:
@@ -66,6 +68,11 @@ def domain(samples: Samples, space: Workspace) -> tuple[Section, list[Finding]]:
         figures["unreachable_box"] = [[float(lo), float(hi)] for lo, hi in zip(lows, highs)]
         summary += (f"; unreachable poses lie within {_box_text(lows, highs, space)} "
                     f"(e.g. {format_pose(bad[0])}: {out.messages.get(Status.UNREACHABLE, '')})")
+    beyond = out.status == Status.JOINT_LIMIT
+    if beyond.any():
+        figures["beyond_joint_limits_fraction"] = int(beyond.sum()) / n
+        summary += (f"; {100.0 * beyond.sum() / n:.1f}% the plug-in reaches but the ini's joint limits do not "
+                    f"allow (e.g. {format_pose(samples.poses[beyond][0])}: {out.messages.get(Status.JOINT_LIMIT, '')})")
     if reached == 0:
         findings.append(Finding("K403", "no sample pose of the workspace is reachable; check the box and the "
                                 "plug-in's settings", pose=_tup(samples.poses[0]), count=n))
@@ -140,8 +147,9 @@ def continuity(kins: Kinematics, samples: Samples, space: Workspace, rng: np.ran
     jumps: list[Finding] = []
     checked = 0
     for line in _lines(space, starts, rng, segments, steps):
-        out = call_each(kins.inverse, line)
-        deltas = np.max(np.abs(np.diff(out.values, axis=0)), axis=1)  # NaN where an end is unreachable
+        out = call_each(kins.inverse, line, samples.joint_limits)
+        values = np.where(out.ok[:, None], out.values, np.nan)  # beyond the joint limits: never driven there
+        deltas = np.max(np.abs(np.diff(values, axis=0)), axis=1)  # NaN where an end is unreachable
         if not np.isfinite(deltas).any():
             continue
         checked += 1
