@@ -1,0 +1,215 @@
+"""Sweeping straight tool moves through the height field, a batch of segments at a time.
+
+For every segment the cells under its swept footprint are listed at once (numpy, no loop per
+cell or per move), and for each (segment, cell) pair the lowest height the tool reaches over that
+cell along the segment is solved in closed form: the tip's Z is linear along the segment and the
+tool's profile is a convex function of the distance, so the lowest point is where the derivative
+vanishes, clamped to the part of the segment that passes over the cell (a flat, ball and vee
+tool each have their formula; a bull nose is found by a golden-section search, which convexity
+makes exact).  The field takes the minimum; what each move removed, and from what height, is
+worked out exactly in program order only for the pairs that may be a finding.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .envelope import Geometry, lowest
+from .stock import Stock
+from .tools import Tool
+
+EPS = 1e-3            # mm: less than this into the material is no finding (float32 heights)
+MAX_PAIRS = 1_500_000  # (segment, cell) pairs per chunk: bounds the scratch memory (~100 MB)
+
+# Finding codes of a pair: what the part of the tool that made it was doing.
+NONE, RAPID, SPINDLE_OFF, PLUNGE, SHANK, HOLDER = range(6)
+CODE_KINDS = {RAPID: "rapid_into_stock", SPINDLE_OFF: "spindle_off", PLUNGE: "plunge",
+              SHANK: "shank", HOLDER: "holder"}
+
+
+@dataclass
+class Segments:
+    """Straight pieces of tool-tip path (stock frame) with the move each belongs to and its code."""
+
+    a: np.ndarray       # (N, 3) start XYZ of the tip
+    b: np.ndarray       # (N, 3) end XYZ
+    move: np.ndarray    # (N,) int64 index of the move in the run
+    code: np.ndarray    # (N,) int8 what removing material with the cutter means (NONE, RAPID, ...)
+
+    def __len__(self) -> int:
+        return len(self.move)
+
+    def take(self, chosen: np.ndarray) -> Segments:
+        return Segments(self.a[chosen], self.b[chosen], self.move[chosen], self.code[chosen])
+
+
+@dataclass
+class Hits:
+    """Pairs where a move removed material it should not have: move, code, depth and where (x, y, z)."""
+
+    move: np.ndarray
+    code: np.ndarray
+    depth: np.ndarray
+    where: np.ndarray  # (N, 3)
+
+    @classmethod
+    def empty(cls) -> Hits:
+        return cls(np.zeros(0, np.int64), np.zeros(0, np.int8), np.zeros(0), np.zeros((0, 3)))
+
+
+def split_long(a: np.ndarray, b: np.ndarray, limit: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cut segments longer than ``limit`` in XY into equal pieces, so that no footprint's bounding box
+    grows with the square of a long diagonal move; returns starts, ends and the segment each came from."""
+    length = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1])
+    pieces = np.maximum(np.ceil(length / limit), 1).astype(np.int64)
+    owner = np.repeat(np.arange(len(a)), pieces)
+    if len(owner) == len(a):
+        return a, b, owner
+    first = np.cumsum(pieces) - pieces
+    k = (np.arange(len(owner)) - first[owner]).astype(float)[:, None]
+    n = pieces[owner].astype(float)[:, None]
+    step = b[owner] - a[owner]
+    return a[owner] + step * (k / n), a[owner] + step * ((k + 1) / n), owner
+
+
+def _spans(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Per segment and axis (X, Y): the first cell index whose centre is in the bounding box widened
+    by ``radius``, and how many cells it spans (0: off the grid)."""
+    r = stock.resolution
+    ny, nx = stock.shape
+    spans = []
+    for axis, origin, count in ((0, stock.x0, nx), (1, stock.y0, ny)):
+        low, high = np.minimum(a[:, axis], b[:, axis]), np.maximum(a[:, axis], b[:, axis])
+        first = np.maximum(np.ceil((low - radius - origin) / r - 0.5), 0).astype(np.int64)
+        last = np.minimum(np.floor((high + radius - origin) / r - 0.5), count - 1).astype(np.int64)
+        spans.append((first, np.maximum(last - first + 1, 0)))
+    return spans
+
+
+def footprint_cells(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> tuple[np.ndarray, np.ndarray]:
+    """Every (segment, cell) pair whose cell centre is in the bounding box of the segment widened by
+    ``radius``: the segment index and the flat cell index of each pair."""
+    (i0, wide), (j0, tall) = _spans(stock, a, b, radius)
+    counts = wide * tall
+    seg = np.repeat(np.arange(len(a)), counts)
+    k = np.arange(len(seg), dtype=np.int64) - np.repeat(np.cumsum(counts) - counts, counts)
+    w = wide[seg]
+    return seg, (j0[seg] + k // w) * stock.shape[1] + i0[seg] + k % w
+
+
+def pair_counts(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> np.ndarray:
+    """How many pairs ``footprint_cells`` makes per segment (to cut a batch into chunks)."""
+    (_i0, wide), (_j0, tall) = _spans(stock, a, b, radius)
+    return wide * tall  # type: ignore[no-any-return]
+
+
+@dataclass(frozen=True)
+class Part:
+    """A part of the tool that sweeps the stock: the cutter, or the shank or holder above it."""
+
+    radius: float
+    offset: float      # its lowest face above the tip
+    code: int          # NONE for the cutter (each segment has its own code), else SHANK or HOLDER
+    flat: bool
+
+
+def parts_of(tool: Tool) -> list[Part]:
+    """The cutter, and the shank and holder when their place is known."""
+    parts = [Part(tool.radius, 0.0, NONE, tool.shape == "flat")]
+    if tool.flute_length is not None:
+        parts.append(Part(tool.shank_radius, tool.flute_length, SHANK, True))
+    if tool.holder_length is not None and tool.holder_diameter is not None:
+        parts.append(Part(tool.holder_diameter / 2.0, tool.holder_length, HOLDER, True))
+    return parts
+
+
+def sweep(stock: Stock, tool: Tool, segs: Segments, plunge_limit: float, ceiling: float) -> Hits:
+    """Cut ``segs`` (in program order) into the field and return what each move hit that it should
+    not have.  ``ceiling`` is at or above the highest material: pieces whose lowest point of a
+    part is above it cannot touch anything and are skipped."""
+    if not len(segs):
+        return Hits.empty()
+    a, b, owner = split_long(segs.a, segs.b, max(2.0 * tool.radius, 32.0 * stock.resolution))
+    segs = Segments(a, b, segs.move[owner], segs.code[owner])
+    low = np.minimum(a[:, 2], b[:, 2])
+    parts = parts_of(tool)
+    reach = [low + part.offset < ceiling for part in parts]
+    counts = sum(np.where(near, pair_counts(stock, a, b, part.radius), 0) for part, near in zip(parts, reach))
+    busy = np.flatnonzero(counts)
+    if not len(busy):
+        return Hits.empty()
+    bounds = np.searchsorted(np.cumsum(counts[busy]), np.arange(MAX_PAIRS, int(counts.sum()), MAX_PAIRS))
+    found = [_chunk(stock, tool, segs, parts, reach, chosen, plunge_limit)
+             for chosen in np.split(busy, np.unique(np.maximum(bounds, 1)))]
+    return Hits(*(np.concatenate([getattr(h, name) for h in found])  # type: ignore[arg-type]
+                  for name in ("move", "code", "depth", "where")))
+
+
+def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: list[np.ndarray],
+           chosen: np.ndarray, plunge_limit: float) -> Hits:
+    """One chunk of segments, all parts of the tool: the hits, then the field lowered."""
+    cells, heights, moves, codes = [], [], [], []
+    for part, near in zip(parts, reach):
+        picked = chosen[near[chosen]]
+        seg, cell = footprint_cells(stock, segs.a[picked], segs.b[picked], part.radius)
+        seg = picked[seg]
+        g = Geometry(stock, segs.a[seg], segs.b[seg], cell, part.radius)
+        ok = g.ok
+        g.keep(ok)
+        seg, cell = seg[ok], cell[ok]
+        h = g.az + g.downhill() * g.dz if part.flat else lowest(tool, g)
+        cells.append(cell)
+        heights.append(h + part.offset)
+        moves.append(segs.move[seg])
+        codes.append(segs.code[seg] if part.code == NONE else np.full(len(seg), part.code, np.int8))
+    cell, h = np.concatenate(cells), np.maximum(np.concatenate(heights), stock.bottom)
+    hits = _hits(stock, cell, h, np.concatenate(moves), np.concatenate(codes), plunge_limit)
+    np.minimum.at(stock.top.reshape(-1), cell, h.astype(np.float32))
+    return hits
+
+
+def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code: np.ndarray,
+          plunge_limit: float) -> Hits:
+    """The deepest pair per (move, code) among pairs that removed material they should not have,
+    each measured from the height the cell had just before that move (not before the chunk)."""
+    top = stock.top.reshape(-1)
+    candidate = (code != NONE) & (h < top[cell] - EPS)
+    if not candidate.any():
+        return Hits.empty()
+    before = _height_before(top, cell, h, move, candidate)
+    depth = before - h[candidate]
+    c_move, c_code, c_cell, c_h = move[candidate], code[candidate], cell[candidate], h[candidate]
+    real = depth > np.where(c_code == PLUNGE, plunge_limit, EPS)
+    if not real.any():
+        return Hits.empty()
+    c_move, c_code, c_cell, c_h, depth = (v[real] for v in (c_move, c_code, c_cell, c_h, depth))
+    order = np.lexsort((-depth, c_code, c_move))
+    first = order[np.r_[True, (np.diff(c_move[order]) != 0) | (np.diff(c_code[order]) != 0)]]
+    nx, r = stock.shape[1], stock.resolution
+    where = np.column_stack((stock.x0 + (c_cell[first] % nx + 0.5) * r,
+                             stock.y0 + (c_cell[first] // nx + 0.5) * r, c_h[first]))
+    return Hits(c_move[first], c_code[first], depth[first], where)
+
+
+def _height_before(top: np.ndarray, cell: np.ndarray, h: np.ndarray, move: np.ndarray,
+                   candidate: np.ndarray) -> np.ndarray:
+    """For the candidate pairs: the cell's height just before their move, i.e. the lower of the
+    height before the chunk and the lowest any earlier move of the chunk cut it to."""
+    related = np.isin(cell, np.unique(cell[candidate]))
+    r_cell, r_move, r_h = cell[related], move[related], h[related]
+    order = np.lexsort((r_move, r_cell))
+    r_cell, r_move, r_h = r_cell[order], r_move[order], r_h[order]
+    group = np.flatnonzero(np.r_[True, (np.diff(r_cell) != 0) | (np.diff(r_move) != 0)])
+    g_cell, g_move, g_low = r_cell[group], r_move[group], np.minimum.reduceat(r_h, group)
+    new_cell = np.r_[True, np.diff(g_cell) != 0]
+    index = np.cumsum(new_cell) - 1
+    # a running minimum that starts afresh at each cell: later cells are shifted below earlier ones
+    shift = 2.0 * float(g_low.max() - g_low.min()) + 1.0
+    running = np.minimum.accumulate(g_low - index * shift) + index * shift
+    earlier = np.r_[np.inf, running[:-1]]
+    earlier[new_cell] = np.inf
+    before = np.minimum(top[g_cell].astype(np.float64), earlier)
+    stride = int(move.max()) + 1
+    keys = g_cell * stride + g_move
+    return before[np.searchsorted(keys, cell[candidate] * stride + move[candidate])]  # type: ignore[no-any-return]
