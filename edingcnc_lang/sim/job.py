@@ -176,9 +176,11 @@ class Simulator:
         if not len(self.queue.moves):
             return
         segs = self.queue.take()
+        low = np.minimum(segs.a[:, 2], segs.b[:, 2])
+        if not (low < self.ceiling).any():  # all above the material: nothing to cut, nothing to hit
+            return
         tool = self.used[self.tool.number] = self.tool
         self.hits.append((sweep(self.stock, tool, segs, PLUNGE_SHARE * tool.diameter, self.ceiling), tool.number))
-        low = np.minimum(segs.a[:, 2], segs.b[:, 2])
         below = np.flatnonzero(low < self.stock.bottom - EPS)
         if len(below):
             deepest = np.where((segs.a[below, 2] <= segs.b[below, 2])[:, None], segs.a[below], segs.b[below])

@@ -46,7 +46,8 @@ class Segments:
 
 @dataclass
 class Hits:
-    """Pairs where a move removed material it should not have: move, code, depth and where (x, y, z)."""
+    """Moves that removed material they should not have: move, code, depth, and where the tool tip
+    was (x, y, z: the lower end of the segment that went deepest)."""
 
     move: np.ndarray
     code: np.ndarray
@@ -149,7 +150,7 @@ def sweep(stock: Stock, tool: Tool, segs: Segments, plunge_limit: float, ceiling
 def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: list[np.ndarray],
            chosen: np.ndarray, plunge_limit: float) -> Hits:
     """One chunk of segments, all parts of the tool: the hits, then the field lowered."""
-    cells, heights, moves, codes = [], [], [], []
+    cells, heights, moves, codes, owners = [], [], [], [], []
     for part, near in zip(parts, reach):
         picked = chosen[near[chosen]]
         seg, cell = footprint_cells(stock, segs.a[picked], segs.b[picked], part.radius)
@@ -162,34 +163,35 @@ def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: l
         cells.append(cell)
         heights.append(h + part.offset)
         moves.append(segs.move[seg])
+        owners.append(seg)
         codes.append(segs.code[seg] if part.code == NONE else np.full(len(seg), part.code, np.int8))
     cell, h = np.concatenate(cells), np.maximum(np.concatenate(heights), stock.bottom)
-    hits = _hits(stock, cell, h, np.concatenate(moves), np.concatenate(codes), plunge_limit)
+    move = np.concatenate(moves)
+    pair, depth = _hits(stock, cell, h, move, np.concatenate(codes), plunge_limit)
+    seg = np.concatenate(owners)[pair]  # where the tool was: the tip at the lower end of the deepest segment
+    hits = Hits(move[pair], np.concatenate(codes)[pair], depth,
+                np.where((segs.a[seg, 2] <= segs.b[seg, 2])[:, None], segs.a[seg], segs.b[seg]))
     np.minimum.at(stock.top.reshape(-1), cell, h.astype(np.float32))
     return hits
 
 
 def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code: np.ndarray,
-          plunge_limit: float) -> Hits:
+          plunge_limit: float) -> tuple[np.ndarray, np.ndarray]:
     """The deepest pair per (move, code) among pairs that removed material they should not have,
-    each measured from the height the cell had just before that move (not before the chunk)."""
+    each measured from the height the cell had just before that move (not before the chunk):
+    the index of each such pair and its depth."""
     top = stock.top.reshape(-1)
     candidate = (code != NONE) & (h < top[cell] - EPS)
     if not candidate.any():
-        return Hits.empty()
+        return np.zeros(0, np.int64), np.zeros(0)
     before = _height_before(top, cell, h, move, candidate)
     depth = before - h[candidate]
-    c_move, c_code, c_cell, c_h = move[candidate], code[candidate], cell[candidate], h[candidate]
-    real = depth > np.where(c_code == PLUNGE, plunge_limit, EPS)
-    if not real.any():
-        return Hits.empty()
-    c_move, c_code, c_cell, c_h, depth = (v[real] for v in (c_move, c_code, c_cell, c_h, depth))
+    c_move, c_code, c_pair = move[candidate], code[candidate], np.flatnonzero(candidate)
+    real = depth > np.where(c_code == PLUNGE, plunge_limit, 0.0) + EPS
+    c_move, c_code, c_pair, depth = (v[real] for v in (c_move, c_code, c_pair, depth))
     order = np.lexsort((-depth, c_code, c_move))
     first = order[np.r_[True, (np.diff(c_move[order]) != 0) | (np.diff(c_code[order]) != 0)]]
-    nx, r = stock.shape[1], stock.resolution
-    where = np.column_stack((stock.x0 + (c_cell[first] % nx + 0.5) * r,
-                             stock.y0 + (c_cell[first] // nx + 0.5) * r, c_h[first]))
-    return Hits(c_move[first], c_code[first], depth[first], where)
+    return c_pair[first], depth[first]
 
 
 def _height_before(top: np.ndarray, cell: np.ndarray, h: np.ndarray, move: np.ndarray,
