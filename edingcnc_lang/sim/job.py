@@ -181,7 +181,8 @@ class Simulator:
             return
         tool = self.used[self.tool.number] = self.tool
         self.hits.append((sweep(self.stock, tool, segs, PLUNGE_SHARE * tool.diameter, self.ceiling), tool.number))
-        below = np.flatnonzero(low < self.stock.bottom - EPS)
+        # a move that climbs out from below the bottom was told of when it went down there
+        below = np.flatnonzero((low < self.stock.bottom - EPS) & (segs.b[:, 2] <= segs.a[:, 2] + EPS))
         if len(below):
             deepest = np.where((segs.a[below, 2] <= segs.b[below, 2])[:, None], segs.a[below], segs.b[below])
             self.hits.append((Hits(segs.move[below], np.full(len(below), OUTSIDE, np.int8),

@@ -188,6 +188,8 @@ def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code:
     depth = before - h[candidate]
     c_move, c_code, c_pair = move[candidate], code[candidate], np.flatnonzero(candidate)
     real = depth > np.where(c_code == PLUNGE, plunge_limit, 0.0) + EPS
+    if not real.any():
+        return np.zeros(0, np.int64), np.zeros(0)
     c_move, c_code, c_pair, depth = (v[real] for v in (c_move, c_code, c_pair, depth))
     order = np.lexsort((-depth, c_code, c_move))
     first = order[np.r_[True, (np.diff(c_move[order]) != 0) | (np.diff(c_code[order]) != 0)]]
