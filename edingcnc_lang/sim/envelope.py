@@ -19,32 +19,41 @@ GOLDEN_STEPS = 40      # bull nose: the bracket shrinks to 0.618^40 = 4e-9 of th
 
 
 class Geometry:
-    """A segment seen from each of its cells: the part of the segment over the cell's disc of
-    ``radius``, and the offsets the profiles need (``d²(t) = e2 + L2 (t - p)²``)."""
+    """Segments seen from the cells around them: for each (segment, cell) pair within ``radius`` of
+    the segment, the part of the segment over the cell (``lo``..``hi``) and the offsets the
+    profiles need (``d²(t) = e2 + L2 (t - p)²``).  Pairs come segment by segment (``counts`` each,
+    cell columns ``i`` and rows ``j``), so per-segment values are spread with ``np.repeat`` rather
+    than gathered; pairs out of reach are dropped first, before the costlier half of the work."""
 
-    def __init__(self, stock: Stock, a: np.ndarray, b: np.ndarray, cells: np.ndarray, radius: float) -> None:
-        ny, nx = stock.shape
+    def __init__(self, stock: Stock, a: np.ndarray, b: np.ndarray, counts: np.ndarray, i: np.ndarray,
+                 j: np.ndarray, radius: float) -> None:
         r = stock.resolution
-        ux = stock.x0 + (cells % nx + 0.5) * r - a[:, 0]
-        uy = stock.y0 + (cells // nx + 0.5) * r - a[:, 1]
         dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-        self.az, self.dz = a[:, 2], b[:, 2] - a[:, 2]
-        self.l2 = dx * dx + dy * dy
-        self.uu = ux * ux + uy * uy
-        self.ud = ux * dx + uy * dy
-        self.still = self.l2 < 1e-18           # a vertical (or null) move: the same disc all along
-        l2 = np.where(self.still, 1.0, self.l2)
-        self.p = np.where(self.still, 0.0, self.ud / l2)
-        self.e2 = np.maximum(self.uu - self.ud * self.p, 0.0)
-        disc = self.ud * self.ud - self.l2 * (self.uu - radius * radius)
-        root = np.sqrt(np.maximum(disc, 0.0))
-        self.lo = np.where(self.still, 0.0, np.maximum((self.ud - root) / l2, 0.0))
-        self.hi = np.where(self.still, 1.0, np.minimum((self.ud + root) / l2, 1.0))
-        inside = np.where(self.still, self.uu <= radius * radius, disc >= 0.0)
-        self.ok = inside & (self.lo <= self.hi)
+        l2 = dx * dx + dy * dy
+        still = l2 < 1e-18           # a vertical (or null) move: the same disc all along
+        ux = (stock.x0 + 0.5 * r - np.repeat(a[:, 0], counts)) + i * r
+        uy = (stock.y0 + 0.5 * r - np.repeat(a[:, 1], counts)) + j * r
+        pair_dx, pair_dy, pair_l2 = np.repeat(dx, counts), np.repeat(dy, counts), np.repeat(l2, counts)
+        uu = ux * ux + uy * uy
+        ud = ux * pair_dx + uy * pair_dy
+        disc = ud * ud - pair_l2 * (uu - radius * radius)
+        near = np.flatnonzero((disc >= 0.0) & (uu <= radius * radius + np.repeat(np.where(still, 0.0, np.inf), counts)))
+        self.seg = np.repeat(np.arange(len(a)), counts)[near]
+        self.cell = j[near] * stock.shape[1] + i[near]
+        uu, ud, disc, l2p = uu[near], ud[near], disc[near], pair_l2[near]
+        self.still = still[self.seg]
+        self.az, self.dz = a[self.seg, 2], b[self.seg, 2] - a[self.seg, 2]
+        inv = np.where(self.still, 0.0, 1.0 / np.where(self.still, 1.0, l2p))
+        root = np.sqrt(disc)
+        self.lo = np.where(self.still, 0.0, np.maximum((ud - root) * inv, 0.0))
+        self.hi = np.where(self.still, 1.0, np.minimum((ud + root) * inv, 1.0))
+        self.l2, self.uu, self.ud = l2p, uu, ud
+        self.p = ud * inv
+        self.e2 = np.maximum(uu - ud * self.p, 0.0)
+        self.keep(np.flatnonzero(self.lo <= self.hi))
 
     def keep(self, chosen: np.ndarray) -> None:
-        for name in ("az", "dz", "l2", "uu", "ud", "still", "p", "e2", "lo", "hi"):
+        for name in ("seg", "cell", "az", "dz", "l2", "uu", "ud", "still", "p", "e2", "lo", "hi"):
             setattr(self, name, getattr(self, name)[chosen])
 
     def d2(self, t: np.ndarray) -> np.ndarray:
