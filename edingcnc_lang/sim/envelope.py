@@ -16,6 +16,7 @@ from .tools import Tool
 FAR = 1e9              # a parameter step that clamps to an end of the segment
 GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 GOLDEN_STEPS = 40      # bull nose: the bracket shrinks to 0.618^40 = 4e-9 of the segment
+STILL = 1e-10          # mm²: a segment shorter than this in XY (10 nm) is a vertical move
 
 
 class Geometry:
@@ -23,33 +24,44 @@ class Geometry:
     the segment, the part of the segment over the cell (``lo``..``hi``) and the offsets the
     profiles need (``d²(t) = e2 + L2 (t - p)²``).  Pairs come segment by segment (``counts`` each,
     cell columns ``i`` and rows ``j``), so per-segment values are spread with ``np.repeat`` rather
-    than gathered; pairs out of reach are dropped first, before the costlier half of the work."""
+    than gathered; pairs out of reach are dropped first, before the costlier half of the work.
+    Per pair everything is float32 (half the memory traffic, twice the numbers per instruction):
+    the offsets are from the segment's start, and heights are kept in float32 anyway."""
 
-    def __init__(self, stock: Stock, a: np.ndarray, b: np.ndarray, counts: np.ndarray, i: np.ndarray,
-                 j: np.ndarray, radius: float) -> None:
+    def __init__(self, stock: Stock, a: np.ndarray, b: np.ndarray,
+                 box: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray], radius: float) -> None:
+        counts, i0, j0, i, j = box
         r = stock.resolution
         dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
         l2 = dx * dx + dy * dy
-        still = l2 < 1e-18           # a vertical (or null) move: the same disc all along
-        ux = (stock.x0 + 0.5 * r - np.repeat(a[:, 0], counts)) + i * r
-        uy = (stock.y0 + 0.5 * r - np.repeat(a[:, 1], counts)) + j * r
-        pair_dx, pair_dy, pair_l2 = np.repeat(dx, counts), np.repeat(dy, counts), np.repeat(l2, counts)
+        still = l2 < STILL
+        # offsets from the segment's start in float32: small numbers, so a µm is still a µm
+        base_x = (stock.x0 + (i0 + 0.5) * r - a[:, 0]).astype(np.float32)
+        base_y = (stock.y0 + (j0 + 0.5) * r - a[:, 1]).astype(np.float32)
+        step = np.float32(r)
+        ux = np.repeat(base_x, counts) + i * step
+        uy = np.repeat(base_y, counts) + j * step
+        pair_dx, pair_dy = np.repeat(dx.astype(np.float32), counts), np.repeat(dy.astype(np.float32), counts)
+        pair_l2 = np.repeat(np.where(still, 0.0, l2).astype(np.float32), counts)
         uu = ux * ux + uy * uy
         ud = ux * pair_dx + uy * pair_dy
-        disc = ud * ud - pair_l2 * (uu - radius * radius)
-        near = np.flatnonzero((disc >= 0.0) & (uu <= radius * radius + np.repeat(np.where(still, 0.0, np.inf), counts)))
+        r2 = np.float32(radius * radius)
+        disc = ud * ud - pair_l2 * (uu - r2)
+        near = np.flatnonzero((disc >= 0) & ((uu <= r2) | (pair_l2 > 0)))
         self.seg = np.repeat(np.arange(len(a)), counts)[near]
-        self.cell = j[near] * stock.shape[1] + i[near]
-        uu, ud, disc, l2p = uu[near], ud[near], disc[near], pair_l2[near]
+        self.cell = (np.repeat(j0 * stock.shape[1] + i0, counts)[near] + j[near].astype(np.int64) * stock.shape[1]
+                     + i[near])
+        uu, ud, disc, self.l2 = uu[near], ud[near], disc[near], pair_l2[near]
         self.still = still[self.seg]
-        self.az, self.dz = a[self.seg, 2], b[self.seg, 2] - a[self.seg, 2]
-        inv = np.where(self.still, 0.0, 1.0 / np.where(self.still, 1.0, l2p))
+        self.az = a[self.seg, 2].astype(np.float32)
+        self.dz = (b[:, 2] - a[:, 2]).astype(np.float32)[self.seg]
+        inv = np.float32(1.0) / np.where(self.still, np.float32(1.0), self.l2)
         root = np.sqrt(disc)
-        self.lo = np.where(self.still, 0.0, np.maximum((ud - root) * inv, 0.0))
-        self.hi = np.where(self.still, 1.0, np.minimum((ud + root) * inv, 1.0))
-        self.l2, self.uu, self.ud = l2p, uu, ud
-        self.p = ud * inv
-        self.e2 = np.maximum(uu - ud * self.p, 0.0)
+        self.lo = np.where(self.still, np.float32(0.0), np.maximum((ud - root) * inv, np.float32(0.0)))
+        self.hi = np.where(self.still, np.float32(1.0), np.minimum((ud + root) * inv, np.float32(1.0)))
+        self.uu, self.ud = uu, ud
+        self.p = np.where(self.still, np.float32(0.0), ud * inv)
+        self.e2 = np.maximum(uu - ud * self.p, np.float32(0.0))
         self.keep(np.flatnonzero(self.lo <= self.hi))
 
     def keep(self, chosen: np.ndarray) -> None:

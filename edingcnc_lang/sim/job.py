@@ -14,6 +14,7 @@ import math
 import time
 from array import array
 from dataclasses import dataclass, field, replace
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -92,6 +93,8 @@ class Simulator:
         self.frame: tuple[float, float, float] | None = None
         self.chord = stock.resolution / 4.0
         self._offset = lambda: (0.0, 0.0, 0.0, 0.0)  # frame x, y, z and the tool length in force
+        self.every = 0  # with ``on_snapshot``: sweep and call it before every ``every``-th move
+        self.on_snapshot: Callable[[int, Stock], None] | None = None
 
     def attach(self, run: Run) -> None:
         """Read the work offset and the tool length from the run's interpreter as each move arrives."""
@@ -132,6 +135,9 @@ class Simulator:
 
     def on_move(self, move: Move, _joints: Pose) -> None:
         index = len(self.lines)
+        if self.on_snapshot is not None and index % self.every == 0:
+            self.flush()
+            self.on_snapshot(index, self.stock)
         self.lines.append(move.line)
         self.files.append(self.paths.setdefault(move.path, len(self.paths)))
         if move.kind not in CUTTING_KINDS:
@@ -203,13 +209,15 @@ class Simulator:
 
 def simulate(job: str | Path, stock: Stock, options: RunOptions | None = None,
              tools: dict[int, Tool] | None = None, first_tool: int | None = None,
-             name: str | None = None) -> SimResult:
+             name: str | None = None, every: int = 0,
+             on_snapshot: Callable[[int, Stock], None] | None = None) -> SimResult:
     """Run ``job`` and cut the stock with it; a runtime error is kept in ``SimResult.error``.
 
     ``tools`` (from ``tools.load_tools``) give the cutters their shapes; without them each tool is
     the ini's diameter as a flat end mill with unknown flute length.  ``first_tool`` is the tool in
     the spindle when the job starts (default: the machine's current tool, #5008).  Callbacks
-    already in ``options`` still receive every move and event.
+    already in ``options`` still receive every move and event.  ``on_snapshot(move, stock)`` is
+    called with the stock as cut before move 0, ``every``, 2 ``every``, ... (the viewer's frames).
     """
     started = time.perf_counter()
     options = options or RunOptions()
@@ -231,6 +239,8 @@ def simulate(job: str | Path, stock: Stock, options: RunOptions | None = None,
         first_tool = int(run.interpreter.params.read(t.TOOL_CURRENT))
     sim = Simulator(stock, run.config, tools, first_tool)
     sim.attach(run)
+    if on_snapshot is not None:
+        sim.every, sim.on_snapshot = max(1, every), on_snapshot
     holder.append(sim)
     result: RunResult | None = None
     error: EcncError | None = None

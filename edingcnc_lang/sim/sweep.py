@@ -20,7 +20,7 @@ from .stock import Stock
 from .tools import Tool
 
 EPS = 1e-3            # mm: less than this into the material is no finding (float32 heights)
-MAX_PAIRS = 1_500_000  # (segment, cell) pairs per chunk: bounds the scratch memory (~100 MB)
+MAX_PAIRS = 50_000  # (segment, cell) pairs per chunk: its scratch arrays stay in the CPU's cache
 
 # Finding codes of a pair: what the part of the tool that made it was doing.
 NONE, RAPID, SPINDLE_OFF, PLUNGE, SHANK, HOLDER = range(6)
@@ -88,23 +88,25 @@ def _spans(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> list[tu
     return spans
 
 
-def footprint(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def footprint(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Every cell whose centre is in the bounding box of a segment widened by ``radius``, segment
-    by segment: how many per segment, and the column ``i`` and row ``j`` of each (built row by row
-    with ``np.repeat``, no division per cell)."""
+    by segment: how many per segment, the first column and row of each segment's box, and the
+    column and row of each cell within its box (small numbers, built row by row with ``np.repeat``:
+    no division per cell)."""
     (i0, wide), (j0, tall) = _spans(stock, a, b, radius)
     rows = np.where(wide > 0, tall, 0)
     row_seg = np.repeat(np.arange(len(a)), rows)
-    row_j = j0[row_seg] + np.arange(len(row_seg)) - np.repeat(np.cumsum(rows) - rows, rows)
+    row_j = np.arange(len(row_seg)) - np.repeat(np.cumsum(rows) - rows, rows)
     row_w = wide[row_seg]
-    i = np.repeat(i0[row_seg] - (np.cumsum(row_w) - row_w), row_w) + np.arange(int(row_w.sum()))
-    return wide * rows, i, np.repeat(row_j, row_w)
+    i = np.arange(int(row_w.sum())) - np.repeat(np.cumsum(row_w) - row_w, row_w)
+    return wide * rows, i0, j0, i.astype(np.int32), np.repeat(row_j, row_w).astype(np.int32)
 
 
 def footprint_cells(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> tuple[np.ndarray, np.ndarray]:
     """``footprint`` as (segment, flat cell index) pairs."""
-    counts, i, j = footprint(stock, a, b, radius)
-    return np.repeat(np.arange(len(a)), counts), j * stock.shape[1] + i
+    counts, i0, j0, i, j = footprint(stock, a, b, radius)
+    return np.repeat(np.arange(len(a)), counts), np.repeat(j0 * stock.shape[1] + i0, counts) + j * stock.shape[1] + i
 
 
 def pair_counts(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> np.ndarray:
@@ -162,7 +164,7 @@ def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: l
     for part, near in zip(parts, reach):
         picked = chosen[near[chosen]]
         a, b = segs.a[picked], segs.b[picked]
-        g = Geometry(stock, a, b, *footprint(stock, a, b, part.radius), part.radius)
+        g = Geometry(stock, a, b, footprint(stock, a, b, part.radius), part.radius)
         seg, cell = picked[g.seg], g.cell
         h = g.az + g.downhill() * g.dz if part.flat else lowest(tool, g)
         cells.append(cell)
@@ -206,7 +208,7 @@ def _height_before(top: np.ndarray, cell: np.ndarray, h: np.ndarray, move: np.nd
     """For the candidate pairs: the cell's height just before their move, i.e. the lower of the
     height before the chunk and the lowest any earlier move of the chunk cut it to."""
     related = np.isin(cell, np.unique(cell[candidate]))
-    r_cell, r_move, r_h = cell[related], move[related], h[related]
+    r_cell, r_move, r_h = cell[related], move[related], h[related].astype(np.float64)  # the shift below needs it
     order = np.lexsort((r_move, r_cell))
     r_cell, r_move, r_h = r_cell[order], r_move[order], r_h[order]
     group = np.flatnonzero(np.r_[True, (np.diff(r_cell) != 0) | (np.diff(r_move) != 0)])

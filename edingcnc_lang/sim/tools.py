@@ -67,7 +67,7 @@ class Tool:
         """Height of the cutting edge above the tip at radial distance ``d`` (array or float, d <= radius)."""
         import numpy as np
 
-        d = np.asarray(d, dtype=float)
+        d = np.asarray(d)
         if self.shape == "ball":
             return self.radius - np.sqrt(np.maximum(self.radius ** 2 - d * d, 0.0))
         if self.shape == "vee":
