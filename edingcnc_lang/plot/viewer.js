@@ -253,27 +253,37 @@
     let frame = 0;
     while (frame + 1 < S.moves.length && S.moves[frame + 1] <= reached) frame++;
     const nx = S.nx, ny = S.ny, base = frame * nx * ny, span = S.top - S.bottom;
+    const sy = Math.sin(cam.yaw), cy = Math.cos(cam.yaw), sp = Math.sin(cam.pitch);
     const key = cam.yaw + "," + cam.pitch;
     if (key !== stockKey) {
-      const sy = Math.sin(cam.yaw), cy = Math.cos(cam.yaw), sp = Math.sin(cam.pitch);
       const depth = new Float64Array(nx * ny);
       for (let j = 0; j < ny; j++) for (let i = 0; i < nx; i++) depth[j * nx + i] = (i * sy + j * cy) * sp;
       stockOrder = Array.from(depth.keys()).sort((a, b) => depth[a] - depth[b]);
       stockKey = key;
     }
+    // the walls that face the viewer: +X, -X, +Y, -Y sides of a column (normal . view > 0)
+    const walls = [[1, 0, sy * sp], [-1, 0, -sy * sp], [0, 1, cy * sp], [0, -1, -cy * sp]].filter((f) => f[2] > 1e-9);
     const level = (i, j) => stockHeights[base + Math.min(ny - 1, Math.max(0, j)) * nx + Math.min(nx - 1, Math.max(0, i))] / 65535;
+    const polygon = (corners, colour) => {
+      ctx.beginPath();
+      corners.forEach(([x, y, z], n) => {
+        const [sx, sy2] = toScreen(...project(x, y, z), w, h);
+        if (n) ctx.lineTo(sx, sy2); else ctx.moveTo(sx, sy2);
+      });
+      ctx.fillStyle = colour;
+      ctx.fill();
+    };
     for (const c of stockOrder) {
       const i = c % nx, j = (c - i) / nx, q = level(i, j), z = S.bottom + q * span;
       const gx = (level(i + 1, j) - level(i - 1, j)) * span / (2 * S.cell), gy = (level(i, j + 1) - level(i, j - 1)) * span / (2 * S.cell);
       const light = 0.55 + 0.45 * Math.max(0, (-gx * 0.5 + gy * 0.5 + 1) / Math.sqrt(1.5 * (1 + gx * gx + gy * gy)));
-      const x0 = S.x0 + i * S.cell, y0 = S.y0 + j * S.cell;
-      ctx.beginPath();
-      [[x0, y0], [x0 + S.cell, y0], [x0 + S.cell, y0 + S.cell], [x0, y0 + S.cell]].forEach(([x, y], n) => {
-        const [sx, sy] = toScreen(...project(x, y, z), w, h);
-        if (n) ctx.lineTo(sx, sy); else ctx.moveTo(sx, sy);
-      });
-      ctx.fillStyle = stockShade(q, light);
-      ctx.fill();
+      const x0 = S.x0 + i * S.cell, y0 = S.y0 + j * S.cell, x1 = x0 + S.cell, y1 = y0 + S.cell;
+      for (const [fx, fy] of walls) {  // a column down to the bottom: nearer columns paint over it
+        const x = fx > 0 ? x1 : x0, y = fy > 0 ? y1 : y0;
+        const ends = fx ? [[x, y0], [x, y1]] : [[x0, y], [x1, y]];
+        polygon([[...ends[0], z], [...ends[1], z], [...ends[1], S.bottom], [...ends[0], S.bottom]], stockShade(q, fx ? 0.5 : 0.4));
+      }
+      polygon([[x0, y0, z], [x1, y0, z], [x1, y1, z], [x0, y1, z]], stockShade(q, light));
     }
   }
 
