@@ -90,17 +90,27 @@ def _spans(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> list[tu
 
 def footprint(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Every cell whose centre is in the bounding box of a segment widened by ``radius``, segment
-    by segment: how many per segment, the first column and row of each segment's box, and the
-    column and row of each cell within its box (small numbers, built row by row with ``np.repeat``:
-    no division per cell)."""
+    """The cells a segment's tool of ``radius`` may reach, segment by segment: on each row of its
+    bounding box, the columns within ``radius`` of the segment's X range, ``radius`` shrunk by the
+    row's distance from its Y range (a rounded box: a short move's disc, not its square).  Returns
+    how many cells per segment, each segment's first column and row, and the column and row of each
+    cell from those (small numbers, built row by row with ``np.repeat``: no division per cell)."""
     (i0, wide), (j0, tall) = _spans(stock, a, b, radius)
     rows = np.where(wide > 0, tall, 0)
     row_seg = np.repeat(np.arange(len(a)), rows)
     row_j = np.arange(len(row_seg)) - np.repeat(np.cumsum(rows) - rows, rows)
-    row_w = wide[row_seg]
-    i = np.arange(int(row_w.sum())) - np.repeat(np.cumsum(row_w) - row_w, row_w)
-    return wide * rows, i0, j0, i.astype(np.int32), np.repeat(row_j, row_w).astype(np.int32)
+    r = stock.resolution
+    y = stock.y0 + (j0[row_seg] + row_j + 0.5) * r
+    low_y, high_y = np.minimum(a[row_seg, 1], b[row_seg, 1]), np.maximum(a[row_seg, 1], b[row_seg, 1])
+    off = np.maximum(np.maximum(low_y - y, y - high_y), 0.0)
+    reach = np.sqrt(np.maximum(radius * radius - off * off, 0.0))
+    low_x, high_x = np.minimum(a[row_seg, 0], b[row_seg, 0]), np.maximum(a[row_seg, 0], b[row_seg, 0])
+    first = np.maximum(np.ceil((low_x - reach - stock.x0) / r - 0.5), i0[row_seg]).astype(np.int64)
+    last = np.minimum(np.floor((high_x + reach - stock.x0) / r - 0.5), i0[row_seg] + wide[row_seg] - 1)
+    row_w = np.where(off <= radius, np.maximum(last.astype(np.int64) - first + 1, 0), 0)
+    i = np.repeat(first - i0[row_seg] - (np.cumsum(row_w) - row_w), row_w) + np.arange(int(row_w.sum()))
+    counts = np.bincount(row_seg, weights=row_w, minlength=len(a)).astype(np.int64)
+    return counts, i0, j0, i.astype(np.int32), np.repeat(row_j, row_w).astype(np.int32)
 
 
 def footprint_cells(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> tuple[np.ndarray, np.ndarray]:
