@@ -8,6 +8,8 @@ is found by a golden-section search (exact to 4e-9 of the segment, thanks to con
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from .stock import Stock
@@ -16,6 +18,7 @@ from .tools import Tool
 FAR = 1e9              # a parameter step that clamps to an end of the segment
 GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 GOLDEN_STEPS = 40      # bull nose: the bracket shrinks to 0.618^40 = 4e-9 of the segment
+ROUNDING = 1e-5        # mm: what float32 arithmetic may be off by; a cell is skipped only below that
 STILL = 1e-10          # mm²: a segment shorter than this in XY (10 nm) is a vertical move
 
 
@@ -24,14 +27,16 @@ class Geometry:
     the segment, the part of the segment over the cell (``lo``..``hi``) and the offsets the
     profiles need (``d²(t) = e2 + L2 (t - p)²``).  Pairs come segment by segment (``counts`` each,
     cell columns ``i`` and rows ``j``), so per-segment values are spread with ``np.repeat`` rather
-    than gathered; pairs out of reach are dropped first, before the costlier half of the work.
+    than gathered; pairs out of reach, or whose cell is already lower than the part of the tool
+    (``floor(d)`` above the tip at distance d) can come, are dropped before the costlier half.
     Per pair everything is float32 (half the memory traffic, twice the numbers per instruction):
     the offsets are from the segment's start, and heights are kept in float32 anyway."""
 
     def __init__(self, stock: Stock, a: np.ndarray, b: np.ndarray,
-                 box: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray], radius: float) -> None:
+                 box: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray], radius: float,
+                 floor: Callable[[np.ndarray], np.ndarray]) -> None:
         counts, i0, j0, i, j = box
-        r = stock.resolution
+        r, nx = stock.resolution, stock.shape[1]
         dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
         l2 = dx * dx + dy * dy
         still = l2 < STILL
@@ -47,10 +52,18 @@ class Geometry:
         ud = ux * pair_dx + uy * pair_dy
         r2 = np.float32(radius * radius)
         disc = ud * ud - pair_l2 * (uu - r2)
-        near = np.flatnonzero((disc >= 0) & ((uu <= r2) | (pair_l2 > 0)))
+        # a cell already at or below the lowest the tool can reach over it (its lowest tip plus the
+        # profile at the nearest the segment comes) cannot be cut: most cells a finishing pass
+        # passes again, left behind by the previous pass or row
+        cells = np.repeat(j0 * nx + i0, counts) + j.astype(np.int64) * nx + i
+        mx, my = ux - pair_dx * np.float32(0.5), uy - pair_dy * np.float32(0.5)
+        nearest = np.maximum(np.sqrt(mx * mx + my * my) - np.sqrt(pair_l2) * np.float32(0.5), np.float32(0.0))
+        lowest_tip = np.repeat(np.minimum(a[:, 2], b[:, 2]).astype(np.float32), counts)
+        bound = lowest_tip + floor(np.minimum(nearest, np.float32(radius))) - np.float32(ROUNDING)
+        cuttable = stock.top.reshape(-1)[cells] > bound
+        near = np.flatnonzero((disc >= 0) & ((uu <= r2) | (pair_l2 > 0)) & cuttable)
         self.seg = np.repeat(np.arange(len(a)), counts)[near]
-        self.cell = (np.repeat(j0 * stock.shape[1] + i0, counts)[near] + j[near].astype(np.int64) * stock.shape[1]
-                     + i[near])
+        self.cell = cells[near]
         uu, ud, disc, self.l2 = uu[near], ud[near], disc[near], pair_l2[near]
         self.still = still[self.seg]
         self.az = a[self.seg, 2].astype(np.float32)

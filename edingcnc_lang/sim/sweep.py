@@ -174,7 +174,8 @@ def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: l
     for part, near in zip(parts, reach):
         picked = chosen[near[chosen]]
         a, b = segs.a[picked], segs.b[picked]
-        g = Geometry(stock, a, b, footprint(stock, a, b, part.radius), part.radius)
+        floor = tool.profile if part.code == NONE else (lambda d, above=np.float32(part.offset): np.full_like(d, above))
+        g = Geometry(stock, a, b, footprint(stock, a, b, part.radius), part.radius, floor)
         seg, cell = picked[g.seg], g.cell
         h = g.az + g.downhill() * g.dz if part.flat else lowest(tool, g)
         cells.append(cell)
