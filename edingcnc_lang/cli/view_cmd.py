@@ -64,6 +64,8 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     lines and the machine position. Prints the file written."""
     from ..plot.commands import view_job
 
+    if stock_box is not None and lines is not None:
+        raise click.UsageError("--stock shows the whole job being cut: it does not go with --lines")
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,

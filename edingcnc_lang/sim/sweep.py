@@ -11,6 +11,7 @@ worked out exactly in program order only for the pairs that may be a finding.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -134,6 +135,16 @@ class Part:
     code: int          # NONE for the cutter (each segment has its own code), else SHANK or HOLDER
     flat: bool
 
+    def floor(self, tool: Tool) -> Callable[[np.ndarray], np.ndarray]:
+        """Height of this part's lowest surface above the tip at a distance from the axis."""
+        if self.code == NONE:
+            return tool.profile  # type: ignore[no-any-return]
+        above = np.float32(self.offset)
+
+        def flat(d: np.ndarray) -> np.ndarray:
+            return np.full_like(d, above)
+        return flat
+
 
 def parts_of(tool: Tool) -> list[Part]:
     """The cutter, and the shank and holder when their place is known."""
@@ -156,7 +167,8 @@ def sweep(stock: Stock, tool: Tool, segs: Segments, plunge_limit: float, ceiling
     low = np.minimum(a[:, 2], b[:, 2])
     parts = parts_of(tool)
     reach = [low + part.offset < ceiling for part in parts]
-    counts = sum(np.where(near, pair_counts(stock, a, b, part.radius), 0) for part, near in zip(parts, reach))
+    counts = np.sum([np.where(near, pair_counts(stock, a, b, part.radius), 0) for part, near in zip(parts, reach)],
+                    axis=0)
     busy = np.flatnonzero(counts)
     if not len(busy):
         return Hits.empty()
@@ -174,8 +186,7 @@ def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: l
     for part, near in zip(parts, reach):
         picked = chosen[near[chosen]]
         a, b = segs.a[picked], segs.b[picked]
-        floor = tool.profile if part.code == NONE else (lambda d, above=np.float32(part.offset): np.full_like(d, above))
-        g = Geometry(stock, a, b, footprint(stock, a, b, part.radius), part.radius, floor)
+        g = Geometry(stock, a, b, footprint(stock, a, b, part.radius), part.radius, part.floor(tool))
         seg, cell = picked[g.seg], g.cell
         h = g.az + g.downhill() * g.dz if part.flat else lowest(tool, g)
         cells.append(cell)
