@@ -30,7 +30,7 @@ class Geometry:
     than gathered; pairs out of reach, or whose cell is already lower than the part of the tool
     (``floor(d)`` above the tip at distance d) can come, are dropped before the costlier half.
     Per pair everything is float32 (half the memory traffic, twice the numbers per instruction):
-    the offsets are from the segment's start, and heights are kept in float32 anyway."""
+    the offsets are from the segment's midpoint, and heights are kept in float32 anyway."""
 
     def __init__(self, stock: Stock, a: np.ndarray, b: np.ndarray,
                  box: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray], radius: float,
@@ -40,36 +40,35 @@ class Geometry:
         dx, dy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
         l2 = dx * dx + dy * dy
         still = l2 < STILL
-        # offsets from the segment's start in float32: small numbers, so a µm is still a µm
-        base_x = (stock.x0 + (i0 + 0.5) * r - a[:, 0]).astype(np.float32)
-        base_y = (stock.y0 + (j0 + 0.5) * r - a[:, 1]).astype(np.float32)
+        half_x, half_y = dx / 2.0, dy / 2.0
+        # offsets from the segment's midpoint in float32: small numbers, so a µm is still a µm
         step = np.float32(r)
-        ux = np.repeat(base_x, counts) + i * step
-        uy = np.repeat(base_y, counts) + j * step
-        pair_dx, pair_dy = np.repeat(dx.astype(np.float32), counts), np.repeat(dy.astype(np.float32), counts)
-        pair_l2 = np.repeat(np.where(still, 0.0, l2).astype(np.float32), counts)
-        uu = ux * ux + uy * uy
-        ud = ux * pair_dx + uy * pair_dy
-        r2 = np.float32(radius * radius)
-        disc = ud * ud - pair_l2 * (uu - r2)
-        # a cell already at or below the lowest the tool can reach over it (its lowest tip plus the
-        # profile at the nearest the segment comes) cannot be cut: most cells a finishing pass
-        # passes again, left behind by the previous pass or row
-        cells = np.repeat(j0 * nx + i0, counts) + j.astype(np.int64) * nx + i
-        mx, my = ux - pair_dx * np.float32(0.5), uy - pair_dy * np.float32(0.5)
-        nearest = np.maximum(np.sqrt(mx * mx + my * my) - np.sqrt(pair_l2) * np.float32(0.5), np.float32(0.0))
+        mx = np.repeat((stock.x0 + (i0 + 0.5) * r - a[:, 0] - half_x).astype(np.float32), counts) + i * step
+        my = np.repeat((stock.y0 + (j0 + 0.5) * r - a[:, 1] - half_y).astype(np.float32), counts) + j * step
+        # the nearest the segment comes to the cell is at least its distance from the midpoint less
+        # half the length; a cell already at or below the lowest the tool can reach over it (the
+        # lowest tip plus the profile there) cannot be cut: most cells a finishing pass passes
+        # again, left behind by the previous pass or row
+        nearest = np.sqrt(mx * mx + my * my) - np.repeat(np.sqrt(np.where(still, 0.0, l2) / 4.0).astype(np.float32), counts)
         lowest_tip = np.repeat(np.minimum(a[:, 2], b[:, 2]).astype(np.float32), counts)
-        bound = lowest_tip + floor(np.minimum(nearest, np.float32(radius))) - np.float32(ROUNDING)
-        cuttable = stock.top.reshape(-1)[cells] > bound
-        near = np.flatnonzero((disc >= 0) & ((uu <= r2) | (pair_l2 > 0)) & cuttable)
+        bound = lowest_tip + floor(np.clip(nearest, np.float32(0.0), np.float32(radius))) - np.float32(ROUNDING)
+        cells = np.repeat(j0 * nx + i0, counts) + j.astype(np.int64) * nx + i
+        near = np.flatnonzero((nearest <= np.float32(radius)) & (stock.top.reshape(-1)[cells] > bound))
         self.seg = np.repeat(np.arange(len(a)), counts)[near]
         self.cell = cells[near]
-        uu, ud, disc, self.l2 = uu[near], ud[near], disc[near], pair_l2[near]
+        pair_dx, pair_dy = dx.astype(np.float32)[self.seg], dy.astype(np.float32)[self.seg]
+        ux = mx[near] + pair_dx * np.float32(0.5)
+        uy = my[near] + pair_dy * np.float32(0.5)
+        self.l2 = np.where(still, 0.0, l2).astype(np.float32)[self.seg]
+        uu = ux * ux + uy * uy
+        ud = ux * pair_dx + uy * pair_dy
+        disc = ud * ud - self.l2 * (uu - np.float32(radius * radius))  # < 0: the disc misses the cell (NaN below)
         self.still = still[self.seg]
         self.az = a[self.seg, 2].astype(np.float32)
         self.dz = (b[:, 2] - a[:, 2]).astype(np.float32)[self.seg]
         inv = np.float32(1.0) / np.where(self.still, np.float32(1.0), self.l2)
-        root = np.sqrt(disc)
+        with np.errstate(invalid="ignore"):
+            root = np.sqrt(disc)
         self.lo = np.where(self.still, np.float32(0.0), np.maximum((ud - root) * inv, np.float32(0.0)))
         self.hi = np.where(self.still, np.float32(1.0), np.minimum((ud + root) * inv, np.float32(1.0)))
         self.uu, self.ud = uu, ud
