@@ -68,7 +68,7 @@ def main() -> None:
               f"{walls['ecnc sim'] / walls['ecnc run']:.1f}x in wall time (bound: 20x)")
     cells = round(1000 / 0.25) ** 2
     print(f"1 m x 1 m at 0.25 mm: {cells:,} cells, {cells * 4 / 2**20:.0f} MiB of heights "
-          f"(float32; twice that with the initial copy kept for the volumes)")
+          f"(float32; a stock read from STL keeps a second copy for the volumes)")
 
 
 if __name__ == "__main__":

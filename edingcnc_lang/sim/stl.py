@@ -1,12 +1,14 @@
 """STL in and out: the cut stock as a closed mesh, and a mesh's top surface as a height field.
 
 Written as binary STL with numpy (two triangles per cell on the top, the four walls and a fanned
-bottom, so the mesh is closed); 50 bytes a triangle, so about 100 bytes per cell.  Read: binary or
+bottom, so the mesh is closed), a band of rows at a time; 50 bytes a triangle, so about 100 bytes
+per cell on disk (1.6 GB for a 1 m x 1 m table at 0.25 mm: mesh a coarser --resolution).  Read: binary or
 ASCII; only the surface seen from above is kept (a height field holds no undercuts).
 """
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -56,7 +58,7 @@ def stock_from_stl(path: str | Path, resolution: float) -> Stock:
     lower, upper = triangles.reshape(-1, 3).min(axis=0), triangles.reshape(-1, 3).max(axis=0)
     nx, ny = grid_size(tuple(lower), tuple(upper), resolution)  # type: ignore[arg-type]
     empty = np.full((ny, nx), lower[2], dtype=np.float32)
-    stock = Stock(float(lower[0]), float(lower[1]), resolution, float(lower[2]), float(upper[2]), empty, empty)
+    stock = Stock(float(lower[0]), float(lower[1]), resolution, float(lower[2]), float(upper[2]), empty)
     top, covered = raster_top(stock, triangles)
     stock.top = np.where(covered, np.maximum(top, stock.bottom), stock.bottom).astype(np.float32)
     stock.initial = stock.top.copy()
@@ -91,39 +93,54 @@ def raster_top(stock: Stock, triangles: np.ndarray) -> tuple[np.ndarray, np.ndar
     return top.reshape(ny, nx), covered.reshape(ny, nx)
 
 
-def stock_mesh(stock: Stock) -> np.ndarray:
-    """The cut stock as closed triangles (N, 3, 3): the top through the cell centres (the outer row
-    moved out to the box's edge), four walls down to the bottom, a bottom fanned from its centre."""
+def stock_mesh(stock: Stock, band: int = 256) -> Iterator[np.ndarray]:
+    """The cut stock as closed triangles, (N, 3, 3) float32 arrays a band of rows at a time (so a
+    large field is never a mesh in memory at once): the top through the cell centres (the outer
+    row moved out to the box's edge), four walls down to the bottom, a bottom fanned from its centre."""
     ny, nx = stock.shape
     if nx < 2 or ny < 2:
         raise EcncError("the stock needs at least 2 x 2 cells for a mesh: use a finer --resolution")
     x0, y0, _z0, x1, y1, _z1 = stock.box_bounds
     xs, ys = stock.xs(), stock.ys()
     xs[0], xs[-1], ys[0], ys[-1] = x0, x1, y0, y1
-    gx, gy = np.meshgrid(xs, ys)
-    top = np.stack((gx, gy, stock.top.astype(np.float64)), axis=-1)          # (ny, nx, 3)
-    a, b, c, d = top[:-1, :-1], top[:-1, 1:], top[1:, 1:], top[1:, :-1]
-    faces = [np.stack((a, b, c), axis=-2).reshape(-1, 3, 3), np.stack((a, c, d), axis=-2).reshape(-1, 3, 3)]
-    ring = np.concatenate((top[0, :], top[1:, -1], top[-1, -2::-1], top[-2:0:-1, 0]))  # counter-clockwise
+
+    def rows(first: int, last: int) -> np.ndarray:
+        gx, gy = np.meshgrid(xs, ys[first:last])
+        return np.stack((gx, gy, stock.top[first:last]), axis=-1).astype(np.float32)  # (rows, nx, 3)
+
+    for first in range(0, ny - 1, band):
+        top = rows(first, min(first + band + 1, ny))
+        a, b, c, d = top[:-1, :-1], top[:-1, 1:], top[1:, 1:], top[1:, :-1]
+        yield np.concatenate((np.stack((a, b, c), axis=-2).reshape(-1, 3, 3),
+                              np.stack((a, c, d), axis=-2).reshape(-1, 3, 3)))
+    front, back = rows(0, 1)[0], rows(ny - 1, ny)[0]
+    left = np.stack((np.full(ny, x0), ys, stock.top[:, 0]), axis=-1).astype(np.float32)
+    right = np.stack((np.full(ny, x1), ys, stock.top[:, -1]), axis=-1).astype(np.float32)
+    ring = np.concatenate((front, right[1:], back[-2::-1], left[-2:0:-1]))  # counter-clockwise from above
     ring = np.vstack((ring, ring[:1]))
     floor = ring.copy()
     floor[:, 2] = stock.bottom
     upper, lower = ring[:-1], ring[1:]
-    faces.append(np.stack((upper, floor[:-1], floor[1:]), axis=1))
-    faces.append(np.stack((upper, floor[1:], lower), axis=1))
-    centre = np.array([(x0 + x1) / 2.0, (y0 + y1) / 2.0, stock.bottom])
-    faces.append(np.stack((np.broadcast_to(centre, floor[:-1].shape), floor[1:], floor[:-1]), axis=1))
-    return np.concatenate(faces)
+    centre = np.array([(x0 + x1) / 2.0, (y0 + y1) / 2.0, stock.bottom], dtype=np.float32)
+    yield np.concatenate((np.stack((upper, floor[:-1], floor[1:]), axis=1),
+                          np.stack((upper, floor[1:], lower), axis=1),
+                          np.stack((np.broadcast_to(centre, floor[:-1].shape), floor[1:], floor[:-1]), axis=1)))
 
 
-def write_stl(path: str | Path, triangles: np.ndarray, name: str = "ecnc sim") -> None:
-    """Binary STL of (N, 3, 3) triangles, normals from the vertex order (counter-clockwise outward)."""
-    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
-    length = np.linalg.norm(normal, axis=1, keepdims=True)
-    records = np.zeros(len(triangles), dtype=TRIANGLE)
-    records["normal"] = np.divide(normal, length, out=np.zeros_like(normal), where=length > 0)
-    records["vertices"] = triangles
+def write_stl(path: str | Path, chunks: Iterable[np.ndarray], name: str = "ecnc sim") -> None:
+    """Binary STL of (N, 3, 3) triangle arrays, written as they come; normals from the vertex
+    order (counter-clockwise seen from outside)."""
+    count = 0
     with open(path, "wb") as handle:
         handle.write(name.encode("ascii", "replace")[:80].ljust(80, b" "))
-        handle.write(np.uint32(len(records)).tobytes())
-        handle.write(records.tobytes())
+        handle.write(b"\0\0\0\0")  # the count, once known
+        for triangles in chunks:
+            normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+            length = np.linalg.norm(normal, axis=1, keepdims=True)
+            records = np.zeros(len(triangles), dtype=TRIANGLE)
+            records["normal"] = np.divide(normal, length, out=np.zeros_like(normal), where=length > 0)
+            records["vertices"] = triangles
+            handle.write(records.tobytes())
+            count += len(records)
+        handle.seek(80)
+        handle.write(np.uint32(count).tobytes())

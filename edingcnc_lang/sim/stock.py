@@ -4,7 +4,8 @@ Cell (j, i) is the square of side ``resolution`` whose centre is ``x0 + (i + 0.5
 ``y0 + (j + 0.5) r``; its material stands from ``bottom`` up to ``top[j, i]`` (a cell with no
 material left has ``top == bottom``).  Coordinates are the job's work coordinates (the first work
 offset).  One float32 per cell: 4 bytes, so a 1 m x 1 m table at 0.25 mm is 16 million cells and
-64 MB (the sweep's scratch arrays are bounded per batch, not per table).  What a height field
+64 MB (61 MiB; the sweep's scratch arrays are bounded per chunk, not per table; a stock read from
+STL keeps a second copy, its uncut top, for the volumes).  What a height field
 cannot hold (undercuts, material under an overhang) is not modelled.
 """
 from __future__ import annotations
@@ -28,15 +29,16 @@ class StockError(EcncError):
 
 @dataclass
 class Stock:
-    """The height field; ``initial`` is the top before cutting (for volumes and pictures)."""
+    """The height field; ``initial`` is the top before cutting (for the volumes), None for a box
+    (whose top is ``height`` everywhere: no second copy of a large field)."""
 
     x0: float
     y0: float
     resolution: float
     bottom: float
     height: float          # the box's top (the highest point of a non-box stock)
-    top: np.ndarray        # (ny, nx) float32
-    initial: np.ndarray    # (ny, nx) float32
+    top: np.ndarray                 # (ny, nx) float32
+    initial: np.ndarray | None = None  # (ny, nx) float32
 
     @classmethod
     def box(cls, lower: tuple[float, float, float], upper: tuple[float, float, float],
@@ -44,7 +46,7 @@ class Stock:
         """A block from ``lower`` to ``upper`` (XYZ), cut into cells of ``resolution`` mm."""
         nx, ny = grid_size(lower, upper, resolution)
         top = np.full((ny, nx), upper[2], dtype=np.float32)
-        return cls(lower[0], lower[1], resolution, lower[2], upper[2], top, top.copy())
+        return cls(lower[0], lower[1], resolution, lower[2], upper[2], top)
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -64,11 +66,19 @@ class Stock:
         return self.y0 + (np.arange(self.shape[0]) + 0.5) * self.resolution
 
     def cell_volume(self, top: np.ndarray) -> float:
-        """mm³ of material under ``top`` (down to the bottom), in float64."""
-        return float(np.sum(np.maximum(top.astype(np.float64) - self.bottom, 0.0))) * self.resolution ** 2
+        """mm³ of material under ``top`` (down to the bottom), summed in float64 a band of rows at a
+        time, so a large field needs no float64 copy of itself."""
+        bottom = np.float32(self.bottom)
+        total = 0.0
+        for rows in np.array_split(top, max(1, top.shape[0] // 256)):
+            total += float(np.sum(np.maximum(rows - bottom, np.float32(0.0)), dtype=np.float64))
+        return total * self.resolution ** 2
 
     @property
     def initial_volume(self) -> float:
+        if self.initial is None:
+            ny, nx = self.shape
+            return nx * ny * (self.height - self.bottom) * self.resolution ** 2
         return self.cell_volume(self.initial)
 
     @property

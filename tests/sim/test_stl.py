@@ -24,9 +24,10 @@ def pocket() -> Stock:
     return stock
 
 
-def test_the_mesh_is_closed_faces_out_and_holds_the_stock(tmp_path):
+@pytest.mark.parametrize("band", [256, 3])  # written whole, or a few rows at a time
+def test_the_mesh_is_closed_faces_out_and_holds_the_stock(tmp_path, band):
     stock = pocket()
-    write_stl(tmp_path / "part.stl", stock_mesh(stock))
+    write_stl(tmp_path / "part.stl", stock_mesh(stock, band))
     triangles = read_stl(tmp_path / "part.stl")
     edges: Counter[tuple[tuple[float, ...], tuple[float, ...]]] = Counter()
     for tri in triangles.round(6):
