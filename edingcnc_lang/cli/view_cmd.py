@@ -66,6 +66,13 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
 
     if stock_box is not None and lines is not None:
         raise click.UsageError("--stock shows the whole job being cut: it does not go with --lines")
+    if tools_file and stock_box is None:
+        raise click.UsageError("--tools gives the tools their shapes for --stock: give the stock too")
+    tools = None
+    if tools_file:  # a bad file is told before the job runs
+        from ..sim.tools import load_tools
+
+        tools = load_tools(tools_file)
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
@@ -73,11 +80,9 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
         if stock_box is not None:
             from ..sim.frames import add_to_page, stock_frames
             from ..sim.stock import Stock
-            from ..sim.tools import load_tools
 
             stock = Stock.box(stock_box[:3], stock_box[3:], STOCK_RESOLUTION)  # type: ignore[arg-type]
             quiet = machine.run_options(show_messages=False)
-            tools = load_tools(tools_file) if tools_file else None
             add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, None, name))
     return report(written)
 

@@ -46,3 +46,13 @@ def test_a_browser_draws_the_stock(tmp_path):
     image = imread(shot)[100:700, 50:900, :3]
     yellow = np.all(np.abs(image - np.array([253, 231, 37]) / 255 * 0.9) < 0.25, axis=-1)
     assert yellow.mean() > 0.02, "the stock's top is not on the picture"
+
+
+@pytest.mark.parametrize("args, message", [
+    (("--stock", "0,0,-20,100,60,0", "--lines", "20:40"), "does not go with --lines"),
+    (("--tools", "examples/pocket-tools.toml"), "give the stock too"),
+])
+def test_view_stock_usage_errors(tmp_path, args, message):
+    result = invoke("view", ROOT / "examples/pocket.nc", "-o", tmp_path / "p.html",
+                    *[str(ROOT / a) if a.endswith(".toml") else a for a in args])
+    assert result.exit_code == 2 and message in result.stderr
