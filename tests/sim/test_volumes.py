@@ -78,3 +78,18 @@ def test_helix_down_ends_at_its_depth(tmp_path):
 def test_nothing_is_cut_above_the_stock_or_off_its_side(tmp_path):
     result = cut(tmp_path, "G0 Z5\nG0 X10 Y10\nG1 X30 Y20 Z0.5 F300\nG0 X-10\nG1 Z-3\nG1 Y-5", Tool(0, "flat", 6.0))
     assert result.stock.removed_volume == 0.0
+
+
+def test_arcs_in_the_xz_plane_dip_where_the_circle_does(tmp_path):
+    # a half circle of radius 10 in XZ from X10 to X30 about X20 Z0: one direction goes down through
+    # Z-10 under X20, the other up through Z10 (cutting nothing)
+    cuts = []
+    for code in ("G2", "G3"):
+        body = f"G0 X10 Y15 Z5\nG1 Z0 F300\nG18 {code} X30 Z0 I10 K0\nG17\nG0 Z50"
+        stock = cut(tmp_path, body, Tool(0, "ball", 2.0), box=(0, 0, -20, 40, 30, 0)).stock
+        cuts.append((stock.removed_volume, float(stock.top[round(15 / R), round(20 / R)])))
+    (low_volume, low_z), (high_volume, high_z) = sorted(cuts, key=lambda c: c[1])
+    # the ball's tip at the bottom of the circle, up to the chords' quarter cell (and the cell's
+    # centre 0.05 mm off the axis: 0.0013 mm up the ball)
+    assert low_z == pytest.approx(-10.0, abs=R / 4 + 0.002)
+    assert high_volume == 0.0 and high_z == 0.0
