@@ -22,8 +22,8 @@ KINDS = {
 
 @dataclass(frozen=True)
 class Finding:
-    """One finding; ``position`` is the tool tip (X, Y, Z) at the lower end of the piece of the move
-    that went deepest; ``depth`` how far into the material (or below the bottom) it went."""
+    """One finding; ``position`` is the tool tip (X, Y, Z) where the move went deepest (the first
+    such place along it); ``depth`` how far into the material (or below the bottom) it went."""
 
     kind: str
     file: str

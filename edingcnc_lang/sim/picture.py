@@ -13,6 +13,7 @@ from .findings import Finding
 from .stock import Stock
 
 DPI = 120
+MAX_LABELS = 40    # findings labelled with their line number; more would be a smudge
 MAX_PIXELS = 1600   # cells drawn across the longer side; a finer field is shown every n-th cell
 MARKERS = {"rapid_into_stock": ("X", "#d62728"), "shank": ("s", "#ff7f0e"), "holder": ("D", "#8c564b"),
            "spindle_off": ("o", "#9467bd"), "plunge": ("v", "#1f77b4"), "outside_stock": ("^", "#7f7f7f")}
@@ -59,13 +60,22 @@ def _cmap():  # type: ignore[no-untyped-def]
 
 
 def _mark(ax, findings: list[Finding]) -> None:  # type: ignore[no-untyped-def]
-    """One marker per finding at its deepest point, one legend entry per kind (with the count)."""
+    """One marker per finding where the tool was, labelled with its line; one legend entry per kind."""
     for kind, (marker, colour) in MARKERS.items():
         points = [f.position for f in findings if f.kind == kind]
         if points:
             xs, ys = zip(*[(p[0], p[1]) for p in points])
             ax.scatter(xs, ys, marker=marker, s=60, c=colour, edgecolors="white", linewidths=0.8,
                        label=f"{kind} ({len(points)})", zorder=3)
+    if len(findings) <= MAX_LABELS:  # each place names its lines, while that stays readable
+        places: dict[tuple[float, float], list[str]] = {}
+        for f in findings:
+            lines = places.setdefault((round(f.position[0], 1), round(f.position[1], 1)), [])
+            if str(f.line) not in lines:
+                lines.append(str(f.line))
+        for (x, y), lines in places.items():
+            ax.annotate(", ".join(lines), (x, y), xytext=(5, 5), textcoords="offset points", fontsize=7,
+                        color="#111111", zorder=4)
     if findings:
         ax.legend(loc="upper right", fontsize=7, framealpha=0.85)
 

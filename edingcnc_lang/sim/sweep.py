@@ -48,7 +48,7 @@ class Segments:
 @dataclass
 class Hits:
     """Moves that removed material they should not have: move, code, depth, and where the tool tip
-    was (x, y, z: the lower end of the segment that went deepest)."""
+    was (x, y, z) when it went deepest."""
 
     move: np.ndarray
     code: np.ndarray
@@ -195,20 +195,31 @@ def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: l
         owners.append(seg)
         codes.append(segs.code[seg] if part.code == NONE else np.full(len(seg), part.code, np.int8))
     cell, h = np.concatenate(cells), np.maximum(np.concatenate(heights), stock.bottom)
-    move = np.concatenate(moves)
-    pair, depth = _hits(stock, cell, h, move, np.concatenate(codes), plunge_limit)
-    seg = np.concatenate(owners)[pair]  # where the tool was: the tip at the lower end of the deepest segment
-    hits = Hits(move[pair], np.concatenate(codes)[pair], depth,
-                np.where((segs.a[seg, 2] <= segs.b[seg, 2])[:, None], segs.a[seg], segs.b[seg]))
+    move, owner = np.concatenate(moves), np.concatenate(owners)
+    pair, depth = _hits(stock, cell, h, move, np.concatenate(codes), owner, plunge_limit)
+    hits = Hits(move[pair], np.concatenate(codes)[pair], depth, _tool_at(stock, segs, owner[pair], cell[pair]))
     np.minimum.at(stock.top.reshape(-1), cell, h.astype(np.float32))
     return hits
 
 
-def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code: np.ndarray,
+def _tool_at(stock: Stock, segs: Segments, seg: np.ndarray, cell: np.ndarray) -> np.ndarray:
+    """Where the tool tip was when it reached each cell: the point of its segment nearest the cell
+    in XY (the lower end of a vertical segment)."""
+    nx, r = stock.shape[1], stock.resolution
+    a, b = segs.a[seg], segs.b[seg]
+    d = b - a
+    c = np.column_stack((stock.x0 + (cell % nx + 0.5) * r - a[:, 0], stock.y0 + (cell // nx + 0.5) * r - a[:, 1]))
+    l2 = d[:, 0] ** 2 + d[:, 1] ** 2
+    along = np.where(l2 > 0, (c[:, 0] * d[:, 0] + c[:, 1] * d[:, 1]) / np.where(l2 > 0, l2, 1.0),
+                     (d[:, 2] < 0).astype(float))
+    return a + np.clip(along, 0.0, 1.0)[:, None] * d  # type: ignore[no-any-return]
+
+
+def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code: np.ndarray, seg: np.ndarray,
           plunge_limit: float) -> tuple[np.ndarray, np.ndarray]:
     """The deepest pair per (move, code) among pairs that removed material they should not have,
-    each measured from the height the cell had just before that move (not before the chunk):
-    the index of each such pair and its depth."""
+    each measured from the height the cell had just before that move (not before the chunk), the
+    earliest along the move among those as deep (to the µm): the index of each and its depth."""
     top = stock.top.reshape(-1)
     candidate = (code != NONE) & (h < top[cell] - EPS)
     if not candidate.any():
@@ -220,7 +231,7 @@ def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code:
     if not real.any():
         return np.zeros(0, np.int64), np.zeros(0)
     c_move, c_code, c_pair, depth = (v[real] for v in (c_move, c_code, c_pair, depth))
-    order = np.lexsort((-depth, c_code, c_move))
+    order = np.lexsort((seg[c_pair], -np.round(depth / EPS), c_code, c_move))
     first = order[np.r_[True, (np.diff(c_move[order]) != 0) | (np.diff(c_code[order]) != 0)]]
     return c_pair[first], depth[first]
 
