@@ -33,6 +33,7 @@ COMMANDS = {
     "parse": "parse_cmd:parse",
     "plot": "plot_cmd:plot",
     "run": "run_cmd:run",
+    "sim": "sim_cmd:sim",
     "test": "test_cmd:test",
     "view": "view_cmd:view",
 }

@@ -13,11 +13,15 @@ from ..errors import EXIT_OK, JobAborted
 from ..plot.names import VIEW_NAMES
 from .base import Command
 from .options import MachineOptions, job_argument, machine_options, override_options
-from .params import OUTPUT_FILE, POSITIVE_INT
+from .params import EXISTING_FILE, OUTPUT_FILE, POSITIVE_INT
+from .sim_cmd import StockBox
 from .streams import job_to_read_twice
 
 if TYPE_CHECKING:
     from ..plot.commands import Written
+
+
+STOCK_RESOLUTION = 0.5  # mm: the page shows a coarse map anyway (sim/frames.py)
 
 
 class LineRange(click.ParamType):
@@ -48,17 +52,38 @@ class LineRange(click.ParamType):
               help="Moves in the page before long runs of feed moves are thinned (default 25000).")
 @click.option("--lines", metavar="A:B", type=LineRange(),
               help="Only the moves made by job lines A to B (with the subs they call), in full.")
+@click.option("--stock", "stock_box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
+              help="Show this stock (work coordinates) being cut as the player runs (see ecnc sim).")
+@click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
+              help="With --stock: tool shapes as TOML, as ecnc sim reads them.")
 def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
-         view: str, max_moves: int | None, lines: tuple[int, int] | None) -> int:
+         view: str, max_moves: int | None, lines: tuple[int, int] | None,
+         stock_box: tuple[float, ...] | None = None, tools_file: str | None = None) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
     from ..plot.commands import view_job
 
+    if stock_box is not None and lines is not None:
+        raise click.UsageError("--stock shows the whole job being cut: it does not go with --lines")
+    if tools_file and stock_box is None:
+        raise click.UsageError("--tools gives the tools their shapes for --stock: give the stock too")
+    tools = None
+    if tools_file:  # a bad file is told before the job runs
+        from ..sim.tools import load_tools
+
+        tools = load_tools(tools_file)
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
                            max_moves=max_moves, lines=lines, view=view, name=name)
+        if stock_box is not None:
+            from ..sim.frames import add_to_page, stock_frames
+            from ..sim.stock import Stock
+
+            stock = Stock.box(stock_box[:3], stock_box[3:], STOCK_RESOLUTION)  # type: ignore[arg-type]
+            quiet = machine.run_options(show_messages=False)
+            add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, None, name))
     return report(written)
 
 

@@ -234,6 +234,59 @@
     }
   }
 
+  // ---------------------------------------------------------------- the stock being cut (ecnc view --stock)
+  // Coarse height maps every so many moves (edingcnc_lang/sim/frames.py); the one for the move
+  // shown is drawn under the path, one shaded square per block, far ones first.
+  const stockBlock = document.getElementById("stock-data");
+  const S = stockBlock ? JSON.parse(stockBlock.textContent) : null;
+  const stockHeights = S ? decode(S.heights, Uint16Array) : null;
+  const STOCK_SHADES = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+  let stockOrder = null, stockKey = "";
+  function stockShade(level, light) {
+    const f = Math.min(0.9999, Math.max(0, level)) * (STOCK_SHADES.length - 1), k = Math.floor(f), t = f - k;
+    const c = STOCK_SHADES[k].map((v, n) => (v + (STOCK_SHADES[k + 1][n] - v) * t) * light);
+    return "rgb(" + c.map(Math.round).join(",") + ")";
+  }
+  function drawStock(w, h) {
+    if (!S) return;
+    const reached = current >= 0 ? index[current] + 1 : 0;  // moves done once the shown one ends
+    let frame = 0;
+    while (frame + 1 < S.moves.length && S.moves[frame + 1] <= reached) frame++;
+    const nx = S.nx, ny = S.ny, base = frame * nx * ny, span = S.top - S.bottom;
+    const sy = Math.sin(cam.yaw), cy = Math.cos(cam.yaw), sp = Math.sin(cam.pitch);
+    const key = cam.yaw + "," + cam.pitch;
+    if (key !== stockKey) {
+      const depth = new Float64Array(nx * ny);
+      for (let j = 0; j < ny; j++) for (let i = 0; i < nx; i++) depth[j * nx + i] = (i * sy + j * cy) * sp;
+      stockOrder = Array.from(depth.keys()).sort((a, b) => depth[a] - depth[b]);
+      stockKey = key;
+    }
+    // the walls that face the viewer: +X, -X, +Y, -Y sides of a column (normal . view > 0)
+    const walls = [[1, 0, sy * sp], [-1, 0, -sy * sp], [0, 1, cy * sp], [0, -1, -cy * sp]].filter((f) => f[2] > 1e-9);
+    const level = (i, j) => stockHeights[base + Math.min(ny - 1, Math.max(0, j)) * nx + Math.min(nx - 1, Math.max(0, i))] / 65535;
+    const polygon = (corners, colour) => {
+      ctx.beginPath();
+      corners.forEach(([x, y, z], n) => {
+        const [sx, sy2] = toScreen(...project(x, y, z), w, h);
+        if (n) ctx.lineTo(sx, sy2); else ctx.moveTo(sx, sy2);
+      });
+      ctx.fillStyle = colour;
+      ctx.fill();
+    };
+    for (const c of stockOrder) {
+      const i = c % nx, j = (c - i) / nx, q = level(i, j), z = S.bottom + q * span;
+      const gx = (level(i + 1, j) - level(i - 1, j)) * span / (2 * S.cell), gy = (level(i, j + 1) - level(i, j - 1)) * span / (2 * S.cell);
+      const light = 0.55 + 0.45 * Math.max(0, (-gx * 0.5 + gy * 0.5 + 1) / Math.sqrt(1.5 * (1 + gx * gx + gy * gy)));
+      const x0 = S.x0 + i * S.cell, y0 = S.y0 + j * S.cell, x1 = x0 + S.cell, y1 = y0 + S.cell;
+      for (const [fx, fy] of walls) {  // a column down to the bottom: nearer columns paint over it
+        const x = fx > 0 ? x1 : x0, y = fy > 0 ? y1 : y0;
+        const ends = fx ? [[x, y0], [x, y1]] : [[x0, y], [x1, y]];
+        polygon([[...ends[0], z], [...ends[1], z], [...ends[1], S.bottom], [...ends[0], S.bottom]], stockShade(q, fx ? 0.5 : 0.4));
+      }
+      polygon([[x0, y0, z], [x1, y0, z], [x1, y1, z], [x0, y1, z]], stockShade(q, light));
+    }
+  }
+
   let drawn = 0;
   function draw() {
     projectAll();
@@ -243,6 +296,7 @@
     ctx.font = "11px sans-serif";
     box(D.limits, "#b22222", [6, 3, 1, 3], w, h);
     box(D.part, "#777", [1, 2], w, h);
+    drawStock(w, h);
     drawn = 0;
     if (showFuture.checked) {
       ctx.beginPath();

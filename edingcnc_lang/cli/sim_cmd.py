@@ -1,0 +1,113 @@
+"""``ecnc sim JOB --stock ...``: cut a stock with the job and report collisions (docs/simulation.md)."""
+from __future__ import annotations
+
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+import click
+
+from ..errors import EXIT_FINDINGS, EXIT_OK, JobAborted
+from .base import Command, usage_error
+from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options
+from .params import EXISTING_FILE, OUTPUT_FILE
+from .streams import job_to_read_twice
+
+
+class StockBox(click.ParamType):
+    """``XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX``: six numbers, each minimum below its maximum."""
+
+    name = "XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, ...]:
+        if isinstance(value, tuple):
+            return value
+        try:
+            numbers = tuple(float(v) for v in str(value).split(","))
+        except ValueError:
+            numbers = ()
+        if len(numbers) != 6 or not all(math.isfinite(v) for v in numbers):
+            self.fail(f"{value!r} is not six numbers XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX (e.g. 0,0,-20,100,60,0)", param, ctx)
+        if any(numbers[i] >= numbers[i + 3] for i in range(3)):
+            self.fail(f"{value!r}: each minimum must be below its maximum (XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX)",
+                      param, ctx)
+        return numbers
+
+
+@click.command("sim", cls=Command, short_help="Cut a stock with JOB: the part, its volumes and every collision.")
+@job_or_stdin_argument
+@click.option("--stock", "box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
+              help="The stock as a box in the job's work coordinates (its first work offset).")
+@click.option("--stock-stl", metavar="FILE", type=EXISTING_FILE,
+              help="The stock as an STL mesh (work coordinates); its top surface is what is cut.")
+@click.option("--resolution", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.25,
+              show_default=True, help="Cell size of the height field.")
+@click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
+              help="Tool shapes as TOML, [tool.N] tables (default: the ini's diameters as flat end mills).")
+@click.option("--tool", "first_tool", metavar="N", type=click.IntRange(0),
+              help="The tool in the spindle when the job starts (default: the machine's current tool, #5008).")
+@machine_options
+@json_option("Print the stock's volumes and the collisions as JSON on stdout.")
+@click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
+              help="Picture of the cut stock with the findings marked: .png, .svg or .pdf.")
+@click.option("--stl", metavar="FILE", type=OUTPUT_FILE, help="Write the cut stock as a binary STL mesh.")
+@click.option("--compare-stl", metavar="FILE", type=EXISTING_FILE,
+              help="The intended part as STL: report (and draw) over- and under-cut against it.")
+def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resolution: float, tools_file: str | None,
+        first_tool: int | None, machine: MachineOptions, as_json: bool, output: str | None, stl: str | None,
+        compare_stl: str | None) -> int:
+    """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
+    stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
+    stock (hints), with the removed and remaining volumes."""
+    from ..outputs import ensure_parent
+    from ..plot.formats import picture_target
+    from ..sim import report
+    from ..sim.findings import failing
+    from ..sim.job import simulate
+    from ..sim.stock import Stock
+    from ..sim.stl import stock_from_stl
+    from ..sim.tools import load_tools
+
+    if (box is None) == (stock_stl is None):
+        raise usage_error("give the stock as exactly one of --stock XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX and --stock-stl FILE")
+    fmt = picture_target(Path(output)) if output else None  # told before the job runs
+    tools = load_tools(tools_file) if tools_file else None
+    if box is not None:
+        stock = Stock.box(box[:3], box[3:], resolution)  # type: ignore[arg-type]
+    else:
+        stock = stock_from_stl(str(stock_stl), resolution)
+    options = machine.run_options(show_messages=not as_json)
+    with job_to_read_twice(job) as (path, name):
+        result = simulate(path, stock, options, tools, first_tool, name=name)
+    deviation = None
+    if compare_stl:
+        from ..sim.compare import compare
+
+        deviation = compare(stock, compare_stl)
+    if output and fmt:
+        from ..sim.picture import draw_stock
+
+        count = len(result.findings)
+        title = (f"{name or job}: {stock.removed_volume:,.0f} mm³ removed, "
+                 f"{count} finding{'s' * (count != 1)}")
+        draw_stock(stock, ensure_parent(Path(output)), fmt, result.findings, title, deviation)
+    if stl:
+        from ..sim.stl import stock_mesh, write_stl
+
+        write_stl(ensure_parent(Path(stl)), stock_mesh(stock))
+    if as_json:
+        import json
+
+        print(json.dumps(report.to_json(result, deviation), indent=1))
+    else:
+        for line in report.summary(result, deviation):
+            print(line)
+        for written in (output, stl):
+            if written:
+                print(f"wrote {written}")
+    if result.error is not None:
+        if not isinstance(result.error, JobAborted):
+            print(result.error.format(), file=sys.stderr)
+        return result.error.exit_code
+    return EXIT_FINDINGS if failing(result.findings) else EXIT_OK

@@ -1,0 +1,15 @@
+"""Cutting a stock with a job: a height-field milling simulation (``ecnc sim``, docs/simulation.md).
+
+``simulate(job, Stock.box(...), options, load_tools(...))`` runs the job through the embedding API
+and sweeps every move's tool through the stock (``sweep.py``, ``envelope.py``); the result holds the
+cut stock, the findings (``findings.py``) and the volumes.  Pictures (``picture.py``), STL in and out
+(``stl.py``), the comparison with the intended part (``compare.py``) and the report (``report.py``)
+work on that result.
+"""
+from __future__ import annotations
+
+from .job import SimResult, simulate
+from .stock import Stock
+from .tools import Tool, load_tools
+
+__all__ = ["SimResult", "Stock", "Tool", "load_tools", "simulate"]

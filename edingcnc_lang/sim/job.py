@@ -1,0 +1,259 @@
+"""Run a job and cut its moves into the stock: the simulation as one call, ``simulate``.
+
+The moves come through the embedding API (``RunOptions(on_move=..., on_event=...)``, unplanned, so
+each arrives as the interpreter makes it); each is turned into the path of the tool's tip in the
+frame of the stock (the job's first work offset, less the tool length in force), arcs cut into
+chords no further than a quarter cell from the circle, and queued.  The queue is swept into the
+height field a batch at a time (``sweep.sweep``); a tool change sweeps it first.  The spindle's
+state comes from the ``spindle`` events (M3/M4 on, M5 off), the tool in the spindle from
+``tool_change`` events.
+"""
+from __future__ import annotations
+
+import math
+import time
+from array import array
+from dataclasses import dataclass, field, replace
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from .. import tables as t
+from ..canon import Event, Move, Pose
+from ..config import MachineConfig
+from ..errors import EcncError
+from ..kinematics.sampling import arc_points
+from ..kinematics.trajectory import geometry_of
+from ..runner import Run, RunOptions, RunResult
+from .findings import Finding, merged
+from .stock import Stock
+from .sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
+from .tools import Tool, ini_tool
+
+BATCH = 20_000          # segments swept at once
+PLUNGE_SHARE = 0.5      # a flat tool may plunge this many diameters into the material at once
+OUTSIDE = 99            # finding code of a move below the stock's bottom (found here, not in the sweep)
+CUTTING_KINDS = frozenset({"rapid", "linear", "arc", "home"})  # probe moves touch, they do not cut
+
+
+@dataclass
+class SimResult:
+    """The cut stock, the findings and what the run left; ``error`` when the job stopped early."""
+
+    stock: Stock
+    findings: list[Finding]
+    tools: dict[int, Tool]
+    notes: list[str]
+    seconds: float
+    moves: int
+    run: RunResult | None = None
+    error: EcncError | None = None
+    frame: tuple[float, float, float] = (0.0, 0.0, 0.0)  # machine coordinates of the stock's origin
+
+    @property
+    def shank_checked(self) -> bool:
+        return all(t.flute_length is not None for t in self.tools.values())
+
+
+@dataclass
+class _Queue:
+    """Segments waiting to be swept, as flat arrays of numbers."""
+
+    ends: array = field(default_factory=lambda: array("d"))   # ax ay az bx by bz per segment
+    moves: array = field(default_factory=lambda: array("q"))
+    codes: array = field(default_factory=lambda: array("b"))
+
+    def take(self) -> Segments:
+        pairs = np.frombuffer(self.ends, dtype=float).reshape(-1, 2, 3).copy()
+        segs = Segments(pairs[:, 0], pairs[:, 1], np.frombuffer(self.moves, dtype=np.int64).copy(),
+                        np.frombuffer(self.codes, dtype=np.int8).copy())
+        self.ends, self.moves, self.codes = array("d"), array("q"), array("b")
+        return segs
+
+
+class Simulator:
+    """The ``on_move``/``on_event`` callbacks of a simulated run; ``attach`` it to the ``Run``."""
+
+    def __init__(self, stock: Stock, config: MachineConfig, tools: dict[int, Tool] | None = None,
+                 first_tool: int = 0) -> None:
+        self.stock = stock
+        self.config = config
+        self.table = tools
+        self.ceiling = float(stock.top.max())
+        self.known: dict[int, tuple[Tool, str]] = {}  # tool number -> the tool and a note on where it came from
+        self.used: dict[int, Tool] = {}  # the tools that swept anything
+        self.tool = self._tool(first_tool)
+        self.spindle_on = False
+        self.queue = _Queue()
+        self.lines = array("i")
+        self.files = array("h")
+        self.paths: dict[str, int] = {}
+        self.hits: list[tuple[Hits, int]] = []
+        self.frame: tuple[float, float, float] | None = None
+        self.chord = stock.resolution / 4.0
+        self._offset = lambda: (0.0, 0.0, 0.0, 0.0)  # frame x, y, z and the tool length in force
+        self.every = 0  # with ``on_snapshot``: sweep and call it before every ``every``-th move
+        self.on_snapshot: Callable[[int, Stock], None] | None = None
+
+    def attach(self, run: Run) -> None:
+        """Read the work offset and the tool length from the run's interpreter as each move arrives."""
+        interp = run.interpreter
+
+        def offset() -> tuple[float, float, float, float]:
+            off = interp.offset()
+            return off[0], off[1], off[2] - interp.tool_z, interp.tool_z
+        self._offset = offset
+
+    def _tool(self, number: int) -> Tool:
+        if number not in self.known:
+            note = ""
+            if self.table is not None and number in self.table:
+                tool = self.table[number]
+            else:
+                tool = ini_tool(self.config, number)
+                if self.table is not None:
+                    note = (f"T{number} is not in the tools file: the ini's diameter ({tool.diameter:g} mm) "
+                            "as a flat end mill, flute length unknown")
+                if tool.source == "default":
+                    note = (f"T{number} has no diameter in the ini's tool table: simulated as a "
+                            f"{tool.diameter:g} mm flat end mill")
+            self.known[number] = (tool, note)
+        return self.known[number][0]
+
+    @property
+    def notes(self) -> list[str]:
+        """What the report should say about the tools that cut: those not described as asked."""
+        return [self.known[n][1] for n in sorted(self.used) if self.known[n][1]]
+
+    def on_event(self, event: Event) -> None:
+        if event.kind == "spindle":
+            self.spindle_on = event.data.get("m") in (3, 4)
+        elif event.kind == "tool_change":
+            self.flush()
+            self.tool = self._tool(int(event.data.get("tool", 0)))
+
+    def on_move(self, move: Move, _joints: Pose) -> None:
+        index = len(self.lines)
+        if self.on_snapshot is not None and index % self.every == 0:
+            self.flush()
+            self.on_snapshot(index, self.stock)
+        self.lines.append(move.line)
+        self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        if move.kind not in CUTTING_KINDS:
+            return
+        ox, oy, oz, length = self._offset()
+        if self.frame is None:
+            self.frame = (ox, oy, oz)
+        fx, fy, fz = self.frame
+        fz += length
+        start, end = move.start, move.end
+        if move.kind in ("rapid", "home"):
+            code = RAPID
+        elif not self.spindle_on:
+            code = SPINDLE_OFF
+        elif self.tool.shape == "flat" and end[2] < start[2] and start[0] == end[0] and start[1] == end[1]:
+            code = PLUNGE
+        else:
+            code = NONE
+        if move.arc is None:
+            self.queue.ends.extend((start[0] - fx, start[1] - fy, start[2] - fz, end[0] - fx, end[1] - fy, end[2] - fz))
+            self.queue.moves.append(index)
+            self.queue.codes.append(code)
+        else:
+            points = self._chords(move) - (fx, fy, fz)
+            count = len(points) - 1
+            self.queue.ends.extend(np.hstack((points[:-1], points[1:])).ravel().tolist())
+            self.queue.moves.extend([index] * count)
+            self.queue.codes.extend([code] * count)
+        if len(self.queue.moves) >= BATCH:
+            self.flush()
+
+    def _chords(self, move: Move) -> np.ndarray:
+        """The arc's points, chords at most a quarter cell from the circle (helices and every plane)."""
+        frame = geometry_of(move, self.config.full_circle_theta_epsilon).arc_frame()
+        radius = max(frame.r0, frame.r1, 1e-9)
+        step = 2.0 * math.acos(max(1.0 - self.chord / radius, -1.0))
+        count = max(2, math.ceil(abs(frame.sweep) / max(step, 1e-6)))
+        return arc_points(move.start, move.end, frame, np.linspace(0.0, 1.0, count + 1))[:, :3]
+
+    def flush(self) -> None:
+        """Sweep what is queued, with the tool in the spindle now."""
+        if not len(self.queue.moves):
+            return
+        segs = self.queue.take()
+        low = np.minimum(segs.a[:, 2], segs.b[:, 2])
+        if not (low < self.ceiling).any():  # all above the material: nothing to cut, nothing to hit
+            return
+        tool = self.used[self.tool.number] = self.tool
+        self.hits.append((sweep(self.stock, tool, segs, PLUNGE_SHARE * tool.diameter, self.ceiling), tool.number))
+        # a move that climbs out from below the bottom was told of when it went down there
+        below = np.flatnonzero((low < self.stock.bottom - EPS) & (segs.b[:, 2] <= segs.a[:, 2] + EPS))
+        if len(below):
+            deepest = np.where((segs.a[below, 2] <= segs.b[below, 2])[:, None], segs.a[below], segs.b[below])
+            self.hits.append((Hits(segs.move[below], np.full(len(below), OUTSIDE, np.int8),
+                                   self.stock.bottom - low[below], deepest), tool.number))
+
+    def findings(self) -> list[Finding]:
+        """Every hit as a finding, merged (see ``findings.merged``)."""
+        paths = list(self.paths)
+        found = []
+        for hits, tool in self.hits:
+            for move, code, depth, where in zip(hits.move.tolist(), hits.code.tolist(), hits.depth.tolist(),
+                                                hits.where.tolist()):
+                kind = "outside_stock" if code == OUTSIDE else CODE_KINDS[code]
+                found.append(Finding(kind, paths[self.files[move]], self.lines[move], tuple(where),  # type: ignore[arg-type]
+                                     depth, tool, move))
+        return merged(found)
+
+
+def simulate(job: str | Path, stock: Stock, options: RunOptions | None = None,
+             tools: dict[int, Tool] | None = None, first_tool: int | None = None,
+             name: str | None = None, every: int = 0,
+             on_snapshot: Callable[[int, Stock], None] | None = None) -> SimResult:
+    """Run ``job`` and cut the stock with it; a runtime error is kept in ``SimResult.error``.
+
+    ``tools`` (from ``tools.load_tools``) give the cutters their shapes; without them each tool is
+    the ini's diameter as a flat end mill with unknown flute length.  ``first_tool`` is the tool in
+    the spindle when the job starts (default: the machine's current tool, #5008).  Callbacks
+    already in ``options`` still receive every move and event.  ``on_snapshot(move, stock)`` is
+    called with the stock as cut before move 0, ``every``, 2 ``every``, ... (the viewer's frames).
+    """
+    started = time.perf_counter()
+    options = options or RunOptions()
+    outer_move, outer_event = options.on_move, options.on_event
+    holder: list[Simulator] = []
+
+    def on_move(move: Move, joints: Pose) -> None:
+        holder[0].on_move(move, joints)
+        if outer_move:
+            outer_move(move, joints)
+
+    def on_event(event: Event) -> None:
+        holder[0].on_event(event)
+        if outer_event:
+            outer_event(event)
+
+    run = Run(replace(options, on_move=on_move, on_event=on_event, plan=False))
+    if first_tool is None:
+        first_tool = int(run.interpreter.params.read(t.TOOL_CURRENT))
+    sim = Simulator(stock, run.config, tools, first_tool)
+    sim.attach(run)
+    if on_snapshot is not None:
+        sim.every, sim.on_snapshot = max(1, every), on_snapshot
+    holder.append(sim)
+    result: RunResult | None = None
+    error: EcncError | None = None
+    try:
+        result = run.execute_file(Path(job), name)
+    except EcncError as err:
+        if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration
+            raise
+        error = err
+    sim.flush()
+    notes = list(sim.notes)
+    if tools is None:
+        notes.append("no --tools file: each tool is the ini's diameter as a flat end mill with unknown "
+                     "flute length, so shank and holder collisions are not checked")
+    return SimResult(stock, sim.findings(), dict(sim.used), notes, time.perf_counter() - started,
+                     len(sim.lines), result, error, sim.frame or (0.0, 0.0, 0.0))

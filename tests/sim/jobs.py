@@ -1,0 +1,21 @@
+"""Small jobs and helpers shared by the simulation tests."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from edingcnc_lang.sim import Stock, Tool, simulate
+from edingcnc_lang.sim.job import SimResult
+
+
+def write_job(folder: Path, body: str, name: str = "job.nc") -> Path:
+    """A job with the usual preamble, CRLF line ends as the controller's files have them."""
+    path = folder / name
+    path.write_bytes(("G21 G90 G17\r\nS10000 M3\r\n" + body.strip().replace("\n", "\r\n") + "\r\nM30\r\n").encode())
+    return path
+
+
+def cut(folder: Path, body: str, tool: Tool, box: tuple[float, ...] = (0, 0, -10, 40, 30, 0),
+        resolution: float = 0.1) -> SimResult:
+    """Simulate ``body`` with ``tool`` (tool 0, in the spindle from the start) on a box stock."""
+    stock = Stock.box(box[:3], box[3:], resolution)  # type: ignore[arg-type]
+    return simulate(write_job(folder, body), stock, tools={0: tool}, first_tool=0)
