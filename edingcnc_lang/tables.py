@@ -98,6 +98,13 @@ def lathe_code_message(key: int) -> str:
             "a lathe's cnc.ini (--ini) sets [SYSTEM] machineType = 1")
 
 
+# Words a G code takes as its own parameters on its line, so no other step of the line sees them.
+# G64 (manual 3.6.16): P rounding tolerance, Q line-merge tolerance, R and S the look-ahead angles,
+# D the corner deviation, F the ramp filter; never the spindle speed or the feed.
+OWN_WORDS: Mapping[int, frozenset[str]] = MappingProxyType({code_key(64): frozenset("PQRSDF")})
+# Of these, the lengths (converted from inch under G20) and the angles in degrees.
+G64_LENGTHS = frozenset("PQD")
+
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
 

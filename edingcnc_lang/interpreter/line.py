@@ -105,6 +105,12 @@ class LineWords(MachineState):
     def _execute_line(self, words: dict[str, float], g: Mapping[str, int], m: Mapping[str, int],
                       span: n.Span) -> None:
         """One line's actions in the controller's order of execution (tables.ORDER_OF_EXECUTION)."""
+        own: dict[str, dict[str, float]] = {}  # a group whose code owns words of the line (G64 P Q R S D F)
+        for group, code in g.items():
+            letters = t.OWN_WORDS.get(code)
+            if letters is not None:
+                own[group] = {k: v for k, v in words.items() if k in letters}
+                words = {k: v for k, v in words.items() if k not in letters}
         sources = {"G": g, "M": m, "word": words}
         for handler, source, key in self._LINE_STEPS:
             if source == "always":
@@ -112,7 +118,7 @@ class LineWords(MachineState):
             else:
                 found = sources[source]
                 if key in found:
-                    handler(self, found[key], words, g, span)
+                    handler(self, found[key], own.get(key, words), g, span)
 
     def _feed_speed_tool(self, words: Mapping[str, float], span: n.Span) -> None:
         """The F, S and T steps alone (a line calling an M-code sub still sets them)."""

@@ -49,13 +49,23 @@ class LineSteps(MachineState):
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
-        """G61/G61.1/G64 [P tolerance]: the planner stops at every corner or blends within P (mm)."""
+        """G61/G61.1/G64: the planner stops at every corner or blends within P (mm).
+
+        ``words`` are G64's own (manual 3.6.16: P Q R S D F, never the speed or the feed); the
+        planner uses P, the others are recorded in the event (lengths in mm, angles in degrees).
+        """
         self.modal["path_control"] = code
         tolerance = words["P"] * self.scale if "P" in words else self.config.g64_p
         if tolerance < 0:
             raise self.fail("G64 P: the path tolerance must be 0 or more", span)
-        self.canon.event(Event("path_control", self.path, self.line,
-                               {"mode": t.code_name("G", code), "p": tolerance}))
+        data: dict[str, object] = {"mode": t.code_name("G", code), "p": tolerance}
+        for letter in "QRSDF":
+            if letter in words:
+                value = words[letter] * (self.scale if letter in t.G64_LENGTHS else 1.0)
+                if value < 0:
+                    raise self.fail(f"G64 {letter}{format_value(words[letter])}: must be 0 or more", span)
+                data[letter.lower()] = value
+        self.canon.event(Event("path_control", self.path, self.line, data))
 
     def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._io(code // 10, words, span)

@@ -61,7 +61,10 @@ G_ROWS: tuple[Row, ...] = (
     (59.3, "coordinate system 9", "", "Work offsets #5381..#5386."),
     (61, "exact path", "", "Path control: follow the programmed path exactly."),
     (61.1, "exact stop", "", "Path control: stop at the end of each move."),
-    (64, "continuous path", "P Q R S D F", "Path control: blend moves within the given tolerances."),
+    (64, "continuous path", "P Q R S D F",
+     "Path control: blend moves. P the rounding tolerance, Q the line-merge tolerance, R the look-ahead angle, "
+     "S the second angle and D the corner deviation (V4.03), F the ramp filter. On a G64 line these letters are "
+     "G64's: S is not a spindle speed and F not a feed (manual 3.6.16)."),
     (68, "rotate the XY plane", "X Y Z I J K R", "Rotates by R degrees counter-clockwise about the pivot X Y (Z), axis I J K."),
     (69, "rotation off", "", "Cancels G68."),
     (70, "inch units (alias of G20)", "", "As G20."),

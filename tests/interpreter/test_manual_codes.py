@@ -1,0 +1,54 @@
+"""G and M codes as the EdingCNC 4.03 manual defines them (issue 21); each test names its section."""
+from __future__ import annotations
+
+import pytest
+
+from edingcnc_lang.canon import Event, Move
+from edingcnc_lang.errors import MachineError
+from edingcnc_lang.runner import RunOptions, RunResult, run_string
+
+
+def run(text: str, moves: list[Move] | None = None, events: list[Event] | None = None,
+        **options: object) -> RunResult:
+    moves = moves if moves is not None else []
+    events = events if events is not None else []
+    return run_string(text, RunOptions(on_move=lambda m, j: moves.append(m), on_event=events.append,
+                                       **options))  # type: ignore[arg-type]
+
+
+def kinds(events: list[Event], kind: str) -> list[Event]:
+    return [e for e in events if e.kind == kind]
+
+
+# --------------------------------------------------------------------------- 3.6.16 G64
+
+def test_vectric_g64_header_does_not_set_the_spindle_speed() -> None:
+    """3.6.16: S on a G64 line is the second look-ahead angle, not a spindle speed."""
+    events: list[Event] = []
+    result = run("M3 S18000\nG64 P0.1 R6 S100 D0.002\nG1 X10 F500\n", events=events)
+    assert result.spindle["s"] == 18000.0
+    assert [e.line for e in kinds(events, "spindle_speed")] == [1]
+    control = kinds(events, "path_control")[-1].data
+    assert control == {"mode": "G64", "p": 0.1, "r": 6.0, "s": 100.0, "d": 0.002}
+
+
+def test_g64_f_is_the_ramp_filter_not_the_feed() -> None:
+    """3.6.16: G64 F.. is the acceleration filter behind look-ahead; the cut keeps its feed."""
+    moves: list[Move] = []
+    events: list[Event] = []
+    run("G1 X1 F1200\nG64 P0.1 F1\nG1 X10\n", moves, events)
+    assert moves[-1].feed == 1200.0
+    assert kinds(events, "path_control")[-1].data == {"mode": "G64", "p": 0.1, "f": 1.0}
+
+
+def test_g64_lengths_follow_the_units() -> None:
+    events: list[Event] = []
+    run("G20\nG64 P0.01 Q0.001 D0.0001 R3 S90\n", events=events)
+    data = kinds(events, "path_control")[-1].data
+    assert data["p"] == pytest.approx(0.254) and data["q"] == pytest.approx(0.0254)
+    assert data["d"] == pytest.approx(0.00254) and (data["r"], data["s"]) == (3.0, 90.0)
+
+
+def test_g64_negative_words_are_errors() -> None:
+    with pytest.raises(MachineError, match="G64 D-1: must be 0 or more"):
+        run("G64 D-1\n")
