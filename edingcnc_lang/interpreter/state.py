@@ -56,6 +56,7 @@ G_40 = G(40)
 G_41 = G(41)
 G_41_1 = G(41.1)
 G_42_1 = G(42.1)
+G_43 = G(43)
 G_43_1 = G(43.1)
 G_49 = G(49)
 G_51 = G(51)
@@ -189,6 +190,7 @@ class MachineState:
         self.selected_tool = 0
         self.tool_z = 0.0                  # active G43 length
         self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
+        self.length_follows_tool = False   # a plain G43 is in force: every M6 applies the new tool's length
         self.g92_active = False
         self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)

@@ -8,7 +8,7 @@ from .. import tables as t
 from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
-    G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    G_0, G_17, G_18, G_4, G_40, G_43, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
     SPINDLE_SELECT, format_value,
 )
 
@@ -35,8 +35,14 @@ class LineSteps(MachineState):
         self.selected_tool = int(value)
 
     def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """M6 (manual 3.7.3): the change (the change_tool sub, or the built-in), then the spindle is
+        stopped, and a plain G43 in force compensates the new tool (3.6.12: G43 H and G43.1 do not)."""
         self.refuse_with_comp("a tool change (M6)", span)
         self._tool_change(span)
+        if self.spindle != 5:
+            self._spindle_stop()  # type: ignore[attr-defined]  (spindle_modes.py)
+        if self.modal["length_offset"] == G_43 and self.length_follows_tool:
+            self._apply_length(G_43, {})
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self.coolant = set() if code == 90 else self.coolant | {code // 10}
@@ -162,6 +168,11 @@ class LineSteps(MachineState):
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
         self.refuse_with_comp(f"changing the tool length offset ({t.code_name('G', code)})", span)
+        self.length_follows_tool = code == G_43 and "H" not in words
+        self._apply_length(code, words, span)
+
+    def _apply_length(self, code: int, words: Mapping[str, float], span: n.Span | None = None) -> None:
+        """Set the length offset of G43 [H]/G43.1/G49 (a plain G43: the tool in the spindle, #5008)."""
         self.tool_x = 0.0
         if code == G_49:
             self.tool_z = 0.0

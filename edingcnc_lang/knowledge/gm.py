@@ -42,8 +42,11 @@ G_ROWS: tuple[Row, ...] = (
     (41.1, "cutter compensation left, given diameter", "D", "As G41 with the diameter in D."),
     (42, "cutter compensation right", "D", "Offsets the path to the right by the tool radius of tool D (the current tool without D)."),
     (42.1, "cutter compensation right, given diameter", "D", "As G42 with the diameter in D."),
-    (43, "tool length offset on", "H", "Applies the length of the tool in the spindle, or of tool H."),
-    (43.1, "dynamic tool length offset", "I K", "Applies the length offset given on the line."),
+    (43, "tool length offset on", "H",
+     "G43 alone compensates the tool in the spindle, and follows every M6; G43 H.. applies tool H's length "
+     "and stays after M6 (manual 3.6.12)."),
+    (43.1, "dynamic tool length offset", "I K",
+     "Applies the length offset K (lathe: X offset I) given on the line; stays after M6."),
     (49, "tool length offset off", "", "Cancels G43."),
     (50, "scaling off", "", "Cancels G51."),
     (51, "scaling on", "P X Y I J", "Scales X and Y: P one factor about the centre I J (default the work "
@@ -111,7 +114,8 @@ M_ROWS: tuple[Row, ...] = (
     (4, "spindle on, counter-clockwise", "S", "As M3, turning the other way."),
     (5, "spindle off", "", "Stops the spindle."),
     (6, "tool change", "T",
-     "Calls Sub change_tool with #5011 = the new tool; inside change_tool, M6 T.. commits the tool (#5008)."),
+     "Calls Sub change_tool with #5011 = the new tool; inside change_tool, M6 T.. commits the tool (#5008). "
+     "Afterwards the spindle is stopped (manual 3.7.3) and a plain G43 applies the new tool's length."),
     (7, "mist coolant on", "", ""),
     (8, "flood coolant on", "", ""),
     (9, "coolant off", "", "Mist and flood off."),

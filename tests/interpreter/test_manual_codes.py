@@ -1,11 +1,15 @@
 """G and M codes as the EdingCNC 4.03 manual defines them (issue 21); each test names its section."""
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from edingcnc_lang.canon import Event, Move
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.runner import RunOptions, RunResult, run_string
+
+EMPTY_MACRO = Path(__file__).parent / "data" / "empty_macro.cnc"
 
 
 def run(text: str, moves: list[Move] | None = None, events: list[Event] | None = None,
@@ -52,3 +56,45 @@ def test_g64_lengths_follow_the_units() -> None:
 def test_g64_negative_words_are_errors() -> None:
     with pytest.raises(MachineError, match="G64 D-1: must be 0 or more"):
         run("G64 D-1\n")
+
+
+# --------------------------------------------------------------------------- 3.6.12 G43, 3.7.3 M6
+
+TOOLS = "#5401 = 10\n#5402 = 25\n"
+
+
+def test_plain_g43_follows_every_tool_change() -> None:
+    """3.6.12 A: G43 always compensates the tool in the spindle, so it follows M6."""
+    moves: list[Move] = []
+    result = run(TOOLS + "T1 M6\nG43\nG0 Z0\nT2 M6\nG0 Z0\n", moves, macro=EMPTY_MACRO)
+    assert [m.end[2] for m in moves] == [10.0, 25.0]
+    assert result.variables[5013] == 25.0
+
+
+@pytest.mark.parametrize("g43", ["G43 H1", "G43.1 K10"])
+def test_g43_h_and_g43_1_stay_after_a_tool_change(g43: str) -> None:
+    """3.6.12 warning: with B (G43 H) or C (G43.1) the length is not adapted to the new tool after M6 T."""
+    moves: list[Move] = []
+    run(TOOLS + f"T1 M6\n{g43}\nG0 Z0\nT2 M6\nG0 Z0\n", moves, macro=EMPTY_MACRO)
+    assert [m.end[2] for m in moves] == [10.0, 10.0]
+
+
+def test_plain_g43_takes_the_length_the_change_tool_sub_measured() -> None:
+    moves: list[Move] = []
+    job = ("T1 M6\nG43\nG0 Z0\nT2 M6\nG0 Z0\nM30\n"
+           "Sub change_tool\n  #[5400 + #5011] = 40\n  M6 T[#5011]\nEndSub\n")
+    run(TOOLS + job, moves, macro=EMPTY_MACRO)
+    assert [m.end[2] for m in moves] == [40.0, 40.0]
+
+
+def test_m6_leaves_the_spindle_stopped() -> None:
+    """3.7.3: when the tool change is complete the spindle is stopped."""
+    events: list[Event] = []
+    result = run("M3 S1000\nT1 M6\n", events=events, macro=EMPTY_MACRO)
+    assert result.spindle["m"] == 5 and result.variables[5152] == 0.0
+    assert [(e.line, e.data["m"]) for e in kinds(events, "spindle")] == [(1, 3), (2, 5)]
+
+
+def test_m3_on_the_m6_line_starts_the_new_tool() -> None:
+    """Order of execution: M6 before M3, so `T1 M6 M3 S1000` turns the new tool."""
+    assert run("T1 M6 M3 S1000\n", macro=EMPTY_MACRO).spindle["m"] == 3
