@@ -74,7 +74,9 @@ G_ROWS: tuple[Row, ...] = (
     (71, "millimetre units (alias of G21)", "", "As G21."),
     (73, "high-speed peck drilling cycle", "X Y Z R Q L F",
      "Pecks of depth Q, retracting 0.254 mm between pecks. Z, R and Q stay in force for later lines."),
-    (74, "left-hand tapping cycle", "X Y Z R P L F", "Feeds in with the spindle as programmed (M4), reverses it at the bottom to feed out."),
+    (74, "left-hand tapping cycle", "X Y Z R L F",
+     "Rigid tapping: F is the pitch per spindle revolution (M4 S600 F1: 600 mm/min), synchronised; the spindle "
+     "reverses at the bottom to feed out to the clear level, then turns back. Needs the spindle turning."),
     (76, "threading cycle", "P Z I J K R Q H E L",
      "Multi-pass thread from the current position to Z: P pitch, I crest offset (negative outside), J first cut, "
      "K thread depth, R degression, Q compound angle, H spring passes, E/L taper. XZ plane (G18); "
@@ -83,11 +85,18 @@ G_ROWS: tuple[Row, ...] = (
     (81, "drilling cycle", "X Y Z R L F", "Rapid to R, feed to Z, rapid out (to the start Z with G98, to R with G99). L repeats."),
     (82, "drilling cycle with dwell", "X Y Z R P L F", "As G81 with a dwell of P seconds at the bottom."),
     (83, "peck drilling cycle", "X Y Z R Q L F", "Pecks of depth Q, retracting to R after each one."),
-    (84, "right-hand tapping cycle", "X Y Z R L F", "Feed in, spindle reverses, feed out."),
+    (84, "right-hand tapping cycle", "X Y Z R L F",
+     "Rigid tapping: F is the pitch per spindle revolution (M3 S600 F1: 600 mm/min), synchronised; the spindle "
+     "reverses at the bottom to feed out to the clear level, then turns back. Needs the spindle turning."),
     (85, "boring cycle, feed out", "X Y Z R L F", "Feed to Z and feed back out to R."),
-    (86, "boring cycle, spindle stop, rapid out", "X Y Z R P L F", "Feed to Z, dwell P, stop the spindle, rapid out."),
-    (87, "back boring cycle", "X Y Z R I J K P L F", "Shifts by I J past the bar, goes below the part, bores up to K."),
-    (88, "boring cycle, spindle stop, manual out", "X Y Z R P L F", "Feed to Z, dwell P, stop the spindle."),
+    (86, "boring cycle, spindle stop, rapid out", "X Y Z R P L F",
+     "Feed to Z, dwell P, stop the spindle, rapid out, restart the spindle. Needs the spindle turning."),
+    (87, "back boring cycle", "X Y Z R I J K L F",
+     "Shifts by I J past the bar, stops the spindle, goes below the part, centres, bores up to K and back, "
+     "stops, shifts, retracts, centres, restarts. Needs the spindle turning."),
+    (88, "boring cycle, spindle stop, manual out", "X Y Z R P L F",
+     "Feed to Z, dwell P, stop the spindle, stop the program for the operator to retract by hand, restart "
+     "the spindle. Needs the spindle turning."),
     (89, "boring cycle, dwell, feed out", "X Y Z R P L F", "Feed to Z, dwell P, feed back out."),
     (90, "absolute distances", "", "Axis words are positions in the active coordinate system."),
     (91, "incremental distances", "", "Axis words are distances from the current position."),

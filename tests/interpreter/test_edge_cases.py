@@ -45,7 +45,8 @@ def test_the_step_budget_counts_lines_the_same_in_files_and_strings(tmp_path: Pa
 
 def test_g74_and_g87_run_as_cycles_never_as_probe_moves() -> None:
     moves: list[Move] = []
-    run_string("G0 Z5\nG74 X1 Z-1 R1 F100\nG87 X1 Z-1 R1 K0 F100\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    run_string("M4 S100 G0 Z5\nG74 X1 Z-1 R1 F1\nG87 X1 Z-1 R1 K0 F100\n",  # both need the spindle turning
+               RunOptions(on_move=lambda m, _j: moves.append(m)))
     assert "probe" not in {m.kind for m in moves} and {m.line for m in moves} == {1, 2, 3}
     with pytest.raises(EcncError) as info:
         run_string("G0 Z5\nG87 X1 Z-1 R1 F100\n")

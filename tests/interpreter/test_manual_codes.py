@@ -98,3 +98,51 @@ def test_m6_leaves_the_spindle_stopped() -> None:
 def test_m3_on_the_m6_line_starts_the_new_tool() -> None:
     """Order of execution: M6 before M3, so `T1 M6 M3 S1000` turns the new tool."""
     assert run("T1 M6 M3 S1000\n", macro=EMPTY_MACRO).spindle["m"] == 3
+
+
+# --------------------------------------------------------------------------- 3.6.20 canned cycles
+
+def test_g84_f_is_per_spindle_revolution() -> None:
+    """3.6.20.6: with M3 S600, F1 feeds 600 mm/min, synchronised; the spindle reverses at the bottom and back."""
+    moves: list[Move] = []
+    events: list[Event] = []
+    run("M3 S600\nG0 Z5\nG98 G84 X0 Y0 Z-10 R1 F1\n", moves, events)
+    taps = [(m.end[2], m.feed, m.sync) for m in moves if m.line == 3 and m.kind == "linear"]
+    assert taps == [(-10.0, 600.0, 1.0), (5.0, 600.0, 1.0)]  # out at the same pitch to the clear level (G98)
+    assert [(e.data["m"], e.data["rigid_tap"]) for e in kinds(events, "spindle") if e.line == 3] == [(4, True), (3, True)]
+
+
+def test_g84_pitch_is_the_same_under_g95_and_in_inches() -> None:
+    moves: list[Move] = []
+    run("G20\nM3 S500\nG95\nG0 Z0.2\nG99 G84 X0 Y0 Z-0.5 R0.1 F0.05\n", moves)
+    tap = [m for m in moves if m.kind == "linear"][0]
+    assert tap.sync == pytest.approx(1.27) and tap.feed == pytest.approx(635.0)
+
+
+def test_tapping_is_not_scaled_by_the_feed_override() -> None:
+    """3.6.20.6: the feed follows the spindle, so the feed override knob does not change it (as G33.1)."""
+    job = "M3 S600\nG0 Z5\nG99 G84 X0 Y0 Z-20 R5 F1\n"
+    full = run(job).estimate
+    half = run(job, feed_override=50.0).estimate
+    assert full is not None and half is not None and half.seconds == pytest.approx(full.seconds)
+
+
+@pytest.mark.parametrize("cycle", ["G84 X0 Z-5 R1 F1", "G74 X0 Z-5 R1 F1", "G86 X0 Z-5 R1 F100",
+                                   "G87 X0 Z-5 R1 I2 K-2 F100", "G88 X0 Z-5 R1 F100"])
+def test_cycles_that_need_a_turning_spindle_refuse_without_one(cycle: str) -> None:
+    """3.6.20.9: it is an error if the spindle is not turning before G86 runs; the taps feed per
+    revolution and G87/G88 restart the spindle in the direction it went."""
+    code = cycle.split()[0]
+    with pytest.raises(MachineError, match=f"{code} needs the spindle turning") as info:
+        run(f"G0 Z5\n{cycle}\n")
+    assert info.value.location.line == 2
+
+
+def test_g88_stops_for_the_operator_and_moves_nothing_itself() -> None:
+    """3.6.20.11: feed to Z, dwell, spindle stop, program stop for a manual retract, spindle on again."""
+    moves: list[Move] = []
+    events: list[Event] = []
+    run("M3 S800\nG0 Z5\nG98 G88 X0 Y0 Z-10 R1 P0.5 F100\n", moves, events)
+    assert [(m.kind, m.end[2]) for m in moves if m.line == 3] == [("rapid", 5.0), ("rapid", 1.0), ("linear", -10.0)]
+    steps = [(e.kind, e.data.get("m")) for e in events if e.line == 3]
+    assert steps == [("dwell", None), ("spindle", 5), ("pause", 0), ("spindle", 3)]
