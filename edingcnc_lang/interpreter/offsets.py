@@ -201,6 +201,8 @@ class CoordinateSystems(MachineState):
         if level not in (2, 20):
             raise self.fail("G10 needs L1, L10 or L11 (tool table), L2 or L20 (coordinate system)", span)
         system = int(p) if p is not None else -1
+        if level == 2 and (p is None or p != system or not 1 <= system <= 9):  # manual 3.6.5: P in 1..9
+            raise self.fail("G10 L2 needs a coordinate system P1..P9 (P1 = G54 .. P9 = G59.3)", span)
         if p is None or p != system or not 0 <= system <= 9:
             raise self.fail(f"G10 L{level} needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)", span)
         active = int(self.params.read(t.COORD_SYSTEM))
@@ -232,32 +234,27 @@ class CoordinateSystems(MachineState):
         return length, x_offset
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        """Manual 3.6.8: a rapid to the programmed point (if any), then to the stored position of all
+        axes (machine coordinates); Z first when that is higher, last otherwise; on a lathe X first."""
         self.refuse_with_comp(t.code_name("G", code), span)
         base = t.G28_HOME if code == G_28 else t.G30_HOME
-        axes = self._axis_values(words)
-        if axes:  # the intermediate point, in the current coordinates
+        if self._axis_values(words):  # the intermediate point, in the current coordinates
             self._move("rapid", self._target(words))
-        chosen = sorted(axes) if axes else list(range(6))
         here = list(self.machine_frame(self.pos))  # the stored positions are machine coordinates
-        home = list(here)
-        for axis in chosen:
-            home[axis] = self.params.read(base + axis)
+        home = [self.params.read(base + axis) for axis in range(6)]
         if self.config.lathe:  # X first: the tool leaves the part before the carriage travels
-            if 0 in chosen:
-                self._machine_move("rapid", home[:1] + here[1:])
-            if any(axis != 0 for axis in chosen):
-                self._machine_move("rapid", home)
-            return
-        z_first = home[2] > here[2]
-        if z_first and 2 in chosen:
-            here[2] = home[2]
+            first = 0
+        else:
+            first = 2 if home[2] > here[2] else -1
+        if first >= 0 and here[first] != home[first]:
+            here[first] = home[first]
             self._machine_move("rapid", list(here))
-        if any(axis != 2 for axis in chosen):
-            here = [home[i] if i != 2 else here[i] for i in range(6)]
+        rest = [home[i] if i != 2 or first >= 0 else here[i] for i in range(6)]
+        if rest != here:
+            here = rest
             self._machine_move("rapid", list(here))
-        if not z_first and 2 in chosen:
-            here[2] = home[2]
-            self._machine_move("rapid", here)
+        if here != home:  # Z last, going down
+            self._machine_move("rapid", home)
 
     def _g92(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)

@@ -8,9 +8,12 @@ from .. import tables as t
 from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
-    G_0, G_17, G_18, G_4, G_40, G_43, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    G_1, G_17, G_18, G_4, G_40, G_43, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
     SPINDLE_SELECT, format_value,
 )
+
+
+M_60 = t.code_key(60)
 
 
 class LineSteps(MachineState):
@@ -198,12 +201,16 @@ class LineSteps(MachineState):
         if code in PAUSE_CODES:
             self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
             return
+        # Manual 3.7.1: G17 (G18 on a lathe), G90, G94, M48, G40, M5, G1, M9; the coordinate system is
+        # kept; M60 keeps the spindle and the coolant on (nesting).  M2 ends as M30 does.
         for group, reset in (("plane", G_18 if self.config.lathe else G_17), ("distance", G_90), ("feed_mode", G_94),
-                             ("cutter_comp", G_40), ("motion", G_0)):
+                             ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
-        self.spindle = 5
-        self.coolant = set()
-        self.params.set(t.SPINDLE_ON, 0.0)
+        self.canon.event(Event("override", self.path, self.line, {"m": 48}))
+        if code != M_60:
+            self.spindle = 5
+            self.coolant = set()
+            self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))

@@ -146,3 +146,51 @@ def test_g88_stops_for_the_operator_and_moves_nothing_itself() -> None:
     assert [(m.kind, m.end[2]) for m in moves if m.line == 3] == [("rapid", 5.0), ("rapid", 1.0), ("linear", -10.0)]
     steps = [(e.kind, e.data.get("m")) for e in events if e.line == 3]
     assert steps == [("dwell", None), ("spindle", 5), ("pause", 0), ("spindle", 3)]
+
+
+# --------------------------------------------------------------------------- 3.7.1 M30, M60
+
+def test_m30_resets_as_the_manual_lists() -> None:
+    """3.7.1: G17, G90, G94, M48, G40, M5, G1, M9; the coordinate system is kept."""
+    events: list[Event] = []
+    result = run("G19 G91 G95 G0 X1\nG55 M3 S100 M8\nM49\nM30\n", events=events)
+    assert {"G17", "G90", "G94", "G40", "G1", "G55"} <= set(result.modal)
+    assert result.spindle["m"] == 5
+    assert [e.data["m"] for e in kinds(events, "override")] == [49, 48]
+
+
+def test_m60_keeps_the_spindle_and_coolant_on() -> None:
+    """3.7.1: M60 instead of M30 when the spindle and coolant should stay on (nesting)."""
+    result = run("M3 S100 M8\nM60\n")
+    assert result.spindle["m"] == 3 and result.variables[5152] == 1.0 and result.ended_by == "M60"
+
+
+# --------------------------------------------------------------------------- 3.6.8 G28/G30
+
+def test_g28_via_the_programmed_point_to_the_home_of_all_axes() -> None:
+    """3.6.8: a rapid to the programmed point, then to the home position; Z last when going down."""
+    moves: list[Move] = []
+    run("#5161 = 10 #5162 = 20 #5163 = -5\nG0 X1 Y1 Z5\nG28 X3\n", moves)
+    assert [m.end[:3] for m in moves if m.line == 3] == [(3.0, 1.0, 5.0), (10.0, 20.0, 5.0), (10.0, 20.0, -5.0)]
+
+
+def test_g30_z_first_when_home_is_higher() -> None:
+    moves: list[Move] = []
+    run("#5181 = 10 #5182 = 20 #5183 = 50\nG0 X1 Y1 Z5\nG30\n", moves)
+    assert [m.end[:3] for m in moves if m.line == 3] == [(1.0, 1.0, 50.0), (10.0, 20.0, 50.0)]
+
+
+# --------------------------------------------------------------------------- 3.6.10.1 G38.2, 3.6.5 G10
+
+def test_probe_without_contact_is_an_error_at_its_line() -> None:
+    """3.6.10.1: if the probe does not trip even slightly past the programmed point, an error."""
+    from edingcnc_lang.host import Host
+    with pytest.raises(MachineError, match="without the probe tripping") as info:
+        run("G0 Z10\nG38.2 Z-5 F100\n", host=Host(probe=lambda start, target: None))
+    assert info.value.location.line == 2
+
+
+def test_g10_l2_p0_is_an_error() -> None:
+    """3.6.5: an error if P is not an integer from 1 to 9."""
+    with pytest.raises(MachineError, match="G10 L2 needs a coordinate system P1..P9"):
+        run("G10 L2 P0 X1\n")
