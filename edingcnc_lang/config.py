@@ -99,6 +99,9 @@ class TanKnifeConfig:
 MILLING, TURNING = 0, 1  # [SYSTEM] machineType
 
 
+SPINDLE_CONFIGS = 5  # [SPINDLE_0]..[SPINDLE_4] (manual 3.7.2)
+
+
 @dataclass(frozen=True)
 class MachineConfig:
     """Everything the interpreter, kinematics and simulator need from ``cnc.ini``."""
@@ -139,6 +142,9 @@ class MachineConfig:
     tools: Mapping[int, ToolConfig]
     variables: Mapping[int, float]
     sections: frozenset[str] = frozenset()  # the ini's section names, lower case: which ones it GAVE
+    # [SPINDLE_1]..[SPINDLE_4] xOffset yOffset zOffset: where each alternate spindle (M91..M93, the probe
+    # M95, the camera M97) is relative to [SPINDLE_0] (manual 3.7.2); index 0 is the standard spindle
+    spindle_offsets: tuple[tuple[float, float, float], ...] = ((0.0, 0.0, 0.0),) * SPINDLE_CONFIGS
 
     @property
     def folder(self) -> Path | None:
@@ -316,6 +322,11 @@ def _read_tools(ini: IniFile) -> Mapping[int, ToolConfig]:
     return MappingProxyType(tools)
 
 
+def _read_spindle_offset(ini: IniFile, number: int) -> tuple[float, float, float]:
+    x, y, z = (ini.get_float(f"SPINDLE_{number}", f"{axis}Offset", 0.0) for axis in "xyz")
+    return (x, y, z)
+
+
 def _read_variables(ini: IniFile) -> Mapping[int, float]:
     """Persisted parameters from ``#n = value`` lines; other numbers are ignored like unknown keys."""
     from edingcnc_lang.ini import VARIABLE_KEY
@@ -415,6 +426,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
         tools=_read_tools(ini),
         variables=_read_variables(ini),
         sections=frozenset(ini.sections),
+        spindle_offsets=tuple((0.0, 0.0, 0.0) if n == 0 else _read_spindle_offset(ini, n) for n in range(SPINDLE_CONFIGS)),
     )
     _validate(ini, config)
     return config

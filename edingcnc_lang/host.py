@@ -56,6 +56,7 @@ DialogCallback = Callable[[str, Sequence[DialogField]], "DialogAnswer | None"]
 InputCallback = Callable[[int], float]
 ProbeCallback = Callable[[Pose, Pose], "Pose | None"]
 MessageCallback = Callable[[str, str, str, int], None]
+ModbusCallback = Callable[[int, int, int, int], Sequence[float]]
 
 
 @dataclass
@@ -67,6 +68,8 @@ class Host:
     probe: ProbeCallback | None = None        # (start, target) machine poses -> trip point or None (no contact)
     message: MessageCallback | None = None    # (kind, text, path, line) as they happen
     clock: Callable[[], datetime] | None = None  # the time %d shows in messages (default: now)
+    # (slave, function, address, count) -> the values a modbus read (f1..f4) gets; default all 0
+    modbus: ModbusCallback | None = None
 
 
 def scripted_dialogs(answers: Sequence[DialogAnswer]) -> DialogCallback:

@@ -130,7 +130,8 @@ class Commands(MachineState):
 # Named commands with a meaning of their own, by lower-case name; any other command is an event.
 COMMANDS: dict[str, str] = {"gettoolinfo": "_get_tool_info", "exec": "_exec_program",
                             "getjobdistance": "_get_job_distance", "getheightcontrolvact": "_get_height_control",
-                            "getheightcontrolvset": "_get_height_control", **height_comp.COMMANDS}
+                            "getheightcontrolvset": "_get_height_control", "modbus": "_modbus",
+                            **height_comp.COMMANDS}
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).

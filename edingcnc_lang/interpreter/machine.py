@@ -17,6 +17,7 @@ from .bulk import BulkPath
 from .canned import CannedCycles
 from .commands import Commands
 from .compensation import CompensationSteps
+from .devices import Devices
 from .flow import ControlFlow
 from .height_comp import HeightComp
 from .line import LineWords
@@ -30,7 +31,7 @@ from .threads import Threading
 
 
 class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, Scaling, CoordinateSystems,
-                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp):
+                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp, Devices):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 

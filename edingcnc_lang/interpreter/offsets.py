@@ -50,7 +50,8 @@ class CoordinateSystems(MachineState):
         return set(axes) | ({0, 1} if self.rotation is not None and axes.keys() & {0, 1} else set())
 
     def offset(self) -> list[float]:
-        """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43)."""
+        """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43),
+        + the selected spindle's offsets."""
         if self._offset is None:
             values = self.params.values
             system = int(values[t.COORD_SYSTEM]) if 1 <= values[t.COORD_SYSTEM] <= 9 else 1
@@ -59,6 +60,8 @@ class CoordinateSystems(MachineState):
                 off = [o + values[t.G92_OFFSET + i] for i, o in enumerate(off)]
             off[2] += self.tool_z
             off[0] += self.tool_x
+            for axis, shift in enumerate(self.spindle_offset):  # an alternate spindle (M91..M97)
+                off[axis] += shift
             self._offset = off
             if self.rotation is not None:
                 self._sync_rotation(off)

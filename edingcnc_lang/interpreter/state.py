@@ -203,6 +203,8 @@ class MachineState:
         self.tanknife = False
         self.clamped = False               # M26: the rotary axes are clamped until M27
         self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
+        self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
+        self.spindle_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the selected spindle's (M91..M97)
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
@@ -233,6 +235,9 @@ class MachineState:
             initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
             initial[t.SOFT_LIMIT_POS + axis] = joint.positive_limit
             initial[t.HOME_POSITION + axis] = joint.home_position
+        for axis in range(3):  # the tool-change area (manual 3.1: #5131..#5133, #5141..#5143)
+            initial[t.TCA_NEGATIVE + axis] = self.config.tca_negative[axis]
+            initial[t.TCA_POSITIVE + axis] = self.config.tca_positive[axis]
         initial.setdefault(t.COORD_SYSTEM, 1.0)
         initial[t.SIMULATION] = 1.0 if simulation else 0.0
         initial[t.KIN_TYPE] = 1.0

@@ -83,9 +83,10 @@ class LineSteps(MachineState):
         m = code // 10
         if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
             self.clamped = m == 26
-        elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M93 the alternate spindles 1..3
-            self.params.set(t.SPINDLE_SELECTED, float(m - SPINDLE_SELECT[0]))
-        self.canon.event(Event("m_code", self.path, self.line, {"m": m}))
+        elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
+            self._select_spindle(m)  # type: ignore[attr-defined]  (devices.py)
+        data = {"m": m, **({"p": words["P"]} if "P" in words else {})}  # M100 P: the axis resolution factor
+        self.canon.event(Event("m_code", self.path, self.line, data))
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         if code == G_4:
@@ -212,6 +213,7 @@ class LineSteps(MachineState):
             self.coolant = set()
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
+        self._heaters_off()  # type: ignore[attr-defined]  (devices.py)
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()

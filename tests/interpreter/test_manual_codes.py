@@ -194,3 +194,75 @@ def test_g10_l2_p0_is_an_error() -> None:
     """3.6.5: an error if P is not an integer from 1 to 9."""
     with pytest.raises(MachineError, match="G10 L2 needs a coordinate system P1..P9"):
         run("G10 L2 P0 X1\n")
+
+
+# --------------------------------------------------------------------------- 3.7.2 .. 3.7.13 M codes
+
+@pytest.mark.parametrize("line, target, value", [
+    ("M104 S200", "extruder", 200.0), ("M109 S210", "extruder", 210.0), ("M140 S60", "bed", 60.0),
+    ("M190 S65", "bed", 65.0), ("M106 S50", "fan", 50.0), ("M143 S260", "extruder_max", 260.0),
+])
+def test_3d_printing_s_is_not_a_spindle_speed(line: str, target: str, value: float) -> None:
+    """3.7.12: M104 S50 sets the extruder to 50 degrees C; the spindle keeps its speed."""
+    events: list[Event] = []
+    result = run(f"M3 S1000\n{line}\n", events=events)
+    assert result.spindle["s"] == 1000.0
+    assert kinds(events, "printer")[0].data[target] == value
+
+
+def test_an_m104_sub_gets_its_s_without_setting_the_spindle() -> None:
+    result = run("M3 S1000\nM104 S200\nM30\nSub m104\n  #100 = #19\nEndSub\n")
+    assert result.spindle["s"] == 1000.0 and result.variables[100] == 200.0
+
+
+def test_m30_switches_the_heaters_off() -> None:
+    """3.7.1: all 3D printer heaters off."""
+    events: list[Event] = []
+    run("M104 S200\nM30\n", events=events)
+    assert kinds(events, "printer")[-1].data == {"m": 30, "off": True}
+
+
+def test_laser_thc_and_override_inputs_are_events() -> None:
+    """3.7.11 M10/M11, 3.7.10 M20..M22, 3.7.5 M52/M53, 3.7.12 M100."""
+    events: list[Event] = []
+    run("M11\nM10\nM21\nM22 Q120\nM20\nM52 P1\nM53 P0\nM100 P1.01\n", events=events)
+    seen = [(e.kind, e.data) for e in events]
+    assert seen == [("laser", {"m": 11, "on": True}), ("laser", {"m": 10, "on": False}),
+                    ("thc", {"m": 21, "on": True}), ("thc", {"m": 22, "q": 120.0}), ("thc", {"m": 20, "on": False}),
+                    ("override", {"m": 52, "p": 1.0}), ("override", {"m": 53, "p": 0.0}),
+                    ("m_code", {"m": 100, "p": 1.01})]
+
+
+def test_an_m_code_without_meaning_or_sub_is_a_warning() -> None:
+    """3.7.13: M1..M999 are allowed; one with no built-in and no sub of its name does nothing, said aloud."""
+    result = run("M123\nM100\n")
+    assert [m.data["text"] for m in result.messages] == [
+        "M123 has no built-in meaning and no Sub m123 is defined: it does nothing"]
+
+
+def test_modbus_read_writes_its_variables() -> None:
+    from edingcnc_lang.host import Host
+    asked: list[tuple[int, int, int, int]] = []
+
+    def bus(slave: int, function: int, address: int, count: int) -> list[float]:
+        asked.append((slave, function, address, count))
+        return [7.0, 8.0]
+    result = run("#1000 = 5\n#1001 = 5\nmodbus s1 f3 a100 n2 u1000\n", host=Host(modbus=bus))
+    assert (result.variables[1000], result.variables[1001], asked) == (7.0, 8.0, [(1, 3, 100, 2)])
+    result = run("#723 = 5\nmodbus s1 f2 a23 n1 u723\n")  # no bus in simulation: 0
+    assert result.variables[723] == 0.0
+
+
+def test_alternate_spindle_offsets_and_tool_change_area_from_the_ini(tmp_path: Path) -> None:
+    """3.7.2: [SPINDLE_1] xOffset.. are relative to [SPINDLE_0]; 3.1: #5131..#5143 the TCA limits."""
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[SPINDLE_1]\nxOffset = 50.0\nyOffset = -10.0\nzOffset = 2.5\n"
+                   "[KINEMATICS]\nnegativeLimitTCAX = -100\nnegativeLimitTCAY = 10\nnegativeLimitTCAZ = -50\n"
+                   "positiveLimitTCAX = -80\npositiveLimitTCAY = 200\npositiveLimitTCAZ = 0\n")
+    moves: list[Move] = []
+    result = run("M91\nG0 X0 Y0 Z0\nM90\nG0 X0 Y0 Z0\n#1 = #5131 #2 = #5132 #3 = #5133 #4 = #5141 #5 = #5142 #6 = #5143\n",
+                 moves, ini=ini)
+    assert [m.end[:3] for m in moves] == [(50.0, -10.0, 2.5), (0.0, 0.0, 0.0)]
+    assert [result.variables[i] for i in range(1, 7)] == [-100.0, 10.0, -50.0, -80.0, 200.0, 0.0]
+    with pytest.raises(MachineError, match="read-only"):
+        run("#5131 = 1\n")
