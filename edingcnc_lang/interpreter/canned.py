@@ -110,7 +110,7 @@ class CannedCycles(MachineState):
         point[normal] = level
         end = self.to_machine(point)
         if kind == "tap":  # spindle-synchronised, timed like G33.1 (the feed override does not act)
-            self._sync_move(end, self.cycle_pitch, None)  # type: ignore[attr-defined]  (threads.py)
+            self._sync_move(end, self.cycle_pitch, None)  # type: ignore[attr-defined]  # threads.py
         else:
             self._move("rapid" if kind == "rapid" else "linear", end, feed if kind == "feed" else 0.0)
 

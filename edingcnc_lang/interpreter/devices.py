@@ -70,7 +70,7 @@ class Devices(MachineState):
         offsets = self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
         if tuple(self.spindle_offset) != offsets:
             self.spindle_offset = offsets
-            self._offsets_changed()  # type: ignore[attr-defined]  (offsets.py)
+            self._offsets_changed()  # type: ignore[attr-defined]  # offsets.py
 
     def _modbus(self, stmt: n.Command) -> None:
         """``modbus s<slave> f<function> a<address> n<count> u<variable>`` reads (f1..f4) into #u..;

@@ -134,8 +134,8 @@ class Moves(MachineState):
         A turn larger than tanKnifeAngleForLiftUp lifts the knife, turns it and lowers it
         again (three moves); a smaller one turns in place.  Returns the new C.
         """
-        if self.rotation is not None:  # the cut runs turned on the machine
-            direction += self.rotation[2]
+        if self.rotation is not None and self.rotation.plane == "XY":  # the cut runs turned on the machine
+            direction += self.rotation.angle
         current = self.pos[5]
         target = current + ((direction - current + 180.0) % 360.0 - 180.0)
         turn = abs(target - current)

@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, ClassVar
+from typing import Any, ClassVar, NamedTuple
 
 from .. import nodes as n
 from .. import tables as t
@@ -86,6 +86,14 @@ CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
 DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
                  "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
+
+
+class Turn(NamedTuple):
+    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
+
+    pivot: tuple[float, float, float]
+    angle: float
+    plane: str  # "XY", "YZ" or "XZ"
 
 
 class ProgramEnd(Exception):
@@ -192,10 +200,10 @@ class MachineState:
         self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
         self.length_follows_tool = False   # a plain G43 is in force: every M6 applies the new tool's length
         self.g92_active = False
-        self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
+        self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
         self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
-        self._sent_pivot: tuple[float, float] | None = None     # the G68 pivot the rotation stage has
+        self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}

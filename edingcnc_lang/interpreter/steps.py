@@ -43,7 +43,7 @@ class LineSteps(MachineState):
         self.refuse_with_comp("a tool change (M6)", span)
         self._tool_change(span)
         if self.spindle != 5:
-            self._spindle_stop()  # type: ignore[attr-defined]  (spindle_modes.py)
+            self._spindle_stop()  # type: ignore[attr-defined]  # spindle_modes.py
         if self.modal["length_offset"] == G_43 and self.length_follows_tool:
             self._apply_length(G_43, {})
 
@@ -84,7 +84,7 @@ class LineSteps(MachineState):
         if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
             self.clamped = m == 26
         elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
-            self._select_spindle(m)  # type: ignore[attr-defined]  (devices.py)
+            self._select_spindle(m)  # type: ignore[attr-defined]  # devices.py
         data = {"m": m, **({"p": words["P"]} if "P" in words else {})}  # M100 P: the axis resolution factor
         self.canon.event(Event("m_code", self.path, self.line, data))
 
@@ -196,7 +196,7 @@ class LineSteps(MachineState):
                 self.tool_z = 0.0
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
-        self._offsets_changed()  # type: ignore[attr-defined]  (offsets.py)
+        self._offsets_changed()  # type: ignore[attr-defined]  # offsets.py
 
     def _stop(self, code: int, span: n.Span) -> None:
         if code in PAUSE_CODES:
@@ -213,7 +213,7 @@ class LineSteps(MachineState):
             self.coolant = set()
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
-        self._heaters_off()  # type: ignore[attr-defined]  (devices.py)
+        self._heaters_off()  # type: ignore[attr-defined]  # devices.py
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()

@@ -266,3 +266,54 @@ def test_alternate_spindle_offsets_and_tool_change_area_from_the_ini(tmp_path: P
     assert [result.variables[i] for i in range(1, 7)] == [-100.0, 10.0, -50.0, -80.0, 200.0, 0.0]
     with pytest.raises(MachineError, match="read-only"):
         run("#5131 = 1\n")
+
+
+# --------------------------------------------------------------------------- 3.6.17 G68
+
+def ends(moves: list[Move]) -> list[tuple[float, ...]]:
+    return [tuple(round(v, 6) + 0.0 for v in m.end[:3]) for m in moves]
+
+
+def test_g68_i1_turns_about_x_in_the_yz_plane() -> None:
+    """3.6.17: I1 rotation about X in the YZ plane; R positive is counter-clockwise."""
+    moves: list[Move] = []
+    result = run("G68 I1 R90\nG0 X1 Y10 Z0\n#1 = #5002 #2 = #5003\n", moves)
+    assert ends(moves) == [(1.0, 0.0, 10.0)]  # +Y turns to +Z about X
+    assert (result.variables[5195], result.variables[5194], result.variables[5196]) == (90.0, 0.0, 0.0)
+    assert (result.variables[1], result.variables[2]) == pytest.approx((10.0, 0.0))
+
+
+def test_g68_j1_turns_about_y_in_the_xz_plane() -> None:
+    moves: list[Move] = []
+    result = run("G68 J1 R90 X0 Z5\nG0 X0 Y0 Z15\n", moves)
+    assert ends(moves) == [(10.0, 0.0, 5.0)]  # about (x 0, z 5): +Z turns to +X about Y
+    assert (result.variables[5196], result.variables[5193]) == (90.0, 5.0)
+
+
+def test_g68_without_ijk_turns_in_the_active_plane() -> None:
+    moves: list[Move] = []
+    run("G19\nG68 R90\nG0 Y10\n", moves)
+    assert ends(moves) == [(0.0, 0.0, 10.0)]
+
+
+def test_g68_pivot_defaults_to_the_work_zero() -> None:
+    """3.6.17: without X Y Z the current work zero is the pivot (not the current position)."""
+    moves: list[Move] = []
+    run("G0 X10 Y0\nG68 R90\nG0 X10 Y0\n", moves)
+    assert ends(moves)[-1] == (0.0, 10.0, 0.0)
+
+
+@pytest.mark.parametrize("line, message", [
+    ("G68 I1 K1 R30", "one of I1, J1 or K1"), ("G68 J2 R30", "write J1"),
+])
+def test_g68_axis_word_mistakes(line: str, message: str) -> None:
+    with pytest.raises(MachineError, match=message):
+        run(line + "\n")
+
+
+def test_g68_yz_turns_g19_arcs_and_refuses_g17_arcs() -> None:
+    moves: list[Move] = []
+    run("G68 I1 R90\nG19 G0 Y10 Z0\nG2 Y0 Z10 J-10 K0 F100\n", moves)
+    assert ends(moves)[-1] == (0.0, -10.0, 0.0)
+    with pytest.raises(MachineError, match="turns the YZ plane"):
+        run("G68 I1 R90\nG17 G0 X10\nG2 X0 Y10 I-10 J0 F100\n")

@@ -221,7 +221,8 @@ def test_g68_pivot_words_do_not_move() -> None:
     result, moves = run("G0 X10 Y0\nG68 X5 Y5 R90\nG0 X10 Y0\n")
     assert len(moves) == 2
     assert close(moves[1].end[:2], (10.0, 10.0))  # (10, 0) turned 90 degrees about (5, 5)
-    assert (result.variables[5191], result.variables[5192], result.variables[5196]) == (5.0, 5.0, 90.0)
+    # manual 3.1: #5194 is the XY angle (#5195 YZ, #5196 XZ)
+    assert (result.variables[5191], result.variables[5192], result.variables[5194]) == (5.0, 5.0, 90.0)
 
 
 # ------------------------------------------------------------------ G28 / G30
