@@ -72,6 +72,27 @@ class Host:
     modbus: ModbusCallback | None = None
 
 
+def parse_modbus_values(text: str) -> tuple[float, ...]:
+    """The CLI form of a modbus read's answer: finite numbers separated by commas, ``7`` or ``7,8``."""
+    try:
+        values = tuple(float(part) for part in text.split(","))
+    except ValueError:
+        raise ValueError(f"modbus answer {text!r}: expected numbers separated by commas, e.g. 7,8") from None
+    if not all(math.isfinite(v) for v in values):
+        raise ValueError(f"modbus answer {text!r}: the values must be finite numbers")
+    return values
+
+
+def scripted_modbus(answers: Sequence[Sequence[float]]) -> ModbusCallback:
+    """A modbus callback answering the reads in order; once the answers run out, zeros."""
+    queue = list(answers)
+
+    def answer(_slave: int, _function: int, _address: int, count: int) -> Sequence[float]:
+        return queue.pop(0) if queue else [0.0] * count
+
+    return answer
+
+
 def scripted_dialogs(answers: Sequence[DialogAnswer]) -> DialogCallback:
     """A dialog callback answering in order; once they run out, OK with values unchanged."""
     queue = list(answers)

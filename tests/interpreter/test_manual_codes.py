@@ -317,3 +317,14 @@ def test_g68_yz_turns_g19_arcs_and_refuses_g17_arcs() -> None:
     assert ends(moves)[-1] == (0.0, -10.0, 0.0)
     with pytest.raises(MachineError, match="turns the YZ plane"):
         run("G68 I1 R90\nG17 G0 X10\nG2 X0 Y10 I-10 J0 F100\n")
+
+
+def test_modbus_answers_on_the_command_line(tmp_path: Path) -> None:
+    from tests.cli_runner import invoke
+    job = tmp_path / "job.nc"
+    job.write_text("modbus s1 f3 a100 n2 u1000\nmodbus s1 f2 a23 n1 u723\nmodbus s1 f2 a23 n1 u724\n"
+                   "msg #1000 \" \" #1001 \" \" #723 \" \" #724\n")
+    result = invoke("run", job, "--modbus", "7,8", "--modbus", "1")
+    assert result.exit_code == 0 and "msg: 7 8 1 0" in result.stderr
+    refused = invoke("run", job, "--modbus", "7,x")
+    assert refused.exit_code == 2 and "modbus answer '7,x'" in refused.stderr
