@@ -68,7 +68,10 @@ G_ROWS: tuple[Row, ...] = (
      "Path control: blend moves. P the rounding tolerance, Q the line-merge tolerance, R the look-ahead angle, "
      "S the second angle and D the corner deviation (V4.03), F the ramp filter. On a G64 line these letters are "
      "G64's: S is not a spindle speed and F not a feed (manual 3.6.16)."),
-    (68, "rotate the XY plane", "X Y Z I J K R", "Rotates by R degrees counter-clockwise about the pivot X Y (Z), axis I J K."),
+    (68, "rotate the coordinate system", "X Y Z I J K R",
+     "Rotates by R degrees counter-clockwise about the pivot X Y Z (default the work zero): in the active "
+     "plane, or about X (I1: YZ plane), Y (J1: XZ) or Z (K1: XY), one of them. Angle in #5194 (XY), #5195 (YZ) "
+     "or #5196 (XZ)."),
     (69, "rotation off", "", "Cancels G68."),
     (70, "inch units (alias of G20)", "", "As G20."),
     (71, "millimetre units (alias of G21)", "", "As G21."),
