@@ -106,6 +106,9 @@ MACHINE_TYPES: Mapping[int, str] = MappingProxyType({
 LATHES = frozenset({TURNING, TURNING_BACK_X})
 
 
+SPINDLE_CONFIGS = 5  # [SPINDLE_0]..[SPINDLE_4] (manual 3.7.2)
+
+
 @dataclass(frozen=True)
 class MachineConfig:
     """Everything the interpreter, kinematics and simulator need from ``cnc.ini``."""
@@ -147,6 +150,9 @@ class MachineConfig:
     variables: Mapping[int, float]
     sections: frozenset[str] = frozenset()  # the ini's section names, lower case: which ones it GAVE
     warnings: tuple[Diagnostic, ...] = ()  # values accepted with a caveat (an unknown machineType, ...)
+    # [SPINDLE_1]..[SPINDLE_4] xOffset yOffset zOffset: where each alternate spindle (M91..M93, the probe
+    # M95, the camera M97) is relative to [SPINDLE_0] (manual 3.7.2); index 0 is the standard spindle
+    spindle_offsets: tuple[tuple[float, float, float], ...] = ((0.0, 0.0, 0.0),) * SPINDLE_CONFIGS
 
     @property
     def folder(self) -> Path | None:
@@ -326,6 +332,11 @@ def _read_tools(ini: IniFile) -> Mapping[int, ToolConfig]:
     return MappingProxyType(tools)
 
 
+def _read_spindle_offset(ini: IniFile, number: int) -> tuple[float, float, float]:
+    x, y, z = (ini.get_float(f"SPINDLE_{number}", f"{axis}Offset", 0.0) for axis in "xyz")
+    return (x, y, z)
+
+
 def _read_variables(ini: IniFile) -> Mapping[int, float]:
     """Persisted parameters from ``#n = value`` lines; other numbers are ignored like unknown keys."""
     from edingcnc_lang.ini import VARIABLE_KEY
@@ -443,6 +454,7 @@ def load_config(path: str | os.PathLike[str]) -> MachineConfig:
         tools=_read_tools(ini),
         variables=_read_variables(ini),
         sections=frozenset(ini.sections),
+        spindle_offsets=tuple((0.0, 0.0, 0.0) if n == 0 else _read_spindle_offset(ini, n) for n in range(SPINDLE_CONFIGS)),
     )
     _validate(ini, config)
     return replace(config, warnings=_warnings(ini, config))

@@ -2,8 +2,8 @@
 
 Works along the drilling axis only: given the hole position and the
 clearance, R and bottom levels it returns the sequence of (kind, depth)
-steps that RS274/NGC prescribes, so every plane and both distance modes
-share one implementation.
+steps that the EdingCNC manual (3.6.20) prescribes, so every plane and both
+distance modes share one implementation.
 """
 from __future__ import annotations
 
@@ -17,8 +17,10 @@ PECK_CLEARANCE_MM = 0.254  # G83 re-entry above the last depth, G73 chip-break r
 class Step:
     """One action at the hole: a rapid or feed along the drilling axis, a dwell, or a spindle switch."""
 
-    kind: str  # "rapid" | "feed" | "dwell" | "spindle_stop" | "spindle_start" | "spindle_reverse" | "shift" | "center"
-    level: float = 0.0  # drilling-axis coordinate (rapid/feed); seconds for dwell
+    # "rapid" | "feed" | "tap" (synchronised: F per revolution) | "dwell" | "pause" (for the operator) |
+    # "spindle_stop" | "spindle_start" | "spindle_reverse" | "shift" | "center"
+    kind: str
+    level: float = 0.0  # drilling-axis coordinate (rapid/feed/tap); seconds for dwell
 
 
 MAX_PECKS = 100_000
@@ -62,20 +64,19 @@ def g73(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]
 
 
 def g84(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
-    return [Step("feed", bottom), Step("feed", r), Step("rapid", clear)]
+    # 3.6.20.6/7 rigid tapping (G74 alike, the spindle turning the other way): in synchronised with the
+    # spindle, reversed at the bottom, out at the same pitch to the clear level, turned back
+    return [Step("tap", bottom), Step("spindle_reverse"), Step("tap", clear), Step("spindle_start")]
 
 
-def g74(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
-    # left-hand tapping: in with the spindle as it turns (M4), reversed at the bottom to come out
-    return [Step("feed", bottom), Step("dwell", p), Step("spindle_reverse"), Step("feed", r),
-            Step("spindle_start"), Step("rapid", clear)]
+g74 = g84
 
 
 def g87(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
-    # back boring (q is the level bored up to): oriented stop, shifted by I J past the bar, down below the
-    # part, back on centre, bore upwards with the spindle on, stop, shift, out, back on centre
-    return [Step("spindle_stop"), Step("shift"), Step("rapid", bottom), Step("center"), Step("spindle_start"),
-            Step("feed", q), Step("dwell", p), Step("spindle_stop"), Step("shift"), Step("rapid", clear),
+    # 3.6.20.10 back boring (q is the level bored up to): shifted by I J past the bar, oriented stop, down
+    # below the part, back on centre, spindle on, bore up to K and back down, stop, shift, out, centre, on
+    return [Step("shift"), Step("spindle_stop"), Step("rapid", bottom), Step("center"), Step("spindle_start"),
+            Step("feed", q), Step("feed", bottom), Step("spindle_stop"), Step("shift"), Step("rapid", clear),
             Step("center"), Step("spindle_start")]
 
 
@@ -89,9 +90,8 @@ def g86(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]
 
 
 def g88(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
-    # The operator retracts by hand on the machine; in simulation the spindle stops and retracts.
-    return [Step("feed", bottom), Step("dwell", p), Step("spindle_stop"), Step("rapid", clear),
-            Step("spindle_start")]
+    # 3.6.20.11: the program stops for the operator to retract by hand; no automatic move
+    return [Step("feed", bottom), Step("dwell", p), Step("spindle_stop"), Step("pause"), Step("spindle_start")]
 
 
 def g89(r: float, bottom: float, clear: float, p: float, q: float) -> list[Step]:
@@ -104,3 +104,7 @@ CycleFn = Callable[[float, float, float, float, float], list[Step]]
 CYCLES: dict[int, CycleFn] = {730: g73, 740: g74, 810: g81, 820: g82, 830: g83, 840: g84, 850: g85, 860: g86,
                               870: g87, 880: g88, 890: g89}
 NEEDS_Q = frozenset({730, 830})
+# The cycles that need the spindle turning when they start (3.6.20.9 says so of G86; the taps feed per
+# revolution; G87 and G88 start it again "in the direction it went", as rs274 requires for all of them).
+NEEDS_SPINDLE = frozenset({740, 840, 860, 870, 880})
+TAPPING = frozenset({740, 840})

@@ -88,8 +88,17 @@ def scale_about(pose: Sequence[float], center: Sequence[float], factors: Sequenc
     return tuple(c + f * (p - c) for p, f, c in zip(pose[:3], factors, center)) + tuple(pose[3:])
 
 
-def rotate_about(pose: Sequence[float], pivot: Sequence[float], degrees: float) -> tuple[float, ...]:
-    """``pose`` turned by ``degrees`` (counter-clockwise seen from +Z) about the vertical through ``pivot``."""
+# The two axes a rotation in each plane turns, ordered so that a positive angle is counter-clockwise
+# seen from the plane's positive normal (right-handed): XY about Z, YZ about X, XZ about Y (Z to X).
+TURNED_AXES = {"XY": (0, 1), "YZ": (1, 2), "XZ": (2, 0)}
+
+
+def rotate_about(pose: Sequence[float], pivot: Sequence[float], degrees: float, plane: str = "XY") -> tuple[float, ...]:
+    """``pose`` turned by ``degrees`` in ``plane`` (counter-clockwise seen from the plane's positive
+    normal axis) about the line through ``pivot`` along that normal; ``pivot`` may be (x, y) for XY."""
     c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    dx, dy = pose[0] - pivot[0], pose[1] - pivot[1]
-    return (pivot[0] + c * dx - s * dy, pivot[1] + s * dx + c * dy, *pose[2:])
+    a, b = TURNED_AXES[plane]
+    da, db = pose[a] - pivot[a], pose[b] - pivot[b]
+    turned = list(pose)
+    turned[a], turned[b] = pivot[a] + c * da - s * db, pivot[b] + s * da + c * db
+    return tuple(turned)

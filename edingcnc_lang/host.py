@@ -56,6 +56,7 @@ DialogCallback = Callable[[str, Sequence[DialogField]], "DialogAnswer | None"]
 InputCallback = Callable[[int], float]
 ProbeCallback = Callable[[Pose, Pose], "Pose | None"]
 MessageCallback = Callable[[str, str, str, int], None]
+ModbusCallback = Callable[[int, int, int, int], Sequence[float]]
 
 
 @dataclass
@@ -67,6 +68,29 @@ class Host:
     probe: ProbeCallback | None = None        # (start, target) machine poses -> trip point or None (no contact)
     message: MessageCallback | None = None    # (kind, text, path, line) as they happen
     clock: Callable[[], datetime] | None = None  # the time %d shows in messages (default: now)
+    # (slave, function, address, count) -> the values a modbus read (f1..f4) gets; default all 0
+    modbus: ModbusCallback | None = None
+
+
+def parse_modbus_values(text: str) -> tuple[float, ...]:
+    """The CLI form of a modbus read's answer: finite numbers separated by commas, ``7`` or ``7,8``."""
+    try:
+        values = tuple(float(part) for part in text.split(","))
+    except ValueError:
+        raise ValueError(f"modbus answer {text!r}: expected numbers separated by commas, e.g. 7,8") from None
+    if not all(math.isfinite(v) for v in values):
+        raise ValueError(f"modbus answer {text!r}: the values must be finite numbers")
+    return values
+
+
+def scripted_modbus(answers: Sequence[Sequence[float]]) -> ModbusCallback:
+    """A modbus callback answering the reads in order; once the answers run out, zeros."""
+    queue = list(answers)
+
+    def answer(_slave: int, _function: int, _address: int, count: int) -> Sequence[float]:
+        return queue.pop(0) if queue else [0.0] * count
+
+    return answer
 
 
 def scripted_dialogs(answers: Sequence[DialogAnswer]) -> DialogCallback:

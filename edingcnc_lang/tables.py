@@ -83,10 +83,16 @@ M_GROUPS: Mapping[int, str] = _groups({
     "tool_change": (6,),
     "spindle": (3, 4, 5),
     "coolant": (7, 8, 9),
-    "overrides": (48, 49, 50, 51),
+    "overrides": (48, 49, 50, 51, 52, 53),
     "io": (54, 55, 56, 57),
-    "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97),
+    "laser": (10, 11),                               # manual 3.7.11: laser off / on
+    "thc": (20, 21, 22, 23),                         # 3.7.10: torch height control off, on, set voltage Q
+    "printer": (104, 106, 107, 109, 140, 143, 190),  # 3.7.12: 3D printing, S a temperature or fan value
+    "misc": (26, 27, 80, 81, 90, 91, 92, 93, 94, 95, 96, 97, 100),
 })
+# M codes whose S is not a spindle speed (3.7.12: a temperature in degrees C, or the fan's 0..100 %).
+OWN_M_WORDS: Mapping[int, frozenset[str]] = MappingProxyType(
+    {code_key(c): frozenset("S") for c in (104, 106, 109, 140, 143, 190)})
 
 # G codes other controllers know, with what to use on EdingCNC (shown with "unknown G code").
 UNKNOWN_G_HINTS: Mapping[int, str] = MappingProxyType({
@@ -112,6 +118,13 @@ def lathe_code_message(key: int) -> str:
             "a lathe's cnc.ini (--ini) sets [SYSTEM] machineType = 1")
 
 
+# Words a G code takes as its own parameters on its line, so no other step of the line sees them.
+# G64 (manual 3.6.16): P rounding tolerance, Q line-merge tolerance, R and S the look-ahead angles,
+# D the corner deviation, F the ramp filter; never the spindle speed or the feed.
+OWN_G_WORDS: Mapping[int, frozenset[str]] = MappingProxyType({code_key(64): frozenset("PQRSDF")})
+# Of these, the lengths (converted from inch under G20) and the angles in degrees.
+G64_LENGTHS = frozenset("PQD")
+
 # G codes that take the axis words of their line (so a motion on the same line may not).
 AXIS_WORD_USERS = frozenset(code_key(c) for c in (10, 28, 30, 92))
 
@@ -127,7 +140,7 @@ ARG_PARAMS = range(1, 27)
 VOLATILE_PARAMS = range(27, 4000)
 
 READ_ONLY_PARAMS: tuple[range, ...] = (
-    range(5001, 5007), range(5051, 5077), range(5081, 5087), range(5101, 5127),
+    range(5001, 5007), range(5051, 5077), range(5081, 5087), range(5101, 5127), range(5131, 5134), range(5141, 5144),
     range(5150, 5153), range(5380, 5381), range(5397, 5398),
 )
 
@@ -149,6 +162,8 @@ PROBE_JOINTS = 5081        # ..5086
 SOFT_LIMIT_NEG = 5101      # ..5106
 SOFT_LIMIT_POS = 5111      # ..5116
 HOME_POSITION = 5121       # ..5126
+TCA_NEGATIVE = 5131        # ..5133 tool-change area, machine X Y Z (cnc.ini [KINEMATICS] negativeLimitTCAX..)
+TCA_POSITIVE = 5141        # ..5143
 KIN_TYPE = 5150
 ZHC_ACTIVE = 5151
 SPINDLE_ON = 5152
@@ -202,6 +217,9 @@ ORDER_OF_EXECUTION: tuple[tuple[str, str, str], ...] = (
     ("coolant", "M", "coolant"),
     ("overrides", "M", "overrides"),
     ("io", "M", "io"),
+    ("laser", "M", "laser"),
+    ("thc", "M", "thc"),
+    ("printer", "M", "printer"),
     ("m_state", "M", "misc"),
     ("dwell", "G", "non_modal"),
     ("plane", "G", "plane"),

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 import click
 
 from ..errors import printable
-from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, POSITIVE_INT
+from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, MODBUS_VALUES, POSITIVE_INT
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -85,13 +85,14 @@ class MachineOptions:
     block_delete: bool = False
     strict: bool = False
     probe_surface: str | None = None
+    modbus: tuple[tuple[float, ...], ...] = ()
 
     def run_options(self, show_messages: bool = True, **extra: Any) -> RunOptions:
         """``RunOptions`` for these options; ``extra`` sets the rest (``trace=Path(...)``, ...).
 
         With ``show_messages`` the job's ``msg``/``warnmsg``/``errmsg`` print on stderr as they happen.
         """
-        from ..host import Host, scripted_dialogs
+        from ..host import Host, scripted_dialogs, scripted_modbus
         from ..limits import DEFAULT_MAX_STEPS
         from ..runner import RunOptions
 
@@ -107,7 +108,8 @@ class MachineOptions:
         dialogs = ShownDialogs(scripted_dialogs(list(self.answers)))
         message = dialogs.print_message if show_messages else None
         return RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro),
-                          host=Host(dialog=dialogs.ask, message=message, probe=probe),
+                          host=Host(dialog=dialogs.ask, message=message, probe=probe,
+                                    modbus=scripted_modbus(self.modbus) if self.modbus else None),
                           max_steps=self.max_steps or DEFAULT_MAX_STEPS, log_dir=path(self.log_dir),
                           allow_exec=self.allow_exec, simulation=not self.no_simulation,
                           block_delete=self.block_delete, strict=self.strict, on_warning=print_warning, **extra)
@@ -176,6 +178,8 @@ _MACHINE_OPTIONS = (
                  "(default: a warning each, and an error only if the run reaches the line)."),
     click.option("--probe-surface", metavar="FILE", type=EXISTING_FILE,
                  help="CSV height map x,y,z (machine coordinates): G38.2 trips where the probe meets it."),
+    click.option("--modbus", "modbus", metavar="VALUES", type=MODBUS_VALUES, multiple=True,
+                 help="Values the next modbus read gets, e.g. 7,8 (repeatable; later reads get 0)."),
 )
 _MACHINE_NAMES = tuple(MachineOptions.__dataclass_fields__)
 

@@ -245,6 +245,23 @@ class Answer(click.ParamType):
         return [CompletionItem(word) for word in ("ok", "cancel", "ok:#") if word.startswith(incomplete)]
 
 
+class ModbusValues(click.ParamType):
+    """What the next modbus read gets: ``7`` or ``7,8``."""
+
+    name = "values"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, ...]:
+        from ..host import parse_modbus_values
+
+        if isinstance(value, tuple):
+            return value
+        try:
+            return parse_modbus_values(value)
+        except ValueError as err:
+            self.fail(str(err), param, ctx)
+
+
+MODBUS_VALUES = ModbusValues()
 EXISTING_FILE = ExistingFile()
 INPUT_PATH = ExistingPath(stdin=True)  # a path to lint, or - for standard input
 INPUT_FILE = ExistingFile(stdin=True)  # a job or file to parse, or - for standard input

@@ -9,6 +9,7 @@ from .. import tables as t
 from ..canon import AXES, PLANES, Event
 from .state import CENTER_WORDS, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
 
+G_74 = t.code_key(74)
 G_87 = t.code_key(87)
 
 if TYPE_CHECKING:
@@ -19,11 +20,14 @@ class CannedCycles(MachineState):
     """Every hole and peck counts against the step budget."""
 
     cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
+    cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
 
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         from ..cycles import (  # most jobs drill nothing: not worth its import time
             CYCLES,
             NEEDS_Q,
+            NEEDS_SPINDLE,
+            TAPPING,
             CycleError,
         )
 
@@ -49,6 +53,9 @@ class CannedCycles(MachineState):
             raise self.fail("G87 needs K, the level the back bore ends at (between the bottom and R)", span)
         if motion in NEEDS_Q and sticky.get("Q", 0) <= 0:
             raise self.fail(f"{t.code_name('G', motion)} needs a peck depth Q greater than 0", span)
+        if motion in NEEDS_SPINDLE and (self.spindle == 5 or self.rpm_at(self.pos[0]) <= 0):
+            raise self.fail(f"{t.code_name('G', motion)} needs the spindle turning: program "
+                            f"{'M4' if motion == G_74 else 'M3'} with an S word first", span)
         repeats = words.get("L", 1)
         if repeats != int(repeats) or repeats < 1:
             raise self.fail("L (repeat count) must be a whole number of at least 1", span)
@@ -64,6 +71,8 @@ class CannedCycles(MachineState):
             raise self.fail(f"R ({format_value(r_level / scale)}) is below the hole bottom "
                             f"{drill} ({format_value(bottom / scale)})", span)
         feed = self._feed_for(1.0, words, span)
+        # G84/G74 (3.6.20.6/7): F is the pitch, mm per spindle revolution, in G94 as in G95
+        self.cycle_pitch = self.feed if motion in TAPPING else 0.0
         if old < r_level:  # start below R: climb to R first
             self._cycle_move("rapid", work, normal, r_level, feed)
             old = self.cycle_initial = r_level
@@ -99,15 +108,20 @@ class CannedCycles(MachineState):
     def _cycle_move(self, kind: str, work: list[float], normal: int, level: float, feed: float) -> None:
         point = list(work)
         point[normal] = level
-        self._move("rapid" if kind == "rapid" else "linear", self.to_machine(point), feed if kind == "feed" else 0.0)
+        end = self.to_machine(point)
+        if kind == "tap":  # spindle-synchronised, timed like G33.1 (the feed override does not act)
+            self._sync_move(end, self.cycle_pitch, None)
+        else:
+            self._move("rapid" if kind == "rapid" else "linear", end, feed if kind == "feed" else 0.0)
 
     def _cycle_steps(self, steps: list[Step], hole: list[float], normal: int, feed: float) -> None:
         at = list(hole)  # where the tool is across the hole: its centre, or shifted past the bar (G87)
         at[normal] = self.work_position()[normal]
         programmed = self.spindle  # what "spindle_start" turns back to
         switched = {"spindle_stop": 5, "spindle_start": programmed, "spindle_reverse": 3 if programmed == 4 else 4}
+        tapping = {"rigid_tap": True} if self.cycle_pitch else {}
         for step in steps:
-            if step.kind in ("rapid", "feed"):
+            if step.kind in ("rapid", "feed", "tap"):
                 self._cycle_move(step.kind, at, normal, step.level, feed)
                 at[normal] = step.level
             elif step.kind in ("shift", "center"):
@@ -116,8 +130,11 @@ class CannedCycles(MachineState):
                 self._move("rapid", self.to_machine(at))
             elif step.kind == "dwell":
                 self.canon.event(Event("dwell", self.path, self.line, {"seconds": step.level}))
+            elif step.kind == "pause":  # G88: the operator retracts by hand, then presses Start
+                self.canon.event(Event("pause", self.path, self.line, {"m": 0, "cycle": "G88"}))
             else:  # the spindle stops, starts or reverses: the moves after it carry its new speed
                 self.spindle = switched[step.kind]
                 on = self.spindle != 5
                 self.canon.event(Event("spindle", self.path, self.line, {
-                    "m": self.spindle, "speed": self.speed, "rpm": self.rpm_at(self.pos[0]) if on else 0.0}))
+                    "m": self.spindle, "speed": self.speed, "rpm": self.rpm_at(self.pos[0]) if on else 0.0,
+                    **tapping}))

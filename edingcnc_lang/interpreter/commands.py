@@ -8,7 +8,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..canon import AXES, Event
 from ..evaluator import param_index
-from . import height_comp
+from . import devices, height_comp
 from .state import CommandTable, MachineState, StatementTable
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
@@ -131,7 +131,8 @@ class Commands(MachineState):
 COMMANDS: CommandTable = {"gettoolinfo": Commands._get_tool_info, "exec": Commands._exec_program,
                           "getjobdistance": Commands._get_job_distance,
                           "getheightcontrolvact": Commands._get_height_control,
-                          "getheightcontrolvset": Commands._get_height_control, **height_comp.COMMANDS}
+                          "getheightcontrolvset": Commands._get_height_control, **devices.COMMANDS,
+                          **height_comp.COMMANDS}
 
 
 # The statements this part executes, by method name (machine.py builds the dispatch table).

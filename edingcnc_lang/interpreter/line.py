@@ -76,6 +76,10 @@ class LineWords(MachineState):
             if user_m:
                 self._call_m_sub(user_m[0], words, g_codes, m_codes, span)
                 return
+            for key in m_codes.values():
+                if key not in t.M_GROUPS:  # manual 3.7.13: M1..M999 run a sub of that name, if there is one
+                    self.message("warn", f"{t.code_name('M', key)} has no built-in meaning and no Sub "
+                                 f"{t.m_sub_name(key) or t.code_name('m', key)} is defined: it does nothing")
         self._execute_line(words, g_codes, m_codes, span)
 
     def _user_m_sub(self, key: int) -> str | None:
@@ -98,7 +102,8 @@ class LineWords(MachineState):
                     m_codes: Mapping[str, int], span: n.Span) -> None:
         if g_codes or len(m_codes) > 1:
             raise self.fail(f"a line calling M{key // 10} (a macro sub) may hold only its letter arguments", span)
-        self._feed_speed_tool(words, span)  # F, S and T act as usual before the sub runs
+        owned = t.OWN_M_WORDS.get(key, frozenset())  # M104 S..: a temperature, not a spindle speed
+        self._feed_speed_tool({k: v for k, v in words.items() if k not in owned}, span)  # F, S, T act first
         for i, letter in enumerate(t.LETTER_ARGS, 1):
             self.params.set(i, words.get(letter, t.ABSENT_ARGUMENT))
         name = t.m_sub_name(key)
@@ -108,6 +113,13 @@ class LineWords(MachineState):
     def _execute_line(self, words: dict[str, float], g: Mapping[str, int], m: Mapping[str, int],
                       span: n.Span) -> None:
         """One line's actions in the controller's order of execution (tables.ORDER_OF_EXECUTION)."""
+        own: dict[str, dict[str, float]] = {}  # a group whose code owns words of the line (G64 P Q R S D F)
+        for codes, table in ((g, t.OWN_G_WORDS), (m, t.OWN_M_WORDS)):
+            for group, code in codes.items():
+                letters = table.get(code)
+                if letters is not None:
+                    own[group] = {k: v for k, v in words.items() if k in letters}
+                    words = {k: v for k, v in words.items() if k not in letters}
         sources = {"G": g, "M": m, "word": words}
         for handler, source, key in self._LINE_STEPS:
             if source == "always":
@@ -115,7 +127,7 @@ class LineWords(MachineState):
             else:
                 found = sources[source]
                 if key in found:
-                    handler(self, found[key], words, g, span)
+                    handler(self, found[key], own.get(key, words), g, span)
 
     def _feed_speed_tool(self, words: Mapping[str, float], span: n.Span) -> None:
         """The F, S and T steps alone (a line calling an M-code sub still sets them)."""

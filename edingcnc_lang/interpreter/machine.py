@@ -12,11 +12,12 @@ from __future__ import annotations
 
 
 from .. import tables as t
-from . import bulk, commands, compensation, flow, line, messages, scaling, spindle_modes, steps
+from . import bulk, commands, compensation, devices, flow, line, messages, scaling, spindle_modes, steps
 from .bulk import BulkPath
 from .canned import CannedCycles
 from .commands import Commands
 from .compensation import CompensationSteps
+from .devices import Devices
 from .flow import ControlFlow
 from .height_comp import HeightComp
 from .line import LineWords
@@ -30,7 +31,7 @@ from .threads import Threading
 
 
 class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, Scaling, CoordinateSystems,
-                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp):
+                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp, Devices):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 
@@ -40,6 +41,6 @@ Interpreter._EXECUTE = {kind: run for part in (flow, line, bulk, messages, comma
 
 # The line's steps in the controller's order (tables.ORDER_OF_EXECUTION), from each part's STEPS table;
 # a row of the order that no part performs fails here, at import.
-_STEPS = {name: step for part in (steps, spindle_modes, compensation, scaling) for name, step in part.STEPS.items()}
+_STEPS = {name: step for part in (steps, spindle_modes, compensation, scaling, devices) for name, step in part.STEPS.items()}
 Interpreter._LINE_STEPS = tuple((_STEPS[name], source, key) for name, source, key in t.ORDER_OF_EXECUTION)
 

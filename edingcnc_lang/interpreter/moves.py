@@ -134,8 +134,8 @@ class Moves(MachineState):
         A turn larger than tanKnifeAngleForLiftUp lifts the knife, turns it and lowers it
         again (three moves); a smaller one turns in place.  Returns the new C.
         """
-        if self.rotation is not None:  # the cut runs turned on the machine
-            direction += self.rotation[2]
+        if self.rotation is not None and self.rotation.plane == "XY":  # the cut runs turned on the machine
+            direction += self.rotation.angle
         current = self.pos[5]
         target = current + ((direction - current + 180.0) % 360.0 - 180.0)
         turn = abs(target - current)
@@ -165,10 +165,12 @@ class Moves(MachineState):
         goal = self.machine_frame(target)  # the host sees machine coordinates
         trip = self.host.probe(self.machine_frame(self.pos), goal) if self.host.probe else goal  # type: ignore[arg-type]
         self._move("probe", self.program_frame(trip) if trip is not None else target, feed)
-        if trip is not None:
-            work = self.reported_position()
-            for axis in range(6):
-                self.params.set(t.PROBE_MACHINE + axis, trip[axis])
-                self.params.set(t.PROBE_WORK + axis, work[axis])
-                self.params.set(t.PROBE_JOINTS + axis, trip[axis])
-        self.params.set(t.PROBE_TRIPPED, 1.0 if trip is not None else 0.0)
+        if trip is None:  # manual 3.6.10.1: no trip even slightly past the target is an error
+            self.params.set(t.PROBE_TRIPPED, 0.0)
+            raise self.fail("G38.2 reached its target without the probe tripping (no contact)", span)
+        work = self.reported_position()
+        for axis in range(6):
+            self.params.set(t.PROBE_MACHINE + axis, trip[axis])
+            self.params.set(t.PROBE_WORK + axis, work[axis])
+            self.params.set(t.PROBE_JOINTS + axis, trip[axis])
+        self.params.set(t.PROBE_TRIPPED, 1.0)

@@ -7,10 +7,15 @@ from contextlib import contextmanager
 from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
-from ..geometry import rotate_about, scale_about
+from ..geometry import TURNED_AXES, rotate_about, scale_about
 from .state import (
-    AXIS_INDEX, G_10, G_28, G_30, G_69, G_91, G_92, G_92_1, G_92_2, G_92_3, LINEAR_AXES, MachineState,
+    AXIS_INDEX, G_10, G_28, G_30, G_69, G_91, G_92, G_92_1, G_92_2, G_92_3, LINEAR_AXES, PLANE_OF, MachineState, Turn, format_value,
 )
+
+# G68 I1 / J1 / K1: the rotation axis X, Y or Z, so the plane YZ, XZ or XY (manual 3.6.17).
+G68_AXIS_WORDS = {"I": "YZ", "J": "XZ", "K": "XY"}
+# #5194 angle XY, #5195 YZ, #5196 XZ (manual 3.1)
+G68_ANGLE_PARAM = {"XY": 4, "YZ": 5, "XZ": 6}
 
 
 class CoordinateSystems(MachineState):
@@ -28,8 +33,9 @@ class CoordinateSystems(MachineState):
         if pivot is not None and self.rotation is not None:
             moved = self._rotation_pivot()  # recomputes the offset and tells the rotation stage
             if moved != pivot:
-                here = rotate_about(self.pos, pivot, self.rotation[2])
-                self.pos = list(rotate_about(here, moved, -self.rotation[2]))
+                angle, plane = self.rotation.angle, self.rotation.plane
+                here = rotate_about(self.pos, pivot, angle, plane)
+                self.pos = list(rotate_about(here, moved, -angle, plane))
 
     def _offset_reading(self, reading: Mapping[int, float], base: list[float]) -> list[float]:
         """The offset (machine minus work) with which the current point, the machine staying put,
@@ -38,19 +44,21 @@ class CoordinateSystems(MachineState):
         Y are solved together."""
         if self.rotation is None:
             return [self.pos[i] - reading[i] if i in reading else b for i, b in enumerate(base)]
-        pivot, angle = self.rotation[:2], self.rotation[2]
-        here = rotate_about(self.pos, self._rotation_pivot(), angle)
-        work = list(rotate_about([h - b for h, b in zip(here, base)], pivot, -angle))
+        pivot, angle, plane = self.rotation
+        here = rotate_about(self.pos, self._rotation_pivot(), angle, plane)
+        work = list(rotate_about([h - b for h, b in zip(here, base)], pivot, -angle, plane))
         for axis, number in reading.items():
             work[axis] = number
-        return [h - w for h, w in zip(here, rotate_about(work, pivot, angle))]
+        return [h - w for h, w in zip(here, rotate_about(work, pivot, angle, plane))]
 
     def _solved_axes(self, axes: Mapping[int, float]) -> set[int]:
-        """The axes whose offset G92/G10 L20 set: the programmed ones, and X with Y under G68."""
-        return set(axes) | ({0, 1} if self.rotation is not None and axes.keys() & {0, 1} else set())
+        """The axes whose offset G92/G10 L20 set: the programmed ones, and both axes G68 turns."""
+        turned = set(TURNED_AXES[self.rotation.plane]) if self.rotation is not None else set()
+        return set(axes) | (turned if axes.keys() & turned else set())
 
     def offset(self) -> list[float]:
-        """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43)."""
+        """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43),
+        + the selected spindle's offsets."""
         if self._offset is None:
             values = self.params.values
             system = int(values[t.COORD_SYSTEM]) if 1 <= values[t.COORD_SYSTEM] <= 9 else 1
@@ -59,6 +67,8 @@ class CoordinateSystems(MachineState):
                 off = [o + values[t.G92_OFFSET + i] for i, o in enumerate(off)]
             off[2] += self.tool_z
             off[0] += self.tool_x
+            for axis, shift in enumerate(self.spindle_offset):  # an alternate spindle (M91..M97)
+                off[axis] += shift
             self._offset = off
             if self.rotation is not None:
                 self._sync_rotation(off)
@@ -78,7 +88,7 @@ class CoordinateSystems(MachineState):
     def machine_frame(self, pose: list[float] | tuple[float, ...]) -> tuple[float, ...]:
         """Where the machine really is for a programmed pose."""
         if self.rotation is not None:
-            pose = rotate_about(pose, self._rotation_pivot(), self.rotation[2])
+            pose = rotate_about(pose, self._rotation_pivot(), self.rotation.angle, self.rotation.plane)
         if self.scaling is not None:
             pose = scale_about(pose, (*self.scaling_center, 0.0), self.scaling)
         return tuple(pose)
@@ -88,7 +98,7 @@ class CoordinateSystems(MachineState):
         if self.scaling is not None:
             pose = scale_about(pose, (*self.scaling_center, 0.0), [1.0 / f for f in self.scaling])
         if self.rotation is not None:
-            pose = rotate_about(pose, self._rotation_pivot(), -self.rotation[2])
+            pose = rotate_about(pose, self._rotation_pivot(), -self.rotation.angle, self.rotation.plane)
         return list(pose)
 
     @contextmanager
@@ -153,30 +163,42 @@ class CoordinateSystems(MachineState):
                 self.rotation = None
                 self.params.set(t.G68_ACTIVE, 0.0)
             else:
-                work = self.work_position()
-                px = words.get("X", work[0] / self.scale) * self.scale
-                py = words.get("Y", work[1] / self.scale) * self.scale
-                angle = words.get("R", 0.0)
-                self.rotation = (px, py, angle)
-                for offset, number in enumerate((1.0, px, py, 0.0, 0.0, 0.0, angle)):
+                self.rotation = self._turn(words, span)
+                values = [1.0, *self.rotation.pivot, 0.0, 0.0, 0.0]
+                values[G68_ANGLE_PARAM[self.rotation.plane]] = self.rotation.angle
+                for offset, number in enumerate(values):
                     self.params.set(t.G68_ACTIVE + offset, number)
                 self._sync_rotation(self.offset(), force=True)
         self.modal["rotation"] = code
 
-    def _rotation_pivot(self) -> tuple[float, float]:
+    def _turn(self, words: Mapping[str, float], span: n.Span) -> Turn:
+        """G68 X Y Z I J K R (manual 3.6.17): the pivot (work coordinates; the work zero where a word is
+        left out), the plane (I1: YZ, J1: XZ, K1: XY, only one; without them the active plane), R."""
+        axis_words = [letter for letter in "IJK" if letter in words]
+        if len(axis_words) > 1:
+            raise self.fail(f"G68 takes one of I1, J1 or K1 (the rotation axis X, Y or Z), not "
+                            f"{' and '.join(axis_words)} together", span)
+        if axis_words and words[axis_words[0]] != 1:
+            raise self.fail(f"G68 {axis_words[0]}{format_value(words[axis_words[0]])}: write "
+                            f"{axis_words[0]}1 to turn about {'XYZ'['IJK'.index(axis_words[0])]}", span)
+        plane = G68_AXIS_WORDS[axis_words[0]] if axis_words else PLANE_OF[self.modal["plane"]]
+        x, y, z = (words.get(letter, 0.0) * self.scale for letter in "XYZ")
+        return Turn((x, y, z), words.get("R", 0.0), plane)
+
+    def _rotation_pivot(self) -> tuple[float, ...]:
         """The G68 pivot in programmed machine coordinates (it moves with the work offsets)."""
         assert self.rotation is not None
         off = self.offset()
-        return (self.rotation[0] + off[0], self.rotation[1] + off[1])
+        return tuple(p + o for p, o in zip(self.rotation.pivot, off))
 
     def _sync_rotation(self, offset: list[float], force: bool = False) -> None:
         """Tell the rotation stage where the pivot is now (after G68, or when an offset moved it)."""
         assert self.rotation is not None
-        pivot = (self.rotation[0] + offset[0], self.rotation[1] + offset[1])
+        pivot = tuple(p + o for p, o in zip(self.rotation.pivot, offset))
         if force or pivot != self._sent_pivot:
             self._sent_pivot = pivot
-            self.canon.event(Event("rotation", self.path, self.line,
-                                   {"on": True, "pivot": pivot, "angle": self.rotation[2]}))
+            self.canon.event(Event("rotation", self.path, self.line, {
+                "on": True, "pivot": pivot, "angle": self.rotation.angle, "plane": self.rotation.plane}))
 
     def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         level = int(words.get("L", -1))
@@ -201,6 +223,8 @@ class CoordinateSystems(MachineState):
         if level not in (2, 20):
             raise self.fail("G10 needs L1, L10 or L11 (tool table), L2 or L20 (coordinate system)", span)
         system = int(p) if p is not None else -1
+        if level == 2 and (p is None or p != system or not 1 <= system <= 9):  # manual 3.6.5: P in 1..9
+            raise self.fail("G10 L2 needs a coordinate system P1..P9 (P1 = G54 .. P9 = G59.3)", span)
         if p is None or p != system or not 0 <= system <= 9:
             raise self.fail(f"G10 L{level} needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)", span)
         active = int(self.params.read(t.COORD_SYSTEM))
@@ -232,32 +256,27 @@ class CoordinateSystems(MachineState):
         return length, x_offset
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        """Manual 3.6.8: a rapid to the programmed point (if any), then to the stored position of all
+        axes (machine coordinates); Z first when that is higher, last otherwise; on a lathe X first."""
         self.refuse_with_comp(t.code_name("G", code), span)
         base = t.G28_HOME if code == G_28 else t.G30_HOME
-        axes = self._axis_values(words)
-        if axes:  # the intermediate point, in the current coordinates
+        if self._axis_values(words):  # the intermediate point, in the current coordinates
             self._move("rapid", self._target(words))
-        chosen = sorted(axes) if axes else list(range(6))
         here = list(self.machine_frame(self.pos))  # the stored positions are machine coordinates
-        home = list(here)
-        for axis in chosen:
-            home[axis] = self.params.read(base + axis)
+        home = [self.params.read(base + axis) for axis in range(6)]
         if self.config.lathe:  # X first: the tool leaves the part before the carriage travels
-            if 0 in chosen:
-                self._machine_move("rapid", home[:1] + here[1:])
-            if any(axis != 0 for axis in chosen):
-                self._machine_move("rapid", home)
-            return
-        z_first = home[2] > here[2]
-        if z_first and 2 in chosen:
-            here[2] = home[2]
+            first = 0
+        else:
+            first = 2 if home[2] > here[2] else -1
+        if first >= 0 and here[first] != home[first]:
+            here[first] = home[first]
             self._machine_move("rapid", list(here))
-        if any(axis != 2 for axis in chosen):
-            here = [home[i] if i != 2 else here[i] for i in range(6)]
+        rest = [home[i] if i != 2 or first >= 0 else here[i] for i in range(6)]
+        if rest != here:
+            here = rest
             self._machine_move("rapid", list(here))
-        if not z_first and 2 in chosen:
-            here[2] = home[2]
-            self._machine_move("rapid", here)
+        if here != home:  # Z last, going down
+            self._machine_move("rapid", home)
 
     def _g92(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)

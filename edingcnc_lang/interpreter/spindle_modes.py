@@ -60,7 +60,14 @@ class SpindleModes(MachineState):
         self.canon.event(Event("spindle_speed", self.path, self.line, {**data, "rpm": rpm}))
 
     def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        self.spindle = code // 10
+        self._spindle_turn(code // 10)
+
+    def _spindle_stop(self) -> None:
+        """The spindle stops without an M5 of the program (after M6, manual 3.7.3)."""
+        self._spindle_turn(5)
+
+    def _spindle_turn(self, direction: int) -> None:
+        self.spindle = direction
         on = self.spindle != 5
         rpm = self.rpm_at(self.pos[0])
         self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)

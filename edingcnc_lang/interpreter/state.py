@@ -12,7 +12,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from contextlib import AbstractContextManager
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
 from .. import nodes as n
 from .. import tables as t
@@ -57,6 +57,7 @@ G_40 = G(40)
 G_41 = G(41)
 G_41_1 = G(41.1)
 G_42_1 = G(42.1)
+G_43 = G(43)
 G_43_1 = G(43.1)
 G_49 = G(49)
 G_51 = G(51)
@@ -93,6 +94,12 @@ DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_4
 StatementTable = dict[type, Callable[..., None]]      # statement type -> (machine, stmt)
 StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
 CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
+class Turn(NamedTuple):
+    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
+
+    pivot: tuple[float, float, float]
+    angle: float
+    plane: str  # "XY", "YZ" or "XZ"
 
 
 class ProgramEnd(Exception):
@@ -197,11 +204,12 @@ class MachineState:
         self.selected_tool = 0
         self.tool_z = 0.0                  # active G43 length
         self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
+        self.length_follows_tool = False   # a plain G43 is in force: every M6 applies the new tool's length
         self.g92_active = False
-        self.rotation: tuple[float, float, float] | None = None  # G68 pivot x, y and angle (deg)
+        self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
         self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
-        self._sent_pivot: tuple[float, float] | None = None     # the G68 pivot the rotation stage has
+        self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.outputs: dict[int, bool] = {}
@@ -209,6 +217,8 @@ class MachineState:
         self.tanknife = False
         self.clamped = False               # M26: the rotary axes are clamped until M27
         self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
+        self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
+        self.spindle_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the selected spindle's (M91..M97)
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
@@ -239,6 +249,9 @@ class MachineState:
             initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
             initial[t.SOFT_LIMIT_POS + axis] = joint.positive_limit
             initial[t.HOME_POSITION + axis] = joint.home_position
+        for axis in range(3):  # the tool-change area (manual 3.1: #5131..#5133, #5141..#5143)
+            initial[t.TCA_NEGATIVE + axis] = self.config.tca_negative[axis]
+            initial[t.TCA_POSITIVE + axis] = self.config.tca_positive[axis]
         initial.setdefault(t.COORD_SYSTEM, 1.0)
         initial[t.SIMULATION] = 1.0 if simulation else 0.0
         initial[t.KIN_TYPE] = 1.0
@@ -379,6 +392,10 @@ class MachineState:
         def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None: ...  # canned.py
         def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
         def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py
+        def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None: ...  # threads.py
+        def _spindle_stop(self) -> None: ...                                                 # spindle_modes.py
+        def _select_spindle(self, m: int) -> None: ...                                       # devices.py
+        def _heaters_off(self) -> None: ...                                                  # devices.py
         def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None: ...
         def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
                                 span: n.Span) -> None: ...

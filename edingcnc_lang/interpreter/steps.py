@@ -8,9 +8,12 @@ from .. import tables as t
 from ..canon import Event
 from .offsets import NON_MODAL
 from .state import (
-    G_0, G_17, G_18, G_4, G_40, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
+    G_1, G_17, G_18, G_4, G_40, G_43, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
     SPINDLE_SELECT, format_value, StepTable,
 )
+
+
+M_60 = t.code_key(60)
 
 
 class LineSteps(MachineState):
@@ -35,8 +38,14 @@ class LineSteps(MachineState):
         self.selected_tool = int(value)
 
     def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """M6 (manual 3.7.3): the change (the change_tool sub, or the built-in), then the spindle is
+        stopped, and a plain G43 in force compensates the new tool (3.6.12: G43 H and G43.1 do not)."""
         self.refuse_with_comp("a tool change (M6)", span)
         self._tool_change(span)
+        if self.spindle != 5:
+            self._spindle_stop()
+        if self.modal["length_offset"] == G_43 and self.length_follows_tool:
+            self._apply_length(G_43, {})
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self.coolant = set() if code == 90 else self.coolant | {code // 10}
@@ -49,13 +58,23 @@ class LineSteps(MachineState):
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
-        """G61/G61.1/G64 [P tolerance]: the planner stops at every corner or blends within P (mm)."""
+        """G61/G61.1/G64: the planner stops at every corner or blends within P (mm).
+
+        ``words`` are G64's own (manual 3.6.16: P Q R S D F, never the speed or the feed); the
+        planner uses P, the others are recorded in the event (lengths in mm, angles in degrees).
+        """
         self.modal["path_control"] = code
         tolerance = words["P"] * self.scale if "P" in words else self.config.g64_p
         if tolerance < 0:
             raise self.fail("G64 P: the path tolerance must be 0 or more", span)
-        self.canon.event(Event("path_control", self.path, self.line,
-                               {"mode": t.code_name("G", code), "p": tolerance}))
+        data: dict[str, object] = {"mode": t.code_name("G", code), "p": tolerance}
+        for letter in "QRSDF":
+            if letter in words:
+                value = words[letter] * (self.scale if letter in t.G64_LENGTHS else 1.0)
+                if value < 0:
+                    raise self.fail(f"G64 {letter}{format_value(words[letter])}: must be 0 or more", span)
+                data[letter.lower()] = value
+        self.canon.event(Event("path_control", self.path, self.line, data))
 
     def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._io(code // 10, words, span)
@@ -64,9 +83,10 @@ class LineSteps(MachineState):
         m = code // 10
         if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
             self.clamped = m == 26
-        elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M93 the alternate spindles 1..3
-            self.params.set(t.SPINDLE_SELECTED, float(m - SPINDLE_SELECT[0]))
-        self.canon.event(Event("m_code", self.path, self.line, {"m": m}))
+        elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
+            self._select_spindle(m)
+        data = {"m": m, **({"p": words["P"]} if "P" in words else {})}  # M100 P: the axis resolution factor
+        self.canon.event(Event("m_code", self.path, self.line, data))
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         if code == G_4:
@@ -152,6 +172,11 @@ class LineSteps(MachineState):
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
         self.refuse_with_comp(f"changing the tool length offset ({t.code_name('G', code)})", span)
+        self.length_follows_tool = code == G_43 and "H" not in words
+        self._apply_length(code, words, span)
+
+    def _apply_length(self, code: int, words: Mapping[str, float], span: n.Span | None = None) -> None:
+        """Set the length offset of G43 [H]/G43.1/G49 (a plain G43: the tool in the spindle, #5008)."""
         self.tool_x = 0.0
         if code == G_49:
             self.tool_z = 0.0
@@ -177,13 +202,18 @@ class LineSteps(MachineState):
         if code in PAUSE_CODES:
             self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
             return
+        # Manual 3.7.1: G17 (G18 on a lathe), G90, G94, M48, G40, M5, G1, M9; the coordinate system is
+        # kept; M60 keeps the spindle and the coolant on (nesting).  M2 ends as M30 does.
         for group, reset in (("plane", G_18 if self.config.lathe else G_17), ("distance", G_90), ("feed_mode", G_94),
-                             ("cutter_comp", G_40), ("motion", G_0)):
+                             ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
-        self.spindle = 5
-        self.coolant = set()
-        self.params.set(t.SPINDLE_ON, 0.0)
+        self.canon.event(Event("override", self.path, self.line, {"m": 48}))
+        if code != M_60:
+            self.spindle = 5
+            self.coolant = set()
+            self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
+        self._heaters_off()
         self.ended_by = f"M{code // 10}"
         self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
         raise ProgramEnd()

@@ -33,7 +33,7 @@ class Threading(MachineState):
             raise self.fail(f"{name} is not allowed while cutter compensation (G41/G42) is on", span)
         SYNC_MOTION[motion](self, words, span)
 
-    def _sync_move(self, end: list[float], pitch: float, span: n.Span) -> None:
+    def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None:
         """One synchronised move from here to ``end`` (its feed: pitch x the mean spindle speed)."""
         if xyz_distance(self.pos, end) <= 1e-12:
             return

@@ -21,6 +21,7 @@ from ..tables import (
     code_name,
     lathe_code_message,
     same_line_winner,
+    m_sub_name,
 )
 from .evaluate import evaluate
 from .facts import BlockCodes, Code
@@ -99,6 +100,20 @@ def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
                 yield at("G509", f"unknown G code {code_name('G', key)}" + (f": {hint}" if hint else ""), word.span)
             elif project.mill and key in LATHE_ONLY_G:
                 yield at("G509", lathe_code_message(key), word.span)
+
+
+@rule("G510")
+def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+    """An M code the controller has no action for runs the Sub mNNN of its number (manual 3.7.13);
+    without one it does nothing, which the run reports too."""
+    for block in project.facts(file).blocks:
+        for key, word in block.m:
+            name = m_sub_name(key)
+            if key in M_GROUPS or (name is not None and project.resolve(file, name) is not None):
+                continue
+            yield at("G510", f"{code_name('M', key)} has no built-in meaning and no Sub "
+                     f"{name or code_name('m', key)} is defined in the file or its macro files: it does nothing",
+                     word.span)
 
 
 def _probe_word(g: Iterable[Code]) -> n.Word | None:

@@ -23,13 +23,14 @@ from edingcnc_lang import nodes as n
 
 FILES = Path(__file__).resolve().parent / "files"
 BOARD = ProbeAt(HeightMap((0.0, 100.0), (0.0, 100.0), ((0.0, 0.5), (0.25, 0.75))))
-WALL_ANGLE = 2.0  # degrees: the wall the vendor's edge probing touches, at Y = 10 + X tan(2)
+WALL_ANGLE = 2.0  # degrees: the wall the edge probing touches, at Y = 5 + X tan(2)
 
 
 def touch(start: Pose, target: Pose) -> Pose | None:
     """Z moves meet the board; Y moves meet the wall."""
     if abs(target[1] - start[1]) > 1e-9:
-        wall = 10.0 + start[0] * math.tan(math.radians(WALL_ANGLE))
+        # (within reach of every probe move of the corpus: a probe that misses is an error, manual 3.6.10.1)
+        wall = 5.0 + start[0] * math.tan(math.radians(WALL_ANGLE))
         return (*target[:1], wall, *target[2:]) if min(start[1], target[1]) <= wall <= max(start[1], target[1]) else None
     return BOARD(start, target)
 
@@ -76,7 +77,7 @@ def test_every_sub_runs(name: str, sub: str, tmp_path: Path) -> None:
 def test_the_vendor_edge_probe_measures_the_wall_angle_with_one_operand_atan(tmp_path: Path) -> None:
     result = run_sub(FILES / "vendor_macro.cnc", "user_1", tmp_path)
     assert result.variables[103] == pytest.approx(WALL_ANGLE)
-    assert result.variables[5196] == pytest.approx(WALL_ANGLE)  # G68 R: the angle in #5196
+    assert result.variables[5194] == pytest.approx(WALL_ANGLE)  # G68 R in G17: the XY angle, #5194 (manual 3.1)
 
 
 def test_the_shared_zhc_grid_is_saved_and_the_engraving_follows_the_board(tmp_path: Path) -> None:
@@ -117,7 +118,7 @@ def test_the_translated_vendor_style_measures_its_angle_both_ways(tmp_path: Path
     result = run_sub(FILES / "shop_macro.cnc", "zero_set_rotation", tmp_path)
     assert result.variables[5024] == pytest.approx(math.degrees(math.atan2(3, 100)))
     assert result.variables[5025] == pytest.approx(result.variables[5024])
-    assert result.variables[5196] == pytest.approx(result.variables[5024])
+    assert result.variables[5194] == pytest.approx(result.variables[5024])  # the XY angle (manual 3.1)
 
 
 def test_the_toolsetter_measures_the_tools_the_job_uses(tmp_path: Path) -> None:

@@ -26,7 +26,8 @@ def test_moves_and_events_stream_in_program_order() -> None:
     assert stream == [("move", "rapid", 1), ("event", "spindle_speed", 2), ("event", "spindle", 2),
                       ("event", "dwell", 3), ("event", "msg", 4),
                       ("move", "linear", 5), ("event", "coolant", 6), ("event", "tool_change", 7),
-                      ("event", "end", 8)]
+                      ("event", "spindle", 7),  # M6 leaves the spindle stopped (manual 3.7.3)
+                      ("event", "override", 8), ("event", "end", 8)]  # M30 switches the overrides on (3.7.1)
 
 
 def test_dwell_seconds_follow_the_ini(tmp_path: Path) -> None:

@@ -45,7 +45,8 @@ def test_the_step_budget_counts_lines_the_same_in_files_and_strings(tmp_path: Pa
 
 def test_g74_and_g87_run_as_cycles_never_as_probe_moves() -> None:
     moves: list[Move] = []
-    run_string("G0 Z5\nG74 X1 Z-1 R1 F100\nG87 X1 Z-1 R1 K0 F100\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    run_string("M4 S100 G0 Z5\nG74 X1 Z-1 R1 F1\nG87 X1 Z-1 R1 K0 F100\n",  # both need the spindle turning
+               RunOptions(on_move=lambda m, _j: moves.append(m)))
     assert "probe" not in {m.kind for m in moves} and {m.line for m in moves} == {1, 2, 3}
     with pytest.raises(EcncError) as info:
         run_string("G0 Z5\nG87 X1 Z-1 R1 F100\n")
@@ -65,10 +66,11 @@ def test_g43_1_takes_the_length_from_k() -> None:
     assert result.machine[2] == 5.0
 
 
-def test_g28_with_only_z_makes_no_extra_move() -> None:
+def test_g28_makes_no_zero_length_move() -> None:
     moves: list[Move] = []
-    run_string("#5161=10\n#5163=-20\nG0 X5 Z5\nG28 Z7\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
-    assert [m.end[2] for m in moves if m.line == 4] == [7.0, -20.0]
+    run_string("#5161=10\n#5163=-20\nG0 X5 Z5\nG28 Z7\nG28\n", RunOptions(on_move=lambda m, _j: moves.append(m)))
+    assert [m.end[:3] for m in moves if m.line == 4] == [(5.0, 0.0, 7.0), (10.0, 0.0, 7.0), (10.0, 0.0, -20.0)]
+    assert [m for m in moves if m.line == 5] == []  # already home: nothing moves
 
 
 def test_an_unwritable_trace_is_an_error_not_a_traceback(tmp_path: Path) -> None:

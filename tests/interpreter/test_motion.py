@@ -143,7 +143,7 @@ def test_inch_arc_radius_is_converted() -> None:
 
 def test_g10_l2_l20_and_l1() -> None:
     result, _ = run("G0 X5 Y5\nG10 L20 P1 X0 Y1\n#100 = #5221 #101 = #5222\n"
-                    "G10 L1 P3 Z12 R2\nG10 L2 P0 Z3\nG10 L2 P2 X7\n")
+                    "G10 L1 P3 Z12 R2\nG10 L2 P1 Z3\nG10 L2 P2 X7\n")
     v = result.variables
     assert (v[100], v[101], v[5223], v[5241]) == (5.0, 4.0, 3.0, 7.0)
     assert (v[5403], v[5503]) == (12.0, 4.0)
@@ -151,7 +151,8 @@ def test_g10_l2_l20_and_l1() -> None:
 
 
 @pytest.mark.parametrize(("source", "words"), [
-    ("G10 L2 P10 X1\n", "P0..P9"), ("G10 L2 X1\n", "P0..P9"), ("G10 L5 P1 X1\n", "L1"),
+    ("G10 L2 P10 X1\n", "P1..P9"), ("G10 L2 X1\n", "P1..P9"), ("G10 L5 P1 X1\n", "L1"),
+    ("G10 L2 P0 X1\n", "P1..P9"), ("G10 L20 P10 X1\n", "P0..P9"),
     ("G10 L1 P0 Z1\n", "P1..P99"),
 ])
 def test_g10_errors(source: str, words: str) -> None:
@@ -220,7 +221,8 @@ def test_g68_pivot_words_do_not_move() -> None:
     result, moves = run("G0 X10 Y0\nG68 X5 Y5 R90\nG0 X10 Y0\n")
     assert len(moves) == 2
     assert close(moves[1].end[:2], (10.0, 10.0))  # (10, 0) turned 90 degrees about (5, 5)
-    assert (result.variables[5191], result.variables[5192], result.variables[5196]) == (5.0, 5.0, 90.0)
+    # manual 3.1: #5194 is the XY angle (#5195 YZ, #5196 XZ)
+    assert (result.variables[5191], result.variables[5192], result.variables[5194]) == (5.0, 5.0, 90.0)
 
 
 # ------------------------------------------------------------------ G28 / G30
@@ -235,10 +237,12 @@ def test_g28_goes_z_first_when_going_up() -> None:
         (3, "rapid", (1.0, 1.0, 30.0)), (3, "rapid", (10.0, 20.0, 30.0))]
 
 
-def test_g28_with_an_intermediate_point_moves_only_the_named_axes() -> None:
+def test_g28_goes_via_the_intermediate_point_to_the_home_of_all_axes() -> None:
+    """Manual 3.6.8: a rapid to the programmed point, then a rapid to the home position (all axes;
+    LinuxCNC homes only the named axes)."""
     moves = ends("#5161 = 10 #5162 = 20\nG0 X1 Y1 Z-5\nG28 X3\n")
-    assert moves[1] == (3, "rapid", (3.0, 1.0, -5.0))
-    assert moves[-1] == (3, "rapid", (10.0, 1.0, -5.0))
+    assert moves[1:] == [(3, "rapid", (3.0, 1.0, -5.0)), (3, "rapid", (3.0, 1.0, 0.0)),  # Z first: home is higher
+                         (3, "rapid", (10.0, 20.0, 0.0))]
 
 
 def test_g30_uses_its_own_positions_from_the_ini() -> None:
@@ -268,11 +272,12 @@ def test_probe_callback_decides_where_it_trips() -> None:
     assert (result.variables[100], result.variables[5067]) == (-7.5, 1.0)
 
 
-def test_probe_that_misses() -> None:
-    result, moves = run("G0 Z10\nG38.2 Z-20 F100\nIf [#5067 == 0]\n  #100 = 1\nEndIf\n",
-                        host=Host(probe=lambda start, target: None))
-    assert moves[-1].end[2] == -20.0
-    assert (result.variables[5067], result.variables[100]) == (0.0, 1.0)
+def test_probe_that_misses_is_an_error_at_its_line() -> None:
+    """Manual 3.6.10.1: a probe that does not trip even slightly past the target is an error."""
+    with pytest.raises(MachineError, match="without the probe tripping") as info:
+        run("G0 Z10\nG38.2 Z-20 F100\nIf [#5067 == 0]\n  #100 = 1\nEndIf\n",
+            host=Host(probe=lambda start, target: None))
+    assert info.value.location.line == 2
 
 
 PROBE_ERRORS = [
@@ -388,7 +393,7 @@ def test_feed_move_without_feed_is_g1516() -> None:
 def test_m30_resets_modes_but_not_the_coordinate_system() -> None:
     result, _ = run("G18 G91 G93 G1 X1 F100\nG10 L2 P2 X5\nG55 M3 S100 M8\nG41 D1\n#100 = #5152\nM30\n")
     assert result.variables[100] == 1.0 and result.variables[5152] == 0.0
-    for code in ("G0", "G17", "G90", "G94", "G40", "G55"):
+    for code in ("G1", "G17", "G90", "G94", "G40", "G55"):  # G1: manual 3.7.1 (LinuxCNC's M2 leaves G1 too)
         assert code in result.modal
     assert result.position[0] == -4.0 and result.ended_by == "M30"
 

@@ -19,18 +19,21 @@ def run(text: str, moves: list[Move] | None = None, events: list[Event] | None =
 
 
 def test_g74_taps_left_handed_reversing_the_spindle_at_the_bottom() -> None:
+    """Manual 3.6.20.7: F is the pitch (mm per revolution), the feed follows the spindle, which
+    reverses at the bottom; out at the same pitch to the clear level (R under G99)."""
     moves: list[Move] = []
     events: list[Event] = []
-    run("M4 S500\nG0 Z10\nG99 G74 X5 Y5 Z-8 R2 F250\n", moves, events)
-    cycle = [(m.kind, m.end[0], m.end[2], m.feed) for m in moves if m.line == 3]
-    assert cycle == [("rapid", 5.0, 10.0, 0.0), ("rapid", 5.0, 2.0, 0.0), ("linear", 5.0, -8.0, 250.0),
-                     ("linear", 5.0, 2.0, 250.0), ("rapid", 5.0, 2.0, 0.0)]
-    spindle = [e.data["m"] for e in events if e.kind == "spindle" and e.line == 3]
-    assert spindle == [3, 4]  # reversed to come out, then turning as programmed again
-    assert [e.data["rpm"] for e in events if e.kind == "spindle" and e.line == 3] == [500.0, 500.0]
+    run("M4 S500\nG0 Z10\nG99 G74 X5 Y5 Z-8 R2 F1.25\n", moves, events)
+    cycle = [(m.kind, m.end[0], m.end[2], m.feed, m.sync) for m in moves if m.line == 3]
+    assert cycle == [("rapid", 5.0, 10.0, 0.0, 0.0), ("rapid", 5.0, 2.0, 0.0, 0.0),
+                     ("linear", 5.0, -8.0, 625.0, 1.25), ("linear", 5.0, 2.0, 625.0, 1.25)]
+    spindle = [e.data for e in events if e.kind == "spindle" and e.line == 3]
+    assert [e["m"] for e in spindle] == [3, 4]  # reversed to come out, then turning as programmed again
+    assert [e["rpm"] for e in spindle] == [500.0, 500.0] and all(e["rigid_tap"] for e in spindle)
 
 
 def test_g87_back_bores_from_below() -> None:
+    """Manual 3.6.20.10, steps 2..13."""
     moves: list[Move] = []
     events: list[Event] = []
     run("M3 S800\nG0 Z5\nG98 G87 X10 Y0 Z-20 R2 I3 J0 K-12 F100\n", moves, events)
@@ -38,18 +41,19 @@ def test_g87_back_bores_from_below() -> None:
     assert path == [("rapid", 10.0, 5.0), ("rapid", 10.0, 2.0),          # over the hole, down to R
                     ("rapid", 13.0, 2.0), ("rapid", 13.0, -20.0),        # shifted past the bar, below the part
                     ("rapid", 10.0, -20.0), ("linear", 10.0, -12.0),     # centred, bore up to K
-                    ("rapid", 13.0, -12.0), ("rapid", 13.0, 5.0),        # shifted, out to the start level
+                    ("linear", 10.0, -20.0),                             # and back down at the feed
+                    ("rapid", 13.0, -20.0), ("rapid", 13.0, 5.0),        # shifted, out to the start level
                     ("rapid", 10.0, 5.0)]
     assert [e.data["m"] for e in events if e.kind == "spindle" and e.line == 3] == [5, 3, 5, 3]
     # the bar passes the part with the spindle stopped: those moves carry 0 rpm, the bore 800
-    assert [m.spindle for m in moves if m.line == 3] == [800.0, 800.0, 0.0, 0.0, 0.0, 800.0, 0.0, 0.0, 0.0]
+    assert [m.spindle for m in moves if m.line == 3] == [800.0, 800.0, 800.0, 0.0, 0.0, 800.0, 800.0, 0.0, 0.0, 0.0]
     after = run("M3 S800\nG0 Z5\nG98 G87 X10 Y0 Z-20 R2 I3 J0 K-12 F100\n").spindle
     assert (after["m"], after["rpm"]) == (3, 800.0)  # turning as programmed after the cycle
 
 
 @pytest.mark.parametrize("text, message", [
-    ("G87 X0 Z-20 R2 F100\n", "G87 needs K"),
-    ("G87 X0 Z-20 R2 K5 F100\n", "must lie between"),
+    ("M3 S800\nG87 X0 Z-20 R2 F100\n", "G87 needs K"),
+    ("M3 S800\nG87 X0 Z-20 R2 K5 F100\n", "must lie between"),
 ])
 def test_g87_mistakes(text: str, message: str) -> None:
     with pytest.raises(MachineError, match=message):

@@ -137,4 +137,5 @@ def test_a_failed_run_emits_the_held_move_before_the_error(monkeypatch: pytest.M
 
 
 def test_m30_flushes_before_the_end_event(monkeypatch: pytest.MonkeyPatch) -> None:
-    assert _run(monkeypatch, "G1 X1 F100\nM30\n") == [("then -", 1), ("end", 2)]
+    # M30 switches the overrides on (M48, manual 3.7.1) before it ends
+    assert _run(monkeypatch, "G1 X1 F100\nM30\n") == [("then -", 1), ("override", 2), ("end", 2)]

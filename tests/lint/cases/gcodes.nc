@@ -23,7 +23,9 @@ G0 X1 F0                 ; rapids ignore the feed
 T99 M6
 T100 M6                  ; expect: G506
 M3 M8 M48 M54 P1
-M3 M8 M48 M54 P1 M62     ; expect: G507
+M3 M8 M48 M54 P1 M62     ; expect: G507,G510
+M123                     ; expect: G510
+M104 S200 M100           ; 3D printing codes (manual 3.7.12) are built-in
 G7 G0 X20                ; expect: G509
 G12 X1                   ; expect: G509
 G96 S100 D2000 M3

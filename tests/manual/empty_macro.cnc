@@ -1,0 +1,2 @@
+;@unit mm
+; No macros: the manual cases run the built-in codes alone.
