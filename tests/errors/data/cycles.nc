@@ -4,5 +4,6 @@
 G87 X0 Z-20 R2 F100
 ;### 1: G87 needs K, the level the back bore ends at (between the bottom and R)
 ---
+M3 S1000
 G87 X0 Z-20 R2 K5 F100
 ;### 1: G87 K (5) must lie between the bottom Z (-20) and R (2)

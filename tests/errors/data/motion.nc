@@ -16,10 +16,10 @@ G2 X5 I0 J0 F100
 ;### 1: the arc centre lies on its start point (radius 0); start (0.0000, 0.0000), centre (0.0000, 0.0000), end (5.0000, 0.0000) in the XY plane
 ---
 G10 L2 P10 X1
-;### 1: G10 L2 needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)
+;### 1: G10 L2 needs a coordinate system P1..P9 (P1 = G54 .. P9 = G59.3)
 ---
 G10 L2 X1
-;### 1: G10 L2 needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)
+;### 1: G10 L2 needs a coordinate system P1..P9 (P1 = G54 .. P9 = G59.3)
 ---
 G10 L5 P1 X1
 ;### 1: G10 needs L1, L10 or L11 (tool table), L2 or L20 (coordinate system)
