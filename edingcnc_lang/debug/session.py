@@ -1,0 +1,441 @@
+"""Run control: the job runs in a worker thread and the observer blocks it while the user looks.
+
+The adapter thread only sets what the user asked (``resume``, ``pause``, breakpoints) and reads
+the stopped machine; everything that changes the run happens in the worker.  With no breakpoint
+in a chunk of plain lines and no step or pause pending, the chunk keeps the bulk path, so a long
+job runs at nearly ``ecnc run`` speed until something is there to stop at.
+"""
+from __future__ import annotations
+
+import shutil
+import sys
+import tempfile
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from .. import nodes as n
+from ..canon import Pose
+from ..errors import EXIT_OK, EcncError
+from ..host import DialogAnswer, Host
+from ..interpreter.observe import Observer
+from ..interpreter.state import CallFrame, MachineState
+from ..runner import Run, RunOptions
+from .breakpoints import Breakpoints, reached
+from .expressions import evaluate
+from .history import History, Input, Replay, Rewind
+from .protocol import Channel
+
+LIVE, SEARCH, REPLAY = "live", "search", "replay"
+BACK_COMMANDS = ("stepBack", "reverseContinue")
+
+
+class Terminate(BaseException):
+    """Raised in the worker to end the run at once (disconnect, terminate)."""
+
+
+class _SearchDone(BaseException):
+    """A search pass reached the statement it was stepping back from."""
+
+
+@dataclass
+class Launch:
+    """The launch request's arguments, paths resolved."""
+
+    program: Path
+    ini: Path | None = None
+    macro: Path | None = None
+    user_macro: Path | None = None
+    answers: list[DialogAnswer] = field(default_factory=list)
+    probe_surface: Path | None = None
+    stop_on_entry: bool = False
+    no_debug: bool = False
+    log_dir: Path | None = None
+    max_steps: int | None = None
+
+
+@dataclass(frozen=True)
+class Frame:
+    """One frame of the stack shown at a stop: a sub (or the job) and where it is."""
+
+    name: str
+    path: str
+    line: int
+
+
+class Session(Observer):
+    """One debugged run (and the re-runs that step back in it)."""
+
+    def __init__(self, channel: Channel, launch: Launch) -> None:
+        self.channel = channel
+        self.launch = launch
+        self.breakpoints = Breakpoints()
+        self.stop_on_errors = True
+        self.history = History()
+        self.cv = threading.Condition()
+        self.run: Run | None = None
+        self.stopped = False
+        self.frames: list[Frame] = []
+        self.writers: dict[int, tuple[str, int]] = {}
+        self.waiting: str | None = None  # "dialog" | "probe" while the machine asks the operator
+        self.error: EcncError | None = None  # the run error the machine stopped at
+        self._resume: str | None = None
+        self._answer: object = None
+        self._pause = False
+        self._terminate = False
+        self._mode: str | None = "in" if launch.stop_on_entry else None  # "in" | "over" | "out"
+        self._mode_depth = 0
+        self._reason = "entry" if launch.stop_on_entry else "step"
+        self._function_stop = False
+        self.last_step = 0
+        self._phase = LIVE
+        self._replay: Replay | None = None
+        self._target = 0
+        self._target_chunk: tuple[str, int] | None = None
+        self._chunk: tuple[str, int] | None = None
+        self._search: Rewind | None = None
+        self._found: tuple[int, tuple[str, int] | None] | None = None
+        self._first: tuple[int, tuple[str, int] | None] | None = None
+        self._scripted = 0
+        self._error_frames: list[Frame] | None = None
+        self._scratch = Path(tempfile.mkdtemp(prefix="ecnc-debug-"))  # re-runs write their log files here
+        self.thread = threading.Thread(target=self._work, name="machine", daemon=True)
+
+    # ------------------------------------------------------------------ the adapter's side
+
+    def start(self) -> None:
+        self.thread.start()
+
+    def resume(self, command: str) -> bool:
+        """Continue, step or step back from a stop; False if the machine is not stopped."""
+        with self.cv:
+            if not self.stopped:
+                return False
+            self._resume = command
+            self.cv.notify_all()
+            return True
+
+    def answer(self, value: object) -> None:
+        """The operator's answer to the dialog or probe the machine waits at; the run goes on."""
+        with self.cv:
+            self._answer = value
+            self._resume = "answer"
+            self.cv.notify_all()
+
+    def pause(self) -> None:
+        self._pause = True
+
+    def terminate(self) -> None:
+        self._terminate = True
+        self.resume("terminate")
+
+    def edit(self, index: int, value: float) -> None:
+        """Set a parameter at the stop (setVariable); replayed at this statement after a step back."""
+        assert self.run is not None
+        interp = self.run.interpreter
+        interp.params.write(index, value, interp.where())
+        self.writers[index] = ("(debugger)", self.last_step)
+        self.history.record(Input(self.last_step, "edit", (index, value)))
+
+    # ------------------------------------------------------------------ the worker
+
+    def _work(self) -> None:
+        code = EXIT_OK
+        rewind: Rewind | None = None
+        while True:
+            try:
+                if rewind is not None:
+                    self._prepare(rewind)
+                self._execute()
+                break
+            except Rewind as back:
+                rewind = back
+            except Terminate:
+                break
+            except EcncError as err:
+                code = err.exit_code
+                try:
+                    rewind = self._stop_at_error(err)
+                except Terminate:
+                    break
+                if rewind is None:
+                    break
+            except Exception as err:  # a bug of ours: say so in the console, end the session cleanly
+                self.channel.output(f"internal error of the debugger: {type(err).__name__}: {err}", "stderr")
+                code = 70
+                break
+        shutil.rmtree(self._scratch, ignore_errors=True)
+        self.channel.event("exited", {"exitCode": code})
+        self.channel.event("terminated")
+
+    def _execute(self) -> None:
+        launch = self.launch
+        probe = None
+        if launch.probe_surface is not None:
+            from ..heightmap import ProbeAt, read_surface
+
+            probe = ProbeAt(read_surface(str(launch.probe_surface)))
+        self._probe_surface = probe
+        live = self._phase == LIVE
+        options = RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro,
+                             host=Host(dialog=self._dialog, probe=self._probe, message=self._message),
+                             log_dir=self._log_dir() if live else self._scratch, plan=False,
+                             observer=None if launch.no_debug else self)
+        if launch.max_steps is not None:
+            options.max_steps = launch.max_steps
+        run = Run(options)
+        self.writers = {}
+        interp = run.interpreter
+        run.interpreter.params.on_write = lambda index: self.writers.__setitem__(index, (interp.path, interp.line))
+        self.run = run
+        self.error = None
+        self._error_frames = None
+        result = run.execute_file(launch.program)
+        if self._phase == LIVE:
+            self.channel.output(f"the job ended ({result.ended_by}) after {result.moves:,} moves")
+
+    def _log_dir(self) -> Path:
+        return self.launch.log_dir or self.launch.program.resolve().parent
+
+    def _prepare(self, rewind: Rewind) -> None:
+        """Find where a step back goes (a search re-run), then set up the re-run that stops there."""
+        if rewind.exact:
+            target, chunk = rewind.step, None
+        else:
+            self._phase, self._search, self._found, self._first = SEARCH, rewind, None, None
+            self._replay = self.history.until(rewind.step)
+            try:
+                self._execute()
+            except _SearchDone:
+                pass
+            except EcncError:
+                pass  # the search ran into the error the user steps back from
+            found = self._found or self._first or (rewind.step, None)
+            target, chunk = found
+        self.history.truncate(target)
+        self._scripted = self.history.scripted_used()
+        self._replay = self.history.until(target)
+        self._phase, self._target, self._target_chunk = REPLAY, target, chunk
+        self._mode, self._function_stop, self._pause = None, False, False
+        self._reason = "step" if rewind.kind == "stepBack" else "breakpoint" if self._found else "entry"
+
+    def _stop_at_error(self, err: EcncError) -> Rewind | None:
+        """The run failed: stop there when the exception filter is on (the user may step back)."""
+        self.channel.output(err.format(), "stderr")
+        if self._phase != LIVE:  # a re-run failed where the run did not (our bug): end, do not loop
+            self.channel.output("internal error of the debugger: the re-run went another way", "stderr")
+            return None
+        if not self.stop_on_errors or self.run is None or self.launch.no_debug:
+            return None
+        self.error = err
+        where = err.location
+        self.frames = self._error_frames or [Frame("job", where.path if where else "", where.line if where else 0)]
+        command = self._wait("exception", {"description": err.message, "text": err.message})
+        if command in BACK_COMMANDS:
+            depth = len(self.frames) - 1
+            return Rewind(command, self.last_step, depth, exact=command == "stepBack")
+        return None
+
+    # ------------------------------------------------------------------ stopping
+
+    def _stop(self, machine: MachineState, reason: str, extra: dict[str, Any] | None = None) -> str:
+        """Stop and wait for the user; returns the command that ended the stop (after acting on it)."""
+        self.frames = frames_of(machine)
+        command = self._wait(reason, extra)
+        if command == "answer":
+            return command
+        if command in BACK_COMMANDS:
+            if self.history.full:
+                self.channel.output("cannot step back: the session has more than 10,000 inputs to replay",
+                                    "stderr")
+            else:
+                raise Rewind(command, self.last_step, len(machine.stack))
+        self._mode = {"next": "over", "stepIn": "in", "stepOut": "out"}.get(command)
+        self._mode_depth = len(machine.stack)
+        self._reason = "step"
+        return command
+
+    def _wait(self, reason: str, extra: dict[str, Any] | None = None) -> str:
+        with self.cv:
+            self.stopped = True
+            self._resume = None
+            self.channel.event("stopped", {"reason": reason, "threadId": 1, "allThreadsStopped": True,
+                                           **(extra or {})})
+            while self._resume is None:
+                self.cv.wait()
+            command = self._resume
+            self.stopped = False
+        if command == "terminate" or self._terminate:
+            raise Terminate()
+        return command
+
+    # ------------------------------------------------------------------ the observer seam
+
+    def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
+        step = machine.steps
+        self.last_step = step
+        if self._phase != LIVE:
+            self._rerun_statement(machine, stmt, step)
+            return
+        if self._terminate:
+            raise Terminate()
+        if self._pause:
+            self._pause = False
+            self._stop(machine, "pause")
+            return
+        mode = self._mode
+        if mode is not None:
+            depth = len(machine.stack)
+            if mode == "in" or (mode == "over" and depth <= self._mode_depth) or depth < self._mode_depth:
+                self._stop(machine, self._reason)
+                return
+        if self._function_stop:
+            self._function_stop = False
+            self._stop(machine, "function breakpoint")
+            return
+        lines = self.breakpoints.watched(machine.path)
+        if lines:
+            bp = lines.get(machine.line)
+            if bp is not None:
+                decision = reached(bp, machine.evaluator)
+                if decision.log is not None:
+                    self.channel.output(decision.log, "console", machine.path, machine.line)
+                if decision.stop:
+                    self._stop(machine, "breakpoint", {"hitBreakpointIds": [bp.id]})
+
+    def line_by_line(self, machine: MachineState, run: n.PlainRun) -> bool:
+        if self._phase == SEARCH:
+            self._chunk = (run.path, run.lines[0][0])
+            return True
+        if self._phase == REPLAY:
+            return (run.path, run.lines[0][0]) == self._target_chunk
+        return (self._pause or self._terminate or self._mode is not None
+                or self.breakpoints.any_between(run.path, run.lines[0][0], run.lines[-1][0]))
+
+    def call(self, machine: MachineState, frame: CallFrame, sub: n.Sub) -> None:
+        if self._phase == LIVE:
+            bp = self.breakpoints.functions.get(frame.name)
+            if bp is not None:
+                decision = reached(bp, machine.evaluator)
+                if decision.log is not None:
+                    self.channel.output(decision.log, "console", machine.path, machine.line)
+                self._function_stop = self._function_stop or decision.stop
+
+    def ret(self, machine: MachineState, frame: CallFrame) -> None:
+        if self._error_frames is None and isinstance(sys.exc_info()[1], EcncError):
+            self._error_frames = frames_of(machine)  # the stack as it was where the error happened
+
+    def _rerun_statement(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:
+        """A statement of a search or replay re-run: the user's edits, then the way back."""
+        assert self._replay is not None
+        for index, value in self._replay.edits.get(step, ()):
+            machine.params.write(index, value)
+        if self._phase == SEARCH:
+            self._searching(machine, stmt, step)
+            return
+        if step >= self._target:
+            self._phase = LIVE
+            self._relocate_log(machine)
+            self._stop(machine, self._reason)
+
+    def _searching(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:
+        back = self._search
+        assert back is not None
+        if step >= back.step:
+            raise _SearchDone()
+        depth = len(machine.stack)
+        if depth == 0 and type(stmt) is not n.PlainBlock:
+            self._chunk = None  # a top-level statement of its own: no chunk of plain lines holds it
+        here = (step, self._chunk)
+        if self._first is None:
+            self._first = here
+        if back.kind == "stepBack":
+            if depth <= back.depth:
+                self._found = here
+        else:
+            lines = self.breakpoints.watched(machine.path)
+            bp = lines.get(machine.line) if lines else None
+            if bp is not None and bp.log is None:
+                try:
+                    if bp.condition is None or evaluate(machine.evaluator, bp.condition) != 0.0:
+                        self._found = here
+                except EcncError:
+                    self._found = here
+
+    def _relocate_log(self, machine: MachineState) -> None:
+        """A re-run's log file went to the scratch folder; from here on the real one is written."""
+        log_file = getattr(machine, "_log_file", None)
+        machine.log_dir = self._log_dir()
+        if log_file is not None and self._scratch in log_file.parents:
+            machine._log_file = self._log_dir() / log_file.relative_to(self._scratch)  # type: ignore[attr-defined]
+
+    # ------------------------------------------------------------------ the operator's part
+
+    def _message(self, kind: str, text: str, path: str, line: int) -> None:
+        if self._phase == LIVE and kind != "dialog":
+            label = {"msg": "msg", "warn": "warning", "error": "error", "log": "log"}.get(kind, kind)
+            self.channel.output(f"{label}: {text}", "stderr" if kind == "error" else "stdout", path, line)
+
+    def _dialog(self, title: str, fields: Any) -> DialogAnswer | None:
+        if self._phase != LIVE:
+            assert self._replay is not None
+            given = self._replay.next("dialog")
+            return given.value if given is not None else None  # type: ignore[return-value]
+        if self._scripted < len(self.launch.answers):
+            answer = self.launch.answers[self._scripted]
+            self._scripted += 1
+            self.history.record(Input(self.last_step, "dialog", answer, scripted=True))
+            return answer
+        if self.launch.no_debug or self.run is None:
+            return None
+        shown = "; ".join(f"{f.label} #{f.index} = {f.value:g}" for f in fields) if fields else "no fields"
+        self.channel.output(f'dlgmsg "{title}": {shown}\nanswer in the debug console: ok #N=V ... or cancel '
+                            "(continue answers ok, values unchanged)")
+        value = self._ask(self.run.interpreter, "dialog", f"dlgmsg \"{title}\" waits for an answer")
+        answer = value if isinstance(value, DialogAnswer) else DialogAnswer()
+        self.history.record(Input(self.last_step, "dialog", answer))
+        return answer
+
+    def _probe(self, start: Pose, target: Pose) -> Pose | None:
+        if self._phase != LIVE:
+            assert self._replay is not None
+            given = self._replay.next("probe")
+            return given.value if given is not None else target  # type: ignore[return-value]
+        if self._probe_surface is not None:
+            trip = self._probe_surface(start, target)
+        elif self.launch.no_debug or self.run is None:
+            trip = target
+        else:
+            where = " ".join(f"{a}{v:g}" for a, v in zip("XYZABC", target))
+            self.channel.output(f"G38.2 towards {where} (machine): answer in the debug console: ok (trips at "
+                                "the target), miss (no contact) or trip Z-3.2 (trips there)")
+            value = self._ask(self.run.interpreter, "probe", "G38.2 waits for the probe")
+            trip = value[1] if isinstance(value, tuple) else target
+        self.history.record(Input(self.last_step, "probe", trip))
+        return trip
+
+    def _ask(self, machine: MachineState, what: str, text: str) -> object:
+        """Stop until the console answers (or the user continues: the default answer)."""
+        self.waiting, self._answer = what, None
+        try:
+            mode, depth, reason = self._mode, self._mode_depth, self._reason
+            command = self._stop(machine, what, {"description": text, "text": text})
+            if command == "answer":  # the run goes on as it was going before it asked
+                self._mode, self._mode_depth, self._reason = mode, depth, reason
+                self.channel.event("continued", {"threadId": 1, "allThreadsContinued": True})
+                return self._answer
+            return None
+        finally:
+            self.waiting = None
+
+
+def frames_of(machine: MachineState) -> list[Frame]:
+    """The stack, innermost first: each active sub at its current line, the job at its call."""
+    stack = machine.stack
+    found = [Frame(stack[-1].name if stack else "job", machine.path, machine.line)]
+    for i in range(len(stack) - 1, -1, -1):
+        found.append(Frame(stack[i - 1].name if i > 0 else "job", stack[i].path, stack[i].line))
+    return found
+
+
