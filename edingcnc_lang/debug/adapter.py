@@ -188,6 +188,10 @@ class Adapter:
             if session.waiting == "dialog":
                 answer = dialog_answer(text)
                 if answer is not None:
+                    unknown = sorted(set(answer.values) - set(session.fields))
+                    if unknown:
+                        fields = ", ".join(f"#{i}" for i in session.fields) or "none"
+                        raise RequestError(f"#{unknown[0]} is not a field of this dialog (its fields: {fields})")
                     session.answer(answer)
                     return "answered: " + _shown(answer)
             elif session.waiting == "probe":

@@ -79,6 +79,7 @@ class Session(Observer):
         self.frames: list[Frame] = []
         self.writers: dict[int, tuple[str, int]] = {}
         self.waiting: str | None = None  # "dialog" | "probe" while the machine asks the operator
+        self.fields: list[int] = []  # the parameters the waiting dialog edits
         self.error: EcncError | None = None  # the run error the machine stopped at
         self._resume: str | None = None
         self._answer: object = None
@@ -144,6 +145,7 @@ class Session(Observer):
         code = EXIT_OK
         rewind: Rewind | None = None
         while True:
+            code = EXIT_OK
             try:
                 if rewind is not None:
                     self._prepare(rewind)
@@ -392,6 +394,7 @@ class Session(Observer):
         shown = "; ".join(f"{f.label} #{f.index} = {f.value:g}" for f in fields) if fields else "no fields"
         self.channel.output(f'dlgmsg "{title}": {shown}\nanswer in the debug console: ok #N=V ... or cancel '
                             "(continue answers ok, values unchanged)")
+        self.fields = [f.index for f in fields]
         value = self._ask(self.run.interpreter, "dialog", f"dlgmsg \"{title}\" waits for an answer")
         answer = value if isinstance(value, DialogAnswer) else DialogAnswer()
         self.history.record(Input(self.last_step, "dialog", answer))
