@@ -270,8 +270,8 @@ def launch_of(args: dict[str, Any]) -> Launch:
 def known_subs(launch: Launch) -> dict[str, str]:
     """Every sub the run can call, by lower-case name, with its file; a job or macro file that
     does not load is the launch's error."""
-    from ..parser import check_file
     from ..runner import Run, RunOptions
+    from .breakpoints import checked
 
     try:
         run = Run(RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro, plan=False))
@@ -279,7 +279,7 @@ def known_subs(launch: Launch) -> dict[str, str]:
         for path, program in run.load_macros():
             for name in program.subs:
                 found.setdefault(name.lower(), str(path))
-        for name in check_file(launch.program).subs:
+        for name in checked(str(launch.program)).subs:
             found[name.lower()] = str(launch.program)
         return found
     except EcncError as err:

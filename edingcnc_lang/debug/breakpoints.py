@@ -1,7 +1,7 @@
 """Breakpoints: where the run stops, and on which condition.
 
 A source breakpoint is verified against the statements of its file: it moves to the next line a
-statement starts on (never into another Sub), or is refused with the reason.  Conditions and log
+statement starts on, or is refused with the reason.  Conditions and log
 messages are the dialect's expressions (``expressions``); a hit condition is ``N`` or ``== N``
 (the Nth hit), ``>= N``, ``> N`` or ``% N`` (every Nth hit).  A function breakpoint names a Sub,
 ``M6`` (the tool-change sub) or a user M code (``M100``).
@@ -19,7 +19,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..errors import EcncError
 from ..evaluator import Evaluator
-from ..parser import read_statements
+from ..parser import CheckedFile, check_file, read_statements
 from .expressions import ExpressionError, evaluate, interpolate, parse_expression
 
 HIT = re.compile(r"\s*(==|>=|>|%)?\s*(\d+)\s*$")
@@ -175,10 +175,25 @@ def sub_of(name: str) -> str:
     return word.lower()
 
 
+@lru_cache(maxsize=8)
+def _checked(key: str, stamp: float) -> CheckedFile:
+    return check_file(key)
+
+
+def checked(path: str) -> CheckedFile:
+    """The job check of a file (its subs, where its non-plain lines are), read once per version:
+    the launch and the breakpoints of a 200,000-line job share it."""
+    key = file_key(path)
+    return _checked(key, os.stat(key).st_mtime)
+
+
 @lru_cache(maxsize=32)
 def _lines_of(key: str, stamp: float) -> tuple[int, ...] | str:
     try:
-        reader = read_statements(key, tolerant=True)
+        try:  # the fast way: plain lines are listed, not parsed
+            reader = read_statements(key, mode="run", non_plain=_checked(key, stamp).non_plain)
+        except EcncError:  # a macro file with lines that do not parse: those wait as BadLine
+            reader = read_statements(key, tolerant=True)
         return tuple(sorted(set(_starts(reader))))
     except (EcncError, OSError) as err:
         return f"cannot read {key}: {getattr(err, 'message', None) or getattr(err, 'strerror', None) or err}"
