@@ -96,10 +96,14 @@ class Session(Observer):
         self._target_chunk: tuple[str, int] | None = None
         self._chunk: tuple[str, int] | None = None
         self._search: Rewind | None = None
+        self._refine: tuple[str, int] | None = None  # the one chunk a second search runs line by line
+        self._open_bulk: tuple[str, int] | None = None  # a chunk the search ran in bulk, not yet left
         self._found: tuple[int, tuple[str, int] | None] | None = None
         self._first: tuple[int, tuple[str, int] | None] | None = None
         self._scripted = 0
         self._error_frames: list[Frame] | None = None
+        self._error_at: tuple[str, int] | None = None  # where the run failed, for the search back to it
+        self._last_where: tuple[str, int] = ("", 0)
         self._scratch = Path(tempfile.mkdtemp(prefix="ecnc-debug-"))  # re-runs write their log files here
         self.thread = threading.Thread(target=self._work, name="machine", daemon=True)
 
@@ -201,26 +205,35 @@ class Session(Observer):
         return self.launch.log_dir or self.launch.program.resolve().parent
 
     def _prepare(self, rewind: Rewind) -> None:
-        """Find where a step back goes (a search re-run), then set up the re-run that stops there."""
+        """Find where a step back goes (search re-runs), then set up the re-run that stops there."""
         if rewind.exact:
             target, chunk = rewind.step, None
         else:
-            self._phase, self._search, self._found, self._first = SEARCH, rewind, None, None
-            self._replay = self.history.until(rewind.step)
-            try:
-                self._execute()
-            except _SearchDone:
-                pass
-            except EcncError:
-                pass  # the search ran into the error the user steps back from
-            found = self._found or self._first or (rewind.step, None)
-            target, chunk = found
+            self._searching_pass(rewind, None)
+            if rewind.kind == "stepBack" and rewind.depth == 0 and self._open_bulk is not None:
+                # the statement before may be a plain line the bulk path ran unseen: look again,
+                # line by line in that chunk only
+                self._searching_pass(rewind, self._open_bulk)
+            target, chunk = self._found or self._first or (rewind.step, None)
         self.history.truncate(target)
         self._scripted = self.history.scripted_used()
         self._replay = self.history.until(target)
         self._phase, self._target, self._target_chunk = REPLAY, target, chunk
         self._mode, self._function_stop, self._pause = None, False, False
-        self._reason = "step" if rewind.kind == "stepBack" else "breakpoint" if self._found else "entry"
+        self._reason = ("step" if rewind.kind in ("stepBack", "error")
+                        else "breakpoint" if self._found else "entry")
+
+    def _searching_pass(self, rewind: Rewind, refine: tuple[str, int] | None) -> None:
+        """A re-run up to statement ``rewind.step`` that notes the statement to go back to."""
+        self._phase, self._search, self._found, self._first = SEARCH, rewind, None, None
+        self._refine, self._open_bulk, self._chunk = refine, None, None
+        self._replay = self.history.until(rewind.step)
+        try:
+            self._execute()
+        except _SearchDone:
+            pass
+        except EcncError:
+            pass  # the search ran into the error the user steps back from
 
     def _stop_at_error(self, err: EcncError) -> Rewind | None:
         """The run failed: stop there when the exception filter is on (the user may step back)."""
@@ -234,9 +247,12 @@ class Session(Observer):
         where = err.location
         self.frames = self._error_frames or [Frame("job", where.path if where else "", where.line if where else 0)]
         command = self._wait("exception", {"description": err.message, "text": err.message})
-        if command in BACK_COMMANDS:
-            depth = len(self.frames) - 1
-            return Rewind(command, self.last_step, depth, exact=command == "stepBack")
+        if command == "stepBack" and where is not None and (where.path, where.line) == self._last_where:
+            return Rewind(command, self.last_step, 0, exact=True)  # the failing statement, before it ran
+        if command in BACK_COMMANDS:  # it failed in a plain line the bulk path ran: find that line
+            self._error_at = (where.path, where.line) if where is not None else None
+            return Rewind("error" if command == "stepBack" else command, self.run.interpreter.steps + 1,
+                          len(self.frames) - 1)
         return None
 
     # ------------------------------------------------------------------ stopping
@@ -277,6 +293,7 @@ class Session(Observer):
     def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
         step = machine.steps
         self.last_step = step
+        self._last_where = (machine.path, machine.line)
         if self._phase != LIVE:
             self._rerun_statement(machine, stmt, step)
             return
@@ -308,8 +325,19 @@ class Session(Observer):
 
     def line_by_line(self, machine: MachineState, run: n.PlainRun) -> bool:
         if self._phase == SEARCH:
-            self._chunk = (run.path, run.lines[0][0])
-            return True
+            self._chunk = key = (run.path, run.lines[0][0])
+            back = self._search
+            assert back is not None
+            if self._refine is not None:
+                seen = key == self._refine
+            elif back.kind == "stepBack":
+                seen = False
+            elif back.kind == "error":
+                seen = True
+            else:
+                seen = self.breakpoints.any_between(run.path, run.lines[0][0], run.lines[-1][0])
+            self._open_bulk = None if seen else key
+            return seen
         if self._phase == REPLAY:
             return (run.path, run.lines[0][0]) == self._target_chunk
         return (self._pause or self._terminate or self._mode is not None
@@ -344,16 +372,20 @@ class Session(Observer):
     def _searching(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:
         back = self._search
         assert back is not None
-        if step >= back.step:
+        if step >= back.step and back.kind != "error":
             raise _SearchDone()
         depth = len(machine.stack)
         if depth == 0 and type(stmt) is not n.PlainBlock:
-            self._chunk = None  # a top-level statement of its own: no chunk of plain lines holds it
+            # a top-level statement of its own: no chunk of plain lines holds it
+            self._chunk = self._open_bulk = None
         here = (step, self._chunk)
         if self._first is None:
             self._first = here
         if back.kind == "stepBack":
             if depth <= back.depth:
+                self._found = here
+        elif back.kind == "error":
+            if self._error_at == (machine.path, machine.line):
                 self._found = here
         else:
             lines = self.breakpoints.watched(machine.path)

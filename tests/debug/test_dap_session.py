@@ -233,3 +233,20 @@ def test_launch_errors_are_failed_responses(tmp_path, client) -> None:
     bad = write(tmp_path, "If [1]\nG0 X1\n")
     broken = client.raw("launch", program=str(bad))
     assert not broken["success"] and f"{bad}:" in broken["message"]
+
+
+def test_stepping_back_from_an_error_in_a_plain_line_of_the_bulk_path(tmp_path, client) -> None:
+    """The motion stage refuses a CAM line the bulk path ran unseen: back to it, and before it."""
+    lines = "".join(f"G1 X{i % 50} Y{i % 7} F800\n" for i in range(3000))
+    job = write(tmp_path, lines + "G0 X99999\n" + "G1 X1\n" * 600 + "M30\n")
+    (tmp_path / "cnc.ini").write_bytes(b"[JOINT_0]\r\nname = X\r\npositiveLimit = 600\r\nnegativeLimit = 0\r\n")
+    client.start({}, program=job.name, ini="cnc.ini", cwd=str(tmp_path))
+    stop = client.wait("stopped")
+    assert stop["reason"] == "exception" and "outside its limits [0, 600]" in stop["text"]
+    assert client.stack() == [("job", 3001)]
+    client.step("stepBack")
+    assert client.stack() == [("job", 3001)] and client.value("#5001") == "49"
+    client.step("stepBack")
+    assert client.stack() == [("job", 3000)] and client.value("#5001") == "48"
+    client.step("next")
+    assert client.stack() == [("job", 3001)] and client.value("#5001") == "49"
