@@ -127,7 +127,7 @@ def main() -> None:
         big = Path(tmp) / "big.nc"
         write_job(big, 1_000_000)
         print(f"pause in a 1,000,000-line job: stopped {pause_latency(big) * 1000:.0f} ms after the request")
-        print(f"step back from line {total - 2:,} of the {args.lines:,}-line job: {step_back(job, total - 2):.2f} s")
+        print(f"step back from line {total - 3:,} (M30) of the {args.lines:,}-line job: {step_back(job, total - 3):.2f} s")
 
 
 if __name__ == "__main__":
