@@ -86,6 +86,13 @@ class Adapter:
     def on_launch(self, args: dict[str, Any]) -> None:
         launch = launch_of(args)
         self.subs = known_subs(launch)
+        if launch.probe_surface is not None:
+            from ..heightmap import read_surface
+
+            try:
+                read_surface(launch.probe_surface)
+            except EcncError as err:
+                raise RequestError(err.format()) from None
         self.session = Session(self.channel, launch)
 
     def on_setBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:

@@ -18,7 +18,7 @@ from typing import Any
 from .. import nodes as n
 from ..canon import Pose
 from ..errors import EXIT_OK, EcncError
-from ..host import DialogAnswer, Host
+from ..host import DialogAnswer, Host, ProbeCallback
 from ..interpreter.observe import Observer
 from ..interpreter.state import CallFrame, MachineState
 from ..runner import Run, RunOptions
@@ -29,6 +29,7 @@ from .protocol import Channel
 
 LIVE, SEARCH, REPLAY = "live", "search", "replay"
 BACK_COMMANDS = ("stepBack", "reverseContinue")
+SET_BY_USER = "the debugger"  # the writer of a parameter set with setVariable or in the console
 
 
 class Terminate(BaseException):
@@ -104,7 +105,8 @@ class Session(Observer):
         self._error_frames: list[Frame] | None = None
         self._error_at: tuple[str, int] | None = None  # where the run failed, for the search back to it
         self._last_where: tuple[str, int] = ("", 0)
-        self._scratch = Path(tempfile.mkdtemp(prefix="ecnc-debug-"))  # re-runs write their log files here
+        self._scratch = Path()  # the folder re-runs write their log files to (made when the run starts)
+        self._probe_surface: ProbeCallback | None = None
         self.thread = threading.Thread(target=self._work, name="machine", daemon=True)
 
     # ------------------------------------------------------------------ the adapter's side
@@ -140,12 +142,13 @@ class Session(Observer):
         assert self.run is not None
         interp = self.run.interpreter
         interp.params.write(index, value, interp.where())
-        self.writers[index] = ("(debugger)", self.last_step)
+        self.writers[index] = (SET_BY_USER, 0)
         self.history.record(Input(self.last_step, "edit", (index, value)))
 
     # ------------------------------------------------------------------ the worker
 
     def _work(self) -> None:
+        self._scratch = Path(tempfile.mkdtemp(prefix="ecnc-debug-"))
         code = EXIT_OK
         rewind: Rewind | None = None
         while True:
@@ -177,12 +180,10 @@ class Session(Observer):
 
     def _execute(self) -> None:
         launch = self.launch
-        probe = None
         if launch.probe_surface is not None:
             from ..heightmap import ProbeAt, read_surface
 
-            probe = ProbeAt(read_surface(str(launch.probe_surface)))
-        self._probe_surface = probe
+            self._probe_surface = ProbeAt(read_surface(str(launch.probe_surface)))
         live = self._phase == LIVE
         options = RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro,
                              host=Host(dialog=self._dialog, probe=self._probe, message=self._message),

@@ -65,7 +65,7 @@ def parameter(run: Run, index: int, writers: Writers) -> dict[str, Any]:
     what = [entry.title] if entry is not None else []
     if index in writers:
         path, line = writers[index]
-        what.append(f"written at {os.path.basename(path)}:{line}")
+        what.append(f"written at {os.path.basename(path)}:{line}" if line else f"set in {path}")
     return {"name": f"#{index}", "value": format_value(run.interpreter.params.read(index)),
             "type": " · ".join(what), "evaluateName": f"#{index}", "variablesReference": 0}
 

@@ -61,6 +61,7 @@ def test_a_tool_change_sub_debugged_from_a_job(tmp_path, client) -> None:
     # set a persistent variable, from the Variables view and from the console
     assert client.request("setVariable", variablesReference=2, name="#4005", value="[10 + 5]")["value"] == "15"
     assert client.request("evaluate", expression="#4006 = 7", context="repl")["result"] == "#4006 = 7"
+    assert client.scope("Persistent")["#4006"]["type"] == "persistent user variable · set in the debugger"
     refused = client.raw("setVariable", variablesReference=3, name="#5001", value="1")
     assert not refused["success"] and "read-only" in refused["message"]
 
@@ -164,6 +165,17 @@ def test_the_operator_answers_dialog_and_probe_from_the_console(tmp_path, client
     assert client.wait("exited") == {"exitCode": 0}
     out = client.outputs()
     assert "msg: depth 5 passes 3" in out and "msg: probe 1 at -3" in out
+
+
+def test_a_probe_trips_on_the_probe_surface(tmp_path, client) -> None:
+    write(tmp_path, "x,y,z\n0,0,-2\n10,0,-2\n0,10,-2.5\n10,10,-2.5\n", "surface.csv")
+    write(tmp_path, 'G0 X0 Y0\nG38.2 Z-10 F100\nmsg "probe "#5067" at "#5063\nM30\n')
+    client.start({}, program="job.nc", probeSurface="surface.csv", cwd=str(tmp_path))
+    assert client.wait("exited") == {"exitCode": 0}
+    assert "msg: probe 1 at -2" in client.outputs()
+    bad = write(tmp_path, "x,y,z\n0,0\n", "bad.csv")
+    refused = client.raw("launch", program="job.nc", probeSurface=bad.name, cwd=str(tmp_path))
+    assert not refused["success"] and "bad.csv" in refused["message"]
 
 
 def test_a_run_error_stops_with_its_text_and_can_be_stepped_back_from(tmp_path, client) -> None:
