@@ -278,7 +278,7 @@ def known_subs(launch: Launch) -> dict[str, str]:
     """Every sub the run can call, by lower-case name, with its file; a job or macro file that
     does not load is the launch's error."""
     from ..runner import Run, RunOptions
-    from .breakpoints import checked
+    from .breakpoints import facts
 
     try:
         run = Run(RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro, plan=False))
@@ -286,8 +286,11 @@ def known_subs(launch: Launch) -> dict[str, str]:
         for path, program in run.load_macros():
             for name in program.subs:
                 found.setdefault(name.lower(), str(path))
-        for name in checked(str(launch.program)).subs:
-            found[name.lower()] = str(launch.program)
+        job = facts(str(launch.program))
+        if job.error is not None:
+            raise job.error
+        for name in job.subs:
+            found[name] = str(launch.program)
         return found
     except EcncError as err:
         raise RequestError(err.format()) from None

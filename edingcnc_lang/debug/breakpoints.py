@@ -19,7 +19,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..errors import EcncError
 from ..evaluator import Evaluator
-from ..parser import CheckedFile, check_file, read_statements
+from ..parser import read_statements
 from .expressions import ExpressionError, evaluate, interpolate, parse_expression
 
 HIT = re.compile(r"\s*(==|>=|>|%)?\s*(\d+)\s*$")
@@ -175,37 +175,51 @@ def sub_of(name: str) -> str:
     return word.lower()
 
 
-@lru_cache(maxsize=8)
-def _checked(key: str, stamp: float) -> CheckedFile:
-    return check_file(key)
+@dataclass(frozen=True)
+class Facts:
+    """What the debugger needs to know of a file: the lines statements start on, its subs, and the
+    syntax error that keeps it from running (None if it parses)."""
 
-
-def checked(path: str) -> CheckedFile:
-    """The job check of a file (its subs, where its non-plain lines are), read once per version:
-    the launch and the breakpoints of a 200,000-line job share it."""
-    key = file_key(path)
-    return _checked(key, os.stat(key).st_mtime)
+    lines: tuple[int, ...]
+    subs: tuple[str, ...]
+    error: EcncError | None = None
 
 
 @lru_cache(maxsize=32)
-def _lines_of(key: str, stamp: float) -> tuple[int, ...] | str:
+def _facts(key: str, stamp: float) -> Facts:
+    """One read of the file: the run's reader (plain lines listed, not parsed), or for a macro file
+    with lines that do not parse, the tolerant reader (those lines wait as BadLine)."""
+    error = None
     try:
-        try:  # the fast way: plain lines are listed, not parsed
-            reader = read_statements(key, mode="run", non_plain=_checked(key, stamp).non_plain)
-        except EcncError:  # a macro file with lines that do not parse: those wait as BadLine
-            reader = read_statements(key, tolerant=True)
-        return tuple(sorted(set(_starts(reader))))
-    except (EcncError, OSError) as err:
-        return f"cannot read {key}: {getattr(err, 'message', None) or getattr(err, 'strerror', None) or err}"
+        reader = read_statements(key, mode="run")
+        statements = list(reader)
+        reader.raise_errors()
+    except EcncError as err:
+        error = err
+        reader = read_statements(key, tolerant=True)
+        statements = list(reader)
+        reader.raise_errors()
+    subs = tuple(stmt.name.lower() for stmt in statements if isinstance(stmt, n.Sub))
+    return Facts(tuple(sorted(set(_starts(statements)))), subs, error)
+
+
+def facts(path: str) -> Facts:
+    """The file's Facts, read once per version of it (the launch and the breakpoints share them);
+    raises the EcncError of a file that cannot be read or whose blocks do not close."""
+    key = file_key(path)
+    try:
+        stamp = os.stat(key).st_mtime
+    except OSError as err:
+        raise EcncError(f"cannot read {path}: {err.strerror}") from None
+    return _facts(key, stamp)
 
 
 def executable_lines(key: str) -> tuple[int, ...] | str:
     """The lines of a file a statement starts on, or why they are unknown."""
     try:
-        stamp = os.stat(key).st_mtime
-    except OSError as err:
-        return f"cannot read {key}: {err.strerror}"
-    return _lines_of(key, stamp)
+        return facts(key).lines
+    except EcncError as err:
+        return err.message
 
 
 def _starts(statements: Iterable[n.Stmt]) -> Iterator[int]:
