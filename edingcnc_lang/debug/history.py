@@ -29,11 +29,13 @@ class Input:
 
 class Rewind(BaseException):
     """Raised in the worker to leave the run: go back (``stepBack``/``reverseContinue``) from
-    statement ``step`` at call depth ``depth``; ``exact`` goes to ``step`` itself (from an error)."""
+    statement ``step`` at call depth ``depth``; ``exact`` goes to ``step`` itself (known already),
+    which runs in the plain-line chunk ``chunk`` (its path and first line) if it is a plain line."""
 
-    def __init__(self, kind: str, step: int, depth: int, exact: bool = False) -> None:
+    def __init__(self, kind: str, step: int, depth: int, exact: bool = False,
+                 chunk: tuple[str, int] | None = None) -> None:
         super().__init__(kind)
-        self.kind, self.step, self.depth, self.exact = kind, step, depth, exact
+        self.kind, self.step, self.depth, self.exact, self.chunk = kind, step, depth, exact, chunk
 
 
 @dataclass

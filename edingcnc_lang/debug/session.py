@@ -105,6 +105,10 @@ class Session(Observer):
         self._error_frames: list[Frame] | None = None
         self._error_at: tuple[str, int] | None = None  # where the run failed, for the search back to it
         self._last_where: tuple[str, int] = ("", 0)
+        self._last_chunk: tuple[str, int] | None = None  # the chunk of the last statement seen
+        # the last statement seen at each call depth, and the one a step back goes to
+        self._trail: list[tuple[int, tuple[str, int] | None] | None] = []
+        self._before: tuple[int, tuple[str, int] | None] | None = None
         self._scratch = Path()  # the folder re-runs write their log files to (made when the run starts)
         self._probe_surface: ProbeCallback | None = None
         self.thread = threading.Thread(target=self._work, name="machine", daemon=True)
@@ -196,6 +200,7 @@ class Session(Observer):
         interp = run.interpreter
         run.interpreter.params.on_write = lambda index: self.writers.__setitem__(index, (interp.path, interp.line))
         self.run = run
+        self._trail, self._before, self._chunk, self._open_bulk = [], None, None, None
         self.error = None
         self._error_frames = None
         result = run.execute_file(launch.program)
@@ -208,7 +213,7 @@ class Session(Observer):
     def _prepare(self, rewind: Rewind) -> None:
         """Find where a step back goes (search re-runs), then set up the re-run that stops there."""
         if rewind.exact:
-            target, chunk = rewind.step, None
+            target, chunk = rewind.step, rewind.chunk
         else:
             self._searching_pass(rewind, None)
             if rewind.kind == "stepBack" and rewind.depth == 0 and self._open_bulk is not None:
@@ -249,7 +254,8 @@ class Session(Observer):
         self.frames = self._error_frames or [Frame("job", where.path if where else "", where.line if where else 0)]
         command = self._wait("exception", {"description": err.message, "text": err.message})
         if command == "stepBack" and where is not None and (where.path, where.line) == self._last_where:
-            return Rewind(command, self.last_step, 0, exact=True)  # the failing statement, before it ran
+            # the failing statement, before it ran
+            return Rewind(command, self.last_step, 0, exact=True, chunk=self._last_chunk)
         if command in BACK_COMMANDS:  # it failed in a plain line the bulk path ran: find that line
             self._error_at = (where.path, where.line) if where is not None else None
             return Rewind("error" if command == "stepBack" else command, self.run.interpreter.steps + 1,
@@ -268,6 +274,8 @@ class Session(Observer):
             if self.history.full:
                 self.channel.output("cannot step back: the session has more than 10,000 inputs to replay",
                                     "stderr")
+            elif command == "stepBack" and self._before is not None:  # seen on the way here: no search
+                raise Rewind(command, self._before[0], len(machine.stack), exact=True, chunk=self._before[1])
             else:
                 raise Rewind(command, self.last_step, len(machine.stack))
         self._mode = {"next": "over", "stepIn": "in", "stepOut": "out"}.get(command)
@@ -295,9 +303,20 @@ class Session(Observer):
         step = machine.steps
         self.last_step = step
         self._last_where = (machine.path, machine.line)
+        depth = len(machine.stack)
+        if self._phase == SEARCH:
+            back = self._search
+            assert back is not None
+            if step >= back.step and back.kind != "error":
+                raise _SearchDone()  # (the chunk before it is still open: _prepare may look into it)
+        if depth == 0 and type(stmt) is not n.PlainBlock:
+            # a top-level statement of its own: no chunk of plain lines holds it
+            self._chunk = self._open_bulk = None
+        self._last_chunk = self._chunk
         if self._phase != LIVE:
             self._rerun_statement(machine, stmt, step)
             return
+        self._follow(step, depth)
         if self._terminate:
             raise Terminate()
         if self._pause:
@@ -325,24 +344,37 @@ class Session(Observer):
                     self._stop(machine, "breakpoint", {"hitBreakpointIds": [bp.id]})
 
     def line_by_line(self, machine: MachineState, run: n.PlainRun) -> bool:
+        self._chunk = key = (run.path, run.lines[0][0])
+        first, last = run.lines[0][0], run.lines[-1][0]
         if self._phase == SEARCH:
-            self._chunk = key = (run.path, run.lines[0][0])
             back = self._search
             assert back is not None
             if self._refine is not None:
                 seen = key == self._refine
-            elif back.kind == "stepBack":
-                seen = False
-            elif back.kind == "error":
-                seen = True
             else:
-                seen = self.breakpoints.any_between(run.path, run.lines[0][0], run.lines[-1][0])
-            self._open_bulk = None if seen else key
-            return seen
-        if self._phase == REPLAY:
-            return (run.path, run.lines[0][0]) == self._target_chunk
-        return (self._pause or self._terminate or self._mode is not None
-                or self.breakpoints.any_between(run.path, run.lines[0][0], run.lines[-1][0]))
+                seen = back.kind == "error" or (back.kind == "reverseContinue"
+                                                and self.breakpoints.any_between(run.path, first, last))
+        elif self._phase == REPLAY:
+            seen = key == self._target_chunk
+        else:
+            seen = (self._pause or self._terminate or self._mode is not None
+                    or self.breakpoints.any_between(run.path, first, last))
+        self._open_bulk = None if seen else key
+        if not seen:
+            self._trail.clear()  # its lines run unseen: what came before them is no step back
+        return seen
+
+    def _follow(self, step: int, depth: int) -> None:
+        """Note the statement a step back from this one goes to: the last one seen at this depth or
+        an outer one; unknown (None: a search re-run finds it) after lines the bulk path ran unseen."""
+        trail = self._trail
+        if self._open_bulk is not None:  # seen in a chunk whose other lines run unseen
+            self._before = None
+            return
+        del trail[depth + 1:]
+        self._before = max((t for t in trail if t is not None), default=None)
+        trail.extend([None] * (depth + 1 - len(trail)))
+        trail[depth] = (step, self._chunk)
 
     def call(self, machine: MachineState, frame: CallFrame, sub: n.Sub) -> None:
         if self._phase == LIVE:
@@ -365,6 +397,7 @@ class Session(Observer):
         if self._phase == SEARCH:
             self._searching(machine, stmt, step)
             return
+        self._follow(step, len(machine.stack))
         if step >= self._target:
             self._phase = LIVE
             self._relocate_log(machine)
@@ -373,12 +406,7 @@ class Session(Observer):
     def _searching(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:
         back = self._search
         assert back is not None
-        if step >= back.step and back.kind != "error":
-            raise _SearchDone()
         depth = len(machine.stack)
-        if depth == 0 and type(stmt) is not n.PlainBlock:
-            # a top-level statement of its own: no chunk of plain lines holds it
-            self._chunk = self._open_bulk = None
         here = (step, self._chunk)
         if self._first is None:
             self._first = here

@@ -134,6 +134,23 @@ def test_conditions_hit_counts_log_points_and_reverse_continue(tmp_path, client)
     assert client.stack()[0] == ("count", 9) and client.value("#1") == "4"
 
 
+def test_stepping_back_retraces_every_step(tmp_path, client) -> None:
+    """next through a job (plain lines, a While, GoSubs), then stepBack all the way to its start."""
+    job = write(tmp_path, "G0 X1\nG1 X2 F100\n" + LOOP.replace("M30", "G0 X3\nG0 X4\nM30"))
+    client.start({str(job): [{"line": 1}]}, program=str(job))
+    client.wait("stopped")
+    seen = [(client.stack()[0], client.value("#1"), client.value("#2"), client.value("#5001"))]
+    while seen[-1][0] != ("job", 10):  # M30
+        client.step("next")
+        seen.append((client.stack()[0], client.value("#1"), client.value("#2"), client.value("#5001")))
+    assert [place[1] for place, *_ in seen[:9]] == [1, 2, 3, 4, 5, 6, 5, 6, 5]  # a While line: once
+    back = [seen[-1]]
+    while len(back) < len(seen):
+        client.step("stepBack")
+        back.append((client.stack()[0], client.value("#1"), client.value("#2"), client.value("#5001")))
+    assert back == seen[::-1]
+
+
 def test_function_breakpoints(tmp_path, client) -> None:
     job = write(tmp_path, "T3 M6\nM100\nM30\nSub m100\n    #3 = 1\nEndSub\n")
     client.start({}, functions=["M6", "m100", "no_such_sub"], program=str(job))
