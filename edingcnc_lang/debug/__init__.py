@@ -5,9 +5,10 @@ pydevd.  The interpreter runs in a worker thread; the ``Observer`` seam (interpr
 blocks it while the user looks around.  Modules, one job each:
 
 - ``protocol``: Content-Length framing of DAP messages on a byte stream
+- ``launch``: the launch request's arguments
 - ``breakpoints``: source and function breakpoints, verification, conditions, hit counts, log points
 - ``expressions``: the dialect's expressions for conditions, evaluate, setVariable and console answers
-- ``variables``: the scopes a user thinks in, and where each parameter was last written
+- ``variables``: the stack and the scopes a user thinks in, and where each parameter was last written
 - ``history``: what stepping back needs (the operator's inputs), re-execution targets
 - ``session``: run control (breakpoints, stepping, pause, stepBack) in the worker thread
 - ``adapter``: DAP requests and events

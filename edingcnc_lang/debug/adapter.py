@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..errors import EcncError
@@ -16,7 +15,8 @@ from .breakpoints import sub_of
 from .expressions import (ExpressionError, dialog_answer, evaluate, parse_assignment, parse_expression,
                           probe_answer)
 from .protocol import Channel, Message, ProtocolError, read_message
-from .session import Launch, Session
+from .launch import Launch, LaunchError, launch_of
+from .session import Session
 from .variables import PERSISTENT, SYSTEM, USER, parameter, scopes, variables
 
 CAPABILITIES = {
@@ -84,7 +84,10 @@ class Adapter:
         return CAPABILITIES
 
     def on_launch(self, args: dict[str, Any]) -> None:
-        launch = launch_of(args)
+        try:
+            launch = launch_of(args)
+        except LaunchError as err:
+            raise RequestError(str(err)) from None
         self.subs = known_subs(launch)
         if launch.probe_surface is not None:
             from ..heightmap import read_surface
@@ -243,35 +246,6 @@ class Adapter:
 def _shown(answer: DialogAnswer) -> str:
     values = ", ".join(f"#{i}={v:g}" for i, v in answer.values.items())
     return ("ok" if answer.ok else "cancel") + (f" {values}" if values else "")
-
-
-def launch_of(args: dict[str, Any]) -> Launch:
-    """The launch arguments, paths relative to ``cwd`` (the workspace folder) made absolute."""
-    base = Path(str(args.get("cwd") or os.getcwd()))
-
-    def path(key: str, must: bool = False) -> Path | None:
-        value = args.get(key)
-        if not value:
-            if must:
-                raise RequestError(f"launch needs {key!r} (the job to run)")
-            return None
-        found = (base / str(value)).resolve()
-        if not found.is_file():
-            raise RequestError(f"{key}: {value} is not a file")
-        return found
-
-    try:
-        answers = [DialogAnswer.parse(str(a)) for a in args.get("answers", [])]
-    except ValueError as err:
-        raise RequestError(f"answers: {err}") from None
-    program = path("program", must=True)
-    assert program is not None
-    log_dir = args.get("logDir")
-    max_steps = args.get("maxSteps")
-    return Launch(program, ini=path("ini"), macro=path("macro"), user_macro=path("userMacro"), answers=answers,
-                  probe_surface=path("probeSurface"), stop_on_entry=bool(args.get("stopOnEntry")),
-                  no_debug=bool(args.get("noDebug")), log_dir=(base / str(log_dir)).resolve() if log_dir else None,
-                  max_steps=int(max_steps) if max_steps else None)
 
 
 def known_subs(launch: Launch) -> dict[str, str]:

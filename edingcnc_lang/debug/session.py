@@ -11,7 +11,6 @@ import shutil
 import sys
 import tempfile
 import threading
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -25,7 +24,9 @@ from ..runner import Run, RunOptions
 from .breakpoints import Breakpoints, reached
 from .expressions import evaluate
 from .history import History, Input, Replay, Rewind
+from .launch import Launch
 from .protocol import Channel
+from .variables import Frame, frames_of
 
 LIVE, SEARCH, REPLAY = "live", "search", "replay"
 BACK_COMMANDS = ("stepBack", "reverseContinue")
@@ -38,31 +39,6 @@ class Terminate(BaseException):
 
 class _SearchDone(BaseException):
     """A search pass reached the statement it was stepping back from."""
-
-
-@dataclass
-class Launch:
-    """The launch request's arguments, paths resolved."""
-
-    program: Path
-    ini: Path | None = None
-    macro: Path | None = None
-    user_macro: Path | None = None
-    answers: list[DialogAnswer] = field(default_factory=list)
-    probe_surface: Path | None = None
-    stop_on_entry: bool = False
-    no_debug: bool = False
-    log_dir: Path | None = None
-    max_steps: int | None = None
-
-
-@dataclass(frozen=True)
-class Frame:
-    """One frame of the stack shown at a stop: a sub (or the job) and where it is."""
-
-    name: str
-    path: str
-    line: int
 
 
 class Session(Observer):
@@ -492,14 +468,3 @@ class Session(Observer):
             return None
         finally:
             self.waiting = None
-
-
-def frames_of(machine: MachineState) -> list[Frame]:
-    """The stack, innermost first: each active sub at its current line, the job at its call."""
-    stack = machine.stack
-    found = [Frame(stack[-1].name if stack else "job", machine.path, machine.line)]
-    for i in range(len(stack) - 1, -1, -1):
-        found.append(Frame(stack[i - 1].name if i > 0 else "job", stack[i].path, stack[i].line))
-    return found
-
-

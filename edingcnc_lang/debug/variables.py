@@ -8,6 +8,7 @@ last wrote it (``written at macro.cnc:67``).
 from __future__ import annotations
 
 import os
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from .. import tables as t
@@ -16,6 +17,7 @@ from ..interpreter.state import format_value
 from ..knowledge import variable
 
 if TYPE_CHECKING:
+    from ..interpreter.state import MachineState
     from ..runner import Run
 
 USER, PERSISTENT, SYSTEM, KINEMATICS, MODAL, POSITION = range(1, 7)
@@ -111,3 +113,21 @@ def _position(run: Run) -> list[dict[str, Any]]:
 
 def _pose(values: list[float] | tuple[float, ...]) -> str:
     return " ".join(f"{a}{format_value(v)}" for a, v in zip(AXES, values))
+
+
+@dataclass(frozen=True)
+class Frame:
+    """One frame of the stack shown at a stop: a sub (or the job) and where it is."""
+
+    name: str
+    path: str
+    line: int
+
+
+def frames_of(machine: MachineState) -> list[Frame]:
+    """The stack, innermost first: each active sub at its current line, the job at its call."""
+    stack = machine.stack
+    found = [Frame(stack[-1].name if stack else "job", machine.path, machine.line)]
+    for i in range(len(stack) - 1, -1, -1):
+        found.append(Frame(stack[i - 1].name if i > 0 else "job", stack[i].path, stack[i].line))
+    return found
