@@ -1,6 +1,7 @@
 """The cost of the debugger: a 200,000-line job run under ``ecnc debug`` with a breakpoint that is
 never hit, against ``ecnc run`` of the same job (issue 24's target: at most 2x); the time a
-``pause`` takes to stop a 1,000,000-line job; and one step back near the end of the job.
+``pause`` takes to stop a 1,000,000-line job; and one step back near the end of the job (from a
+breakpoint: a search re-run first; after a step: the way back only).
 
     python benchmarks/bench_debug.py [--lines 200000] [--repeat 3]
 
@@ -97,10 +98,14 @@ def pause_latency(job: Path) -> float:
     return elapsed
 
 
-def step_back(job: Path, line: int) -> float:
+def step_back(job: Path, line: int, after_next: bool = False) -> float:
+    """Stop at ``line``, then time one stepBack (after a ``next``: back to the line seen on the way)."""
     client = Client()
     client.start(job, line)
     client.until("stopped")
+    if after_next:
+        client.send("next", threadId=1)
+        client.until("stopped")
     start = time.perf_counter()
     client.send("stepBack", threadId=1)
     client.until("stopped")
@@ -127,7 +132,9 @@ def main() -> None:
         big = Path(tmp) / "big.nc"
         write_job(big, 1_000_000)
         print(f"pause in a 1,000,000-line job: stopped {pause_latency(big) * 1000:.0f} ms after the request")
-        print(f"step back from line {total - 3:,} (M30) of the {args.lines:,}-line job: {step_back(job, total - 3):.2f} s")
+        print(f"step back from line {total - 3:,} (M30, stopped at by a breakpoint) of the {args.lines:,}-line "
+              f"job: {step_back(job, total - 3):.2f} s; after a next from line {total - 4:,}: "
+              f"{step_back(job, total - 4, after_next=True):.2f} s")
 
 
 if __name__ == "__main__":
