@@ -352,6 +352,12 @@ class Session(Observer):
         trail.extend([None] * (depth + 1 - len(trail)))
         trail[depth] = (step, self._chunk)
 
+    def branch(self, machine: MachineState, stmt: n.If | n.While, taken: bool) -> None:
+        """A While line is reached again at every turn (its first decision follows its statement):
+        seen as a statement, it can be stopped at, stepped to and stepped back to."""
+        if type(stmt) is n.While and machine.steps != self.last_step:
+            self.statement(machine, stmt)
+
     def call(self, machine: MachineState, frame: CallFrame, sub: n.Sub) -> None:
         if self._phase == LIVE:
             bp = self.breakpoints.functions.get(frame.name)
@@ -370,6 +376,7 @@ class Session(Observer):
         assert self._replay is not None
         for index, value in self._replay.edits.get(step, ()):
             machine.params.write(index, value)
+            self.writers[index] = (SET_BY_USER, 0)
         if self._phase == SEARCH:
             self._searching(machine, stmt, step)
             return

@@ -72,6 +72,7 @@ def test_a_tool_change_sub_debugged_from_a_job(tmp_path, client) -> None:
     client.step("stepBack")
     assert client.stack() == [("change_tool", CHANGE_TOOL_FIRST), ("job", 4)]
     assert everything(client) == before  # the edits made at this stop are part of it
+    assert client.scope("Persistent")["#4005"]["type"] == "persistent user variable · set in the debugger"
 
     client.step("stepOut")
     assert client.stack() == [("job", 5)]
@@ -143,7 +144,7 @@ def test_stepping_back_retraces_every_step(tmp_path, client) -> None:
     while seen[-1][0] != ("job", 10):  # M30
         client.step("next")
         seen.append((client.stack()[0], client.value("#1"), client.value("#2"), client.value("#5001")))
-    assert [place[1] for place, *_ in seen[:9]] == [1, 2, 3, 4, 5, 6, 5, 6, 5]  # a While line: once
+    assert [place[1] for place, *_ in seen[:9]] == [1, 2, 3, 4, 5, 6, 4, 5, 6]  # the While line at every turn
     back = [seen[-1]]
     while len(back) < len(seen):
         client.step("stepBack")
