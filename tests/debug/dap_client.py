@@ -29,7 +29,10 @@ class DapClient:
         while True:
             length = None
             while True:
-                line = out.readline()
+                try:
+                    line = out.readline()
+                except (ValueError, OSError):  # the test closed the pipe: the session is over
+                    line = b""
                 if not line:
                     self.events.put({"event": "<eof>"})
                     return
