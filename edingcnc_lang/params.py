@@ -27,6 +27,8 @@ class Parameters:
         self._on_offsets = on_offsets
         self._live_set = frozenset(i for r in LIVE_RANGES for i in r)
         self._offset_set = frozenset(i for r in OFFSET_RANGES for i in r)
+        # told of every write (the debugger's "last written at"); None in a plain run
+        self.on_write: Callable[[int], None] | None = None
 
     def read(self, index: int) -> float:
         if index in self._live_set:
@@ -43,6 +45,8 @@ class Parameters:
         """The machine's own write (no read-only check)."""
         self.values[index] = value
         self.written.add(index)
+        if self.on_write is not None:
+            self.on_write(index)
         if index in self._offset_set:
             self._on_offsets()
 

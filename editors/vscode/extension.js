@@ -1,4 +1,5 @@
-// Starts `ecnc lsp` for EdingCNC files and connects VS Code to it over stdio.
+// Starts `ecnc lsp` for EdingCNC files and connects VS Code to it over stdio; runs `ecnc debug`
+// (the Debug Adapter Protocol over stdio) for launch configurations of type "ecnc".
 const vscode = require("vscode");
 const { LanguageClient } = require("vscode-languageclient/node");
 
@@ -19,6 +20,12 @@ function activate(context) {
     },
   );
   context.subscriptions.push(client);
+  context.subscriptions.push(vscode.debug.registerDebugAdapterDescriptorFactory("ecnc", {
+    createDebugAdapterDescriptor() {
+      const [debugCommand, ...debugArgs] = vscode.workspace.getConfiguration("edingcnc").get("debug.command");
+      return new vscode.DebugAdapterExecutable(debugCommand, debugArgs);
+    },
+  }));
   return client.start();
 }
 
