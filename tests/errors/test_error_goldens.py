@@ -37,16 +37,17 @@ class Case:
         assert len(found) <= 1, f"{self.file.name}:{self.first}: one expected error per case"
         return found[0] if found else None  # the ;### line's index is the failing line's number
 
-    def run(self) -> str:
-        """``LINE:COL: message`` of the error the case stops with, or ``no error``."""
+    def run(self, logs: Path) -> str:
+        """``LINE:COL: message`` of the error the case stops with, or ``no error``; the job's own
+        files go to ``logs``, written ``LOGS`` in the message."""
         ini = self.options.get("ini")
-        options = RunOptions(macro=EMPTY_MACRO, ini=DATA / ini if ini else None)
+        options = RunOptions(macro=EMPTY_MACRO, ini=DATA / ini if ini else None, log_dir=logs)
         try:
             run_string(self._numbered(), options, path="job.nc")
         except EcncError as err:
             where = err.location
             assert where is not None and where.path == "job.nc", f"{err.format()} is not located in the job"
-            return f"{where.line}:{where.col}: {err.message}"
+            return f"{where.line}:{where.col}: {err.message}".replace(str(logs), "LOGS")
         return "no error"
 
     def _numbered(self) -> str:
@@ -78,8 +79,8 @@ def test_every_case_expects_an_error() -> None:
 
 
 @pytest.mark.parametrize("case", ALL, ids=[f"{c.file.stem}:{c.first}" for c in ALL])
-def test_error_text(case: Case, request: pytest.FixtureRequest) -> None:
-    actual = case.run()
+def test_error_text(case: Case, request: pytest.FixtureRequest, tmp_path: Path) -> None:
+    actual = case.run(tmp_path)
     if request.config.getoption("--regen-goldens"):
         regenerate(case, actual)
         return

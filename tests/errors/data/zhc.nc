@@ -30,4 +30,4 @@ ZHCINITEX 1 1 [
 ;### 1: ZHCINITEX expects gridSizeX gridSizeY nX nY (got '1 1 [')
 ---
 ZHCL missing.txt
-;### 1: cannot read the height table /work/main/missing.txt: No such file or directory
+;### 1: cannot read the height table LOGS/missing.txt: No such file or directory
