@@ -5,7 +5,7 @@ import math
 import re
 
 from .. import nodes as n
-from ..canon import AXES
+from ..canon import AXES, Batch
 from ..errors import EcncError
 from ..line_parser import plain_block, plain_words
 from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState
@@ -43,8 +43,10 @@ class BulkPath(MachineState):
         stage that the bulk moves pass through like any other.  Anything unusual, including every error, is left to the
         general path so messages stay exactly the same.
         """
-        if self.tanknife or self.clamped or self.tca_guard or self.modal["feed_mode"] != G_94 or self.config.lathe:
-            return first  # (a lathe's moves carry the spindle speed along them, which bulk rows do not)
+        rpm, css = self.spindle_along()
+        if self.tanknife or self.clamped or self.tca_guard or self.modal["feed_mode"] != G_94 or css is not None \
+                or self.config.lathe:  # (diameter words)
+            return first
         motion: int | None = self.modal["motion"]
         if motion not in (G_0, G_1):
             motion = None  # the line must name G0 or G1 itself
@@ -54,8 +56,11 @@ class BulkPath(MachineState):
         budget = self.max_steps
         pos = self.pos
         feed = self.feed
-        batch: list[tuple[str, int, tuple[float, ...], float]] = []
-        feeds: list[float] = []  # the feed in force at each move of the batch
+        kinds: list[str] = []
+        numbers: list[int] = []
+        ends: list[tuple[float, ...]] = []
+        feeds: list[float] = []  # the feed of each move (0 for rapids)
+        in_force: list[float] = []  # the feed in force at each move of the batch
         room = len(lines) if budget is None else budget - self.steps  # statements left in the step budget
         done = 0
         index = first
@@ -120,31 +125,36 @@ class BulkPath(MachineState):
             if line_motion == G_1:
                 if feed <= 0:
                     break
-                batch.append(("linear", lineno, tuple(target), feed))
+                kinds.append("linear")
+                feeds.append(feed)
             else:
-                batch.append(("rapid", lineno, tuple(target), 0.0))
-            feeds.append(feed)
+                kinds.append("rapid")
+                feeds.append(0.0)
+            numbers.append(lineno)
+            ends.append(tuple(target))
+            in_force.append(feed)
             pos = target
             done += 1
             motion = line_motion
         else:
             index = len(lines)
         self.steps += done
-        if batch:
-            self.path, self.line = path, batch[-1][1]
+        if numbers:
+            self.path, self.line = path, numbers[-1]
             try:
-                self.canon.straight_moves(path, tuple(self.pos), batch)
+                self.canon.straight_moves(Batch(path, tuple(self.pos), kinds, numbers, ends, feeds,
+                                                rpm, None, 0.0, self.caller()))
             except EcncError as err:  # a move was refused: the state is that of the move before it
-                failed = next((k for k, item in enumerate(batch)
-                               if err.location is not None and item[1] == err.location.line), 0)
-                self.job_distance += _travelled(self.pos, batch[:failed])
+                failed = next((k for k, number in enumerate(numbers)
+                               if err.location is not None and number == err.location.line), 0)
+                self.job_distance += _travelled(self.pos, ends[:failed])
                 if failed:
-                    self.pos = list(batch[failed - 1][2])
-                self.feed = feeds[failed]
-                self.modal["motion"] = G_1 if batch[failed][0] == "linear" else G_0
-                self.line = batch[failed][1]
+                    self.pos = list(ends[failed - 1])
+                self.feed = in_force[failed]
+                self.modal["motion"] = G_1 if kinds[failed] == "linear" else G_0
+                self.line = numbers[failed]
                 raise
-            self.job_distance += _travelled(self.pos, batch)
+            self.job_distance += _travelled(self.pos, ends)
         self.pos = list(pos)
         self.feed = feed
         if motion is not None:
@@ -180,7 +190,7 @@ class BulkPath(MachineState):
 STATEMENTS = {n.PlainRun: "_exec_plain_run"}
 
 
-def _travelled(start: list[float], batch: list[tuple[str, int, tuple[float, ...], float]]) -> float:
+def _travelled(start: list[float], ends: list[tuple[float, ...]]) -> float:
     """The XYZ length of a batch of straight moves from ``start`` (GetJobDistance counts it)."""
-    points = [start[:3], *(end[:3] for _kind, _line, end, _feed in batch)]
+    points = [start[:3], *(end[:3] for end in ends)]
     return sum(map(math.dist, points, points[1:]))

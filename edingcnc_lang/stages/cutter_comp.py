@@ -21,13 +21,12 @@ programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wa
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import replace
 
-from ..canon import Arc, Canon, Event, Move, Pose
+from ..canon import Arc, Batch, Canon, Event, Move, Pose
 from ..config import MachineConfig
 from ..errors import Location, MachineError
-from .base import FLUSHING_EVENTS, Stage, each_move
+from .base import FLUSHING_EVENTS, Stage
 from .comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
     ARC_SWEEP_SLACK_MM,
@@ -79,11 +78,11 @@ class CutterCompensation(Stage):
             self.flush()
             self.next.move(move)
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+    def straight_moves(self, batch: Batch) -> None:
         if not self.side and self.exit_from is None:
-            self.next.straight_moves(path, start, batch)
+            self.next.straight_moves(batch)
             return
-        for move in each_move(path, start, batch):
+        for move in batch.moves():
             self.move(move)
 
     def event(self, event: Event) -> None:
@@ -189,7 +188,7 @@ class CutterCompensation(Stage):
         start = self.program
         current = frame.point(self.current)
         if target == start:  # no motion in the plane: it keeps the compensated position
-            self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, current), move.feed, caller=move.caller))
+            self._enqueue(Queued(move, move.kind, frame.pose(move.end, current), move.feed))
             self.current = frame.pose(move.end, current)
             return
         side, radius = self.side, self.radius
@@ -216,10 +215,10 @@ class CutterCompensation(Stage):
             self._move_endpoint_and_flush(current, move)
             corner = frame.pose(move.end, mid, self.current[frame.normal])
             if move.kind == "linear":
-                self._enqueue(Queued("arc", move.path, move.line, corner, move.feed, center=start,
-                                     turn=-1 if side == LEFT else 1, caller=move.caller))
+                self._enqueue(Queued(move, "arc", corner, move.feed, center=start,
+                                     turn=-1 if side == LEFT else 1))
             else:
-                self._enqueue(Queued("rapid", move.path, move.line, corner, 0.0, caller=move.caller))
+                self._enqueue(Queued(move, "rapid", corner, 0.0))
             self._dequeue()
             self.endpoint = mid
         elif concave:
@@ -234,8 +233,8 @@ class CutterCompensation(Stage):
         else:  # straight on (or a tangent arc-line junction)
             self._dequeue()
             self.endpoint = current
-        self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, end), move.feed,
-                             direction=(target[0] - start[0], target[1] - start[1]), caller=move.caller))
+        self._enqueue(Queued(move, move.kind, frame.pose(move.end, end), move.feed,
+                             direction=(target[0] - start[0], target[1] - start[1])))
         self.current = frame.pose(move.end, end)
         self.program = target
 
@@ -248,8 +247,8 @@ class CutterCompensation(Stage):
         alpha = math.atan2(target[1] - current[1], target[0] - current[0]) + HALF_PI * self.side
         end = at(target, self.radius, alpha)
         self.endpoint = current
-        self._enqueue(Queued(move.kind, move.path, move.line, self.frame.pose(move.end, end), move.feed,
-                             direction=(math.cos(alpha), math.sin(alpha)), caller=move.caller))
+        self._enqueue(Queued(move, move.kind, self.frame.pose(move.end, end), move.feed,
+                             direction=(math.cos(alpha), math.sin(alpha))))
         self.first = False
         self.current = self.frame.pose(move.end, end)
         self.program = target
@@ -319,14 +318,14 @@ class CutterCompensation(Stage):
         elif beta > CONCAVE_TOLERANCE:  # outside corner: round it first
             corner = at(start, radius, delta)
             self._dequeue()
-            self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, corner, self.current[frame.normal]),
-                                 move.feed, center=start, turn=-1 if side == LEFT else 1, caller=move.caller))
+            self._enqueue(Queued(move, "arc", frame.pose(move.end, corner, self.current[frame.normal]),
+                                 move.feed, center=start, turn=-1 if side == LEFT else 1))
             self._dequeue()
             self.endpoint = corner
         else:
             self._dequeue()
             self.endpoint = current
-        self._enqueue(Queued("arc", move.path, move.line, arc_end, move.feed, center=center, turn=turn, sweep=sweep, caller=move.caller))
+        self._enqueue(Queued(move, "arc", arc_end, move.feed, center=center, turn=turn, sweep=sweep))
         self.current = arc_end
         self.program = end_p
 
@@ -351,8 +350,8 @@ class CutterCompensation(Stage):
             raise _refuse(move, "the tool radius is not smaller than the radius of the entry arc")
         new_center = at(end, half / cosine, towards_center)
         self.endpoint = None
-        self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, end), move.feed, center=new_center,
-                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end), caller=move.caller))
+        self._enqueue(Queued(move, "arc", frame.pose(move.end, end), move.feed, center=new_center,
+                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end)))
         self.first = False
         self.current = frame.pose(move.end, end)
         self.program = end_p

@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from stage_helpers import Recorder, line, pose
+from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang.canon import Arc, Event, Move
 from edingcnc_lang.config import MachineConfig
@@ -77,7 +77,7 @@ def test_a_move_is_held_until_the_next_one_and_events_wait_behind_it() -> None:
 
 def test_the_bulk_path_passes_whole_while_compensation_is_off() -> None:
     sink = Recorder()
-    CutterCompensation(sink, CONFIG).straight_moves("job.nc", pose(), [("linear", 1, pose(1), 100.0)])
+    CutterCompensation(sink, CONFIG).straight_moves(batch(pose(), ("linear", 1, pose(1), 100.0)))
     assert sink.log[0][0] == "batch"
 
 
