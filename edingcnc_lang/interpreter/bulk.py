@@ -1,7 +1,6 @@
 """The bulk path: runs of plain G0/G1 lines executed without building nodes."""
 from __future__ import annotations
 
-import math
 import re
 
 from .. import nodes as n
@@ -147,14 +146,14 @@ class BulkPath(MachineState):
             except EcncError as err:  # a move was refused: the state is that of the move before it
                 failed = next((k for k, number in enumerate(numbers)
                                if err.location is not None and number == err.location.line), 0)
-                self.job_distance += _travelled(self.pos, ends[:failed])
+                self.travelled(self.pos, ends[:failed])
                 if failed:
                     self.pos = list(ends[failed - 1])
                 self.feed = in_force[failed]
                 self.modal["motion"] = G_1 if kinds[failed] == "linear" else G_0
                 self.line = numbers[failed]
                 raise
-            self.job_distance += _travelled(self.pos, ends)
+            self.travelled(self.pos, ends)
         self.pos = list(pos)
         self.feed = feed
         if motion is not None:
@@ -189,8 +188,3 @@ class BulkPath(MachineState):
 # The statements this part executes, by method name (machine.py builds the dispatch table).
 STATEMENTS = {n.PlainRun: "_exec_plain_run"}
 
-
-def _travelled(start: list[float], ends: list[tuple[float, ...]]) -> float:
-    """The XYZ length of a batch of straight moves from ``start`` (GetJobDistance counts it)."""
-    points = [start[:3], *(end[:3] for end in ends)]
-    return sum(map(math.dist, points, points[1:]))

@@ -308,6 +308,14 @@ class MachineState:
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
+    def travelled(self, start: Pose | list[float], ends: Sequence[Pose]) -> None:
+        """Count straight moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does."""
+        distance = self.job_distance
+        for end in ends:
+            distance += xyz_distance(start, end)
+            start = end
+        self.job_distance = distance
+
     def spindle_along(self) -> tuple[float, Css | None]:
         """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the
         constant surface speed that gives the speed at any X instead."""
