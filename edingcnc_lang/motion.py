@@ -157,9 +157,7 @@ class MotionStage:
                 self.move(move)
             return
         lower, upper = self._lower, self._upper
-        ends = batch.ends
-        for axis in range(6):
-            column = [end[axis] for end in ends]
+        for axis, column in enumerate(zip(*batch.ends)):
             if min(column) < lower[axis] or max(column) > upper[axis]:
                 self._first_limit_violation(batch)
         self._write_batch(batch)

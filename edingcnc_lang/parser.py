@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 from itertools import islice
 
 from . import nodes as n
+from . import speedups
 from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
 from .dialogs import SYNTAX_CODES, dialog_fields
@@ -52,8 +53,11 @@ def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
         base += len(chunk)
 
 
-def _non_plain_lines(chunk: list[str]) -> list[int]:
-    """Indices of the lines of a chunk that are not plain word lines, found in one regex pass."""
+def non_plain_lines(chunk: list[str]) -> list[int]:
+    """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``), found in one regex pass.
+
+    The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
+    """
     if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
         return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
     joined = "\n".join(chunk)
@@ -166,7 +170,7 @@ class StatementReader:
             first = bisect_left(self.non_plain, base)
             last = bisect_left(self.non_plain, base + len(chunk))
             return [number - base for number in self.non_plain[first:last]]
-        others = _non_plain_lines(chunk)
+        others = speedups.non_plain_lines(chunk)
         self.non_plain.extend(base + i for i in others)  # type: ignore[attr-defined]
         return others
 

@@ -311,9 +311,9 @@ class MachineState:
     def travelled(self, start: Pose | list[float], ends: Sequence[Pose]) -> None:
         """Count straight moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does."""
         distance = self.job_distance
-        for end in ends:
-            distance += xyz_distance(start, end)
-            start = end
+        points = [start[:3], *[end[:3] for end in ends]]
+        for step in map(math.dist, points, points[1:]):  # xyz_distance of each move
+            distance += step
         self.job_distance = distance
 
     def spindle_along(self) -> tuple[float, Css | None]:
