@@ -14,17 +14,24 @@ The equivalence tests run both and compare whole moves with the general path's.
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from .. import nodes as n
 from .. import speedups
 from ..canon import Batch
 from ..errors import EcncError
+from ..fastparse import FAST_NUMBER
 from ..line_parser import plain_block, plain_words
 from .state import G_0, G_1, G_91, G_94, MachineState
 
 NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
 _AXIS_OF = {letter: axis for axis, letter in enumerate("XYZABC")}
+# The usual order of a CAM line's words, [G] [X] [Y] [Z] [A] [B] [C] [F], matched at once; the words
+# are line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.
+_VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
+USUAL_ORDER = re.compile(r"[ \t]*" + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE})?" for a in "GXYZABCF")
+                         + r"(?:;.*)?$")
 
 # What plain_moves returns: the index of the first line it left, the steps it took (lines it
 # consumed), the motion and feed in force after them, and the moves as columns: kinds, line
@@ -59,7 +66,31 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
         moved = False
         simple = True
         new_feed = feed
-        for letter, number in plain_words(text):
+        usual = USUAL_ORDER.match(text)
+        if usual is not None:
+            g, x, y, z, a, b, c, f = usual.groups()
+            if g is not None:
+                value = float(g)
+                if value != 0.0 and value != 1.0:
+                    break
+                line_motion = G_0 if value == 0.0 else G_1
+            if f is not None:
+                value = float(f)
+                if value < 0:
+                    break
+                new_feed = value * scale
+            for axis, number in enumerate((x, y, z)):
+                if number is not None:
+                    target[axis] = base[axis] + float(number) * scale
+                    moved = True
+            for axis, number in enumerate((a, b, c), 3):
+                if number is not None:
+                    target[axis] = base[axis] + float(number)
+                    moved = True
+            words: list[tuple[str, str]] = []
+        else:
+            words = plain_words(text)
+        for letter, number in words:
             letter = letter.upper()
             if letter in seen:
                 simple = False
