@@ -65,9 +65,28 @@ class CutterCompensation(Stage):
         self.endpoint: Point | None = None  # where the queued moves start (LinuxCNC's endpoint)
         self.emitted: Pose | None = None   # where the machine is after the moves handed on
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
+        # compensated straight moves released during one call, handed on together as one Batch
+        self.out: Batch | None = None
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
+        try:
+            self._take(move)
+        finally:
+            self._send()
+
+    def straight_moves(self, batch: Batch) -> None:
+        if not self.side and self.exit_from is None:
+            self._send()
+            self.next.straight_moves(batch)
+            return
+        try:
+            for move in batch.moves():
+                self._take(move)
+        finally:
+            self._send()
+
+    def _take(self, move: Move) -> None:
         if not self.side:
             self._uncompensated(move)
         elif move.kind == "arc":
@@ -78,17 +97,11 @@ class CutterCompensation(Stage):
             self.flush()
             self.next.move(move)
 
-    def straight_moves(self, batch: Batch) -> None:
-        if not self.side and self.exit_from is None:
-            self.next.straight_moves(batch)
-            return
-        for move in batch.moves():
-            self.move(move)
-
     def event(self, event: Event) -> None:
         if event.kind == "cutter_comp":
             self._switch(event)
         if not self.queue:
+            self._send()
             self.next.event(event)
         else:
             self.queue.append(event)
@@ -96,6 +109,7 @@ class CutterCompensation(Stage):
                 self.flush()
         if event.kind == "end":  # M2/M30 end compensation without an exit move
             self.side, self.first, self.exit_from = 0, True, None
+        self._send()  # moves the event released (G40's last one) go on before the next call
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
         self.flush()
@@ -103,6 +117,35 @@ class CutterCompensation(Stage):
 
     def flush(self) -> None:
         self._dequeue()
+        self._send()
+
+    # ---------------------------------------------------------------- output
+    def _hand_on(self, item: Queued, start: Pose) -> Pose:
+        """Hand a released move on: a straight one joins the batch being collected while it shares the
+        batch's spindle, caller and file; returns where it ends."""
+        origin = item.origin
+        if item.center is not None or origin.css is not None:
+            self._send()
+            move = item.to_move(start, self.frame)
+            self.next.move(move)
+            return move.end
+        end = tuple(item.end)
+        out = self.out
+        if out is None or (out.path, out.spindle, out.sync, out.caller) != (origin.path, origin.spindle,
+                                                                              origin.sync, origin.caller):
+            self._send()
+            out = self.out = Batch(origin.path, start, [], [], [], [], origin.spindle, None, origin.sync, origin.caller)
+        out.kinds.append(item.kind)  # type: ignore[attr-defined]
+        out.lines.append(origin.line)  # type: ignore[attr-defined]
+        out.ends.append(end)  # type: ignore[attr-defined]
+        out.feeds.append(item.feed)  # type: ignore[attr-defined]
+        return end  # type: ignore[return-value]
+
+    def _send(self) -> None:
+        """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
+        out, self.out = self.out, None
+        if out is not None:
+            self.next.straight_moves(out)
 
     # ---------------------------------------------------------------- on and off
     def _switch(self, event: Event) -> None:
@@ -129,6 +172,7 @@ class CutterCompensation(Stage):
                 raise _refuse(move, "the move after G40 must be a straight move, not an arc")
             move = replace(move, start=self.exit_from)
             self.exit_from = None
+        self._send()
         self.next.move(move)
 
     # ---------------------------------------------------------------- queue
@@ -141,12 +185,11 @@ class CutterCompensation(Stage):
         self.endpoint = None
         for item in queue:
             if isinstance(item, Event):
+                self._send()
                 self.next.event(item)
                 continue
             start = self.emitted if self.emitted is not None else tuple(item.end)
-            move = item.to_move(start, self.frame)  # type: ignore[arg-type]
-            self.next.move(move)
-            self.emitted = move.end
+            self.emitted = self._hand_on(item, start)  # type: ignore[arg-type]
 
     def _move_endpoint_and_flush(self, point: Point, move: Move | Event | None) -> None:
         """End every queued move at ``point`` (cut back into a corner), refusing reversals; hand them on.
