@@ -27,6 +27,7 @@ from .state import G_0, G_1, G_91, G_94, MachineState
 
 NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
 _AXIS_OF = {letter: axis for axis, letter in enumerate("XYZABC")}
+_NO_AXES = (None,) * 6
 # The usual order of a CAM line's words, [G] [X] [Y] [Z] [A] [B] [C] [F], matched at once; the words
 # are line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.
 _VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
@@ -79,14 +80,19 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
                 if value < 0:
                     break
                 new_feed = value * scale
-            for axis, number in enumerate((x, y, z)):
-                if number is not None:
-                    target[axis] = base[axis] + float(number) * scale
-                    moved = True
-            for axis, number in enumerate((a, b, c), 3):
-                if number is not None:
-                    target[axis] = base[axis] + float(number)
-                    moved = True
+            if x is not None:
+                target[0] = base[0] + float(x) * scale
+            if y is not None:
+                target[1] = base[1] + float(y) * scale
+            if z is not None:
+                target[2] = base[2] + float(z) * scale
+            if a is not None:
+                target[3] = base[3] + float(a)
+            if b is not None:
+                target[4] = base[4] + float(b)
+            if c is not None:
+                target[5] = base[5] + float(c)
+            moved = (x, y, z, a, b, c) != _NO_AXES
             words: list[tuple[str, str]] = []
         else:
             words = plain_words(text)
@@ -97,9 +103,9 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
                 break
             seen += letter
             value = float(number)
-            axis = _AXIS_OF.get(letter)
-            if axis is not None:
-                target[axis] = base[axis] + (value * scale if axis < 3 else value)
+            word_axis = _AXIS_OF.get(letter)
+            if word_axis is not None:
+                target[word_axis] = base[word_axis] + (value * scale if word_axis < 3 else value)
                 moved = True
             elif letter == "F" and value >= 0:
                 new_feed = value * scale
