@@ -47,6 +47,7 @@ print(json.dumps({"total": total, "planner": spent[0], "seconds": result.estimat
 ALONE = r"""
 import random, sys, time
 import numpy as np
+from edingcnc_lang.canon import Batch
 from edingcnc_lang.config import MachineConfig
 from edingcnc_lang.motion import AxisLimits
 from edingcnc_lang.planner.overrides import Overrides
@@ -54,12 +55,13 @@ from edingcnc_lang.planner.stage import Planner
 count = int(sys.argv[1])
 rng = random.Random(1)
 limits = AxisLimits(np.full(6, 1000.0), np.full(6, 10000.0))
-moves = [("linear", i, (rng.uniform(0, 300), rng.uniform(0, 200), rng.uniform(-5, 0), 0.0, 0.0, 0.0), 1000.0)
-         for i in range(count)]
+ends = [(rng.uniform(0, 300), rng.uniform(0, 200), rng.uniform(-5, 0), 0.0, 0.0, 0.0) for i in range(count)]
 planner = Planner(MachineConfig.default(), [], Overrides())
 start = time.perf_counter()
 for first in range(0, count, 500):
-    planner.straight_moves("job", (0.0,) * 6 if not first else moves[first - 1][2], moves[first:first + 500],
+    part = ends[first:first + 500]
+    planner.straight_moves(Batch("job", (0.0,) * 6 if not first else ends[first - 1], ["linear"] * len(part),
+                                 list(range(first, first + len(part))), part, [1000.0] * len(part)),
                            {"rapid": limits, "linear": limits})
 planner.close()
 print(time.perf_counter() - start)

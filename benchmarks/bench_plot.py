@@ -48,7 +48,7 @@ def main() -> None:
             for name, command in commands.items():
                 runs = [measure(command) for _ in range(args.repeat)]
                 wall = statistics.median(r[0] for r in runs)
-                cells.append(f"{wall:6.2f} s {max(r[1] for r in runs):4.0f} MB")
+                cells.append(f"{wall:6.2f} s {max(r[2] for r in runs):4.0f} MB")
             size = (tmp / "v.html").stat().st_size / 1e6
             print(f"{moves:>8,} | {cells[0]:>16} | {cells[1]:>16} | {cells[2]:>16} | {size:5.2f} MB")
 

@@ -1,9 +1,9 @@
 """Speed and memory of parsing and running big jobs, side by side with LinuxCNC's rs274.
 
-Generates the jobs deterministically in a temporary folder, runs ``ecnc`` and
-``rs274 -g`` alternately ``--repeat`` times and prints medians, ratios and peak
-memory (max RSS of the child process) as a table.  rs274 is optional: without
-it the reference column stays empty.
+Generates the jobs deterministically in a temporary folder, runs ``ecnc`` (on the compiled core and,
+with ``ECNC_PURE_PYTHON=1``, on the Python core) and ``rs274 -g`` alternately ``--repeat`` times and
+prints medians of CPU and wall time, ratios and peak memory (max RSS of the child process) as a
+table.  rs274 is optional: without it the reference column stays empty.
 
     python benchmarks/bench_run.py               # all benchmarks
     python benchmarks/bench_run.py --only parse  # one of: parse run1m macro startup comp
@@ -64,24 +64,30 @@ NEUTRAL_CWD = tempfile.gettempdir()
 ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
 
 
-def measure(cmd: list[str]) -> tuple[float, float]:
-    """Wall seconds and peak RSS (MB) of one run of ``cmd`` (stdout discarded)."""
+def measure(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, float, float]:
+    """Wall seconds, CPU seconds (user + sys) and peak RSS (MB) of one run of ``cmd`` (stdout discarded)."""
     start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=NEUTRAL_CWD, env=ENV)
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=NEUTRAL_CWD,
+                            env={**ENV, **(env or {})})
     _, _, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - start
     if proc.stderr:
         proc.stderr.close()
-    return wall, usage.ru_maxrss / 1024.0
+    return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
 
 
-def median_runs(cmds: dict[str, list[str]], repeat: int) -> dict[str, tuple[float, float]]:
-    """Run the commands alternately; median wall time and max RSS for each."""
-    results: dict[str, list[tuple[float, float]]] = {name: [] for name in cmds}
+PURE = {"ECNC_PURE_PYTHON": "1"}  # the pure-Python core (docs/performance.md)
+
+
+def median_runs(cmds: dict[str, list[str]], repeat: int,
+                envs: dict[str, dict[str, str]] | None = None) -> dict[str, tuple[float, float, float]]:
+    """Run the commands alternately; median wall and CPU time and max RSS for each."""
+    results: dict[str, list[tuple[float, float, float]]] = {name: [] for name in cmds}
     for _ in range(repeat):
         for name, cmd in cmds.items():
-            results[name].append(measure(cmd))
-    return {name: (statistics.median(w for w, _ in runs), max(m for _, m in runs)) for name, runs in results.items()}
+            results[name].append(measure(cmd, (envs or {}).get(name)))
+    return {name: (statistics.median(w for w, _, _ in runs), statistics.median(c for _, c, _ in runs),
+                   max(m for _, _, m in runs)) for name, runs in results.items()}
 
 
 ECNC = [sys.executable, "-m", "edingcnc_lang"]
@@ -99,19 +105,27 @@ def bench_parse(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     rows = []
     for key, label in (("check", "ecnc parse (syntax check), 200k G1 lines"),
                        ("tree", "AST for every line (read_statements), 200k G1 lines")):
-        wall, rss = res[key]
+        wall, _cpu, rss = res[key]
         rows.append((label, f"{wall:.2f} s ({200_000 / wall:,.0f} lines/s)", f"{rss:.0f} MB peak", ""))
     return rows
 
 
-def _versus(label: str, ours: list[str], ref: list[str] | None, repeat: int) -> tuple[str, str, str, str]:
-    cmds = {"ecnc": ours, **({"rs274": ref} if ref else {})}
-    res = median_runs(cmds, repeat)
-    wall, rss = res["ecnc"]
-    if ref:
-        ref_wall, ref_rss = res["rs274"]
-        return (label, f"{wall:.2f} s / {rss:.0f} MB", f"{ref_wall:.2f} s / {ref_rss:.0f} MB", f"{wall / ref_wall:.2f}x")
-    return (label, f"{wall:.2f} s / {rss:.0f} MB", "-", "-")
+def _versus(label: str, ours: list[str], ref: list[str] | None, repeat: int) -> list[tuple[str, str, str, str]]:
+    """``ours`` on the compiled core and on the Python core, and the reference, run in turn; CPU time ratios
+    (on a shared machine the CPU time of a run varies less than its wall time)."""
+    cmds = {"ecnc": ours, "pure": ours, **({"rs274": ref} if ref else {})}
+    res = median_runs(cmds, repeat, {"pure": PURE})
+    rows = []
+    for name, core in (("ecnc", "compiled core"), ("pure", "Python core")):
+        wall, cpu, rss = res[name]
+        if ref:
+            ref_wall, ref_cpu, ref_rss = res["rs274"]
+            rows.append((f"{label} ({core})", f"{cpu:.2f} s CPU, {wall:.2f} s wall, {rss:.0f} MB",
+                         f"{ref_cpu:.2f} s CPU, {ref_wall:.2f} s wall, {ref_rss:.0f} MB",
+                         f"{cpu / ref_cpu:.2f}x CPU, {wall / ref_wall:.2f}x wall"))
+        else:
+            rows.append((f"{label} ({core})", f"{cpu:.2f} s CPU, {wall:.2f} s wall, {rss:.0f} MB", "-", "-"))
+    return rows
 
 
 def bench_run(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
@@ -120,26 +134,26 @@ def bench_run(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     write_g1_job(ngc, 200_000, ngc=True)
     rs274 = shutil.which("rs274")
     trace = tmp / "trace.csv"
-    return [_versus("run 200k G1 lines (--trace CSV) vs rs274 -g", ECNC + ["run", str(job), "--trace", str(trace)],
-                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
+    return _versus("run 200k G1 lines (--trace CSV) vs rs274 -g", ECNC_SCRIPT + ["run", str(job), "--trace", str(trace)],
+                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
 
 
 def bench_comp(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
-    job, ngc = tmp / "comp_200k.nc", tmp / "comp_200k.ngc"
-    write_comp_job(job, 200_000)
-    write_comp_job(ngc, 200_000)
+    job, ngc = tmp / "comp_50k.nc", tmp / "comp_50k.ngc"
+    write_comp_job(job, 50_000)
+    write_comp_job(ngc, 50_000)
     rs274 = shutil.which("rs274")
-    return [_versus("run 200k G1 lines with G41.1 compensation (--trace CSV) vs rs274 -g",
-                    ECNC + ["run", str(job), "--trace", str(tmp / "trace.csv")],
-                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
+    return _versus("run a 50k-segment contour with G41.1 compensation (--trace CSV) vs rs274 -g",
+                   ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")],
+                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
 
 
 def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     job = tmp / "g1_1m.nc"
     write_g1_job(job, 1_000_000)
-    res = median_runs({"ecnc": ECNC + ["run", str(job)]}, 1)
-    wall, rss = res["ecnc"]
-    return [("run 1M G1 lines (memory)", f"{wall:.2f} s", f"{rss:.0f} MB peak", "")]
+    res = median_runs({"ecnc": ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")]}, 1)
+    wall, cpu, rss = res["ecnc"]
+    return [("run 1M G1 lines with --trace (memory)", f"{cpu:.2f} s CPU, {wall:.2f} s wall", f"{rss:.0f} MB peak", "")]
 
 
 def bench_macro(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
@@ -147,8 +161,8 @@ def bench_macro(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     write_macro_loop(job, 200_000, ngc=False)
     write_macro_loop(ngc, 200_000, ngc=True)
     rs274 = shutil.which("rs274")
-    return [_versus("While loop, 200k iterations vs O-word while", ECNC + ["run", str(job), "--max-steps", "10000000"],
-                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)]
+    return _versus("While loop, 200k iterations vs O-word while", ECNC + ["run", str(job), "--max-steps", "10000000"],
+                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
 
 
 def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:

@@ -7,7 +7,8 @@ coordinates in mm and degrees.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Iterator
+from dataclasses import dataclass, field, replace
 from typing import Any, Mapping, Protocol, Sequence
 
 from .spindle import Css
@@ -65,6 +66,75 @@ class Move:
 
 
 @dataclass(frozen=True, slots=True)
+class Batch:
+    """Straight moves in bulk: the array form of ``Move`` (a single straight move is a batch of one).
+
+    The per-move fields are columns (``kinds``, ``lines``, ``ends``, ``feeds``); the fields a run
+    of moves shares are kept once (``path``, and the spindle state: ``spindle``, ``css``, ``sync``,
+    ``caller``).  Move ``i`` starts where move ``i - 1`` ended, the first at ``start``; its spindle
+    speed is ``css.rpm(end x)`` under constant surface speed, else ``spindle``.  ``move(i)`` and
+    ``moves()`` give the very ``Move`` records the general path would have made.  A stage changes
+    what it owns with ``dataclasses.replace`` here as it does on a ``Move``.
+    """
+
+    path: str
+    start: Pose
+    kinds: Sequence[str]   # "rapid" | "linear"
+    lines: Sequence[int]
+    ends: Sequence[Pose]
+    feeds: Sequence[float]
+    spindle: float = 0.0
+    css: Css | None = None
+    sync: float = 0.0
+    caller: int = 0
+
+    def __len__(self) -> int:
+        return len(self.lines)
+
+    @property
+    def end(self) -> Pose:
+        """Where the last move ends (the start of an empty batch)."""
+        return self.ends[-1] if self.lines else self.start
+
+    def move(self, index: int, start: Pose) -> Move:
+        """Move ``index`` as a record, starting at ``start`` (where move ``index - 1`` ended)."""
+        end = self.ends[index]
+        css = self.css
+        return Move(self.kinds[index], self.path, self.lines[index], start, end, self.feeds[index], None,
+                    css.rpm(end[0]) if css is not None else self.spindle, css, self.sync, self.caller)
+
+    def moves(self) -> Iterator[Move]:
+        """The batch as single moves, each starting where the one before ended."""
+        start = self.start
+        for index in range(len(self.lines)):
+            move = self.move(index, start)
+            yield move
+            start = move.end
+
+    def head(self, count: int) -> Batch:
+        """The first ``count`` moves."""
+        if count >= len(self.lines):
+            return self
+        return replace(self, kinds=self.kinds[:count], lines=self.lines[:count], ends=self.ends[:count],
+                       feeds=self.feeds[:count])
+
+    def tail(self, count: int) -> Batch:
+        """The moves after the first ``count``, starting where those ended."""
+        start = self.ends[count - 1] if count else self.start
+        return replace(self, start=start, kinds=self.kinds[count:], lines=self.lines[count:],
+                       ends=self.ends[count:], feeds=self.feeds[count:])
+
+    @classmethod
+    def of(cls, move: Move) -> Batch:
+        """A straight move as a batch of one."""
+        if move.arc is not None or move.kind not in ("rapid", "linear"):
+            raise ValueError(f"a batch holds straight moves only, not a {move.kind} move")
+        spindle = 0.0 if move.css is not None else move.spindle
+        return cls(move.path, move.start, (move.kind,), (move.line,), (move.end,), (move.feed,),
+                   spindle, move.css, move.sync, move.caller)
+
+
+@dataclass(frozen=True, slots=True)
 class Event:
     """Anything else the machine does: dwell, tool change, spindle, messages, dialogs, I/O, ..."""
 
@@ -80,11 +150,8 @@ class Canon(Protocol):
     def move(self, move: Move) -> None:
         """Execute a move (called in program order)."""
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        """Straight moves in bulk: (kind, line, end, feed) each, the first starting at ``start``.
-
-        The same as one ``move`` per item; it exists so the common case costs less.
-        """
+    def straight_moves(self, batch: Batch) -> None:
+        """Straight moves in bulk: the same as one ``move`` per ``batch.moves()``, so the common case costs less."""
 
     def event(self, event: Event) -> None:
         """Record a non-motion event."""

@@ -22,7 +22,7 @@ from functools import cached_property
 from typing import TYPE_CHECKING, Any, Protocol
 
 from . import tables as t
-from .canon import AXES, PLANES, Event, Move, Pose
+from .canon import AXES, PLANES, Batch, Event, Move, Pose
 from .config import MachineConfig
 from .errors import EcncError, Location, MachineError, PluginError
 from .geometry import arc_extremes, sweep
@@ -49,8 +49,7 @@ class PlannerStage(Protocol):
     def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                       limits: dict[str, AxisLimits] | None) -> None: ...
+    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -151,36 +150,32 @@ class MotionStage:
         self.planner.move(move, joints, samples, self._limits_for(move) if self.planner.needs_limits else None,
                           cap, accel)
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+    def straight_moves(self, batch: Batch) -> None:
         """Straight moves in bulk; joints = position and no samples make this the cheap case."""
         if not (self._identity() and not self.sample_always and self.active is None):
-            for kind, line, end, feed in batch:
-                self.move(Move(kind, path, line, start, end, feed))
-                start = end
+            for move in batch.moves():
+                self.move(move)
             return
         lower, upper = self._lower, self._upper
-        ends = [item[2] for item in batch]
-        for axis in range(6):
-            column = [end[axis] for end in ends]
+        for axis, column in enumerate(zip(*batch.ends)):
             if min(column) < lower[axis] or max(column) > upper[axis]:
-                self._first_limit_violation(path, start, batch)
-        self._write_batch(path, start, batch)
+                self._first_limit_violation(batch)
+        self._write_batch(batch)
 
-    def _first_limit_violation(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+    def _first_limit_violation(self, batch: Batch) -> None:
         """Write the moves before the first one out of limits, then raise its error."""
         lower, upper = self._lower, self._upper
-        for count, (kind, line, end, feed) in enumerate(batch):
-            for axis, value in enumerate(end):
+        for count, move in enumerate(batch.moves()):
+            for axis, value in enumerate(move.end):
                 if not lower[axis] <= value <= upper[axis]:
-                    self._write_batch(path, start, batch[:count])
-                    raise self._limit_error(Move(kind, path, line, start, end, feed), axis, value)
+                    self._write_batch(batch.head(count))
+                    raise self._limit_error(move, axis, value)
 
-    def _write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        if batch:
+    def _write_batch(self, batch: Batch) -> None:
+        if batch.lines:
             self.moves += len(batch)
-            self.joints = batch[-1][2]
-            self.planner.straight_moves(path, start, batch,
-                                        self._straight_limits if self.planner.needs_limits else None)
+            self.joints = batch.end
+            self.planner.straight_moves(batch, self._straight_limits if self.planner.needs_limits else None)
 
     @cached_property
     def _straight_limits(self) -> dict[str, AxisLimits]:

@@ -15,7 +15,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .canon import Event, Move, Pose
+from . import speedups
+from .canon import Batch, Event, Move, Pose
 from .errors import EcncError, UsageFailure
 from .motion import Samples
 from .planner.estimate import Timing
@@ -71,21 +72,28 @@ class TraceWriter:
         self._file.write(f"{move.line},{move.kind},{SIX_REPR % move.end},{SIX_REPR % tuple(joints)},"
                          f"{csv_field(move.path)},{timing.end!r}\n")
 
-    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float], speeds: Sequence[float]) -> None:
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
         """Rows of straight moves whose joints equal their end points; ``times[i + 1]`` is when move i ends."""
-        rows = []
-        name = csv_field(path)
-        for (kind, line, end, _feed), t in zip(batch, times[1:]):
-            coords = SIX_REPR % end
-            rows.append(f"{line},{kind},{coords},{coords},{name},{t!r}\n")
-        self._file.write("".join(rows))
+        self._file.write(speedups.trace_rows(batch.lines, batch.kinds, batch.ends, csv_field(batch.path), times))
 
     def event(self, event: Event) -> None:
         pass
 
     def close(self) -> None:
         self._file.close()
+
+
+def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose], name: str,
+               times: Sequence[float]) -> str:
+    """The trace rows of straight moves whose joints are their end points (``times[i + 1]``: when move i ends).
+
+    The reference for ``speedups.trace_rows``, which must give the same text byte for byte.
+    """
+    rows = []
+    for line, kind, end, t in zip(lines, kinds, ends, times[1:]):
+        coords = SIX_REPR % end
+        rows.append(f"{line},{kind},{coords},{coords},{name},{t!r}\n")
+    return "".join(rows)
 
 
 class SamplesWriter:
@@ -104,7 +112,6 @@ class SamplesWriter:
         self._npz = path.suffix.lower() == ".npz"
         self._chunks: list[np.ndarray] = []
         self._last_time = -math.inf
-        self._spindle = SpindleTracker()
         self._file = None if self._npz else _open_for_writing(path)
         if self._file is not None:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
@@ -114,7 +121,7 @@ class SamplesWriter:
             return
         import numpy as np
 
-        spindle = _spindle_column(move, samples.pos[:, 0], self._spindle.rpm)
+        spindle = _spindle_column(move, samples.pos[:, 0])
         rows = np.column_stack([samples.t, samples.pos, samples.joints, spindle, samples.speed, samples.accel])
         rows = rows[samples.t > self._last_time]
         if not len(rows):
@@ -125,12 +132,11 @@ class SamplesWriter:
         else:
             self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
 
-    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float], speeds: Sequence[float]) -> None:
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
         pass  # batches come only when no samples are written
 
     def event(self, event: Event) -> None:
-        self._spindle.event(event)
+        pass
 
     def close(self) -> None:
         if self._file is not None:
@@ -143,29 +149,13 @@ class SamplesWriter:
             np.savez(handle, **{name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)})
 
 
-class SpindleTracker:
-    """The spindle speed in force, from the event stream: moves that came in bulk carry none of their own."""
-
-    def __init__(self) -> None:
-        self.on = False
-        self.rpm = 0.0
-
-    def event(self, event: Event) -> None:
-        if event.kind == "spindle":
-            self.on = event.data.get("m") != 5
-            self.rpm = float(event.data.get("rpm", 0.0))
-        elif event.kind == "spindle_speed" and self.on:
-            self.rpm = float(event.data.get("rpm", 0.0))
-
-
-
-def _spindle_column(move: Move, xs: np.ndarray, in_force: float) -> np.ndarray:
+def _spindle_column(move: Move, xs: np.ndarray) -> np.ndarray:
     """The spindle speed (rpm) at every sample: constant, or following X under constant surface speed."""
     import numpy as np
 
     css = move.css
     if css is None:
-        return np.full(len(xs), move.spindle or in_force)
+        return np.full(len(xs), move.spindle)
     radius = np.abs(xs - css.axis_x)
     with np.errstate(divide="ignore"):
         rpm = css.surface / (2.0 * np.pi * radius)
@@ -189,15 +179,13 @@ class EventsWriter:
 
         self._dumps = json.dumps
         self._file = _open_for_writing(path)
-        self._spindle = SpindleTracker()
 
     def _write(self, record: dict[str, object]) -> None:
         self._file.write(self._dumps(record, default=str) + "\n")
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
-        rpm = move.spindle or self._spindle.rpm
         record: dict[str, object] = {"type": "move", "file": move.path, "line": move.line, "kind": move.kind,
-                                     "end": list(move.end), "feed": move.feed, "spindle": rpm,
+                                     "end": list(move.end), "feed": move.feed, "spindle": move.spindle,
                                      "synchronised": move.sync > 0.0, "t": timing.end}
         if move.sync > 0.0:
             record["pitch"] = move.sync
@@ -205,14 +193,11 @@ class EventsWriter:
             record["spindle_start"] = move.css.rpm(move.start[0])
         self._write(record)
 
-    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float], speeds: Sequence[float]) -> None:
-        for (kind, line, end, feed), t in zip(batch, times[1:]):
-            self._write({"type": "move", "file": path, "line": line, "kind": kind, "end": list(end),
-                         "feed": feed, "spindle": self._spindle.rpm, "synchronised": False, "t": t})
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        for move, t0, t1, speed in zip(batch.moves(), times, times[1:], speeds):
+            self.move(move, move.end, None, Timing(t0, t1, speed))
 
     def event(self, event: Event) -> None:
-        self._spindle.event(event)
         self._write({"type": "event", "file": event.path, "line": event.line, "kind": event.kind,
                      "data": dict(event.data)})
 
@@ -240,14 +225,12 @@ class CallbackSink:
         if self.on_timed_move:
             self.on_timed_move(move, joints, timing)
 
-    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float], speeds: Sequence[float]) -> None:
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
         """Straight moves in bulk, each a ``Move`` again for the callables."""
         if not (self.on_move or self.on_timed_move):
             return
-        for (kind, line, end, feed), t0, t1, speed in zip(batch, times, times[1:], speeds):
-            self.move(Move(kind, path, line, start, end, feed), end, None, Timing(t0, t1, speed))
-            start = end
+        for move, t0, t1, speed in zip(batch.moves(), times, times[1:], speeds):
+            self.move(move, move.end, None, Timing(t0, t1, speed))
 
     def event(self, event: Event) -> None:
         if self.on_event:

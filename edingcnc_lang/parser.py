@@ -10,11 +10,12 @@ import os
 import re
 from array import array
 from bisect import bisect_left
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from itertools import islice
 
 from . import nodes as n
+from . import speedups
 from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
 from .dialogs import SYNTAX_CODES, dialog_fields
@@ -52,8 +53,11 @@ def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
         base += len(chunk)
 
 
-def _non_plain_lines(chunk: list[str]) -> list[int]:
-    """Indices of the lines of a chunk that are not plain word lines, found in one regex pass."""
+def non_plain_lines(chunk: list[str]) -> list[int]:
+    """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``), found in one regex pass.
+
+    The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
+    """
     if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
         return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
     joined = "\n".join(chunk)
@@ -109,8 +113,13 @@ class StatementReader:
 
     def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree",
                  non_plain: Sequence[int] | None = None, tolerant: bool = False,
-                 check_dialogs: bool | None = None) -> None:
+                 check_dialogs: bool | None = None, on_chunk: Callable[[list[str]], None] | None = None) -> None:
         self.path = path
+        # Whoever needs more of the text than statements (the T words GetToolInfo lists) sees
+        # every chunk of lines as it is read, so the file is not read again for it.
+        self.on_chunk = on_chunk
+        self.lines = 0  # how many lines have been read so far (all of them, once iterated)
+        self._recent: list[tuple[int, list[str]]] = []  # the last chunks read: an error's line text
         # A tolerant read (macro files) keeps a line that does not parse as a BadLine statement and
         # lists it in ``warnings``: the controller only fails on the lines it executes.
         self.tolerant = tolerant
@@ -140,6 +149,10 @@ class StatementReader:
         bulk = self.mode != "tree"
         lineno = 0
         for base, chunk in _chunks(self._lines):
+            self.lines = base + len(chunk) - 1
+            self._recent = [*self._recent[-1:], (base, chunk)]
+            if self.on_chunk is not None:
+                self.on_chunk(chunk)
             # Plain lines at the top level are skipped (check) or handed over in runs (run) in
             # bulk: the regular-expression engine finds the few other lines of a chunk.
             others = self._others(base, chunk) if bulk else []
@@ -160,13 +173,20 @@ class StatementReader:
                 i += 1
         yield from self._unwind(stack, lineno + 1, report=True)
 
+    def line_text(self, number: int) -> str | None:
+        """The text of line ``number`` if it is among the lines read last (two chunks), else None."""
+        for base, chunk in self._recent:
+            if base <= number < base + len(chunk):
+                return chunk[number - base]
+        return None
+
     def _others(self, base: int, chunk: list[str]) -> list[int]:
         """Indices (within the chunk) of the chunk's lines that are not plain word lines."""
         if self._known:
             first = bisect_left(self.non_plain, base)
             last = bisect_left(self.non_plain, base + len(chunk))
             return [number - base for number in self.non_plain[first:last]]
-        others = _non_plain_lines(chunk)
+        others = speedups.non_plain_lines(chunk)
         self.non_plain.extend(base + i for i in others)  # type: ignore[attr-defined]
         return others
 
@@ -322,32 +342,38 @@ class StatementReader:
 
 def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
                     non_plain: Sequence[int] | None = None, tolerant: bool = False,
-                    check_dialogs: bool | None = None, name: str | None = None) -> StatementReader:
+                    check_dialogs: bool | None = None, name: str | None = None,
+                    on_chunk: Callable[[list[str]], None] | None = None) -> StatementReader:
     """A streaming reader over a file (statements are parsed as you iterate); see StatementReader.
 
     ``name`` is what spans and errors call the file (``<stdin>`` for a copy of standard input).
     """
     return StatementReader(iter_file_lines(path), os.fspath(path) if name is None else name, mode=mode,
-                           non_plain=non_plain, tolerant=tolerant, check_dialogs=check_dialogs)
+                           non_plain=non_plain, tolerant=tolerant, check_dialogs=check_dialogs, on_chunk=on_chunk)
 
 
 @dataclass(frozen=True)
 class CheckedFile:
-    """What checking a file found out: its subs, and which lines are not plain (for the run's reader)."""
+    """What checking a file found out: its subs, which lines are not plain (for the run's reader), how many lines."""
 
     subs: dict[str, n.Sub]
     non_plain: Sequence[int]
+    lines: int = 0
 
 
-def check_file(path: str | os.PathLike[str], name: str | None = None) -> CheckedFile:
-    """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong."""
-    reader = read_statements(path, mode="check", name=name)
+def check_file(path: str | os.PathLike[str], name: str | None = None,
+               on_chunk: Callable[[list[str]], None] | None = None) -> CheckedFile:
+    """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong.
+
+    ``on_chunk`` sees the lines as they are read (see StatementReader), so nothing else need read them.
+    """
+    reader = read_statements(path, mode="check", name=name, on_chunk=on_chunk)
     subs: dict[str, n.Sub] = {}
     for stmt in reader:
         if isinstance(stmt, n.Sub):
             subs.setdefault(stmt.name.lower(), stmt)
     reader.raise_errors()
-    return CheckedFile(subs, reader.non_plain)
+    return CheckedFile(subs, reader.non_plain, reader.lines)
 
 
 def parse_text(text: str, path: str = "<string>") -> n.Program:

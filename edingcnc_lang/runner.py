@@ -134,6 +134,8 @@ class Run:
         self.options = options
         self._files: dict[str, Path] = {}  # a job run under another name (a pipe's copy): name -> file
         self._texts: dict[str, str] = {}  # jobs run from a string, to find an error's column in
+        self._reader: StatementReader | None = None  # the run pass over a job file: an error's line text
+        self.job_lines = 0  # lines of the job file, counted by the check pass (for a progress line)
         self.warnings: list[Diagnostic] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         for warning in self.config.warnings:
@@ -226,17 +228,28 @@ class Run:
 
     def execute_file(self, job: Path, name: str | None = None) -> RunResult:
         """Check the job, then run it as it streams in; ``name`` is what messages call it (default its path)."""
+        tools: set[int] = set()  # the T words, found by the check pass (GetToolInfo): the job is read twice, not more
+
+        def find_tools(chunk: list[str]) -> None:
+            joined = "\n".join(chunk)
+            if "T" in joined or "t" in joined:
+                tools.update(tools_used(chunk))
+
         try:
-            checked = check_file(job, name)
+            checked = check_file(job, name, on_chunk=find_tools)
         except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move
             raise Interrupted("interrupted (Ctrl-C) while checking the job, before its first move",
                               Location(name or os.fspath(job))) from None
         if name is not None:
             self._files[name] = job
-        self.interpreter.job_tools = cache(lambda: tools_used(iter_file_lines(job)))
+        self.job_lines = checked.lines
+        self.interpreter.job_tools = lambda: sorted(tools)
         macros = self.load_macros()
-        return self._execute(lambda: read_statements(job, mode="run", non_plain=checked.non_plain, name=name),
-                             checked.subs, macros)
+
+        def statements() -> Iterable[n.Stmt]:
+            self._reader = read_statements(job, mode="run", non_plain=checked.non_plain, name=name)
+            return self._reader
+        return self._execute(statements, checked.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
         self._texts[path] = text
@@ -274,7 +287,7 @@ class Run:
             except OSError as err:
                 error = error or _write_error(err, self._outputs)
         if error is not None:
-            _add_column(error, self._texts, self._files)
+            _add_column(error, self._texts, self._files, self._reader)
         result = self.result(error)
         if error is not None:
             error.result = result  # type: ignore[attr-defined]
@@ -358,15 +371,21 @@ def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError
     return EcncError(f"cannot write {err.filename or ' or '.join(names) or 'an output file'}: {err.strerror}")
 
 
-def _add_column(error: EcncError, texts: dict[str, str], files: dict[str, Path]) -> None:
+def _add_column(error: EcncError, texts: dict[str, str], files: dict[str, Path],
+                reader: StatementReader | None = None) -> None:
     """Give a line-only location the column where that line's code starts.
 
     The stages after the interpreter (cutter compensation, scaling, rotation, height compensation)
     and the motion stage (limits, kinematics) see moves, which carry a line but no column; the
-    report still promises ``FILE:LINE:COL``.
+    report still promises ``FILE:LINE:COL``.  The run's reader still holds the lines it read last,
+    where such an error nearly always is; only an older line is read from the file again.
     """
     where = error.location
     if where is None or not where.line or where.col:
+        return
+    line = reader.line_text(where.line) if reader is not None and reader.path == where.path else None
+    if line is not None:
+        error.location = Location(where.path, where.line, len(line) - len(line.lstrip()) + 1)
         return
     try:
         if where.path in texts:

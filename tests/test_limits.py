@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang import run_string
-from edingcnc_lang.limits import MAX_BLOCK_DEPTH, MAX_BRACKET_DEPTH, MAX_LINE_LENGTH, MAX_LINE_OPERATORS
+from edingcnc_lang.limits import MAX_BLOCK_DEPTH, MAX_BRACKET_DEPTH, MAX_LINE_LENGTH, MAX_LINE_OPERATORS, line_problem
 from edingcnc_lang.lint import lint_paths
 from edingcnc_lang.parser import parse_text
 from edingcnc_lang.printer import program_text
@@ -91,3 +91,10 @@ def test_the_limits_leave_long_real_lines_alone(tmp_path: Path) -> None:
     assert len(plain) < MAX_LINE_LENGTH
     parse_text(plain + "\n" + "#1 = [[#2 + 1] * [#3 - 2]] / SQRT[#4 + 16] ; " + "-" * 500 + "\n")
 
+
+
+def test_the_length_guard_of_line_problem_is_exact() -> None:
+    """A line of MAX_LINE_OPERATORS characters cannot pass a limit; one more operator can."""
+    assert line_problem("#" * MAX_LINE_OPERATORS) is None
+    problem = line_problem("#" * (MAX_LINE_OPERATORS + 1))
+    assert problem is not None and problem[0] == "E111"

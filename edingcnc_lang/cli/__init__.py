@@ -15,6 +15,7 @@ from typing import Any, NoReturn
 import click
 
 from .. import __version__
+from ..speedups import CORE
 from ..errors import EXIT_OK, EcncError, Interrupted, JobAborted, Location, UsageFailure
 from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error, usage_message
 from .streams import flush_quietly, make_streams_usable, quiet_stdout
@@ -56,7 +57,7 @@ class Ecnc(LazyGroup):
 ecnc = Ecnc("ecnc", lazy=COMMANDS, context_settings=CONTEXT_SETTINGS,
             help="Parse, run, lint and simulate EdingCNC G-code and macro files.")
 ecnc = click.version_option(__version__, "--version", prog_name="ecnc",
-                            message="%(prog)s, version %(version)s")(ecnc)
+                            message=f"%(prog)s, version %(version)s ({CORE} core)")(ecnc)
 
 
 def run_command_line(argv: list[str]) -> int:

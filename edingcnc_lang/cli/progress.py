@@ -28,15 +28,6 @@ def wanted(quiet: bool) -> bool:
     return not quiet and bool(isatty and isatty())
 
 
-def count_lines(path: str) -> int:
-    """Lines of a file (for the bar), read in blocks; 0 if it cannot be read."""
-    try:
-        with open(path, "rb") as handle:
-            return sum(block.count(b"\n") for block in iter(lambda: handle.read(1 << 20), b"")) + 1
-    except OSError:
-        return 0
-
-
 def _clock(seconds: float) -> str:
     minutes, secs = divmod(int(seconds), 60)
     hours, minutes = divmod(minutes, 60)

@@ -61,7 +61,7 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     run = Run(options)
     with job_to_read_twice(job) as (path, name):
         show = name != STDIN_NAME and progress.wanted(quiet or as_json)
-        with progress.Progress(_probe(run, job, progress.count_lines(str(path)) if show else 0), show):
+        with progress.Progress(_probe(run, job), show):
             result = run.execute_file(path, name)
     if as_json:
         import json  # only with --json: a short run starts faster without it
@@ -72,12 +72,14 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     return EXIT_OK
 
 
-def _probe(run: Run, job: str, total: int) -> progress.Probe:
-    """How far the run is: the job line reached (lines of macro subs keep the caller's), moves so far."""
+def _probe(run: Run, job: str) -> progress.Probe:
+    """How far the run is: the job line reached (lines of macro subs keep the caller's) of the lines the
+    check pass counted, moves so far."""
     path, reached = str(Path(job)), [0]
 
     def probe() -> tuple[int, int, str]:
         interp = run.interpreter
+        total = run.job_lines
         if interp.path == path:
             reached[0] = interp.line
         return reached[0], total, f"line {reached[0]:,}/{total:,}  moves {run.motion.moves:,}"

@@ -323,13 +323,31 @@ class MachineState:
             raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
                             f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
                             "cnc.ini [KINEMATICS] ...TCA): switch it off with TCAGuard off first")
-        turning = self.spindle != 5
-        css = self.css() if turning else None
-        rpm = (css.rpm(end[0]) if css is not None else self.rpm) if turning else 0.0
+        rpm, css = self.spindle_along()
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
-                             rpm, css, sync, self.stack[0].line if self.stack else 0))
+                             css.rpm(end[0]) if css is not None else rpm, css, sync, self.caller()))
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
+
+    def travelled(self, start: Pose | list[float], ends: Sequence[Pose]) -> None:
+        """Count straight moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does."""
+        distance = self.job_distance
+        points = [start[:3], *[end[:3] for end in ends]]
+        for step in map(math.dist, points, points[1:]):  # xyz_distance of each move
+            distance += step
+        self.job_distance = distance
+
+    def spindle_along(self) -> tuple[float, Css | None]:
+        """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the
+        constant surface speed that gives the speed at any X instead."""
+        if self.spindle == 5:
+            return 0.0, None
+        css = self.css()
+        return (0.0, css) if css is not None else (self.rpm, None)
+
+    def caller(self) -> int:
+        """``Move.caller`` of a move made now: the line of the outermost sub call, 0 at the top level."""
+        return self.stack[0].line if self.stack else 0
 
     def mean_rpm(self, xs: list[float], span: n.Span | None) -> float:
         """The spindle speed that gives a per-revolution move through machine X ``xs`` its true time."""

@@ -13,10 +13,9 @@ import math
 from collections import deque
 from collections.abc import Callable, Sequence
 from itertools import chain
-from operator import itemgetter
 from typing import TYPE_CHECKING, Any, Protocol
 
-from ..canon import Event, Move, Pose
+from ..canon import Batch, Event, Move, Pose
 from ..config import MachineConfig
 from ..kinematics.trajectory import Geometry, geometry_of
 from .estimate import Estimate, Timing
@@ -34,7 +33,6 @@ RAPID, LINEAR, ARC, PROBE, HOME = range(5)
 KIND_CODES = {"rapid": RAPID, "linear": LINEAR, "arc": ARC, "probe": PROBE, "home": HOME}
 STRAIGHT = -1  # a move of the fast path: rapid if its feed is 0, else linear
 
-_END, _FEED = itemgetter(2), itemgetter(3)  # of a bulk batch's (kind, line, end, feed)
 WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
@@ -47,8 +45,7 @@ class TimedSink(Protocol):
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None: ...
 
-    def write_batch(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                    times: Sequence[float], speeds: Sequence[float]) -> None: ...
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -97,36 +94,38 @@ class Planner:
         self._kind.add(KIND_CODES[move.kind])
         self._cap.add(cap)
         self._accel_cap.add(accel_cap)
-        # a spindle-synchronised cut (G33, G76) follows the spindle: the feed override does not act on it
-        self._state.add(self._state_id(limit, limit, 1.0 if move.sync > 0.0 else self.overrides.feed_factor))
+        self._state.add(self._state_id(limit, limit, self._feed_factor(move.sync)))
         self._joints.append(None if samples is None else samples.joints)
         self._sampled += samples is not None
         self._queue.append(("move", move, joints))
         self._after_add()
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                       limits: dict[str, AxisLimits]) -> None:
+    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits]) -> None:
         """Straight moves in bulk whose joints are their positions (the interpreter's fast path).
 
         Per move only the end and the feed are kept (a rapid is a move with feed 0); the rest is
-        the same for the whole batch.
+        the same for the whole batch, as it is for a single ``move``.
         """
-        if self._ends and start != self._ends[-1]:
+        if self._ends and batch.start != self._ends[-1]:
             self.flush()
         if not self._ends:
-            self._origin = start
+            self._origin = batch.start
         count = len(batch)
-        self._ends.extend(map(_END, batch))
-        self._feed.extend(map(_FEED, batch))
+        self._ends.extend(batch.ends)
+        self._feed.extend(batch.feeds)
         self._kind.add(STRAIGHT, count)
         self._cap.add(math.inf, count)
         self._accel_cap.add(math.inf, count)
         state = self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]),
-                               self.overrides.feed_factor)
+                               self._feed_factor(batch.sync))
         self._state.add(state, count)
         self._joints.extend([None] * count)
-        self._queue.append(("batch", path, list(batch)))
+        self._queue.append(("batch", batch))
         self._after_add()
+
+    def _feed_factor(self, sync: float) -> float:
+        """The feed override a move runs under: a spindle-synchronised cut (G33, G76) follows the spindle, not it."""
+        return 1.0 if sync > 0.0 else self.overrides.feed_factor
 
     def event(self, event: Event) -> None:
         if event.kind == "override":
@@ -290,16 +289,14 @@ class Planner:
                     sink.move(item[1], item[2], samples[index] if samples else None, timing)
                 index += 1
             else:  # a batch never has samples: the motion stage sends moves one by one when samples are wanted
-                _, path, batch = item
+                batch = item[1]
                 take = min(len(batch), count - index)
-                start = self._ends[index - 1] if index else self._origin
                 times = [ends[index - 1] if index else self.time, *ends[index:index + take]]
                 for sink in self.sinks:
-                    sink.write_batch(path, start, batch if take == len(batch) else batch[:take], times,
-                                     speeds[index:index + take])
+                    sink.write_batch(batch.head(take), times, speeds[index:index + take])
                 index += take
                 if take < len(batch):
-                    queue[0] = ("batch", path, batch[take:])
+                    queue[0] = ("batch", batch.tail(take))
                     break
             queue.popleft()
 

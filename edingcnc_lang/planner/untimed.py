@@ -10,10 +10,10 @@ See docs/planner.md ("When the planner runs").
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from ..canon import Event, Move, Pose
+from ..canon import Batch, Event, Move, Pose
 from .overrides import Overrides
 
 if TYPE_CHECKING:
@@ -36,13 +36,11 @@ class Untimed:
         if self.on_move:
             self.on_move(move, joints)
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]],
-                       limits: dict[str, AxisLimits] | None) -> None:
+    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
         if not self.on_move:
             return
-        for kind, line, end, feed in batch:
-            self.on_move(Move(kind, path, line, start, end, feed), end)  # type: ignore[arg-type]
-            start = end
+        for move in batch.moves():
+            self.on_move(move, move.end)
 
     def event(self, event: Event) -> None:
         if event.kind == "override":

@@ -12,16 +12,10 @@ or end event, before any kinematics call, at the end of the run and when the run
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Sequence
 
-from ..canon import Canon, Event, Move, Pose
+from ..canon import Batch, Canon, Event, Move, Pose
 from ..config import MachineConfig
-
-def each_move(path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> Iterator[Move]:
-    """A ``straight_moves`` batch as single moves, each starting where the one before ended."""
-    for kind, line, end, feed in batch:
-        yield Move(kind, path, line, start, end, feed)
-        start = end
 
 
 # Events after which the machine must have finished every move programmed before them.
@@ -38,8 +32,8 @@ class Stage:
     def move(self, move: Move) -> None:
         self.next.move(move)
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        self.next.straight_moves(path, start, batch)
+    def straight_moves(self, batch: Batch) -> None:
+        self.next.straight_moves(batch)
 
     def event(self, event: Event) -> None:
         self.next.event(event)
@@ -81,11 +75,11 @@ class LookaheadStage(Stage):
         self._emit(self.release(held, move))
         self.held = move
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+    def straight_moves(self, batch: Batch) -> None:
         if not self.active and self.held is None:
-            self.next.straight_moves(path, start, batch)
+            self.next.straight_moves(batch)
             return
-        for move in each_move(path, start, batch):
+        for move in batch.moves():
             self.move(move)
 
     def event(self, event: Event) -> None:

@@ -6,7 +6,7 @@ compensation stage can think of the XY plane only, whatever plane is selected.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..canon import PLANES, Arc, Move, Pose
 
@@ -79,21 +79,18 @@ class Frame:
 class Queued:
     """A compensated move not yet handed on: its end may still move back into a concave corner."""
 
+    origin: Move                 # the programmed move: what compensation does not change comes from it
     kind: str                    # "rapid" | "linear" | "arc"
-    path: str
-    line: int
     end: list[float]
     feed: float
     direction: Point = (0.0, 0.0)  # straight moves: the programmed direction, to detect reversal
     center: Point | None = None    # arcs, in the frame
     turn: int = 0                  # arcs: +1 counter-clockwise, -1 clockwise
     sweep: float = 0.0             # arcs: the angle swept when queued
-    caller: int = 0                # the programmed move's ``Move.caller``
 
     def to_move(self, start: Pose, frame: Frame) -> Move:
         arc = None
         if self.center is not None:
             closed = math.dist(frame.point(start), frame.point(self.end)) < 1e-9
             arc = Arc(frame.named(self.center), frame.plane, self.turn, 1 if closed else 0)
-        return Move(self.kind, self.path, self.line, start, tuple(self.end), self.feed, arc,  # type: ignore[arg-type]
-                    caller=self.caller)
+        return replace(self.origin, kind=self.kind, start=start, end=tuple(self.end), feed=self.feed, arc=arc)

@@ -21,13 +21,12 @@ programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wa
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import replace
 
-from ..canon import Arc, Canon, Event, Move, Pose
+from ..canon import Arc, Batch, Canon, Event, Move, Pose
 from ..config import MachineConfig
 from ..errors import Location, MachineError
-from .base import FLUSHING_EVENTS, Stage, each_move
+from .base import FLUSHING_EVENTS, Stage
 from .comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
     ARC_SWEEP_SLACK_MM,
@@ -66,9 +65,28 @@ class CutterCompensation(Stage):
         self.endpoint: Point | None = None  # where the queued moves start (LinuxCNC's endpoint)
         self.emitted: Pose | None = None   # where the machine is after the moves handed on
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
+        # compensated straight moves released during one call, handed on together as one Batch
+        self.out: Batch | None = None
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
+        try:
+            self._take(move)
+        finally:
+            self._send()
+
+    def straight_moves(self, batch: Batch) -> None:
+        if not self.side and self.exit_from is None:
+            self._send()
+            self.next.straight_moves(batch)
+            return
+        try:
+            for move in batch.moves():
+                self._take(move)
+        finally:
+            self._send()
+
+    def _take(self, move: Move) -> None:
         if not self.side:
             self._uncompensated(move)
         elif move.kind == "arc":
@@ -79,17 +97,11 @@ class CutterCompensation(Stage):
             self.flush()
             self.next.move(move)
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        if not self.side and self.exit_from is None:
-            self.next.straight_moves(path, start, batch)
-            return
-        for move in each_move(path, start, batch):
-            self.move(move)
-
     def event(self, event: Event) -> None:
         if event.kind == "cutter_comp":
             self._switch(event)
         if not self.queue:
+            self._send()
             self.next.event(event)
         else:
             self.queue.append(event)
@@ -97,6 +109,7 @@ class CutterCompensation(Stage):
                 self.flush()
         if event.kind == "end":  # M2/M30 end compensation without an exit move
             self.side, self.first, self.exit_from = 0, True, None
+        self._send()  # moves the event released (G40's last one) go on before the next call
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
         self.flush()
@@ -104,6 +117,35 @@ class CutterCompensation(Stage):
 
     def flush(self) -> None:
         self._dequeue()
+        self._send()
+
+    # ---------------------------------------------------------------- output
+    def _hand_on(self, item: Queued, start: Pose) -> Pose:
+        """Hand a released move on: a straight one joins the batch being collected while it shares the
+        batch's spindle, caller and file; returns where it ends."""
+        origin = item.origin
+        if item.center is not None or origin.css is not None:
+            self._send()
+            move = item.to_move(start, self.frame)
+            self.next.move(move)
+            return move.end
+        end = tuple(item.end)
+        out = self.out
+        if out is None or (out.path, out.spindle, out.sync, out.caller) != (origin.path, origin.spindle,
+                                                                              origin.sync, origin.caller):
+            self._send()
+            out = self.out = Batch(origin.path, start, [], [], [], [], origin.spindle, None, origin.sync, origin.caller)
+        out.kinds.append(item.kind)  # type: ignore[attr-defined]
+        out.lines.append(origin.line)  # type: ignore[attr-defined]
+        out.ends.append(end)  # type: ignore[attr-defined]
+        out.feeds.append(item.feed)  # type: ignore[attr-defined]
+        return end  # type: ignore[return-value]
+
+    def _send(self) -> None:
+        """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
+        out, self.out = self.out, None
+        if out is not None:
+            self.next.straight_moves(out)
 
     # ---------------------------------------------------------------- on and off
     def _switch(self, event: Event) -> None:
@@ -130,6 +172,7 @@ class CutterCompensation(Stage):
                 raise _refuse(move, "the move after G40 must be a straight move, not an arc")
             move = replace(move, start=self.exit_from)
             self.exit_from = None
+        self._send()
         self.next.move(move)
 
     # ---------------------------------------------------------------- queue
@@ -142,12 +185,11 @@ class CutterCompensation(Stage):
         self.endpoint = None
         for item in queue:
             if isinstance(item, Event):
+                self._send()
                 self.next.event(item)
                 continue
             start = self.emitted if self.emitted is not None else tuple(item.end)
-            move = item.to_move(start, self.frame)  # type: ignore[arg-type]
-            self.next.move(move)
-            self.emitted = move.end
+            self.emitted = self._hand_on(item, start)  # type: ignore[arg-type]
 
     def _move_endpoint_and_flush(self, point: Point, move: Move | Event | None) -> None:
         """End every queued move at ``point`` (cut back into a corner), refusing reversals; hand them on.
@@ -189,7 +231,7 @@ class CutterCompensation(Stage):
         start = self.program
         current = frame.point(self.current)
         if target == start:  # no motion in the plane: it keeps the compensated position
-            self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, current), move.feed, caller=move.caller))
+            self._enqueue(Queued(move, move.kind, frame.pose(move.end, current), move.feed))
             self.current = frame.pose(move.end, current)
             return
         side, radius = self.side, self.radius
@@ -216,10 +258,10 @@ class CutterCompensation(Stage):
             self._move_endpoint_and_flush(current, move)
             corner = frame.pose(move.end, mid, self.current[frame.normal])
             if move.kind == "linear":
-                self._enqueue(Queued("arc", move.path, move.line, corner, move.feed, center=start,
-                                     turn=-1 if side == LEFT else 1, caller=move.caller))
+                self._enqueue(Queued(move, "arc", corner, move.feed, center=start,
+                                     turn=-1 if side == LEFT else 1))
             else:
-                self._enqueue(Queued("rapid", move.path, move.line, corner, 0.0, caller=move.caller))
+                self._enqueue(Queued(move, "rapid", corner, 0.0))
             self._dequeue()
             self.endpoint = mid
         elif concave:
@@ -234,8 +276,8 @@ class CutterCompensation(Stage):
         else:  # straight on (or a tangent arc-line junction)
             self._dequeue()
             self.endpoint = current
-        self._enqueue(Queued(move.kind, move.path, move.line, frame.pose(move.end, end), move.feed,
-                             direction=(target[0] - start[0], target[1] - start[1]), caller=move.caller))
+        self._enqueue(Queued(move, move.kind, frame.pose(move.end, end), move.feed,
+                             direction=(target[0] - start[0], target[1] - start[1])))
         self.current = frame.pose(move.end, end)
         self.program = target
 
@@ -248,8 +290,8 @@ class CutterCompensation(Stage):
         alpha = math.atan2(target[1] - current[1], target[0] - current[0]) + HALF_PI * self.side
         end = at(target, self.radius, alpha)
         self.endpoint = current
-        self._enqueue(Queued(move.kind, move.path, move.line, self.frame.pose(move.end, end), move.feed,
-                             direction=(math.cos(alpha), math.sin(alpha)), caller=move.caller))
+        self._enqueue(Queued(move, move.kind, self.frame.pose(move.end, end), move.feed,
+                             direction=(math.cos(alpha), math.sin(alpha))))
         self.first = False
         self.current = self.frame.pose(move.end, end)
         self.program = target
@@ -319,14 +361,14 @@ class CutterCompensation(Stage):
         elif beta > CONCAVE_TOLERANCE:  # outside corner: round it first
             corner = at(start, radius, delta)
             self._dequeue()
-            self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, corner, self.current[frame.normal]),
-                                 move.feed, center=start, turn=-1 if side == LEFT else 1, caller=move.caller))
+            self._enqueue(Queued(move, "arc", frame.pose(move.end, corner, self.current[frame.normal]),
+                                 move.feed, center=start, turn=-1 if side == LEFT else 1))
             self._dequeue()
             self.endpoint = corner
         else:
             self._dequeue()
             self.endpoint = current
-        self._enqueue(Queued("arc", move.path, move.line, arc_end, move.feed, center=center, turn=turn, sweep=sweep, caller=move.caller))
+        self._enqueue(Queued(move, "arc", arc_end, move.feed, center=center, turn=turn, sweep=sweep))
         self.current = arc_end
         self.program = end_p
 
@@ -351,8 +393,8 @@ class CutterCompensation(Stage):
             raise _refuse(move, "the tool radius is not smaller than the radius of the entry arc")
         new_center = at(end, half / cosine, towards_center)
         self.endpoint = None
-        self._enqueue(Queued("arc", move.path, move.line, frame.pose(move.end, end), move.feed, center=new_center,
-                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end), caller=move.caller))
+        self._enqueue(Queued(move, "arc", frame.pose(move.end, end), move.feed, center=new_center,
+                             turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end)))
         self.first = False
         self.current = frame.pose(move.end, end)
         self.program = end_p

@@ -12,14 +12,13 @@ ramps to the new height.
 """
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import replace
 
-from ..canon import Canon, Event, Move, Pose
+from ..canon import Batch, Canon, Event, Move, Pose
 from ..config import MachineConfig
 from ..errors import Location, MachineError
 from ..heightmap import HeightMap
-from .base import Stage, each_move
+from .base import Stage
 
 UNCOMPENSATED = frozenset({"probe", "home"})
 
@@ -65,9 +64,9 @@ class HeightCompensation(Stage):
         self.applied = self.surface.height(move.end[0], move.end[1])
         self.next.move(move)
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
+    def straight_moves(self, batch: Batch) -> None:
         if self.surface is None and self.applied == 0.0:
-            self.next.straight_moves(path, start, batch)
+            self.next.straight_moves(batch)
             return
-        for move in each_move(path, start, batch):
+        for move in batch.moves():
             self.move(move)

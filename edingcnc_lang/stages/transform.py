@@ -6,10 +6,11 @@ it is off, and answers kinematics calls in the interpreter's (programmed) frame.
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
+from dataclasses import replace
 
-from ..canon import PLANES, Arc, Move, Pose
-from .base import Stage, each_move
+from ..canon import PLANES, Arc, Batch, Move, Pose
+from .base import Stage
 
 
 def map_center(arc: Arc, mapping: Callable[[Pose], Pose]) -> tuple[float, float]:
@@ -48,18 +49,23 @@ class PoseTransform(Stage):
             start = self.at if self.at is not None else self.forward(move.start)
             arc = self.arc(move, move.arc) if move.arc is not None and self.on else move.arc
             end = self.forward(move.end) if self.on else move.end
-            move = Move(move.kind, move.path, move.line, start, end, move.feed, arc, caller=move.caller)
+            move = replace(move, start=start, end=end, arc=arc)  # the pose is all a transform owns
         self.next.move(move)
         self.at = move.end
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        if not self.on and (self.at is None or self.at == start):
-            self.next.straight_moves(path, start, batch)
-            if batch:
-                self.at = batch[-1][2]
+    def straight_moves(self, batch: Batch) -> None:
+        if not batch.lines:
             return
-        for move in each_move(path, start, batch):
-            self.move(move)
+        if batch.css is not None and self.on:  # the spindle speed follows the programmed X: move by move
+            for move in batch.moves():
+                self.move(move)
+            return
+        if self.on or (self.at is not None and self.at != batch.start):
+            start = self.at if self.at is not None else self.forward(batch.start)
+            ends = [self.forward(end) for end in batch.ends] if self.on else batch.ends
+            batch = replace(batch, start=start, ends=ends)
+        self.next.straight_moves(batch)
+        self.at = batch.end
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
         actual = self.next.kinematics(mode, args, self.at or self.forward(pos), path, line)

@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 import edingcnc_lang
+from edingcnc_lang import speedups
 import edingcnc_lang.runner
 from tests.cli_runner import invoke
 
@@ -27,7 +28,8 @@ def job(tmp_path: Path) -> Path:
 
 def test_version() -> None:
     result = invoke("--version")
-    assert (result.exit_code, result.stdout, result.stderr) == (0, f"ecnc, version {edingcnc_lang.__version__}\n", "")
+    assert (result.exit_code, result.stdout, result.stderr) == (
+        0, f"ecnc, version {edingcnc_lang.__version__} ({speedups.CORE} core)\n", "")
 
 
 @pytest.mark.parametrize("command", COMMANDS, ids=lambda c: " ".join(["ecnc", *c]))

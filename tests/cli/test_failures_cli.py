@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 import edingcnc_lang.cli.options
+from edingcnc_lang import speedups
 from tests.cli_runner import invoke
 
 ECNC = [sys.executable, "-m", "edingcnc_lang"]
@@ -81,7 +82,7 @@ def test_ctrl_c_in_a_run_names_the_line(tmp_path: Path, monkeypatch: pytest.Monk
 
 def test_ctrl_c_while_the_job_is_checked_names_the_job(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """A long job is read through before its first move: Ctrl-C then says so, naming the job."""
-    def interrupted(*_args: object) -> None:
+    def interrupted(*_args: object, **_kwargs: object) -> None:
         raise KeyboardInterrupt
 
     monkeypatch.setattr(edingcnc_lang.runner, "check_file", interrupted)
@@ -111,7 +112,7 @@ def _shell(command: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 
 def test_version_works_with_stderr_closed(tmp_path: Path) -> None:
     result = _shell("ecnc --version 2>&-", tmp_path)
-    assert (result.returncode, result.stdout) == (0, "ecnc, version 0.1.0\n")
+    assert (result.returncode, result.stdout) == (0, f"ecnc, version 0.1.0 ({speedups.CORE} core)\n")
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")

@@ -3,7 +3,9 @@
 ``run_file`` reads a job in run mode (plain lines in bulk); ``run_string`` parses the same
 text into ordinary blocks, which always take the general path.  Generated jobs mix plain
 moves with lines that change the state between them (units, distance mode, offsets, feed
-mode, motion modes), so both paths have to agree on every hand-over.
+mode, motion modes, the spindle, G68, G51, cutter compensation, height compensation), so both
+paths have to agree on every hand-over: whole move records, events, parameters (GetJobDistance)
+and errors are compared.
 """
 from __future__ import annotations
 
@@ -13,7 +15,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang import EcncError, Move, RunOptions, run_file, run_string
+from edingcnc_lang import EcncError, Event, Move, RunOptions, run_file, run_string
+from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.host import Host
 
 numbers = st.one_of(st.integers(-200, 200).map(str),
                     st.floats(-200, 200, allow_nan=False).map(lambda v: f"{v:.3f}"),
@@ -29,24 +33,32 @@ plain_lines = st.builds(
     st.sampled_from([" ", ""]), st.sampled_from(["", " ; cut"]))
 state_lines = st.sampled_from(["G91", "G90", "G20", "G21", "G10 L2 P1 X5 Y-3 Z1", "G92 X0 Y0", "G92.1",
                                "G93", "G94", "G55", "G54", "#1 = [#1 + 1]", "G68 X0 Y0 R30", "G69",
-                               "G43 H1", "G49", "(comment)", "M3 S1000", "G80", "G17 G2 X1 Y1 I1 J0 F100"])
+                               "G43 H1", "G49", "(comment)", "M3 S1000", "G80", "G17 G2 X1 Y1 I1 J0 F100",
+                               "M4 S2500", "M5", "G51 P2", "G51 X2 Y-1", "G50", "G68 X5 Y5 R-45",
+                               "G41.1 D0.5", "G42.1 D1", "G40", "ZHC on", "ZHC off", "GetJobDistance 100",
+                               "G1 X1 Y1 F50 M3 S300", "G0 X0 Y0 Z0"])
 jobs = st.lists(st.one_of(plain_lines, plain_lines, plain_lines, state_lines), min_size=1, max_size=30)
+# a 2 x 2 height map probed on a tilted surface, so "ZHC on" has a table to follow
+ZHC_HEADER = "ZHCINIT 100 2 2\n" + "".join(
+    f"G0 Z5\nG0 X{x} Y{y}\nG38.2 Z-20 F500\nZHCADDPOINT\n" for y in (0, 100) for x in (0, 100)) + "G0 Z5\nG0 X0 Y0\n"
+SURFACE = ProbeAt(HeightMap((0.0, 100.0), (0.0, 100.0), ((0.0, 0.4), (0.2, 0.6))))
 
 
 def _outcome(run) -> tuple:  # type: ignore[no-untyped-def]
-    moves: list[Move] = []
+    records: list[Move | Event] = []
+    options = RunOptions(on_move=lambda move, _joints: records.append(move), on_event=records.append,
+                         host=Host(probe=SURFACE))
     try:
-        result = run(RunOptions(on_move=lambda move, _joints: moves.append(move)))
+        result = run(options)
     except EcncError as err:
-        return ("error", err.format(), [(m.kind, m.line, m.end, m.feed) for m in moves])
-    return ("ok", result.machine, result.modal, result.variables,
-            [(m.kind, m.line, m.end, m.feed) for m in moves])
+        return ("error", err.format(), records)
+    return ("ok", result.machine, result.modal, result.variables, result.spindle, records)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(jobs)
-def test_bulk_and_general_paths_agree(tmp_path: Path, lines: list[str]) -> None:
-    text = "\n".join(lines) + "\n"
+@given(jobs, st.booleans())
+def test_bulk_and_general_paths_agree(tmp_path: Path, lines: list[str], zhc: bool) -> None:
+    text = (ZHC_HEADER if zhc else "") + "\n".join([*lines, "GetJobDistance 101"]) + "\n"
     job = tmp_path / "job.nc"
     job.write_text(text)
     # the callback sink takes moves one by one, and the trace writer in bulk: check both ways
@@ -55,7 +67,8 @@ def test_bulk_and_general_paths_agree(tmp_path: Path, lines: list[str]) -> None:
     assert bulk == general
 
 
-@pytest.mark.parametrize("source", ["G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n"])
+@pytest.mark.parametrize("source", ["G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n",
+                                    "M3 S900\nG68 X1 Y1 R30\nG1 X1 F100\nY2\nG51 P2\nX3 Y3\n"])
 def test_bulk_trace_matches_the_general_trace(tmp_path: Path, source: str) -> None:
     job = tmp_path / "job.nc"
     job.write_text(source)

@@ -1,9 +1,7 @@
 """A canon that records what reaches it, to test stages alone."""
 from __future__ import annotations
 
-from collections.abc import Sequence
-
-from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.canon import Batch, Event, Move, Pose
 
 ZERO: Pose = (0.0,) * 6
 
@@ -16,6 +14,12 @@ def line(x0: float, y0: float, x1: float, y1: float, number: int = 1, feed: floa
     return Move("linear", "job.nc", number, pose(x0, y0), pose(x1, y1), feed)
 
 
+def batch(start: Pose, *items: tuple[str, int, Pose, float], path: str = "job.nc") -> Batch:
+    """A batch of straight moves from (kind, line, end, feed) items."""
+    kinds, lines, ends, feeds = (list(column) for column in zip(*items)) if items else ([], [], [], [])
+    return Batch(path, start, kinds, lines, ends, feeds)  # type: ignore[arg-type]
+
+
 class Recorder:
     """Records moves, bulk batches, events and kinematics calls as tuples, in arrival order."""
 
@@ -25,8 +29,8 @@ class Recorder:
     def move(self, move: Move) -> None:
         self.log.append(("move", move))
 
-    def straight_moves(self, path: str, start: Pose, batch: Sequence[tuple[str, int, Pose, float]]) -> None:
-        self.log.append(("batch", start, tuple(batch)))
+    def straight_moves(self, batch: Batch) -> None:
+        self.log.append(("batch", batch))
 
     def event(self, event: Event) -> None:
         self.log.append(("event", event.kind))
@@ -36,4 +40,10 @@ class Recorder:
         return pos
 
     def moves(self) -> list[Move]:
-        return [entry[1] for entry in self.log if entry[0] == "move"]  # type: ignore[misc]
+        moves: list[Move] = []
+        for entry in self.log:
+            if entry[0] == "move":
+                moves.append(entry[1])  # type: ignore[arg-type]
+            elif entry[0] == "batch":
+                moves.extend(entry[1].moves())  # type: ignore[attr-defined]
+        return moves

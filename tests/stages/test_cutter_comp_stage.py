@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from stage_helpers import Recorder, line, pose
+from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang.canon import Arc, Event, Move
 from edingcnc_lang.config import MachineConfig
@@ -72,12 +72,22 @@ def test_a_move_is_held_until_the_next_one_and_events_wait_behind_it() -> None:
     stage.event(Event("coolant", "job.nc", 3))
     assert [e[0] for e in sink.log] == ["event"]  # only the cutter_comp event so far
     stage.move(line(0, 0, 10, 0, 4))
-    assert [e[1] if e[0] == "event" else e[1].line for e in sink.log[1:]] == [2, "coolant"]
+    assert [e[1] if e[0] == "event" else list(e[1].lines) for e in sink.log[1:]] == [[2], "coolant"]
+
+
+def test_compensated_straight_moves_go_on_as_one_batch_with_their_spindle() -> None:
+    sink, stage = entered("left", 1.0)
+    moves = [line(0, 0, 10, 0, 4), line(10, 0, 20, 1, 5), line(20, 1, 30, 3, 6)]
+    stage.straight_moves(batch(pose(), *[(m.kind, m.line, m.end, m.feed) for m in moves]))
+    kinds = [entry[0] for entry in sink.log]
+    assert kinds.count("batch") == 1 and "move" not in kinds
+    stage.flush()
+    assert [m.line for m in sink.moves()] == [2, 4, 5, 6]
 
 
 def test_the_bulk_path_passes_whole_while_compensation_is_off() -> None:
     sink = Recorder()
-    CutterCompensation(sink, CONFIG).straight_moves("job.nc", pose(), [("linear", 1, pose(1), 100.0)])
+    CutterCompensation(sink, CONFIG).straight_moves(batch(pose(), ("linear", 1, pose(1), 100.0)))
     assert sink.log[0][0] == "batch"
 
 
@@ -130,5 +140,5 @@ def test_the_xz_plane_compensates_in_z_and_x() -> None:
 def test_program_end_flushes_and_ends_compensation() -> None:
     sink, stage = entered("left", 1.0)
     stage.event(Event("end", "job.nc", 3))
-    assert [e[0] for e in sink.log] == ["event", "move", "event"] and not stage.side
+    assert [e[0] for e in sink.log] == ["event", "batch", "event"] and not stage.side
     assert math.isclose(sink.moves()[0].end[1], 1.0)

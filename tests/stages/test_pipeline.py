@@ -7,7 +7,7 @@ from dataclasses import replace
 from pathlib import Path
 
 import pytest
-from stage_helpers import Recorder, line, pose
+from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang import runner
 from edingcnc_lang.canon import Event, Move
@@ -37,7 +37,7 @@ def test_a_plain_stage_passes_everything_through() -> None:
     sink = Recorder()
     stage = Stage(sink, CONFIG)
     stage.move(line(0, 0, 1, 0))
-    stage.straight_moves("job.nc", pose(1), [("linear", 2, pose(2), 100.0)])
+    stage.straight_moves(batch(pose(1), ("linear", 2, pose(2), 100.0)))
     stage.event(Event("coolant", "job.nc", 3))
     assert stage.kinematics("ON", (), pose(5), "job.nc", 4) == pose(5)
     stage.flush()
@@ -87,12 +87,12 @@ def test_kinematics_flushes_first() -> None:
 
 
 def test_bulk_moves_pass_an_idle_stage_whole_and_split_through_an_active_one() -> None:
-    batch = [("linear", 2, pose(1), 100.0), ("rapid", 3, pose(1, 1), 0.0)]
+    moves = batch(pose(), ("linear", 2, pose(1), 100.0), ("rapid", 3, pose(1, 1), 0.0))
     idle_sink, active_sink = Recorder(), Recorder()
-    Idle(idle_sink, CONFIG).straight_moves("job.nc", pose(), batch)
-    assert idle_sink.log == [("batch", pose(), tuple(batch))]
+    Idle(idle_sink, CONFIG).straight_moves(moves)
+    assert idle_sink.log == [("batch", moves)]
     active = Successor(active_sink, CONFIG)
-    active.straight_moves("job.nc", pose(), batch)
+    active.straight_moves(moves)
     active.flush()
     moves = active_sink.moves()
     assert [(m.kind, m.start, m.end, m.feed, m.path) for m in moves] == [

@@ -1,0 +1,516 @@
+/* The optional compiled core: the two hot loops of a big job, byte for byte as the Python reference.
+ *
+ * plain_moves: interpreter/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
+ * trace_rows:  outputs.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
+ *
+ * Built by setuptools as an optional extension against the stable ABI (abi3, Python 3.10+);
+ * without it the Python functions run (edingcnc_lang/speedups.py chooses).  Compiled with
+ * -ffp-contract=off so a * b + c is rounded twice, as Python rounds it.
+ */
+#define Py_LIMITED_API 0x030A0000
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define G0 0
+#define G1 10
+#define NO_MOTION (-1)
+#define NUMBER_BUFFER 512
+
+static PyObject *linear_kind;
+static PyObject *rapid_kind;
+
+static int read_six(PyObject *sequence, double out[6])
+{
+    Py_ssize_t k;
+    if (PySequence_Size(sequence) != 6) {
+        PyErr_SetString(PyExc_ValueError, "a pose has six values");
+        return -1;
+    }
+    for (k = 0; k < 6; k++) {
+        PyObject *item = PySequence_GetItem(sequence, k);
+        if (item == NULL)
+            return -1;
+        out[k] = PyFloat_AsDouble(item);
+        Py_DECREF(item);
+        if (out[k] == -1.0 && PyErr_Occurred())
+            return -1;
+    }
+    return 0;
+}
+
+static PyObject *pose_tuple(const double values[6])
+{
+    PyObject *tuple = PyTuple_New(6);
+    Py_ssize_t k;
+    if (tuple == NULL)
+        return NULL;
+    for (k = 0; k < 6; k++) {
+        PyObject *number = PyFloat_FromDouble(values[k]);
+        if (number == NULL) {
+            Py_DECREF(tuple);
+            return NULL;
+        }
+        PyTuple_SetItem(tuple, k, number);
+    }
+    return tuple;
+}
+
+static int append_new(PyObject *list, PyObject *item)
+{
+    int failed;
+    if (item == NULL)
+        return -1;
+    failed = PyList_Append(list, item);
+    Py_DECREF(item);
+    return failed;
+}
+
+/* One plain line's words: 1 if it is a straight move (or F/G/N only), 0 if anything else. */
+static int scan_line(const char *s, Py_ssize_t len, const double *base, double scale, double target[6],
+                     int *motion, double *feed, int *moved)
+{
+    char buffer[NUMBER_BUFFER];
+    int seen[26] = {0};
+    Py_ssize_t i = 0;
+    while (i < len) {
+        char c = s[i], letter;
+        Py_ssize_t start, digits;
+        double value;
+        char *stop;
+        if (c == ' ' || c == '\t') {
+            i++;
+            continue;
+        }
+        if (c == ';')
+            break;
+        if (c >= 'a' && c <= 'z')
+            letter = (char)(c - 'a' + 'A');
+        else if (c >= 'A' && c <= 'Z')
+            letter = c;
+        else
+            return 0;
+        i++;
+        while (i < len && (s[i] == ' ' || s[i] == '\t'))
+            i++;
+        start = i;
+        if (i < len && (s[i] == '+' || s[i] == '-'))
+            i++;
+        digits = i;
+        while (i < len && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.'))
+            i++;
+        if (i == digits || i - start >= NUMBER_BUFFER)
+            return 0;
+        memcpy(buffer, s + start, (size_t)(i - start));
+        buffer[i - start] = '\0';
+        value = PyOS_string_to_double(buffer, &stop, NULL);
+        if (value == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            return 0;
+        }
+        if (*stop != '\0')
+            return 0;
+        if (seen[letter - 'A'])
+            return 0;
+        seen[letter - 'A'] = 1;
+        switch (letter) {
+        case 'X': case 'Y': case 'Z': {
+            int axis = letter - 'X';
+            target[axis] = base[axis] + value * scale;
+            *moved = 1;
+            break;
+        }
+        case 'A': case 'B': case 'C': {
+            int axis = 3 + letter - 'A';
+            target[axis] = base[axis] + value;
+            *moved = 1;
+            break;
+        }
+        case 'F':
+            if (!(value >= 0))
+                return 0;
+            *feed = value * scale;
+            break;
+        case 'G':
+            if (value == 0.0)
+                *motion = G0;
+            else if (value == 1.0)
+                *motion = G1;
+            else
+                return 0;
+            break;
+        case 'N':
+            break;
+        default:
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static PyObject *plain_moves(PyObject *self, PyObject *args)
+{
+    PyObject *lines, *pos_obj, *offset_obj;
+    Py_ssize_t first, room, count, index, done = 0;
+    double scale, feed, position[6], offset[6];
+    int incremental, motion;
+    PyObject *kinds = NULL, *numbers = NULL, *ends = NULL, *feeds = NULL, *in_force = NULL;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OnOOdpidn", &lines, &first, &pos_obj, &offset_obj, &scale, &incremental,
+                          &motion, &feed, &room))
+        return NULL;
+    if (read_six(pos_obj, position) < 0 || read_six(offset_obj, offset) < 0)
+        return NULL;
+    count = PySequence_Size(lines);
+    if (count < 0)
+        return NULL;
+    kinds = PyList_New(0);
+    numbers = PyList_New(0);
+    ends = PyList_New(0);
+    feeds = PyList_New(0);
+    in_force = PyList_New(0);
+    if (!kinds || !numbers || !ends || !feeds || !in_force)
+        goto fail;
+    for (index = first; index < count && done < room; index++) {
+        PyObject *pair = PySequence_GetItem(lines, index), *lineno, *text;
+        const char *s;
+        Py_ssize_t len;
+        double target[6], new_feed = feed;
+        int line_motion = motion, moved = 0, simple;
+        if (pair == NULL)
+            goto fail;
+        lineno = PySequence_GetItem(pair, 0);
+        text = PySequence_GetItem(pair, 1);
+        Py_DECREF(pair);
+        if (lineno == NULL || text == NULL) {
+            Py_XDECREF(lineno);
+            Py_XDECREF(text);
+            goto fail;
+        }
+        s = PyUnicode_AsUTF8AndSize(text, &len);
+        if (s == NULL) {
+            Py_DECREF(lineno);
+            Py_DECREF(text);
+            goto fail;
+        }
+        memcpy(target, position, sizeof target);
+        simple = scan_line(s, len, incremental ? position : offset, scale, target, &line_motion, &new_feed, &moved);
+        Py_DECREF(text);
+        if (!simple || line_motion == NO_MOTION || (moved && line_motion == G1 && new_feed <= 0)) {
+            Py_DECREF(lineno);
+            break;
+        }
+        if (moved) {
+            int linear = line_motion == G1;
+            if (PyList_Append(kinds, linear ? linear_kind : rapid_kind) < 0
+                || PyList_Append(numbers, lineno) < 0
+                || append_new(ends, pose_tuple(target)) < 0
+                || append_new(feeds, PyFloat_FromDouble(linear ? new_feed : 0.0)) < 0
+                || append_new(in_force, PyFloat_FromDouble(new_feed)) < 0) {
+                Py_DECREF(lineno);
+                goto fail;
+            }
+            memcpy(position, target, sizeof position);
+        }
+        Py_DECREF(lineno);
+        feed = new_feed;
+        motion = line_motion;
+        done++;
+    }
+    return Py_BuildValue("nnidNNNNN", index, done, motion, feed, kinds, numbers, ends, feeds, in_force);
+fail:
+    Py_XDECREF(kinds);
+    Py_XDECREF(numbers);
+    Py_XDECREF(ends);
+    Py_XDECREF(feeds);
+    Py_XDECREF(in_force);
+    return NULL;
+}
+
+/* A growing text buffer. */
+typedef struct {
+    char *data;
+    size_t used, size;
+} Text;
+
+static int text_add(Text *text, const char *s, size_t n)
+{
+    if (text->used + n > text->size) {
+        size_t size = text->size ? text->size : 1 << 16;
+        char *grown;
+        while (size < text->used + n)
+            size *= 2;
+        grown = (char *)PyMem_Realloc(text->data, size);
+        if (grown == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        text->data = grown;
+        text->size = size;
+    }
+    memcpy(text->data + text->used, s, n);
+    text->used += n;
+    return 0;
+}
+
+static const double POWERS[] = {1.0, 10.0, 100.0, 1000.0, 10000.0, 100000.0, 1000000.0};
+
+/* repr() of a double with at most six decimals, without the general shortest-digits search.
+ *
+ * If v == k / 10^d for the smallest such d (k and 10^d exact doubles; the division rounds
+ * correctly, as reading the text back does), the text of k / 10^d reads back as v, and no text
+ * with fewer decimals does.  For |v| < 1e9 and d <= 6, 10^-d is wider than the spacing of the
+ * doubles near v, so that text is the only one with d decimals: it is repr(v).  Returns its
+ * length, or -1 when v is outside that case (repr then asks Python's own routine).
+ */
+static int short_repr(double v, char *out)
+{
+    double magnitude = v < 0 ? -v : v;
+    int d, n = 0;
+    if (!(magnitude < 1e9) || (magnitude < 1e-4 && v != 0.0))
+        return -1;
+    if (v == 0.0) {
+        if (1.0 / v < 0)
+            out[n++] = '-';
+        memcpy(out + n, "0.0", 3);
+        return n + 3;
+    }
+    for (d = 0; d <= 6; d++) {
+        long long k = llround(v * POWERS[d]);
+        char digits[24];
+        int width = 0, j;
+        if ((double)k / POWERS[d] != v)
+            continue;
+        if (k < 0) {
+            out[n++] = '-';
+            k = -k;
+        }
+        do {  /* the digits of k, last first */
+            digits[width++] = (char)('0' + k % 10);
+            k /= 10;
+        } while (k > 0);
+        while (width <= d)  /* at least one digit before the point */
+            digits[width++] = '0';
+        for (j = width - 1; j >= d; j--)
+            out[n++] = digits[j];
+        out[n++] = '.';
+        if (d == 0)
+            out[n++] = '0';
+        for (j = d - 1; j >= 0; j--)
+            out[n++] = digits[j];
+        return n;
+    }
+    return -1;
+}
+
+/* repr() of a number: float_repr's own formatting for floats, repr() for anything else. */
+static int text_repr(Text *text, PyObject *value)
+{
+    int failed;
+    if (PyFloat_CheckExact(value)) {
+        char quick[64];
+        double v = PyFloat_AsDouble(value);
+        int n = short_repr(v, quick);
+        char *digits;
+        if (n >= 0)
+            return text_add(text, quick, (size_t)n);
+        digits = PyOS_double_to_string(v, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+        if (digits == NULL)
+            return -1;
+        failed = text_add(text, digits, strlen(digits));
+        PyMem_Free(digits);
+        return failed;
+    } else {
+        PyObject *shown = PyObject_Repr(value);
+        const char *s;
+        Py_ssize_t n;
+        if (shown == NULL)
+            return -1;
+        s = PyUnicode_AsUTF8AndSize(shown, &n);
+        failed = s == NULL ? -1 : text_add(text, s, (size_t)n);
+        Py_DECREF(shown);
+        return failed;
+    }
+}
+
+static int text_str(Text *text, PyObject *value)
+{
+    PyObject *shown = PyObject_Str(value);
+    const char *s;
+    Py_ssize_t n;
+    int failed;
+    if (shown == NULL)
+        return -1;
+    s = PyUnicode_AsUTF8AndSize(shown, &n);
+    failed = s == NULL ? -1 : text_add(text, s, (size_t)n);
+    Py_DECREF(shown);
+    return failed;
+}
+
+static PyObject *trace_rows(PyObject *self, PyObject *args)
+{
+    PyObject *lines, *kinds, *ends, *name, *times, *result = NULL;
+    const char *name_s;
+    Py_ssize_t name_n, count, i;
+    Text text = {NULL, 0, 0}, coords = {NULL, 0, 0};
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOOUO", &lines, &kinds, &ends, &name, &times))
+        return NULL;
+    name_s = PyUnicode_AsUTF8AndSize(name, &name_n);
+    if (name_s == NULL)
+        return NULL;
+    count = PySequence_Size(lines);
+    if (count < 0 || PySequence_Size(kinds) < count || PySequence_Size(ends) < count)
+        goto done;
+    if (PySequence_Size(times) - 1 < count)
+        count = PySequence_Size(times) - 1;  /* zip() stops at the shortest */
+    for (i = 0; i < count; i++) {
+        PyObject *line = PySequence_GetItem(lines, i), *kind = NULL, *end = NULL, *t = NULL;
+        const char *kind_s;
+        Py_ssize_t kind_n, k;
+        int failed = line == NULL;
+        coords.used = 0;
+        if (!failed) {
+            kind = PySequence_GetItem(kinds, i);
+            end = PySequence_GetItem(ends, i);
+            t = PySequence_GetItem(times, i + 1);
+            failed = kind == NULL || end == NULL || t == NULL;
+        }
+        if (!failed && PySequence_Size(end) != 6) {
+            PyErr_SetString(PyExc_TypeError, "not all arguments converted during string formatting");
+            failed = 1;
+        }
+        for (k = 0; !failed && k < 6; k++) {
+            PyObject *value = PySequence_GetItem(end, k);
+            failed = value == NULL || (k && text_add(&coords, ",", 1) < 0) || text_repr(&coords, value) < 0;
+            Py_XDECREF(value);
+        }
+        if (!failed) {
+            kind_s = PyUnicode_AsUTF8AndSize(kind, &kind_n);
+            failed = kind_s == NULL
+                || text_str(&text, line) < 0 || text_add(&text, ",", 1) < 0
+                || text_add(&text, kind_s, (size_t)kind_n) < 0 || text_add(&text, ",", 1) < 0
+                || text_add(&text, coords.data, coords.used) < 0 || text_add(&text, ",", 1) < 0
+                || text_add(&text, coords.data, coords.used) < 0 || text_add(&text, ",", 1) < 0
+                || text_add(&text, name_s, (size_t)name_n) < 0 || text_add(&text, ",", 1) < 0
+                || text_repr(&text, t) < 0 || text_add(&text, "\n", 1) < 0;
+        }
+        Py_XDECREF(line);
+        Py_XDECREF(kind);
+        Py_XDECREF(end);
+        Py_XDECREF(t);
+        if (failed)
+            goto done;
+    }
+    result = PyUnicode_FromStringAndSize(text.data ? text.data : "", (Py_ssize_t)text.used);
+done:
+    PyMem_Free(text.data);
+    PyMem_Free(coords.data);
+    return result;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/* Whether a line matches line_parser.FAST_LINE: words (letter, number) only, then a ; comment. */
+static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
+{
+    Py_ssize_t i = 0, words = 0, run;
+    while (i < len && is_blank(s[i]))
+        i++;
+    for (;;) {
+        if (i == len || s[i] == ';')
+            return words > 0;
+        if (!((s[i] >= 'A' && s[i] <= 'Z') || (s[i] >= 'a' && s[i] <= 'z')))
+            return 0;
+        i++;
+        while (i < len && is_blank(s[i]))
+            i++;
+        if (i < len && (s[i] == '+' || s[i] == '-'))
+            i++;
+        if (i < len && is_digit(s[i])) {
+            for (run = 0; i < len && is_digit(s[i]); i++)
+                run++;
+            if (run > 300)
+                return 0;
+            if (i < len && s[i] == '.') {
+                for (i++, run = 0; i < len && is_digit(s[i]); i++)
+                    run++;
+                if (run > max_digits)
+                    return 0;
+            }
+        } else if (i < len && s[i] == '.') {
+            for (i++, run = 0; i < len && is_digit(s[i]); i++)
+                run++;
+            if (run < 1 || run > max_digits)
+                return 0;
+        } else {
+            return 0;
+        }
+        words++;
+        while (i < len && is_blank(s[i]))
+            i++;
+    }
+}
+
+static PyObject *non_plain_lines(PyObject *self, PyObject *args)
+{
+    PyObject *chunk, *found;
+    Py_ssize_t max_length, max_digits, count, i;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "nnO", &max_length, &max_digits, &chunk))
+        return NULL;
+    count = PySequence_Size(chunk);
+    found = count < 0 ? NULL : PyList_New(0);
+    if (found == NULL)
+        return NULL;
+    for (i = 0; i < count; i++) {
+        PyObject *text = PySequence_GetItem(chunk, i);
+        const char *s;
+        Py_ssize_t len;
+        int plain;
+        if (text == NULL)
+            goto fail;
+        s = PyUnicode_AsUTF8AndSize(text, &len);
+        plain = s != NULL && PyUnicode_GetLength(text) <= max_length && plain_line(s, len, max_digits);
+        Py_DECREF(text);
+        if (s == NULL)
+            goto fail;
+        if (!plain && append_new(found, PyLong_FromSsize_t(i)) < 0)
+            goto fail;
+    }
+    return found;
+fail:
+    Py_DECREF(found);
+    return NULL;
+}
+
+static PyMethodDef methods[] = {
+    {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
+    {"plain_moves", plain_moves, METH_VARARGS, "interpreter.bulk.plain_moves, compiled."},
+    {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef module = {
+    PyModuleDef_HEAD_INIT, "_speedups", "The optional compiled core (see speedups.py).", -1, methods,
+    NULL, NULL, NULL, NULL,
+};
+
+PyMODINIT_FUNC PyInit__speedups(void)
+{
+    linear_kind = PyUnicode_InternFromString("linear");
+    rapid_kind = PyUnicode_InternFromString("rapid");
+    if (linear_kind == NULL || rapid_kind == NULL)
+        return NULL;
+    return PyModule_Create(&module);
+}

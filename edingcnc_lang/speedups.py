@@ -1,0 +1,66 @@
+"""Which core runs the hot loops: the compiled one (``_speedups.c``) or the pure-Python reference.
+
+The compiled core is optional: ``pip install`` builds it when a C compiler is there and goes on
+without it when not.  It does exactly what the Python functions do (the equivalence tests run
+both): finding the lines that are not plain word lines in the check pass
+(``parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
+(``interpreter.bulk.plain_moves``) and formatting trace rows (``outputs.trace_rows``), byte for byte.  ``ECNC_PURE_PYTHON=1``
+selects the Python core at run time; ``ecnc --version`` says which one runs.
+"""
+from __future__ import annotations
+
+import os
+from typing import Any
+
+PURE_ENV = "ECNC_PURE_PYTHON"
+
+
+def _compiled() -> Any:
+    if os.environ.get(PURE_ENV, "") not in ("", "0"):
+        return None
+    try:
+        from . import _speedups  # type: ignore[attr-defined]
+    except ImportError:
+        return None
+    return _speedups
+
+
+_CORE = _compiled()
+CORE = "compiled" if _CORE is not None else "python"  # what ``ecnc --version`` reports
+
+
+def _pick(name: str, module: str) -> Any:
+    """The compiled function ``name`` if that core runs, else the Python one from ``module``."""
+    if _CORE is not None:
+        return getattr(_CORE, name)
+    from importlib import import_module
+
+    return getattr(import_module(module, __package__), name)
+
+
+def non_plain_lines(chunk: list[str]) -> list[int]:
+    """``parser.non_plain_lines`` on the core that runs (see there)."""
+    global non_plain_lines
+    if _CORE is None:
+        non_plain_lines = _pick("non_plain_lines", ".parser")
+    else:
+        from functools import partial
+
+        from .limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+
+        non_plain_lines = partial(_CORE.non_plain_lines, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS)
+    return non_plain_lines(chunk)
+
+
+def plain_moves(*args: Any) -> Any:
+    """``interpreter.bulk.plain_moves`` on the core that runs (see there)."""
+    global plain_moves
+    plain_moves = _pick("plain_moves", ".interpreter.bulk")
+    return plain_moves(*args)
+
+
+def trace_rows(*args: Any) -> Any:
+    """``outputs.trace_rows`` on the core that runs (see there)."""
+    global trace_rows
+    trace_rows = _pick("trace_rows", ".outputs")
+    return trace_rows(*args)

@@ -1,0 +1,13 @@
+"""The optional compiled core (edingcnc_lang/_speedups.c); everything else is in pyproject.toml.
+
+The extension is ``optional``: without a C compiler the install goes on and the pure-Python core
+runs (``ecnc --version`` says which).  It uses the stable ABI, so one wheel serves Python 3.10+.
+"""
+from setuptools import Extension, setup
+
+setup(
+    ext_modules=[Extension("edingcnc_lang._speedups", ["edingcnc_lang/_speedups.c"], optional=True,
+                           py_limited_api=True, define_macros=[("Py_LIMITED_API", "0x030A0000")],
+                           extra_compile_args=["-O2", "-ffp-contract=off"])],
+    options={"bdist_wheel": {"py_limited_api": "cp310"}},
+)

@@ -1,0 +1,90 @@
+"""The compiled core does exactly what the Python reference does (skipped where it is not built).
+
+The whole suite runs on whichever core is active; these tests put both side by side on the
+same inputs: the check pass's scan, the bulk path's targets and the trace rows, byte for byte.
+``ECNC_PURE_PYTHON=1`` must select the Python core in a fresh process.
+"""
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from edingcnc_lang import RunOptions, run_file
+from edingcnc_lang.interpreter.bulk import NO_MOTION, plain_moves
+from edingcnc_lang.limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+from edingcnc_lang.outputs import trace_rows
+from edingcnc_lang.parser import non_plain_lines
+
+compiled = pytest.importorskip("edingcnc_lang._speedups", reason="the compiled core is not built here")
+
+numbers = st.one_of(st.integers(-999, 999).map(str), st.floats(-1000, 1000).map(lambda v: f"{v:.4f}"),
+                    st.sampled_from([".5", "-.25", "+3", "7.", "0", "00012.500", "1" * 40, "-0"]))
+words = st.tuples(st.sampled_from("GXYZABCFNMSgxyzf"), st.sampled_from(["", " ", "\t"]), numbers)
+lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{a}{gap}{v}" for a, gap, v in ws) + tail,
+                  st.lists(words, max_size=6), st.sampled_from(["", " ", "\t"]),
+                  st.sampled_from(["", " ; cut X5", ";", " (note)", "#1=2", "\r"]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(lines, min_size=1, max_size=12))
+def test_the_check_scan_is_the_same(chunk: list[str]) -> None:
+    assert compiled.non_plain_lines(MAX_LINE_LENGTH, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(lines, min_size=1, max_size=12), st.sampled_from([1.0, 25.4]), st.booleans(),
+       st.sampled_from([NO_MOTION, 0, 10]), st.sampled_from([0.0, 500.0]), st.integers(0, 15))
+def test_the_targets_of_plain_lines_are_the_same(chunk: list[str], scale: float, incremental: bool, motion: int,
+                                                 feed: float, room: int) -> None:
+    numbered = tuple((number, text) for number, text in enumerate(chunk, 7) if not non_plain_lines([text]))
+    pos, offset = [1.5, -2.0, 0.25, 0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, 0.0, 45.0]
+    args = (numbered, 0, pos, offset, scale, incremental, motion, feed, room)
+    assert compiled.plain_moves(*args) == plain_moves(*args)
+
+
+def test_trace_rows_are_the_same_bytes() -> None:
+    values = [0.0, -0.0, 1e-4, 9.99e-5, 0.1 + 0.2, 1 / 3, 40.309, -1000.001, 999999999.999999, 1e9, 2.5e-7,
+              123456.789012, 1e22, 5e-324, math.inf, -math.inf, math.nan, 25.4 * 12.345, 7.0, 1]
+    ends = [tuple(values[(i + k) % len(values)] for k in range(6)) for i in range(len(values))]
+    times = [0.0, *values]
+    count = len(ends)
+    args = (list(range(count)), ["linear", "rapid"] * (count // 2), ends, '"a,b"', times)
+    assert compiled.trace_rows(*args) == trace_rows(*args)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(*[st.floats(allow_nan=False, width=64)] * 7), min_size=1, max_size=20))
+def test_any_double_is_written_as_repr_writes_it(rows: list[tuple[float, ...]]) -> None:
+    ends, times = [row[:6] for row in rows], [0.0, *(row[6] for row in rows)]
+    args = (list(range(len(rows))), ["linear"] * len(rows), ends, "job.nc", times)
+    assert compiled.trace_rows(*args) == trace_rows(*args)
+
+
+def _run(job: Path, trace: Path, pure: bool) -> str:
+    env = {**os.environ, "ECNC_PURE_PYTHON": "1" if pure else "0"}
+    code = ("import sys; from edingcnc_lang import speedups; from edingcnc_lang.cli import entry; "
+            "print(speedups.CORE, file=sys.stderr); sys.argv = ['ecnc', 'run', sys.argv[1], '--trace', sys.argv[2]]; "
+            "entry()")
+    done = subprocess.run([sys.executable, "-c", code, str(job), str(trace)], env=env, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return done.stderr.split()[0]
+
+
+def test_both_cores_write_the_same_trace(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G21 G90 F1000\nM3 S800\n" + "".join(f"G1 X{i * 0.37:.3f} Y{-i * 1.1:.2f} Z{i % 7 * -0.5}\n"
+                                                          for i in range(3000))
+                   + "G20 G91\n" + "".join(f"X0.01 Y{i % 3}.5\n" for i in range(500)) + "G0 Z1\nM30\n")
+    pure, fast = tmp_path / "pure.csv", tmp_path / "fast.csv"
+    assert (_run(job, pure, pure=True), _run(job, fast, pure=False)) == ("python", "compiled")
+    assert pure.read_bytes() == fast.read_bytes()
+    in_process = tmp_path / "api.csv"
+    run_file(job, RunOptions(trace=in_process))
+    assert in_process.read_bytes() == pure.read_bytes()
