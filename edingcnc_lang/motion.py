@@ -19,7 +19,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from . import tables as t
 from .canon import AXES, PLANES, Batch, Event, Move, Pose
@@ -30,6 +30,8 @@ from .kinematics import abi
 from .kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
 from .kinematics.trajectory import CURVATURE_SHARE, Dynamics, Geometry, dynamics, geometry_of
+
+_T = TypeVar("_T")
 
 if TYPE_CHECKING:
     import numpy as np
@@ -293,7 +295,7 @@ class MotionStage:
         if result != 0:
             raise MachineError(f"kinematics {self.plugin.name}: control {control_id} returned {result}", where)
 
-    def _plugin_call(self, call: Callable[[], object], where: Location | None) -> object:
+    def _plugin_call(self, call: Callable[[], _T], where: Location | None) -> _T:
         """Run plug-in code; its exceptions become a clear error naming the plug-in (exit 70)."""
         try:
             return call()
@@ -311,8 +313,8 @@ class MotionStage:
         if start <= 0 or count <= 0:
             return
         values = self._plugin_call(lambda: [float(v) for v in kin.user_output()][:count], where)
-        values += [0.0] * (count - len(values))  # type: ignore[operator]
-        for offset, value in enumerate(values):  # type: ignore[arg-type]
+        values += [0.0] * (count - len(values))
+        for offset, value in enumerate(values):
             self.write_param(start + offset, value)
 
     def joints_at(self, pos: np.ndarray) -> np.ndarray:
@@ -330,7 +332,7 @@ class MotionStage:
                                                            knife.bending_angle, knife.z_hi, knife.z_lo)
         return offset
 
-    def _joints_of(self, pos: np.ndarray, where: Location) -> np.ndarray:
+    def _joints_of(self, pos: np.ndarray, where: Location | None) -> np.ndarray:
         """Inverse kinematics of (N, 6) poses in one call, bend correction included; checked for sanity."""
         kin = self.active
         if kin is None:
@@ -446,9 +448,9 @@ class MotionStage:
             start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
             radius = math.hypot(s[0] - center[0], s[1] - center[1])
             for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):
-                point = list(move.end)
-                point[first], point[second] = p1, p2
-                points.append(as_pose(point))
+                extreme = list(move.end)
+                extreme[first], extreme[second] = p1, p2
+                points.append(as_pose(extreme))
         for point in points:
             for axis, value in enumerate(point):
                 if not self._lower[axis] <= value <= self._upper[axis]:

@@ -13,7 +13,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from . import speedups
 from .canon import Batch, Event, Move, Pose
@@ -122,6 +122,7 @@ class SamplesWriter:
         import numpy as np
 
         spindle = _spindle_column(move, samples.pos[:, 0])
+        assert samples.speed is not None and samples.accel is not None  # the planner's time-true samples
         rows = np.column_stack([samples.t, samples.pos, samples.joints, spindle, samples.speed, samples.accel])
         rows = rows[samples.t > self._last_time]
         if not len(rows):
@@ -146,7 +147,8 @@ class SamplesWriter:
 
         data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
         with open(self.path, "wb") as handle:
-            np.savez(handle, **{name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)})
+            columns: dict[str, Any] = {name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)}
+            np.savez(handle, **columns)
 
 
 def _spindle_column(move: Move, xs: np.ndarray) -> np.ndarray:

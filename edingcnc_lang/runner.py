@@ -180,7 +180,7 @@ class Run:
             return TrivialKinematics(self.config.kinematics_settings)
         try:
             return load_kinematics(self.config.kinematics_name or "trivial", self.config.kinematics_settings,
-                                   [self.config.folder])
+                                   [folder for folder in (self.config.folder,) if folder is not None])
         except EcncError as err:
             if err.location is None:  # point at the ini that names the plug-in
                 err.location = Location(self.config.path)

@@ -75,13 +75,15 @@ class Planner:
         self._states: list[tuple[bool, float, float, int, int]] = []
         self._state_index: dict[tuple[bool, float, float, int, int], int] = {}
         self._start2 = 0.0
+        self._origin: Pose = (0.0,) * 6  # where the first collected move starts
         self._clear()
 
     # ------------------------------------------------------------------ input
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits, cap: float = math.inf,
-             accel_cap: float = math.inf) -> None:
+    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+             cap: float = math.inf, accel_cap: float = math.inf) -> None:
         """One move with the limits it runs against; ``cap`` and ``accel_cap`` are the path speed (mm/s) and
         acceleration (mm/s^2) the kinematics' joints allow."""
+        assert limits is not None  # needs_limits: the motion stage passes them to a planner that asks
         if self._ends and move.start != self._ends[-1]:
             self.flush()  # the position jumped (a kinematics switch): nothing to blend
         if not self._ends:
@@ -100,12 +102,13 @@ class Planner:
         self._queue.append(("move", move, joints))
         self._after_add()
 
-    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits]) -> None:
+    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
         """Straight moves in bulk whose joints are their positions (the interpreter's fast path).
 
         Per move only the end and the feed are kept (a rapid is a move with feed 0); the rest is
         the same for the whole batch, as it is for a single ``move``.
         """
+        assert limits is not None  # needs_limits, as in move()
         if self._ends and batch.start != self._ends[-1]:
             self.flush()
         if not self._ends:
@@ -160,7 +163,7 @@ class Planner:
 
     # ------------------------------------------------------------------ planning
     def _clear(self) -> None:
-        self._origin: Pose = (0.0,) * 6  # type: ignore[assignment]
+        self._origin = (0.0,) * 6
         # one entry per collected move
         self._ends: list[Pose] = []
         self._feed: list[float] = []    # mm/min as programmed (0 for rapids)
