@@ -1,0 +1,151 @@
+"""Which point of one path lies on which part of the other: alignment by geometry, not by index.
+
+Both runs are dense polylines (``record.sample``).  A cursor walks the OLD polyline while the NEW
+points are taken in order: a block of points is first tried where the path lengths say it should be
+(the fast path: a reformatted or re-split job never leaves it); a point that is not within the
+tolerance there is looked for from the last point that was (so a lead-in inserted in NEW, a pass
+split in two or moves removed cost only their own points), and a match far ahead is believed only
+when the points after it follow.  The walk only goes forward, so a retraced path is matched to its
+own pass.  Work and memory grow with the points, never with their square.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .record import Samples
+
+BLOCK = 512          # points tried at once on the fast path
+WINDOW = 256         # segments searched around the cursor for a point off the fast path
+FAR = 65_536         # segments searched ahead for a point after a removed stretch
+FAR_EVERY = 64       # in a long run of unmatched points, the far search is tried every this many
+VERIFY = 6           # points after a far match that must follow it
+CAPTURE = 1.0        # mm: an unmatched point this close to OLD drags the cursor along (a moved contour)
+
+
+@dataclass
+class Alignment:
+    """For every point of one path: how far it is from the other path, and where on it."""
+
+    distance: np.ndarray   # (P,) distance to the other path (inf: the other path is empty)
+    segment: np.ndarray    # (P,) index of the nearest segment of the other path (-1: none)
+    at: np.ndarray         # (P,) 0..1 along that segment
+
+
+def _to_segments(a: np.ndarray, b: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Distances of points ``p`` to segments ``a``-``b`` (row by row or broadcast) and where they meet."""
+    ab = b - a
+    span = np.einsum("...i,...i->...", ab, ab)
+    t = np.einsum("...i,...i->...", p - a, ab) / np.where(span > 0.0, span, 1.0)
+    t = np.clip(t, 0.0, 1.0)
+    near = a + t[..., None] * ab
+    return np.linalg.norm(p - near, axis=-1), t
+
+
+class _Walk:
+    """The cursor over OLD's segments and the NEW points matched so far."""
+
+    def __init__(self, new: Samples, old: Samples, tolerance: float) -> None:
+        self.new, self.tolerance = new, tolerance
+        pts = old.points if len(old.points) != 1 else np.vstack((old.points, old.points))
+        self.a, self.b = pts[:-1], pts[1:]
+        self.length = old.length if len(old.length) != 1 else np.zeros(2)
+        self.segments = len(self.a)
+        self.firm = 0          # segment of the last point within the tolerance
+        self.soft = 0          # segment the cursor follows (a moved contour drags it past firm)
+        self.pos_new = 0.0     # path length of NEW at the cursor
+        self.pos_old = 0.0     # path length of OLD at the cursor
+
+    def follow(self, first: int, stop: int, pos_new: float, pos_old: float,
+               floor: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Points ``first``..``stop`` matched where the path lengths put them (and one segment either side)."""
+        expected = pos_old + (self.new.length[first:stop] - pos_new)
+        index = np.searchsorted(self.length, expected, side="right") - 1
+        choices = np.clip(index[:, None] + np.array([0, 1, -1]), floor, self.segments - 1)
+        p = self.new.points[first:stop, None, :]
+        dist, at = _to_segments(self.a[choices], self.b[choices], p)
+        best = np.argmin(dist, axis=1)
+        rows = np.arange(len(best))
+        return dist[rows, best], choices[rows, best], at[rows, best]
+
+    def along(self, segment: int, at: float) -> float:
+        return float(self.length[segment] + at * (self.length[segment + 1] - self.length[segment]))
+
+    def moved_to(self, point: int, segment: int, at: float, firm: bool) -> None:
+        self.soft = max(self.soft, segment)
+        if firm:
+            self.firm = self.soft = segment
+        self.pos_new, self.pos_old = float(self.new.length[point]), self.along(segment, at)
+
+    def follows(self, point: int, segment: int, at: float) -> bool:
+        """Do the points after ``point`` lie on OLD after ``segment``?"""
+        stop = min(len(self.new.points), point + 1 + VERIFY)
+        if stop <= point + 1:
+            return True
+        dist, _seg, _at = self.follow(point + 1, stop, float(self.new.length[point]), self.along(segment, at), segment)
+        return bool(np.all(dist <= self.tolerance))
+
+    def search(self, point: int, low: int, high: int, verify: bool) -> tuple[int, float, float] | None:
+        """The first segment in ``low``..``high`` within the tolerance of ``point`` (that the next points follow)."""
+        p = self.new.points[point]
+        for start in range(low, high, 8192):
+            stop = min(high, start + 8192)
+            dist, at = _to_segments(self.a[start:stop], self.b[start:stop], p)
+            hits = np.flatnonzero(dist <= self.tolerance)
+            for hit in hits[:8]:
+                if not verify or self.follows(point, start + int(hit), float(at[hit])):
+                    return start + int(hit), float(dist[hit]), float(at[hit])
+            if hits.size and not verify:
+                break
+        return None
+
+
+def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
+    """Match every point of ``new`` to the segment of ``old`` it lies on (or is nearest to), in order."""
+    count = len(new.points)
+    distance = np.full(count, np.inf)
+    segment = np.full(count, -1, dtype=np.int64)
+    at = np.zeros(count)
+    if not count or not len(old.points):
+        return Alignment(distance, segment, at)
+    walk = _Walk(new, old, tolerance)
+    point, lost = 0, 0
+    while point < count:
+        stop = min(count, point + BLOCK)
+        dist, seg, where = walk.follow(point, stop, walk.pos_new, walk.pos_old, walk.firm)
+        bad = np.flatnonzero(dist > tolerance)
+        good = int(bad[0]) if bad.size else stop - point
+        if good:
+            distance[point:point + good], segment[point:point + good] = dist[:good], seg[:good]
+            at[point:point + good] = where[:good]
+            walk.moved_to(point + good - 1, int(seg[good - 1]), float(where[good - 1]), firm=True)
+            point, lost = point + good, 0
+            continue
+        low = max(walk.firm, walk.soft - WINDOW)
+        high = min(walk.segments, walk.soft + WINDOW)
+        found = walk.search(point, low, high, verify=False)
+        if found is None and lost % FAR_EVERY == 0 and high < walk.segments:
+            found = walk.search(point, high, min(walk.segments, high + FAR), verify=True)
+        if found is not None:
+            segment[point], distance[point], at[point] = found
+            walk.moved_to(point, found[0], found[2], firm=True)
+            point, lost = point + 1, 0
+            continue
+        dist_all, at_all = _to_segments(walk.a[low:high], walk.b[low:high], new.points[point])
+        nearest = int(np.argmin(dist_all))
+        segment[point], distance[point], at[point] = low + nearest, dist_all[nearest], at_all[nearest]
+        if dist_all[nearest] <= CAPTURE:
+            walk.moved_to(point, low + nearest, float(at_all[nearest]), firm=False)
+        point, lost = point + 1, lost + 1
+    return Alignment(distance, segment, at)
+
+
+def matched_moves(alignment: Alignment, old: Samples) -> np.ndarray:
+    """The OLD move each point lies on (a point at a vertex counts with the move that ends there)."""
+    seg = np.maximum(alignment.segment, 0)
+    ending = (alignment.at <= 1e-9) & (seg > 0)
+    index = np.where(ending, seg, seg + 1)
+    index = np.minimum(index, len(old.owner) - 1)
+    moves = old.owner[index] if len(old.owner) else np.zeros_like(index)
+    return np.where(alignment.segment >= 0, moves, -1)

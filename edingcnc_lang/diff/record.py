@@ -1,0 +1,191 @@
+"""One run of a job, recorded for comparison: every move as a row of numbers, the events that matter.
+
+``record`` runs the job with ``RunOptions(on_timed_move=..., on_event=...)`` and keeps each move as
+one row of doubles in a flat ``array`` (no Python object per move survives the callback), then hands
+out numpy columns.  ``sample`` turns the moves into the dense polyline the alignment walks: every
+move's end, arcs as chords within a quarter of the tolerance, long lines split every ``LINE_STEP``.
+"""
+from __future__ import annotations
+
+import math
+from array import array
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..canon import Arc, Event, Move, Pose
+from ..errors import EcncError
+from ..kinematics.sampling import arc_sweep
+from ..kinematics.trajectory import geometry_of
+from ..planner.estimate import Timing
+from ..runner import Run, RunOptions, RunResult
+
+KINDS = ("rapid", "linear", "arc", "probe", "home")
+RAPID_KINDS = (0, 4)
+# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc
+ROW = 19
+LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
+MAX_CHORDS = 4096      # per arc move, whatever the tolerance asks
+EVENT_KINDS = ("tool_change", "spindle", "coolant", "dwell")
+
+
+@dataclass
+class Recording:
+    """What one run did, as numpy columns, plus its events and result."""
+
+    name: str
+    kinds: np.ndarray      # (N,) int8 index into KINDS
+    tools: np.ndarray      # (N,) int32
+    lines: np.ndarray      # (N,) int32 the job line (the calling line for a move made in a sub)
+    feeds: np.ndarray      # (N,) mm/min
+    spindles: np.ndarray   # (N,) rpm at the end of the move
+    times: np.ndarray      # (N, 2) planned start and end, seconds
+    starts: np.ndarray     # (N, 6)
+    ends: np.ndarray       # (N, 6)
+    arcs: dict[int, Arc]
+    # (kind, job line, value, moves before it): tool changes, spindle on/off, coolant, dwell
+    events: list[tuple[str, int, float, int]] = field(default_factory=list)
+    result: RunResult | None = None
+
+    def __len__(self) -> int:
+        return len(self.kinds)
+
+    @property
+    def seconds(self) -> float:
+        estimate = self.result.estimate if self.result is not None else None
+        return estimate.seconds if estimate is not None else 0.0
+
+    def tool_order(self) -> list[int]:
+        """The tools put into the spindle, in order (a tool change to the tool already in is not one)."""
+        order: list[int] = []
+        for kind, _line, value, _at in self.events:
+            if kind == "tool_change" and (not order or order[-1] != int(value)):
+                order.append(int(value))
+        return order
+
+
+class Recorder:
+    """The run's callbacks: a flat array of doubles per move, a short tuple per event that matters."""
+
+    def __init__(self, job: str) -> None:
+        self.job = job
+        self.rows = array("d")
+        self.arcs: dict[int, Arc] = {}
+        self.events: list[tuple[str, int, float, int]] = []
+        self.tool = 0
+        self._unplaced: list[int] = []  # events still waiting for their job line
+        self._kind = {kind: i for i, kind in enumerate(KINDS)}
+
+    def _line(self, path: str, line: int, caller: int) -> int:
+        return caller if caller else (line if path == self.job else 0)
+
+    def move(self, move: Move, joints: Pose, timing: Timing) -> None:
+        line = self._line(move.path, move.line, move.caller)
+        while self._unplaced:  # events made inside a sub take the job line of the next move
+            kind, _none, value, at = self.events[self._unplaced[-1]]
+            self.events[self._unplaced.pop()] = (kind, line, value, at)
+        if move.arc is not None:
+            self.arcs[len(self.rows) // ROW] = move.arc
+        self.rows.extend((self._kind.get(move.kind, 1), self.tool, line,
+                          move.feed, move.spindle, timing.start, timing.end))
+        self.rows.extend(move.start)
+        self.rows.extend(move.end)
+
+    def event(self, event: Event) -> None:
+        value: float
+        if event.kind == "tool_change":
+            self.tool = int(event.data.get("tool", self.tool))
+            value = self.tool
+        elif event.kind == "spindle":
+            value = float(event.data.get("m", 5))
+        elif event.kind == "coolant":
+            value = float(event.data.get("m", 9))
+        elif event.kind == "dwell":
+            value = float(event.data.get("seconds", 0.0))
+        else:
+            return
+        line = self._line(event.path, event.line, 0)
+        if not line:
+            self._unplaced.append(len(self.events))
+        self.events.append((event.kind, line, value, len(self.rows) // ROW))
+
+    def recording(self, name: str, result: RunResult) -> Recording:
+        table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
+        return Recording(name=name, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
+                         lines=table[:, 2].astype(np.int32), feeds=table[:, 3].copy(), spindles=table[:, 4].copy(),
+                         times=table[:, 5:7].copy(), starts=table[:, 7:13].copy(), ends=table[:, 13:19].copy(),
+                         arcs=self.arcs, events=self.events, result=result)
+
+
+def record(job: Path, options: RunOptions, name: str | None = None) -> Recording:
+    """Run ``job`` (planned, for its time estimate) and record what it did; errors are raised as ``run`` raises them."""
+    shown = name or str(job)
+    recorder = Recorder(shown)
+    run = Run(replace(options, on_timed_move=recorder.move, on_event=recorder.event, plan=True))
+    result = run.execute_file(job, name)
+    return recorder.recording(shown, result)
+
+
+@dataclass
+class Samples:
+    """A run's path as one polyline: points, arc length to each, and the move each point ends."""
+
+    points: np.ndarray   # (P, D) machine coordinates (XYZ, and ABC when a run turns them)
+    length: np.ndarray   # (P,) cumulative path length
+    owner: np.ndarray    # (P,) int index of the move whose path reaches this point (-1: the start)
+
+
+def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
+    """The dense polyline of ``rec``: what the alignment compares, so two ways of writing the same
+    path (an arc split in two, a line split in three) give points on the same curve."""
+    count = len(rec)
+    if not count:
+        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int64))
+    starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
+    lengths = np.linalg.norm(ends - starts, axis=1)
+    pieces = np.maximum(1, np.ceil(lengths / LINE_STEP)).astype(np.int64)
+    arc_points: dict[int, np.ndarray] = {}
+    for index, arc in rec.arcs.items():
+        arc_points[index] = _arc_points(rec, index, arc, tolerance)[:, :dims]
+        pieces[index] = len(arc_points[index])
+    # a point where a move starts away from the previous end (a kinematics switch, the first move)
+    jumps = np.ones(count, dtype=bool)
+    jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
+    total = int(pieces.sum() + jumps.sum())
+    points = np.empty((total, dims))
+    owner = np.empty(total, dtype=np.int64)
+    # where each move's first point goes
+    firsts = np.cumsum(pieces + jumps) - pieces
+    jump_at = firsts[jumps] - 1
+    points[jump_at] = starts[jumps]
+    owner[jump_at] = np.flatnonzero(jumps) - 1
+    move_of = np.repeat(np.arange(count), pieces)
+    slot = np.arange(int(pieces.sum())) - np.repeat(np.cumsum(pieces) - pieces, pieces)
+    at = np.repeat(firsts, pieces) + slot
+    fraction = (slot + 1) / np.repeat(pieces, pieces)
+    points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
+    owner[at] = move_of
+    for index, chords in arc_points.items():
+        points[firsts[index]:firsts[index] + len(chords)] = chords
+    steps = np.linalg.norm(np.diff(points, axis=0), axis=1)
+    steps[jump_at[jump_at > 0] - 1] = 0.0  # a jump is no path
+    length = np.concatenate(([0.0], np.cumsum(steps)))
+    return Samples(points, length, owner)
+
+
+def _arc_points(rec: Recording, index: int, arc: Arc, tolerance: float) -> np.ndarray:
+    """The points of an arc move after its start, chords off the arc by at most a quarter of ``tolerance``."""
+    start, end = rec.starts[index], rec.ends[index]
+    geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=arc))
+    assert geometry.center is not None
+    first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
+    c1, c2 = geometry.center[first], geometry.center[second]
+    radius = math.hypot(start[first] - c1, start[second] - c2)
+    swept = abs(arc_sweep(math.atan2(start[second] - c2, start[first] - c1),
+                          math.atan2(end[second] - c2, end[first] - c1), geometry.turns))
+    sag = max(tolerance / 4.0, 1e-9)
+    step = 2.0 * math.acos(max(-1.0, 1.0 - sag / radius)) if radius > sag else math.pi
+    chords = min(MAX_CHORDS, max(2, math.ceil(swept / step)))
+    return np.asarray(geometry.points_at(np.arange(1, chords + 1) / chords), dtype=float)
+
