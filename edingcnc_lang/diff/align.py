@@ -22,6 +22,8 @@ FAR = 65_536         # segments searched ahead for a point after a removed stret
 FAR_EVERY = 64       # in a long run of unmatched points, the far search is tried every this many
 VERIFY = 6           # points after a far match that must follow it
 CAPTURE = 1.0        # mm: an unmatched point this close to OLD drags the cursor along (a moved contour)
+SLACK = 2.0          # mm of path, plus ...
+SLACK_SHARE = 0.25   # ... this share of the path since the last match: how far from where it should be
 
 
 @dataclass
@@ -56,12 +58,14 @@ class _Walk:
         self.soft = 0          # segment the cursor follows (a moved contour drags it past firm)
         self.pos_new = 0.0     # path length of NEW at the cursor
         self.pos_old = 0.0     # path length of OLD at the cursor
+        self.firm_new = 0.0    # the same at the last point within the tolerance
+        self.firm_old = 0.0
 
     def follow(self, first: int, stop: int, pos_new: float, pos_old: float,
                floor: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Points ``first``..``stop`` matched where the path lengths put them (and one segment either side)."""
         expected = pos_old + (self.new.length[first:stop] - pos_new)
-        index = np.searchsorted(self.length, expected, side="right") - 1
+        index = np.searchsorted(self.length, expected, side="left") - 1  # a vertex: the segment ending there
         choices = np.clip(index[:, None] + np.array([0, 1, -1]), floor, self.segments - 1)
         p = self.new.points[first:stop, None, :]
         dist, at = _to_segments(self.a[choices], self.b[choices], p)
@@ -69,14 +73,23 @@ class _Walk:
         rows = np.arange(len(best))
         return dist[rows, best], choices[rows, best], at[rows, best]
 
+    def _along(self, segments: np.ndarray, at: np.ndarray) -> np.ndarray:
+        return self.length[segments] + at * (self.length[segments + 1] - self.length[segments])
+
     def along(self, segment: int, at: float) -> float:
         return float(self.length[segment] + at * (self.length[segment + 1] - self.length[segment]))
 
     def moved_to(self, point: int, segment: int, at: float, firm: bool) -> None:
         self.soft = max(self.soft, segment)
+        self.pos_new, self.pos_old = float(self.new.length[point]), self.along(segment, at)
         if firm:
             self.firm = self.soft = segment
-        self.pos_new, self.pos_old = float(self.new.length[point]), self.along(segment, at)
+            self.firm_new, self.firm_old = self.pos_new, self.pos_old
+
+    def expected(self, point: int) -> tuple[float, float]:
+        """Where on OLD ``point`` should be, counted from the last firm match, and how far off it may be."""
+        progress = float(self.new.length[point]) - self.firm_new
+        return self.firm_old + progress, SLACK + SLACK_SHARE * progress
 
     def follows(self, point: int, segment: int, at: float) -> bool:
         """Do the points after ``point`` lie on OLD after ``segment``?"""
@@ -86,18 +99,20 @@ class _Walk:
         dist, _seg, _at = self.follow(point + 1, stop, float(self.new.length[point]), self.along(segment, at), segment)
         return bool(np.all(dist <= self.tolerance))
 
-    def search(self, point: int, low: int, high: int, verify: bool) -> tuple[int, float, float] | None:
-        """The first segment in ``low``..``high`` within the tolerance of ``point`` (that the next points follow)."""
+    def search(self, point: int, low: int, high: int) -> tuple[int, float, float] | None:
+        """The segment in ``low``..``high`` within the tolerance of ``point`` nearest where it should be, that
+        the next points follow (a path that passes the same place later is not taken for this one)."""
         p = self.new.points[point]
+        expected, _slack = self.expected(point)
         for start in range(low, high, 8192):
             stop = min(high, start + 8192)
             dist, at = _to_segments(self.a[start:stop], self.b[start:stop], p)
             hits = np.flatnonzero(dist <= self.tolerance)
+            if hits.size > 1:
+                hits = hits[np.argsort(np.abs(self._along(start + hits, at[hits]) - expected), kind="stable")]
             for hit in hits[:8]:
-                if not verify or self.follows(point, start + int(hit), float(at[hit])):
+                if self.follows(point, start + int(hit), float(at[hit])):
                     return start + int(hit), float(dist[hit]), float(at[hit])
-            if hits.size and not verify:
-                break
         return None
 
 
@@ -124,18 +139,23 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
             continue
         low = max(walk.firm, walk.soft - WINDOW)
         high = min(walk.segments, walk.soft + WINDOW)
-        found = walk.search(point, low, high, verify=False)
+        found = walk.search(point, low, high)
         if found is None and lost % FAR_EVERY == 0 and high < walk.segments:
-            found = walk.search(point, high, min(walk.segments, high + FAR), verify=True)
+            found = walk.search(point, high, min(walk.segments, high + FAR))
         if found is not None:
             segment[point], distance[point], at[point] = found
             walk.moved_to(point, found[0], found[2], firm=True)
             point, lost = point + 1, 0
             continue
         dist_all, at_all = _to_segments(walk.a[low:high], walk.b[low:high], new.points[point])
-        nearest = int(np.argmin(dist_all))
+        # the nearest part of OLD about where the point should be drags the cursor along (a moved contour);
+        # a part far from there that merely passes close (the same wall, later) does not
+        expected, slack = walk.expected(point)
+        plausible = np.abs(walk._along(np.arange(low, high), at_all) - expected) <= slack
+        pool = np.where(plausible, dist_all, np.inf)
+        nearest = int(np.argmin(pool)) if plausible.any() else int(np.argmin(dist_all))
         segment[point], distance[point], at[point] = low + nearest, dist_all[nearest], at_all[nearest]
-        if dist_all[nearest] <= CAPTURE:
+        if plausible.any() and dist_all[nearest] <= CAPTURE:
             walk.moved_to(point, low + nearest, float(at_all[nearest]), firm=False)
         point, lost = point + 1, lost + 1
     return Alignment(distance, segment, at)

@@ -74,6 +74,7 @@ class Recorder:
         self.arcs: dict[int, Arc] = {}
         self.events: list[tuple[str, int, float, int]] = []
         self.tool = 0
+        self.rpm, self.turning = 0.0, False  # the spindle as the events tell it
         self._unplaced: list[int] = []  # events still waiting for their job line
         self._kind = {kind: i for i, kind in enumerate(KINDS)}
 
@@ -87,8 +88,9 @@ class Recorder:
             self.events[self._unplaced.pop()] = (kind, line, value, at)
         if move.arc is not None:
             self.arcs[len(self.rows) // ROW] = move.arc
-        self.rows.extend((self._kind.get(move.kind, 1), self.tool, line,
-                          move.feed, move.spindle, timing.start, timing.end))
+        # straight moves that came in a bulk batch carry no spindle speed: the events tell it
+        rpm = move.spindle or (self.rpm if self.turning else 0.0)
+        self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))
         self.rows.extend(move.start)
         self.rows.extend(move.end)
 
@@ -97,8 +99,13 @@ class Recorder:
         if event.kind == "tool_change":
             self.tool = int(event.data.get("tool", self.tool))
             value = self.tool
+        elif event.kind == "spindle_speed":
+            self.rpm = float(event.data.get("rpm", self.rpm))
+            return
         elif event.kind == "spindle":
             value = float(event.data.get("m", 5))
+            self.turning = value != 5.0
+            self.rpm = float(event.data.get("rpm", self.rpm)) or self.rpm
         elif event.kind == "coolant":
             value = float(event.data.get("m", 9))
         elif event.kind == "dwell":
@@ -133,7 +140,7 @@ class Samples:
 
     points: np.ndarray   # (P, D) machine coordinates (XYZ, and ABC when a run turns them)
     length: np.ndarray   # (P,) cumulative path length
-    owner: np.ndarray    # (P,) int index of the move whose path reaches this point (-1: the start)
+    owner: np.ndarray    # (P,) int index of the move whose path reaches this point (sorted)
 
 
 def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
@@ -144,7 +151,8 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
         return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int64))
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
-    pieces = np.maximum(1, np.ceil(lengths / LINE_STEP)).astype(np.int64)
+    # at least the middle and the end: a move between two points of the other path that strays between them shows
+    pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
     arc_points: dict[int, np.ndarray] = {}
     for index, arc in rec.arcs.items():
         arc_points[index] = _arc_points(rec, index, arc, tolerance)[:, :dims]
@@ -159,7 +167,7 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
     firsts = np.cumsum(pieces + jumps) - pieces
     jump_at = firsts[jumps] - 1
     points[jump_at] = starts[jumps]
-    owner[jump_at] = np.flatnonzero(jumps) - 1
+    owner[jump_at] = np.flatnonzero(jumps)
     move_of = np.repeat(np.arange(count), pieces)
     slot = np.arange(int(pieces.sum())) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     at = np.repeat(firsts, pieces) + slot
