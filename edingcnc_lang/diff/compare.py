@@ -181,36 +181,49 @@ def _matched(rec: Recording, match: np.ndarray, first: int, last: int) -> tuple[
 
 def _deviations(old: Recording, new: Recording, tolerance: float, new_distance: np.ndarray, new_match: np.ndarray,
                 old_distance: np.ndarray, old_match: np.ndarray) -> list[Change]:
-    """Runs of NEW moves off OLD's path (moved, or added when far), then runs of OLD moves no NEW move covers."""
+    """Runs of NEW moves off OLD's path (moved, or added when far); runs of OLD moves off NEW's path join the
+    NEW run beside them (both sides of one edit), else stand alone (removed when far)."""
     changes: list[Change] = []
-    covered = np.zeros(len(old), dtype=bool)
     far = new_distance > CAPTURE
     for first, last in _runs(new_distance > tolerance, far, new.tools):
         old_lines, old_moves = _matched(old, new_match, first, last)
-        if old_moves is not None:
-            covered[old_moves[0]:old_moves[1] + 1] = True
         changes.append(Change("added" if far[first] else "moved", old_lines, _lines(new, first, last),
                               distance=float(new_distance[first:last + 1].max()), tool=int(new.tools[first]),
                               moves=last - first + 1, new_moves=(first, last), old_moves=old_moves))
-    for first, last in _runs((old_distance > tolerance) & ~covered, old_distance > CAPTURE, old.tools):
+    alone: list[Change] = []
+    for first, last in _runs(old_distance > tolerance, old_distance > CAPTURE, old.tools):
         new_lines, new_moves = _matched(new, old_match, first, last)
-        changes.append(Change("removed" if old_distance[first] > CAPTURE else "moved", _lines(old, first, last),
-                              new_lines, distance=float(old_distance[first:last + 1].max()),
-                              tool=int(old.tools[first]), moves=last - first + 1, new_moves=new_moves,
-                              old_moves=(first, last)))
-    changes.sort(key=lambda c: c.new_moves[0] if c.new_moves else 0)
-    return changes
+        distance = float(old_distance[first:last + 1].max())
+        beside = next((c for c in changes if _touch(c.new_moves, new_moves) or _touch(c.old_moves, (first, last))), None)
+        if beside is not None:
+            low, high = (first, last) if beside.old_moves is None else (min(first, beside.old_moves[0]),
+                                                                        max(last, beside.old_moves[1]))
+            beside.old_moves, beside.old_lines = (low, high), _lines(old, low, high)
+            beside.distance = max(beside.distance or 0.0, distance)
+            continue
+        alone.append(Change("removed" if old_distance[first] > CAPTURE else "moved", _lines(old, first, last),
+                            new_lines, distance=distance, tool=int(old.tools[first]), moves=last - first + 1,
+                            new_moves=new_moves, old_moves=(first, last)))
+    return sorted(changes + alone, key=lambda c: c.new_moves[0] if c.new_moves else 0)
+
+
+def _touch(one: tuple[int, int] | None, other: tuple[int, int] | None) -> bool:
+    """Do two runs of moves overlap or meet?"""
+    return one is not None and other is not None and one[0] <= other[1] + 1 and other[0] <= one[1] + 1
 
 
 def _value_changes(what: str, old: Recording, new: Recording, near: np.ndarray, match: np.ndarray,
                    new_values: np.ndarray, old_values: np.ndarray) -> Iterator[Change]:
-    """Runs of NEW moves whose value (feed, rpm, tool) is not that of the OLD move they lie on."""
-    differs = near & ~np.isclose(new_values, old_values, rtol=1e-9, atol=1e-9)
-    for first, last in _runs(differs, new_values, old_values):
-        old_lines, old_moves = _matched(old, np.where(near, match, -1), first, last)
-        yield Change(what, old_lines, _lines(new, first, last), old=_number(old_values[first]),
-                     new=_number(new_values[first]), tool=int(new.tools[first]), moves=last - first + 1,
-                     new_moves=(first, last), old_moves=old_moves)
+    """Runs of NEW moves whose value (feed, rpm, tool) is not that of the OLD move they lie on; moves
+    that are not compared (going nowhere, or far from OLD) neither break a run nor count in it."""
+    compared = np.flatnonzero(near)
+    mine, theirs = new_values[compared], old_values[compared]
+    differs = ~np.isclose(mine, theirs, rtol=1e-9, atol=1e-9)
+    for first, last in _runs(differs, mine, theirs):
+        low, high = int(compared[first]), int(compared[last])
+        old_lines, old_moves = _matched(old, np.where(near, match, -1), low, high)
+        yield Change(what, old_lines, _lines(new, low, high), old=_number(theirs[first]), new=_number(mine[first]),
+                     tool=int(new.tools[low]), moves=last - first + 1, new_moves=(low, high), old_moves=old_moves)
 
 
 def _number(value: Any) -> float | int:
