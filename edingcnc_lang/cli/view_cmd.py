@@ -13,7 +13,7 @@ from ..errors import EXIT_OK, JobAborted
 from ..plot.names import VIEW_NAMES
 from .base import Command
 from .options import MachineOptions, job_argument, machine_options, override_options
-from .params import OUTPUT_FILE, POSITIVE_INT
+from .params import EXISTING_FILE, OUTPUT_FILE, POSITIVE_INT
 from .streams import job_to_read_twice
 
 if TYPE_CHECKING:
@@ -48,8 +48,10 @@ class LineRange(click.ParamType):
               help="Moves in the page before long runs of feed moves are thinned (default 25000).")
 @click.option("--lines", metavar="A:B", type=LineRange(),
               help="Only the moves made by job lines A to B (with the subs they call), in full.")
+@click.option("--diff", "old", metavar="OLD", type=EXISTING_FILE,
+              help="Also run OLD: the page shows OLD and JOB (NEW), a button (D) switches (ecnc view --diff OLD NEW).")
 def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
-         view: str, max_moves: int | None, lines: tuple[int, int] | None) -> int:
+         view: str, max_moves: int | None, lines: tuple[int, int] | None, old: str | None) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
@@ -58,7 +60,8 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
-                           max_moves=max_moves, lines=lines, view=view, name=name)
+                           max_moves=max_moves, lines=lines, view=view, name=name,
+                           old=Path(old) if old else None)
     return report(written)
 
 
