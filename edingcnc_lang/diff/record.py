@@ -3,7 +3,7 @@
 ``record`` runs the job with ``RunOptions(on_timed_move=..., on_event=...)`` and keeps each move as
 one row of doubles in a flat ``array`` (no Python object per move survives the callback), then hands
 out numpy columns.  ``sample`` turns the moves into the dense polyline the alignment walks: every
-move's end, arcs as chords within a quarter of the tolerance, long lines split every ``LINE_STEP``.
+move's end, arcs as chords within half the tolerance, long lines split every ``LINE_STEP``.
 """
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ import numpy as np
 from ..canon import Arc, Event, Move, Pose
 from ..errors import EcncError
 from ..kinematics.sampling import arc_sweep
-from ..kinematics.trajectory import geometry_of
+from ..kinematics.trajectory import Geometry, geometry_of
 from ..planner.estimate import Timing
 from ..runner import Run, RunOptions, RunResult
 
@@ -27,6 +27,7 @@ RAPID_KINDS = (0, 4)
 ROW = 19
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
 MAX_CHORDS = 4096      # per arc move, whatever the tolerance asks
+CHUNK = 65_536         # moves (points) filled at once
 EVENT_KINDS = ("tool_change", "spindle", "coolant", "dwell")
 
 
@@ -145,45 +146,52 @@ class Samples:
 
 def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
     """The dense polyline of ``rec``: what the alignment compares, so two ways of writing the same
-    path (an arc split in two, a line split in three) give points on the same curve."""
+    path (an arc split in two, a line split in three) give points on the same curve.  Filled a
+    chunk of moves at a time, so what it needs besides its result stays small."""
     count = len(rec)
     if not count:
-        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int64))
+        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32))
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
     # at least the middle and the end: a move between two points of the other path that strays between them shows
     pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
-    arc_points: dict[int, np.ndarray] = {}
-    for index, arc in rec.arcs.items():
-        arc_points[index] = _arc_points(rec, index, arc, tolerance)[:, :dims]
-        pieces[index] = len(arc_points[index])
+    arcs = {index: _arc_chords(rec, index, arc, tolerance) for index, arc in rec.arcs.items()}
+    for index, (_geometry, chords) in arcs.items():
+        pieces[index] = chords
     # a point where a move starts away from the previous end (a kinematics switch, the first move)
     jumps = np.ones(count, dtype=bool)
     jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
     total = int(pieces.sum() + jumps.sum())
     points = np.empty((total, dims))
-    owner = np.empty(total, dtype=np.int64)
-    # where each move's first point goes
-    firsts = np.cumsum(pieces + jumps) - pieces
+    owner = np.empty(total, dtype=np.int32)
+    firsts = np.cumsum(pieces + jumps) - pieces  # where each move's first point after its start goes
     jump_at = firsts[jumps] - 1
     points[jump_at] = starts[jumps]
     owner[jump_at] = np.flatnonzero(jumps)
-    move_of = np.repeat(np.arange(count), pieces)
-    slot = np.arange(int(pieces.sum())) - np.repeat(np.cumsum(pieces) - pieces, pieces)
-    at = np.repeat(firsts, pieces) + slot
-    fraction = (slot + 1) / np.repeat(pieces, pieces)
-    points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
-    owner[at] = move_of
-    for index, chords in arc_points.items():
-        points[firsts[index]:firsts[index] + len(chords)] = chords
-    steps = np.linalg.norm(np.diff(points, axis=0), axis=1)
-    steps[jump_at[jump_at > 0] - 1] = 0.0  # a jump is no path
-    length = np.concatenate(([0.0], np.cumsum(steps)))
-    return Samples(points, length, owner)
+    straight = np.where(np.isin(np.arange(count), list(arcs)), 0, pieces)
+    for low in range(0, count, CHUNK):
+        high = min(count, low + CHUNK)
+        share = straight[low:high]
+        move_of = np.repeat(np.arange(low, high), share)
+        slot = np.arange(len(move_of)) - np.repeat(np.cumsum(share) - share, share)
+        at = firsts[move_of] + slot
+        fraction = (slot + 1) / pieces[move_of]
+        points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
+        owner[at] = move_of
+    for index, (geometry, chords) in arcs.items():
+        at = firsts[index]
+        points[at:at + chords] = geometry.points_at(np.arange(1, chords + 1) / chords)[:, :dims]
+        owner[at:at + chords] = index
+    length = np.zeros(total)
+    for low in range(0, total - 1, CHUNK):
+        high = min(total - 1, low + CHUNK)
+        length[low + 1:high + 1] = np.linalg.norm(points[low + 1:high + 1] - points[low:high], axis=1)
+    length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
+    return Samples(points, np.cumsum(length, out=length), owner)
 
 
-def _arc_points(rec: Recording, index: int, arc: Arc, tolerance: float) -> np.ndarray:
-    """The points of an arc move after its start, chords off the arc by at most a quarter of ``tolerance``."""
+def _arc_chords(rec: Recording, index: int, arc: Arc, tolerance: float) -> tuple[Geometry, int]:
+    """An arc move's path and the chords that keep within half of ``tolerance`` of it."""
     start, end = rec.starts[index], rec.ends[index]
     geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=arc))
     assert geometry.center is not None
@@ -192,8 +200,6 @@ def _arc_points(rec: Recording, index: int, arc: Arc, tolerance: float) -> np.nd
     radius = math.hypot(start[first] - c1, start[second] - c2)
     swept = abs(arc_sweep(math.atan2(start[second] - c2, start[first] - c1),
                           math.atan2(end[second] - c2, end[first] - c1), geometry.turns))
-    sag = max(tolerance / 4.0, 1e-9)
+    sag = max(tolerance / 2.0, 1e-9)
     step = 2.0 * math.acos(max(-1.0, 1.0 - sag / radius)) if radius > sag else math.pi
-    chords = min(MAX_CHORDS, max(2, math.ceil(swept / step)))
-    return np.asarray(geometry.points_at(np.arange(1, chords + 1) / chords), dtype=float)
-
+    return geometry, min(MAX_CHORDS, max(2, math.ceil(swept / step)))
