@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import dataclasses
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
@@ -12,6 +13,9 @@ from .base import Command
 from .options import MachineOptions, json_option, machine_options
 from .params import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
 
+if TYPE_CHECKING:
+    from ..host import DialogAnswer
+
 EXIT_DIFFERS = 1
 
 
@@ -19,9 +23,11 @@ EXIT_DIFFERS = 1
 @click.argument("old", metavar="OLD", type=EXISTING_FILE)
 @click.argument("new", metavar="NEW", type=EXISTING_FILE)
 @machine_options
-@click.option("--ini-new", metavar="FILE", type=INI_FILE, help="cnc.ini for NEW, where the machine changed (default: --ini).")
+@click.option("--ini-new", metavar="FILE", type=INI_FILE,
+              help="cnc.ini for NEW, where the machine changed (default: --ini).")
 @click.option("--macro-new", metavar="FILE", type=EXISTING_FILE, help="Macro file for NEW (default: --macro).")
-@click.option("--user-macro-new", metavar="FILE", type=EXISTING_FILE, help="User macro file for NEW (default: --user-macro).")
+@click.option("--user-macro-new", metavar="FILE", type=EXISTING_FILE,
+              help="User macro file for NEW (default: --user-macro).")
 @click.option("--answer-new", "answers_new", metavar="VALUE", type=ANSWER, multiple=True,
               help="Dialog answers for NEW (default: those of --answer; repeatable).")
 @click.option("--probe-surface-new", metavar="FILE", type=EXISTING_FILE,
@@ -36,7 +42,7 @@ EXIT_DIFFERS = 1
 @click.option("--view", type=click.Choice(("auto", *VIEW_NAMES)), default="auto", show_default=True,
               help="The picture's view (auto: top, or lathe for a job that never moves Y).")
 def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro_new: str | None,
-         user_macro_new: str | None, answers_new: tuple[object, ...], probe_surface_new: str | None,
+         user_macro_new: str | None, answers_new: tuple[DialogAnswer, ...], probe_surface_new: str | None,
          tolerance: float, limit: int, as_json: bool, output: str | None, view: str) -> int:
     """Run OLD and NEW on the virtual machine and compare what the machine does, per tool and in
     order: the path (within --tolerance), feeds, spindle speeds, tools and their order, offsets,
@@ -53,9 +59,10 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
         from ..plot.formats import picture_target
 
         fmt = picture_target(Path(output))  # before the runs: a wrong name fails at once
-    changed = {"ini": ini_new, "macro": macro_new, "user_macro": user_macro_new,
-               "answers": answers_new or None, "probe_surface": probe_surface_new}
-    new_machine = dataclasses.replace(machine, **{k: v for k, v in changed.items() if v})
+    new_machine = dataclasses.replace(machine, ini=ini_new or machine.ini, macro=macro_new or machine.macro,
+                                      user_macro=user_macro_new or machine.user_macro,
+                                      answers=answers_new or machine.answers,
+                                      probe_surface=probe_surface_new or machine.probe_surface)
     before = record(Path(old), machine.run_options(show_messages=False))
     after = record(Path(new), new_machine.run_options(show_messages=False))
     comparison = compare(before, after, tolerance, limit)

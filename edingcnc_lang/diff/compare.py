@@ -29,7 +29,8 @@ LISTS = ("deviations", "feeds", "spindle", "tool_moves", "dwell", "coolant", "ra
 class Change:
     """One change: a run of neighbouring moves (or one event) that differs alike."""
 
-    what: str                              # moved, added, removed, feed, spindle, direction, tool, dwell, coolant, rapid, offset
+    # moved, added, removed, feed, spindle, direction, tool, dwell, coolant, rapid, offset
+    what: str
     old_lines: tuple[int, int] | None      # job lines, first and last
     new_lines: tuple[int, int] | None
     old: Any = None
@@ -170,7 +171,11 @@ def _lines(rec: Recording, first: int, last: int) -> tuple[int, int]:
     return (int(chosen.min()), int(chosen.max())) if chosen.size else (0, 0)
 
 
-def _matched(rec: Recording, match: np.ndarray, first: int, last: int) -> tuple[tuple[int, int] | None, tuple[int, int] | None]:
+Span = tuple[int, int]
+
+
+def _matched(rec: Recording, match: np.ndarray, first: int, last: int) -> tuple[Span | None, Span | None]:
+    """The lines and the moves of ``rec`` that moves ``first``..``last`` of the other job lie on."""
     moves = match[first:last + 1]
     moves = moves[moves >= 0]
     if not moves.size:
@@ -194,7 +199,8 @@ def _deviations(old: Recording, new: Recording, tolerance: float, new_distance: 
     for first, last in _runs(old_distance > tolerance, old_distance > CAPTURE, old.tools):
         new_lines, new_moves = _matched(new, old_match, first, last)
         distance = float(old_distance[first:last + 1].max())
-        beside = next((c for c in changes if _touch(c.new_moves, new_moves) or _touch(c.old_moves, (first, last))), None)
+        beside = next((c for c in changes
+                       if _touch(c.new_moves, new_moves) or _touch(c.old_moves, (first, last))), None)
         if beside is not None:
             low, high = (first, last) if beside.old_moves is None else (min(first, beside.old_moves[0]),
                                                                         max(last, beside.old_moves[1]))

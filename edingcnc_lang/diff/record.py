@@ -119,10 +119,11 @@ class Recorder:
         self.events.append((event.kind, line, value, len(self.rows) // ROW))
 
     def recording(self, name: str, result: RunResult) -> Recording:
+        # the float columns are views of the recorded rows, not copies: the rows are all there is
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         return Recording(name=name, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
-                         lines=table[:, 2].astype(np.int32), feeds=table[:, 3].copy(), spindles=table[:, 4].copy(),
-                         times=table[:, 5:7].copy(), starts=table[:, 7:13].copy(), ends=table[:, 13:19].copy(),
+                         lines=table[:, 2].astype(np.int32), feeds=table[:, 3], spindles=table[:, 4],
+                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19],
                          arcs=self.arcs, events=self.events, result=result)
 
 

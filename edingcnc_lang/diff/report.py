@@ -58,7 +58,9 @@ def _headline(change: Change, tolerance: float) -> str:
     old = "-" if change.old is None else change.old
     new = "-" if change.new is None else change.new
     unit = " s" if what == "dwell" else ""
-    return f"{what} {old}{unit if change.old is not None else ''} -> {new}{unit if change.new is not None else ''}: {at}"
+    before = f"{old}{unit if change.old is not None else ''}"
+    after = f"{new}{unit if change.new is not None else ''}"
+    return f"{what} {before} -> {after}: {at}"
 
 
 def _span(lines: tuple[int, int]) -> str:
@@ -83,7 +85,8 @@ def render(comparison: Comparison) -> str:
     if comparison.same:
         out.append(f"same: nothing the machine does differs beyond {comparison.tolerance:g} mm")
         return "\n".join(out) + "\n"
-    out.append(f"differs: largest path deviation {comparison.max_deviation:.4g} mm (tolerance {comparison.tolerance:g} mm)")
+    out.append(f"differs: largest path deviation {comparison.max_deviation:.4g} mm "
+               f"(tolerance {comparison.tolerance:g} mm)")
     changes = [c for name in LISTS for c in comparison.changes[name]]
     old_text = source_text(old.name, (n for c in changes if c.old_lines for n in {c.old_lines[0], c.old_lines[1]}))
     new_text = source_text(new.name, (n for c in changes if c.new_lines for n in {c.new_lines[0], c.new_lines[1]}))
