@@ -30,9 +30,9 @@ SLACK_SHARE = 0.25   # ... this share of the path since the last match: how far 
 class Alignment:
     """For every point of one path: how far it is from the other path, and where on it."""
 
-    distance: np.ndarray   # (P,) distance to the other path (inf: the other path is empty)
-    segment: np.ndarray    # (P,) index of the nearest segment of the other path (-1: none)
-    at: np.ndarray         # (P,) 0..1 along that segment
+    distance: np.ndarray   # (P,) float32 distance to the other path (inf: the other path is empty)
+    segment: np.ndarray    # (P,) int32 index of the nearest segment of the other path (-1: none)
+    at: np.ndarray         # (P,) float32, 0..1 along that segment
 
 
 def _to_segments(a: np.ndarray, b: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -119,9 +119,10 @@ class _Walk:
 def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
     """Match every point of ``new`` to the segment of ``old`` it lies on (or is nearest to), in order."""
     count = len(new.points)
-    distance = np.full(count, np.inf)
-    segment = np.full(count, -1, dtype=np.int64)
-    at = np.zeros(count)
+    # 32-bit: 12 bytes a point (distances far below the tolerance need no more digits)
+    distance = np.full(count, np.inf, dtype=np.float32)
+    segment = np.full(count, -1, dtype=np.int32)
+    at = np.zeros(count, dtype=np.float32)
     if not count or not len(old.points):
         return Alignment(distance, segment, at)
     walk = _Walk(new, old, tolerance)

@@ -100,10 +100,10 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
     """Compare two recorded runs; ``limit`` bounds each list of changes."""
     dims = 6 if _turns_rotary(old) or _turns_rotary(new) else 3
     old_samples, new_samples = sample(old, tolerance, dims), sample(new, tolerance, dims)
-    forward = align(new_samples, old_samples, tolerance)    # NEW points on OLD's path
-    backward = align(old_samples, new_samples, tolerance)   # OLD points on NEW's path
-    new_distance, new_match = _per_move(forward, new_samples, old_samples, len(new))
-    old_distance, old_match = _per_move(backward, old_samples, new_samples, len(old))
+    # NEW points on OLD's path, then OLD points on NEW's; each kept per move only
+    new_distance, new_match = _per_move(align(new_samples, old_samples, tolerance), new_samples, old_samples, len(new))
+    old_distance, old_match = _per_move(align(old_samples, new_samples, tolerance), old_samples, new_samples, len(old))
+    del old_samples, new_samples
     found: dict[str, list[Change]] = {name: [] for name in LISTS}
     found["deviations"] = _deviations(old, new, tolerance, new_distance, new_match, old_distance, old_match)
     # a move that goes nowhere has no place on the path, so no counterpart to compare its feed with
@@ -131,7 +131,7 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
 
 def _goes_somewhere(rec: Recording) -> np.ndarray:
     moving = np.abs(rec.ends - rec.starts).max(axis=1, initial=0.0) > 1e-12
-    moving[list(rec.arcs)] = True
+    moving[rec.arc_moves()] = True
     return moving
 
 
@@ -144,7 +144,7 @@ def _per_move(alignment: Alignment, mine: Samples, other: Samples, count: int) -
     if not count:
         return np.zeros(0), np.zeros(0, dtype=np.int64)
     firsts = np.searchsorted(mine.owner, np.arange(count))
-    distance = np.maximum.reduceat(alignment.distance, firsts)
+    distance = np.maximum.reduceat(alignment.distance, firsts).astype(float)
     lasts = np.append(firsts[1:], len(mine.owner)) - 1
     return distance, matched_moves(alignment, other)[lasts]
 

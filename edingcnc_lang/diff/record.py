@@ -15,7 +15,6 @@ from pathlib import Path
 import numpy as np
 
 from ..canon import Arc, Event, Move, Pose
-from ..errors import EcncError
 from ..kinematics.sampling import arc_sweep
 from ..kinematics.trajectory import Geometry, geometry_of
 from ..planner.estimate import Timing
@@ -23,12 +22,14 @@ from ..runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
 RAPID_KINDS = (0, 4)
-# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc
-ROW = 19
+# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc,
+# and for an arc its centre (two values), plane (index into PLANE_NAMES, -1: no arc), turn, full turns
+ROW = 24
+PLANE_NAMES = ("XY", "XZ", "YZ")
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
 MAX_CHORDS = 4096      # per arc move, whatever the tolerance asks
 CHUNK = 65_536         # moves (points) filled at once
-EVENT_KINDS = ("tool_change", "spindle", "coolant", "dwell")
+NO_ARC = (0.0, 0.0, -1.0, 0.0, 0.0)
 
 
 @dataclass
@@ -44,7 +45,7 @@ class Recording:
     times: np.ndarray      # (N, 2) planned start and end, seconds
     starts: np.ndarray     # (N, 6)
     ends: np.ndarray       # (N, 6)
-    arcs: dict[int, Arc]
+    circles: np.ndarray    # (N, 5) centre, plane, turn, full turns of arc moves (plane -1: not an arc)
     # (kind, job line, value, moves before it): tool changes, spindle on/off, coolant, dwell
     events: list[tuple[str, int, float, int]] = field(default_factory=list)
     result: RunResult | None = None
@@ -56,6 +57,15 @@ class Recording:
     def seconds(self) -> float:
         estimate = self.result.estimate if self.result is not None else None
         return estimate.seconds if estimate is not None else 0.0
+
+    def arc_moves(self) -> np.ndarray:
+        """The indices of the arc moves."""
+        return np.flatnonzero(self.circles[:, 2] >= 0)
+
+    def arc(self, index: int) -> Arc:
+        """The circle of arc move ``index``, made again from its numbers."""
+        c1, c2, plane, turn, full = self.circles[index].tolist()
+        return Arc((c1, c2), PLANE_NAMES[int(plane)], int(turn), int(full))
 
     def tool_order(self) -> list[int]:
         """The tools put into the spindle, in order (a tool change to the tool already in is not one)."""
@@ -72,7 +82,6 @@ class Recorder:
     def __init__(self, job: str) -> None:
         self.job = job
         self.rows = array("d")
-        self.arcs: dict[int, Arc] = {}
         self.events: list[tuple[str, int, float, int]] = []
         self.tool = 0
         self.rpm, self.turning = 0.0, False  # the spindle as the events tell it
@@ -87,13 +96,14 @@ class Recorder:
         while self._unplaced:  # events made inside a sub take the job line of the next move
             kind, _none, value, at = self.events[self._unplaced[-1]]
             self.events[self._unplaced.pop()] = (kind, line, value, at)
-        if move.arc is not None:
-            self.arcs[len(self.rows) // ROW] = move.arc
         # straight moves that came in a bulk batch carry no spindle speed: the events tell it
         rpm = move.spindle or (self.rpm if self.turning else 0.0)
         self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))
         self.rows.extend(move.start)
         self.rows.extend(move.end)
+        arc = move.arc
+        self.rows.extend((arc.center[0], arc.center[1], PLANE_NAMES.index(arc.plane), arc.turn, arc.full_turns)
+                         if arc is not None else NO_ARC)
 
     def event(self, event: Event) -> None:
         value: float
@@ -123,8 +133,8 @@ class Recorder:
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         return Recording(name=name, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
                          lines=table[:, 2].astype(np.int32), feeds=table[:, 3], spindles=table[:, 4],
-                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19],
-                         arcs=self.arcs, events=self.events, result=result)
+                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19], circles=table[:, 19:24],
+                         events=self.events, result=result)
 
 
 def record(job: Path, options: RunOptions, name: str | None = None) -> Recording:
@@ -156,9 +166,9 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
     lengths = np.linalg.norm(ends - starts, axis=1)
     # at least the middle and the end: a move between two points of the other path that strays between them shows
     pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
-    arcs = {index: _arc_chords(rec, index, arc, tolerance) for index, arc in rec.arcs.items()}
-    for index, (_geometry, chords) in arcs.items():
-        pieces[index] = chords
+    arcs = rec.arc_moves()
+    for index in arcs.tolist():
+        pieces[index] = _arc_chords(rec, index, tolerance)[1]
     # a point where a move starts away from the previous end (a kinematics switch, the first move)
     jumps = np.ones(count, dtype=bool)
     jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
@@ -169,7 +179,8 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
     jump_at = firsts[jumps] - 1
     points[jump_at] = starts[jumps]
     owner[jump_at] = np.flatnonzero(jumps)
-    straight = np.where(np.isin(np.arange(count), list(arcs)), 0, pieces)
+    straight = pieces.copy()
+    straight[arcs] = 0
     for low in range(0, count, CHUNK):
         high = min(count, low + CHUNK)
         share = straight[low:high]
@@ -179,7 +190,8 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
         fraction = (slot + 1) / pieces[move_of]
         points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
         owner[at] = move_of
-    for index, (geometry, chords) in arcs.items():
+    for index in arcs.tolist():  # each arc's path made again: no object per arc is kept
+        geometry, chords = _arc_chords(rec, index, tolerance)
         at = firsts[index]
         points[at:at + chords] = geometry.points_at(np.arange(1, chords + 1) / chords)[:, :dims]
         owner[at:at + chords] = index
@@ -191,10 +203,10 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
     return Samples(points, np.cumsum(length, out=length), owner)
 
 
-def _arc_chords(rec: Recording, index: int, arc: Arc, tolerance: float) -> tuple[Geometry, int]:
+def _arc_chords(rec: Recording, index: int, tolerance: float) -> tuple[Geometry, int]:
     """An arc move's path and the chords that keep within half of ``tolerance`` of it."""
     start, end = rec.starts[index], rec.ends[index]
-    geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=arc))
+    geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=rec.arc(index)))
     assert geometry.center is not None
     first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
     c1, c2 = geometry.center[first], geometry.center[second]
