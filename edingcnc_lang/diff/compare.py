@@ -29,7 +29,7 @@ LISTS = ("deviations", "feeds", "spindle", "tool_moves", "dwell", "coolant", "ra
 class Change:
     """One change: a run of neighbouring moves (or one event) that differs alike."""
 
-    # moved, added, removed, feed, spindle, direction, tool, dwell, coolant, rapid, offset
+    # moved, added, removed, replaced, feed, spindle, direction, tool, dwell, coolant, rapid, offset
     what: str
     old_lines: tuple[int, int] | None      # job lines, first and last
     new_lines: tuple[int, int] | None
@@ -206,6 +206,8 @@ def _deviations(old: Recording, new: Recording, tolerance: float, new_distance: 
                                                                         max(last, beside.old_moves[1]))
             beside.old_moves, beside.old_lines = (low, high), _lines(old, low, high)
             beside.distance = max(beside.distance or 0.0, distance)
+            if beside.what == "added" and distance > CAPTURE:  # OLD went elsewhere there: one path for another
+                beside.what = "replaced"
             continue
         alone.append(Change("removed" if old_distance[first] > CAPTURE else "moved", _lines(old, first, last),
                             new_lines, distance=distance, tool=int(old.tools[first]), moves=last - first + 1,

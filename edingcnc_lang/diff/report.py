@@ -41,9 +41,9 @@ def _headline(change: Change, tolerance: float) -> str:
     moves = f", {change.moves} moves" if change.moves > 1 else ""
     at = ", ".join(where)
     what = change.what
-    if what in ("moved", "added", "removed"):
+    if what in ("moved", "added", "removed", "replaced"):
         text = {"moved": "path moved by up to", "added": "path only in NEW, up to",
-                "removed": "path only in OLD, up to"}[what]
+                "removed": "path only in OLD, up to", "replaced": "path replaced, up to"}[what]
         return f"{text} {change.distance:.4g} mm from the other{moves}: {at}"
     if what == "feed":
         return f"feed {change.old:g} -> {change.new:g} mm/min{moves}: {at}"
