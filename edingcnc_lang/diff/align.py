@@ -45,6 +45,31 @@ def _to_segments(a: np.ndarray, b: np.ndarray, p: np.ndarray) -> tuple[np.ndarra
     return np.linalg.norm(p - near, axis=-1), t
 
 
+def _to_arcs(a: np.ndarray, b: np.ndarray, p: np.ndarray, center: np.ndarray, normal: np.ndarray,
+             radius: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Distances of points ``p`` (n, D) to pieces of circles (less than half a turn each) from ``a`` to ``b``
+    about ``center`` (n, 3), with the normal axis ``normal`` and ``radius`` (helices: the height goes
+    with the angle), and where they meet (0..1 of the angle)."""
+    rows = np.arange(len(normal))
+    i1, i2 = (normal + 1) % 3, (normal + 2) % 3
+
+    def in_plane(x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return x[rows, i1] - center[rows, i1], x[rows, i2] - center[rows, i2], x[rows, normal]
+
+    (au, av, an), (bu, bv, bn), (pu, pv, pn) = in_plane(a), in_plane(b), in_plane(p)
+    span = np.arctan2(au * bv - av * bu, au * bu + av * bv)
+    turned = np.arctan2(au * pv - av * pu, au * pu + av * pv)
+    s = np.where(span != 0.0, turned / np.where(span != 0.0, span, 1.0), -1.0)
+    inside = (s >= 0.0) & (s <= 1.0)
+    s = np.clip(s, 0.0, 1.0)
+    off = (np.hypot(pu, pv) - radius) ** 2 + (pn - (an + s * (bn - an))) ** 2
+    if p.shape[1] > 3:  # rotary axes turning along the arc: straight in the angle
+        off += np.sum((p[:, 3:] - (a[:, 3:] + s[:, None] * (b[:, 3:] - a[:, 3:]))) ** 2, axis=1)
+    to_a, to_b = np.linalg.norm(p - a, axis=1), np.linalg.norm(p - b, axis=1)
+    return (np.where(inside, np.sqrt(off), np.minimum(to_a, to_b)),
+            np.where(inside, s, np.where(to_a <= to_b, 0.0, 1.0)))
+
+
 class _Walk:
     """The cursor over OLD's segments and the NEW points matched so far."""
 
@@ -52,6 +77,8 @@ class _Walk:
         self.new, self.tolerance = new, tolerance
         pts = old.points if len(old.points) != 1 else np.vstack((old.points, old.points))
         self.a, self.b = pts[:-1], pts[1:]
+        self.arc_of = old.arc_of if len(old.points) != 1 else np.full(1, -1, dtype=np.int32)
+        self.centers, self.normals, self.radii = old.centers, old.normals, old.radii
         self.length = old.length if len(old.length) != 1 else np.zeros(2)
         self.segments = len(self.a)
         self.firm = 0          # segment of the last point within the tolerance
@@ -61,14 +88,25 @@ class _Walk:
         self.firm_new = 0.0    # the same at the last point within the tolerance
         self.firm_old = 0.0
 
+    def to_path(self, segments: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Distances of ``p`` (broadcast) to OLD's ``segments``, pieces of arcs measured to their circle."""
+        a, b = self.a[segments], self.b[segments]
+        dist, at = _to_segments(a, b, p)
+        arcs = self.arc_of[segments]
+        if (arcs >= 0).any():
+            where = np.nonzero(arcs >= 0)
+            moves = arcs[where]
+            dist[where], at[where] = _to_arcs(a[where], b[where], np.broadcast_to(p, a.shape)[where],
+                                              self.centers[moves], self.normals[moves], self.radii[moves])
+        return dist, at
+
     def follow(self, first: int, stop: int, pos_new: float, pos_old: float,
                floor: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Points ``first``..``stop`` matched where the path lengths put them (and one segment either side)."""
         expected = pos_old + (self.new.length[first:stop] - pos_new)
         index = np.searchsorted(self.length, expected, side="left") - 1  # a vertex: the segment ending there
         choices = np.clip(index[:, None] + np.array([0, 1, -1]), floor, self.segments - 1)
-        p = self.new.points[first:stop, None, :]
-        dist, at = _to_segments(self.a[choices], self.b[choices], p)
+        dist, at = self.to_path(choices, self.new.points[first:stop, None, :])
         best = np.argmin(dist, axis=1)
         rows = np.arange(len(best))
         return dist[rows, best], choices[rows, best], at[rows, best]
@@ -106,7 +144,7 @@ class _Walk:
         expected, _slack = self.expected(point)
         for start in range(low, high, 8192):
             stop = min(high, start + 8192)
-            dist, at = _to_segments(self.a[start:stop], self.b[start:stop], p)
+            dist, at = self.to_path(np.arange(start, stop), p)
             hits = np.flatnonzero(dist <= self.tolerance)
             if hits.size > 1:
                 hits = hits[np.argsort(np.abs(self._along(start + hits, at[hits]) - expected), kind="stable")]
@@ -148,7 +186,7 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
             walk.moved_to(point, found[0], found[2], firm=True)
             point, lost = point + 1, 0
             continue
-        dist_all, at_all = _to_segments(walk.a[low:high], walk.b[low:high], new.points[point])
+        dist_all, at_all = walk.to_path(np.arange(low, high), new.points[point])
         # the nearest part of OLD about where the point should be drags the cursor along (a moved contour);
         # a part far from there that merely passes close (the same wall, later) does not
         expected, slack = walk.expected(point)

@@ -99,7 +99,7 @@ class Comparison:
 def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit: int = LIMIT) -> Comparison:
     """Compare two recorded runs; ``limit`` bounds each list of changes."""
     dims = 6 if _turns_rotary(old) or _turns_rotary(new) else 3
-    old_samples, new_samples = sample(old, tolerance, dims), sample(new, tolerance, dims)
+    old_samples, new_samples = sample(old, dims), sample(new, dims)
     # NEW points on OLD's path, then OLD points on NEW's; each kept per move only
     new_distance, new_match = _per_move(align(new_samples, old_samples, tolerance), new_samples, old_samples, len(new))
     old_distance, old_match = _per_move(align(old_samples, new_samples, tolerance), old_samples, new_samples, len(old))

@@ -3,6 +3,7 @@ module's tool colours, and on top the NEW moves off OLD's path, the OLD moves NE
 moves whose feed, speed or tool changed, and rapids lower than any of OLD's."""
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING, cast
 
@@ -20,7 +21,7 @@ if TYPE_CHECKING:
 
     from ..plot.toolpath import Toolpath
 
-DRAW_TOLERANCE = 0.01  # mm: arcs drawn as chords this close
+DRAW_STEP = math.radians(3.0)  # arcs drawn in chords of this angle, as ecnc plot draws them
 OLD_COLOR = "#b0b0b0"
 # what differs -> colour, line width, label
 HIGHLIGHTS = {
@@ -33,7 +34,7 @@ HIGHLIGHTS = {
 
 def _segments(rec: Recording, project: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Every piece of ``rec``'s path on the page, and the move each belongs to."""
-    samples = sample(rec, DRAW_TOLERANCE)
+    samples = sample(rec, arc_step=DRAW_STEP)
     page = samples.points[:, :3] @ project.T
     pieces = np.stack((page[:-1], page[1:]), axis=1)
     return pieces, samples.owner[1:]

@@ -3,7 +3,7 @@
 ``record`` runs the job with ``RunOptions(on_timed_move=..., on_event=...)`` and keeps each move as
 one row of doubles in a flat ``array`` (no Python object per move survives the callback), then hands
 out numpy columns.  ``sample`` turns the moves into the dense polyline the alignment walks: every
-move's end, arcs as chords within half the tolerance, long lines split every ``LINE_STEP``.
+move's end, arcs in pieces that keep their circle, long lines split every ``LINE_STEP``.
 """
 from __future__ import annotations
 
@@ -27,7 +27,8 @@ RAPID_KINDS = (0, 4)
 ROW = 24
 PLANE_NAMES = ("XY", "XZ", "YZ")
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
-MAX_CHORDS = 4096      # per arc move, whatever the tolerance asks
+MAX_CHORDS = 4096      # pieces per arc move at most
+ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
 CHUNK = 65_536         # moves (points) filled at once
 NO_ARC = (0.0, 0.0, -1.0, 0.0, 0.0)
 
@@ -148,27 +149,44 @@ def record(job: Path, options: RunOptions, name: str | None = None) -> Recording
 
 @dataclass
 class Samples:
-    """A run's path as one polyline: points, arc length to each, and the move each point ends."""
+    """A run's path as one polyline whose pieces of arcs remember their circle: points, path length
+    to each, the move each point ends, and for each segment that is a piece of an arc, its circle."""
 
     points: np.ndarray   # (P, D) machine coordinates (XYZ, and ABC when a run turns them)
-    length: np.ndarray   # (P,) cumulative path length
-    owner: np.ndarray    # (P,) int index of the move whose path reaches this point (sorted)
+    length: np.ndarray   # (P,) cumulative path length (along the arc for pieces of arcs)
+    owner: np.ndarray    # (P,) int32 index of the move whose path reaches this point (sorted)
+    arc_of: np.ndarray   # (P - 1,) int32 segment -> its arc move, -1 for a straight segment
+    centers: np.ndarray  # (N, 3) the centre of each arc move (in its plane; the start's normal coordinate)
+    normals: np.ndarray  # (N,) int8 the normal axis of each arc move (0 X, 1 Y, 2 Z), -1 not an arc
+    radii: np.ndarray    # (N,)
 
 
-def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
-    """The dense polyline of ``rec``: what the alignment compares, so two ways of writing the same
-    path (an arc split in two, a line split in three) give points on the same curve.  Filled a
-    chunk of moves at a time, so what it needs besides its result stays small."""
+def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples:
+    """The polyline of ``rec``: what the alignment compares, so two ways of writing the same path
+    (an arc split in two, a line split in three) give points on the same curve.  Arcs are pieces of
+    at most ``arc_step`` radians whose distances are measured to the circle, not to the chord.
+    Filled a chunk of moves at a time, so what it needs besides its result stays small."""
     count = len(rec)
+    arcs = rec.arc_moves()
+    centers = np.zeros((count, 3))
+    normals = np.full(count, -1, dtype=np.int8)
+    radii = np.zeros(count)
     if not count:
-        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32))
+        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
+                       centers, normals, radii)
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
     # at least the middle and the end: a move between two points of the other path that strays between them shows
     pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
-    arcs = rec.arc_moves()
+    arc_lengths = np.zeros(count)
     for index in arcs.tolist():
-        pieces[index] = _arc_chords(rec, index, tolerance)[1]
+        geometry, chords, arc_length = _arc_pieces(rec, index, arc_step)
+        assert geometry.center is not None
+        pieces[index], arc_lengths[index] = chords, arc_length
+        centers[index], normals[index] = geometry.center, geometry.normal
+        first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
+        radii[index] = math.hypot(rec.starts[index, first] - geometry.center[first],
+                                  rec.starts[index, second] - geometry.center[second])
     # a point where a move starts away from the previous end (a kinematics switch, the first move)
     jumps = np.ones(count, dtype=bool)
     jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
@@ -190,21 +208,26 @@ def sample(rec: Recording, tolerance: float, dims: int = 3) -> Samples:
         fraction = (slot + 1) / pieces[move_of]
         points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
         owner[at] = move_of
+    arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
     for index in arcs.tolist():  # each arc's path made again: no object per arc is kept
-        geometry, chords = _arc_chords(rec, index, tolerance)
+        geometry, chords, _length = _arc_pieces(rec, index, arc_step)
         at = firsts[index]
         points[at:at + chords] = geometry.points_at(np.arange(1, chords + 1) / chords)[:, :dims]
         owner[at:at + chords] = index
+        arc_of[at - 1:at + chords - 1] = index
     length = np.zeros(total)
     for low in range(0, total - 1, CHUNK):
         high = min(total - 1, low + CHUNK)
         length[low + 1:high + 1] = np.linalg.norm(points[low + 1:high + 1] - points[low:high], axis=1)
+    for index in arcs.tolist():  # along the arc, not the chord: the same length however an arc is split
+        at = firsts[index]
+        length[at:at + pieces[index]] = arc_lengths[index] / pieces[index]
     length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
-    return Samples(points, np.cumsum(length, out=length), owner)
+    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
 
 
-def _arc_chords(rec: Recording, index: int, tolerance: float) -> tuple[Geometry, int]:
-    """An arc move's path and the chords that keep within half of ``tolerance`` of it."""
+def _arc_pieces(rec: Recording, index: int, arc_step: float) -> tuple[Geometry, int, float]:
+    """An arc move's path, its pieces (at most ``arc_step`` radians and ``LINE_STEP`` mm each) and its length."""
     start, end = rec.starts[index], rec.ends[index]
     geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=rec.arc(index)))
     assert geometry.center is not None
@@ -213,6 +236,6 @@ def _arc_chords(rec: Recording, index: int, tolerance: float) -> tuple[Geometry,
     radius = math.hypot(start[first] - c1, start[second] - c2)
     swept = abs(arc_sweep(math.atan2(start[second] - c2, start[first] - c1),
                           math.atan2(end[second] - c2, end[first] - c1), geometry.turns))
-    sag = max(tolerance / 2.0, 1e-9)
-    step = 2.0 * math.acos(max(-1.0, 1.0 - sag / radius)) if radius > sag else math.pi
-    return geometry, min(MAX_CHORDS, max(2, math.ceil(swept / step)))
+    length = math.hypot(swept * radius, end[geometry.normal] - start[geometry.normal])
+    chords = min(MAX_CHORDS, max(2, math.ceil(swept / arc_step), math.ceil(length / LINE_STEP)))
+    return geometry, chords, length
