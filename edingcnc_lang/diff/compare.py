@@ -9,6 +9,7 @@ time estimate and the lowest rapid.  Runs of neighbouring moves that differ alik
 from __future__ import annotations
 
 import difflib
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
@@ -47,8 +48,8 @@ class Change:
             doc[f"{side}_line"] = lines[0] if lines else None
             if lines and lines[1] != lines[0]:
                 doc[f"{side}_lines"] = list(lines)
-        if self.distance is not None:
-            doc["distance"] = round(self.distance, 6)
+        if self.distance is not None:  # null: the other job makes no moves at all
+            doc["distance"] = round(self.distance, 6) if math.isfinite(self.distance) else None
         if self.old is not None or self.new is not None:
             doc["old"], doc["new"] = self.old, self.new
         if self.tool is not None:
@@ -65,7 +66,7 @@ class Comparison:
     old: Recording
     new: Recording
     tolerance: float
-    max_deviation: float
+    max_deviation: float | None    # None: one job moves and the other does not
     changes: dict[str, list[Change]]
     left_out: dict[str, int]
     time: tuple[float, float]
@@ -85,7 +86,7 @@ class Comparison:
     def to_json(self) -> dict[str, Any]:
         lists = {name: [c.to_json() for c in self.changes[name]] for name in LISTS}
         return {
-            "same": self.same, "tolerance": self.tolerance, "max_deviation": round(self.max_deviation, 6),
+            "same": self.same, "tolerance": self.tolerance, "max_deviation": None if self.max_deviation is None else round(self.max_deviation, 6),
             "deviations": lists["deviations"], "feeds": lists["feeds"], "spindle": lists["spindle"],
             "tools": {"old": self.old.tool_order(), "new": self.new.tool_order(), "moves": lists["tool_moves"]},
             "time": {"old": round(self.time[0], 3), "new": round(self.time[1], 3)},
@@ -112,21 +113,21 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
     for name, what, new_values, old_values in (("feeds", "feed", new.feeds, old.feeds),
                                                 ("spindle", "spindle", new.spindles, old.spindles),
                                                 ("tool_moves", "tool", new.tools, old.tools)):
-        found[name] = list(_value_changes(what, old, new, near, match, new_values, old_values[match]))
+        theirs = old_values[match] if len(old) else np.zeros(len(new))  # no OLD move: nothing is near
+        found[name] = list(_value_changes(what, old, new, near, match, new_values, theirs))
     for kind, name in (("dwell", "dwell"), ("coolant", "coolant"), ("spindle", "spindle")):
         found[name] += _event_changes(kind, old, new)
     found["rapids"] = _lower_rapids(old, new, tolerance, match)
     found["offsets"] = _offsets(old, new, tolerance)
     kept = {name: changes[:limit] for name, changes in found.items()}
     left_out = {name: max(0, len(changes) - limit) for name, changes in found.items()}
-    finite = [d for d in (new_distance, old_distance) if d.size and np.isfinite(d).any()]
-    biggest = max((float(d[np.isfinite(d)].max()) for d in finite), default=0.0)
-    if (len(old) == 0) != (len(new) == 0):
-        biggest = float("inf")
+    # a path against none (one job makes no moves) has no finite distance: None in the JSON
+    biggest: float | None = max((float(d.max()) for d in (new_distance, old_distance) if d.size), default=0.0)
+    if biggest is not None and not np.isfinite(biggest):
+        biggest = None
     time = (old.seconds, new.seconds)
     time_differs = abs(time[1] - time[0]) > max(TIME_SECONDS, TIME_SHARE * time[0])
-    return Comparison(old, new, tolerance, biggest if biggest > tolerance else max(biggest, 0.0), kept, left_out,
-                      time, time_differs, new_distance, old_distance)
+    return Comparison(old, new, tolerance, biggest, kept, left_out, time, time_differs, new_distance, old_distance)
 
 
 def _goes_somewhere(rec: Recording) -> np.ndarray:

@@ -92,7 +92,8 @@ def draw_diff(comparison: Comparison, out: Path, view: str = "auto", fmt: str | 
     if not fitted:
         fitted.append(np.zeros((1, 2)))
     _frame(ax, fitted, view)
-    verdict = "same" if comparison.same else f"differs, largest deviation {comparison.max_deviation:.4g} mm"
+    verdict = ("same" if comparison.same else "differs" if comparison.max_deviation is None
+               else f"differs, largest deviation {comparison.max_deviation:.4g} mm")
     fig.suptitle(f"OLD {Path(old.name).name} vs NEW {Path(new.name).name}: {verdict}", x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
     try:

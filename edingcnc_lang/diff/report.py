@@ -2,6 +2,7 @@
 and where, with the OLD and NEW source lines; then the tools, events, offsets, time and rapids."""
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 
 import numpy as np
@@ -44,6 +45,8 @@ def _headline(change: Change, tolerance: float) -> str:
     if what in ("moved", "added", "removed", "replaced"):
         text = {"moved": "path moved by up to", "added": "path only in NEW, up to",
                 "removed": "path only in OLD, up to", "replaced": "path replaced, up to"}[what]
+        if change.distance is None or not math.isfinite(change.distance):
+            return f"{text.rsplit(',', 1)[0]} (the other job makes no moves){moves}: {at}"
         return f"{text} {change.distance:.4g} mm from the other{moves}: {at}"
     if what == "feed":
         return f"feed {change.old:g} -> {change.new:g} mm/min{moves}: {at}"
@@ -85,8 +88,8 @@ def render(comparison: Comparison) -> str:
     if comparison.same:
         out.append(f"same: nothing the machine does differs beyond {comparison.tolerance:g} mm")
         return "\n".join(out) + "\n"
-    out.append(f"differs: largest path deviation {comparison.max_deviation:.4g} mm "
-               f"(tolerance {comparison.tolerance:g} mm)")
+    biggest = "no path to compare with" if comparison.max_deviation is None else f"{comparison.max_deviation:.4g} mm"
+    out.append(f"differs: largest path deviation {biggest} (tolerance {comparison.tolerance:g} mm)")
     changes = [c for name in LISTS for c in comparison.changes[name]]
     old_text = source_text(old.name, (n for c in changes if c.old_lines for n in {c.old_lines[0], c.old_lines[1]}))
     new_text = source_text(new.name, (n for c in changes if c.new_lines for n in {c.new_lines[0], c.new_lines[1]}))

@@ -117,3 +117,14 @@ def test_view_diff_toggles_in_the_browser(fragment: str, title: str, tmp_path: P
     assert console(log) == [], console(log)
     assert re.search(rf'<h1 id="title">{title}', log)
     assert 'id="diff-toggle"' in log and 'data-ready="1"' in log
+
+
+def test_a_job_that_makes_no_moves(tmp_path: Path) -> None:
+    empty = tmp_path / "empty.nc"
+    empty.write_text("G21 G90\nM30\n", encoding="ascii")
+    assert invoke("diff", empty, empty).exit_code == 0
+    result = invoke("diff", OLD, empty, "--json")
+    doc = json.loads(result.stdout)  # valid JSON: no Infinity
+    assert result.exit_code == 1 and doc["max_deviation"] is None
+    assert doc["deviations"] and all(c["what"] == "removed" and c["distance"] is None for c in doc["deviations"])
+    assert "the other job makes no moves" in invoke("diff", empty, OLD).stdout
