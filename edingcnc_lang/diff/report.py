@@ -101,14 +101,13 @@ def render(comparison: Comparison) -> str:
         lines = [n for n in new.lines[first:last + 1].tolist() if n > 0]
         span = f"NEW lines {min(lines)}-{max(lines)}" if lines else "NEW"
         out.append(f"\nT{tool} ({span}):")
-        for change in sorted(mine, key=lambda c: c.new_moves[0] if c.new_moves else 0):
-            placed.add(id(change))
-            out += _described(change, comparison.tolerance, old_text, new_text)
+        placed.update(id(change) for change in mine)
+        out += _told(sorted(mine, key=lambda c: c.new_moves[0] if c.new_moves else 0), comparison.tolerance,
+                     old_text, new_text)
     rest = [c for c in changes if id(c) not in placed]
     if rest:
         out.append("\nelsewhere:")
-        for change in rest:
-            out += _described(change, comparison.tolerance, old_text, new_text)
+        out += _told(rest, comparison.tolerance, old_text, new_text)
     if comparison.tools_differ:
         out.append(f"\ntools: OLD {' '.join(f'T{t}' for t in old.tool_order()) or 'none'}, "
                    f"NEW {' '.join(f'T{t}' for t in new.tool_order()) or 'none'}")
@@ -122,8 +121,26 @@ def render(comparison: Comparison) -> str:
     return "\n".join(out) + "\n"
 
 
-def _described(change: Change, tolerance: float, old_text: dict[int, str], new_text: dict[int, str]) -> list[str]:
-    lines = [f"  {_headline(change, tolerance)}"]
+def _told(changes: list[Change], tolerance: float, old_text: dict[int, str], new_text: dict[int, str]) -> list[str]:
+    """The changes in order; the same change again at once (the passes of a loop) is told once, with a count."""
+    out: list[str] = []
+    told, times, at = "", 0, 0
+    for change in [*changes, None]:
+        headline = _headline(change, tolerance) if change is not None else ""
+        if headline == told:
+            times += 1
+            continue
+        if times > 1:
+            out[at] += f" ({times} times)"
+        if change is not None:
+            at = len(out)
+            out += _described(change, headline, old_text, new_text)
+        told, times = headline, 1
+    return out
+
+
+def _described(change: Change, headline: str, old_text: dict[int, str], new_text: dict[int, str]) -> list[str]:
+    lines = [f"  {headline}"]
     for side, span, texts in (("OLD", change.old_lines, old_text), ("NEW", change.new_lines, new_text)):
         if span and span[0] in texts:
             lines.append(f"    {side} {span[0]:>6}: {texts[span[0]]}")
