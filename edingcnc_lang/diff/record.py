@@ -14,9 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..canon import Arc, Event, Move, Pose
-from ..kinematics.sampling import arc_sweep
-from ..kinematics.trajectory import Geometry, geometry_of
+from ..canon import PLANES, Event, Move, Pose
 from ..planner.estimate import Timing
 from ..runner import Run, RunOptions, RunResult
 
@@ -62,11 +60,6 @@ class Recording:
     def arc_moves(self) -> np.ndarray:
         """The indices of the arc moves."""
         return np.flatnonzero(self.circles[:, 2] >= 0)
-
-    def arc(self, index: int) -> Arc:
-        """The circle of arc move ``index``, made again from its numbers."""
-        c1, c2, plane, turn, full = self.circles[index].tolist()
-        return Arc((c1, c2), PLANE_NAMES[int(plane)], int(turn), int(full))
 
     def tool_order(self) -> list[int]:
         """The tools put into the spindle, in order (a tool change to the tool already in is not one)."""
@@ -168,9 +161,11 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     Filled a chunk of moves at a time, so what it needs besides its result stays small."""
     count = len(rec)
     arcs = rec.arc_moves()
+    circle = _circles(rec, arcs, arc_step)
     centers = np.zeros((count, 3))
     normals = np.full(count, -1, dtype=np.int8)
     radii = np.zeros(count)
+    centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
     if not count:
         return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
                        centers, normals, radii)
@@ -178,15 +173,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     lengths = np.linalg.norm(ends - starts, axis=1)
     # at least the middle and the end: a move between two points of the other path that strays between them shows
     pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
-    arc_lengths = np.zeros(count)
-    for index in arcs.tolist():
-        geometry, chords, arc_length = _arc_pieces(rec, index, arc_step)
-        assert geometry.center is not None
-        pieces[index], arc_lengths[index] = chords, arc_length
-        centers[index], normals[index] = geometry.center, geometry.normal
-        first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
-        radii[index] = math.hypot(rec.starts[index, first] - geometry.center[first],
-                                  rec.starts[index, second] - geometry.center[second])
+    pieces[arcs] = circle.pieces
     # a point where a move starts away from the previous end (a kinematics switch, the first move)
     jumps = np.ones(count, dtype=bool)
     jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
@@ -201,41 +188,95 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     straight[arcs] = 0
     for low in range(0, count, CHUNK):
         high = min(count, low + CHUNK)
-        share = straight[low:high]
-        move_of = np.repeat(np.arange(low, high), share)
-        slot = np.arange(len(move_of)) - np.repeat(np.cumsum(share) - share, share)
+        move_of, slot = _slots(np.arange(low, high), straight[low:high])
         at = firsts[move_of] + slot
         fraction = (slot + 1) / pieces[move_of]
         points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
         owner[at] = move_of
     arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
-    for index in arcs.tolist():  # each arc's path made again: no object per arc is kept
-        geometry, chords, _length = _arc_pieces(rec, index, arc_step)
-        at = firsts[index]
-        points[at:at + chords] = geometry.points_at(np.arange(1, chords + 1) / chords)[:, :dims]
-        owner[at:at + chords] = index
-        arc_of[at - 1:at + chords - 1] = index
+    arc_length = np.zeros(total)  # along the arc, not the chord: the same length however an arc is split
+    for low in range(0, len(arcs), CHUNK // 16):
+        high = min(len(arcs), low + CHUNK // 16)
+        which, slot = _slots(np.arange(low, high), circle.pieces[low:high])
+        move_of = arcs[which]
+        at = firsts[move_of] + slot
+        points[at] = circle.points(which, (slot + 1) / circle.pieces[which], starts, ends)
+        owner[at], arc_of[at - 1] = move_of, move_of
+        arc_length[at] = circle.length[which] / circle.pieces[which]
     length = np.zeros(total)
     for low in range(0, total - 1, CHUNK):
         high = min(total - 1, low + CHUNK)
         length[low + 1:high + 1] = np.linalg.norm(points[low + 1:high + 1] - points[low:high], axis=1)
-    for index in arcs.tolist():  # along the arc, not the chord: the same length however an arc is split
-        at = firsts[index]
-        length[at:at + pieces[index]] = arc_lengths[index] / pieces[index]
+    length[1:][arc_of >= 0] = 0.0  # segment k ends at point k + 1
+    length += arc_length
     length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
     return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
 
 
-def _arc_pieces(rec: Recording, index: int, arc_step: float) -> tuple[Geometry, int, float]:
-    """An arc move's path, its pieces (at most ``arc_step`` radians and ``LINE_STEP`` mm each) and its length."""
-    start, end = rec.starts[index], rec.ends[index]
-    geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=rec.arc(index)))
-    assert geometry.center is not None
-    first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
-    c1, c2 = geometry.center[first], geometry.center[second]
-    radius = math.hypot(start[first] - c1, start[second] - c2)
-    swept = abs(arc_sweep(math.atan2(start[second] - c2, start[first] - c1),
-                          math.atan2(end[second] - c2, end[first] - c1), geometry.turns))
-    length = math.hypot(swept * radius, end[geometry.normal] - start[geometry.normal])
-    chords = min(MAX_CHORDS, max(2, math.ceil(swept / arc_step), math.ceil(length / LINE_STEP)))
-    return geometry, chords, length
+def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each item repeated ``counts`` times, and the repeat's number (0, 1, ...)."""
+    repeated = np.repeat(items, counts)
+    return repeated, np.arange(len(repeated)) - np.repeat(np.cumsum(counts) - counts, counts)
+
+
+@dataclass
+class _Circles:
+    """The arc moves' circles, as columns: in-plane axes, centre, start and end radius, start angle,
+    signed sweep, path length and pieces (as ``geometry_of`` and ``sampling.arc_frame`` read an arc)."""
+
+    u: np.ndarray
+    v: np.ndarray
+    normal: np.ndarray
+    center: np.ndarray   # (K, 3): in-plane centre, the start's normal coordinate
+    r0: np.ndarray
+    r1: np.ndarray
+    angle: np.ndarray
+    sweep: np.ndarray
+    length: np.ndarray
+    pieces: np.ndarray
+    moves: np.ndarray
+
+    def points(self, which: np.ndarray, fraction: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+        """Points at ``fraction`` (0..1 of the sweep) of arcs ``which``: the radius, the normal axis and
+        the rotary axes go with the angle; a fraction of 1 is the end exactly."""
+        move = self.moves[which]
+        start, end = starts[move], ends[move]
+        pts = start + fraction[:, None] * (end - start)
+        angle = self.angle[which] + fraction * self.sweep[which]
+        radius = self.r0[which] + fraction * (self.r1[which] - self.r0[which])
+        rows = np.arange(len(which))
+        u, v = self.u[which], self.v[which]
+        pts[rows, u] = self.center[which, u] + radius * np.cos(angle)
+        pts[rows, v] = self.center[which, v] + radius * np.sin(angle)
+        last = fraction >= 1.0
+        pts[last] = end[last]
+        return pts
+
+
+PLANE_AXES = np.array([PLANES[name] for name in PLANE_NAMES])  # first, second, normal axis per plane
+
+
+def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
+    """The circles of the arc moves ``arcs``, each in pieces of at most ``arc_step`` radians and ``LINE_STEP`` mm."""
+    table = rec.circles[arcs]
+    plane = table[:, 2].astype(np.int64)
+    u, v, normal = PLANE_AXES[plane].T
+    c1, c2 = table[:, 0].copy(), table[:, 1].copy()
+    xz = plane == PLANE_NAMES.index("XZ")  # the canon names the XZ centre (x, z); the plane's order is (z, x)
+    c1[xz], c2[xz] = table[xz, 1], table[xz, 0]
+    start, end = rec.starts[arcs, :3], rec.ends[arcs, :3]
+    rows = np.arange(len(arcs))
+    center = start.copy()
+    center[rows, u], center[rows, v] = c1, c2
+    du0, dv0 = start[rows, u] - c1, start[rows, v] - c2
+    du1, dv1 = end[rows, u] - c1, end[rows, v] - c2
+    angle = np.arctan2(dv0, du0)
+    turns = table[:, 3] * np.maximum(1.0, table[:, 4])
+    direction = np.where(turns > 0, 1.0, -1.0)
+    sweep = np.mod(direction * (np.arctan2(dv1, du1) - angle), 2.0 * math.pi)  # as sampling.arc_sweep
+    sweep = np.where(sweep <= 1e-12, 2.0 * math.pi, sweep)
+    sweep = direction * (sweep + 2.0 * math.pi * (np.abs(turns) - 1.0))
+    r0, r1 = np.hypot(du0, dv0), np.hypot(du1, dv1)
+    length = np.hypot(np.abs(sweep) * r0, end[rows, normal] - start[rows, normal])
+    pieces = np.clip(np.maximum(np.ceil(np.abs(sweep) / arc_step), np.ceil(length / LINE_STEP)), 2, MAX_CHORDS)
+    return _Circles(u, v, normal, center, r0, r1, angle, sweep, length, pieces.astype(np.int64), arcs)
