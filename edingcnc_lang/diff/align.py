@@ -111,7 +111,8 @@ class _Walk:
         rows = np.arange(len(best))
         return dist[rows, best], choices[rows, best], at[rows, best]
 
-    def _along(self, segments: np.ndarray, at: np.ndarray) -> np.ndarray:
+    def positions(self, segments: np.ndarray, at: np.ndarray) -> np.ndarray:
+        """Path lengths of OLD at ``at`` along ``segments``."""
         return self.length[segments] + at * (self.length[segments + 1] - self.length[segments])
 
     def along(self, segment: int, at: float) -> float:
@@ -147,7 +148,7 @@ class _Walk:
             dist, at = self.to_path(np.arange(start, stop), p)
             hits = np.flatnonzero(dist <= self.tolerance)
             if hits.size > 1:
-                hits = hits[np.argsort(np.abs(self._along(start + hits, at[hits]) - expected), kind="stable")]
+                hits = hits[np.argsort(np.abs(self.positions(start + hits, at[hits]) - expected), kind="stable")]
             for hit in hits[:8]:
                 if self.follows(point, start + int(hit), float(at[hit])):
                     return start + int(hit), float(dist[hit]), float(at[hit])
@@ -190,7 +191,7 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
         # the nearest part of OLD about where the point should be drags the cursor along (a moved contour);
         # a part far from there that merely passes close (the same wall, later) does not
         expected, slack = walk.expected(point)
-        plausible = np.abs(walk._along(np.arange(low, high), at_all) - expected) <= slack
+        plausible = np.abs(walk.positions(np.arange(low, high), at_all) - expected) <= slack
         pool = np.where(plausible, dist_all, np.inf)
         nearest = int(np.argmin(pool)) if plausible.any() else int(np.argmin(dist_all))
         segment[point], distance[point], at[point] = low + nearest, dist_all[nearest], at_all[nearest]
