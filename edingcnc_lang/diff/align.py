@@ -20,6 +20,7 @@ BLOCK = 512          # points tried at once on the fast path
 WINDOW = 256         # segments searched around the cursor for a point off the fast path
 FAR = 65_536         # segments searched ahead for a point after a removed stretch
 FAR_EVERY = 64       # in a long run of unmatched points, the far search is tried every this many
+FAR_MOVES = 4        # ... and at the end of each of the first this many moves of the run
 VERIFY = 6           # points after a far match that must follow it
 CAPTURE = 1.0        # mm: an unmatched point this close to OLD drags the cursor along (a moved contour)
 SLACK = 2.0          # mm of path, plus ...
@@ -165,7 +166,7 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
     if not count or not len(old.points):
         return Alignment(distance, segment, at)
     walk = _Walk(new, old, tolerance)
-    point, lost = 0, 0
+    point, lost, lost_moves = 0, 0, 0
     while point < count:
         stop = min(count, point + BLOCK)
         dist, seg, where = walk.follow(point, stop, walk.pos_new, walk.pos_old, walk.firm)
@@ -175,17 +176,20 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
             distance[point:point + good], segment[point:point + good] = dist[:good], seg[:good]
             at[point:point + good] = where[:good]
             walk.moved_to(point + good - 1, int(seg[good - 1]), float(where[good - 1]), firm=True)
-            point, lost = point + good, 0
+            point, lost, lost_moves = point + good, 0, 0
             continue
         low = max(walk.firm, walk.soft - WINDOW)
         high = min(walk.segments, walk.soft + WINDOW)
         found = walk.search(point, low, high)
-        if found is None and lost % FAR_EVERY == 0 and high < walk.segments:
+        # far ahead: at the first points lost, at the end of each of the first moves lost (one long move
+        # across a removed stretch, then the path goes on where OLD does), then now and then
+        ends_move = point + 1 == count or new.owner[point + 1] != new.owner[point]
+        if found is None and high < walk.segments and (lost % FAR_EVERY == 0 or (ends_move and lost_moves < FAR_MOVES)):
             found = walk.search(point, high, min(walk.segments, high + FAR))
         if found is not None:
             segment[point], distance[point], at[point] = found
             walk.moved_to(point, found[0], found[2], firm=True)
-            point, lost = point + 1, 0
+            point, lost, lost_moves = point + 1, 0, 0
             continue
         dist_all, at_all = walk.to_path(np.arange(low, high), new.points[point])
         # the nearest part of OLD about where the point should be drags the cursor along (a moved contour);
@@ -197,7 +201,7 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
         segment[point], distance[point], at[point] = low + nearest, dist_all[nearest], at_all[nearest]
         if plausible.any() and dist_all[nearest] <= CAPTURE:
             walk.moved_to(point, low + nearest, float(at_all[nearest]), firm=False)
-        point, lost = point + 1, lost + 1
+        point, lost, lost_moves = point + 1, lost + 1, lost_moves + ends_move
     return Alignment(distance, segment, at)
 
 

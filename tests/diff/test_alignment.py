@@ -79,3 +79,19 @@ def test_removed_passes_are_only_in_old_at_their_lines(tmp_path: Path) -> None:
     gone = {line_of(old, text.rstrip()) for text in lines[10:14]}
     assert all(low >= min(gone) - 1 and high <= max(gone) + 1 for c in removed for low, high in [c.old_lines])
     assert comparison.changes["feeds"] == comparison.changes["spindle"] == []
+
+
+def test_a_long_stretch_removed_is_found_again_far_ahead(tmp_path: Path) -> None:
+    """400 cuts removed (more than the window around the cursor) from a 3,000-move job: the walk
+    finds its place again, so a feed changed near the end is still reported at its own line."""
+    cuts = [f"G1 X{0.5 * k:.1f} Y{10 * (k % 2)}\n" for k in range(3000)]
+    old = write(tmp_path, "old.nc", HEAD + "G1 F800\n" + "".join(cuts) + TAIL)
+    changed = cuts[:1000] + cuts[1400:2900] + [cuts[2900].rstrip() + " F900\n"] + cuts[2901:]
+    new = write(tmp_path, "new.nc", HEAD + "G1 F800\n" + "".join(changed) + TAIL)
+    comparison = diff_files(old, new)
+    removed = [c for c in comparison.changes["deviations"] if c.what in ("removed", "replaced")]
+    first_gone, last_gone = line_of(old, cuts[1000].rstrip()), line_of(old, cuts[1399].rstrip())
+    assert removed and all(first_gone - 1 <= c.old_lines[0] and c.old_lines[1] <= last_gone + 1 for c in removed)
+    [feed] = comparison.changes["feeds"]
+    assert feed.new_lines[0] == line_of(new, cuts[2900].rstrip() + " F900")
+    assert (feed.old, feed.new) == (800, 900)
