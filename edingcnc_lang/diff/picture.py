@@ -84,10 +84,11 @@ def draw_diff(comparison: Comparison, out: Path, view: str = "auto", fmt: str | 
     for name, (shade, width, label) in HIGHLIGHTS.items():
         pieces, owner = (old_pieces, old_owner) if name == "old" else (new_pieces, new_owner)
         if len(owner) and marks[name].any():
-            chosen = pieces[marks[name][owner]]
-            _add(ax, chosen, shade, width, label, LineCollection, zorder=3, alpha=0.75)
-            # a ring at each end too: a change seen end-on (a plunge from the top) still shows
-            ends = np.unique(np.round(chosen[:, 1], 6), axis=0)
+            marked = marks[name][owner]
+            _add(ax, pieces[marked], shade, width, label, LineCollection, zorder=3, alpha=0.75)
+            # a ring where each marked move ends too: a change seen end-on (a plunge from the top) still shows
+            last = np.append(owner[1:] != owner[:-1], True)
+            ends = np.unique(np.round(pieces[marked & last, 1], 6), axis=0)
             ax.plot(ends[:, 0], ends[:, 1], ls="none", marker="o", ms=6, mfc="none", mec=shade, mew=1.2, zorder=4)
     if not fitted:
         fitted.append(np.zeros((1, 2)))
