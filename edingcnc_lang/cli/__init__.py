@@ -27,6 +27,7 @@ EXIT_ABORTED = 1
 # Every command: its name and "module:attribute" in this package (see docs/cli.md, "Adding a command").
 COMMANDS = {
     "debug": "debug_cmd:debug",
+    "diff": "diff_cmd:diff",
     "help": "help_cmd:help_command",
     "kins": "kins_cmd:kins",
     "lint": "lint_cmd:lint",

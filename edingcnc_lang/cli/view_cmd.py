@@ -56,9 +56,11 @@ class LineRange(click.ParamType):
               help="Show this stock (work coordinates) being cut as the player runs (see ecnc sim).")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
               help="With --stock: tool shapes as TOML, as ecnc sim reads them.")
+@click.option("--diff", "old", metavar="OLD", type=EXISTING_FILE,
+              help="Also run OLD: the page shows OLD and JOB (NEW), a button (D) switches (ecnc view --diff OLD NEW).")
 def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
          view: str, max_moves: int | None, lines: tuple[int, int] | None,
-         stock_box: tuple[float, ...] | None = None, tools_file: str | None = None) -> int:
+         stock_box: tuple[float, ...] | None = None, tools_file: str | None = None, old: str | None = None) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
@@ -76,7 +78,8 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
-                           max_moves=max_moves, lines=lines, view=view, name=name)
+                           max_moves=max_moves, lines=lines, view=view, name=name,
+                           old=Path(old) if old else None)
         if stock_box is not None:
             from ..sim.frames import add_to_page, stock_frames
             from ..sim.stock import Stock

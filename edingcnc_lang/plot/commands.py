@@ -61,8 +61,10 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
 
 
 def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves: int | None = None,
-             lines: tuple[int, int] | None = None, view: str = "auto", name: str | None = None) -> Written:
-    """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given).
+             lines: tuple[int, int] | None = None, view: str = "auto", name: str | None = None,
+             old: Path | None = None) -> Written:
+    """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given);
+    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too and the page switches between them.
 
     ``auto`` opens a lathe job (no Y motion) in the lathe view and everything else in the iso view.
     """
@@ -77,5 +79,8 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
             raise EcncError(f"lines {lines[0]} to {lines[1]} make no moves", Location(name or str(job)))
     if view == "auto":
         view = "lathe" if auto_view(path) == "lathe" else "iso"
-    write_view(path, target, max_moves or MAX_MOVES, view=view)
+    before = record_job(old, options) if old is not None else None
+    if before is not None and lines is not None:
+        before = before.select_lines(*lines)
+    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before)
     return Written(target, path)

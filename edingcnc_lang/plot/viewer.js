@@ -12,7 +12,10 @@
   window.addEventListener("error", (event) => report(event.message));
   window.addEventListener("unhandledrejection", (event) => report(event.reason));
 
-  const D = JSON.parse(document.getElementById("job-data").textContent);
+  // `ecnc view --diff OLD NEW`: the page holds both jobs; #job=old shows OLD, the toggle reloads with the other
+  const otherData = document.getElementById("job-data-old");
+  const showOld = otherData !== null && new URLSearchParams(location.hash.slice(1)).get("job") === "old";
+  const D = JSON.parse((showOld ? otherData : document.getElementById("job-data")).textContent);
 
   function decode(text, Type) {
     if (text === null || text === undefined) return null;
@@ -510,6 +513,25 @@
 
   // ---------------------------------------------------------------- start
   document.getElementById("title").textContent = D.title;
+  if (otherData !== null) {
+    const toggle = document.createElement("button");
+    toggle.type = "button";
+    toggle.id = "diff-toggle";
+    toggle.textContent = showOld ? "showing OLD \u2192 NEW" : "showing NEW \u2192 OLD";
+    toggle.title = "Switch between the two jobs of the comparison (D)";
+    const flip = () => {
+      const hash = new URLSearchParams(location.hash.slice(1));
+      hash.set("job", showOld ? "new" : "old");
+      const active = document.querySelector("[data-view].active");
+      hash.set("view", active ? active.dataset.view : D.view);
+      location.hash = hash.toString();
+      location.reload();
+    };
+    toggle.addEventListener("click", flip);
+    document.addEventListener("keydown", (event) => { if (event.key === "d" || event.key === "D") flip(); });
+    document.getElementById("toolbar").prepend(toggle);
+    document.getElementById("title").textContent = (showOld ? "OLD: " : "NEW: ") + D.title;
+  }
   const notice = document.getElementById("notice");
   const notes = [];
   if (D.error) notes.push("The run stopped: " + D.error);

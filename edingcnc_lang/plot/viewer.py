@@ -117,21 +117,31 @@ def _moving_joints(path: Toolpath) -> list[tuple[int, str]]:
     return [(k, name) for k, name in enumerate(path.joint_names[:6]) if moving[k]]
 
 
-def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> str:
-    """The whole HTML page for ``path``."""
+def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Toolpath | None = None) -> str:
+    """The whole HTML page for ``path``; with ``old`` (``ecnc view --diff OLD NEW``) the page holds
+    both jobs and a button switches between them."""
     folder = resources.files(__package__)
     template, css, script = (folder.joinpath(name).read_text(encoding="utf-8") for name in ASSETS)
-    payload = json.dumps(view_data(path, max_moves, view), separators=(",", ":"), allow_nan=False)
-    payload = payload.replace("</", "<\\/")  # a job line with "</script>" must not end the block
+    payload = _payload(path, max_moves, view)
+    other = "" if old is None else \
+        f'<script type="application/json" id="job-data-old">{_payload(old, max_moves, view)}</script>'
     name = path.job.replace("\\", "/").rsplit("/", 1)[-1]
     return (template.replace("{{title}}", html.escape(f"{name} \u2014 ecnc view"))
-            .replace("{{css}}", css).replace("{{script}}", script).replace("{{data}}", payload))
+            .replace("{{css}}", css).replace("{{script}}", script).replace("{{other}}", other)
+            .replace("{{data}}", payload))
 
 
-def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str = "iso") -> Path:
-    """Write the viewer page for ``path`` to ``out``."""
+def _payload(path: Toolpath, max_moves: int, view: str) -> str:
+    payload = json.dumps(view_data(path, max_moves, view), separators=(",", ":"), allow_nan=False)
+    # a job line with "</script>" must not end the block, nor one with "{{data}}" take the page's place
+    return payload.replace("</", "<\\/").replace("{{", "{\\u007b")
+
+
+def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str = "iso",
+               old: Toolpath | None = None) -> Path:
+    """Write the viewer page for ``path`` (and ``old``, to compare with) to ``out``."""
     try:
-        out.write_text(page(path, max_moves, view), encoding="utf-8")
+        out.write_text(page(path, max_moves, view, old), encoding="utf-8")
     except OSError as err:
         raise EcncError(f"cannot write {out}: {err.strerror}") from None
     return out

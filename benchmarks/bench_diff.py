@@ -1,0 +1,80 @@
+"""``ecnc diff`` on two generated 300,000-line jobs, against running both (the issue's bound: at most 4x).
+
+OLD is a zigzag of short cuts with a half circle every tenth move (``bench_plot.write_job``); the
+pairs compared are OLD with a reformatted copy of itself (N words, G01, trailing zeros: the same)
+and OLD with an edited copy (a lead-in inserted half way, one feed changed, one cut moved 0.05 mm).
+Prints the wall time and peak memory of ``ecnc run --json`` (planned: the time estimate the diff
+reports too) of each job, of ``ecnc diff`` of each pair, and the ratio diff / (run OLD + run NEW).
+
+    python benchmarks/bench_diff.py [--lines N] [--repeat N]
+"""
+from __future__ import annotations
+
+import argparse
+import re
+import statistics
+import tempfile
+from pathlib import Path
+
+from bench_plot import write_job
+from bench_run import ECNC, measure
+
+
+def reformat(old: Path, new: Path) -> None:
+    """The same job as another post-processor might write it."""
+    out = []
+    for number, line in enumerate(old.read_text(encoding="ascii").splitlines(), start=1):
+        line = re.sub(r"\bG([0-3])\b", r"G0\1", line)
+        line = re.sub(r"([XYZR]-?\d+)(?=\s|$)", r"\1.000", line)
+        out.append(f"N{number * 10} {line}")
+    new.write_text("\n".join(out) + "\n", encoding="ascii")
+
+
+def edit(old: Path, new: Path) -> None:
+    """A lead-in half way, a feed changed, one cut moved 0.05 mm in Y."""
+    lines = old.read_text(encoding="ascii").splitlines()
+    middle = len(lines) // 2
+    while not (lines[middle].startswith("G1 X") and lines[middle - 1].startswith("G1 X")):
+        middle += 1
+    x, y = (float(v) for v in re.findall(r"[XY](-?[\d.]+)", lines[middle - 1])[:2])
+    lines.insert(middle, f"G1 X{x + 0.1:.3f} Y{y + 0.3:.3f}")  # the lead-in
+    lines.insert(middle + 1, f"G1 X{x:.3f} Y{y:.3f}")
+    quarter = len(lines) // 4
+    while not lines[quarter].startswith("G1 X"):
+        quarter += 1
+    lines[quarter] += " F900"
+    lines[quarter + 1] += " F800"
+    three = 3 * len(lines) // 4
+    while not lines[three].startswith("G1 X") or "Y0.000" not in lines[three]:
+        three += 1
+    lines[three] = lines[three].replace("Y0.000", "Y0.050")
+    new.write_text("\n".join(lines) + "\n", encoding="ascii")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--lines", type=int, default=300_000)
+    parser.add_argument("--repeat", type=int, default=1)
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as folder:
+        tmp = Path(folder)
+        old, same, edited = tmp / "old.nc", tmp / "same.nc", tmp / "edited.nc"
+        write_job(old, args.lines)
+        reformat(old, same)
+        edit(old, edited)
+
+        def timed(*command: object) -> tuple[float, float]:
+            runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
+            return statistics.median(r[0] for r in runs), max(r[1] for r in runs)
+
+        runs = {job.name: timed("run", job, "--json") for job in (old, same, edited)}
+        for name, (wall, peak) in runs.items():
+            print(f"ecnc run --json {name:<11} {wall:7.2f} s {peak:6.0f} MB")
+        for job in (same, edited):
+            wall, peak = timed("diff", old, job, "--json")
+            both = runs[old.name][0] + runs[job.name][0]
+            print(f"ecnc diff old.nc {job.name:<11} {wall:7.2f} s {peak:6.0f} MB  = {wall / both:.2f} x running both")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,81 @@
+"""``ecnc diff OLD NEW``: run both jobs and report what the machine does differently."""
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import click
+
+from ..errors import EXIT_OK
+from ..plot.names import VIEW_NAMES
+from .base import Command
+from .options import MachineOptions, json_option, machine_options
+from .params import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
+
+if TYPE_CHECKING:
+    from ..host import DialogAnswer
+
+EXIT_DIFFERS = 1
+
+
+@click.command("diff", cls=Command, short_help="Compare what the machine does for OLD and NEW.")
+@click.argument("old", metavar="OLD", type=EXISTING_FILE)
+@click.argument("new", metavar="NEW", type=EXISTING_FILE)
+@machine_options
+@click.option("--ini-new", metavar="FILE", type=INI_FILE,
+              help="cnc.ini for NEW, where the machine changed (default: --ini).")
+@click.option("--macro-new", metavar="FILE", type=EXISTING_FILE, help="Macro file for NEW (default: --macro).")
+@click.option("--user-macro-new", metavar="FILE", type=EXISTING_FILE,
+              help="User macro file for NEW (default: --user-macro).")
+@click.option("--answer-new", "answers_new", metavar="VALUE", type=ANSWER, multiple=True,
+              help="Dialog answers for NEW (default: those of --answer; repeatable).")
+@click.option("--probe-surface-new", metavar="FILE", type=EXISTING_FILE,
+              help="Height map for NEW's probing (default: --probe-surface).")
+@click.option("--tolerance", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.001, show_default=True,
+              help="Paths closer than this are the same.")
+@click.option("--limit", metavar="N", type=POSITIVE_INT, default=50, show_default=True,
+              help="Changes listed per kind; the rest are counted.")
+@json_option("Print the comparison as JSON on stdout.")
+@click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
+              help="Also draw both toolpaths with the differences highlighted (.png, .svg or .pdf).")
+@click.option("--view", type=click.Choice(("auto", *VIEW_NAMES)), default="auto", show_default=True,
+              help="The picture's view (auto: top, or lathe for a job that never moves Y).")
+def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro_new: str | None,
+         user_macro_new: str | None, answers_new: tuple[DialogAnswer, ...], probe_surface_new: str | None,
+         tolerance: float, limit: int, as_json: bool, output: str | None, view: str) -> int:
+    """Run OLD and NEW on the virtual machine and compare what the machine does, per tool and in
+    order: the path (within --tolerance), feeds, spindle speeds, tools and their order, offsets,
+    dwells, coolant, the planned time and rapids lower than any in OLD. Renumbered lines, G01 for
+    G1, trailing zeros or modal words left out change nothing.
+
+    Exit status 0 when nothing differs, 1 when something does."""
+    from ..diff.compare import compare
+    from ..diff.record import record
+    from ..diff.report import render
+
+    fmt = None
+    if output:
+        from ..plot.formats import picture_target
+
+        fmt = picture_target(Path(output))  # before the runs: a wrong name fails at once
+    new_machine = dataclasses.replace(machine, ini=ini_new or machine.ini, macro=macro_new or machine.macro,
+                                      user_macro=user_macro_new or machine.user_macro,
+                                      answers=answers_new or machine.answers,
+                                      probe_surface=probe_surface_new or machine.probe_surface)
+    before = record(Path(old), machine.run_options(show_messages=False))
+    after = record(Path(new), new_machine.run_options(show_messages=False))
+    comparison = compare(before, after, tolerance, limit)
+    if output:
+        from ..diff.picture import draw_diff
+
+        draw_diff(comparison, Path(output), view, fmt)
+    if as_json:
+        import json
+
+        print(json.dumps(comparison.to_json(), indent=1))
+    else:
+        click.echo(render(comparison), nl=False)
+        if output:
+            click.echo(f"picture: {output}")
+    return EXIT_OK if comparison.same else EXIT_DIFFERS

@@ -1,0 +1,25 @@
+"""``ecnc diff OLD NEW``: what the machine does differently, not what the text says differently.
+
+``diff_files`` runs both jobs (``record``), aligns their paths by geometry (``align``), compares
+moves, values and events (``compare``); ``report`` writes the text, ``picture`` the drawing.
+See docs/diff.md.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..runner import RunOptions
+from .compare import LIMIT, TOLERANCE, Change, Comparison, compare
+from .record import Recording, record
+
+__all__ = ["Change", "Comparison", "Recording", "compare", "diff_files", "record"]
+
+
+def diff_files(old: str | Path, new: str | Path, options: RunOptions | None = None,
+               new_options: RunOptions | None = None, tolerance: float = TOLERANCE, limit: int = LIMIT) -> Comparison:
+    """Run ``old`` and ``new`` (``new_options``, default ``options``: where the machine itself
+    changed) and compare what the machine does; run errors are raised as ``run_file`` raises them."""
+    options = options or RunOptions()
+    before = record(Path(old), options)
+    after = record(Path(new), new_options or options)
+    return compare(before, after, tolerance, limit)

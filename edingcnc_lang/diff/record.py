@@ -1,0 +1,282 @@
+"""One run of a job, recorded for comparison: every move as a row of numbers, the events that matter.
+
+``record`` runs the job with ``RunOptions(on_timed_move=..., on_event=...)`` and keeps each move as
+one row of doubles in a flat ``array`` (no Python object per move survives the callback), then hands
+out numpy columns.  ``sample`` turns the moves into the dense polyline the alignment walks: every
+move's end, arcs in pieces that keep their circle, long lines split every ``LINE_STEP``.
+"""
+from __future__ import annotations
+
+import math
+from array import array
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..canon import PLANES, Event, Move, Pose
+from ..planner.estimate import Timing
+from ..runner import Run, RunOptions, RunResult
+
+KINDS = ("rapid", "linear", "arc", "probe", "home")
+RAPID_KINDS = (0, 4)
+# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc,
+# and for an arc its centre (two values), plane (index into PLANE_NAMES, -1: no arc), turn, full turns
+ROW = 24
+PLANE_NAMES = ("XY", "XZ", "YZ")
+LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
+MAX_CHORDS = 4096      # pieces per arc move at most
+ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
+CHUNK = 65_536         # moves (points) filled at once
+NO_ARC = (0.0, 0.0, -1.0, 0.0, 0.0)
+
+
+@dataclass
+class Recording:
+    """What one run did, as numpy columns, plus its events and result."""
+
+    name: str
+    kinds: np.ndarray      # (N,) int8 index into KINDS
+    tools: np.ndarray      # (N,) int32
+    lines: np.ndarray      # (N,) int32 the job line (the calling line for a move made in a sub)
+    feeds: np.ndarray      # (N,) mm/min
+    spindles: np.ndarray   # (N,) rpm at the end of the move
+    times: np.ndarray      # (N, 2) planned start and end, seconds
+    starts: np.ndarray     # (N, 6)
+    ends: np.ndarray       # (N, 6)
+    circles: np.ndarray    # (N, 5) centre, plane, turn, full turns of arc moves (plane -1: not an arc)
+    # (kind, job line, value, moves before it): tool changes, spindle on/off, coolant, dwell
+    events: list[tuple[str, int, float, int]] = field(default_factory=list)
+    result: RunResult | None = None
+
+    def __len__(self) -> int:
+        return len(self.kinds)
+
+    @property
+    def seconds(self) -> float:
+        estimate = self.result.estimate if self.result is not None else None
+        return estimate.seconds if estimate is not None else 0.0
+
+    def arc_moves(self) -> np.ndarray:
+        """The indices of the arc moves."""
+        return np.flatnonzero(self.circles[:, 2] >= 0)
+
+    def tool_order(self) -> list[int]:
+        """The tools put into the spindle, in order (a tool change to the tool already in is not one)."""
+        order: list[int] = []
+        for kind, _line, value, _at in self.events:
+            if kind == "tool_change" and (not order or order[-1] != int(value)):
+                order.append(int(value))
+        return order
+
+
+class Recorder:
+    """The run's callbacks: a flat array of doubles per move, a short tuple per event that matters."""
+
+    def __init__(self, job: str) -> None:
+        self.job = job
+        self.rows = array("d")
+        self.events: list[tuple[str, int, float, int]] = []
+        self.tool = 0
+        self.rpm, self.turning = 0.0, False  # the spindle as the events tell it
+        self._unplaced: list[int] = []  # events still waiting for their job line
+        self._kind = {kind: i for i, kind in enumerate(KINDS)}
+
+    def _line(self, path: str, line: int, caller: int) -> int:
+        return caller if caller else (line if path == self.job else 0)
+
+    def move(self, move: Move, joints: Pose, timing: Timing) -> None:
+        line = self._line(move.path, move.line, move.caller)
+        while self._unplaced:  # events made inside a sub take the job line of the next move
+            kind, _none, value, at = self.events[self._unplaced[-1]]
+            self.events[self._unplaced.pop()] = (kind, line, value, at)
+        # straight moves that came in a bulk batch carry no spindle speed: the events tell it
+        rpm = move.spindle or (self.rpm if self.turning else 0.0)
+        self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))
+        self.rows.extend(move.start)
+        self.rows.extend(move.end)
+        arc = move.arc
+        self.rows.extend((arc.center[0], arc.center[1], PLANE_NAMES.index(arc.plane), arc.turn, arc.full_turns)
+                         if arc is not None else NO_ARC)
+
+    def event(self, event: Event) -> None:
+        value: float
+        if event.kind == "tool_change":
+            self.tool = int(event.data.get("tool", self.tool))
+            value = self.tool
+        elif event.kind == "spindle_speed":
+            self.rpm = float(event.data.get("rpm", self.rpm))
+            return
+        elif event.kind == "spindle":
+            value = float(event.data.get("m", 5))
+            self.turning = value != 5.0
+            self.rpm = float(event.data.get("rpm", self.rpm)) or self.rpm
+        elif event.kind == "coolant":
+            value = float(event.data.get("m", 9))
+        elif event.kind == "dwell":
+            value = float(event.data.get("seconds", 0.0))
+        else:
+            return
+        line = self._line(event.path, event.line, 0)
+        if not line:
+            self._unplaced.append(len(self.events))
+        self.events.append((event.kind, line, value, len(self.rows) // ROW))
+
+    def recording(self, name: str, result: RunResult) -> Recording:
+        # the float columns are views of the recorded rows, not copies: the rows are all there is
+        table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
+        return Recording(name=name, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
+                         lines=table[:, 2].astype(np.int32), feeds=table[:, 3], spindles=table[:, 4],
+                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19], circles=table[:, 19:24],
+                         events=self.events, result=result)
+
+
+def record(job: Path, options: RunOptions, name: str | None = None) -> Recording:
+    """Run ``job`` (planned, for its time estimate) and record what it did; errors are raised as ``run`` raises them."""
+    shown = name or str(job)
+    recorder = Recorder(shown)
+    run = Run(replace(options, on_timed_move=recorder.move, on_event=recorder.event, plan=True))
+    result = run.execute_file(job, name)
+    return recorder.recording(shown, result)
+
+
+@dataclass
+class Samples:
+    """A run's path as one polyline whose pieces of arcs remember their circle: points, path length
+    to each, the move each point ends, and for each segment that is a piece of an arc, its circle."""
+
+    points: np.ndarray   # (P, D) machine coordinates (XYZ, and ABC when a run turns them)
+    length: np.ndarray   # (P,) cumulative path length (along the arc for pieces of arcs)
+    owner: np.ndarray    # (P,) int32 index of the move whose path reaches this point (sorted)
+    arc_of: np.ndarray   # (P - 1,) int32 segment -> its arc move, -1 for a straight segment
+    centers: np.ndarray  # (N, 3) the centre of each arc move (in its plane; the start's normal coordinate)
+    normals: np.ndarray  # (N,) int8 the normal axis of each arc move (0 X, 1 Y, 2 Z), -1 not an arc
+    radii: np.ndarray    # (N,)
+
+
+def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples:
+    """The polyline of ``rec``: what the alignment compares, so two ways of writing the same path
+    (an arc split in two, a line split in three) give points on the same curve.  Arcs are pieces of
+    at most ``arc_step`` radians whose distances are measured to the circle, not to the chord.
+    Filled a chunk of moves at a time, so what it needs besides its result stays small."""
+    count = len(rec)
+    arcs = rec.arc_moves()
+    circle = _circles(rec, arcs, arc_step)
+    centers = np.zeros((count, 3))
+    normals = np.full(count, -1, dtype=np.int8)
+    radii = np.zeros(count)
+    centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
+    if not count:
+        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
+                       centers, normals, radii)
+    starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
+    lengths = np.linalg.norm(ends - starts, axis=1)
+    # at least the middle and the end: a move between two points of the other path that strays between them shows
+    pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
+    pieces[arcs] = circle.pieces
+    # a point where a move starts away from the previous end (a kinematics switch, the first move)
+    jumps = np.ones(count, dtype=bool)
+    jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
+    total = int(pieces.sum() + jumps.sum())
+    points = np.empty((total, dims))
+    owner = np.empty(total, dtype=np.int32)
+    firsts = np.cumsum(pieces + jumps) - pieces  # where each move's first point after its start goes
+    jump_at = firsts[jumps] - 1
+    points[jump_at] = starts[jumps]
+    owner[jump_at] = np.flatnonzero(jumps)
+    straight = pieces.copy()
+    straight[arcs] = 0
+    for low in range(0, count, CHUNK):
+        high = min(count, low + CHUNK)
+        move_of, slot = _slots(np.arange(low, high), straight[low:high])
+        at = firsts[move_of] + slot
+        fraction = (slot + 1) / pieces[move_of]
+        points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
+        owner[at] = move_of
+    arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
+    arc_length = np.zeros(total)  # along the arc, not the chord: the same length however an arc is split
+    for low in range(0, len(arcs), CHUNK // 16):
+        high = min(len(arcs), low + CHUNK // 16)
+        which, slot = _slots(np.arange(low, high), circle.pieces[low:high])
+        move_of = arcs[which]
+        at = firsts[move_of] + slot
+        points[at] = circle.points(which, (slot + 1) / circle.pieces[which], starts, ends)
+        owner[at], arc_of[at - 1] = move_of, move_of
+        arc_length[at] = circle.length[which] / circle.pieces[which]
+    length = np.zeros(total)
+    for low in range(0, total - 1, CHUNK):
+        high = min(total - 1, low + CHUNK)
+        length[low + 1:high + 1] = np.linalg.norm(points[low + 1:high + 1] - points[low:high], axis=1)
+    length[1:][arc_of >= 0] = 0.0  # segment k ends at point k + 1
+    length += arc_length
+    length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
+    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
+
+
+def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each item repeated ``counts`` times, and the repeat's number (0, 1, ...)."""
+    repeated = np.repeat(items, counts)
+    return repeated, np.arange(len(repeated)) - np.repeat(np.cumsum(counts) - counts, counts)
+
+
+@dataclass
+class _Circles:
+    """The arc moves' circles, as columns: in-plane axes, centre, start and end radius, start angle,
+    signed sweep, path length and pieces (as ``geometry_of`` and ``sampling.arc_frame`` read an arc)."""
+
+    u: np.ndarray
+    v: np.ndarray
+    normal: np.ndarray
+    center: np.ndarray   # (K, 3): in-plane centre, the start's normal coordinate
+    r0: np.ndarray
+    r1: np.ndarray
+    angle: np.ndarray
+    sweep: np.ndarray
+    length: np.ndarray
+    pieces: np.ndarray
+    moves: np.ndarray
+
+    def points(self, which: np.ndarray, fraction: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+        """Points at ``fraction`` (0..1 of the sweep) of arcs ``which``: the radius, the normal axis and
+        the rotary axes go with the angle; a fraction of 1 is the end exactly."""
+        move = self.moves[which]
+        start, end = starts[move], ends[move]
+        pts = start + fraction[:, None] * (end - start)
+        angle = self.angle[which] + fraction * self.sweep[which]
+        radius = self.r0[which] + fraction * (self.r1[which] - self.r0[which])
+        rows = np.arange(len(which))
+        u, v = self.u[which], self.v[which]
+        pts[rows, u] = self.center[which, u] + radius * np.cos(angle)
+        pts[rows, v] = self.center[which, v] + radius * np.sin(angle)
+        last = fraction >= 1.0
+        pts[last] = end[last]
+        return pts
+
+
+PLANE_AXES = np.array([PLANES[name] for name in PLANE_NAMES])  # first, second, normal axis per plane
+
+
+def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
+    """The circles of the arc moves ``arcs``, each in pieces of at most ``arc_step`` radians and ``LINE_STEP`` mm."""
+    table = rec.circles[arcs]
+    plane = table[:, 2].astype(np.int64)
+    u, v, normal = PLANE_AXES[plane].T
+    c1, c2 = table[:, 0].copy(), table[:, 1].copy()
+    xz = plane == PLANE_NAMES.index("XZ")  # the canon names the XZ centre (x, z); the plane's order is (z, x)
+    c1[xz], c2[xz] = table[xz, 1], table[xz, 0]
+    start, end = rec.starts[arcs, :3], rec.ends[arcs, :3]
+    rows = np.arange(len(arcs))
+    center = start.copy()
+    center[rows, u], center[rows, v] = c1, c2
+    du0, dv0 = start[rows, u] - c1, start[rows, v] - c2
+    du1, dv1 = end[rows, u] - c1, end[rows, v] - c2
+    angle = np.arctan2(dv0, du0)
+    turns = table[:, 3] * np.maximum(1.0, table[:, 4])
+    direction = np.where(turns > 0, 1.0, -1.0)
+    sweep = np.mod(direction * (np.arctan2(dv1, du1) - angle), 2.0 * math.pi)  # as sampling.arc_sweep
+    sweep = np.where(sweep <= 1e-12, 2.0 * math.pi, sweep)
+    sweep = direction * (sweep + 2.0 * math.pi * (np.abs(turns) - 1.0))
+    r0, r1 = np.hypot(du0, dv0), np.hypot(du1, dv1)
+    length = np.hypot(np.abs(sweep) * r0, end[rows, normal] - start[rows, normal])
+    pieces = np.clip(np.maximum(np.ceil(np.abs(sweep) / arc_step), np.ceil(length / LINE_STEP)), 2, MAX_CHORDS)
+    return _Circles(u, v, normal, center, r0, r1, angle, sweep, length, pieces.astype(np.int64), arcs)

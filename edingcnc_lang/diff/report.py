@@ -1,0 +1,147 @@
+"""The comparison as text for people: per operation (a tool's share of NEW, in order), what changed
+and where, with the OLD and NEW source lines; then the tools, events, offsets, time and rapids."""
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+import numpy as np
+
+from ..errors import EcncError, printable
+from ..planner.estimate import format_duration
+from ..source import iter_file_lines
+from .compare import LISTS, Change, Comparison
+from .record import Recording
+
+SHOWN_TEXT = 60  # characters of a source line shown
+
+
+def source_text(path: str, numbers: Iterable[int]) -> dict[int, str]:
+    """The text of lines ``numbers`` of ``path``, read once in a stream (none for a file gone)."""
+    wanted = set(numbers)
+    found: dict[int, str] = {}
+    if not wanted:
+        return found
+    try:
+        for number, text in enumerate(iter_file_lines(path), start=1):
+            if number in wanted:
+                found[number] = printable(text.strip())[:SHOWN_TEXT]
+                if len(found) == len(wanted):
+                    break
+    except (OSError, EcncError):  # a file gone since the run: no text, the report still stands
+        pass
+    return found
+
+
+def _headline(change: Change, tolerance: float) -> str:
+    where = []
+    if change.old_lines:
+        where.append(f"OLD {_span(change.old_lines)}")
+    if change.new_lines:
+        where.append(f"NEW {_span(change.new_lines)}")
+    moves = f", {change.moves} moves" if change.moves > 1 else ""
+    at = ", ".join(where)
+    what = change.what
+    if what in ("moved", "added", "removed", "replaced"):
+        text = {"moved": "path moved by up to", "added": "path only in NEW, up to",
+                "removed": "path only in OLD, up to", "replaced": "path replaced, up to"}[what]
+        if change.distance is None or not math.isfinite(change.distance):
+            return f"{text.rsplit(',', 1)[0]} (the other job makes no moves){moves}: {at}"
+        return f"{text} {change.distance:.4g} mm from the other{moves}: {at}"
+    if what == "feed":
+        return f"feed {change.old:g} -> {change.new:g} mm/min{moves}: {at}"
+    if what == "spindle":
+        return f"spindle {change.old:g} -> {change.new:g} rpm{moves}: {at}"
+    if what == "tool":
+        return f"tool T{change.old} -> T{change.new} in the spindle{moves}: {at}"
+    if what == "rapid":
+        return f"rapid down to Z{change.new:g} (machine), below every OLD rapid (lowest Z{change.old:g}){moves}: {at}"
+    if what == "offset":
+        return f"work zero at the end: OLD {change.old}, NEW {change.new}"
+    old = "-" if change.old is None else change.old
+    new = "-" if change.new is None else change.new
+    unit = " s" if what == "dwell" else ""
+    before = f"{old}{unit if change.old is not None else ''}"
+    after = f"{new}{unit if change.new is not None else ''}"
+    return f"{what} {before} -> {after}: {at}"
+
+
+def _span(lines: tuple[int, int]) -> str:
+    return f"line {lines[0]}" if lines[0] == lines[1] else f"lines {lines[0]}-{lines[1]}"
+
+
+def _operations(rec: Recording) -> list[tuple[int, int, int]]:
+    """(first move, last move, tool) of each run of NEW moves with one tool in the spindle."""
+    if not len(rec):
+        return []
+    cut = np.flatnonzero(np.diff(rec.tools)) + 1
+    firsts = np.concatenate(([0], cut))
+    lasts = np.append(cut, len(rec)) - 1
+    return [(int(f), int(l), int(rec.tools[f])) for f, l in zip(firsts, lasts)]
+
+
+def render(comparison: Comparison) -> str:
+    """The whole report."""
+    old, new = comparison.old, comparison.new
+    out = [f"OLD {old.name}: {len(old):,} moves, {format_duration(comparison.time[0])} planned",
+           f"NEW {new.name}: {len(new):,} moves, {format_duration(comparison.time[1])} planned"]
+    if comparison.same:
+        out.append(f"same: nothing the machine does differs beyond {comparison.tolerance:g} mm")
+        return "\n".join(out) + "\n"
+    biggest = "no path to compare with" if comparison.max_deviation is None else f"{comparison.max_deviation:.4g} mm"
+    out.append(f"differs: largest path deviation {biggest} (tolerance {comparison.tolerance:g} mm)")
+    changes = [c for name in LISTS for c in comparison.changes[name]]
+    old_text = source_text(old.name, (n for c in changes if c.old_lines for n in {c.old_lines[0], c.old_lines[1]}))
+    new_text = source_text(new.name, (n for c in changes if c.new_lines for n in {c.new_lines[0], c.new_lines[1]}))
+    placed: set[int] = set()
+    for first, last, tool in _operations(new):
+        mine = [c for c in changes if c.new_moves and first <= c.new_moves[0] <= last]
+        if not mine:
+            continue
+        lines = [n for n in new.lines[first:last + 1].tolist() if n > 0]
+        span = f"NEW lines {min(lines)}-{max(lines)}" if lines else "NEW"
+        out.append(f"\nT{tool} ({span}):")
+        placed.update(id(change) for change in mine)
+        out += _told(sorted(mine, key=lambda c: c.new_moves[0] if c.new_moves else 0), comparison.tolerance,
+                     old_text, new_text)
+    rest = [c for c in changes if id(c) not in placed]
+    if rest:
+        out.append("\nelsewhere:")
+        out += _told(rest, comparison.tolerance, old_text, new_text)
+    if comparison.tools_differ:
+        out.append(f"\ntools: OLD {' '.join(f'T{t}' for t in old.tool_order()) or 'none'}, "
+                   f"NEW {' '.join(f'T{t}' for t in new.tool_order()) or 'none'}")
+    if comparison.time_differs:
+        delta = comparison.time[1] - comparison.time[0]
+        out.append(f"time: OLD {format_duration(comparison.time[0])}, NEW {format_duration(comparison.time[1])} "
+                   f"({'+' if delta >= 0 else '-'}{format_duration(abs(delta))})")
+    for name, count in comparison.left_out.items():
+        if count:
+            out.append(f"({count} more {name} changes left out)")
+    return "\n".join(out) + "\n"
+
+
+def _told(changes: list[Change], tolerance: float, old_text: dict[int, str], new_text: dict[int, str]) -> list[str]:
+    """The changes in order; the same change again at once (the passes of a loop) is told once, with a count."""
+    out: list[str] = []
+    told, times, at = "", 0, 0
+    for change in [*changes, None]:
+        headline = _headline(change, tolerance) if change is not None else ""
+        if headline == told:
+            times += 1
+            continue
+        if times > 1:
+            out[at] += f" ({times} times)"
+        if change is not None:
+            at = len(out)
+            out += _described(change, headline, old_text, new_text)
+        told, times = headline, 1
+    return out
+
+
+def _described(change: Change, headline: str, old_text: dict[int, str], new_text: dict[int, str]) -> list[str]:
+    lines = [f"  {headline}"]
+    for side, span, texts in (("OLD", change.old_lines, old_text), ("NEW", change.new_lines, new_text)):
+        if span and span[0] in texts:
+            lines.append(f"    {side} {span[0]:>6}: {texts[span[0]]}")
+    return lines
