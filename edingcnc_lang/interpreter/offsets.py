@@ -168,7 +168,8 @@ class CoordinateSystems(MachineState):
                 values[G68_ANGLE_PARAM[self.rotation.plane]] = self.rotation.angle
                 for offset, number in enumerate(values):
                     self.params.set(t.G68_ACTIVE + offset, number)
-                self._sync_rotation(self.offset(), force=True)
+                self._sent_pivot = None  # a new G68 reaches the rotation stage once, whether or not
+                self._sync_rotation(self.offset())  # offset() (recomputed) has already told it
         self.modal["rotation"] = code
 
     def _turn(self, words: Mapping[str, float], span: n.Span) -> Turn:
@@ -191,11 +192,11 @@ class CoordinateSystems(MachineState):
         off = self.offset()
         return tuple(p + o for p, o in zip(self.rotation.pivot, off))
 
-    def _sync_rotation(self, offset: list[float], force: bool = False) -> None:
+    def _sync_rotation(self, offset: list[float]) -> None:
         """Tell the rotation stage where the pivot is now (after G68, or when an offset moved it)."""
         assert self.rotation is not None
         pivot = tuple(p + o for p, o in zip(self.rotation.pivot, offset))
-        if force or pivot != self._sent_pivot:
+        if pivot != self._sent_pivot:
             self._sent_pivot = pivot
             self.canon.event(Event("rotation", self.path, self.line, {
                 "on": True, "pivot": pivot, "angle": self.rotation.angle, "plane": self.rotation.plane}))
