@@ -7,11 +7,12 @@ coordinates in mm and degrees.
 """
 from __future__ import annotations
 
+import math
+
 from collections.abc import Iterator
 from dataclasses import dataclass, field, replace
 from typing import Any, Mapping, Protocol, Sequence
 
-from .spindle import Css
 
 Pose = tuple[float, ...]  # six values: x y z a b c (or the joints jx .. jc)
 AXES = "XYZABC"
@@ -38,6 +39,33 @@ class Arc:
     plane: str                   # "XY" | "XZ" | "YZ"
     turn: int                    # +1 counter-clockwise seen from the normal's positive end, -1 clockwise
     full_turns: int = 0          # extra full revolutions (a full circle has one)
+
+
+@dataclass(frozen=True, slots=True)
+class Css:
+    """Constant surface speed in force (a lathe's G96): the spindle turns so the edge cuts at ``surface`` mm/min.
+
+    ``axis_x`` is the machine X of the turning centre (work X0), so the cutting radius of a
+    machine position x is ``|x - axis_x|``.  ``max_rpm``/``min_rpm`` of 0 mean no limit.
+    """
+
+    surface: float
+    max_rpm: float
+    min_rpm: float
+    axis_x: float
+
+    def rpm(self, x: float) -> float:
+        """Spindle speed with the tool at machine X ``x`` (inf at the centre with no maximum)."""
+        radius = abs(x - self.axis_x)
+        rpm = self.surface / (2.0 * math.pi * radius) if radius > 0.0 else math.inf
+        if self.max_rpm > 0.0:
+            rpm = min(rpm, self.max_rpm)
+        return max(rpm, self.min_rpm)
+
+    def minutes_per_rev(self, x: float) -> float:
+        """1/rpm in minutes, finite even at the centre when a maximum applies."""
+        rpm = self.rpm(x)
+        return 0.0 if math.isinf(rpm) else 1.0 / rpm
 
 
 @dataclass(frozen=True, slots=True)

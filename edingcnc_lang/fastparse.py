@@ -15,12 +15,9 @@ from __future__ import annotations
 import re
 
 from . import nodes as n
-from .limits import MAX_NUMBER_DIGITS
+from .plain_words import FAST_NUMBER
 from .markers import Close, LineResult, Open
 
-# A number the fast paths take: at most 300 digits before the point, so always a finite double,
-# and at most the limit after it (a longer one is left to the parser, which reports it).
-FAST_NUMBER = rf"(?:\d{{1,300}}(?:\.\d{{0,{MAX_NUMBER_DIGITS}}})?|\.\d{{1,{MAX_NUMBER_DIGITS}}})(?!\d)"
 
 GIVE_UP = object()
 _new_span = tuple.__new__  # Span(...) without the named tuple's Python-level __new__: one per node

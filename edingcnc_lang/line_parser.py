@@ -13,9 +13,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from . import nodes as n
-from .fastparse import FAST_NUMBER, GIVE_UP, parse_fast
+from .fastparse import GIVE_UP, parse_fast
 from .limits import MAX_LINE_LENGTH, line_problem
 from .markers import LineResult
+from .plain_words import FAST_LINE, word_matches
 from .prose import PROSE_MESSAGE, looks_like_prose
 from .tree_builder import Builder as _Builder, LineError as _LineError, make_block as _make_block
 
@@ -26,10 +27,7 @@ if TYPE_CHECKING:  # lark is imported when a line first needs the grammar (start
 
 GRAMMAR = Path(__file__).resolve().parent / "grammar" / "macro.lark"
 
-FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
-FAST_LINE = re.compile(rf"^[ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$")
 _EMPTY_LINE = re.compile(r"^\s*(?:\((?!\s*msg\b)[^)\n]*\)\s*)*(?:;.*)?$", re.IGNORECASE)
-_FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
 
 
 @lru_cache(maxsize=1)
@@ -41,16 +39,11 @@ def _lark() -> Lark:
                      propagate_positions=True, maybe_placeholders=False, cache=True)
 
 
-def _word_matches(text: str) -> list[re.Match[str]]:
-    """The ``letter number`` words of a plain line, its ``;`` comment left out."""
-    semicolon = text.find(";")
-    return list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
-
 
 def _fast_block(text: str, path: str, line: int) -> n.Block:
     """The Block for a line of plain ``letter number`` words, without Lark."""
     words = []
-    for match in _word_matches(text):
+    for match in word_matches(text):
         col, end = match.start() + 1, match.end() + 1
         span = n.Span(path, line, col, line, end)
         num_span = n.Span(path, line, match.start(2) + 1, line, end)
@@ -59,26 +52,7 @@ def _fast_block(text: str, path: str, line: int) -> n.Block:
     return _make_block(words, [], None, False, n.Span(path, line, first.col, line, last.end_col))
 
 
-def plain_block(text: str, path: str, line: int) -> n.PlainBlock:
-    """The PlainBlock for a line of plain words: one node per line instead of one per word."""
-    matches = _word_matches(text)
-    words = [(m.group(1).upper(), float(m.group(2)), m.start() + 1) for m in matches]
-    line_number = None
-    if words[0][0] == "N":
-        line_number = int(words[0][1])
-        del words[0]
-    span = n.Span(path, line, matches[0].start() + 1, line, matches[-1].end() + 1)
-    return n.PlainBlock(tuple(words), line_number, span)
 
-
-def plain_words(text: str) -> list[tuple[str, str]]:
-    """(letter, number text) pairs of a plain word line, comment excluded."""
-    semicolon = text.find(";")
-    return _FAST_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
-
-def is_fast_line(text: str) -> bool:
-    """True when the fast path handles this line (used by the equivalence tests)."""
-    return FAST_LINE.match(text) is not None
 
 
 # --------------------------------------------------------------------------- errors

@@ -20,8 +20,8 @@ from .codes import Severity
 from .diagnostics import Diagnostic, SyntaxErrors
 from .dialogs import SYNTAX_CODES, dialog_fields
 from .limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
-from .line_parser import CONDITION_LINE, FAST_LINE, FAST_WORD, parse_line, plain_block
-from .line_parser import is_fast_line, parse_line_grammar, plain_words  # re-exported: the public API
+from .line_parser import CONDITION_LINE, parse_line, parse_line_grammar
+from .plain_words import FAST_LINE, FAST_WORD, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from .markers import Close, Open
 from .source import iter_file_lines, iter_text_lines
 from .tree_builder import LineError as _LineError

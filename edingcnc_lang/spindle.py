@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+
+from .canon import Css  # the G96 record a move carries
 
 M_PER_MIN = 1000.0    # G96 S in G21: metres per minute
 FT_PER_MIN = 304.8    # G96 S in G20: feet per minute
@@ -16,33 +17,6 @@ FT_PER_MIN = 304.8    # G96 S in G20: feet per minute
 
 class SpindleError(ValueError):
     """A spindle speed that cannot be had (the message is for the user)."""
-
-
-@dataclass(frozen=True, slots=True)
-class Css:
-    """Constant surface speed in force: the spindle turns so the edge cuts at ``surface`` mm/min.
-
-    ``axis_x`` is the machine X of the turning centre (work X0), so the cutting radius of a
-    machine position x is ``|x - axis_x|``.  ``max_rpm``/``min_rpm`` of 0 mean no limit.
-    """
-
-    surface: float
-    max_rpm: float
-    min_rpm: float
-    axis_x: float
-
-    def rpm(self, x: float) -> float:
-        """Spindle speed with the tool at machine X ``x`` (inf at the centre with no maximum)."""
-        radius = abs(x - self.axis_x)
-        rpm = self.surface / (2.0 * math.pi * radius) if radius > 0.0 else math.inf
-        if self.max_rpm > 0.0:
-            rpm = min(rpm, self.max_rpm)
-        return max(rpm, self.min_rpm)
-
-    def minutes_per_rev(self, x: float) -> float:
-        """1/rpm in minutes, finite even at the centre when a maximum applies."""
-        rpm = self.rpm(x)
-        return 0.0 if math.isinf(rpm) else 1.0 / rpm
 
 
 Speed = float | Css  # what is in force: a fixed rpm (G97) or constant surface speed (G96)

@@ -21,8 +21,7 @@ from .. import nodes as n
 from .. import speedups
 from ..canon import Batch
 from ..errors import EcncError
-from ..fastparse import FAST_NUMBER
-from ..line_parser import plain_block, plain_words
+from ..plain_words import FAST_NUMBER, plain_block, plain_words
 from .state import G_0, G_1, G_91, G_94, MachineState, StatementTable
 
 NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself

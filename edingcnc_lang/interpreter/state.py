@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
 from .. import nodes as n
 from .. import tables as t
-from ..canon import AXES, PLANES, Arc, Canon, Event, Move, Pose
+from ..canon import AXES, PLANES, Arc, Canon, Css, Event, Move, Pose
 from ..config import MachineConfig
 from ..errors import Location, MachineError
 from ..evaluator import Evaluator
 from ..host import Host
 from ..params import Parameters
-from ..spindle import Css, SpindleError, mean_rpm_points
+from ..spindle import SpindleError, mean_rpm_points
 from .observe import Observer
 
 INCH = t.MM_PER_INCH

@@ -20,7 +20,7 @@ from edingcnc_lang.canon import Batch, Event, Move
 from edingcnc_lang.config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.heightmap import HeightMap
-from edingcnc_lang.spindle import Css
+from edingcnc_lang.canon import Css
 from edingcnc_lang.stages import STAGES
 from edingcnc_lang.stages.base import Stage
 from edingcnc_lang.stages.cutter_comp import CutterCompensation
