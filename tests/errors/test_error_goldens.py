@@ -74,7 +74,9 @@ def cases(path: Path) -> list[Case]:
 ALL = [case for path in sorted(DATA.glob("*.nc")) for case in cases(path)]
 
 
-def test_every_case_expects_an_error() -> None:
+def test_every_case_expects_an_error(request: pytest.FixtureRequest) -> None:
+    if request.config.getoption("--regen-goldens"):
+        pytest.skip("the cases are being rewritten")
     assert ALL and all(case.expected is not None for case in ALL)
 
 

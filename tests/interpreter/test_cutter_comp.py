@@ -62,36 +62,6 @@ def test_a_real_looking_file_crlf_latin1(tmp_path: Path) -> None:
     assert max(m.end[0] for m in moves) == pytest.approx(45.0)  # outside the 40 mm plate by 5 mm
 
 
-REFUSALS = [
-    ("G0 X0 Y0\nG41 D1\nG1 X1 Y0 F100\n", 3, "entry move"),
-    ("G0 X-10\nG41 D2\nG1 X0 Y0 F100\nG1 X20\nG1 Y20\nG1 X19\nG1 Y0\n", 7, "gouging"),
-    ("G0 X-10\nG42 D2\nG1 X0 F100\nG2 X4 I2\n", 4, "does not fit inside the arc"),
-    # a CAM post's chord pocket entered square to its wall: the tool lands past the first chord (rs274: N5)
-    ("G0 X0 Y0\nG41 D2\nG1 X0 Y-20 F100\nX1.7431 Y-19.9239\nX3.4730 Y-19.6962\nX5.1764 Y-19.3185\n", 5, "gouging"),
-    ("G41 D1\nG42 D1\n", 2, "already on"),
-    ("G41 D1\nG18\n", 2, "changing the plane"),
-    ("G41 D1\nG53 G0 X1\n", 2, "G53"),
-    ("G41 D1\nG81 X5 Z-3 R2 F100\n", 2, "canned cycle"),
-    ("G41 D1\nG55\n", 2, "coordinate system"),
-    ("G41 D1\nG92 X0\n", 2, "G92"),
-    ("G41 D1\nT2 M6\n", 2, "tool change"),
-    ("G41 D1\nG43 H1\n", 2, "tool length"),
-    ("G41 D1\nG28\n", 2, "G28"),
-    ("G41 D1\nG38.2 Z-5 F100\n", 2, "probing"),
-    ("G0 X-10\nG41 D1\nG1 X0 F100\nG1 X10\nG40\nG2 X0 I-5\n", 6, "after G40"),
-    ("G41 D1.5\n", 1, "tool number"),
-    ("G42.1\n", 1, "needs D"),
-    ("G0 X0 Y0\nG41 D2\nG2 X4 I2 F100\n", 3, "entry arc must end further than the tool radius"),
-]
-
-
-@pytest.mark.parametrize(("source", "line", "words"), REFUSALS)
-def test_refusals_name_the_line(source: str, line: int, words: str, tmp_path: Path) -> None:
-    err = error_of(source, tmp_path)
-    assert words in err.message
-    assert err.location is not None and (err.location.path, err.location.line, err.location.col) == ("job.nc", line, 1)
-
-
 def test_a_refusal_held_back_in_the_stage_names_the_column_where_its_line_starts(tmp_path: Path) -> None:
     job = tmp_path / "job.nc"
     job.write_text("G0 X-10\nG42 D2\nG1 X0 F100\n    G2 X4 I2\n")

@@ -71,21 +71,6 @@ def test_zhc_on_sets_5151_and_a_loaded_table_works_like_a_probed_one(tmp_path: P
     assert moves[-1].end[2] == pytest.approx(50 / 250 + 30 / 300, abs=1e-6)
 
 
-@pytest.mark.parametrize("text, message", [
-    ("ZHC on\n", "ZHC on: there is no height table"),
-    ("ZHCINIT 10 3 3\nZHC on\n", "ZHC on: 0 of 9 points are measured"),
-    ("ZHCADDPOINT\n", "ZHCADDPOINT before ZHCINIT"),
-    ("ZHCINIT 10 3 3\nG0 X100\nG38.2 Z-5 F100\nZHCADDPOINT\n", "is not on the ZHC grid"),
-    ("ZHCINIT 10 3\n", "ZHCINIT expects gridSize nX nY"),
-    ("ZHCINIT 0 3 3\n", "grid sizes must be above 0"),
-    ("ZHCINIT 10 5 nan\n", "ZHCINIT expects gridSize nX nY"),  # was a LineError traceback
-    ("ZHCINITEX 1 1 [\n", "ZHCINITEX expects gridSizeX gridSizeY nX nY"),
-    ("ZHCL missing.txt\n", "cannot read the height table"),
-])
-def test_zhc_mistakes_are_refused_with_the_reason(tmp_path: Path, text: str, message: str) -> None:
-    assert message in error_of(text, log_dir=tmp_path).message
-
-
 def test_g53_g38_2_probes_in_machine_coordinates() -> None:
     result = run("G10 L2 P1 Z-20\nG54\nG53 G38.2 Z-50 F100\n")
     assert result.variables[5067] == 1.0

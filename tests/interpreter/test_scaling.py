@@ -7,7 +7,6 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.canon import Move
-from edingcnc_lang.errors import MachineError
 from edingcnc_lang.runner import RunOptions, RunResult, run_string
 from tests.cli_runner import invoke
 
@@ -35,18 +34,6 @@ def test_per_axis_factors_in_inch_mode_and_m30_ends_scaling() -> None:
 def test_arcs_scale_with_p() -> None:
     _, moves = run("G51 P2\nG2 X10 Y0 I5 J0 F100\n")
     assert moves == [(2, 20.0, 0.0)]
-
-
-@pytest.mark.parametrize(("source", "words"), [
-    ("G51 X2\nG2 X10 Y0 I5 J0 F100\n", "different factors"),
-    ("G51\n", "needs a factor"),
-    ("G51 P2 X2\n", "either P"),
-    ("G51 P0\n", "factor of 0"),
-])
-def test_refusals(source: str, words: str) -> None:
-    with pytest.raises(MachineError, match=words) as err:
-        run(source)
-    assert err.value.location is not None and err.value.location.line == source.count("\n")
 
 
 def test_the_cli_exits_70_naming_the_line(tmp_path: Path) -> None:

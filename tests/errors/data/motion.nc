@@ -21,6 +21,12 @@ G10 L2 P10 X1
 G10 L2 X1
 ;### 1: G10 L2 needs a coordinate system P1..P9 (P1 = G54 .. P9 = G59.3)
 ---
+G10 L2 P0 X1
+;### 1: G10 L2 needs a coordinate system P1..P9 (P1 = G54 .. P9 = G59.3)
+---
+G10 L20 P10 X1
+;### 1: G10 L20 needs a coordinate system P0..P9 (P1 = G54, P0 = the active one)
+---
 G10 L5 P1 X1
 ;### 1: G10 needs L1, L10 or L11 (tool table), L2 or L20 (coordinate system)
 ---
