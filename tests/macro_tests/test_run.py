@@ -38,10 +38,12 @@ def test_a_probe_entry_is_in_work_coordinates_and_the_other_axes_are_the_targets
     assert outcome.position["z"] == pytest.approx(-3)
 
 
-def test_a_miss_leaves_the_probe_untripped_and_past_the_list_it_trips_at_the_target(tmp_path: Path) -> None:
-    outcome = run_case(from_mapping({"job": "G38.2 Z-5 F100\n#1 = #5067\nG38.2 Z-10\n#2 = #5067\nM30\n",
-                                     "probe": ["miss"]}, tmp_path))
-    assert outcome.var(1) == 0 and outcome.var(2) == 1 and outcome.var(5063) == -10
+def test_a_miss_stops_the_run_at_its_probe_and_past_the_list_the_probe_trips_at_the_target(tmp_path: Path) -> None:
+    missed = run_case(from_mapping({"job": "G38.2 Z-5 F100\nM30\n", "probe": ["miss"]}, tmp_path))
+    assert missed.error is not None and "without the probe tripping" in missed.error and ":1:" in missed.error
+    past = run_case(from_mapping({"job": "G38.2 Z-5 F100\nG38.2 Z-10\n#2 = #5067\nM30\n",
+                                  "probe": [{"z": -5}]}, tmp_path))
+    assert past.var(2) == 1 and past.var(5063) == -10
 
 
 def test_a_probe_entry_off_the_move_is_a_mistake_in_the_test(tmp_path: Path) -> None:
