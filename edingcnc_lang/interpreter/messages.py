@@ -98,7 +98,7 @@ class Messages(MachineState):
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
         assert self._log_file is not None
         try:
-            return open_job_file(self._log_file, "write" if truncate else "append")
+            return open_job_file(self._log_file, "write" if truncate else "append", self.own_files)
         except OSError as exc:
             raise self.fail(f"cannot write the log file {self._log_file}: {exc.strerror or exc}", span) from None
 

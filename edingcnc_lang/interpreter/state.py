@@ -167,6 +167,8 @@ class MachineState:
         self.host = host or Host()
         self.max_steps = max_steps
         self.log_dir = log_dir
+        # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
+        self.own_files: frozenset[tuple[int, int]] = frozenset()
         self.allow_exec = allow_exec
         self.block_delete = block_delete
         self.steps = 0
