@@ -175,3 +175,11 @@ def test_an_in_place_rewrite_that_finds_no_room_leaves_the_file_whole(ini: Path,
     with pytest.raises(ConfigError, match="No space left"):
         run_string("".join(f"#{n} = {n}\n" for n in range(4000, 4070)), RunOptions(ini=ini, save_vars=True))
     assert ini.read_bytes() == before
+
+
+def test_kins_build_refuses_to_write_over_its_source(tmp_path: Path) -> None:
+    source = tmp_path / "k.c"
+    source.write_text("int x;\n")
+    result = invoke("kins", "build", source, "-o", source)
+    assert result.exit_code == 2 and "is also an input" in result.stderr
+    assert source.read_text() == "int x;\n"

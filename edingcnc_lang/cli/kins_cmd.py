@@ -193,6 +193,8 @@ def guarded(kins: Kinematics) -> Kinematics:
 def build_library(source: str, output: str | None, cc: str) -> int:
     """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
     from ..kinematics.build import build_plugin
+    from ..outputs import check_outputs
 
+    check_outputs({"-o": Path(output) if output else None}, [Path(source)])  # the compiler would destroy it
     print(build_plugin(Path(source), Path(output) if output else None, cc))
     return EXIT_OK
