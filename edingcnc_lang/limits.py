@@ -62,6 +62,15 @@ MAX_LOG_BYTES = 64 * 1024 * 1024
 # usual 200 Hz it is a move of 83 minutes.
 MAX_MOVE_SAMPLES = 1_000_000
 
+# Passes of one G76 thread, cut passes and spring passes (H) together: a real thread takes a few
+# dozen.  The passes are counted from the words before any is computed, so H1000000000 is an
+# error at once, not gigabytes.
+MAX_THREAD_PASSES = 10_000
+
+# Pecks of one G73/G83 hole (depth / Q), counted before the pecks are listed: a deep hole takes a
+# few hundred.
+MAX_CYCLE_PECKS = 100_000
+
 Problem = tuple[str, str, int]  # code, message, column
 
 
