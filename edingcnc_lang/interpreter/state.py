@@ -107,6 +107,8 @@ def format_value(value: float) -> str:
         return str(value)
     if value == int(value) and abs(value) < 1e15:
         return str(int(value))
+    if abs(value) >= 1e15:  # not 309 digits for 1e308
+        return f"{value:.6g}"
     return f"{value:.4f}".rstrip("0").rstrip(".")
 
 
