@@ -20,7 +20,7 @@ from .markers import Close, LineResult, Open
 
 # A number the fast paths take: at most 300 digits before the point, so always a finite double,
 # and at most the limit after it (a longer one is left to the parser, which reports it).
-FAST_NUMBER = rf"(?:\d{{1,300}}(?:\.\d{{0,{MAX_NUMBER_DIGITS}}})?|\.\d{{1,{MAX_NUMBER_DIGITS}}})(?!\d)"
+FAST_NUMBER = rf"(?:[0-9]{{1,300}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}})?|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
 
 GIVE_UP = object()
 _new_span = tuple.__new__  # Span(...) without the named tuple's Python-level __new__: one per node

@@ -16,8 +16,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .canon import Pose
-from .errors import EcncError, Location
+from .errors import EcncError, Location, shortened
 from .limits import MAX_ZHC_POINTS
+from .source import plain_float
 
 TABLE_HEADER = "; ecnc ZHC height table"
 _TABLE_KEYS = ("nx", "ny", "x0", "y0", "dx", "dy")
@@ -188,12 +189,13 @@ class ZhcTable:
         return table
 
 
-def _number(text: str, path: str, line: int) -> float:
+def _number(text: str, path: str, line: int, nan: bool = True) -> float:
+    """A value of a height file; ``nan`` (a ZHC node not probed) only where ``nan`` allows it."""
     try:
-        value = float(text)
+        value = plain_float(text, special=True)
     except ValueError:
-        raise HeightMapError(f"{text!r} is not a number", Location(path, line)) from None
-    if math.isinf(value):
+        raise HeightMapError(f"{shortened(repr(text))} is not a number", Location(path, line)) from None
+    if math.isinf(value) or (math.isnan(value) and not nan):
         raise HeightMapError(f"{text!r} is not a finite number", Location(path, line))
     return value
 
@@ -214,7 +216,7 @@ def read_surface(path: str | os.PathLike[str]) -> HeightMap:
                     raise HeightMapError(f"expected x,y,z, got {len(cells)} values", Location(shown, number))
                 if number == 1 and not _is_number(cells[0]):
                     continue  # a header row such as x,y,z
-                x, y, z = (_number(c, shown, number) for c in cells)
+                x, y, z = (_number(c, shown, number, nan=False) for c in cells)
                 points[(x, y)] = z
     except OSError as err:
         raise HeightMapError(f"cannot read the probe surface: {err.strerror}", Location(shown)) from None
@@ -230,7 +232,7 @@ def read_surface(path: str | os.PathLike[str]) -> HeightMap:
 
 def _is_number(text: str) -> bool:
     try:
-        float(text)
+        plain_float(text, special=True)
     except ValueError:
         return False
     return True

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from datetime import datetime
 
 from .canon import Pose
+from .source import plain_float, plain_int
 
 
 
@@ -43,11 +44,11 @@ class DialogAnswer:
             name, eq, value = item.partition("=")
             if not eq or not name.strip().startswith("#"):
                 raise ValueError(f"answer {text!r}: field {item!r} is not #N=V")
-            try:
-                values[int(name.strip()[1:])] = float(value)
+            try:  # digits 0-9 only: float() would also take '1_0' and '１'
+                values[plain_int(name.strip()[1:])] = plain_float(value, special=True)
             except ValueError:
                 raise ValueError(f"answer {text!r}: field {item!r} is not #N=V") from None
-            if not math.isfinite(values[int(name.strip()[1:])]):
+            if not math.isfinite(values[plain_int(name.strip()[1:])]):
                 raise ValueError(f"answer {text!r}: field {item!r} is not a finite number")
         return cls(head == "ok", values)
 

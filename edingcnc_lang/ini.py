@@ -26,10 +26,10 @@ from edingcnc_lang.errors import ConfigError, Location
 from edingcnc_lang.limits import MAX_INI_BYTES
 
 _BOM = b"\xef\xbb\xbf"
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-_INTEGER = re.compile(r"[+-]?\d+")
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")  # ASCII digits: not '１'
+_INTEGER = re.compile(r"[+-]?[0-9]+")
 _SECTION = re.compile(r"\[([^\]]*)\]")
-VARIABLE_KEY = re.compile(r"#(\d+)")  # a [VARIABLES] key: the parameter number
+VARIABLE_KEY = re.compile(r"#([0-9]+)")  # a [VARIABLES] key: the parameter number
 
 
 @dataclass(frozen=True)

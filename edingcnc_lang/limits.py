@@ -39,7 +39,7 @@ MAX_NUMBER_DIGITS = 400
 _OPERATOR = re.compile(r"==|<>|!=|<=|>=|\*\*|[#+\-*/<>=!]|(?<![A-Za-z])[A-Za-z]{2,}[ \t]*\[|and|or|xor|mod|eq|ne|gt|ge|lt|le",
                        re.IGNORECASE)
 _BRACKET = re.compile(r"[\[\]]")
-_DIGITS = re.compile(r"\d+")
+_DIGITS = re.compile(r"[0-9]+")
 _NOT_CODE = re.compile(r'"[^"\n]*"|\([^)\n]*\)|;.*')
 
 # Statements, loop turns and canned-cycle holes and pecks one run may execute unless told

@@ -10,7 +10,7 @@ from ..errors import EcncError
 from ..line_parser import plain_block, plain_words
 from .state import AXIS_INDEX, G_0, G_1, G_91, G_94, MachineState
 
-_NUM = r"([+-]?(?:\d+\.?\d*|\.\d+))[ \t]*"
+_NUM = r"([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+))[ \t]*"
 CAM_LINE = re.compile(r"[ \t]*(?:[Gg][ \t]*" + _NUM + ")?" + "".join(
     f"(?:[{a}{a.lower()}][ \\t]*{_NUM})?" for a in AXES + "F") + r"(?:;.*)?$")
 

@@ -187,5 +187,5 @@ class Project:
                 found.update(index for index, _ in dialog_fields(dialog))
             for command in facts.commands:
                 if command.name in _WRITING_COMMANDS:
-                    found.update(int(word) for word in command.args.split() if word.isdigit())
+                    found.update(int(word) for word in command.args.split() if word.isascii() and word.isdigit())
         return frozenset(found)
