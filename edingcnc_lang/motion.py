@@ -25,7 +25,7 @@ from . import tables as t
 from .canon import AXES, PLANES, Event, Move, Pose
 from .config import MachineConfig
 from .errors import EcncError, Location, MachineError, PluginError
-from .geometry import arc_extremes, sweep
+from .geometry import arc_extremes
 from .kinematics import abi
 from .kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
@@ -378,7 +378,7 @@ class MotionStage:
         from .kinematics.sampling import TooManySamples
 
         dt = self.config.interpolation_time
-        geo = geometry_of(move, self.config.full_circle_theta_epsilon)
+        geo = geometry_of(move)
         limits = self._limits_for(move)
         where = _located(move)
         start, start_joints = np.array(move.start, dtype=float), np.array(self.joints)
@@ -430,7 +430,7 @@ class MotionStage:
             center = (geo.center[first], geo.center[second])
             s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
             clockwise = move.arc.turn < 0
-            angle, _ = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
+            angle = abs(geo.arc_frame().sweep)  # the interpreter's decision: full circle or not
             start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
             radius = math.hypot(s[0] - center[0], s[1] - center[1])
             for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):

@@ -103,7 +103,7 @@ class Moves(MachineState):
                      + f", end ({fmt_point(e)})")
             raise self.fail(f"{err}; {where} in the {plane} plane", span) from None
         assert center is not None
-        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
+        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon, "R" in words, tolerance)
         radius = math.hypot(s[0] - center[0], s[1] - center[1])
         along = end[normal] - start[normal]
         length = math.hypot(radius * angle, along)
