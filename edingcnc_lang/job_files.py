@@ -12,6 +12,8 @@ from pathlib import Path, PureWindowsPath
 from collections.abc import Collection
 from typing import Literal, TextIO
 
+from .errors import printable
+
 OpenMode = Literal["append", "write", "read"]
 
 _COMMON = getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
@@ -28,8 +30,8 @@ def job_file(folder: Path, raw: str) -> Path:
     name = PureWindowsPath(raw).name
     if name in ("", ".", ".."):
         raise ValueError(f"{raw!r} names no file")
-    if any(ord(c) < 32 for c in name):
-        raise ValueError(f"{raw!r}: a file name cannot hold control characters")
+    if printable(name) != name:  # NUL, escapes, and the bidi overrides that show "txt.exe" as "exe.txt"
+        raise ValueError(f"{raw!r}: a file name cannot hold control characters or direction overrides")
     return folder / name
 
 

@@ -73,6 +73,18 @@ MAX_THREAD_PASSES = 10_000
 # few hundred.
 MAX_CYCLE_PECKS = 100_000
 
+# The range of an axis's maxVelocity (mm/s, deg/s) and maxAcceleration (mm/s^2) in a cnc.ini:
+# the planner squares them and divides by them, so at 1e-200 mm/s a move took 0 s, at 1e-320
+# mm/s^2 NaN s, and at 1e308 both overflowed.  A micrometre per second is slower than any real
+# axis, a thousand kilometres per second faster.
+MIN_AXIS_RATE = 1e-6
+MAX_AXIS_RATE = 1e9
+
+# The largest coordinate or height (mm) in a height table (ZHCL, ZHCADDPOINT) or a probe surface:
+# a thousand kilometres.  Beyond it a table's range and mean overflowed (ZHCcheck printed "range
+# inf") and the bilinear interpolation gave inf.
+MAX_HEIGHT_MAP_VALUE = 1e9
+
 Problem = tuple[str, str, int]  # code, message, column
 
 

@@ -271,9 +271,9 @@ class EventsWriter:
     """
 
     def __init__(self, path: Path) -> None:
-        import json  # only when writing events
+        from .serialize import json_text  # only when writing events
 
-        self._dumps = json.dumps
+        self._dumps = json_text
         self.path = path
         self._file: IO = _NOT_OPEN
         self._spindle = SpindleTracker()

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 import sys
+import warnings
 from collections.abc import Sequence
 from typing import Any, NoReturn
 
@@ -67,6 +68,9 @@ def run_command_line(argv: list[str]) -> int:
 
         return shell_complete(ecnc, {}, "ecnc", COMPLETE_VAR, os.environ[COMPLETE_VAR])
     make_streams_usable()
+    # numpy's overflow and invalid-value warnings name a source line of ours, which tells a user
+    # nothing; what such a value does to a result is checked and reported where it matters
+    warnings.filterwarnings("ignore", category=RuntimeWarning, module=r"edingcnc_lang\.|numpy")
     as_json = "--json" in (argv[:argv.index("--")] if "--" in argv else argv)
     try:
         with ecnc.make_context("ecnc", argv) as ctx:
@@ -101,10 +105,10 @@ def report(err: EcncError, as_json: bool, to_stderr: bool = True) -> int:
     if as_json:
         partial = getattr(err, "result", None)
         doc = partial.to_json() if partial is not None else {"error": err.to_json()}
-        import json
+        from ..serialize import json_text
 
         try:
-            print(json.dumps(doc, indent=1))
+            print(json_text(doc, indent=1))
             sys.stdout.flush()
         except OSError:  # stdout is the trouble itself: stderr tells
             pass

@@ -71,9 +71,9 @@ def _workspace_argv(ini: str | None, box: str | None, seed: int, samples: int, t
 
 
 def _print_json(data: object) -> None:
-    import json
+    from ..serialize import json_text
 
-    print(json.dumps(data, indent=2))
+    print(json_text(data, indent=2))
 
 
 @click.command("check", cls=WorkspaceCommand, help=f"Prove a plug-in over a workspace: round trip, continuity, "

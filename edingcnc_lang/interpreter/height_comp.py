@@ -17,6 +17,7 @@ from ..canon import Event
 from ..errors import EcncError
 from ..heightmap import ZhcTable
 from ..job_files import OpenMode, job_file, open_job_file
+from ..limits import MAX_HEIGHT_MAP_VALUE
 from ..line_parser import parse_line
 from ..tree_builder import LineError
 from .state import MachineState
@@ -56,7 +57,10 @@ class HeightComp(MachineState):
         if self.params.read(t.PROBE_TRIPPED) != 1.0:
             raise self.fail("ZHCADDPOINT: the last G38.2 did not touch (#5067 is not 1)", stmt.span)
         x, y = self.params.read(t.PROBE_MACHINE), self.params.read(t.PROBE_MACHINE + 1)
-        if self.zhc.add(x, y, self.params.read(t.PROBE_WORK + 2)) is None:
+        z = self.params.read(t.PROBE_WORK + 2)
+        if not abs(z) <= MAX_HEIGHT_MAP_VALUE:  # a host's probe answer: the table's statistics stay finite
+            raise self.fail(f"ZHCADDPOINT: the probed height {z:g} is beyond {MAX_HEIGHT_MAP_VALUE:g} mm", stmt.span)
+        if self.zhc.add(x, y, z) is None:
             raise self.fail(f"ZHCADDPOINT: the probe point X{x:g} Y{y:g} (machine) is not on the ZHC grid",
                             stmt.span)
 
