@@ -59,6 +59,42 @@ ProbeCallback = Callable[[Pose, Pose], "Pose | None"]
 MessageCallback = Callable[[str, str, str, int], None]
 
 
+def checked_answer(answer: object) -> DialogAnswer | None:
+    """A dialog callback's answer, or ValueError saying what it returned instead."""
+    if answer is None or isinstance(answer, DialogAnswer):
+        return answer
+    raise ValueError(f"the host's dialog callback returned {_shown(answer)}, not a DialogAnswer or None")
+
+
+def checked_level(level: object) -> float:
+    """An input callback's level as 0.0/1.0 (a number or a bool), or ValueError."""
+    if isinstance(level, (bool, int, float)) and math.isfinite(level):
+        return float(level)
+    raise ValueError(f"the host's input callback returned {_shown(level)}, not a number (0 low, 1 high)")
+
+
+def checked_trip(trip: object, start: Pose, goal: Pose) -> Pose | None:
+    """A probe callback's trip point: None, or six finite numbers on the way from ``start`` to
+    ``goal`` that leave the rotary axes where they are (G38.2 never turns them); else ValueError."""
+    if trip is None:
+        return None
+    try:
+        pose = tuple(float(v) for v in trip)  # type: ignore[union-attr]
+    except (TypeError, ValueError):
+        pose = ()
+    if len(pose) != 6 or not all(math.isfinite(v) for v in pose):
+        raise ValueError(f"the host's probe callback returned {_shown(trip)}, not None or 6 finite numbers "
+                         "(x y z a b c, machine coordinates)")
+    if any(abs(pose[i] - start[i]) > 1e-9 for i in range(3, 6)):
+        raise ValueError("the host's probe callback moved a rotary axis, which G38.2 never moves")
+    return pose  # type: ignore[return-value]
+
+
+def _shown(value: object) -> str:
+    text = repr(value)
+    return f"{type(value).__name__} {text[:60]}{'...' if len(text) > 60 else ''}"
+
+
 @dataclass
 class Host:
     """Callbacks into the embedding program; ``None`` means the simulation default."""

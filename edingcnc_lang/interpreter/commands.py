@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Iterable
 
 from .. import nodes as n
@@ -122,11 +123,23 @@ class Commands(MachineState):
         argv = [quoted or bare for quoted, bare in _EXEC_ARG.findall(stmt.args)]
         if not argv:
             raise self.fail('Exec needs the program to run, e.g. Exec "notepad.exe"', stmt.span)
-        try:
-            result = subprocess.run(argv, check=False)
+        try:  # what the program prints is a message, never part of ecnc's output (--json, --trace -)
+            result = subprocess.run(argv, check=False, stdin=subprocess.DEVNULL, stdout=_stderr_fd())
         except OSError as err:
             raise self.fail(f"Exec {stmt.args}: {err.strerror}", stmt.span) from None
         self.canon.event(Event("exec", self.path, self.line, {"args": stmt.args, "status": result.returncode}))
+
+
+def _stderr_fd() -> int:
+    """Where an Exec'd program's standard output goes: ecnc's stderr (the null device if it has no
+    descriptor, as under a test runner)."""
+    import subprocess
+
+    try:
+        sys.stderr.flush()
+        return sys.stderr.fileno()
+    except (AttributeError, OSError, ValueError):
+        return subprocess.DEVNULL
 
 
 def _is_digits(text: str) -> bool:

@@ -13,7 +13,7 @@ from ..errors import JobAborted, Location
 from ..evaluator import param_index
 from ..job_files import job_file, open_job_file
 from ..limits import MAX_LOG_BYTES
-from ..host import DialogAnswer, DialogField
+from ..host import DialogAnswer, DialogField, checked_answer
 from ..dialogs import dialog_fields
 from .state import MachineState, format_value
 
@@ -57,7 +57,10 @@ class Messages(MachineState):
             raise self.fail(problem.message, stmt.span if item is None or isinstance(item, str) else item.span)
         indices = [param_index(f.index.value, f.index.span) for f in shape]
         fields = [DialogField(f.label, index, self.params.read(index)) for f, index in zip(shape, indices)]
-        answer = (self.host.dialog(items[0], fields) if self.host.dialog else None) or DialogAnswer()
+        try:
+            answer = checked_answer(self.host.dialog(items[0], fields) if self.host.dialog else None) or DialogAnswer()
+        except ValueError as err:
+            raise self.fail(str(err), stmt.span) from None
         unknown = set(answer.values) - {f.index for f in fields}
         if unknown:
             raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)

@@ -8,6 +8,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..canon import PLANES, Arc
 from ..geometry import ArcError, center_from_radius, check_radius, radius_tolerance, sweep
+from ..host import checked_trip
 from .state import (
     AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_51, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
     MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
@@ -163,7 +164,12 @@ class Moves(MachineState):
                             span)
         feed = self._feed_for(distance, words, span)
         goal = self.machine_frame(target)  # the host sees machine coordinates
-        trip = self.host.probe(self.machine_frame(self.pos), goal) if self.host.probe else goal  # type: ignore[arg-type]
+        start = self.machine_frame(self.pos)
+        trip = self.host.probe(start, goal) if self.host.probe else goal  # type: ignore[arg-type]
+        try:
+            trip = checked_trip(trip, start, goal)  # type: ignore[arg-type]
+        except ValueError as err:
+            raise self.fail(str(err), span) from None
         self._move("probe", self.program_frame(trip) if trip is not None else target, feed)
         if trip is not None:
             work = self.reported_position()
