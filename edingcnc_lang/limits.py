@@ -85,6 +85,14 @@ MAX_AXIS_RATE = 1e9
 # inf") and the bilinear interpolation gave inf.
 MAX_HEIGHT_MAP_VALUE = 1e9
 
+# Sample poses of ``ecnc kins check``/``compare`` (--samples): each costs some kilobytes of poses,
+# joints and Jacobians while the checks run; the default is 2,000, 1e9 asked for tens of GB.
+MAX_CHECK_SAMPLES = 200_000
+
+# Grid points per side of ``ecnc kins plot`` (--resolution): three slices of N x N poses; the
+# default is 60, 1e6 asked for 3e12 poses.
+MAX_ENVELOPE_RESOLUTION = 1_000
+
 Problem = tuple[str, str, int]  # code, message, column
 
 

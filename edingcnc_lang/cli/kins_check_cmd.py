@@ -15,7 +15,8 @@ from ..errors import EXIT_FINDINGS, EXIT_OK
 from .base import Command, usage_error
 from .kins_cmd import guarded, in_child_if_compiled
 from .options import ini_option, json_option
-from .params import FLOAT, INT, KINEMATICS_NAME, OUTPUT_FILE, POSITIVE_INT
+from ..limits import MAX_CHECK_SAMPLES, MAX_ENVELOPE_RESOLUTION
+from .params import FLOAT, INT, KINEMATICS_NAME, OUTPUT_FILE, PlainInt
 
 if TYPE_CHECKING:
     from ..kinematics.workbench import CheckOptions
@@ -28,8 +29,8 @@ def _workspace_options(func: F) -> F:
     """--ini, --box, --seed, --samples, --tolerance: where and how densely to look."""
     func = click.option("--tolerance", type=FLOAT, metavar="T",
                         help="Absolute tolerance (default: 1e-6 of the workspace diagonal).")(func)
-    func = click.option("--samples", type=POSITIVE_INT, default=2000, show_default=True,
-                        help="Random poses, after the centre and the corners.")(func)
+    func = click.option("--samples", type=PlainInt(1, MAX_CHECK_SAMPLES), default=2000, show_default=True,
+                        help=f"Random poses, after the centre and the corners (at most {MAX_CHECK_SAMPLES:,}).")(func)
     func = click.option("--seed", type=INT, default=0, show_default=True,
                         help="Seed of the sample poses: the same seed gives the same report.")(func)
     func = click.option("--box", metavar="X0,X1,Y0,Y1,Z0,Z1[,A0,A1...]",
@@ -112,7 +113,8 @@ def compare(a: str, b: str, as_json: bool, **workspace: Any) -> int:
 @click.argument("plugin", metavar="PLUGIN", type=KINEMATICS_NAME)
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE, required=True,
               help="Picture to write: .png, .svg or .pdf.")
-@click.option("--resolution", type=POSITIVE_INT, default=60, show_default=True, help="Grid points per side.")
+@click.option("--resolution", type=PlainInt(1, MAX_ENVELOPE_RESOLUTION), default=60, show_default=True,
+              help=f"Grid points per side (at most {MAX_ENVELOPE_RESOLUTION:,}).")
 @_workspace_options
 def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     from pathlib import Path
