@@ -93,6 +93,12 @@ MAX_CHECK_SAMPLES = 200_000
 # default is 60, 1e6 asked for 3e12 poses.
 MAX_ENVELOPE_RESOLUTION = 1_000
 
+# The language server: characters of a document it analyses (a 50 MB document took 2.7 GB and
+# 32 s to its first hover; a larger one gets one diagnostic saying so, ecnc lint still reads it),
+# and the tabSize it indents with (2e9 asked for gigabytes of spaces).
+MAX_LSP_DOCUMENT_CHARS = 10_000_000
+MAX_TAB_SIZE = 16
+
 Problem = tuple[str, str, int]  # code, message, column
 
 
