@@ -4,6 +4,7 @@ samples per joint; kins check --samples and kins plot --resolution have limits (
 for tens of GB)."""
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
@@ -64,3 +65,15 @@ def test_a_joint_plot_draws_a_bounded_number_of_samples(tmp_path: Path, monkeypa
 def test_kins_workloads_have_a_limit(args: list[str], limit: int) -> None:
     result = invoke("kins", *args)
     assert result.exit_code == 2 and f"{limit}" in result.stderr
+
+
+def test_running_out_of_memory_is_an_error_not_a_traceback(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from edingcnc_lang import runner
+
+    def exhausted(*_args: object, **_kwargs: object) -> None:
+        raise MemoryError
+
+    monkeypatch.setattr(runner.Run, "execute_file", exhausted)
+    result = invoke("run", job(tmp_path, 3), "--json")
+    assert result.exit_code == 70 and "out of memory" in result.stderr
+    assert json.loads(result.stdout)["error"]["message"].startswith("out of memory")
