@@ -7,7 +7,7 @@ target).  Nothing here is global: each run gets its own Host.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import datetime
 
@@ -79,7 +79,7 @@ def checked_trip(trip: object, start: Pose, goal: Pose) -> Pose | None:
     if trip is None:
         return None
     try:
-        pose = tuple(float(v) for v in trip)  # type: ignore[union-attr]
+        pose = tuple(float(v) for v in trip) if isinstance(trip, Iterable) else ()
     except (TypeError, ValueError):
         pose = ()
     if len(pose) != 6 or not all(math.isfinite(v) for v in pose):

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import sys
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol, runtime_checkable
 
 from edingcnc_lang.errors import ConfigError, EcncError, Location, MachineError, PluginError
@@ -58,9 +58,9 @@ def _guarded(kins: object, method: Callable[..., Any], label: str, name: str) ->
 
 
 def _six_numbers(result: object, label: str, call: str) -> Pose:
-    try:
-        values = tuple(float(v) for v in result) if isinstance(result, (tuple, list)) or hasattr(result, "shape") \
-            else ()  # type: ignore[union-attr]
+    try:  # a tuple, a list or a numpy array; not a generator, which would be used up
+        values = tuple(float(v) for v in result) if isinstance(result, (tuple, list)) or (
+            hasattr(result, "shape") and isinstance(result, Iterable)) else ()
     except (TypeError, ValueError):
         values = ()
     if len(values) != 6:
