@@ -25,7 +25,7 @@ from . import tables as t
 from .canon import AXES, PLANES, Event, Move, Pose
 from .config import MachineConfig
 from .errors import EcncError, Location, MachineError, PluginError
-from .geometry import arc_extremes
+from .geometry import arc_extremes, sweep
 from .kinematics import abi
 from .kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
 from .kinematics.builtin import MAPPINGS, CylinderMapping, TrivialKinematics, bend_knife_correction
@@ -430,7 +430,8 @@ class MotionStage:
             center = (geo.center[first], geo.center[second])
             s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
             clockwise = move.arc.turn < 0
-            angle = abs(geo.arc_frame().sweep)  # the interpreter's decision: full circle or not
+            # the interpreter's decision: a full circle, or the arc between its ends (never a circle)
+            angle = 2 * math.pi if move.arc.full_turns else sweep(s, center, e, clockwise, -1.0, r_form=True)[0]
             start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
             radius = math.hypot(s[0] - center[0], s[1] - center[1])
             for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):
