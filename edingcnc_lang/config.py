@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import ConfigError
+from edingcnc_lang.limits import MAX_AXIS_RATE, MIN_AXIS_RATE
 
 if TYPE_CHECKING:
     from edingcnc_lang.ini import IniFile
@@ -389,10 +390,12 @@ _CHECKS: tuple[tuple[str, str, Callable[[MachineConfig], bool], str], ...] = (
      lambda c: c.user_output_start == 0 or c.user_output_count > 0,
      "is set but userOutputNumVariables is 0, so nothing would be written (set it to 1..12)"),
     # a joint or axis that may not move or speed up is a broken configuration, not "no limit"
-    *((f"JOINT_{i}", key, lambda c, i=i, name=name: getattr(c.joints[i], name) > 0, f"must be greater than 0 ({unit})")
+    *((f"JOINT_{i}", key, lambda c, i=i, name=name: MIN_AXIS_RATE <= getattr(c.joints[i], name) <= MAX_AXIS_RATE,
+       f"must be {MIN_AXIS_RATE:g} to {MAX_AXIS_RATE:g} ({unit})")
       for i in range(len(AXES))
       for name, key, unit in (("max_velocity", "maxVelocity", "mm/s"), ("max_acceleration", "maxAcceleration", "mm/s^2"))),
-    *(("KINEMATICS", prefix + axis, lambda c, i=i, name=name: getattr(c, name)[i] > 0, f"must be greater than 0 ({unit})")
+    *(("KINEMATICS", prefix + axis, lambda c, i=i, name=name: MIN_AXIS_RATE <= getattr(c, name)[i] <= MAX_AXIS_RATE,
+       f"must be {MIN_AXIS_RATE:g} to {MAX_AXIS_RATE:g} ({unit})")
       for name, prefix, unit in (("cartesian_max_velocity", "maxVelocity", "mm/s"),
                                  ("cartesian_max_acceleration", "maxAcceleration", "mm/s^2"))
       for i, axis in enumerate(AXES)),

@@ -10,6 +10,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from .limits import MAX_CYCLE_PECKS
+
 PECK_CLEARANCE_MM = 0.254  # G83 re-entry above the last depth, G73 chip-break retract (0.010 inch)
 
 
@@ -23,16 +25,13 @@ class Step:
     level: float = 0.0  # drilling-axis coordinate (rapid/feed/tap); seconds for dwell
 
 
-MAX_PECKS = 100_000
-
-
 class CycleError(ValueError):
     """Cycle words that describe no sensible hole; the message is for the user."""
 
 
 def _pecks(r: float, bottom: float, q: float) -> list[float]:
-    if (r - bottom) / q > MAX_PECKS:
-        raise CycleError(f"Q{q:g} would drill {r - bottom:g} mm in more than {MAX_PECKS} pecks")
+    if (r - bottom) / q > MAX_CYCLE_PECKS:
+        raise CycleError(f"Q{q:g} would drill {r - bottom:g} mm in more than {MAX_CYCLE_PECKS} pecks")
     depths = []
     depth = r - q
     while depth > bottom:

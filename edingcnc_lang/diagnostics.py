@@ -8,7 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .codes import Severity, lookup
-from .errors import EXIT_SYNTAX, EcncError, Location, printable
+from .errors import EXIT_SYNTAX, EcncError, Location, printable, shortened
 
 
 @dataclass(frozen=True)
@@ -33,14 +33,32 @@ class Diagnostic:
     def location(self) -> Location:
         return Location(self.path, self.line, self.col)
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "message", shortened(self.message))  # a quoted 65,000-letter name, cut
+
     def format(self, with_source: bool = True) -> str:
-        """``PATH:LINE:COL: error: message`` and, if known, the line with a caret."""
+        """``PATH:LINE:COL: error: message`` and, if known, the line with a caret (a long line
+        only around the caret, so one finding prints a few hundred characters, not 65,000)."""
         text = printable(f"{self.location}: {self.severity.value}: {self.message}")
         if with_source and self.source:
-            caret_col = max(self.col, 1)
-            prefix = "".join("\t" if ch == "\t" else " " for ch in printable(self.source[:caret_col - 1]))
-            text += f"\n    {printable(self.source)}\n    {prefix}^"
+            source, caret_col = _excerpt(self.source, max(self.col, 1))
+            prefix = "".join("\t" if ch == "\t" else " " for ch in printable(source[:caret_col - 1]))
+            text += f"\n    {printable(source)}\n    {prefix}^"
         return text
+
+
+EXCERPT = 160  # characters of a source line shown under a finding, around its column
+
+
+def _excerpt(line: str, col: int) -> tuple[str, int]:
+    """The part of ``line`` shown, and the caret's column in it: the line itself when short, else
+    EXCERPT characters around ``col`` with "…" where it was cut."""
+    if len(line) <= EXCERPT:
+        return line, col
+    start = max(0, min(col - 1 - EXCERPT // 2, len(line) - EXCERPT))
+    end = start + EXCERPT
+    head = "…" if start else ""
+    return head + line[start:end] + ("…" if end < len(line) else ""), col - start + len(head)
 
 
 class SyntaxErrors(EcncError):

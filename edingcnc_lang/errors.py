@@ -30,6 +30,21 @@ def printable(text: str) -> str:
     return _UNPRINTABLE.sub(lambda m: f"\\x{ord(m[0]):02x}" if ord(m[0]) < 0x100 else f"\\u{ord(m[0]):04x}", text)
 
 
+# A message quotes what the user wrote (a name, a number); past these lengths the quote is cut in
+# the middle, so a 65,000-letter name or a 309-digit number does not fill the terminal.
+_LONG_WORD = re.compile(r"[^\s'\",:;()]{121,}")
+_LONG_NUMBER = re.compile(r"(?<![\w.])-?\d{18,}(?:\.\d+)?(?![\w.])")
+
+
+def shortened(text: str) -> str:
+    """``text`` with every number of 18 digits or more written as ``1.23457e+308`` and every word
+    longer than 120 characters cut to its ends and its length (``abc…xyz (65,000 characters)``)."""
+    if len(text) < 18:
+        return text
+    text = _LONG_NUMBER.sub(lambda m: f"{float(m[0]):.6g}", text)
+    return _LONG_WORD.sub(lambda m: f"{m[0][:60]}…{m[0][-20:]} ({len(m[0]):,} characters)", text)
+
+
 @dataclass(frozen=True)
 class Location:
     """Where something happened; line and col are 1-based, 0 means unknown."""
@@ -55,6 +70,7 @@ class EcncError(Exception):
 
     def __init__(self, message: str, location: Location | None = None,
                  notes: tuple[str, ...] = ()) -> None:
+        message = shortened(message)
         super().__init__(message)
         self.message = message
         self.location = location

@@ -59,13 +59,20 @@ def check_radius(start: tuple[float, float], center: tuple[float, float],
 
 
 def sweep(start: tuple[float, float], center: tuple[float, float], end: tuple[float, float],
-          clockwise: bool, full_circle_epsilon: float) -> tuple[float, int]:
-    """Swept angle in radians (always > 0) and whether the arc is a full circle (1) or not (0)."""
+          clockwise: bool, full_circle_epsilon: float, r_form: bool = False,
+          tolerance: float = RADIUS_TOLERANCE_MM) -> tuple[float, int]:
+    """Swept angle in radians (always > 0) and whether the arc is a full circle (1) or not (0).
+
+    Only an I/J arc whose ends meet (within ``tolerance``, the program's precision) is a full
+    circle, when it sweeps less than ``full_circle_epsilon``; an R arc (its ends always differ) and
+    an arc whose ends differ sweep what they sweep, however little (``G2 X10 R10000000``).
+    """
     a0 = math.atan2(start[1] - center[1], start[0] - center[0])
     a1 = math.atan2(end[1] - center[1], end[0] - center[0])
     delta = (a0 - a1) if clockwise else (a1 - a0)
     delta %= 2 * math.pi
-    if delta < max(full_circle_epsilon, 1e-9):
+    ends_meet = math.dist(start, end) <= tolerance
+    if delta == 0.0 or (not r_form and ends_meet and delta < full_circle_epsilon):
         return 2 * math.pi, 1
     return delta, 0
 

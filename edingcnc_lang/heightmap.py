@@ -16,8 +16,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .canon import Pose
-from .errors import EcncError, Location
-from .limits import MAX_ZHC_POINTS
+from .errors import EcncError, Location, shortened
+from .limits import MAX_HEIGHT_MAP_VALUE, MAX_ZHC_POINTS
+from .source import plain_float
 
 TABLE_HEADER = "; ecnc ZHC height table"
 _TABLE_KEYS = ("nx", "ny", "x0", "y0", "dx", "dy")
@@ -169,7 +170,7 @@ class ZhcTable:
         for number, parts in rows[:len(_TABLE_KEYS)]:
             if len(parts) != 2 or parts[0] not in _TABLE_KEYS:
                 raise HeightMapError(f"expected one of {', '.join(_TABLE_KEYS)} and a value", Location(shown, number))
-            header[parts[0]] = _number(parts[1], shown, number)
+            header[parts[0]] = _number(parts[1], shown, number, count=parts[0] in ("nx", "ny"))
         missing = [key for key in _TABLE_KEYS if key not in header]
         if missing:
             raise HeightMapError(f"the table header lacks {', '.join(missing)}", Location(shown))
@@ -188,13 +189,18 @@ class ZhcTable:
         return table
 
 
-def _number(text: str, path: str, line: int) -> float:
+def _number(text: str, path: str, line: int, nan: bool = True, count: bool = False) -> float:
+    """A value of a height file; ``nan`` (a ZHC node not probed) only where ``nan`` allows it; a
+    ``count`` (nx, ny) is left to the grid's own check."""
     try:
-        value = float(text)
+        value = plain_float(text, special=True)
     except ValueError:
-        raise HeightMapError(f"{text!r} is not a number", Location(path, line)) from None
-    if math.isinf(value):
+        raise HeightMapError(f"{shortened(repr(text))} is not a number", Location(path, line)) from None
+    if math.isinf(value) or (math.isnan(value) and not nan):
         raise HeightMapError(f"{text!r} is not a finite number", Location(path, line))
+    if abs(value) > MAX_HEIGHT_MAP_VALUE and not count:
+        raise HeightMapError(f"{shortened(text)} is beyond {MAX_HEIGHT_MAP_VALUE:g} mm (the limit of a height file)",
+                             Location(path, line))
     return value
 
 
@@ -214,7 +220,7 @@ def read_surface(path: str | os.PathLike[str]) -> HeightMap:
                     raise HeightMapError(f"expected x,y,z, got {len(cells)} values", Location(shown, number))
                 if number == 1 and not _is_number(cells[0]):
                     continue  # a header row such as x,y,z
-                x, y, z = (_number(c, shown, number) for c in cells)
+                x, y, z = (_number(c, shown, number, nan=False) for c in cells)
                 points[(x, y)] = z
     except OSError as err:
         raise HeightMapError(f"cannot read the probe surface: {err.strerror}", Location(shown)) from None
@@ -230,7 +236,7 @@ def read_surface(path: str | os.PathLike[str]) -> HeightMap:
 
 def _is_number(text: str) -> bool:
     try:
-        float(text)
+        plain_float(text, special=True)
     except ValueError:
         return False
     return True

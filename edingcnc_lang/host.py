@@ -7,11 +7,12 @@ target).  Nothing here is global: each run gets its own Host.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import datetime
 
 from .canon import Pose
+from .source import plain_float, plain_int
 
 
 
@@ -43,11 +44,11 @@ class DialogAnswer:
             name, eq, value = item.partition("=")
             if not eq or not name.strip().startswith("#"):
                 raise ValueError(f"answer {text!r}: field {item!r} is not #N=V")
-            try:
-                values[int(name.strip()[1:])] = float(value)
+            try:  # digits 0-9 only: float() would also take '1_0' and '１'
+                values[plain_int(name.strip()[1:])] = plain_float(value, special=True)
             except ValueError:
                 raise ValueError(f"answer {text!r}: field {item!r} is not #N=V") from None
-            if not math.isfinite(values[int(name.strip()[1:])]):
+            if not math.isfinite(values[plain_int(name.strip()[1:])]):
                 raise ValueError(f"answer {text!r}: field {item!r} is not a finite number")
         return cls(head == "ok", values)
 
@@ -57,6 +58,42 @@ InputCallback = Callable[[int], float]
 ProbeCallback = Callable[[Pose, Pose], "Pose | None"]
 MessageCallback = Callable[[str, str, str, int], None]
 ModbusCallback = Callable[[int, int, int, int], Sequence[float]]
+
+
+def checked_answer(answer: object) -> DialogAnswer | None:
+    """A dialog callback's answer, or ValueError saying what it returned instead."""
+    if answer is None or isinstance(answer, DialogAnswer):
+        return answer
+    raise ValueError(f"the host's dialog callback returned {_shown(answer)}, not a DialogAnswer or None")
+
+
+def checked_level(level: object) -> float:
+    """An input callback's level as 0.0/1.0 (a number or a bool), or ValueError."""
+    if isinstance(level, (bool, int, float)) and math.isfinite(level):
+        return float(level)
+    raise ValueError(f"the host's input callback returned {_shown(level)}, not a number (0 low, 1 high)")
+
+
+def checked_trip(trip: object, start: Pose, goal: Pose) -> Pose | None:
+    """A probe callback's trip point: None, or six finite numbers on the way from ``start`` to
+    ``goal`` that leave the rotary axes where they are (G38.2 never turns them); else ValueError."""
+    if trip is None:
+        return None
+    try:
+        pose = tuple(float(v) for v in trip) if isinstance(trip, Iterable) else ()
+    except (TypeError, ValueError):
+        pose = ()
+    if len(pose) != 6 or not all(math.isfinite(v) for v in pose):
+        raise ValueError(f"the host's probe callback returned {_shown(trip)}, not None or 6 finite numbers "
+                         "(x y z a b c, machine coordinates)")
+    if any(abs(pose[i] - start[i]) > 1e-9 for i in range(3, 6)):
+        raise ValueError("the host's probe callback moved a rotary axis, which G38.2 never moves")
+    return pose  # type: ignore[return-value]
+
+
+def _shown(value: object) -> str:
+    text = repr(value)
+    return f"{type(value).__name__} {text[:60]}{'...' if len(text) > 60 else ''}"
 
 
 @dataclass

@@ -9,7 +9,9 @@ asked for, which are reported at their ini line when they do not parse.  What th
 """
 from __future__ import annotations
 
+import codecs
 import contextlib
+import errno
 import glob
 import math
 import os
@@ -24,10 +26,10 @@ from edingcnc_lang.errors import ConfigError, Location
 from edingcnc_lang.limits import MAX_INI_BYTES
 
 _BOM = b"\xef\xbb\xbf"
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-_INTEGER = re.compile(r"[+-]?\d+")
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")  # ASCII digits: not '１'
+_INTEGER = re.compile(r"[+-]?[0-9]+")
 _SECTION = re.compile(r"\[([^\]]*)\]")
-VARIABLE_KEY = re.compile(r"#(\d+)")  # a [VARIABLES] key: the parameter number
+VARIABLE_KEY = re.compile(r"#([0-9]+)")  # a [VARIABLES] key: the parameter number
 
 
 @dataclass(frozen=True)
@@ -106,8 +108,32 @@ def _read_bytes(path: Path) -> bytes:
     return raw
 
 
-def _decode(raw: bytes) -> str:
-    """UTF-8 (BOM stripped), else Latin-1, which decodes any byte string."""
+def _utf16(raw: bytes) -> tuple[str, bytes] | None:
+    """The codec and BOM of a UTF-16 file (with its BOM, or without one: ASCII text with every
+    other byte NUL, as Windows editors save "Unicode"), or None for an 8-bit file."""
+    if raw.startswith(codecs.BOM_UTF16_LE):
+        return "utf-16-le", codecs.BOM_UTF16_LE
+    if raw.startswith(codecs.BOM_UTF16_BE):
+        return "utf-16-be", codecs.BOM_UTF16_BE
+    if len(raw) >= 2 and (raw[0] == 0) != (raw[1] == 0):
+        return ("utf-16-be" if raw[0] == 0 else "utf-16-le"), b""
+    return None
+
+
+def _decode_utf16(raw: bytes, codec: str, bom: bytes, path: Path) -> str:
+    try:
+        return raw[len(bom):].decode(codec)
+    except UnicodeDecodeError as exc:
+        raise ConfigError(f"machine configuration is not valid UTF-16 (byte {exc.start + len(bom)}): save it as "
+                          "UTF-8 or ANSI", Location(str(path))) from None
+
+
+def _decode(raw: bytes, path: Path) -> str:
+    """UTF-16 when the file is (the controller's editor can save it so), else UTF-8 (BOM stripped),
+    else Latin-1, which decodes any byte string."""
+    wide = _utf16(raw)
+    if wide is not None:
+        return _decode_utf16(raw, *wide, path)
     raw = raw.removeprefix(_BOM)
     try:
         return raw.decode("utf-8")
@@ -180,7 +206,7 @@ class IniFile:
 
 def read_ini(path: str | os.PathLike[str]) -> IniFile:
     """Read an ini file; a missing or unreadable file is a ConfigError."""
-    text = _decode(_read_bytes(Path(path)))
+    text = _decode(_read_bytes(Path(path)), Path(path))
     lines = _split_lines(text)
     sections: dict[str, dict[str, IniValue]] = {}
     for number, (section, entry) in enumerate(_classify(lines), start=1):
@@ -265,9 +291,32 @@ def _write_atomic(path: Path, data: bytes, info: os.stat_result) -> bool:
         raise
 
 
+def _reserve(fd: int, offset: int, length: int) -> None:
+    """Give the file ``length`` more bytes of disk from ``offset`` (its end), or raise OSError (ENOSPC)."""
+    try:
+        os.posix_fallocate(fd, offset, length)
+        return
+    except (AttributeError, OSError) as exc:  # no posix_fallocate (macOS, Windows), or not on this file system
+        if isinstance(exc, OSError) and exc.errno not in (errno.EOPNOTSUPP, errno.EINVAL, errno.ENOSYS):
+            raise
+    os.lseek(fd, offset, os.SEEK_SET)
+    os.write(fd, b"\0" * length)  # at most MAX_INI_BYTES
+    os.fsync(fd)
+    os.lseek(fd, 0, os.SEEK_SET)
+
+
 def _write_in_place(path: Path, data: bytes) -> None:
-    """Rewrite the file itself: keeps its hard links and owner, but a kill mid-write can cut it short."""
+    """Rewrite the file itself: keeps its hard links and owner.  The room the new text needs is
+    taken first, so a full disk refuses the write with the old file untouched instead of cutting
+    it mid-line; only a kill mid-write can cut it short (see _signals_held)."""
     with open(path, "r+b") as handle:
+        old = os.fstat(handle.fileno()).st_size
+        if len(data) > old:
+            try:
+                _reserve(handle.fileno(), old, len(data) - old)
+            except OSError:
+                os.ftruncate(handle.fileno(), old)
+                raise
         handle.write(data)
         handle.truncate()
         handle.flush()
@@ -335,8 +384,9 @@ def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -
     Under a lock, the file is read as it is now and only ``values`` change in it, so concurrent
     runs each keep their own changes.  A read-only file is refused; the new file replaces the old
     one atomically unless that would lose a hard link or the owner, then it is rewritten in place.
-    The file is handled as Latin-1, which maps each byte to one character and back, so text in
-    any encoding survives byte for byte (the ini syntax itself is ASCII).
+    An 8-bit file is handled as Latin-1, which maps each byte to one character and back, so text in
+    any such encoding survives byte for byte (the ini syntax itself is ASCII); a UTF-16 file is
+    written back as UTF-16, with its BOM if it had one.
     """
     if not values:
         return
@@ -350,8 +400,12 @@ def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -
                                   Location(str(path)))
             _remove_stale_temporaries(target)
             raw = _read_bytes(target)
-            bom = _BOM if raw.startswith(_BOM) else b""
-            data = bom + _update_variables(raw[len(bom):].decode("latin-1"), values).encode("latin-1")
+            wide = _utf16(raw)
+            if wide is not None:  # written back in its own encoding, BOM and all
+                data = wide[1] + _update_variables(_decode_utf16(raw, *wide, target), values).encode(wide[0])
+            else:
+                bom = _BOM if raw.startswith(_BOM) else b""
+                data = bom + _update_variables(raw[len(bom):].decode("latin-1"), values).encode("latin-1")
             if info.st_nlink > 1 or not _write_atomic(target, data, info):
                 _write_in_place(target, data)
     except OSError as exc:

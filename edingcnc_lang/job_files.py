@@ -9,7 +9,10 @@ from __future__ import annotations
 import os
 import stat
 from pathlib import Path, PureWindowsPath
+from collections.abc import Collection
 from typing import Literal, TextIO
+
+from .errors import printable
 
 OpenMode = Literal["append", "write", "read"]
 
@@ -27,14 +30,16 @@ def job_file(folder: Path, raw: str) -> Path:
     name = PureWindowsPath(raw).name
     if name in ("", ".", ".."):
         raise ValueError(f"{raw!r} names no file")
-    if any(ord(c) < 32 for c in name):
-        raise ValueError(f"{raw!r}: a file name cannot hold control characters")
+    if printable(name) != name:  # NUL, escapes, and the bidi overrides that show "txt.exe" as "exe.txt"
+        raise ValueError(f"{raw!r}: a file name cannot hold control characters or direction overrides")
     return folder / name
 
 
-def open_job_file(path: Path, mode: OpenMode) -> TextIO:
+def open_job_file(path: Path, mode: OpenMode, own: Collection[tuple[int, int]] = ()) -> TextIO:
     """Open ``path`` (``write`` truncates), refusing what would reach another file: a symbolic link,
-    a hard link, a device or a FIFO.  Raises OSError with a reason fit for the user."""
+    a hard link, a device or a FIFO, and for writing one of ``own``, the files the run itself reads
+    or writes (job, macro files, ini, outputs) as (device, inode).  Raises OSError with a reason
+    fit for the user."""
     if not hasattr(os, "O_NOFOLLOW") and path.is_symlink():  # Windows: no O_NOFOLLOW
         raise OSError(0, f"it is a symbolic link; {_ELSEWHERE}")
     try:
@@ -47,6 +52,10 @@ def open_job_file(path: Path, mode: OpenMode) -> TextIO:
     if not stat.S_ISREG(info.st_mode) or info.st_nlink > 1:
         os.close(fd)
         raise OSError(0, f"it is not a plain file of its own (a hard link, a device or a pipe); {_ELSEWHERE}")
+    if mode != "read" and (info.st_dev, info.st_ino) in own:
+        os.close(fd)
+        raise OSError(0, "it is a file this run reads or writes (the job, a macro file, the ini or an output); "
+                      "a job may not overwrite it")
     if mode == "write":
         os.ftruncate(fd, 0)
     if mode == "read":

@@ -34,10 +34,12 @@ MAX_NUMBER_DIGITS = 400
 # What counts towards MAX_LINE_OPERATORS: two-character operators once, word operators wherever
 # they stand (also inside names: the count only has to be an upper bound).  Strings and
 # comments do not count.
-_OPERATOR = re.compile(r"==|<>|!=|<=|>=|\*\*|[#+\-*/<>=!]|[A-Za-z]{2,}[ \t]*\[|and|or|xor|mod|eq|ne|gt|ge|lt|le",
+# A function call is tried only where a run of letters starts, so a long name is scanned once, not
+# once for every letter in it (which took minutes for a 65,000-letter line).
+_OPERATOR = re.compile(r"==|<>|!=|<=|>=|\*\*|[#+\-*/<>=!]|(?<![A-Za-z])[A-Za-z]{2,}[ \t]*\[|and|or|xor|mod|eq|ne|gt|ge|lt|le",
                        re.IGNORECASE)
 _BRACKET = re.compile(r"[\[\]]")
-_DIGITS = re.compile(r"\d+")
+_DIGITS = re.compile(r"[0-9]+")
 _NOT_CODE = re.compile(r'"[^"\n]*"|\([^)\n]*\)|;.*')
 
 # Statements, loop turns and canned-cycle holes and pecks one run may execute unless told
@@ -61,6 +63,41 @@ MAX_LOG_BYTES = 64 * 1024 * 1024
 # each needs a few hundred bytes while the move is checked, so this bounds the memory; at the
 # usual 200 Hz it is a move of 83 minutes.
 MAX_MOVE_SAMPLES = 1_000_000
+
+# Passes of one G76 thread, cut passes and spring passes (H) together: a real thread takes a few
+# dozen.  The passes are counted from the words before any is computed, so H1000000000 is an
+# error at once, not gigabytes.
+MAX_THREAD_PASSES = 10_000
+
+# Pecks of one G73/G83 hole (depth / Q), counted before the pecks are listed: a deep hole takes a
+# few hundred.
+MAX_CYCLE_PECKS = 100_000
+
+# The range of an axis's maxVelocity (mm/s, deg/s) and maxAcceleration (mm/s^2) in a cnc.ini:
+# the planner squares them and divides by them, so at 1e-200 mm/s a move took 0 s, at 1e-320
+# mm/s^2 NaN s, and at 1e308 both overflowed.  A micrometre per second is slower than any real
+# axis, a thousand kilometres per second faster.
+MIN_AXIS_RATE = 1e-6
+MAX_AXIS_RATE = 1e9
+
+# The largest coordinate or height (mm) in a height table (ZHCL, ZHCADDPOINT) or a probe surface:
+# a thousand kilometres.  Beyond it a table's range and mean overflowed (ZHCcheck printed "range
+# inf") and the bilinear interpolation gave inf.
+MAX_HEIGHT_MAP_VALUE = 1e9
+
+# Sample poses of ``ecnc kins check``/``compare`` (--samples): each costs some kilobytes of poses,
+# joints and Jacobians while the checks run; the default is 2,000, 1e9 asked for tens of GB.
+MAX_CHECK_SAMPLES = 200_000
+
+# Grid points per side of ``ecnc kins plot`` (--resolution): three slices of N x N poses; the
+# default is 60, 1e6 asked for 3e12 poses.
+MAX_ENVELOPE_RESOLUTION = 1_000
+
+# The language server: characters of a document it analyses (a 50 MB document took 2.7 GB and
+# 32 s to its first hover; a larger one gets one diagnostic saying so, ecnc lint still reads it),
+# and the tabSize it indents with (2e9 asked for gigabytes of spaces).
+MAX_LSP_DOCUMENT_CHARS = 10_000_000
+MAX_TAB_SIZE = 16
 
 Problem = tuple[str, str, int]  # code, message, column
 

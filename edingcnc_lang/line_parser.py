@@ -7,6 +7,7 @@ Lark trees never leave this module and ``tree_builder.py``, which turns them int
 """
 from __future__ import annotations
 
+import os
 import re
 from functools import lru_cache
 from pathlib import Path
@@ -33,10 +34,17 @@ _EMPTY_LINE = re.compile(r"^\s*(?:\((?!\s*msg\b)[^)\n]*\)\s*)*(?:;.*)?$", re.IGN
 @lru_cache(maxsize=1)
 def _lark() -> Lark:
     """The line parser, built once per process from the packaged grammar files."""
+    import hashlib
+    import tempfile
+
     from lark import Lark
 
+    # Lark's own cache file is named by macro.lark alone and trusts the imported gcode.lark of
+    # whichever checkout wrote it first; named by both grammars, each version gets its own.
+    digest = hashlib.sha256(b"".join(path.read_bytes() for path in sorted(GRAMMAR.parent.glob("*.lark"))))
+    cache = os.path.join(tempfile.gettempdir(), f".ecnc_lark_{digest.hexdigest()[:32]}.tmp")
     return Lark.open(str(GRAMMAR), parser="lalr", lexer="contextual",
-                     propagate_positions=True, maybe_placeholders=False, cache=True)
+                     propagate_positions=True, maybe_placeholders=False, cache=cache)
 
 
 

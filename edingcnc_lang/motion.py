@@ -392,7 +392,7 @@ class MotionStage:
         from .kinematics.sampling import TooManySamples
 
         dt = self.config.interpolation_time
-        geo = geometry_of(move, self.config.full_circle_theta_epsilon)
+        geo = geometry_of(move)
         limits = self._limits_for(move)
         where = _located(move)
         start, start_joints = np.array(move.start, dtype=float), np.array(self.joints)
@@ -444,7 +444,8 @@ class MotionStage:
             center = (geo.center[first], geo.center[second])
             s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
             clockwise = move.arc.turn < 0
-            angle, _ = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
+            # the interpreter's decision: a full circle, or the arc between its ends (never a circle)
+            angle = 2 * math.pi if move.arc.full_turns else sweep(s, center, e, clockwise, -1.0, r_form=True)[0]
             start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
             radius = math.hypot(s[0] - center[0], s[1] - center[1])
             for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):

@@ -11,9 +11,9 @@ import io
 import math
 import os
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import IO, TYPE_CHECKING, Any
 
 from . import speedups
 from .canon import Batch, Event, Move, Pose
@@ -42,15 +42,96 @@ SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "j
 STDOUT = "-"  # as an output path: standard output
 
 
-def _open_for_writing(path: Path) -> io.TextIOWrapper:
-    """The file to write; ``-`` is standard output (closing the returned stream leaves it open)."""
+class _NotOpen(io.StringIO):
+    """An output's stream before the run opens it (``open()``): closing it does nothing."""
+
+    def write(self, text: str) -> int:
+        raise ValueError("output written before it was opened")
+
+    def close(self) -> None:
+        pass
+
+
+_NOT_OPEN = _NotOpen()
+
+
+def _identity(path: Path) -> tuple[int, int] | None:
+    """The file ``path`` names (device and inode: a hard link or another spelling is the same file), or None."""
+    try:
+        info = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return (info.st_dev, info.st_ino)
+
+
+def check_outputs(outputs: Mapping[str, Path | None], inputs: Iterable[Path | None]) -> None:
+    """Refuse, before anything is written, an output that is one of the run's inputs (the job, the
+    ini, a macro file: writing would truncate it before it is read) or another output.
+
+    ``outputs`` maps what the user calls each (``--trace``) to its path; ``-`` is standard output.
+    Raises UsageFailure (exit 2).
+    """
+    read = {ident: path for path in inputs if path is not None and (ident := _identity(path)) is not None}
+    written: dict[tuple[int, int], str] = {}
+    for name, path in outputs.items():
+        if path is None or str(path) == STDOUT:
+            continue
+        ident = _identity(path)
+        if ident is None:  # a new file: it can only clash with another new output of the same name
+            ident = (-1, hash(os.path.abspath(path)))
+        if ident in read:
+            raise UsageFailure(f"{name} {path}: that file is also an input of this run ({read[ident]}); "
+                               "writing it would destroy it, so name another file")
+        if ident in written:
+            raise UsageFailure(f"{written[ident]} and {name} name the same file {path}: it cannot be written twice")
+        written[ident] = name
+
+
+def output_identities(paths: Iterable[Path | None]) -> frozenset[tuple[int, int]]:
+    """The files of ``paths`` that exist, as (device, inode): what a job's own files may never be."""
+    return frozenset(ident for path in paths if path is not None and str(path) != STDOUT
+                     and (ident := _identity(path)) is not None)
+
+
+def _open_for_writing(path: Path, binary: bool = False) -> IO:
+    """The file to write, locked against another run writing it at the same time; ``-`` is
+    standard output (closing the returned stream leaves it open).
+
+    The file is truncated only once it is locked, so a second run refused here leaves the first
+    one's rows alone.  Without fcntl (Windows) there is no lock.
+    """
     try:
         if str(path) == STDOUT:
             sys.stdout.flush()  # anything printed before comes first
             return open(sys.stdout.fileno(), "w", encoding="utf-8", newline="", buffering=1 << 16, closefd=False)
-        return open(path, "w", encoding="utf-8", newline="", buffering=1 << 16)
+        fd = os.open(path, os.O_WRONLY | os.O_CREAT | getattr(os, "O_CLOEXEC", 0), 0o666)
     except OSError as err:
         raise EcncError(f"cannot write {path}: {err.strerror}") from None
+    try:
+        _lock(fd, path)
+        if os.fstat(fd).st_size:
+            os.ftruncate(fd, 0)
+    except BaseException:
+        os.close(fd)
+        raise
+    if binary:
+        return open(fd, "wb")
+    return open(fd, "w", encoding="utf-8", newline="", buffering=1 << 16)
+
+
+def _lock(fd: int, path: Path) -> None:
+    """An exclusive lock on an output for as long as it is open; EcncError if another run holds one."""
+    try:
+        import fcntl
+    except ImportError:
+        return
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        raise EcncError(f"cannot write {path}: another run is writing it (two runs cannot share an output file)") \
+            from None
+    except OSError:  # a file system without locks (some network shares): write unlocked
+        pass
 
 
 def csv_field(text: str) -> str:
@@ -65,7 +146,11 @@ class TraceWriter:
     the line belongs to, and ``t``, the planned time (seconds from the job start) at which the move ends."""
 
     def __init__(self, path: Path) -> None:
-        self._file = _open_for_writing(path)
+        self.path = path
+        self._file: IO = _NOT_OPEN
+
+    def open(self) -> None:
+        self._file = _open_for_writing(self.path)
         self._file.write(TRACE_HEADER)
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
@@ -112,8 +197,11 @@ class SamplesWriter:
         self._npz = path.suffix.lower() == ".npz"
         self._chunks: list[np.ndarray] = []
         self._last_time = -math.inf
-        self._file = None if self._npz else _open_for_writing(path)
-        if self._file is not None:
+        self._file: IO = _NOT_OPEN
+
+    def open(self) -> None:
+        self._file = _open_for_writing(self.path, binary=self._npz)
+        if not self._npz:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
@@ -128,7 +216,7 @@ class SamplesWriter:
         if not len(rows):
             return
         self._last_time = float(rows[-1, 0])
-        if self._file is None:
+        if self._npz:
             self._chunks.append(rows)
         else:
             self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
@@ -140,15 +228,13 @@ class SamplesWriter:
         pass
 
     def close(self) -> None:
-        if self._file is not None:
-            self._file.close()
-            return
-        import numpy as np
+        if self._npz and self._file is not _NOT_OPEN:
+            import numpy as np
 
-        data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
-        with open(self.path, "wb") as handle:
+            data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
             columns: dict[str, Any] = {name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)}
-            np.savez(handle, **columns)
+            np.savez(self._file, **columns)
+        self._file.close()
 
 
 def _spindle_column(move: Move, xs: np.ndarray) -> np.ndarray:
@@ -177,10 +263,14 @@ class EventsWriter:
     """
 
     def __init__(self, path: Path) -> None:
-        import json  # only when writing events
+        from .serialize import json_text  # only when writing events
 
-        self._dumps = json.dumps
-        self._file = _open_for_writing(path)
+        self._dumps = json_text
+        self.path = path
+        self._file: IO = _NOT_OPEN
+
+    def open(self) -> None:
+        self._file = _open_for_writing(self.path)
 
     def _write(self, record: dict[str, object]) -> None:
         self._file.write(self._dumps(record, default=str) + "\n")

@@ -27,7 +27,8 @@ from .kinematics.base import Kinematics
 from .kinematics.builtin import TrivialKinematics
 from .kinematics.loader import load_kinematics
 from .motion import MotionStage, PlannerStage
-from .outputs import CallbackSink, EventsWriter, SamplesWriter, TraceWriter, ensure_parent
+from .outputs import (CallbackSink, EventsWriter, SamplesWriter, TraceWriter, check_outputs, ensure_parent,
+                      output_identities)
 from .diagnostics import Diagnostic
 from .limits import DEFAULT_MAX_STEPS
 from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
@@ -142,13 +143,15 @@ class Run:
             self._warn(warning)
         self.kinematics = self._load_kinematics()
         overrides = Overrides(options.feed_override, options.rapid_override)
-        sinks: list[TimedSink] = []
+        self._jobs: list[Path] = []  # the job files this run reads, which no output may be
+        self._writers: list[TraceWriter | SamplesWriter | EventsWriter] = []
         if options.trace:
-            sinks.append(TraceWriter(ensure_parent(options.trace)))
+            self._writers.append(TraceWriter(ensure_parent(options.trace)))
         if options.samples:
-            sinks.append(SamplesWriter(ensure_parent(options.samples)))
+            self._writers.append(SamplesWriter(ensure_parent(options.samples)))
         if options.events:
-            sinks.append(EventsWriter(ensure_parent(options.events)))
+            self._writers.append(EventsWriter(ensure_parent(options.events)))
+        sinks: list[TimedSink] = list(self._writers)
         if options.on_move or options.on_event or options.on_timed_move:
             sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
         self.planner: Planner | None = None
@@ -214,9 +217,21 @@ class Run:
         """The macro files, loaded, in lookup order."""
         return [(path, self.load_macro(path)) for path in self.macro_files()]
 
+    def open_outputs(self) -> None:
+        """Open the trace, samples and events files, after refusing one that is an input of the run
+        (the job, the ini, a macro file) or another output; the job may then write none of them."""
+        opts = self.options
+        inputs = [*self._jobs, opts.ini, *self.macro_files()]
+        check_outputs({"--trace": opts.trace, "--samples": opts.samples, "--events": opts.events}, inputs)
+        for writer in self._writers:
+            writer.open()
+        self.interpreter.own_files = output_identities([*inputs, *self._outputs])
+
     def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
-        """What happens before a job's first line (and before an MDI session's): the macro files'
-        subs are defined and their top-level lines run, then the ini's initialString."""
+        """What happens before a job's first line (and before an MDI session's): the outputs are
+        opened, the macro files' subs are defined and their top-level lines run, then the ini's
+        initialString."""
+        self.open_outputs()
         interp = self.interpreter
         for _path, program in macros:
             interp.define_subs(program.subs.values())
@@ -235,6 +250,7 @@ class Run:
             if "T" in joined or "t" in joined:
                 tools.update(tools_used(chunk))
 
+        self._jobs.append(job)
         try:
             checked = check_file(job, name, on_chunk=find_tools)
         except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move

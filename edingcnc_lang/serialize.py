@@ -2,11 +2,31 @@
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Callable, Iterable
 from dataclasses import fields, is_dataclass
 from typing import Any, TextIO
 
 from . import nodes as n
+
+
+def json_text(data: Any, **options: Any) -> str:
+    """``json.dumps(data, **options)`` that is always valid JSON: a NaN or infinite number (a broken
+    plug-in's or configuration's) becomes ``null``, never the bare ``NaN`` JSON parsers refuse."""
+    try:
+        return json.dumps(data, allow_nan=False, **options)
+    except ValueError:
+        return json.dumps(_finite(data), allow_nan=False, **options)
+
+
+def _finite(data: Any) -> Any:
+    if isinstance(data, float):
+        return data if math.isfinite(data) else None
+    if isinstance(data, dict):
+        return {key: _finite(value) for key, value in data.items()}
+    if isinstance(data, (list, tuple)):
+        return [_finite(item) for item in data]
+    return data
 
 
 def to_data(node: Any, with_spans: bool = True) -> Any:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import codecs
 import os
+import re
 import stat
 from collections.abc import Iterator
 from itertools import chain
@@ -23,6 +24,31 @@ UTF16_BOMS = (codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)
 # Bytes kept of a line longer than the limit: enough for MAX_LINE_LENGTH + 1 characters in any
 # encoding, so the parser still sees it is too long; the rest is skipped, not held in memory.
 LONG_LINE_BYTES = 4 * (MAX_LINE_LENGTH + 1)
+
+
+# A number as the docs allow it everywhere (job words, cnc.ini, --answer, height files, command
+# arguments): ASCII digits, one point, an exponent.  Python's float() and int() also take '١٠',
+# '１', '𝟏' and '1_0', which no controller reads as numbers.
+_PLAIN_FLOAT = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+_PLAIN_INT = re.compile(r"[+-]?[0-9]+")
+_SPECIAL = ("inf", "+inf", "-inf", "infinity", "+infinity", "-infinity", "nan", "+nan", "-nan")
+
+
+def plain_float(text: str, special: bool = False) -> float:
+    """``text`` (blanks around it allowed) as a float if it is a plain decimal number; ``special``
+    also lets ``inf`` and ``nan`` through.  Raises ValueError otherwise."""
+    word = text.strip()
+    if _PLAIN_FLOAT.fullmatch(word) or (special and word.lower() in _SPECIAL):
+        return float(word)
+    raise ValueError(f"{text!r} is not a plain decimal number")
+
+
+def plain_int(text: str) -> int:
+    """``text`` (blanks around it allowed) as an int if it is ASCII digits with an optional sign."""
+    word = text.strip()
+    if _PLAIN_INT.fullmatch(word):
+        return int(word)
+    raise ValueError(f"{text!r} is not a whole number")
 
 
 def decode_line(raw: bytes) -> str:

@@ -18,8 +18,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-MAX_PASSES = 10_000
-
+from .limits import MAX_THREAD_PASSES
 
 class ThreadError(ValueError):
     """G76 words that describe no thread; the message is for the user."""
@@ -102,10 +101,15 @@ def _depths(w: G76Words) -> list[float]:
     while depth < w.k:
         depths.append(depth)
         n += 1
-        if n > MAX_PASSES:
-            raise ThreadError(f"G76 J{w.j:g} K{w.k:g} R{degression:g} needs more than {MAX_PASSES} passes")
+        if n > MAX_THREAD_PASSES:
+            raise ThreadError(f"G76 J{w.j:g} K{w.k:g} R{degression:g} needs more than {MAX_THREAD_PASSES:,} passes "
+                              "(the limit)")
         depth = w.j * n ** (1.0 / degression)
-    return depths + [w.k] * (1 + int(w.h or 0))
+    spring = w.h or 0.0
+    if len(depths) + 1 + spring > MAX_THREAD_PASSES:  # counted before the list is made
+        raise ThreadError(f"G76 H{spring:g}: {len(depths) + 1} cut passes and {spring:g} spring passes are more "
+                          f"than {MAX_THREAD_PASSES:,} passes (the limit)")
+    return depths + [w.k] * (1 + int(spring))
 
 
 def g76(w: G76Words, start_x: float, start_z: float,

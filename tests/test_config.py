@@ -167,9 +167,9 @@ def test_integral_float_is_accepted_as_int(tmp_path: Path) -> None:
     ("[VARIABLES]\n#4002 = 1e999\n", 2, "#4002 in [VARIABLES]: expected a number within the range"),
     ("[JOINT_0]\nmaxVelocity = -1e400\n", 2, "maxVelocity in [JOINT_0]: expected a number within the range"),
     # a limit of 0 or less is a mistake in the file, not "no limit"
-    ("[JOINT_0]\nname = X\nmaxVelocity = 0\n", 3, "maxVelocity = 0 in [JOINT_0] must be greater than 0 (mm/s)"),
-    ("[JOINT_5]\nmaxAcceleration = -5 ; not used\n", 2, "maxAcceleration = -5 in [JOINT_5] must be greater than 0"),
-    ("[KINEMATICS]\nmaxVelocityB = 0.0\n", 2, "maxVelocityB = 0.0 in [KINEMATICS] must be greater than 0"),
+    ("[JOINT_0]\nname = X\nmaxVelocity = 0\n", 3, "maxVelocity = 0 in [JOINT_0] must be 1e-06 to 1e+09 (mm/s)"),
+    ("[JOINT_5]\nmaxAcceleration = -5 ; not used\n", 2, "maxAcceleration = -5 in [JOINT_5] must be 1e-06 to 1e+09"),
+    ("[KINEMATICS]\nmaxVelocityB = 0.0\n", 2, "maxVelocityB = 0.0 in [KINEMATICS] must be 1e-06 to 1e+09"),
     ("[KINEMATICS]\nmaxVelocityX = 25\nmaxAccelerationC = -1\n", 3, "maxAccelerationC = -1 in [KINEMATICS]"),
 ])
 def test_bad_number_is_located(tmp_path: Path, text: str, line: int, fragment: str) -> None:

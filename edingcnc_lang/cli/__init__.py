@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 import sys
+import warnings
 from collections.abc import Sequence
 from typing import Any, NoReturn
 
@@ -72,6 +73,9 @@ def run_command_line(argv: list[str]) -> int:
 
         return shell_complete(ecnc, {}, "ecnc", COMPLETE_VAR, os.environ[COMPLETE_VAR])
     make_streams_usable()
+    # numpy's overflow and invalid-value warnings name a source line of ours, which tells a user
+    # nothing; what such a value does to a result is checked and reported where it matters
+    warnings.filterwarnings("ignore", category=RuntimeWarning, module=r"edingcnc_lang\.|numpy")
     as_json = "--json" in (argv[:argv.index("--")] if "--" in argv else argv)
     try:
         with ecnc.make_context("ecnc", argv) as ctx:
@@ -88,6 +92,9 @@ def run_command_line(argv: list[str]) -> int:
     except (KeyboardInterrupt, click.Abort):  # outside a run (which names its line itself)
         print(file=sys.stderr)
         return report(Interrupted("interrupted (Ctrl-C)"), as_json)
+    except MemoryError:  # this machine's memory ran out before a limit of limits.py was reached
+        return report(EcncError("out of memory: the job needs more than this machine has (the limits are in "
+                                "docs/language.md#limits; --samples FILE.csv streams where .npz does not)"), as_json)
     except BrokenPipeError:  # `ecnc ... | head` stopped reading: end quietly
         quiet_stdout()
         return EXIT_ABORTED
@@ -106,10 +113,10 @@ def report(err: EcncError, as_json: bool, to_stderr: bool = True) -> int:
     if as_json:
         partial = getattr(err, "result", None)
         doc = partial.to_json() if partial is not None else {"error": err.to_json()}
-        import json
+        from ..serialize import json_text
 
         try:
-            print(json.dumps(doc, indent=1))
+            print(json_text(doc, indent=1))
             sys.stdout.flush()
         except OSError:  # stdout is the trouble itself: stderr tells
             pass

@@ -54,8 +54,39 @@ class UsageWriter:
         formatter.write_usage(ctx.command_path, " ".join(pieces), prefix="usage: ")
 
 
+# A token that is a number (or a number followed by a comma): one of a list given as separate words.
+_LIST_NUMBER = re.compile(r"[+-]?(?:(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?|inf|nan),?", re.IGNORECASE)
+
+
+def join_number_lists(args: list[str], options: Iterable[str]) -> list[str]:
+    """``--box 10 100 -50 50 -5 5`` as ``--box '10 100 -50 50 -5 5'``: the numbers that follow one of
+    ``options`` become its one value, as a script may write them; ``--`` ends the search."""
+    names = set(options)
+    joined: list[str] = []
+    i = 0
+    while i < len(args):
+        arg = args[i]
+        joined.append(arg)
+        i += 1
+        if arg == "--":
+            return joined + args[i:]
+        if arg in names and i < len(args):
+            values = [args[i]]
+            i += 1
+            while i < len(args) and _LIST_NUMBER.fullmatch(args[i]):
+                values.append(args[i])
+                i += 1
+            joined.append(" ".join(values))
+    return joined
+
+
 class Command(UsageWriter, click.Command):
-    """A leaf command: negative numbers as arguments, and a stray argument is a usage error."""
+    """A leaf command: negative numbers as arguments, and a stray argument is a usage error.
+
+    ``number_lists``: options whose value may also be written as separate numbers (``--box``).
+    """
+
+    number_lists: tuple[str, ...] = ()
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         kwargs["context_settings"] = {"allow_extra_args": True, **(kwargs.get("context_settings") or {})}
@@ -68,7 +99,7 @@ class Command(UsageWriter, click.Command):
         return parser
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
-        rest = super().parse_args(ctx, args)
+        rest = super().parse_args(ctx, join_number_lists(args, self.number_lists) if self.number_lists else args)
         if rest and not ctx.resilient_parsing:
             raise click.UsageError(f"unrecognized arguments: {' '.join(rest)}", ctx)
         return rest

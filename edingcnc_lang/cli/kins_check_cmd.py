@@ -15,7 +15,8 @@ from ..errors import EXIT_FINDINGS, EXIT_OK
 from .base import Command, usage_error
 from .kins_cmd import guarded, in_child_if_compiled
 from .options import ini_option, json_option
-from .params import KINEMATICS_NAME, OUTPUT_FILE, POSITIVE_INT
+from ..limits import MAX_CHECK_SAMPLES, MAX_ENVELOPE_RESOLUTION
+from .params import FLOAT, INT, KINEMATICS_NAME, OUTPUT_FILE, PlainInt
 
 if TYPE_CHECKING:
     from ..kinematics.workbench import CheckOptions
@@ -26,11 +27,11 @@ PLUGIN_HELP = "PLUGIN is a registered name (see `ecnc kins list`) or the path of
 
 def _workspace_options(func: F) -> F:
     """--ini, --box, --seed, --samples, --tolerance: where and how densely to look."""
-    func = click.option("--tolerance", type=float, metavar="T",
+    func = click.option("--tolerance", type=FLOAT, metavar="T",
                         help="Absolute tolerance (default: 1e-6 of the workspace diagonal).")(func)
-    func = click.option("--samples", type=POSITIVE_INT, default=2000, show_default=True,
-                        help="Random poses, after the centre and the corners.")(func)
-    func = click.option("--seed", type=int, default=0, show_default=True,
+    func = click.option("--samples", type=PlainInt(1, MAX_CHECK_SAMPLES), default=2000, show_default=True,
+                        help=f"Random poses, after the centre and the corners (at most {MAX_CHECK_SAMPLES:,}).")(func)
+    func = click.option("--seed", type=INT, default=0, show_default=True,
                         help="Seed of the sample poses: the same seed gives the same report.")(func)
     func = click.option("--box", metavar="X0,X1,Y0,Y1,Z0,Z1[,A0,A1...]",
                         help="Workspace to prove: 6 to 12 numbers, commas or spaces between them "
@@ -38,15 +39,22 @@ def _workspace_options(func: F) -> F:
     return ini_option("cnc.ini: [KINEMATICS] settings, limits and the folder plug-ins are found in.")(func)
 
 
+class WorkspaceCommand(Command):
+    """``--box`` as one value (commas or spaces) or as separate numbers (``--box 10 100 -50 50 -5 5``)."""
+
+    number_lists = ("--box",)
+
+
 def _options(ini: str | None, box: str | None, seed: int, samples: int, tolerance: float | None,
              **extra: Any) -> CheckOptions:
     from ..kinematics.workbench import CheckOptions
     from ..kinematics.workbench.check import box_values
+    from ..source import plain_float
 
     values = None
     if box is not None:
         try:
-            values = box_values([float(v) for v in re.split(r"[,\s]+", box.strip()) if v])
+            values = box_values([plain_float(v, special=True) for v in re.split(r"[,\s]+", box.strip()) if v])
         except ValueError as err:
             message = str(err) if "--box" in str(err) else f"--box: not a list of numbers: {box!r}"
             raise usage_error(message) from None
@@ -64,12 +72,12 @@ def _workspace_argv(ini: str | None, box: str | None, seed: int, samples: int, t
 
 
 def _print_json(data: object) -> None:
-    import json
+    from ..serialize import json_text
 
-    print(json.dumps(data, indent=2))
+    print(json_text(data, indent=2))
 
 
-@click.command("check", cls=Command, help=f"Prove a plug-in over a workspace: round trip, continuity, "
+@click.command("check", cls=WorkspaceCommand, help=f"Prove a plug-in over a workspace: round trip, continuity, "
                f"singularities, domain, control and state, the compiled ABI and speed.\n\n{PLUGIN_HELP}",
                short_help="Prove a plug-in: round trip, continuity, singularities, domain, state, speed.")
 @click.argument("plugin", metavar="PLUGIN", type=KINEMATICS_NAME)
@@ -84,7 +92,7 @@ def check(plugin: str, no_speed: bool, as_json: bool, **workspace: Any) -> int:
     return EXIT_OK if report.ok else EXIT_FINDINGS
 
 
-@click.command("compare", cls=Command, help=f"Run two plug-ins on the same seeded poses (e.g. a C port and the "
+@click.command("compare", cls=WorkspaceCommand, help=f"Run two plug-ins on the same seeded poses (e.g. a C port and the "
                f"Python it came from): the largest difference per joint and axis, and where.\n\n{PLUGIN_HELP}",
                short_help="Two plug-ins on the same poses: the largest difference per joint, and where.")
 @click.argument("a", metavar="A", type=KINEMATICS_NAME)
@@ -99,13 +107,14 @@ def compare(a: str, b: str, as_json: bool, **workspace: Any) -> int:
     return EXIT_OK if result.ok else EXIT_FINDINGS
 
 
-@click.command("plot", cls=Command, help=f"Draw the reachable workspace and the Jacobian's condition number in "
+@click.command("plot", cls=WorkspaceCommand, help=f"Draw the reachable workspace and the Jacobian's condition number in "
                f"three slices through the centre (needs the plot extra).\n\n{PLUGIN_HELP}",
                short_help="Picture the reachable workspace and its singular regions (PNG, SVG, PDF).")
 @click.argument("plugin", metavar="PLUGIN", type=KINEMATICS_NAME)
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE, required=True,
               help="Picture to write: .png, .svg or .pdf.")
-@click.option("--resolution", type=POSITIVE_INT, default=60, show_default=True, help="Grid points per side.")
+@click.option("--resolution", type=PlainInt(1, MAX_ENVELOPE_RESOLUTION), default=60, show_default=True,
+              help=f"Grid points per side (at most {MAX_ENVELOPE_RESOLUTION:,}).")
 @_workspace_options
 def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     from pathlib import Path

@@ -15,7 +15,7 @@ import click
 from ..errors import EXIT_OK
 from .base import Argument, Command, LazyGroup, usage_error
 from .options import ini_option, json_option
-from .params import EXISTING_FILE, KINEMATICS_NAME, OUTPUT_FILE
+from .params import EXISTING_FILE, FLOAT, KINEMATICS_NAME, OUTPUT_FILE
 
 if TYPE_CHECKING:
     from ..kinematics.base import Kinematics, Pose
@@ -119,7 +119,7 @@ def _ini_plugin(ini: Path) -> tuple[str, int, str]:
 def _conversion(name: str, summary: str, values: str) -> click.Command:
     """``inverse`` or ``forward``: NAME, --ini and 3 to 6 numbers."""
     def decorate(func: click.decorators.FC) -> click.Command:
-        func = click.argument("values", metavar=values, nargs=-1, required=True, type=float, cls=Argument)(func)
+        func = click.argument("values", metavar=values, nargs=-1, required=True, type=FLOAT, cls=Argument)(func)
         func = ini_option("cnc.ini whose [KINEMATICS] section configures the plug-in.")(func)
         func = click.argument("name", metavar="NAME", type=KINEMATICS_NAME)(func)
         return click.command(name, cls=Command, short_help=summary,
@@ -193,6 +193,8 @@ def guarded(kins: Kinematics) -> Kinematics:
 def build_library(source: str, output: str | None, cc: str) -> int:
     """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
     from ..kinematics.build import build_plugin
+    from ..outputs import check_outputs
 
+    check_outputs({"-o": Path(output) if output else None}, [Path(source)])  # the compiler would destroy it
     print(build_plugin(Path(source), Path(output) if output else None, cc))
     return EXIT_OK

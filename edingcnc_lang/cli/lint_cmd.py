@@ -12,7 +12,7 @@ from . import progress
 from .base import Command, usage_error
 from ..gcpause import whole_trees
 from .options import ini_option, macro_options
-from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN
+from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN, PlainInt
 from .streams import STDIN_NAME, stdin_as_file
 from .style import styled
 
@@ -42,7 +42,7 @@ FORMAT_NAMES = ("github", "json", "sarif", "text")
 @click.option("--list-codes", "show_codes", is_flag=True, help="Print every code with its severity and summary.")
 @click.option("--explain", metavar="CODE", type=LINT_CODE, help="Print the long explanation of CODE (as ecnc help CODE).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress line on stderr (shown on a terminal after a second).")
-@click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
+@click.option("-j", "--jobs", metavar="N", type=PlainInt(min=0), default=1,
               help="Check the files on N processes (0: one per CPU); see docs/lint.md.")
 def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini: str | None, fmt: str,
          select: tuple[str, ...], ignore: tuple[str, ...], target: str | None, no_source: bool,

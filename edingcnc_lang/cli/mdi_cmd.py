@@ -114,6 +114,7 @@ def _pose(values: Pose) -> str:
 def ask_dialog(title: str, fields: Sequence[DialogField]) -> DialogAnswer:
     """A dlgmsg at the prompt: each field with its value (Enter keeps it), then OK; Ctrl-C cancels."""
     from ..host import DialogAnswer
+    from ..source import plain_float
 
     print(f"dialog: {title}")
     values: dict[int, float] = {}
@@ -123,7 +124,7 @@ def ask_dialog(title: str, fields: Sequence[DialogField]) -> DialogAnswer:
                 typed = _answer_input(f"  {item.label} (#{item.index}) [{item.value:g}]: ").strip()
                 try:
                     if typed:
-                        values[item.index] = float(typed)
+                        values[item.index] = plain_float(typed)  # digits 0-9: not '１', not nan
                     break
                 except ValueError:
                     print(f"  {typed!r} is not a number")

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 import click
 
 from ..errors import printable
-from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, MODBUS_VALUES, POSITIVE_INT
+from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, MODBUS_VALUES, POSITIVE_INT, PlainFloat
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -53,9 +53,9 @@ def json_option(help: str) -> Callable[[F], F]:  # noqa: A002 - click's name
 def override_options(func: F) -> F:
     """``--feed-override PCT`` and ``--rapid-override PCT``: the operator's knobs, which change the
     planner's timing (passed as ``feed_override`` and ``rapid_override``)."""
-    func = click.option("--rapid-override", metavar="PCT", type=click.FloatRange(0, 100, min_open=True),
+    func = click.option("--rapid-override", metavar="PCT", type=PlainFloat(0, 100, min_open=True),
                         default=100.0, help="Rapid override knob in percent, at most 100 (default 100).")(func)
-    return click.option("--feed-override", metavar="PCT", type=click.FloatRange(0, 1000, min_open=True),
+    return click.option("--feed-override", metavar="PCT", type=PlainFloat(0, 1000, min_open=True),
                         default=100.0,
                         help="Feed override knob in percent (default 100; M48/M49/M50 in the job switch it).")(func)
 

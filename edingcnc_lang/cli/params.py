@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 import click
 from click.shell_completion import CompletionItem
 
-from ..source import is_device
+from ..source import is_device, plain_float, plain_int
 from .streams import STDIN  # "-" as a job or lint path: read standard input (re-exported)
 
 if TYPE_CHECKING:
@@ -144,6 +144,31 @@ class OutputFile(_PathType):
         return f"{value!r} is a folder, not a file" if os.path.isdir(value) else None
 
 
+class PlainFloat(click.FloatRange):
+    """A number written with ASCII digits (``inf`` and ``nan`` are left to the range and the
+    command to refuse); click's float() would also take '１００' and '1_0'."""
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if isinstance(value, str):
+            try:
+                value = plain_float(value, special=True)
+            except ValueError:
+                self.fail(f"{value!r} is not a number (digits 0-9, a point, an exponent)", param, ctx)
+        return super().convert(value, param, ctx)
+
+
+class PlainInt(click.IntRange):
+    """A whole number written with ASCII digits; click's int() would also take '١' and '1_0'."""
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if isinstance(value, str):
+            try:
+                value = plain_int(value)
+            except ValueError:
+                self.fail(f"{value!r} is not a whole number", param, ctx)
+        return super().convert(value, param, ctx)
+
+
 class PositiveInt(click.ParamType):
     """A whole number of at least 1 (``--max-steps``)."""
 
@@ -154,7 +179,7 @@ class PositiveInt(click.ParamType):
             number = value
         else:
             try:
-                number = int(value)
+                number = plain_int(value)
             except ValueError:
                 self.fail(f"{value!r} is not a whole number", param, ctx)
         if number < 1:
@@ -269,6 +294,8 @@ EXISTING_FOLDER = ExistingFolder()
 INI_FILE = ExistingFile(suffix=".ini")
 OUTPUT_FILE = OutputFile()
 POSITIVE_INT = PositiveInt()
+FLOAT = PlainFloat()
+INT = PlainInt()
 LINT_CODES = LintCodes()
 LINT_CODE = LintCode()
 HELP_TOPIC = HelpTopic()

@@ -64,9 +64,9 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
         with progress.Progress(_probe(run, job), show):
             result = run.execute_file(path, name)
     if as_json:
-        import json  # only with --json: a short run starts faster without it
+        from ..serialize import json_text  # only with --json: a short run starts faster without it
 
-        print(json.dumps(result.to_json(), indent=1))
+        print(json_text(result.to_json(), indent=1))
     if progress.wanted(quiet) and result.estimate is not None:  # for people at a terminal; scripts read --json
         print(result.estimate.summary(), file=sys.stderr)
     return EXIT_OK

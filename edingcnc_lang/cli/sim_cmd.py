@@ -23,8 +23,10 @@ class StockBox(click.ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, ...]:
         if isinstance(value, tuple):
             return value
+        from ..source import plain_float  # plain decimals only, as every number the CLI takes
+
         try:
-            numbers = tuple(float(v) for v in str(value).split(","))
+            numbers = tuple(plain_float(v) for v in str(value).split(","))
         except ValueError:
             numbers = ()
         if len(numbers) != 6 or not all(math.isfinite(v) for v in numbers):

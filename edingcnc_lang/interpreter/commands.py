@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Iterable
 
 from .. import nodes as n
@@ -13,7 +14,7 @@ from .state import CommandTable, MachineState, StatementTable
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
 _NOT_CODE = re.compile(r'\([^)]*\)?|"[^"]*"?|;.*')  # comments and message texts
-_T_WORD = re.compile(r"(?<![A-Za-z_#])[Tt][ \t]*\+?(\d+)")
+_T_WORD = re.compile(r"(?<![A-Za-z_#])[Tt][ \t]*\+?([0-9]+)")
 
 
 def tools_used(lines: Iterable[str]) -> list[int]:
@@ -84,7 +85,7 @@ class Commands(MachineState):
 
     def _get_tool_info(self, stmt: n.Command) -> None:
         parts = stmt.args.split()
-        if len(parts) != 2 or parts[0].lower() not in ("first", "next", "num") or not parts[1].isdigit():
+        if len(parts) != 2 or parts[0].lower() not in ("first", "next", "num") or not _is_digits(parts[1]):
             raise self.fail("GetToolInfo expects first|next|num and a parameter number, e.g. "
                             "GetToolInfo first 100", stmt.span)
         tools = self.job_tools()
@@ -109,7 +110,7 @@ class Commands(MachineState):
     def _variable_argument(self, stmt: n.Command, example: str) -> int:
         """The bare parameter number a command writes to (``GetJobDistance 100``)."""
         text = stmt.args.strip()
-        if not text.isdigit():
+        if not _is_digits(text):
             raise self.fail(f"{stmt.name} expects a parameter number written without '#', e.g. {example}", stmt.span)
         return param_index(float(text), stmt.span)
 
@@ -120,11 +121,30 @@ class Commands(MachineState):
         import subprocess  # only for Exec: not worth its import time on every run
 
         argv = [quoted or bare for quoted, bare in _EXEC_ARG.findall(stmt.args)]
-        try:
-            result = subprocess.run(argv, check=False)
+        if not argv:
+            raise self.fail('Exec needs the program to run, e.g. Exec "notepad.exe"', stmt.span)
+        try:  # what the program prints is a message, never part of ecnc's output (--json, --trace -)
+            result = subprocess.run(argv, check=False, stdin=subprocess.DEVNULL, stdout=_stderr_fd())
         except OSError as err:
             raise self.fail(f"Exec {stmt.args}: {err.strerror}", stmt.span) from None
         self.canon.event(Event("exec", self.path, self.line, {"args": stmt.args, "status": result.returncode}))
+
+
+def _stderr_fd() -> int:
+    """Where an Exec'd program's standard output goes: ecnc's stderr (the null device if it has no
+    descriptor, as under a test runner)."""
+    import subprocess
+
+    try:
+        sys.stderr.flush()
+        return sys.stderr.fileno()
+    except (AttributeError, OSError, ValueError):
+        return subprocess.DEVNULL
+
+
+def _is_digits(text: str) -> bool:
+    """ASCII digits only: str.isdigit() also takes '²' and '١', which float() then refuses."""
+    return text.isascii() and text.isdigit()
 
 
 # Named commands with a meaning of their own, by lower-case name; any other command is an event.

@@ -17,6 +17,7 @@ from ..canon import Event
 from ..errors import EcncError
 from ..heightmap import ZhcTable
 from ..job_files import OpenMode, job_file, open_job_file
+from ..limits import MAX_HEIGHT_MAP_VALUE
 from .state import CommandTable, MachineState
 
 
@@ -50,7 +51,10 @@ class HeightComp(MachineState):
         if self.params.read(t.PROBE_TRIPPED) != 1.0:
             raise self.fail("ZHCADDPOINT: the last G38.2 did not touch (#5067 is not 1)", stmt.span)
         x, y = self.params.read(t.PROBE_MACHINE), self.params.read(t.PROBE_MACHINE + 1)
-        if self.zhc.add(x, y, self.params.read(t.PROBE_WORK + 2)) is None:
+        z = self.params.read(t.PROBE_WORK + 2)
+        if not abs(z) <= MAX_HEIGHT_MAP_VALUE:  # a host's probe answer: the table's statistics stay finite
+            raise self.fail(f"ZHCADDPOINT: the probed height {z:g} is beyond {MAX_HEIGHT_MAP_VALUE:g} mm", stmt.span)
+        if self.zhc.add(x, y, z) is None:
             raise self.fail(f"ZHCADDPOINT: the probe point X{x:g} Y{y:g} (machine) is not on the ZHC grid",
                             stmt.span)
 
@@ -76,7 +80,7 @@ class HeightComp(MachineState):
 
     def _zhc_open(self, path: Path, mode: OpenMode, span: n.Span) -> TextIO:
         try:
-            return open_job_file(path, mode)
+            return open_job_file(path, mode, self.own_files)
         except OSError as exc:
             verb = "read" if mode == "read" else "write"
             raise self.fail(f"cannot {verb} the height table {path}: {exc.strerror or exc}", span) from None

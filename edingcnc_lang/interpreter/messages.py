@@ -13,7 +13,7 @@ from ..errors import JobAborted, Location
 from ..evaluator import param_index
 from ..job_files import job_file, open_job_file
 from ..limits import MAX_LOG_BYTES
-from ..host import DialogAnswer, DialogField
+from ..host import DialogAnswer, DialogField, checked_answer
 from ..dialogs import dialog_fields
 from .state import MachineState, format_value, StatementTable
 
@@ -59,7 +59,10 @@ class Messages(MachineState):
         assert isinstance(title, str)  # dialog_fields reported a dialog without its title string (D402)
         indices = [param_index(f.index.value, f.index.span) for f in shape]
         fields = [DialogField(f.label, index, self.params.read(index)) for f, index in zip(shape, indices)]
-        answer = (self.host.dialog(title, fields) if self.host.dialog else None) or DialogAnswer()
+        try:
+            answer = checked_answer(self.host.dialog(title, fields) if self.host.dialog else None) or DialogAnswer()
+        except ValueError as err:
+            raise self.fail(str(err), stmt.span) from None
         unknown = set(answer.values) - {f.index for f in fields}
         if unknown:
             raise self.fail(f"the answer sets #{min(unknown)}, which is not a field of this dialog", stmt.span)
@@ -100,7 +103,7 @@ class Messages(MachineState):
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
         assert self._log_file is not None
         try:
-            return open_job_file(self._log_file, "write" if truncate else "append")
+            return open_job_file(self._log_file, "write" if truncate else "append", self.own_files)
         except OSError as exc:
             raise self.fail(f"cannot write the log file {self._log_file}: {exc.strerror or exc}", span) from None
 

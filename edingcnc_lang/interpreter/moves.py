@@ -8,6 +8,7 @@ from .. import nodes as n
 from .. import tables as t
 from ..canon import PLANES, Arc
 from ..geometry import ArcError, center_from_radius, check_radius, radius_tolerance, sweep
+from ..host import checked_trip
 from .state import (
     AXIS_SET, CENTER_WORDS, G_0, G_1, G_2, G_3, G_38_2, G_51, G_53, G_68, G_80, G_93, MIN_PROBE_DISTANCE,
     MachineState, PLANE_OF, UNSUPPORTED_MOTION, fmt_point, xyz_distance,
@@ -103,7 +104,7 @@ class Moves(MachineState):
                      + f", end ({fmt_point(e)})")
             raise self.fail(f"{err}; {where} in the {plane} plane", span) from None
         assert center is not None
-        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon)
+        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon, "R" in words, tolerance)
         radius = math.hypot(s[0] - center[0], s[1] - center[1])
         along = end[normal] - start[normal]
         length = math.hypot(radius * angle, along)
@@ -163,7 +164,12 @@ class Moves(MachineState):
                             span)
         feed = self._feed_for(distance, words, span)
         goal = self.machine_frame(target)  # the host sees machine coordinates
-        trip = self.host.probe(self.machine_frame(self.pos), goal) if self.host.probe else goal  # type: ignore[arg-type]
+        start = self.machine_frame(self.pos)
+        trip = self.host.probe(start, goal) if self.host.probe else goal  # type: ignore[arg-type]
+        try:
+            trip = checked_trip(trip, start, goal)  # type: ignore[arg-type]
+        except ValueError as err:
+            raise self.fail(str(err), span) from None
         self._move("probe", self.program_frame(trip) if trip is not None else target, feed)
         if trip is None:  # manual 3.6.10.1: no trip even slightly past the target is an error
             self.params.set(t.PROBE_TRIPPED, 0.0)

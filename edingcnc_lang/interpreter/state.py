@@ -122,6 +122,8 @@ def format_value(value: float) -> str:
         return str(value)
     if value == int(value) and abs(value) < 1e15:
         return str(int(value))
+    if abs(value) >= 1e15:  # not 309 digits for 1e308
+        return f"{value:.6g}"
     return f"{value:.4f}".rstrip("0").rstrip(".")
 
 
@@ -182,6 +184,8 @@ class MachineState:
         self.host = host or Host()
         self.max_steps = max_steps
         self.log_dir = log_dir
+        # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
+        self.own_files: frozenset[tuple[int, int]] = frozenset()
         self.allow_exec = allow_exec
         self.block_delete = block_delete
         self.steps = 0

@@ -6,6 +6,7 @@ from collections.abc import Mapping
 from .. import nodes as n
 from .. import tables as t
 from ..canon import Event
+from ..host import checked_level
 from .offsets import NON_MODAL
 from .state import (
     G_1, G_17, G_18, G_4, G_40, G_43, G_43_1, G_49, G_90, G_93, G_94, MachineState, PAUSE_CODES, ProgramEnd,
@@ -144,7 +145,10 @@ class LineSteps(MachineState):
             self.canon.event(Event("output", self.path, self.line, {"port": port, "on": code == 54,
                                                                      "pwm": words.get("Q")}))
         elif code == 56:
-            level = float(self.host.read_input(port)) if self.host.read_input else 0.0
+            try:
+                level = checked_level(self.host.read_input(port)) if self.host.read_input else 0.0
+            except ValueError as err:
+                raise self.fail(str(err), span) from None
             wait = int(words.get("L", 0))
             if wait in (1, 2) and (level != 0.0) != (wait == 1):
                 level = -1.0  # the wait for high (L1) / low (L2) timed out

@@ -6,10 +6,12 @@ numpy is imported by the batch methods, not here: a run with the trivial kinemat
 """
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, ClassVar, Protocol, runtime_checkable
+import contextlib
+import sys
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, runtime_checkable
 
-from edingcnc_lang.errors import ConfigError, Location, MachineError
+from edingcnc_lang.errors import ConfigError, EcncError, Location, MachineError, PluginError
 from edingcnc_lang.kinematics import abi
 
 if TYPE_CHECKING:
@@ -21,6 +23,51 @@ JOINTS = ("jx", "jy", "jz", "ja", "jb", "jc")
 # What a user plug-in may raise that is its failure, not ecnc's: any exception, and sys.exit() (which
 # would otherwise end ecnc silently with the plug-in's status).  Ctrl-C (KeyboardInterrupt) still stops.
 PLUGIN_FAILURES: tuple[type[BaseException], ...] = (Exception, SystemExit)
+
+
+# The methods of a Python plug-in that run its code, guarded when it is loaded (guard_python_plugin).
+_GUARDED = ("inverse", "forward", "inverse_many", "forward_many", "control", "user_output")
+
+
+def guard_python_plugin(kins: object, label: str) -> None:
+    """Make a loaded Python plug-in's calls safe for every caller (run, kins, the workbench):
+    what it prints goes to stderr, never into a ``--json`` document on stdout; whatever it raises
+    (``SystemExit``, a ``BaseException`` of its own, ``RecursionError``) is a PluginError naming it,
+    Ctrl-C and ecnc's own errors (KinematicsDomainError) pass; ``inverse``/``forward`` must return
+    six numbers (a 2-tuple, None or a generator is that error, not partial joints)."""
+    for name in _GUARDED:
+        method = getattr(kins, name, None)
+        if callable(method):
+            setattr(kins, name, _guarded(kins, method, label, name))
+
+
+def _guarded(kins: object, method: Callable[..., Any], label: str, name: str) -> Callable[..., Any]:
+    pose = name in ("inverse", "forward")
+
+    def call(*args: Any, **kwargs: Any) -> Any:
+        try:
+            with contextlib.redirect_stdout(sys.stderr):
+                result = method(*args, **kwargs)
+        except (KeyboardInterrupt, EcncError):
+            raise
+        except BaseException as err:  # noqa: BLE001 - a user plug-in may raise anything
+            shown = getattr(kins, "name", "") or label
+            raise PluginError(f"kinematics plug-in {shown} failed: {type(err).__name__}: {err}") from None
+        return _six_numbers(result, getattr(kins, "name", "") or label, name) if pose else result
+    return call
+
+
+def _six_numbers(result: object, label: str, call: str) -> Pose:
+    try:  # a tuple, a list or a numpy array; not a generator, which would be used up
+        values = tuple(float(v) for v in result) if isinstance(result, (tuple, list)) or (
+            hasattr(result, "shape") and isinstance(result, Iterable)) else ()
+    except (TypeError, ValueError):
+        values = ()
+    if len(values) != 6:
+        text = repr(result)
+        raise PluginError(f"kinematics plug-in {label}: {call} returned {type(result).__name__} "
+                          f"{text[:60]}{'...' if len(text) > 60 else ''}, not six numbers (x y z a b c)")
+    return values  # type: ignore[return-value]
 
 
 class KinematicsDomainError(MachineError):

@@ -9,9 +9,11 @@ lookup needs them (reading every installed package's entry points is slow on a b
 """
 from __future__ import annotations
 
+import contextlib
 import importlib
 import importlib.util
 import inspect
+import sys
 import traceback
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
@@ -19,7 +21,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.errors import EcncError, Location, PluginError
-from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsPlugin
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsPlugin, guard_python_plugin
 from edingcnc_lang.kinematics.shipped import import_shipped
 
 if TYPE_CHECKING:
@@ -92,7 +94,8 @@ def _import_file(path: Path) -> ModuleType:
         raise PluginError(f"kinematics plug-in {path}: not a Python module")
     module = importlib.util.module_from_spec(spec)
     try:
-        spec.loader.exec_module(module)
+        with contextlib.redirect_stdout(sys.stderr):  # its print() never lands in a --json document
+            spec.loader.exec_module(module)
     except PLUGIN_FAILURES as err:  # the user's module may fail in any way
         detail = err.msg if isinstance(err, SyntaxError) else str(err)
         raise PluginError(f"kinematics plug-in {path}: importing it failed: {type(err).__name__}: {detail}",
@@ -135,6 +138,7 @@ def _construct(factory: Callable[..., Any], label: str, settings: Mapping[str, s
         raise PluginError(f"kinematics plug-in {label}: it lacks {', '.join(missing)}")
     if not getattr(kins, "name", ""):
         kins.name = label
+    guard_python_plugin(kins, label)
     return kins
 
 

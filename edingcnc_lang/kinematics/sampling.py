@@ -71,7 +71,7 @@ def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsi
         raise ValueError("turns must be non-zero: its sign is the direction of the arc")
     direction = 1.0 if turns > 0 else -1.0
     sweep = (direction * (end_angle - start_angle)) % (2.0 * math.pi)
-    if sweep <= max(full_circle_epsilon, 1e-12):
+    if sweep <= full_circle_epsilon or sweep == 0.0:
         sweep = 2.0 * math.pi
     return direction * (sweep + 2.0 * math.pi * (abs(turns) - 1))
 

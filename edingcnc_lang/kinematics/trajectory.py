@@ -69,8 +69,11 @@ class Geometry:
         return arc_points(self.start, self.end, self.arc_frame(), s)
 
 
-def geometry_of(move: Move, full_circle_epsilon: float = 1e-12) -> Geometry:
-    """The path of a canon move (arcs: centre in all three linear axes, normal axis, signed turns)."""
+def geometry_of(move: Move) -> Geometry:
+    """The path of a canon move (arcs: centre in all three linear axes, normal axis, signed turns).
+
+    Whether an arc is a full circle was decided once, by the interpreter (``Arc.full_turns``); the
+    path follows that decision, never an angle epsilon of its own."""
     if move.arc is None:
         return Geometry(move.start, move.end)
     first, second, normal = PLANES[move.arc.plane]
@@ -80,7 +83,8 @@ def geometry_of(move: Move, full_circle_epsilon: float = 1e-12) -> Geometry:
     center = list(move.start[:3])
     center[first], center[second] = c1, c2
     turns = move.arc.turn * max(1, move.arc.full_turns)
-    return Geometry(move.start, move.end, (center[0], center[1], center[2]), normal, turns, full_circle_epsilon)
+    full = math.inf if move.arc.full_turns else -1.0  # as arc_sweep's epsilon: always, or never (ends differ)
+    return Geometry(move.start, move.end, (center[0], center[1], center[2]), normal, turns, full)
 
 
 @dataclass(frozen=True)

@@ -27,7 +27,7 @@ _MODBUS_TARGET = re.compile(r"u(\d+)", re.IGNORECASE)  # modbus ... u4000: a rea
 def command_writes(command: n.Command) -> Iterator[int]:
     """The variables a command sets: the bare numbers of the Get* commands, the ``uNNN`` of ``modbus``."""
     if command.name in _WRITING_COMMANDS:
-        yield from (int(word) for word in command.args.split() if word.isdigit())
+        yield from (int(word) for word in command.args.split() if word.isascii() and word.isdigit())
     elif command.name == "modbus":
         yield from (int(m.group(1)) for word in command.args.split() if (m := _MODBUS_TARGET.fullmatch(word)))
 

@@ -9,14 +9,17 @@ import asyncio
 import os
 from pathlib import Path
 from collections.abc import Sequence
+from typing import Any
 
 from lsprotocol import types as t
 from pygls.exceptions import JsonRpcException
 from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol
 from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
 from .. import __version__
+from ..limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
 from ..gcpause import whole_trees
 from ..codes import Severity
 from ..diagnostics import Diagnostic
@@ -33,11 +36,38 @@ _KINDS = {"code": t.CompletionItemKind.Keyword, "sub": t.CompletionItemKind.Func
           "command": t.CompletionItemKind.Method, "function": t.CompletionItemKind.Function}
 
 
+# LSP positions are unsigned 32-bit numbers; a request outside that range failed to deserialize in
+# pygls and was never answered, so the client waited for ever.  Clamped, it gets an answer.
+_LARGEST_POSITION = 2**31 - 1
+
+
+def _clamped_positions(data: Any) -> Any:
+    """``data`` with every ``line``/``character`` number inside 0 .. 2**31 - 1."""
+    if isinstance(data, dict):
+        return {key: (min(max(value, 0), _LARGEST_POSITION)
+                      if key in ("line", "character") and isinstance(value, int) and not isinstance(value, bool)
+                      else _clamped_positions(value)) for key, value in data.items()}
+    if isinstance(data, list):
+        return [_clamped_positions(item) for item in data]
+    return data
+
+
+class EcncProtocol(LanguageServerProtocol):
+    """pygls's protocol, with out-of-range positions clamped before a request is read."""
+
+    def structure_message(self, data: dict[str, Any]) -> Any:
+        if isinstance(data, dict) and "params" in data:
+            data = {**data, "params": _clamped_positions(data["params"])}
+        return super().structure_message(data)
+
+
 class EcncServer(LanguageServer):
     """A pygls server holding one language model and the pending (debounced) lint runs."""
 
     def __init__(self) -> None:
-        super().__init__("ecnc", __version__, text_document_sync_kind=t.TextDocumentSyncKind.Incremental)
+        super().__init__("ecnc", __version__, text_document_sync_kind=t.TextDocumentSyncKind.Incremental,
+                         protocol_cls=EcncProtocol)
+        self.too_large: dict[str, int] = {}  # documents past MAX_LSP_DOCUMENT_CHARS: path -> their length
         self.model = LanguageModel()
         self.pending: dict[str, asyncio.TimerHandle] = {}
         self.shut_down = False  # the client asked for a shutdown before exit (exit code 0)
@@ -49,6 +79,16 @@ class EcncServer(LanguageServer):
 
     def uri(self, path: str) -> str:
         return self.uris.get(path) or from_fs_path(path) or path
+
+    def set_text(self, path: str, text: str) -> None:
+        """The editor's text of ``path``; past MAX_LSP_DOCUMENT_CHARS an empty one (every request is
+        answered at once, with nothing) and a diagnostic that says why."""
+        if len(text) > MAX_LSP_DOCUMENT_CHARS:
+            self.too_large[path] = len(text)
+            text = ""
+        else:
+            self.too_large.pop(path, None)
+        self.model.set_text(path, text)
 
     def codec(self) -> PositionCodec:
         return self.workspace.position_codec
@@ -86,6 +126,13 @@ class EcncServer(LanguageServer):
     def publish(self, uri: str) -> None:
         self.pending.pop(uri, None)
         path = self.path(uri)
+        if path in self.too_large:
+            message = (f"this document has {self.too_large[path]:,} characters, more than the language server "
+                       f"analyses ({MAX_LSP_DOCUMENT_CHARS:,}); run ecnc lint on it")
+            found = t.Diagnostic(range=t.Range(start=t.Position(line=0, character=0), end=t.Position(line=0, character=0)),
+                                 message=message, severity=t.DiagnosticSeverity.Information, source=SOURCE)
+            self.text_document_publish_diagnostics(t.PublishDiagnosticsParams(uri=uri, diagnostics=[found]))
+            return
         if path not in self.model.texts:
             return
         lines = self.lines(path)
@@ -149,7 +196,7 @@ def _shutdown(ls: EcncServer, _params: None) -> None:
 def _did_open(ls: EcncServer, params: t.DidOpenTextDocumentParams) -> None:
     path = ls.path(params.text_document.uri)
     ls.uris[path] = params.text_document.uri
-    ls.model.set_text(path, params.text_document.text)
+    ls.set_text(path, params.text_document.text)
     ls.schedule_lint(params.text_document.uri, 0)
     ls.relint_folder(path)
 
@@ -158,7 +205,7 @@ def _did_open(ls: EcncServer, params: t.DidOpenTextDocumentParams) -> None:
 def _did_change(ls: EcncServer, params: t.DidChangeTextDocumentParams) -> None:
     uri = params.text_document.uri
     path = ls.path(uri)
-    ls.model.set_text(path, ls.workspace.get_text_document(uri).source)
+    ls.set_text(path, ls.workspace.get_text_document(uri).source)
     ls.schedule_lint(uri)
     ls.relint_folder(path)
 
@@ -172,6 +219,7 @@ def _did_save(ls: EcncServer, params: t.DidSaveTextDocumentParams) -> None:
 def _did_close(ls: EcncServer, params: t.DidCloseTextDocumentParams) -> None:
     uri = params.text_document.uri
     ls.model.set_text(ls.path(uri), None)
+    ls.too_large.pop(ls.path(uri), None)
     ls.uris.pop(ls.path(uri), None)
     pending = ls.pending.pop(uri, None)
     if pending is not None:
@@ -269,7 +317,8 @@ def _formatting(ls: EcncServer, params: t.DocumentFormattingParams) -> list[t.Te
     lines = file.lines
     options = params.options
     with whole_trees():  # a file with syntax errors: the lines without one (formatting.py)
-        formatted = formatting.format_lines(lines, " " * options.tab_size if options.insert_spaces else "\t",
+        indent = " " * min(max(options.tab_size, 1), MAX_TAB_SIZE) if options.insert_spaces else "\t"
+        formatted = formatting.format_lines(lines, indent,
                                             None if file.parse_errors else (file.body, file.unit), partial=True)
     if formatted is None:
         return None

@@ -89,7 +89,7 @@ class Planner:
         if not self._ends:
             self._origin = move.start
         if move.arc is not None:
-            self._arcs[len(self._ends)] = geometry_of(move, self.config.full_circle_theta_epsilon)
+            self._arcs[len(self._ends)] = geometry_of(move)
         limit = self._limit_id(limits)
         self._ends.append(move.end)
         self._feed.append(move.feed)

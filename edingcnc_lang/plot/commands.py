@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import EcncError, Location
-from ..outputs import ensure_parent
+from ..outputs import check_outputs, ensure_parent
 from ..runner import RunOptions
 from .formats import picture_target
 from .toolpath import Toolpath, record_job
@@ -42,6 +42,11 @@ def parse_line_range(text: str) -> tuple[int, int]:
     return low, high
 
 
+def _refuse_an_input(target: Path, job: Path, options: RunOptions) -> None:
+    """UsageFailure when the picture would be written over the job or a file the run reads."""
+    check_outputs({"-o": target}, [job, options.ini, options.macro, options.user_macro])
+
+
 def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str = "auto", color: str = "tool",
              fit: str = "job", joints: bool = False, name: str | None = None) -> Written:
     """Run ``job`` and draw its toolpath (or with ``joints`` its joint positions over time) into ``out``;
@@ -49,6 +54,7 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
     from .render import plot_toolpath
 
     target = ensure_parent(out or default_output(job, "-joints.png" if joints else ".png"))
+    _refuse_an_input(target, job, options)
     fmt = picture_target(target)  # a wrong extension or a missing folder is told before the job runs
     path = record_job(job, options, samples=joints, name=name)
     if joints:
@@ -72,6 +78,7 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     from .viewer import MAX_MOVES, write_view
 
     target = ensure_parent(out or default_output(job, ".html"))
+    _refuse_an_input(target, job, options)
     path = record_job(job, options, name=name)
     if lines is not None:
         path = path.select_lines(*lines)

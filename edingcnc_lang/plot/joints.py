@@ -18,6 +18,7 @@ from .toolpath import Toolpath
 
 JOINT_COLUMNS = ("jx", "jy", "jz", "ja", "jb", "jc")
 STRIP_INCHES = 1.6
+MAX_CURVE_POINTS = 200_000  # samples drawn per joint: far more than the picture's pixels, a bounded figure
 WIDTH_INCHES = 11.0
 
 
@@ -46,13 +47,14 @@ def plot_joints(path: Toolpath, out: Path, fmt: str | None = None) -> Path:
     from matplotlib.figure import Figure
 
     joints = moving_joints(path)
-    t = path.samples["t"]
+    step = max(1, -(-len(path.samples["t"]) // MAX_CURVE_POINTS))  # a long job: every step-th sample
+    t = path.samples["t"][::step]
     height = 1.2 + STRIP_INCHES * len(joints)
     fig = Figure(figsize=(WIDTH_INCHES, height), dpi=DPI, layout="constrained")
     axes = fig.subplots(len(joints), 1, sharex=True, squeeze=False)[:, 0]
     for ax, joint in zip(axes, joints):
         name = path.joint_names[joint] if joint < len(path.joint_names) else JOINT_COLUMNS[joint]
-        ax.plot(t, path.samples[JOINT_COLUMNS[joint]], color=v.TOOL_COLORS[joint % len(v.TOOL_COLORS)], lw=1.2)
+        ax.plot(t, path.samples[JOINT_COLUMNS[joint]][::step], color=v.TOOL_COLORS[joint % len(v.TOOL_COLORS)], lw=1.2)
         unit = "deg" if joint_kind(path, joint) == "rotary" else "mm"
         ax.set_ylabel(f"joint {joint} ({name})\n{unit}", fontsize=8)
         ax.grid(True, color="#e0e0e0", lw=0.5)

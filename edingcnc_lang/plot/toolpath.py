@@ -21,7 +21,6 @@ from ..canon import Arc, Event, Move, Pose
 from ..config import MachineConfig, load_config
 from ..errors import EcncError
 from ..kinematics.base import declared_joint_kinds
-from ..kinematics.sampling import arc_sweep
 from ..kinematics.trajectory import geometry_of
 from ..planner.estimate import Timing
 from ..runner import Run, RunOptions, RunResult
@@ -89,8 +88,7 @@ class Toolpath:
         first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
         c1, c2 = geometry.center[first], geometry.center[second]
         radius = max(math.hypot(start[first] - c1, start[second] - c2), 1e-9)
-        swept = abs(arc_sweep(math.atan2(start[second] - c2, start[first] - c1),
-                              math.atan2(end[second] - c2, end[first] - c1), geometry.turns))
+        swept = abs(geometry.arc_frame().sweep)
         chords = max(2, math.ceil(swept / arc_step))
         length = math.hypot(swept * radius, end[geometry.normal] - start[geometry.normal])
         if length <= 0.0:

@@ -59,7 +59,7 @@ def test_a_limit_of_zero_is_a_configuration_error_naming_its_key(tmp_path: Path)
     ini = write(tmp_path, "cnc.ini", "[JOINT_0]\nname = X\nmaxVelocity = 0\nmaxAcceleration = 1000\n")
     result = invoke("run", "--ini", ini, job)
     assert result.exit_code == 70
-    assert result.stderr.startswith(f"{ini}:3: error: maxVelocity = 0 in [JOINT_0] must be greater than 0")
+    assert result.stderr.startswith(f"{ini}:3: error: maxVelocity = 0 in [JOINT_0] must be 1e-06 to 1e+09")
     lint = invoke("lint", "--format", "json", "--ini", ini, job)
     assert [(d["line"], d["code"]) for d in json.loads(lint.stdout)] == [(3, "C701")]
 

@@ -42,6 +42,19 @@ words = st.tuples(letters, st.one_of(numbers, expressions)).map("".join)
 blocks = st.lists(st.one_of(words, st.tuples(params, expressions).map(lambda t: f"{t[0]} = {t[1]}")),
                   min_size=1, max_size=6).map(" ".join)
 strings = st.text(st.characters(blacklist_characters='"\n\r'), max_size=20).map(lambda t: f'"{t}"')
+# What the second hardening round (issue 28) found: pass counts, long names, digits other than
+# ASCII, command arguments, arcs that sweep almost nothing, files of the run as job targets.
+_ODD_DIGITS = ["²", "⁵", "١٠", "𝟏", "１", "1_0", "٣.٥"]
+hostile_lines = st.one_of(
+    st.sampled_from(["G18 G76 P1 Z-10 I-1 J0.1 K0.6 H1000000000", "G76 P1 Z-10 I-1 J0.1 K0.6 H5",
+                     "G2 X0.000001 Y0 R5 F100", "G2 X10 Y0 R10000000 F100", "G2 X0 Y0 I5 J0 F100",
+                     "G83 X0 Y0 Z-10 R1 Q0.00001 F100", "Exec", "ZHCINIT 10 2 2", "ZHCcheck", 'logfile "job.nc" 0',
+                     'logfile "a\u202eb.txt" 0', "ZHCS job.nc", f"G1 X{'9' * 309} F100", "M56 P1", "G38.2 Z-1 F10"]),
+    st.tuples(st.sampled_from(["GetJobDistance ", "GetToolInfo num ", "GetHeightControlVact ", "G1 X", "T", "#1 = "]),
+              st.sampled_from(_ODD_DIGITS)).map("".join),
+    st.tuples(st.sampled_from(["Sub ", "GoSub ", "GoTo ", "logfile ", "ZHCS "]), st.integers(1, 3000))
+    .map(lambda t: t[0] + "a" * t[1]),
+)
 statements = st.one_of(
     blocks, blocks, blocks,
     st.tuples(st.sampled_from(["If", "While"]), expressions).map(lambda t: f"{t[0]} [{t[1]}]"),
@@ -55,6 +68,7 @@ statements = st.one_of(
                      "G38.2 Z-10 F50", "G81 X1 Y1 Z-1 R1 F100 L3", "G2 X1 Y1 R5 F100", "(MSG hello)", "; note",
                      "G10 L2 P1 X5", "G92 X0", "G43 H1", "G53 G0 Z0", "G20", "G21", "G91", "G90"]),
     st.text(max_size=30),  # anything at all
+    hostile_lines,
 )
 programs = st.lists(st.tuples(statements, st.sampled_from(["\n", "\r\n"])).map("".join), max_size=25).map("".join)
 

@@ -9,6 +9,8 @@ moves another joint than its own): a 5-axis plug-in is never proven at A0 B0 C0 
 """
 from __future__ import annotations
 
+import math
+
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -78,6 +80,8 @@ def parse_box(values: Sequence[float]) -> Workspace:
     if len(values) % 2 or not 6 <= len(values) <= 12:
         raise ValueError("--box takes X0,X1,Y0,Y1,Z0,Z1 and optionally A0,A1,B0,B1,C0,C1 (6 to 12 numbers, "
                          f"got {len(values)}), e.g. --box=-200,200,-200,200,0,150")
+    if not all(math.isfinite(v) for v in values):  # nan or inf: no pose to sample between them
+        raise ValueError(f"--box takes finite numbers, not {next(v for v in values if not math.isfinite(v))}")
     pairs = [(min(values[i], values[i + 1]), max(values[i], values[i + 1])) for i in range(0, len(values), 2)]
     pairs += [(0.0, 0.0)] * (6 - len(pairs))
     return Workspace(tuple(pairs), "--box")
