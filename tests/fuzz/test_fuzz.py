@@ -90,7 +90,6 @@ def test_mutants_of_a_height_table_never_crash(data: bytes) -> None:  # ZHCL rea
 # ----------------------------------------------------------------------------- every command
 # Each command of ``ecnc`` (cli.COMMANDS) with generated jobs and arguments: ``invoke`` lets no
 # exception through, so a traceback fails the test; stdout must stay one JSON document with --json.
-# (The debug, test, diff and sim commands are written on other branches; they join here when merged.)
 
 _ARGS = st.sampled_from(["--json", "--max-steps=50", "--answer=ok:#1=1_0", "--answer=ok", "--feed-override=１００",
                          "--block-delete", "--strict", "-q"])
@@ -140,3 +139,51 @@ def test_the_other_commands_end_in_an_exit_code(argv: list[str]) -> None:
         finally:
             os.chdir(previous)
         assert result.exit_code in (0, 1, 2, 65, 70), result.output
+
+
+def _dap(*messages: dict[str, object]) -> bytes:
+    """Debug Adapter Protocol requests as an editor frames them."""
+    import json
+
+    out = b""
+    for seq, message in enumerate(messages, 1):
+        body = json.dumps({"seq": seq, "type": "request", **message}).encode()
+        out += b"Content-Length: %d\r\n\r\n" % len(body) + body
+    return out
+
+
+@settings(RELAXED, max_examples=24)  # a CLI run each
+@given(programs, st.sampled_from(["diff", "sim", "test", "debug"]), st.binary(max_size=40))
+def test_the_newer_commands_on_generated_jobs_end_in_an_exit_code(text: str, command: str, noise: bytes) -> None:
+    """``ecnc diff``, ``sim``, ``test`` and ``debug`` on generated jobs (``debug`` driven over DAP,
+    with junk after the session): an exit code, one JSON document with --json, the job untouched."""
+    import json
+
+    from tests.cli_runner import invoke
+
+    data = text.encode("utf-8", "surrogatepass")
+    with tempfile.TemporaryDirectory() as folder:
+        root = Path(folder)
+        job = root / "job.nc"
+        job.write_bytes(data)
+        stdin: bytes | None = None
+        if command == "diff":
+            (root / "old.nc").write_bytes(data + b"\nG0 X1\n")
+            argv: list[object] = ["diff", root / "old.nc", job, "--json", "--macro", EMPTY_MACRO]
+        elif command == "sim":
+            argv = ["sim", job, "--stock", "-20,-20,-20,20,20,5", "--resolution", "2", "--json", "--macro", EMPTY_MACRO]
+        elif command == "test":
+            (root / "test_generated.toml").write_text(
+                f'[[test]]\nname = "generated"\njob_file = "job.nc"\nmacro = {json.dumps(str(EMPTY_MACRO))}\n')
+            argv = ["test", root]
+        else:
+            argv = ["debug"]
+            stdin = _dap({"command": "initialize", "arguments": {"adapterID": "ecnc"}},
+                         {"command": "launch", "arguments": {"program": str(job), "macro": str(EMPTY_MACRO),
+                                                              "noDebug": True}},
+                         {"command": "configurationDone"}, {"command": "disconnect"}) + noise
+        result = invoke(*argv, input=stdin)
+        assert result.exit_code in (0, 1, 2, 65, 70), result.output
+        if "--json" in argv and result.stdout.strip():
+            json.loads(result.stdout)
+        assert job.read_bytes() == data
