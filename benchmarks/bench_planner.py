@@ -23,7 +23,7 @@ from bench_run import write_g1_job
 
 CHILD = r"""
 import json, sys, time
-from edingcnc_lang.planner import stage
+from edingcnc_lang.motion.planner import stage
 from edingcnc_lang import RunOptions, run_file
 spent = [0.0]
 def timed(name):
@@ -48,10 +48,10 @@ ALONE = r"""
 import random, sys, time
 import numpy as np
 from edingcnc_lang.canon import Batch
-from edingcnc_lang.config import MachineConfig
-from edingcnc_lang.motion import AxisLimits
-from edingcnc_lang.planner.overrides import Overrides
-from edingcnc_lang.planner.stage import Planner
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.motion.stage import AxisLimits
+from edingcnc_lang.motion.planner.overrides import Overrides
+from edingcnc_lang.motion.planner.stage import Planner
 count = int(sys.argv[1])
 rng = random.Random(1)
 limits = AxisLimits(np.full(6, 1000.0), np.full(6, 10000.0))

@@ -99,7 +99,7 @@ ECNC_SCRIPT = [str(_SCRIPT)] if _SCRIPT.exists() else ECNC
 def bench_parse(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     job = tmp / "g1_200k.nc"
     write_g1_job(job, 200_000)
-    tree = [sys.executable, "-c", "import sys; from edingcnc_lang.parser import read_statements\n"
+    tree = [sys.executable, "-c", "import sys; from edingcnc_lang.syntax.parser import read_statements\n"
             "for _ in read_statements(sys.argv[1]): pass", str(job)]
     res = median_runs({"check": ECNC + ["parse", str(job)], "tree": tree}, repeat)
     rows = []

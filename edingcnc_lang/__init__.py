@@ -15,14 +15,14 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from .canon import Arc, Event, Move
-    from .config import MachineConfig, load_config
-    from .diagnostics import Diagnostic, SyntaxErrors
-    from .errors import ConfigError, EcncError, JobAborted, MachineError, PluginError
-    from .host import DialogAnswer, DialogField, Host
-    from .nodes import Program
-    from .parser import parse_file, parse_text, read_statements
-    from .runner import Run, RunOptions, RunResult, run_file, run_string
+    from edingcnc_lang.canon import Arc, Event, Move
+    from edingcnc_lang.config import MachineConfig, load_config
+    from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
+    from edingcnc_lang.errors import ConfigError, EcncError, JobAborted, MachineError, PluginError
+    from edingcnc_lang.host import DialogAnswer, DialogField, Host
+    from edingcnc_lang.syntax.nodes import Program
+    from edingcnc_lang.syntax.parser import parse_file, parse_text, read_statements
+    from edingcnc_lang.runner import Run, RunOptions, RunResult, run_file, run_string
 
 __version__ = "0.1.0"
 
@@ -33,8 +33,8 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(("Diagnostic", "SyntaxErrors"), ".diagnostics"),
     **dict.fromkeys(("ConfigError", "EcncError", "JobAborted", "MachineError", "PluginError"), ".errors"),
     **dict.fromkeys(("DialogAnswer", "DialogField", "Host"), ".host"),
-    "Program": ".nodes",
-    **dict.fromkeys(("parse_file", "parse_text", "read_statements"), ".parser"),
+    "Program": ".syntax.nodes",
+    **dict.fromkeys(("parse_file", "parse_text", "read_statements"), ".syntax.parser"),
     **dict.fromkeys(("Run", "RunOptions", "RunResult", "run_file", "run_string"), ".runner"),
 }
 

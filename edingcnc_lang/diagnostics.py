@@ -7,8 +7,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .codes import Severity, lookup
-from .errors import EXIT_SYNTAX, EcncError, Location, printable, shortened
+from edingcnc_lang.codes import Severity, lookup
+from edingcnc_lang.errors import EXIT_SYNTAX, EcncError, Location, printable, shortened
 
 
 @dataclass(frozen=True)

@@ -11,8 +11,8 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import datetime
 
-from .canon import Pose
-from .source import plain_float, plain_int
+from edingcnc_lang.canon import Pose
+from edingcnc_lang.syntax.source import plain_float, plain_int
 
 
 

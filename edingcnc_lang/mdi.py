@@ -13,12 +13,12 @@ from collections.abc import Iterable
 from contextlib import suppress
 from dataclasses import dataclass
 
-from .canon import Pose
-from .diagnostics import SyntaxErrors
-from .errors import EcncError, Interrupted, Location
-from .nodes import Block
-from .parser import parse_text
-from .runner import Run, RunOptions
+from edingcnc_lang.canon import Pose
+from edingcnc_lang.diagnostics import SyntaxErrors
+from edingcnc_lang.errors import EcncError, Interrupted, Location
+from edingcnc_lang.syntax.nodes import Block
+from edingcnc_lang.syntax.parser import parse_text
+from edingcnc_lang.runner import Run, RunOptions
 
 MDI_PATH = "<mdi>"
 

@@ -14,31 +14,38 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from . import nodes as n
-from . import tables as t
-from .canon import AXES, Event, Move, Pose
-from .config import MachineConfig, load_config, save_variables
-from .errors import EcncError, Interrupted, Location, MachineError
-from .host import Host
-from .interpreter import Interpreter
-from .interpreter.commands import tools_used
-from .interpreter.observe import Observer
-from .kinematics.base import Kinematics
-from .kinematics.builtin import TrivialKinematics
-from .kinematics.loader import load_kinematics
-from .motion import MotionStage, PlannerStage
-from .outputs import (CallbackSink, EventsWriter, SamplesWriter, TraceWriter, check_outputs, ensure_parent,
-                      output_identities)
-from .diagnostics import Diagnostic
-from .limits import DEFAULT_MAX_STEPS
-from .parser import StatementReader, check_file, parse_file, parse_text, read_statements
-from .planner.estimate import Estimate, Timing
-from .planner.overrides import Overrides
-from .planner.stage import Planner, TimedSink
-from .planner.untimed import Untimed
-from .source import iter_file_lines, iter_text_lines
-from .stages import STAGES, Pipeline
-from .stages.height_comp import HeightCompensation
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import AXES, Event, Move, Pose
+from edingcnc_lang.config.machine_config import MachineConfig, load_config, save_variables
+from edingcnc_lang.errors import EcncError, Interrupted, Location, MachineError
+from edingcnc_lang.host import Host
+from edingcnc_lang.machine.interpreter import Interpreter
+from edingcnc_lang.machine.named_commands import tools_used
+from edingcnc_lang.machine.observe import Observer
+from edingcnc_lang.kinematics.base import Kinematics
+from edingcnc_lang.kinematics.builtin import TrivialKinematics
+from edingcnc_lang.kinematics.loader import load_kinematics
+from edingcnc_lang.motion.stage import MotionStage, PlannerStage
+from edingcnc_lang.motion.sinks import (
+    CallbackSink,
+    EventsWriter,
+    SamplesWriter,
+    TraceWriter,
+    check_outputs,
+    ensure_parent,
+    output_identities,
+)
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
+from edingcnc_lang.syntax.parser import StatementReader, check_file, parse_file, parse_text, read_statements
+from edingcnc_lang.motion.planner.estimate import Estimate, Timing
+from edingcnc_lang.motion.planner.overrides import Overrides
+from edingcnc_lang.motion.planner.stage import Planner, TimedSink
+from edingcnc_lang.motion.planner.untimed import Untimed
+from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
+from edingcnc_lang.pipeline import STAGES, Pipeline
+from edingcnc_lang.pipeline.height_comp import HeightCompensation
 
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
@@ -116,7 +123,7 @@ class RunOptions:
     # False: time the moves only if an output reads time (trace, samples, events, on_timed_move);
     # otherwise the run skips the planner (no numpy) and its estimate and limits are None
     plan: bool = True
-    # watches every statement, branch and sub call (the debugger, macro coverage): interpreter/observe.py
+    # watches every statement, branch and sub call (the debugger, macro coverage): machine/observe.py
     observer: Observer | None = None
     # parameters set before the job's first line (after the macro files' top-level lines and the
     # ini's initialString, before the start sub), as if the machine had them: a test's starting state

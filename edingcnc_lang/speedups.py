@@ -3,8 +3,8 @@
 The compiled core is optional: ``pip install`` builds it when a C compiler is there and goes on
 without it when not.  It does exactly what the Python functions do (the equivalence tests run
 both): finding the lines that are not plain word lines in the check pass
-(``parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
-(``interpreter.bulk.plain_moves``) and formatting trace rows (``outputs.trace_rows``), byte for byte.  ``ECNC_PURE_PYTHON=1``
+(``syntax.parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
+(``machine.bulk.plain_moves``) and formatting trace rows (``motion.sinks.trace_rows``), byte for byte.  ``ECNC_PURE_PYTHON=1``
 selects the Python core at run time; ``ecnc --version`` says which one runs.
 """
 from __future__ import annotations
@@ -19,7 +19,7 @@ def _compiled() -> Any:
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
         return None
     try:
-        from . import _speedups  # type: ignore[attr-defined]
+        from edingcnc_lang import _speedups  # type: ignore[attr-defined]
     except ImportError:
         return None
     return _speedups
@@ -42,11 +42,11 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     """``parser.non_plain_lines`` on the core that runs (see there)."""
     global non_plain_lines
     if _CORE is None:
-        non_plain_lines = _pick("non_plain_lines", ".parser")
+        non_plain_lines = _pick("non_plain_lines", ".syntax.parser")
     else:
         from functools import partial
 
-        from .limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+        from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
 
         non_plain_lines = partial(_CORE.non_plain_lines, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS)
     return non_plain_lines(chunk)
@@ -55,12 +55,12 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
 def plain_moves(*args: Any) -> Any:
     """``interpreter.bulk.plain_moves`` on the core that runs (see there)."""
     global plain_moves
-    plain_moves = _pick("plain_moves", ".interpreter.bulk")
+    plain_moves = _pick("plain_moves", ".machine.bulk")
     return plain_moves(*args)
 
 
 def trace_rows(*args: Any) -> Any:
-    """``outputs.trace_rows`` on the core that runs (see there)."""
+    """``motion.sinks.trace_rows`` on the core that runs (see there)."""
     global trace_rows
-    trace_rows = _pick("trace_rows", ".outputs")
+    trace_rows = _pick("trace_rows", ".motion.sinks")
     return trace_rows(*args)

@@ -10,8 +10,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang import ini as ini_module
-from edingcnc_lang.config import (
+from edingcnc_lang.config import ini as ini_module
+from edingcnc_lang.config.machine_config import (
     PERSISTED,
     MachineConfig,
     is_persisted,
@@ -19,8 +19,8 @@ from edingcnc_lang.config import (
     save_variables,
 )
 from edingcnc_lang.errors import ConfigError
-from edingcnc_lang.ini import read_ini
-from edingcnc_lang.limits import MAX_INI_BYTES
+from edingcnc_lang.config.ini import read_ini
+from edingcnc_lang.syntax.input_limits import MAX_INI_BYTES
 
 SAMPLE = Path("/work/shared/samples/cnc.ini")
 DATA = Path(__file__).parent / "data" / "config"
@@ -337,7 +337,7 @@ def test_save_then_load_round_trips(tmp_path_factory: pytest.TempPathFactory,
 
 def test_axis_limits_are_the_joints_on_a_trivial_machine_and_the_cartesian_box_with_kinematics() -> None:
     """One answer for the limits report and the pictures: which travel applies to the axes."""
-    from edingcnc_lang.config import MachineConfig, load_config
+    from edingcnc_lang.config.machine_config import MachineConfig, load_config
 
     root = Path(__file__).resolve().parent.parent
     delta = load_config(root / "examples/delta/cnc.ini")

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from edingcnc_lang.heightmap import HeightMap, HeightMapError, ProbeAt, ZhcTable, read_surface
+from edingcnc_lang.config.heightmap import HeightMap, HeightMapError, ProbeAt, ZhcTable, read_surface
 
 TILTED = HeightMap((0.0, 10.0, 20.0), (0.0, 10.0), ((0.0, 1.0, 2.0), (0.5, 1.5, 2.5)))  # z = x/10 + y/20
 

@@ -1,4 +1,4 @@
-"""The input limits (edingcnc_lang/limits.py): each refused with a clear error by parse, lint and run,
+"""The input limits (edingcnc_lang/syntax/input_limits.py): each refused with a clear error by parse, lint and run,
 and input right at every limit goes through every stage (parse, JSON, print, run, lint)."""
 from __future__ import annotations
 
@@ -8,12 +8,18 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang import run_string
-from edingcnc_lang.limits import MAX_BLOCK_DEPTH, MAX_BRACKET_DEPTH, MAX_LINE_LENGTH, MAX_LINE_OPERATORS, line_problem
+from edingcnc_lang.syntax.input_limits import (
+    MAX_BLOCK_DEPTH,
+    MAX_BRACKET_DEPTH,
+    MAX_LINE_LENGTH,
+    MAX_LINE_OPERATORS,
+    line_problem,
+)
 from edingcnc_lang.lint import lint_paths
-from edingcnc_lang.parser import parse_text
-from edingcnc_lang.printer import program_text
-from edingcnc_lang.serialize import to_data
-from edingcnc_lang.source import iter_file_lines
+from edingcnc_lang.syntax.parser import parse_text
+from edingcnc_lang.syntax.printer import program_text
+from edingcnc_lang.syntax.serialize import to_data
+from edingcnc_lang.syntax.source import iter_file_lines
 from tests.cli_runner import invoke
 
 PAST_THE_LIMITS = [  # (source, line, code, start of the message): the issue's reproductions among them

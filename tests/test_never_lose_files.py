@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang import ini as ini_module
-from edingcnc_lang.config import load_config
+from edingcnc_lang.config import ini as ini_module
+from edingcnc_lang.config.machine_config import load_config
 from edingcnc_lang.errors import ConfigError, EcncError, UsageFailure
 from edingcnc_lang.runner import Run, RunOptions, run_string
 from tests.cli_runner import invoke

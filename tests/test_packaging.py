@@ -17,7 +17,7 @@ CHECK = """
 import edingcnc_lang, sys
 from pathlib import Path
 assert Path(edingcnc_lang.__file__).resolve().is_relative_to(Path(sys.argv[1]).resolve()), edingcnc_lang.__file__
-from edingcnc_lang.parser import parse_file
+from edingcnc_lang.syntax.parser import parse_file
 from importlib import resources
 program = parse_file("job.nc")
 assert len(program.body) == 2, program
@@ -33,7 +33,7 @@ def test_wheel_works_outside_the_repository(tmp_path: Path) -> None:
                    check=True, capture_output=True)
     wheel = next(wheels.glob("edingcnc_lang-*.whl"))
     names = set(zipfile.ZipFile(wheel).namelist())
-    for needed in ("edingcnc_lang/grammar/gcode.lark", "edingcnc_lang/grammar/macro.lark",
+    for needed in ("edingcnc_lang/syntax/grammar/gcode.lark", "edingcnc_lang/syntax/grammar/macro.lark",
                    "edingcnc_lang/stdlib/macro.cnc", "edingcnc_lang/kins/rotatekins.py",
                    "edingcnc_lang/kins/c/rotatekins.c", "edingcnc_lang/knowledge/gm.py",
                    "edingcnc_lang/lsp/server.py"):

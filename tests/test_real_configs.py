@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang import RunOptions, run_string
-from edingcnc_lang.config import LATHES, MACHINE_TYPES, load_config
+from edingcnc_lang.config.machine_config import LATHES, MACHINE_TYPES, load_config
 from tests.cli_runner import invoke
 
 DATA = Path(__file__).parent / "data" / "config"

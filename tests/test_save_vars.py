@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang import ini as ini_module
+from edingcnc_lang.config import ini as ini_module
 from edingcnc_lang.errors import ConfigError
 from edingcnc_lang.runner import RunOptions, run_string
 

@@ -17,10 +17,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import RunOptions, run_file
-from edingcnc_lang.interpreter.bulk import NO_MOTION, plain_moves
-from edingcnc_lang.limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
-from edingcnc_lang.outputs import trace_rows
-from edingcnc_lang.parser import non_plain_lines
+from edingcnc_lang.machine.bulk import NO_MOTION, plain_moves
+from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+from edingcnc_lang.motion.sinks import trace_rows
+from edingcnc_lang.syntax.parser import non_plain_lines
 
 compiled = pytest.importorskip("edingcnc_lang._speedups", reason="the compiled core is not built here")
 

@@ -15,12 +15,12 @@ from typing import Any, NoReturn
 
 import click
 
-from .. import __version__
-from ..speedups import CORE
-from ..errors import EXIT_OK, EcncError, Interrupted, JobAborted, Location, UsageFailure
-from .base import CONTEXT_SETTINGS, LazyGroup, show_usage_error, usage_message
-from .streams import flush_quietly, make_streams_usable, quiet_stdout
-from .style import styled
+from edingcnc_lang import __version__
+from edingcnc_lang.speedups import CORE
+from edingcnc_lang.errors import EXIT_OK, EcncError, Interrupted, JobAborted, Location, UsageFailure
+from edingcnc_lang.cli.base import CONTEXT_SETTINGS, LazyGroup, show_usage_error, usage_message
+from edingcnc_lang.cli.streams import flush_quietly, make_streams_usable, quiet_stdout
+from edingcnc_lang.cli.style import styled
 
 # What click exits with on a closed output pipe; scripts may rely on it.
 EXIT_ABORTED = 1
@@ -113,7 +113,7 @@ def report(err: EcncError, as_json: bool, to_stderr: bool = True) -> int:
     if as_json:
         partial = getattr(err, "result", None)
         doc = partial.to_json() if partial is not None else {"error": err.to_json()}
-        from ..serialize import json_text
+        from edingcnc_lang.syntax.serialize import json_text
 
         try:
             print(json_text(doc, indent=1))

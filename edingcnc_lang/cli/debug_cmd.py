@@ -5,7 +5,7 @@ import sys
 
 import click
 
-from .base import Command
+from edingcnc_lang.cli.base import Command
 
 
 @click.command("debug", cls=Command, short_help="Debug jobs and macro files over the Debug Adapter Protocol.")
@@ -16,7 +16,7 @@ def debug() -> int:
     (`ini`, `macro`, `userMacro`, `answers`, `probeSurface`, `stopOnEntry`, `noDebug`); see
     docs/debugging.md.  Nothing else is written to standard output.
     """
-    from ..debug import serve
+    from edingcnc_lang.debug import serve
 
     protocol_out = sys.stdout.buffer
     sys.stdout = sys.stderr  # a stray print must not break the protocol stream

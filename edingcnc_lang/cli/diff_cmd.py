@@ -7,14 +7,14 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_OK
-from ..plot.names import VIEW_NAMES
-from .base import Command
-from .options import MachineOptions, json_option, machine_options
-from .params import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
+from edingcnc_lang.errors import EXIT_OK
+from edingcnc_lang.plot.names import VIEW_NAMES
+from edingcnc_lang.cli.base import Command
+from edingcnc_lang.cli.options import MachineOptions, json_option, machine_options
+from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
-    from ..host import DialogAnswer
+    from edingcnc_lang.host import DialogAnswer
 
 EXIT_DIFFERS = 1
 
@@ -50,13 +50,13 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     G1, trailing zeros or modal words left out change nothing.
 
     Exit status 0 when nothing differs, 1 when something does."""
-    from ..diff.compare import compare
-    from ..diff.record import record
-    from ..diff.report import render
+    from edingcnc_lang.diff.compare import compare
+    from edingcnc_lang.diff.record import record
+    from edingcnc_lang.diff.report import render
 
     fmt = None
     if output:
-        from ..plot.formats import picture_target
+        from edingcnc_lang.picture_formats import picture_target
 
         fmt = picture_target(Path(output))  # before the runs: a wrong name fails at once
     new_machine = dataclasses.replace(machine, ini=ini_new or machine.ini, macro=macro_new or machine.macro,
@@ -67,7 +67,7 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     after = record(Path(new), new_machine.run_options(show_messages=False))
     comparison = compare(before, after, tolerance, limit)
     if output:
-        from ..diff.picture import draw_diff
+        from edingcnc_lang.diff.picture import draw_diff
 
         draw_diff(comparison, Path(output), view, fmt)
     if as_json:

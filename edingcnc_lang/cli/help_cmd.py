@@ -3,9 +3,9 @@ from __future__ import annotations
 
 import click
 
-from ..errors import EXIT_OK
-from .base import Command, usage_error
-from .params import HELP_TOPIC
+from edingcnc_lang.errors import EXIT_OK
+from edingcnc_lang.cli.base import Command, usage_error
+from edingcnc_lang.cli.value_types import HELP_TOPIC
 
 
 @click.command("help", cls=Command, short_help="Explain a lint or kins check code (ecnc help V302) or show a command's help.")
@@ -33,13 +33,13 @@ def help_command(ctx: click.Context, topic: tuple[str, ...]) -> int:
 def explain_or_fail(code: str) -> str:
     """The explanation of lint ``code``, else of a G/M code, parameter, command or function of the
     language (the table hover and completion use), or a usage error that points to the lists."""
-    from ..lint import UnknownCode
-    from ..lint.explain import explain, explain_kins
+    from edingcnc_lang.lint import UnknownCode
+    from edingcnc_lang.lint.explain import explain, explain_kins
 
     try:
         return explain(code)
     except UnknownCode:
-        from ..knowledge import describe
+        from edingcnc_lang.knowledge import describe
 
         text = explain_kins(code) or describe(code)
         if text is None:

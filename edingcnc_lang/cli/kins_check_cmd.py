@@ -11,15 +11,15 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from ..errors import EXIT_FINDINGS, EXIT_OK
-from .base import Command, usage_error
-from .kins_cmd import guarded, in_child_if_compiled
-from .options import ini_option, json_option
-from ..limits import MAX_CHECK_SAMPLES, MAX_ENVELOPE_RESOLUTION
-from .params import FLOAT, INT, KINEMATICS_NAME, OUTPUT_FILE, PlainInt
+from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK
+from edingcnc_lang.cli.base import Command, usage_error
+from edingcnc_lang.cli.kins_cmd import guarded, in_child_if_compiled
+from edingcnc_lang.cli.options import ini_option, json_option
+from edingcnc_lang.syntax.input_limits import MAX_CHECK_SAMPLES, MAX_ENVELOPE_RESOLUTION
+from edingcnc_lang.cli.value_types import FLOAT, INT, KINEMATICS_NAME, OUTPUT_FILE, PlainInt
 
 if TYPE_CHECKING:
-    from ..kinematics.workbench import CheckOptions
+    from edingcnc_lang.kinematics.workbench import CheckOptions
 
 F = TypeVar("F", bound=Callable[..., Any])
 PLUGIN_HELP = "PLUGIN is a registered name (see `ecnc kins list`) or the path of a .so or .py plug-in."
@@ -47,9 +47,9 @@ class WorkspaceCommand(Command):
 
 def _options(ini: str | None, box: str | None, seed: int, samples: int, tolerance: float | None,
              **extra: Any) -> CheckOptions:
-    from ..kinematics.workbench import CheckOptions
-    from ..kinematics.workbench.check import box_values
-    from ..source import plain_float
+    from edingcnc_lang.kinematics.workbench import CheckOptions
+    from edingcnc_lang.kinematics.workbench.check import box_values
+    from edingcnc_lang.syntax.source import plain_float
 
     values = None
     if box is not None:
@@ -72,7 +72,7 @@ def _workspace_argv(ini: str | None, box: str | None, seed: int, samples: int, t
 
 
 def _print_json(data: object) -> None:
-    from ..serialize import json_text
+    from edingcnc_lang.syntax.serialize import json_text
 
     print(json_text(data, indent=2))
 
@@ -85,7 +85,7 @@ def _print_json(data: object) -> None:
 @click.option("--no-speed", is_flag=True, help="Leave out the speed measurement (a faster check).")
 @json_option("Print the report as JSON.")
 def check(plugin: str, no_speed: bool, as_json: bool, **workspace: Any) -> int:
-    from ..kinematics.workbench import check_plugin
+    from edingcnc_lang.kinematics.workbench import check_plugin
 
     report = check_plugin(plugin, _options(speed=not no_speed, **workspace))
     _print_json(report.to_json()) if as_json else print(report.format())
@@ -100,7 +100,7 @@ def check(plugin: str, no_speed: bool, as_json: bool, **workspace: Any) -> int:
 @_workspace_options
 @json_option("Print the comparison as JSON.")
 def compare(a: str, b: str, as_json: bool, **workspace: Any) -> int:
-    from ..kinematics.workbench import compare_plugins
+    from edingcnc_lang.kinematics.workbench import compare_plugins
 
     result = compare_plugins(a, b, _options(**workspace))
     _print_json(result.to_json()) if as_json else print(result.format())
@@ -119,10 +119,10 @@ def compare(a: str, b: str, as_json: bool, **workspace: Any) -> int:
 def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     from pathlib import Path
 
-    from ..kinematics.workbench import check as workbench
-    from ..kinematics.workbench.envelope import plot_envelope
+    from edingcnc_lang.kinematics.workbench import check as workbench
+    from edingcnc_lang.kinematics.workbench.envelope import plot_envelope
 
-    from ..plot.formats import picture_format
+    from edingcnc_lang.picture_formats import picture_format
 
     fmt = picture_format(Path(output))  # before the workspace is searched
     options = _options(**workspace)

@@ -12,13 +12,13 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_OK
-from .base import Argument, Command, LazyGroup, usage_error
-from .options import ini_option, json_option
-from .params import EXISTING_FILE, FLOAT, KINEMATICS_NAME, OUTPUT_FILE
+from edingcnc_lang.errors import EXIT_OK
+from edingcnc_lang.cli.base import Argument, Command, LazyGroup, usage_error
+from edingcnc_lang.cli.options import ini_option, json_option
+from edingcnc_lang.cli.value_types import EXISTING_FILE, FLOAT, KINEMATICS_NAME, OUTPUT_FILE
 
 if TYPE_CHECKING:
-    from ..kinematics.base import Kinematics, Pose
+    from edingcnc_lang.kinematics.base import Kinematics, Pose
 
 # The subcommands, "module:attribute" in this package (a new one is one line here).
 SUBCOMMANDS = {"list": "kins_cmd:list_kinematics", "inverse": "kins_cmd:inverse", "forward": "kins_cmd:forward",
@@ -31,7 +31,7 @@ kins = LazyGroup("kins", lazy=SUBCOMMANDS, short_help="List, evaluate, build and
 
 def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
     """The ``[KINEMATICS]`` section and the ini's folder (where plug-in files are looked for)."""
-    from ..config import load_config
+    from edingcnc_lang.config.machine_config import load_config
 
     if ini is None:
         return {}, ()
@@ -40,9 +40,9 @@ def _settings(ini: Path | None) -> tuple[Mapping[str, str], tuple[Path, ...]]:
 
 
 def _switched_on(name: str, ini: str | None) -> Kinematics:
-    from ..errors import PluginError
-    from ..kinematics import abi
-    from ..kinematics.loader import load_kinematics
+    from edingcnc_lang.errors import PluginError
+    from edingcnc_lang.kinematics import abi
+    from edingcnc_lang.kinematics.loader import load_kinematics
 
     settings, search_dirs = _settings(Path(ini) if ini else None)
     kins = guarded(load_kinematics(name, settings, search_dirs))
@@ -70,7 +70,7 @@ def _print_pose(values: Pose, names: Sequence[str], plugin: str, call: str) -> N
     import json
     import math
 
-    from ..errors import PluginError
+    from edingcnc_lang.errors import PluginError
 
     if not all(math.isfinite(v) for v in values):
         shown = " ".join(f"{n}={v}" for n, v in zip(names, values))
@@ -86,7 +86,7 @@ def list_kinematics(as_json: bool, ini: str | None) -> int:
     """Registered kinematics: name, type and version (tab separated); with --ini also the ini's plug-in."""
     import json
 
-    from ..kinematics.loader import available_kinematics
+    from edingcnc_lang.kinematics.loader import available_kinematics
 
     rows = available_kinematics()
     if ini:
@@ -101,9 +101,9 @@ def list_kinematics(as_json: bool, ini: str | None) -> int:
 
 def _ini_plugin(ini: Path) -> tuple[str, int, str]:
     """(name as the ini writes it, type, version) of the ini's plug-in; a broken one says why, as in the list."""
-    from ..errors import PluginError
-    from ..ini import read_ini
-    from ..kinematics.loader import load_kinematics
+    from edingcnc_lang.errors import PluginError
+    from edingcnc_lang.config.ini import read_ini
+    from edingcnc_lang.kinematics.loader import load_kinematics
 
     name = read_ini(ini).get_str("KINEMATICS", "kinematicsDLLName", "").strip()
     if not name:
@@ -130,7 +130,7 @@ def _conversion(name: str, summary: str, values: str) -> click.Command:
 
 @_conversion("inverse", "Joints for a Cartesian position (missing A B C are 0).", "X Y Z [A B C]")
 def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
-    from ..kinematics.base import AXES, JOINTS
+    from edingcnc_lang.kinematics.base import AXES, JOINTS
 
     pos = _pose(values, AXES)
     isolated = _in_child("inverse", name, ini, pos)
@@ -142,7 +142,7 @@ def inverse(name: str, ini: str | None, values: tuple[float, ...]) -> int:
 
 @_conversion("forward", "Cartesian position for joint positions (missing JA JB JC are 0).", "JX JY JZ [JA JB JC]")
 def forward(name: str, ini: str | None, values: tuple[float, ...]) -> int:
-    from ..kinematics.base import AXES, JOINTS
+    from edingcnc_lang.kinematics.base import AXES, JOINTS
 
     joints = _pose(values, JOINTS)
     isolated = _in_child("forward", name, ini, joints)
@@ -164,8 +164,8 @@ def in_child_if_compiled(name: str, ini: str | None, argv: list[str]) -> int | N
     output is passed on and its status returned.  None: not compiled, or already the child."""
     import sys
 
-    from ..kinematics.loader import is_compiled_plugin
-    from ..kinematics.workbench.isolate import GUARD_VARIABLE, run_command_isolated
+    from edingcnc_lang.kinematics.loader import is_compiled_plugin
+    from edingcnc_lang.kinematics.workbench.isolate import GUARD_VARIABLE, run_command_isolated
 
     if GUARD_VARIABLE in os.environ or not is_compiled_plugin(name, _settings(Path(ini) if ini else None)[1]):
         return None  # already the child, or a Python plug-in
@@ -177,7 +177,7 @@ def in_child_if_compiled(name: str, ini: str | None, argv: list[str]) -> int | N
 
 def guarded(kins: Kinematics) -> Kinematics:
     """In the child of in_child_if_compiled, a compiled plug-in's calls are recorded before they are made."""
-    from ..kinematics.workbench.isolate import GUARD_VARIABLE, guard_calls
+    from edingcnc_lang.kinematics.workbench.isolate import GUARD_VARIABLE, guard_calls
 
     guard = os.environ.get(GUARD_VARIABLE)
     if guard and hasattr(kins, "_fn"):
@@ -192,8 +192,8 @@ def guarded(kins: Kinematics) -> Kinematics:
 @click.option("--cc", default=lambda: os.environ.get("CC", "cc"), show_default="$CC or cc", help="C compiler to run.")
 def build_library(source: str, output: str | None, cc: str) -> int:
     """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
-    from ..kinematics.build import build_plugin
-    from ..outputs import check_outputs
+    from edingcnc_lang.kinematics.build import build_plugin
+    from edingcnc_lang.motion.sinks import check_outputs
 
     check_outputs({"-o": Path(output) if output else None}, [Path(source)])  # the compiler would destroy it
     print(build_plugin(Path(source), Path(output) if output else None, cc))

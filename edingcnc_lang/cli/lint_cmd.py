@@ -7,18 +7,18 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_FINDINGS, EXIT_OK
-from . import progress
-from .base import Command, usage_error
-from ..gcpause import whole_trees
-from .options import ini_option, macro_options
-from .params import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN, PlainInt
-from .streams import STDIN_NAME, stdin_as_file
-from .style import styled
+from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK
+from edingcnc_lang.cli import progress
+from edingcnc_lang.cli.base import Command, usage_error
+from edingcnc_lang.gcpause import whole_trees
+from edingcnc_lang.cli.options import ini_option, macro_options
+from edingcnc_lang.cli.value_types import INPUT_PATH, LINT_CODE, LINT_CODES, STDIN, PlainInt
+from edingcnc_lang.cli.streams import STDIN_NAME, stdin_as_file
+from edingcnc_lang.cli.style import styled
 
 if TYPE_CHECKING:
-    from ..diagnostics import Diagnostic
-    from ..lint import LintOptions
+    from edingcnc_lang.diagnostics import Diagnostic
+    from edingcnc_lang.lint import LintOptions
 
 # The keys of lint.formats.FORMATS (a test keeps them in step): importing the linter here would
 # make every other command start slower.
@@ -51,15 +51,15 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
 
     PATH - reads a job from standard input (its macro files: --macro, --user-macro).
     """
-    from ..lint import LintOptions, lint_paths_parallel
-    from ..lint.driver import expand
-    from ..lint.formats import FORMATS, list_codes
+    from edingcnc_lang.lint import LintOptions, lint_paths_parallel
+    from edingcnc_lang.lint.driver import expand
+    from edingcnc_lang.lint.formats import FORMATS, list_codes
 
     if show_codes:
         print(list_codes())
         return EXIT_OK
     if explain:
-        from .help_cmd import explain_or_fail
+        from edingcnc_lang.cli.help_cmd import explain_or_fail
 
         print(explain_or_fail(explain))
         return EXIT_OK
@@ -85,7 +85,7 @@ def _lint_with_stdin(paths: tuple[str, ...], options: LintOptions) -> list[Diagn
     """
     import dataclasses
 
-    from ..lint import lint_paths
+    from edingcnc_lang.lint import lint_paths
 
     with stdin_as_file() as job:
         findings = lint_paths([str(job) if p == STDIN else p for p in paths], options)

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import click
 
-from .base import Command
+from edingcnc_lang.cli.base import Command
 
 
 @click.command("lsp", cls=Command,
@@ -15,6 +15,6 @@ def lsp(stdio: bool) -> int:
 
     Needs the lsp extra: pip install 'edingcnc-lang[lsp]'.
     """
-    from ..lsp import main
+    from edingcnc_lang.lsp import main
 
     return main()

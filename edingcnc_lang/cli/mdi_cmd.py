@@ -15,17 +15,17 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_OK, EcncError, JobAborted
-from .base import Command
-from .options import MachineOptions, machine_options
-from .style import styled
+from edingcnc_lang.errors import EXIT_OK, EcncError, JobAborted
+from edingcnc_lang.cli.base import Command
+from edingcnc_lang.cli.options import MachineOptions, machine_options
+from edingcnc_lang.cli.style import styled
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-    from ..canon import Pose
-    from ..host import DialogAnswer, DialogField
-    from ..mdi import MdiOutcome
+    from edingcnc_lang.canon import Pose
+    from edingcnc_lang.host import DialogAnswer, DialogField
+    from edingcnc_lang.mdi import MdiOutcome
 
 PROMPT, MORE = "MDI> ", "...> "
 EXIT_WORDS = {"exit", "quit"}
@@ -41,7 +41,7 @@ def mdi(machine: MachineOptions) -> int:
     only an expression or #n prints its value. exit, quit or end of input (Ctrl-D) ends it. From
     a pipe there is no prompt; the exit status is then that of the first failing line (0 if none).
     """
-    from ..mdi import MdiSession, open_blocks
+    from edingcnc_lang.mdi import MdiSession, open_blocks
 
     interactive = sys.stdin.isatty() and sys.stdout.isatty()
     options = machine.run_options(show_messages=True)
@@ -106,15 +106,15 @@ def _show(outcome: MdiOutcome) -> None:
 
 
 def _pose(values: Pose) -> str:
-    from ..canon import format_pose
+    from edingcnc_lang.canon import format_pose
 
     return format_pose(values, spec=".4f")
 
 
 def ask_dialog(title: str, fields: Sequence[DialogField]) -> DialogAnswer:
     """A dlgmsg at the prompt: each field with its value (Enter keeps it), then OK; Ctrl-C cancels."""
-    from ..host import DialogAnswer
-    from ..source import plain_float
+    from edingcnc_lang.host import DialogAnswer
+    from edingcnc_lang.syntax.source import plain_float
 
     print(f"dialog: {title}")
     values: dict[int, float] = {}

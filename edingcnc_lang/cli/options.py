@@ -16,15 +16,24 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from ..errors import printable
-from .params import ANSWER, EXISTING_FILE, EXISTING_FOLDER, INI_FILE, INPUT_FILE, MODBUS_VALUES, POSITIVE_INT, PlainFloat
+from edingcnc_lang.errors import printable
+from edingcnc_lang.cli.value_types import (
+    ANSWER,
+    EXISTING_FILE,
+    EXISTING_FOLDER,
+    INI_FILE,
+    INPUT_FILE,
+    MODBUS_VALUES,
+    POSITIVE_INT,
+    PlainFloat,
+)
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-    from ..diagnostics import Diagnostic
-    from ..host import DialogAnswer, DialogCallback, DialogField
-    from ..runner import RunOptions
+    from edingcnc_lang.diagnostics import Diagnostic
+    from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField
+    from edingcnc_lang.runner import RunOptions
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -92,13 +101,13 @@ class MachineOptions:
 
         With ``show_messages`` the job's ``msg``/``warnmsg``/``errmsg`` print on stderr as they happen.
         """
-        from ..host import Host, scripted_dialogs, scripted_modbus
-        from ..limits import DEFAULT_MAX_STEPS
-        from ..runner import RunOptions
+        from edingcnc_lang.host import Host, scripted_dialogs, scripted_modbus
+        from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
+        from edingcnc_lang.runner import RunOptions
 
         probe = None
         if self.probe_surface:
-            from ..heightmap import ProbeAt, read_surface
+            from edingcnc_lang.config.heightmap import ProbeAt, read_surface
 
             probe = ProbeAt(read_surface(self.probe_surface))
 
@@ -118,7 +127,7 @@ class MachineOptions:
 def print_message(kind: str, text: str, path: str, line: int) -> None:
     """A message of the job on stderr: ``PATH:LINE: msg|warning|error|log: TEXT``."""
     if kind in MESSAGE_LABEL:
-        from .style import styled
+        from edingcnc_lang.cli.style import styled
 
         print(styled(printable(f"{path}:{line}: {MESSAGE_LABEL[kind]}: {text}"), sys.stderr), file=sys.stderr)
 

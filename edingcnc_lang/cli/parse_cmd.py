@@ -5,11 +5,11 @@ import sys
 
 import click
 
-from ..errors import EXIT_OK
-from .base import Command
-from .options import json_option
-from .params import INPUT_FILE
-from .streams import job_to_read_twice
+from edingcnc_lang.errors import EXIT_OK
+from edingcnc_lang.cli.base import Command
+from edingcnc_lang.cli.options import json_option
+from edingcnc_lang.cli.value_types import INPUT_FILE
+from edingcnc_lang.cli.streams import job_to_read_twice
 
 
 @click.command("parse", cls=Command, short_help="Parse FILE without running it (exit 65 on syntax errors).")
@@ -18,8 +18,8 @@ from .streams import job_to_read_twice
 @click.option("--no-spans", is_flag=True, help="Leave source positions out of the JSON.")
 def parse(file: str, as_json: bool, no_spans: bool) -> int:
     """Parse FILE without running it (exit 65 on syntax errors); FILE - reads standard input."""
-    from ..parser import check_file, read_statements
-    from ..serialize import write_program
+    from edingcnc_lang.syntax.parser import check_file, read_statements
+    from edingcnc_lang.syntax.serialize import write_program
 
     with job_to_read_twice(file) as (path, name):
         check_file(path, name)  # streams: memory stays flat however long the file is

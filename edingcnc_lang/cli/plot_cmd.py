@@ -5,11 +5,11 @@ from pathlib import Path
 
 import click
 
-from ..plot.names import COLOR_MODES, VIEW_NAMES
-from .base import Command
-from .options import MachineOptions, job_argument, machine_options, override_options
-from .params import OUTPUT_FILE
-from .view_cmd import job_to_draw, report
+from edingcnc_lang.plot.names import COLOR_MODES, VIEW_NAMES
+from edingcnc_lang.cli.base import Command
+from edingcnc_lang.cli.options import MachineOptions, job_argument, machine_options, override_options
+from edingcnc_lang.cli.value_types import OUTPUT_FILE
+from edingcnc_lang.cli.view_cmd import job_to_draw, report
 
 
 @click.command("plot", cls=Command, short_help="Draw the toolpath of JOB as a PNG, SVG or PDF picture.")
@@ -31,7 +31,7 @@ def plot(job: str, machine: MachineOptions, feed_override: float, rapid_override
          view: str, color: str, fit: str, joints: bool) -> int:
     """Run JOB and draw its toolpath: rapids dashed, feeds solid, arcs as arcs, the work zero, the
     part's bounding box and the machine limits. Prints the file written."""
-    from ..plot.commands import plot_job
+    from edingcnc_lang.plot.actions import plot_job
 
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
     with job_to_draw(job, output) as (path, name):

@@ -12,7 +12,7 @@ import time
 from collections.abc import Callable
 from types import TracebackType
 
-from .style import wants_colour
+from edingcnc_lang.cli.style import wants_colour
 
 DELAY = 1.0     # seconds of work before the line appears
 INTERVAL = 0.2  # seconds between updates

@@ -7,15 +7,21 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_OK
-from . import progress
-from .base import Command, usage_error
-from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options, override_options
-from .params import OUTPUT_FILE, STDOUT
-from .streams import STDIN_NAME, job_to_read_twice
+from edingcnc_lang.errors import EXIT_OK
+from edingcnc_lang.cli import progress
+from edingcnc_lang.cli.base import Command, usage_error
+from edingcnc_lang.cli.options import (
+    MachineOptions,
+    job_or_stdin_argument,
+    json_option,
+    machine_options,
+    override_options,
+)
+from edingcnc_lang.cli.value_types import OUTPUT_FILE, STDOUT
+from edingcnc_lang.cli.streams import STDIN_NAME, job_to_read_twice
 
 if TYPE_CHECKING:
-    from ..runner import Run
+    from edingcnc_lang.runner import Run
 
 
 @click.command("run", cls=Command, short_help="Run JOB as the controller would (in simulation).")
@@ -36,7 +42,7 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
 
     JOB - reads the job from standard input.
     """
-    from ..runner import Run
+    from edingcnc_lang.runner import Run
 
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
@@ -45,7 +51,7 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
     if len(to_stdout) > 1:
         raise usage_error(f"only one output can go to standard output, not {' and '.join(to_stdout)}")
     if samples:
-        from ..outputs import samples_format_problem
+        from edingcnc_lang.motion.sinks import samples_format_problem
 
         problem = samples_format_problem(Path(samples))
         if problem:
@@ -64,7 +70,7 @@ def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, sam
         with progress.Progress(_probe(run, job), show):
             result = run.execute_file(path, name)
     if as_json:
-        from ..serialize import json_text  # only with --json: a short run starts faster without it
+        from edingcnc_lang.syntax.serialize import json_text  # only with --json: a short run starts faster without it
 
         print(json_text(result.to_json(), indent=1))
     if progress.wanted(quiet) and result.estimate is not None:  # for people at a terminal; scripts read --json

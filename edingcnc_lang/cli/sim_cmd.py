@@ -8,11 +8,11 @@ from typing import Any
 
 import click
 
-from ..errors import EXIT_FINDINGS, EXIT_OK, JobAborted
-from .base import Command, usage_error
-from .options import MachineOptions, job_or_stdin_argument, json_option, machine_options
-from .params import EXISTING_FILE, OUTPUT_FILE
-from .streams import job_to_read_twice
+from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, JobAborted
+from edingcnc_lang.cli.base import Command, usage_error
+from edingcnc_lang.cli.options import MachineOptions, job_or_stdin_argument, json_option, machine_options
+from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE
+from edingcnc_lang.cli.streams import job_to_read_twice
 
 
 class StockBox(click.ParamType):
@@ -23,7 +23,7 @@ class StockBox(click.ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, ...]:
         if isinstance(value, tuple):
             return value
-        from ..source import plain_float  # plain decimals only, as every number the CLI takes
+        from edingcnc_lang.syntax.source import plain_float  # plain decimals only, as every number the CLI takes
 
         try:
             numbers = tuple(plain_float(v) for v in str(value).split(","))
@@ -62,14 +62,14 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
     """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
     stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
     stock (hints), with the removed and remaining volumes."""
-    from ..outputs import ensure_parent
-    from ..plot.formats import picture_target
-    from ..sim import report
-    from ..sim.findings import failing
-    from ..sim.job import simulate
-    from ..sim.stock import Stock
-    from ..sim.stl import stock_from_stl
-    from ..sim.tools import load_tools
+    from edingcnc_lang.motion.sinks import ensure_parent
+    from edingcnc_lang.picture_formats import picture_target
+    from edingcnc_lang.sim import report
+    from edingcnc_lang.sim.findings import failing
+    from edingcnc_lang.sim.job import simulate
+    from edingcnc_lang.sim.stock import Stock
+    from edingcnc_lang.sim.stl import stock_from_stl
+    from edingcnc_lang.sim.tools import load_tools
 
     if (box is None) == (stock_stl is None):
         raise usage_error("give the stock as exactly one of --stock XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX and --stock-stl FILE")
@@ -84,18 +84,18 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
         result = simulate(path, stock, options, tools, first_tool, name=name)
     deviation = None
     if compare_stl:
-        from ..sim.compare import compare
+        from edingcnc_lang.sim.compare import compare
 
         deviation = compare(stock, compare_stl)
     if output and fmt:
-        from ..sim.picture import draw_stock
+        from edingcnc_lang.sim.picture import draw_stock
 
         count = len(result.findings)
         title = (f"{name or job}: {stock.removed_volume:,.0f} mm³ removed, "
                  f"{count} finding{'s' * (count != 1)}")
         draw_stock(stock, ensure_parent(Path(output)), fmt, result.findings, title, deviation)
     if stl:
-        from ..sim.stl import stock_mesh, write_stl
+        from edingcnc_lang.sim.stl import stock_mesh, write_stl
 
         write_stl(ensure_parent(Path(stl)), stock_mesh(stock))
     if as_json:

@@ -29,7 +29,7 @@ def wants_colour(stream: IO[str] | None) -> bool:
 
 def colour_diagnostics(text: str) -> str:
     """Diagnostics text with ANSI colours: severity words, lint codes by severity, caret lines."""
-    from ..codes import CODES
+    from edingcnc_lang.codes import CODES
 
     def label(match: re.Match[str]) -> str:
         word = match.group(2)

@@ -8,14 +8,14 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX, printable
-from .base import Command, usage_error
-from .params import OUTPUT_FILE, ExistingPath
-from .style import styled, wants_colour
+from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX, printable
+from edingcnc_lang.cli.base import Command, usage_error
+from edingcnc_lang.cli.value_types import OUTPUT_FILE, ExistingPath
+from edingcnc_lang.cli.style import styled, wants_colour
 
 if TYPE_CHECKING:
-    from ..testing.coverage import CoverageData
-    from ..testing.session import TestResult
+    from edingcnc_lang.testing.coverage import CoverageData
+    from edingcnc_lang.testing.session import TestResult
 
 
 @click.command("test", cls=Command, short_help="Run the tests of test_*.toml files; exit 1 if one fails.")
@@ -36,8 +36,8 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
     One line per test (PASS or FAIL, and what differs), then "N passed, M failed".
     Exit 0 all passed, 1 a test failed, 65 a test file does not load, 2 usage.
     """
-    from ..testing.session import run_cases, select
-    from ..testing.spec import TestFileError, discover, load_file
+    from edingcnc_lang.testing.session import run_cases, select
+    from edingcnc_lang.testing.spec import TestFileError, discover, load_file
 
     reports = _coverage_reports(cov_reports) if cov or cov_reports else []
     if junit == "-":
@@ -74,7 +74,7 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
                         report=show)
     print(summary.line)
     if junit:
-        from ..testing.reports import junit_xml
+        from edingcnc_lang.testing.reports import junit_xml
 
         _write(junit, junit_xml(summary))
     if reports and summary.coverage is not None:
@@ -96,8 +96,8 @@ def _coverage_reports(given: tuple[str, ...]) -> list[tuple[str, str]]:
 
 
 def _coverage(reports: list[tuple[str, str]], data: CoverageData) -> None:
-    from ..testing.coverage import summarise
-    from ..testing.reports import coverage_json, coverage_term, write_coverage_html
+    from edingcnc_lang.testing.coverage import summarise
+    from edingcnc_lang.testing.reports import coverage_json, coverage_term, write_coverage_html
 
     files = summarise(data)
     for kind, target in reports:

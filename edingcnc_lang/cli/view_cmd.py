@@ -9,16 +9,16 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
-from ..errors import EXIT_OK, JobAborted
-from ..plot.names import VIEW_NAMES
-from .base import Command
-from .options import MachineOptions, job_argument, machine_options, override_options
-from .params import EXISTING_FILE, OUTPUT_FILE, POSITIVE_INT
-from .sim_cmd import StockBox
-from .streams import job_to_read_twice
+from edingcnc_lang.errors import EXIT_OK, JobAborted
+from edingcnc_lang.plot.names import VIEW_NAMES
+from edingcnc_lang.cli.base import Command
+from edingcnc_lang.cli.options import MachineOptions, job_argument, machine_options, override_options
+from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, POSITIVE_INT
+from edingcnc_lang.cli.sim_cmd import StockBox
+from edingcnc_lang.cli.streams import job_to_read_twice
 
 if TYPE_CHECKING:
-    from ..plot.commands import Written
+    from edingcnc_lang.plot.actions import Written
 
 
 STOCK_RESOLUTION = 0.5  # mm: the page shows a coarse map anyway (sim/frames.py)
@@ -32,7 +32,7 @@ class LineRange(click.ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[int, int]:
         if isinstance(value, tuple):
             return value
-        from ..plot.commands import parse_line_range
+        from edingcnc_lang.plot.actions import parse_line_range
 
         try:
             return parse_line_range(str(value))
@@ -64,7 +64,7 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
-    from ..plot.commands import view_job
+    from edingcnc_lang.plot.actions import view_job
 
     if stock_box is not None and lines is not None:
         raise click.UsageError("--stock shows the whole job being cut: it does not go with --lines")
@@ -72,7 +72,7 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
         raise click.UsageError("--tools gives the tools their shapes for --stock: give the stock too")
     tools = None
     if tools_file:  # a bad file is told before the job runs
-        from ..sim.tools import load_tools
+        from edingcnc_lang.sim.tools import load_tools
 
         tools = load_tools(tools_file)
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
@@ -81,8 +81,8 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
                            max_moves=max_moves, lines=lines, view=view, name=name,
                            old=Path(old) if old else None)
         if stock_box is not None:
-            from ..sim.frames import add_to_page, stock_frames
-            from ..sim.stock import Stock
+            from edingcnc_lang.sim.frames import add_to_page, stock_frames
+            from edingcnc_lang.sim.stock import Stock
 
             stock = Stock.box(stock_box[:3], stock_box[3:], STOCK_RESOLUTION)  # type: ignore[arg-type]
             quiet = machine.run_options(show_messages=False)

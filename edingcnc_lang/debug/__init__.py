@@ -1,7 +1,7 @@
 """``ecnc debug``: a step debugger for jobs and macro files over the Debug Adapter Protocol.
 
 A thin protocol layer (``adapter``) over the run's own stepping (``session``), as debugpy is over
-pydevd.  The interpreter runs in a worker thread; the ``Observer`` seam (interpreter/observe.py)
+pydevd.  The interpreter runs in a worker thread; the ``Observer`` seam (machine/observe.py)
 blocks it while the user looks around.  Modules, one job each:
 
 - ``protocol``: Content-Length framing of DAP messages on a byte stream
@@ -17,6 +17,6 @@ See docs/debugging.md.
 """
 from __future__ import annotations
 
-from .adapter import serve
+from edingcnc_lang.debug.adapter import serve
 
 __all__ = ["serve"]

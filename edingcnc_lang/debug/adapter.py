@@ -9,15 +9,21 @@ import os
 from collections.abc import Callable
 from typing import Any, BinaryIO
 
-from ..errors import EcncError
-from ..host import DialogAnswer
-from .breakpoints import sub_of
-from .expressions import (ExpressionError, dialog_answer, evaluate, parse_assignment, parse_expression,
-                          probe_answer)
-from .protocol import Channel, Message, ProtocolError, read_message
-from .launch import Launch, LaunchError, launch_of
-from .session import Session
-from .variables import PERSISTENT, SYSTEM, USER, parameter, scopes, variables
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.host import DialogAnswer
+from edingcnc_lang.debug.breakpoints import sub_of
+from edingcnc_lang.debug.expressions import (
+    ExpressionError,
+    dialog_answer,
+    evaluate,
+    parse_assignment,
+    parse_expression,
+    probe_answer,
+)
+from edingcnc_lang.debug.protocol import Channel, Message, ProtocolError, read_message
+from edingcnc_lang.debug.launch import Launch, LaunchError, launch_of
+from edingcnc_lang.debug.session import Session
+from edingcnc_lang.debug.variables import PERSISTENT, SYSTEM, USER, parameter, scopes, variables
 
 CAPABILITIES = {
     "supportsConfigurationDoneRequest": True,
@@ -90,7 +96,7 @@ class Adapter:
             raise RequestError(str(err)) from None
         self.subs = known_subs(launch)
         if launch.probe_surface is not None:
-            from ..heightmap import read_surface
+            from edingcnc_lang.config.heightmap import read_surface
 
             try:
                 read_surface(launch.probe_surface)
@@ -179,7 +185,7 @@ class Adapter:
                 if assignment is not None:
                     target, expr = assignment
                     index = session.run.interpreter.evaluator.index(target)
-                    from ..interpreter.state import format_value
+                    from edingcnc_lang.machine.state import format_value
 
                     value = evaluate(session.run.interpreter.evaluator, expr)
                     session.edit(index, value)
@@ -188,7 +194,7 @@ class Adapter:
             value = evaluate(session.run.interpreter.evaluator, expr)
         except (ExpressionError, EcncError) as err:
             raise RequestError(getattr(err, "message", None) or str(err)) from None
-        from ..interpreter.state import format_value
+        from edingcnc_lang.machine.state import format_value
 
         return {"result": format_value(value), "variablesReference": 0}
 
@@ -251,8 +257,8 @@ def _shown(answer: DialogAnswer) -> str:
 def known_subs(launch: Launch) -> dict[str, str]:
     """Every sub the run can call, by lower-case name, with its file; a job or macro file that
     does not load is the launch's error."""
-    from ..runner import Run, RunOptions
-    from .breakpoints import facts
+    from edingcnc_lang.runner import Run, RunOptions
+    from edingcnc_lang.debug.breakpoints import facts
 
     try:
         run = Run(RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro, plan=False))

@@ -15,12 +15,12 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-from .. import nodes as n
-from .. import tables as t
-from ..errors import EcncError
-from ..evaluator import Evaluator
-from ..parser import read_statements
-from .expressions import ExpressionError, evaluate, interpolate, parse_expression
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.machine.evaluator import Evaluator
+from edingcnc_lang.syntax.parser import read_statements
+from edingcnc_lang.debug.expressions import ExpressionError, evaluate, interpolate, parse_expression
 
 HIT = re.compile(r"\s*(==|>=|>|%)?\s*(\d+)\s*$")
 

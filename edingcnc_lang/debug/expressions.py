@@ -10,13 +10,13 @@ from __future__ import annotations
 import math
 import re
 
-from .. import nodes as n
-from ..canon import AXES, Pose
-from ..errors import EcncError
-from ..evaluator import Evaluator
-from ..host import DialogAnswer
-from ..line_parser import parse_line
-from ..tree_builder import LineError
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.canon import AXES, Pose
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.machine.evaluator import Evaluator
+from edingcnc_lang.host import DialogAnswer
+from edingcnc_lang.syntax.line_parser import parse_line
+from edingcnc_lang.syntax.tree_builder import LineError
 
 SCRATCH = "#1 = "  # the parser reads an expression as the value of an assignment
 LOG_PART = re.compile(r"\{([^{}]*)\}")
@@ -68,7 +68,7 @@ def evaluate(evaluator: Evaluator, expr: n.Expr) -> float:
 
 def interpolate(evaluator: Evaluator, template: str) -> str:
     """A log point's message: every ``{expression}`` replaced by its value (``T{#5011}`` -> ``T2``)."""
-    from ..interpreter.state import format_value
+    from edingcnc_lang.machine.state import format_value
 
     def value(match: re.Match[str]) -> str:
         try:

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..host import DialogAnswer
+from edingcnc_lang.host import DialogAnswer
 
 
 class LaunchError(Exception):

@@ -14,19 +14,19 @@ import threading
 from pathlib import Path
 from typing import Any
 
-from .. import nodes as n
-from ..canon import Pose
-from ..errors import EXIT_OK, EcncError
-from ..host import DialogAnswer, Host, ProbeCallback
-from ..interpreter.observe import Observer
-from ..interpreter.state import CallFrame, MachineState
-from ..runner import Run, RunOptions
-from .breakpoints import Breakpoints, reached
-from .expressions import evaluate
-from .history import History, Input, Replay, Rewind
-from .launch import Launch
-from .protocol import Channel
-from .variables import Frame, frames_of
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.canon import Pose
+from edingcnc_lang.errors import EXIT_OK, EcncError
+from edingcnc_lang.host import DialogAnswer, Host, ProbeCallback
+from edingcnc_lang.machine.observe import Observer
+from edingcnc_lang.machine.state import CallFrame, MachineState
+from edingcnc_lang.runner import Run, RunOptions
+from edingcnc_lang.debug.breakpoints import Breakpoints, reached
+from edingcnc_lang.debug.expressions import evaluate
+from edingcnc_lang.debug.history import History, Input, Replay, Rewind
+from edingcnc_lang.debug.launch import Launch
+from edingcnc_lang.debug.protocol import Channel
+from edingcnc_lang.debug.variables import Frame, frames_of
 
 LIVE, SEARCH, REPLAY = "live", "search", "replay"
 BACK_COMMANDS = ("stepBack", "reverseContinue")
@@ -161,7 +161,7 @@ class Session(Observer):
     def _execute(self) -> None:
         launch = self.launch
         if launch.probe_surface is not None:
-            from ..heightmap import ProbeAt, read_surface
+            from edingcnc_lang.config.heightmap import ProbeAt, read_surface
 
             self._probe_surface = ProbeAt(read_surface(str(launch.probe_surface)))
         live = self._phase == LIVE

@@ -11,14 +11,14 @@ import os
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .. import tables as t
-from ..canon import AXES
-from ..interpreter.state import format_value
-from ..knowledge import variable
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import AXES
+from edingcnc_lang.machine.state import format_value
+from edingcnc_lang.knowledge import variable
 
 if TYPE_CHECKING:
-    from ..interpreter.state import MachineState
-    from ..runner import Run
+    from edingcnc_lang.machine.state import MachineState
+    from edingcnc_lang.runner import Run
 
 USER, PERSISTENT, SYSTEM, KINEMATICS, MODAL, POSITION = range(1, 7)
 SCOPES = ((USER, "User parameters #1..#3999", range(1, 4000)),

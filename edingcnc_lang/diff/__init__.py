@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..runner import RunOptions
-from .compare import LIMIT, TOLERANCE, Change, Comparison, compare
-from .record import Recording, record
+from edingcnc_lang.runner import RunOptions
+from edingcnc_lang.diff.compare import LIMIT, TOLERANCE, Change, Comparison, compare
+from edingcnc_lang.diff.record import Recording, record
 
 __all__ = ["Change", "Comparison", "Recording", "compare", "diff_files", "record"]
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .record import Samples
+from edingcnc_lang.diff.record import Samples
 
 BLOCK = 512          # points tried at once on the fast path
 WINDOW = 256         # segments searched around the cursor for a point off the fast path

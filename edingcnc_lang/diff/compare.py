@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from .align import CAPTURE, Alignment, align, matched_moves
-from .record import RAPID_KINDS, Recording, Samples, sample
+from edingcnc_lang.diff.align import CAPTURE, Alignment, align, matched_moves
+from edingcnc_lang.diff.record import RAPID_KINDS, Recording, Samples, sample
 
 TOLERANCE = 0.001       # mm, the default of --tolerance
 LIMIT = 50              # changes kept per list (the rest are counted)

@@ -9,17 +9,17 @@ from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from ..errors import EcncError
-from ..plot import views as v
-from ..plot.formats import picture_target
-from ..plot.render import DPI, FEED_WIDTH, RAPID_WIDTH, SIZE_INCHES, _frame
-from .compare import Comparison
-from .record import RAPID_KINDS, Recording, sample
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.plot import views as v
+from edingcnc_lang.picture_formats import picture_target
+from edingcnc_lang.plot.render import DPI, FEED_WIDTH, RAPID_WIDTH, SIZE_INCHES, _frame
+from edingcnc_lang.diff.compare import Comparison
+from edingcnc_lang.diff.record import RAPID_KINDS, Recording, sample
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-    from ..plot.toolpath import Toolpath
+    from edingcnc_lang.plot.toolpath import Toolpath
 
 DRAW_STEP = math.radians(3.0)  # arcs drawn in chords of this angle, as ecnc plot draws them
 OLD_COLOR = "#b0b0b0"

@@ -14,9 +14,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..canon import PLANES, Event, Move, Pose
-from ..planner.estimate import Timing
-from ..runner import Run, RunOptions, RunResult
+from edingcnc_lang.canon import PLANES, Event, Move, Pose
+from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
 RAPID_KINDS = (0, 4)

@@ -7,11 +7,11 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from ..errors import EcncError, printable
-from ..planner.estimate import format_duration
-from ..source import iter_file_lines
-from .compare import LISTS, Change, Comparison
-from .record import Recording
+from edingcnc_lang.errors import EcncError, printable
+from edingcnc_lang.motion.planner.estimate import format_duration
+from edingcnc_lang.syntax.source import iter_file_lines
+from edingcnc_lang.diff.compare import LISTS, Change, Comparison
+from edingcnc_lang.diff.record import Recording
 
 SHOWN_TEXT = 60  # characters of a source line shown
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from edingcnc_lang.limits import MAX_MOVE_SAMPLES
+from edingcnc_lang.syntax.input_limits import MAX_MOVE_SAMPLES
 
 # Sample times closer than this fraction of dt to the end are merged into the end point.
 _END_SLACK = 1e-9

@@ -12,9 +12,9 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cache
 
-from ..canon import AXES
-from ..tables import G_GROUPS, LETTER_ARGS, M_GROUPS, code_key, code_name, is_read_only
-from . import commands, gm, variables
+from edingcnc_lang.canon import AXES
+from edingcnc_lang.machine.tables import G_GROUPS, LETTER_ARGS, M_GROUPS, code_key, code_name, is_read_only
+from edingcnc_lang.knowledge import command_texts as commands, gm, variables
 
 # Numbers cnc.ini [VARIABLES] keeps from run to run besides #4000..#4999 (dialect reference, section 10).
 PERSISTENT = (range(4000, 5000), range(5008, 5009), range(5013, 5015), range(5161, 5167), range(5181, 5187),

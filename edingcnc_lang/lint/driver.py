@@ -13,17 +13,17 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..codes import CODES
-from ..config import MachineConfig, load_config
-from ..diagnostics import Diagnostic
-from ..errors import EcncError
-from ..source import iter_file_lines
-from . import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
-from .model import SourceFile, stream_source
-from .project import Project
-from .registry import RULES
-from .rules_config import check_config
-from .targets import applies, resolve
+from edingcnc_lang.codes import CODES
+from edingcnc_lang.config.machine_config import MachineConfig, load_config
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.syntax.source import iter_file_lines
+from edingcnc_lang.lint import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
+from edingcnc_lang.lint.model import SourceFile, stream_source
+from edingcnc_lang.lint.project import Project
+from edingcnc_lang.lint.registry import RULES
+from edingcnc_lang.lint.rules_config import check_config
+from edingcnc_lang.lint.targets import applies, resolve
 
 SOURCE_SUFFIXES = frozenset({".cnc", ".nc", ".ngc", ".tap", ".txt"})
 CONFIG_SUFFIX = ".ini"

@@ -11,7 +11,7 @@ import math
 import operator
 from collections.abc import Callable, Mapping
 
-from .. import nodes as n
+from edingcnc_lang.syntax import nodes as n
 
 Lookup = Callable[[int], "float | None"]
 

@@ -10,8 +10,8 @@ import json
 from functools import cache
 from importlib import resources
 
-from ..codes import CODES, KINS_CODES
-from .driver import UnknownCode
+from edingcnc_lang.codes import CODES, KINS_CODES
+from edingcnc_lang.lint.driver import UnknownCode
 
 
 @cache

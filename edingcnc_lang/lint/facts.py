@@ -11,8 +11,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .. import nodes as n
-from .walk import Code, Scope, block_codes, literal_index, reads
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.lint.walk import Code, Scope, block_codes, literal_index, reads
 
 Use = tuple[n.Param, "int | None", Scope]  # a parameter read or assigned, its literal index, where
 

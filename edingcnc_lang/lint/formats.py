@@ -5,10 +5,10 @@ import json
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from .. import __version__
-from ..codes import CODES, Severity
-from ..diagnostics import Diagnostic
-from ..errors import printable
+from edingcnc_lang import __version__
+from edingcnc_lang.codes import CODES, Severity
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.errors import printable
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning"}

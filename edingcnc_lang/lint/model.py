@@ -6,13 +6,13 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 
-from .. import nodes as n
-from ..diagnostics import Diagnostic
-from ..errors import UnreadableFile
-from ..line_parser import parse_line
-from ..parser import StatementReader
-from ..source import iter_file_lines, iter_text_lines
-from .walk import ends_program
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.errors import UnreadableFile
+from edingcnc_lang.syntax.line_parser import parse_line
+from edingcnc_lang.syntax.parser import StatementReader
+from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
+from edingcnc_lang.lint.walk import ends_program
 
 
 @dataclass(frozen=True, eq=False)  # one object per file: compared and hashed by identity

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import re
 
-from ..tables import TOOL_CHANGE_SUB
+from edingcnc_lang.machine.tables import TOOL_CHANGE_SUB
 
 CONTROLLER_SUBS = frozenset(
     {TOOL_CHANGE_SUB, "home_all", "home_x", "home_y", "home_z", "home_a", "home_b", "home_c",

@@ -15,10 +15,10 @@ from dataclasses import replace
 from concurrent.futures import ProcessPoolExecutor
 from multiprocessing import get_context
 
-from ..diagnostics import Diagnostic
-from ..gcpause import whole_trees
-from .driver import CONFIG_SUFFIX, LintOptions, expand, lint_paths
-from .targets import resolve
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.gcpause import whole_trees
+from edingcnc_lang.lint.driver import CONFIG_SUFFIX, LintOptions, expand, lint_paths
+from edingcnc_lang.lint.targets import resolve
 
 GROUPS_PER_JOB = 4  # more groups than workers, so a slow group does not leave the others idle
 

@@ -11,12 +11,12 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
-from .. import nodes as n
-from ..tables import ARG_PARAMS, PROBE_TRIPPED, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
-from .facts import Code, FileFacts, gather, indexed_reads
-from .model import SourceFile
-from .names import is_entry_point, m_sub_number
-from .walk import Scope, dialog_fields, walk
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine.tables import ARG_PARAMS, PROBE_TRIPPED, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
+from edingcnc_lang.lint.facts import Code, FileFacts, gather, indexed_reads
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.names import is_entry_point, m_sub_number
+from edingcnc_lang.lint.walk import Scope, dialog_fields, walk
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 # Commands that store a result in the variable whose number they are given.

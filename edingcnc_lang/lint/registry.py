@@ -9,11 +9,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
-from .. import nodes as n
-from ..codes import CODES
-from ..diagnostics import Diagnostic
-from .model import SourceFile
-from .project import Project
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.codes import CODES
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.project import Project
 
 Check = Callable[[SourceFile, Project], Iterable[Diagnostic]]
 

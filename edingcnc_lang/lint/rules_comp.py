@@ -10,13 +10,13 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from ..diagnostics import Diagnostic
-from ..tables import MM_PER_INCH, code_key, code_name
-from .evaluate import evaluate
-from .facts import BlockCodes
-from .model import SourceFile
-from .project import Project
-from .registry import at, rule
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.machine.tables import MM_PER_INCH, code_key, code_name
+from edingcnc_lang.lint.evaluate import evaluate
+from edingcnc_lang.lint.facts import BlockCodes
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.project import Project
+from edingcnc_lang.lint.registry import at, rule
 
 G10 = code_key(10)
 OFF = code_key(40)

@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import os
 
-from ..config import load_config
-from ..diagnostics import Diagnostic
-from ..errors import ConfigError
+from edingcnc_lang.config.machine_config import load_config
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.errors import ConfigError
 
 USER_OUTPUT_KEYS = ("userOutputStartVariable", "userOutputNumVariables")
 

@@ -1,4 +1,4 @@
-"""D rules: the shape of ``dlgmsg "title" "label" index ...`` (decided in ``edingcnc_lang.dialogs``).
+"""D rules: the shape of ``dlgmsg "title" "label" index ...`` (decided in ``edingcnc_lang.syntax.dialogs``).
 
 Index range and read-only targets are checked by V300/V301.
 """
@@ -6,12 +6,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from .. import nodes as n
-from ..diagnostics import Diagnostic
-from ..dialogs import dialog_fields
-from .model import SourceFile
-from .project import Project
-from .registry import at, at_line, rule
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.syntax.dialogs import dialog_fields
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.project import Project
+from edingcnc_lang.lint.registry import at, at_line, rule
 
 
 

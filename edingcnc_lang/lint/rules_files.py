@@ -3,12 +3,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ..codes import CODES
-from ..limits import MAX_LINE_LENGTH
-from ..diagnostics import Diagnostic
-from .model import SourceFile
-from .project import Project
-from .registry import at_line, rule
+from edingcnc_lang.codes import CODES
+from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.project import Project
+from edingcnc_lang.lint.registry import at_line, rule
 
 PARSER_CODES = tuple(c for c in CODES if c.startswith("E") or c in
                      ("S200", "S201", "S202", "S203", "S204", "S205", "S206"))

@@ -7,9 +7,9 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterable, Iterator, Sequence
 
-from .. import nodes as n
-from ..diagnostics import Diagnostic
-from ..tables import (
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.machine.tables import (
     G_GROUPS,
     LATHE_ONLY_G,
     M_GROUPS,
@@ -23,12 +23,12 @@ from ..tables import (
     same_line_winner,
     m_sub_name,
 )
-from .evaluate import evaluate
-from .facts import BlockCodes, Code
-from .model import SourceFile
-from .project import Project, sub_key
-from .registry import at, rule
-from .walk import Scope
+from edingcnc_lang.lint.evaluate import evaluate
+from edingcnc_lang.lint.facts import BlockCodes, Code
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.project import Project, sub_key
+from edingcnc_lang.lint.registry import at, rule
+from edingcnc_lang.lint.walk import Scope
 
 PROBE = code_key(38.2)
 ARCS = frozenset(code_key(c) for c in (2, 3))

@@ -8,13 +8,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 from pathlib import Path
 
-from .. import nodes as n
-from ..diagnostics import Diagnostic
-from .model import SourceFile
-from .names import is_entry_point
-from .project import Project, sub_key
-from .registry import at, rule
-from .walk import END_OF_PROGRAM, block_codes, ends_program, statement_lists
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.names import is_entry_point
+from edingcnc_lang.lint.project import Project, sub_key
+from edingcnc_lang.lint.registry import at, rule
+from edingcnc_lang.lint.walk import END_OF_PROGRAM, block_codes, ends_program, statement_lists
 
 
 @rule("S207")

@@ -7,9 +7,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 
-from .. import nodes as n
-from ..diagnostics import Diagnostic
-from ..tables import (
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.machine.tables import (
     ARG_PARAMS,
     FIRST_PARAM,
     LAST_PARAM,
@@ -17,12 +17,12 @@ from ..tables import (
     VOLATILE_PARAMS,
     is_read_only,
 )
-from .evaluate import constant_index
-from .model import SourceFile
-from .names import m_sub_number
-from .project import Project
-from .registry import at, rule
-from .walk import Scope, assigned, dialog_fields, literal_index
+from edingcnc_lang.lint.evaluate import constant_index
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.names import m_sub_number
+from edingcnc_lang.lint.project import Project
+from edingcnc_lang.lint.registry import at, rule
+from edingcnc_lang.lint.walk import Scope, assigned, dialog_fields, literal_index
 
 
 def _indexed(file: SourceFile, project: Project) -> Iterator[tuple[float, n.Span]]:

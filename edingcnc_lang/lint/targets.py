@@ -21,9 +21,9 @@ if sys.version_info >= (3, 11):
 else:  # Python 3.10: the same parser, as a package (a dependency there)
     import tomli as tomllib
 
-from ..codes import CODES
-from ..errors import EXIT_USAGE, EcncError, Location
-from ..ini import IniValue, read_ini
+from edingcnc_lang.codes import CODES
+from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
+from edingcnc_lang.config.ini import IniValue, read_ini
 
 TARGETS = ("4.03", "5")
 NEWEST = TARGETS[-1]

@@ -9,9 +9,9 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
-from .. import nodes as n
-from ..tables import SIMULATION, code_key
-from .evaluate import constant_index, evaluate, params_in, reads_param
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine.tables import SIMULATION, code_key
+from edingcnc_lang.lint.evaluate import constant_index, evaluate, params_in, reads_param
 
 END_OF_PROGRAM = frozenset(code_key(c) for c in (2, 30))
 Code = tuple[int, n.Word]  # a literal G or M number as integer tenths (G38.2 -> 382) and its word

@@ -11,7 +11,7 @@ import logging
 import os
 import sys
 
-from ..errors import require_extra
+from edingcnc_lang.errors import require_extra
 
 
 def main() -> int:
@@ -22,7 +22,7 @@ def main() -> int:
     """
     require_extra("pygls", "lsp", "the language server")
     require_extra("lsprotocol", "lsp", "the language server")
-    from .server import server
+    from edingcnc_lang.lsp.server import server
     _log_in_one_line()
     protocol_out = os.fdopen(os.dup(sys.stdout.fileno()), "wb")
     saved, sys.stdout = sys.stdout, sys.stderr

@@ -1,8 +1,8 @@
 """``python -m edingcnc_lang.lsp``: the language server, also without the ``ecnc`` command."""
 import sys
 
-from ..errors import MissingExtra
-from . import main
+from edingcnc_lang.errors import MissingExtra
+from edingcnc_lang.lsp import main
 
 try:
     sys.exit(main())

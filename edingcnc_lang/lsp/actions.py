@@ -10,9 +10,9 @@ import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from ..lint.driver import NOQA
-from ..line_parser import parse_line
-from .formatting import split_comment
+from edingcnc_lang.lint.driver import NOQA
+from edingcnc_lang.syntax.line_parser import parse_line
+from edingcnc_lang.lsp.formatting import split_comment
 
 _UNCLOSED = re.compile(r"(?:Sub \S+|If|While) \(line (\d+)\) has no (EndSub|EndIf|EndWhile)( before)?")
 _BRACKETS = re.compile(r"write (\S+)\)$")

@@ -9,10 +9,10 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from .. import knowledge
-from ..lint.names import m_sub_number
-from .lexer import token_at
-from .model import LanguageModel, file_name
+from edingcnc_lang import knowledge
+from edingcnc_lang.lint.names import m_sub_number
+from edingcnc_lang.lsp.lexer import token_at
+from edingcnc_lang.lsp.model import LanguageModel, file_name
 
 _GOSUB = re.compile(r"\s*(?:/\s*)?gosub\s+([A-Za-z0-9_]*)$", re.IGNORECASE)
 _PARAM = re.compile(r"#(\d*)$")

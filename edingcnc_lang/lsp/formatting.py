@@ -13,12 +13,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 
-from .. import nodes as n
-from ..line_parser import parse_line
-from ..markers import Close, Open
-from ..parser import StatementReader
-from ..printer import INDENT, bracketed, stmt_lines
-from ..source import iter_text_lines
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.line_parser import parse_line
+from edingcnc_lang.syntax.blocks import Close, Open
+from edingcnc_lang.syntax.parser import StatementReader
+from edingcnc_lang.syntax.printer import INDENT, bracketed, stmt_lines
+from edingcnc_lang.syntax.source import iter_text_lines
 
 def split_comment(line: str) -> tuple[str, str, bool]:
     """(code, ``;`` comment, whether the code holds a ``( )`` comment), strings respected."""

@@ -8,16 +8,16 @@ from __future__ import annotations
 
 import re
 
-from .. import knowledge
-from .. import nodes as n
-from ..lint.evaluate import evaluate
-from ..lint.model import SourceFile
-from ..tables import m_code_sub
-from ..lint.walk import dialog_fields, literal_index
-from ..printer import format_number
-from ..tables import ARG_PARAMS, code_key, is_read_only
-from .lexer import Token, code_number, token_at, tokens
-from .model import LanguageModel, file_name
+from edingcnc_lang import knowledge
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.lint.evaluate import evaluate
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.machine.tables import m_code_sub
+from edingcnc_lang.lint.walk import dialog_fields, literal_index
+from edingcnc_lang.syntax.printer import format_number
+from edingcnc_lang.machine.tables import ARG_PARAMS, code_key, is_read_only
+from edingcnc_lang.lsp.lexer import Token, code_number, token_at, tokens
+from edingcnc_lang.lsp.model import LanguageModel, file_name
 
 _COMMENT = re.compile(r"\s*(?:;(?P<semi>.*)|\((?P<paren>[^)]*)\)\s*)$")
 _AFTER_NAME = re.compile(r"\s*(?:/\s*)?sub\s+[A-Za-z0-9_]+\s*(?P<rest>.*)$", re.IGNORECASE)

@@ -8,8 +8,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from .. import knowledge
-from ..knowledge.commands import FUNCTIONS
+from edingcnc_lang import knowledge
+from edingcnc_lang.knowledge.command_texts import FUNCTIONS
 
 _FUNCTION_NAMES = "|".join(sorted((re.escape(row[0]) for row in FUNCTIONS), key=len, reverse=True))
 _HEAD = re.compile(r"\s*(?:/\s*)?([A-Za-z_][A-Za-z0-9_]*)")

@@ -12,15 +12,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from .. import nodes as n
-from ..gcpause import whole_trees
-from ..diagnostics import Diagnostic
-from ..errors import EcncError, Location
-from ..lint.driver import SOURCE_SUFFIXES, LintOptions, is_macro_name, lint_paths, macros_beside
-from ..lint.model import SourceFile, UnreadableFile, load_source
-from ..tables import m_code_sub
-from ..lint.project import Project, SubKey
-from .lexer import SUB_NAME
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.gcpause import whole_trees
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.errors import EcncError, Location
+from edingcnc_lang.lint.driver import SOURCE_SUFFIXES, LintOptions, is_macro_name, lint_paths, macros_beside
+from edingcnc_lang.lint.model import SourceFile, UnreadableFile, load_source
+from edingcnc_lang.machine.tables import m_code_sub
+from edingcnc_lang.lint.project import Project, SubKey
+from edingcnc_lang.lsp.lexer import SUB_NAME
 
 # Files of a folder bigger than this are left out of references and workspace symbols: they are CAM
 # output (long runs of moves), not macro code, and reading them on every request would be slow.

@@ -8,14 +8,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .. import nodes as n
-from ..lint.model import SourceFile
-from ..tables import m_code_sub
-from ..lint.project import sub_key
-from ..lint.walk import walk
-from ..tables import code_key
-from .lexer import code_number, token_at
-from .model import LanguageModel, Place, definition_place
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.machine.tables import m_code_sub
+from edingcnc_lang.lint.project import sub_key
+from edingcnc_lang.lint.walk import walk
+from edingcnc_lang.machine.tables import code_key
+from edingcnc_lang.lsp.lexer import code_number, token_at
+from edingcnc_lang.lsp.model import LanguageModel, Place, definition_place
 
 
 @dataclass(frozen=True)

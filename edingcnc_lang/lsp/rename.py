@@ -13,14 +13,14 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from .. import nodes as n
-from ..lint.model import SourceFile
-from ..lint.names import is_entry_point
-from ..lint.project import command_writes, sub_key
-from ..lint.walk import dialog_fields, walk
-from .formatting import split_comment
-from .lexer import token_at, tokens
-from .model import LanguageModel, Place, definition_place
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.lint.model import SourceFile
+from edingcnc_lang.lint.names import is_entry_point
+from edingcnc_lang.lint.project import command_writes, sub_key
+from edingcnc_lang.lint.walk import dialog_fields, walk
+from edingcnc_lang.lsp.formatting import split_comment
+from edingcnc_lang.lsp.lexer import token_at, tokens
+from edingcnc_lang.lsp.model import LanguageModel, Place, definition_place
 
 USER_VARIABLES = range(27, 5000)  # #1..#26 are the M-code subs' arguments, #5000 up the controller's
 _NEW_SUB = re.compile(r"[A-Za-z0-9_]+")

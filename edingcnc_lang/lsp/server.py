@@ -18,15 +18,15 @@ from pygls.protocol import LanguageServerProtocol
 from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
-from .. import __version__
-from ..limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
-from ..gcpause import whole_trees
-from ..codes import Severity
-from ..diagnostics import Diagnostic
-from ..lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes
-from . import actions, completion, formatting, hover, navigation, rename
-from .lexer import token_at
-from .model import LanguageModel, Place, file_name
+from edingcnc_lang import __version__
+from edingcnc_lang.syntax.input_limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
+from edingcnc_lang.gcpause import whole_trees
+from edingcnc_lang.codes import Severity
+from edingcnc_lang.diagnostics import Diagnostic
+from edingcnc_lang.lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes
+from edingcnc_lang.lsp import actions, completion, formatting, hover, navigation, rename
+from edingcnc_lang.lsp.lexer import token_at
+from edingcnc_lang.lsp.model import LanguageModel, Place, file_name
 
 DEBOUNCE_SECONDS = 0.3  # lint once typing pauses, not on every keystroke
 REQUEST_FAILED = -32803  # LSP's RequestFailed: a rename refused, with the reason for the user

@@ -10,11 +10,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import EcncError, Location
-from . import views as v
-from .formats import picture_target
-from .render import DPI
-from .toolpath import Toolpath
+from edingcnc_lang.errors import EcncError, Location
+from edingcnc_lang.plot import views as v
+from edingcnc_lang.picture_formats import picture_target
+from edingcnc_lang.plot.render import DPI
+from edingcnc_lang.plot.toolpath import Toolpath
 
 JOINT_COLUMNS = ("jx", "jy", "jz", "ja", "jb", "jc")
 STRIP_INCHES = 1.6

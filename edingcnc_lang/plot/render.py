@@ -15,10 +15,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..errors import EcncError
-from . import views as v
-from .formats import picture_target
-from .toolpath import KINDS, Toolpath
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.plot import views as v
+from edingcnc_lang.picture_formats import picture_target
+from edingcnc_lang.plot.toolpath import KINDS, Toolpath
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -91,7 +91,7 @@ def thinned(path: Toolpath, max_moves: int | None = None) -> Toolpath:
     thins (``decimate``): a picture of a 300,000-move job took 17 KB a move in matplotlib and
     failed at 2.2 GB.  A kept move that stands for the ones dropped before it is drawn straight
     from where the previous kept move ended."""
-    from .viewer import MAX_MOVES, decimate
+    from edingcnc_lang.plot.viewer import MAX_MOVES, decimate
 
     chosen = decimate(path, max_moves or MAX_MOVES)
     keep = chosen.keep

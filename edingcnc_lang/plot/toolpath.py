@@ -17,14 +17,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..canon import Arc, Event, Move, Pose
-from ..config import MachineConfig, load_config
-from ..errors import EcncError
-from ..kinematics.base import declared_joint_kinds
-from ..kinematics.trajectory import geometry_of
-from ..planner.estimate import Timing
-from ..runner import Run, RunOptions, RunResult
-from ..source import iter_file_lines
+from edingcnc_lang.canon import Arc, Event, Move, Pose
+from edingcnc_lang.config.machine_config import MachineConfig, load_config
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.kinematics.base import declared_joint_kinds
+from edingcnc_lang.kinematics.trajectory import geometry_of
+from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.runner import Run, RunOptions, RunResult
+from edingcnc_lang.syntax.source import iter_file_lines
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
 FEED_KINDS = frozenset({KINDS.index("linear"), KINDS.index("arc"), KINDS.index("probe")})

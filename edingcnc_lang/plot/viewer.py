@@ -20,9 +20,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import EcncError
-from . import views as v
-from .toolpath import KINDS, RAPID_KINDS, Toolpath
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.plot import views as v
+from edingcnc_lang.plot.toolpath import KINDS, RAPID_KINDS, Toolpath
 
 MAX_MOVES = 25_000                  # moves in the page before it is thinned
 VIEW_ARC_STEP = math.radians(6.0)   # 60 chords a turn: finer than a screen shows at a whole-job zoom

@@ -9,9 +9,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ..planner.estimate import format_duration
-from .names import VIEW_NAMES
-from .toolpath import FEED_KINDS, KINDS, RAPID_KINDS, Toolpath
+from edingcnc_lang.motion.planner.estimate import format_duration
+from edingcnc_lang.plot.names import VIEW_NAMES
+from edingcnc_lang.plot.toolpath import FEED_KINDS, KINDS, RAPID_KINDS, Toolpath
 
 _C, _S = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
 

@@ -8,8 +8,8 @@ work on that result.
 """
 from __future__ import annotations
 
-from .job import SimResult, simulate
-from .stock import Stock
-from .tools import Tool, load_tools
+from edingcnc_lang.sim.job import SimResult, simulate
+from edingcnc_lang.sim.stock import Stock
+from edingcnc_lang.sim.tools import Tool, load_tools
 
 __all__ = ["SimResult", "Stock", "Tool", "load_tools", "simulate"]

@@ -14,9 +14,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import Location
-from .stl import StlError, raster_top, read_stl
-from .stock import Stock
+from edingcnc_lang.errors import Location
+from edingcnc_lang.sim.stl import StlError, raster_top, read_stl
+from edingcnc_lang.sim.stock import Stock
 
 
 @dataclass

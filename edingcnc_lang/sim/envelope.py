@@ -12,8 +12,8 @@ from collections.abc import Callable
 
 import numpy as np
 
-from .stock import Stock
-from .tools import Tool
+from edingcnc_lang.sim.stock import Stock
+from edingcnc_lang.sim.tools import Tool
 
 FAR = 1e9              # a parameter step that clamps to an end of the segment
 GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0

@@ -15,11 +15,11 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import EcncError
-from ..runner import RunOptions
-from .job import simulate
-from .stock import Stock
-from .tools import Tool
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.runner import RunOptions
+from edingcnc_lang.sim.job import simulate
+from edingcnc_lang.sim.stock import Stock
+from edingcnc_lang.sim.tools import Tool
 
 SIZE = 64      # cells across the longer side of a frame
 FRAMES = 48    # frames in a page at most (about 400 kB of base64 at 64 x 64)

@@ -19,17 +19,17 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import tables as t
-from ..canon import Event, Move, Pose
-from ..config import MachineConfig
-from ..errors import EcncError
-from ..kinematics.sampling import arc_points
-from ..kinematics.trajectory import geometry_of
-from ..runner import Run, RunOptions, RunResult
-from .findings import Finding, merged
-from .stock import Stock
-from .sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
-from .tools import Tool, ini_tool
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.kinematics.sampling import arc_points
+from edingcnc_lang.kinematics.trajectory import geometry_of
+from edingcnc_lang.runner import Run, RunOptions, RunResult
+from edingcnc_lang.sim.findings import Finding, merged
+from edingcnc_lang.sim.stock import Stock
+from edingcnc_lang.sim.sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
+from edingcnc_lang.sim.tools import Tool, ini_tool
 
 BATCH = 20_000          # segments swept at once
 PLUNGE_SHARE = 0.5      # a flat tool may plunge this many diameters into the material at once

@@ -8,9 +8,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .compare import Deviation
-from .findings import Finding
-from .stock import Stock
+from edingcnc_lang.sim.compare import Deviation
+from edingcnc_lang.sim.findings import Finding
+from edingcnc_lang.sim.stock import Stock
 
 DPI = 120
 MAX_LABELS = 40    # findings labelled with their line number; more would be a smudge

@@ -4,8 +4,8 @@ from __future__ import annotations
 from dataclasses import asdict
 from typing import Any
 
-from .compare import Deviation
-from .job import SimResult
+from edingcnc_lang.sim.compare import Deviation
+from edingcnc_lang.sim.job import SimResult
 
 
 def to_json(result: SimResult, deviation: Deviation | None = None) -> dict[str, Any]:

@@ -13,9 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import EXIT_USAGE, EcncError, Location
-from .stock import Stock, grid_size
-from .sweep import MAX_PAIRS, footprint_cells, pair_counts
+from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
+from edingcnc_lang.sim.stock import Stock, grid_size
+from edingcnc_lang.sim.sweep import MAX_PAIRS, footprint_cells, pair_counts
 
 TRIANGLE = np.dtype([("normal", "<f4", (3,)), ("vertices", "<f4", (3, 3)), ("attribute", "<u2")])
 _VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")

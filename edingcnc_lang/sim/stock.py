@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import EXIT_USAGE, EcncError
+from edingcnc_lang.errors import EXIT_USAGE, EcncError
 
 MAX_CELLS = 400_000_000  # 1.6 GB of heights: more is a typo in --stock or --resolution
 

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .envelope import Geometry, lowest
-from .stock import Stock
-from .tools import Tool
+from edingcnc_lang.sim.envelope import Geometry, lowest
+from edingcnc_lang.sim.stock import Stock
+from edingcnc_lang.sim.tools import Tool
 
 EPS = 1e-3            # mm: less than this into the material is no finding (float32 heights)
 MAX_PAIRS = 50_000  # (segment, cell) pairs per chunk: its scratch arrays stay in the CPU's cache

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..config import MachineConfig
-from ..errors import EXIT_USAGE, EcncError, Location
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
 
 if sys.version_info >= (3, 11):
     import tomllib

@@ -1,8 +1,8 @@
 """What a test expected against what its run did: one line of text per difference."""
 from __future__ import annotations
 
-from .execute import MESSAGE_KINDS, Outcome
-from .spec import shown
+from edingcnc_lang.testing.execute import MESSAGE_KINDS, Outcome
+from edingcnc_lang.testing.spec import shown
 
 MAX_SHOWN_MESSAGES = 5
 

@@ -1,7 +1,7 @@
 """Coverage of macro files: which lines ran, which If/Else and While branches were taken, which subs
 no test reached.
 
-Recording is an ``Observer`` (``interpreter/observe.py``) on every test's run; what a file *could*
+Recording is an ``Observer`` (``machine/observe.py``) on every test's run; what a file *could*
 run comes from parsing it the way a run loads it (tolerant: a line that does not parse is still a
 line that could be reached).  Lines are the first lines of statements inside subs and at the top
 level (not ``Sub``/``EndSub``, ``Else``, ``EndIf``, ``EndWhile``, comments or blank lines); each If
@@ -16,11 +16,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .. import nodes as n
-from ..interpreter.observe import Observer
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine.observe import Observer
 
 if TYPE_CHECKING:
-    from ..interpreter.state import CallFrame, MachineState
+    from edingcnc_lang.machine.state import CallFrame, MachineState
 
 BRANCH_NAMES = {(n.If, True): "then", (n.If, False): "else", (n.While, True): "enter", (n.While, False): "leave"}
 
@@ -86,7 +86,7 @@ class Shape:
 
 def shape_of(path: str) -> Shape:
     """Parse a macro file as a run loads it and list what could run in it."""
-    from ..parser import read_statements
+    from edingcnc_lang.syntax.parser import read_statements
 
     reader = read_statements(path, tolerant=True)
     body = tuple(reader)

@@ -14,16 +14,16 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .. import tables as t
-from ..canon import AXES, Event, Move, Pose, format_pose
-from ..errors import EcncError, Interrupted, Location
-from ..host import DialogAnswer, DialogCallback, DialogField, Host, scripted_dialogs
-from ..interpreter import Interpreter
-from ..limits import DEFAULT_MAX_STEPS
-from ..runner import Run, RunOptions
-from .coverage import CoverageData, CoverageObserver, display_path
-from .spec import AXES as AXIS_KEYS
-from .spec import Forbid, TestCase
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import AXES, Event, Move, Pose, format_pose
+from edingcnc_lang.errors import EcncError, Interrupted, Location
+from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField, Host, scripted_dialogs
+from edingcnc_lang.machine.interpreter import Interpreter
+from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
+from edingcnc_lang.runner import Run, RunOptions
+from edingcnc_lang.testing.coverage import CoverageData, CoverageObserver, display_path
+from edingcnc_lang.testing.spec import AXES as AXIS_KEYS
+from edingcnc_lang.testing.spec import Forbid, TestCase
 
 JOB_NAME = "<job>"  # what messages call a job given as text
 MESSAGE_KINDS = ("msg", "warn", "log")  # what expect.messages searches: msg, warnmsg and logmsg texts
@@ -212,8 +212,8 @@ class _Watch:
         """The end of a move, and for an arc also where it bulges furthest along each axis."""
         if move.arc is None:
             return [move.end]
-        from ..kinematics.trajectory import geometry_of
-        from ..planner.limits_report import _arc_extremes  # the limits report's own arc extremes
+        from edingcnc_lang.kinematics.trajectory import geometry_of
+        from edingcnc_lang.motion.planner.limits_report import _arc_extremes  # the limits report's own arc extremes
 
         return [move.end, *(tuple(float(v) for v in row) for row in _arc_extremes(geometry_of(move)))]
 

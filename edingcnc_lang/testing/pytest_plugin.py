@@ -26,13 +26,13 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from .coverage import display_path
-from .spec import TEST_GLOB
+from edingcnc_lang.testing.coverage import display_path
+from edingcnc_lang.testing.spec import TEST_GLOB
 
 if TYPE_CHECKING:
-    from .execute import Outcome
-    from .session import TestResult
-    from .spec import TestCase
+    from edingcnc_lang.testing.execute import Outcome
+    from edingcnc_lang.testing.session import TestResult
+    from edingcnc_lang.testing.spec import TestCase
 
 
 def pytest_collect_file(parent: pytest.Collector, file_path: Path) -> pytest.Collector | None:
@@ -55,7 +55,7 @@ class MacroTestFile(pytest.File):
     """A ``test_*.toml`` file: its tests, read and checked before any runs."""
 
     def collect(self) -> Iterator[pytest.Item]:
-        from .spec import TestFileError, load_file
+        from edingcnc_lang.testing.spec import TestFileError, load_file
 
         try:
             cases = load_file(display_path(os.fspath(self.path)))
@@ -79,7 +79,7 @@ class MacroTestItem(pytest.Item):
         self.case = case
 
     def runtest(self) -> None:
-        from .session import check
+        from edingcnc_lang.testing.session import check
 
         result = check(self.case)
         if not result.passed:
@@ -109,9 +109,9 @@ class MacroRunner:
         With ``expect=`` or ``forbid=`` the test fails (with the text ``ecnc test`` prints) when
         they are not met; otherwise nothing is judged here, not even an error that stopped the run.
         """
-        from .checks import failures
-        from .execute import run_case
-        from .spec import TestFileError, from_mapping
+        from edingcnc_lang.testing.checks import failures
+        from edingcnc_lang.testing.execute import run_case
+        from edingcnc_lang.testing.spec import TestFileError, from_mapping
 
         given = {k: _toml_like(v) for k, v in keys.items()}
         if job is not None:

@@ -9,9 +9,9 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-from ..source import iter_file_lines
-from .coverage import FileCoverage
-from .session import Summary
+from edingcnc_lang.syntax.source import iter_file_lines
+from edingcnc_lang.testing.coverage import FileCoverage
+from edingcnc_lang.testing.session import Summary
 
 COVERAGE_FORMATS = ("term", "json", "html")
 

@@ -9,8 +9,8 @@ from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass, field
 from multiprocessing import get_context
 
-from .coverage import CoverageData
-from .spec import TestCase
+from edingcnc_lang.testing.coverage import CoverageData
+from edingcnc_lang.testing.spec import TestCase
 
 
 @dataclass(frozen=True)
@@ -57,8 +57,8 @@ class Summary:
 
 def check(case: TestCase, coverage: CoverageData | None = None) -> TestResult:
     """Run one test and judge it."""
-    from .checks import failures
-    from .execute import run_case
+    from edingcnc_lang.testing.checks import failures
+    from edingcnc_lang.testing.execute import run_case
 
     outcome = run_case(case, coverage)
     return TestResult(case.name, case.file, case.line, tuple(failures(outcome)), outcome.seconds)

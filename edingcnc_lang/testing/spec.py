@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import EXIT_SYNTAX, EcncError, Location
-from ..host import DialogAnswer
+from edingcnc_lang.errors import EXIT_SYNTAX, EcncError, Location
+from edingcnc_lang.host import DialogAnswer
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -298,7 +298,7 @@ class _Reader:
                 raise self.error(f"{what}: {key!r} is not a parameter number (1..5999)", self.line_of(key))
             result[int(number)] = value(item, f"{what} #{number}")
         if what == "vars":
-            from ..tables import is_read_only
+            from edingcnc_lang.machine.tables import is_read_only
 
             for index in result:
                 if is_read_only(index):

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.parser import parse_file
-from edingcnc_lang.serialize import to_data
+from edingcnc_lang.syntax.parser import parse_file
+from edingcnc_lang.syntax.serialize import to_data
 from tests.cli_runner import invoke
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -44,12 +44,12 @@ def test_standard_input_streams_like_a_file(tmp_path: Path, monkeypatch: pytest.
     """A million-line job on stdin took 2 GB when read whole; copied to a temporary file it streams."""
     import tempfile
 
-    import edingcnc_lang.parser
+    import edingcnc_lang.syntax.parser
     import edingcnc_lang.runner
 
     job = ROOT / "examples/pocket.nc"
     from_file = invoke(*[job if arg == "-" else arg for arg in command])
-    monkeypatch.setattr(edingcnc_lang.parser, "parse_text", _whole_text_refused)
+    monkeypatch.setattr(edingcnc_lang.syntax.parser, "parse_text", _whole_text_refused)
     monkeypatch.setattr(edingcnc_lang.runner.Run, "execute_text", _whole_text_refused)
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
     from_stdin = invoke(*command, input=job.read_bytes())

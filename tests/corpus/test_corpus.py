@@ -15,11 +15,11 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.canon import Pose
-from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
 from edingcnc_lang.runner import RunOptions, RunResult, run_string
-from edingcnc_lang.parser import read_statements
-from edingcnc_lang import nodes as n
+from edingcnc_lang.syntax.parser import read_statements
+from edingcnc_lang.syntax import nodes as n
 
 FILES = Path(__file__).resolve().parent / "files"
 BOARD = ProbeAt(HeightMap((0.0, 100.0), (0.0, 100.0), ((0.0, 0.5), (0.25, 0.75))))

@@ -6,11 +6,18 @@ import io
 import pytest
 
 from edingcnc_lang.debug.breakpoints import Breakpoints, reached, sub_of
-from edingcnc_lang.debug.expressions import (ExpressionError, dialog_answer, evaluate, interpolate,
-                                             parse_assignment, parse_expression, probe_answer)
+from edingcnc_lang.debug.expressions import (
+    ExpressionError,
+    dialog_answer,
+    evaluate,
+    interpolate,
+    parse_assignment,
+    parse_expression,
+    probe_answer,
+)
 from edingcnc_lang.debug.history import History, Input
 from edingcnc_lang.debug.protocol import Channel, ProtocolError, read_message
-from edingcnc_lang.evaluator import Evaluator
+from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import DialogAnswer
 
 

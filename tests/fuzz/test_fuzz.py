@@ -13,14 +13,14 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang.config import load_config
+from edingcnc_lang.config.machine_config import load_config
 from edingcnc_lang.errors import EcncError
-from edingcnc_lang.heightmap import ZhcTable
+from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.lint import lint_paths
-from edingcnc_lang.parser import parse_text
-from edingcnc_lang.printer import program_text
+from edingcnc_lang.syntax.parser import parse_text
+from edingcnc_lang.syntax.printer import program_text
 from edingcnc_lang.runner import RunOptions, run_file
-from edingcnc_lang.source import read_text
+from edingcnc_lang.syntax.source import read_text
 
 from .strategies import INI_SEEDS, ZHC_TABLE_SEEDS, mutants, programs
 

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from edingcnc_lang.limits import MAX_CHECK_SAMPLES, MAX_ENVELOPE_RESOLUTION
+from edingcnc_lang.syntax.input_limits import MAX_CHECK_SAMPLES, MAX_ENVELOPE_RESOLUTION
 from edingcnc_lang.plot.toolpath import record_job
 from tests.cli_runner import invoke
 

@@ -8,9 +8,9 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.errors import MachineError
-from edingcnc_lang.limits import MAX_THREAD_PASSES
+from edingcnc_lang.syntax.input_limits import MAX_THREAD_PASSES
 from edingcnc_lang.runner import RunOptions, run_string
-from edingcnc_lang.thread_passes import G76Words, ThreadError, g76
+from edingcnc_lang.machine.thread_passes import G76Words, ThreadError, g76
 
 LATHE = "G18 G97 S100 M3\nG0 X20 Z0\n"
 

@@ -10,7 +10,7 @@ import pytest
 
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError, MachineError, shortened
-from edingcnc_lang.limits import MAX_LINE_LENGTH, line_problem
+from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, line_problem
 from edingcnc_lang.lint import lint_paths
 from edingcnc_lang.runner import RunOptions, run_string
 from tests.cli_runner import invoke

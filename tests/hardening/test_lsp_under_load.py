@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
+from edingcnc_lang.syntax.input_limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
 from edingcnc_lang.lsp.server import _clamped_positions
 from tests.lsp.client import LspClient, at
 

@@ -10,13 +10,13 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.config import load_config
+from edingcnc_lang.config.machine_config import load_config
 from edingcnc_lang.errors import ConfigError, EcncError
-from edingcnc_lang.heightmap import HeightMapError, ZhcTable
-from edingcnc_lang.job_files import job_file
-from edingcnc_lang.limits import MAX_AXIS_RATE, MIN_AXIS_RATE
+from edingcnc_lang.config.heightmap import HeightMapError, ZhcTable
+from edingcnc_lang.machine.job_files import job_file
+from edingcnc_lang.syntax.input_limits import MAX_AXIS_RATE, MIN_AXIS_RATE
 from edingcnc_lang.runner import run_string
-from edingcnc_lang.serialize import json_text
+from edingcnc_lang.syntax.serialize import json_text
 from tests.cli_runner import invoke
 
 JOB = "G0 X10\nG1 X20 F100\nG2 X30 Y0 R5\nM30\n"

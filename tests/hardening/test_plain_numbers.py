@@ -8,13 +8,13 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.config import load_config
+from edingcnc_lang.config.machine_config import load_config
 from edingcnc_lang.errors import ConfigError, EcncError
 from edingcnc_lang.host import DialogAnswer
 from edingcnc_lang.lint import lint_paths
 from edingcnc_lang.mdi import MdiSession
 from edingcnc_lang.runner import RunOptions, run_string
-from edingcnc_lang.source import plain_float, plain_int
+from edingcnc_lang.syntax.source import plain_float, plain_int
 from tests.cli_runner import invoke
 
 NOT_ASCII = ["١٠", "𝟏", "１", "²", "⁵", "1_0", "٣.٥"]

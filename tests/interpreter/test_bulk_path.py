@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import EcncError, Event, Move, RunOptions, run_file, run_string
-from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
 
 numbers = st.one_of(st.integers(-200, 200).map(str),

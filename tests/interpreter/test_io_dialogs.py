@@ -10,7 +10,7 @@ import pytest
 from edingcnc_lang.diagnostics import SyntaxErrors
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.host import DialogAnswer, DialogField, Host, scripted_dialogs
-from edingcnc_lang.interpreter.state import format_value
+from edingcnc_lang.machine.state import format_value
 from edingcnc_lang.runner import RunOptions, RunResult, run_file, run_string
 
 EMPTY_MACRO = Path(__file__).parent / "data" / "empty_macro.cnc"

@@ -269,8 +269,8 @@ def test_g43_h_out_of_range_is_an_error() -> None:
 # ------------------------------------------------------------------ canned cycles
 
 def test_every_canned_cycle_the_tables_name_has_an_expansion() -> None:
-    from edingcnc_lang.cycles import CYCLES, NEEDS_Q
-    from edingcnc_lang.tables import CANNED_CYCLES
+    from edingcnc_lang.machine.cycles import CYCLES, NEEDS_Q
+    from edingcnc_lang.machine.tables import CANNED_CYCLES
 
     assert set(CYCLES) == CANNED_CYCLES and NEEDS_Q <= CANNED_CYCLES
 

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from edingcnc_lang import RunOptions, run_string
-from edingcnc_lang.interpreter.observe import Observer
+from edingcnc_lang.machine.observe import Observer
 
 
 class Recorder(Observer):

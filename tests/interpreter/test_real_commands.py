@@ -8,7 +8,7 @@ import pytest
 
 from edingcnc_lang.canon import Move
 from edingcnc_lang.errors import MachineError
-from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
 from edingcnc_lang.runner import RunOptions, RunResult, run_string
 
@@ -123,7 +123,7 @@ def test_get_job_distance_counts_the_bulk_moves_of_a_job_file(tmp_path: Path) ->
 
 def test_get_tool_info_enumerates_the_tools_the_loaded_job_uses(tmp_path: Path) -> None:
     """As the stock macro.cnc's measure_used_tools: the job's T words, not the tool table's entries."""
-    from edingcnc_lang.interpreter.commands import tools_used
+    from edingcnc_lang.machine.named_commands import tools_used
     from edingcnc_lang.runner import run_file
 
     macro = tmp_path / "macro.cnc"

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang import limits
+from edingcnc_lang.syntax import input_limits as limits
 from edingcnc_lang.errors import MachineError
-from edingcnc_lang.heightmap import HeightMap, ProbeAt
+from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
 from edingcnc_lang.runner import RunOptions, run_string
 from tests.cli_runner import invoke
@@ -50,7 +50,7 @@ def test_a_fifo_in_the_log_folder_is_an_error_not_a_hang(logs: Path) -> None:
 
 
 def test_a_logmsg_in_a_runaway_loop_stops_at_the_log_limit(logs: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    from edingcnc_lang.interpreter import messages
+    from edingcnc_lang.machine import messages
 
     monkeypatch.setattr(messages, "MAX_LOG_BYTES", 1000)  # 64 MB in a real run
     err = error_of('#1 = 0\nWhile [1]\n  logmsg "pass "#1\n  #1 = [#1 + 1]\nEndWhile\n', log_dir=logs)

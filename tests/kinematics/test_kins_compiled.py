@@ -12,7 +12,12 @@ from edingcnc_lang.errors import PluginError
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import KinematicsDomainError, as_pose
 from edingcnc_lang.kinematics.build import build_plugin
-from edingcnc_lang.kinematics.ctypes_plugin import CncCartDouble, CncJointDouble, CompiledKinematics, KinControlData
+from edingcnc_lang.kinematics.ctypes_plugin import (
+    CncCartDouble,
+    CncJointDouble,
+    CompiledKinematics,
+    KinControlData,
+)
 from edingcnc_lang.kinematics.loader import load_kinematics
 from edingcnc_lang.kinematics.shipped import import_shipped
 

@@ -9,8 +9,12 @@ import pytest
 from edingcnc_lang.errors import ConfigError, MachineError
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import KinematicsDomainError, KinematicsPlugin
-from edingcnc_lang.kinematics.builtin import (CoreXYKinematics, CylinderMapping, TrivialKinematics,
-                                              bend_knife_correction)
+from edingcnc_lang.kinematics.builtin import (
+    CoreXYKinematics,
+    CylinderMapping,
+    TrivialKinematics,
+    bend_knife_correction,
+)
 from edingcnc_lang.kinematics.shipped import import_shipped
 
 DeltaKins = import_shipped("deltakins").DeltaKins

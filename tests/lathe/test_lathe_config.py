@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.config import MILLING, TURNING, MachineConfig, load_config
+from edingcnc_lang.config.machine_config import MILLING, TURNING, MachineConfig, load_config
 from edingcnc_lang.errors import ConfigError
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lathe" / "cnc.ini"

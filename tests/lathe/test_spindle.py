@@ -7,7 +7,14 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from edingcnc_lang.spindle import Css, SpindleError, clamp_rpm, css_limits, mean_rpm_points, mean_rpm_straight
+from edingcnc_lang.machine.spindle import (
+    Css,
+    SpindleError,
+    clamp_rpm,
+    css_limits,
+    mean_rpm_points,
+    mean_rpm_straight,
+)
 
 
 def test_css_follows_the_radius_and_clamps() -> None:

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from edingcnc_lang.thread_passes import G76Words, ThreadError, ThreadMove, g76
+from edingcnc_lang.machine.thread_passes import G76Words, ThreadError, ThreadMove, g76
 
 
 def words(**changes: float | None) -> G76Words:

@@ -1,10 +1,10 @@
 """The one-walk gathering of what the lint rules look at (``lint/facts.py``)."""
 from __future__ import annotations
 
-from edingcnc_lang import nodes as n
+from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.lint.facts import gather
 from edingcnc_lang.lint.walk import walk
-from edingcnc_lang.parser import parse_text
+from edingcnc_lang.syntax.parser import parse_text
 
 SOURCE = """\
 Sub probe_z

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.lsp.formatting import format_lines, format_text, split_comment
-from edingcnc_lang.source import iter_file_lines
+from edingcnc_lang.syntax.source import iter_file_lines
 
 ROOT = Path(__file__).resolve().parents[2]
 FILES = sorted([ROOT / "stdlib" / "macro.cnc", *ROOT.glob("examples/**/*.nc")])

@@ -3,8 +3,9 @@ from __future__ import annotations
 
 import pytest
 
-from edingcnc_lang import knowledge, tables
-from edingcnc_lang.tables import code_name
+from edingcnc_lang import knowledge
+from edingcnc_lang.machine import tables
+from edingcnc_lang.machine.tables import code_name
 
 
 @pytest.mark.parametrize(("letter", "groups"), [("G", tables.G_GROUPS), ("M", tables.M_GROUPS)])
@@ -70,7 +71,7 @@ def test_every_grammar_command_is_in_the_table() -> None:
     import re
     from pathlib import Path
 
-    grammar = (Path(knowledge.__file__).parent.parent / "grammar" / "macro.lark").read_text()
+    grammar = (Path(knowledge.__file__).parent.parent / "syntax" / "grammar" / "macro.lark").read_text()
     names: set[str] = set()
     for rule in ("MESSAGE_KW", "SWITCH_KW", "COMMAND_KW"):
         alternatives = re.search(rf"^{rule}\.\d+: /\((.*?)\)", grammar, re.MULTILINE)
@@ -78,7 +79,7 @@ def test_every_grammar_command_is_in_the_table() -> None:
         names |= set(alternatives.group(1).split("|"))
     names |= {"dlgmsg", "logfile", "home", "hometandem", "kin", "preparelindeltahome"}
     for name in names:
-        assert knowledge.word(name) is not None, f"add a row for {name} to edingcnc_lang/knowledge/commands.py"
+        assert knowledge.word(name) is not None, f"add a row for {name} to edingcnc_lang/knowledge/command_texts.py"
 
 
 def test_ecnc_help_explains_language_words_from_the_table() -> None:

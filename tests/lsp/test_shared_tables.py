@@ -1,9 +1,9 @@
 """The language server reads the same tables as the interpreter and the linter, not copies of them."""
 from __future__ import annotations
 
-from edingcnc_lang.evaluator import FUNCTIONS
+from edingcnc_lang.machine.evaluator import FUNCTIONS
 from edingcnc_lang.lsp import lexer
-from edingcnc_lang.tables import m_code_sub, m_sub_name
+from edingcnc_lang.machine.tables import m_code_sub, m_sub_name
 
 
 def test_every_function_the_evaluator_knows_is_a_function_token() -> None:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from motion_helpers import DELTA_HOME, delta_machine, joints, read_csv
 
-from edingcnc_lang.outputs import SAMPLES_COLUMNS
+from edingcnc_lang.motion.sinks import SAMPLES_COLUMNS
 
 SCALAR_COREXY = '''
 from edingcnc_lang.kinematics import KinematicsPlugin

@@ -12,10 +12,10 @@ import re
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang.fastparse import GIVE_UP, parse_fast
-from edingcnc_lang.parser import _LineError, parse_line_grammar
-from edingcnc_lang.printer import stmt_lines
-from edingcnc_lang.serialize import to_data
+from edingcnc_lang.syntax.fastparse import GIVE_UP, parse_fast
+from edingcnc_lang.syntax.parser import _LineError, parse_line_grammar
+from edingcnc_lang.syntax.printer import stmt_lines
+from edingcnc_lang.syntax.serialize import to_data
 
 from .test_properties import blocks, exprs, messages, simple
 
@@ -50,7 +50,7 @@ heads = st.one_of(
 
 
 def _plain(expr) -> str:  # type: ignore[no-untyped-def]
-    from edingcnc_lang.printer import expr_text
+    from edingcnc_lang.syntax.printer import expr_text
     return expr_text(expr)
 
 
@@ -96,7 +96,7 @@ def test_fast_parser_gives_up_on_what_it_does_not_cover() -> None:
 
 def test_spans_have_every_field() -> None:
     """The fast parser builds spans with tuple.__new__ (no field check): they must stay complete."""
-    from edingcnc_lang.nodes import Block, Span
+    from edingcnc_lang.syntax.nodes import Block, Span
 
     block = parse_fast("G1 X[#1 * -2] Y[SIN[30]]", "f", 4)
     assert isinstance(block, Block)

@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.diagnostics import SyntaxErrors
-from edingcnc_lang.parser import parse_file
-from edingcnc_lang.serialize import to_data
+from edingcnc_lang.syntax.parser import parse_file
+from edingcnc_lang.syntax.serialize import to_data
 
 HERE = Path(__file__).parent
 ROOT = HERE.parent.parent

@@ -5,10 +5,10 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang import nodes as n
-from edingcnc_lang.parser import is_fast_line, parse_line, parse_line_grammar, parse_text
-from edingcnc_lang.printer import program_text
-from edingcnc_lang.serialize import to_data
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.parser import is_fast_line, parse_line, parse_line_grammar, parse_text
+from edingcnc_lang.syntax.printer import program_text
+from edingcnc_lang.syntax.serialize import to_data
 
 numbers = st.one_of(
     st.integers(min_value=-99999, max_value=99999).map(float),

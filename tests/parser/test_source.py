@@ -7,7 +7,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang import source
+from edingcnc_lang.syntax import source
 
 
 def _reference(path: Path) -> list[str]:

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang import RunOptions, run_string
-from edingcnc_lang.planner.estimate import Timing
+from edingcnc_lang.motion.planner.estimate import Timing
 from edingcnc_lang.runner import RunResult
 from tests.cli_runner import invoke
 
@@ -235,7 +235,7 @@ def test_summary_line_on_a_terminal(tmp_path: Path, monkeypatch: pytest.MonkeyPa
 
 @pytest.mark.parametrize(("seconds", "text"), [(7.26, "7.3 s"), (59.96, "1 min 0 s"), (4325.4, "1 h 12 min 5 s")])
 def test_durations_read_like_a_clock(seconds: float, text: str) -> None:
-    from edingcnc_lang.planner.estimate import format_duration
+    from edingcnc_lang.motion.planner.estimate import format_duration
 
     assert format_duration(seconds) == text
 

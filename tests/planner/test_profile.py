@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from edingcnc_lang.planner.junctions import corner_speeds2
-from edingcnc_lang.planner.profile import distance_at, plan_nodes, profiles
+from edingcnc_lang.motion.planner.junctions import corner_speeds2
+from edingcnc_lang.motion.planner.profile import distance_at, plan_nodes, profiles
 
 
 def rest_to_rest(length: float, speed: float, accel: float) -> float:

@@ -5,7 +5,7 @@ import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
 
-from edingcnc_lang.planner.runs import Runs
+from edingcnc_lang.motion.planner.runs import Runs
 
 ops = st.lists(st.one_of(st.tuples(st.just("add"), st.sampled_from([0.0, 1.5, float("inf")]), st.integers(0, 5)),
                          st.tuples(st.just("drop"), st.just(0.0), st.integers(0, 7))), max_size=30)

@@ -86,7 +86,7 @@ def test_a_kinematic_job_shows_its_joints(tmp_path: Path) -> None:
 
 def test_a_lathe_job_opens_in_the_lathe_view_with_z_across(tmp_path: Path) -> None:
     """Z to the right and X up: a long, thin turned part lies across the screen, not up it."""
-    from edingcnc_lang.plot.commands import view_job
+    from edingcnc_lang.plot.actions import view_job
 
     job = tmp_path / "shaft.nc"
     job.write_text("G18 G90 G21\nG0 X12 Z2\nG1 X10 F200\nG1 Z-120\nG1 X14\nG0 Z2\nM30\n")

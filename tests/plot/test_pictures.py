@@ -21,7 +21,7 @@ from edingcnc_lang import RunOptions  # noqa: E402
 from edingcnc_lang.errors import EcncError, MissingExtra  # noqa: E402
 from edingcnc_lang.plot import views  # noqa: E402
 from edingcnc_lang.plot.joints import plot_joints  # noqa: E402
-from edingcnc_lang.plot.formats import require_matplotlib  # noqa: E402
+from edingcnc_lang.picture_formats import require_matplotlib  # noqa: E402
 from edingcnc_lang.plot.render import plot_toolpath  # noqa: E402
 from edingcnc_lang.plot.toolpath import record_job  # noqa: E402
 from tests.plot.jobs import CIRCLE, SQUARE, TWO_TOOLS, write  # noqa: E402
@@ -232,7 +232,7 @@ def test_fit_part_cuts_off_far_rapids(tmp_path: Path) -> None:
 
 
 def test_the_title_gives_the_estimate_as_the_run_summary_does(square) -> None:
-    from edingcnc_lang.planner.estimate import format_duration
+    from edingcnc_lang.motion.planner.estimate import format_duration
 
     assert 0 < square.seconds < 59.0
     title = views.title_text(square)

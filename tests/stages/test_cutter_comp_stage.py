@@ -7,9 +7,9 @@ import pytest
 from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang.canon import Arc, Event, Move
-from edingcnc_lang.config import MachineConfig
+from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
-from edingcnc_lang.stages.cutter_comp import CutterCompensation
+from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 
 CONFIG = MachineConfig.default()
 

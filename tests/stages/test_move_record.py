@@ -17,16 +17,16 @@ from stage_helpers import Recorder, pose
 
 from edingcnc_lang import RunOptions, run_file, run_string
 from edingcnc_lang.canon import Batch, Event, Move
-from edingcnc_lang.config import MachineConfig
+from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
-from edingcnc_lang.heightmap import HeightMap
+from edingcnc_lang.config.heightmap import HeightMap
 from edingcnc_lang.canon import Css
-from edingcnc_lang.stages import STAGES
-from edingcnc_lang.stages.base import Stage
-from edingcnc_lang.stages.cutter_comp import CutterCompensation
-from edingcnc_lang.stages.height_comp import HeightCompensation
-from edingcnc_lang.stages.rotation import Rotation
-from edingcnc_lang.stages.scaling import Scaling
+from edingcnc_lang.pipeline import STAGES
+from edingcnc_lang.pipeline.base import Stage
+from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
+from edingcnc_lang.pipeline.height_comp import HeightCompensation
+from edingcnc_lang.pipeline.rotation import Rotation
+from edingcnc_lang.pipeline.scaling import Scaling
 
 CONFIG = MachineConfig.default()
 SURFACE = HeightMap((0.0, 10.0, 20.0), (0.0, 10.0), ((0.0, 1.0, 2.0), (0.5, 1.5, 2.5)))

@@ -11,10 +11,10 @@ from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang import runner
 from edingcnc_lang.canon import Event, Move
-from edingcnc_lang.config import MachineConfig
+from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.runner import RunOptions, run_string
-from edingcnc_lang.stages import LookaheadStage, Pipeline, Stage
+from edingcnc_lang.pipeline import LookaheadStage, Pipeline, Stage
 
 CONFIG = MachineConfig.default()
 EMPTY_MACRO = Path(__file__).parent.parent / "interpreter" / "data" / "empty_macro.cnc"

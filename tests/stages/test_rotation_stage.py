@@ -5,9 +5,9 @@ import pytest
 from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang.canon import Arc, Event, Move
-from edingcnc_lang.config import MachineConfig
+from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
-from edingcnc_lang.stages.rotation import Rotation
+from edingcnc_lang.pipeline.rotation import Rotation
 
 CONFIG = MachineConfig.default()
 

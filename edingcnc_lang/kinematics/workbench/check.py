@@ -17,9 +17,14 @@ from edingcnc_lang.kinematics.workbench import geometry_checks as geo
 from edingcnc_lang.kinematics.workbench import plugin_checks as plug
 from edingcnc_lang.kinematics.workbench.evaluate import call_each
 from edingcnc_lang.kinematics.workbench.findings import Finding, Report, report_from_json
-from edingcnc_lang.kinematics.workbench.workspace import (Workspace, default_workspace, from_cartesian_limits,
-                                                             turning_rotaries,
-                                                          from_joint_limits, parse_box)
+from edingcnc_lang.kinematics.workbench.workspace import (
+    Workspace,
+    default_workspace,
+    from_cartesian_limits,
+    turning_rotaries,
+    from_joint_limits,
+    parse_box,
+)
 
 
 @dataclass(frozen=True)
@@ -53,7 +58,7 @@ def read_machine(ini: str | None) -> Machine:
     """The ini read once by ``load_config`` (so its values are checked as a run checks them)."""
     if ini is None:
         return Machine({}, (), None)
-    from edingcnc_lang.config import load_config
+    from edingcnc_lang.config.machine_config import load_config
 
     config = load_config(ini)
     limits = tuple((j.negative_limit, j.positive_limit) for j in config.joints)

@@ -18,7 +18,7 @@ from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
-from edingcnc_lang.plot.formats import picture_format
+from edingcnc_lang.picture_formats import picture_format
 
 SLICES = ((0, 1, 2), (0, 2, 1), (1, 2, 0))  # (horizontal axis, vertical axis, the axis held at its middle)
 # reached, out of reach, raised, NaN, beyond the ini's joint limits (by Status)

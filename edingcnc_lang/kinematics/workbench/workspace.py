@@ -20,7 +20,7 @@ import numpy as np
 from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics
 
 if TYPE_CHECKING:
-    from edingcnc_lang.config import MachineConfig
+    from edingcnc_lang.config.machine_config import MachineConfig
 
 DEFAULT_BOX = ((-100.0, 100.0), (-100.0, 100.0), (-100.0, 100.0), (0.0, 0.0), (0.0, 0.0), (0.0, 0.0))
 UNLIMITED = 10_000.0

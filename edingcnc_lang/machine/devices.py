@@ -1,0 +1,102 @@
+"""The M codes of attached devices (manual 3.7.2, 3.7.10..3.7.12) and the modbus command.
+
+None of them moves the machine, but each has an effect a job or its simulation can see: an
+event with the values the line gave (the laser, the torch height control, the 3D printer's
+heaters and fan), the alternate spindle's offsets (M91..M97) and the values a modbus read
+writes into its variables.
+"""
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import Event
+from edingcnc_lang.machine.evaluator import param_index
+from edingcnc_lang.machine.state import CommandTable, MachineState, StepTable, format_value
+
+# M90..M97 -> the [SPINDLE_n] section whose offsets apply (manual 3.7.2: M91..M93 the 2nd..4th spindle;
+# the ini's comments name [SPINDLE_3] "Mounted Probe M95" and [SPINDLE_4] "Mounted camera M97").
+SPINDLE_SECTION = {90: 0, 91: 1, 92: 2, 93: 3, 95: 3, 97: 4}
+# 3D printing (3.7.12): what S means for each code, and its unit.
+PRINTER = {104: ("extruder", "degC"), 109: ("extruder", "degC"), 140: ("bed", "degC"), 190: ("bed", "degC"),
+           143: ("extruder_max", "degC"), 106: ("fan", "percent"), 107: ("fan", "percent")}
+WAITS = frozenset({109, 190})  # set the temperature and wait until it is reached
+MODBUS_READS = frozenset({1, 2, 3, 4})  # read coils, discrete inputs, holding and input registers
+_MODBUS_WORD = re.compile(r"([a-z])\s*(-?\d+(?:\.\d*)?)", re.IGNORECASE)
+
+
+class Devices(MachineState):
+    """M10/M11, M20..M23, the 3D printer's M codes, M91..M97's offsets, M100 and modbus."""
+
+    def _step_laser(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """M10 laser off, M11 on (3.7.11); under ``LaserEngrave on`` they switch on the moves' path."""
+        self.canon.event(Event("laser", self.path, self.line, {"m": code // 10, "on": code == 110}))
+
+    def _step_thc(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """M20 torch height control off, M21 on, M22 Q the set voltage (3.7.10); M23 reported as given."""
+        m = code // 10
+        data: dict[str, object] = {"m": m}
+        if m in (20, 21):
+            data["on"] = m == 21
+        if "Q" in words:
+            data["q"] = words["Q"]
+        elif m == 22:
+            raise self.fail("M22 needs Q, the torch height control's set voltage", span)
+        self.canon.event(Event("thc", self.path, self.line, data))
+
+    def _step_printer(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        """3D printing (3.7.12): S is a temperature (degrees C) or the fan's 0..100 %, never a spindle speed."""
+        m = code // 10
+        target, unit = PRINTER[m]
+        value = 0.0 if m == 107 else words.get("S", 100.0 if m == 106 else 0.0)
+        if value < 0 or (unit == "percent" and value > 100):
+            raise self.fail(f"M{m} S{format_value(value)}: the {'fan value must lie in 0..100' if unit == 'percent' else 'temperature must not be negative'}", span)
+        self.heaters[target] = value
+        self.canon.event(Event("printer", self.path, self.line,
+                               {"m": m, target: value, "unit": unit, "wait": m in WAITS}))
+
+    def _heaters_off(self) -> None:
+        """M30 (3.7.1: "Alle 3D-Drucker heizen AUS")."""
+        if any(self.heaters.values()):
+            self.heaters = {}
+            self.canon.event(Event("printer", self.path, self.line, {"m": 30, "off": True}))
+
+    def _select_spindle(self, m: int) -> None:
+        """M90..M97: #5390, and the selected spindle's offsets move the controlled point (3.7.2)."""
+        self.params.set(t.SPINDLE_SELECTED, float(m - 90))
+        section = SPINDLE_SECTION.get(m)
+        offsets = self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
+        if tuple(self.spindle_offset) != offsets:
+            self.spindle_offset = offsets
+            self._offsets_changed()
+
+    def _modbus(self, stmt: n.Command) -> None:
+        """``modbus s<slave> f<function> a<address> n<count> u<variable>`` reads (f1..f4) into #u..;
+        the host's modbus callback answers, else 0 (no bus in simulation).  Every transfer is an event."""
+        words = {k.lower(): float(v) for k, v in _MODBUS_WORD.findall(stmt.args)}
+        data: dict[str, object] = {"args": stmt.args, **{k: v for k, v in words.items()}}
+        function = int(words.get("f", 0))
+        if function in MODBUS_READS:
+            if "u" not in words:
+                raise self.fail("a modbus read (f1..f4) needs u<variable>, where the values go, e.g. "
+                                "modbus s1 f3 a100 n1 u1000", stmt.span)
+            count = int(words.get("n", 1))
+            if not 1 <= count <= 125:
+                raise self.fail("modbus n: read 1..125 values", stmt.span)
+            first = param_index(words["u"], stmt.span)
+            read = self.host.modbus
+            values = list(read(int(words.get("s", 0)), function, int(words.get("a", 0)), count)) if read else []
+            values = (values + [0.0] * count)[:count]
+            for offset, value in enumerate(values):
+                self.params.write(param_index(first + offset, stmt.span), float(value), self.where(stmt.span))
+            data["values"] = values
+        self.canon.event(Event("modbus", self.path, self.line, data))
+
+
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+STEPS: StepTable = {"laser": Devices._step_laser, "thc": Devices._step_thc, "printer": Devices._step_printer}
+
+# Named commands of this part, by lower-case name (commands.py dispatches them).
+COMMANDS: CommandTable = {"modbus": Devices._modbus}

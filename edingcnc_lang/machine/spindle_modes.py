@@ -1,0 +1,86 @@
+"""The spindle: S, M3/M4/M5 and the speed modes G96 (constant surface speed) and G97 (rpm).
+
+What a speed means lives here; the arithmetic (the speed at a radius, the mean speed along a
+move) is ``spindle.py``.  Every change of the speed in force is an ``spindle_speed`` event, and
+every move carries the speed along it (``state._move``).
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import Event
+from edingcnc_lang.machine.spindle import FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits
+from edingcnc_lang.machine.state import G_96, MachineState, format_value, StepTable
+
+
+class SpindleModes(MachineState):
+    """G96/G97 run before S on a line (the order of execution), so ``G96 S150 D2500`` reads S as m/min."""
+
+    def _step_spindle_mode(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
+                           span: n.Span) -> None:
+        if code == G_96:
+            if "D" in words:
+                if words["D"] < 0:
+                    raise self.fail(f"G96 D{format_value(words['D'])}: the maximum spindle speed must not be "
+                                    "negative", span)
+                self.css_max = words["D"]
+            self.css_setting = self.css_setting or (0.0, 0.0, 0.0)
+        else:
+            if self.css_setting is not None:  # keep turning at the speed CSS asked for here
+                self.rpm = self.rpm_at(self.pos[0])
+                self.speed = self.rpm
+            self.css_setting = None
+        if "S" not in words:
+            self._apply_speed(span)
+
+    def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                            span: n.Span) -> None:
+        if value < 0:
+            raise self.fail(f"spindle speed S{format_value(value)} is negative", span)
+        self.speed = value
+        self._apply_speed(span)
+
+    def _apply_speed(self, span: n.Span) -> None:
+        """Turn the S in force into the speed the spindle runs at, and report it."""
+        config = self.config
+        if self.css_setting is not None:
+            try:
+                max_rpm, min_rpm = css_limits(self.css_max or None, config.spindle_max_rpm, config.spindle_min_rpm)
+            except SpindleError as err:
+                raise self.fail(str(err), span) from None
+            per_unit = FT_PER_MIN if self.inch else M_PER_MIN
+            self.css_setting = (self.speed * per_unit, max_rpm, min_rpm)
+            data = {"mode": "css", "speed": self.speed, "max_rpm": max_rpm}
+        else:
+            self.rpm = clamp_rpm(self.speed, config.spindle_max_rpm, config.spindle_min_rpm)
+            data = {"mode": "rpm", "speed": self.speed, "max_rpm": config.spindle_max_rpm}
+        rpm = self.rpm_at(self.pos[0])
+        self.canon.event(Event("spindle_speed", self.path, self.line, {**data, "rpm": rpm}))
+
+    def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
+        self._spindle_turn(code // 10)
+
+    def _spindle_stop(self) -> None:
+        """The spindle stops without an M5 of the program (after M6, manual 3.7.3)."""
+        self._spindle_turn(5)
+
+    def _spindle_turn(self, direction: int) -> None:
+        self.spindle = direction
+        on = self.spindle != 5
+        rpm = self.rpm_at(self.pos[0])
+        self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
+        self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed,
+                                                                 "rpm": rpm if on else 0.0}))
+
+    def spindle_state(self) -> dict[str, object]:
+        """The spindle at the end of a run, for ``--json``: direction, mode and speed."""
+        css = self.css_setting
+        return {"m": self.spindle, "mode": "G96" if css is not None else "G97", "s": self.speed,
+                "rpm": self.rpm_at(self.pos[0]) if self.spindle != 5 else 0.0,
+                "max_rpm": css[1] if css is not None else self.config.spindle_max_rpm}
+
+
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+STEPS: StepTable = {"spindle_mode": SpindleModes._step_spindle_mode, "spindle_speed": SpindleModes._step_spindle_speed, "spindle": SpindleModes._step_spindle}

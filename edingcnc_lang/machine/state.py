@@ -1,0 +1,425 @@
+"""The interpreter's machine state and the constants its parts share.
+
+``MachineState`` holds what one virtual machine knows (modal state, position, feed, tools,
+parameters, the call stack) and the few helpers every part needs: errors that name the line,
+the step budget and handing a move to the canon.  The parts of the interpreter (control flow,
+line steps, offsets, motion, ...) are mixins on top of it, assembled in ``machine.py``.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from contextlib import AbstractContextManager
+from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import AXES, PLANES, Arc, Canon, Css, Event, Move, Pose
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.errors import Location, MachineError
+from edingcnc_lang.machine.evaluator import Evaluator
+from edingcnc_lang.host import Host
+from edingcnc_lang.machine.parameters import Parameters
+from edingcnc_lang.machine.spindle import SpindleError, mean_rpm_points
+from edingcnc_lang.machine.observe import Observer
+
+INCH = t.MM_PER_INCH
+MAX_CALL_DEPTH = 64
+MIN_PROBE_DISTANCE = 0.254
+G = t.code_key  # G(38.2) -> 382
+
+AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
+AXIS_SET = frozenset(AXES)
+LINEAR_AXES = frozenset("XYZ")
+UNSUPPORTED_MOTION: frozenset[int] = frozenset()  # every motion code of the tables runs
+PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1))  # M0, M1 (M60 ends the program like M30)
+SPINDLE_SELECT = tuple(range(90, 98))  # M90 standard spindle, M91..M97 alternate spindles (#5390 = 0..7)
+ROTARY = (3, 4, 5)
+
+# G codes as integer tenths, computed once (they are compared on every line).
+G_0 = G(0)
+G_1 = G(1)
+G_2 = G(2)
+G_3 = G(3)
+G_4 = G(4)
+G_10 = G(10)
+G_17 = G(17)
+G_18 = G(18)
+G_19 = G(19)
+G_20 = G(20)
+G_21 = G(21)
+G_28 = G(28)
+G_30 = G(30)
+G_38_2 = G(38.2)
+G_40 = G(40)
+G_41 = G(41)
+G_41_1 = G(41.1)
+G_42_1 = G(42.1)
+G_43 = G(43)
+G_43_1 = G(43.1)
+G_49 = G(49)
+G_51 = G(51)
+G_53 = G(53)
+G_54 = G(54)
+G_64 = G(64)
+G_68 = G(68)
+G_69 = G(69)
+G_70 = G(70)
+G_80 = G(80)
+G_90 = G(90)
+G_91 = G(91)
+G_92 = G(92)
+G_92_1 = G(92.1)
+G_92_2 = G(92.2)
+G_92_3 = G(92.3)
+G_93 = G(93)
+G_94 = G(94)
+G_95 = G(95)
+G_96 = G(96)
+G_98 = G(98)
+G_99 = G(99)
+
+PLANE_OF = {G_17: "XY", G_18: "XZ", G_19: "YZ"}
+# Axis words that give IJK centre offsets per plane, in the plane's (first, second) order.
+CENTER_WORDS = {"XY": ("I", "J"), "XZ": ("K", "I"), "YZ": ("J", "K")}
+DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_40,
+                 "length_offset": G_49, "coord_system": G_54, "path_control": G_64,
+                 "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
+
+
+# Dispatch tables of the parts (machine.py merges them): functions, not method names, so every
+# entry is checked by mypy and seen by dead-code tools.  The methods take the part's own type.
+StatementTable = dict[type, Callable[..., None]]      # statement type -> (machine, stmt)
+StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
+CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
+class Turn(NamedTuple):
+    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
+
+    pivot: tuple[float, float, float]
+    angle: float
+    plane: str  # "XY", "YZ" or "XZ"
+
+
+class ProgramEnd(Exception):
+    """M2/M30 (or the end of the file): stops execution wherever it is."""
+
+
+@dataclass
+class CallFrame:
+    """A sub being run, kept so that errors can show the GoSub chain that led to them."""
+
+    name: str  # lower-case sub name
+    path: str
+    line: int
+
+
+def format_value(value: float) -> str:
+    """How numbers appear in messages: integers plainly, others with up to 4 decimals; an infinite
+    or NaN value (only an embedding program can make one) as ``inf``, ``-inf`` or ``nan``."""
+    if not math.isfinite(value):
+        return str(value)
+    if value == int(value) and abs(value) < 1e15:
+        return str(int(value))
+    if abs(value) >= 1e15:  # not 309 digits for 1e308
+        return f"{value:.6g}"
+    return f"{value:.4f}".rstrip("0").rstrip(".")
+
+
+
+def enters_box(start: Pose, end: Pose | list[float], low: tuple[float, ...], high: tuple[float, ...]) -> bool:
+    """Whether the straight XYZ line from start to end goes into the box from outside (an empty box: never)."""
+    if all(a >= b for a, b in zip(low[:3], high[:3])) or all(low[i] <= start[i] <= high[i] for i in range(3)):
+        return False  # no area configured, or already inside it (leaving is allowed)
+    t0, t1 = 0.0, 1.0
+    for axis in range(3):
+        a, d = start[axis], end[axis] - start[axis]
+        if abs(d) < 1e-12:
+            if not low[axis] <= a <= high[axis]:
+                return False
+            continue
+        u0, u1 = sorted(((low[axis] - a) / d, (high[axis] - a) / d))
+        t0, t1 = max(t0, u0), min(t1, u1)
+        if t0 > t1:
+            return False
+    return True
+
+
+def path_length(start: Pose, end: Pose | list[float], arc: Arc | None) -> float:
+    """How far the tool travels along a move (mm): the helix of an arc, else the straight XYZ line."""
+    if arc is None:
+        return xyz_distance(start, end)
+    first, second, normal = PLANES[arc.plane]
+    cx, cy = (arc.center[1], arc.center[0]) if arc.plane == "XZ" else arc.center
+    a0 = math.atan2(start[second] - cy, start[first] - cx)
+    a1 = math.atan2(end[second] - cy, end[first] - cx)
+    turned = ((a1 - a0) * arc.turn) % (2 * math.pi) + 2 * math.pi * arc.full_turns
+    radius = math.hypot(start[first] - cx, start[second] - cy)
+    return math.hypot(radius * turned, end[normal] - start[normal])
+
+
+def xyz_distance(a: list[float] | Pose, b: list[float] | Pose) -> float:
+    """Length of a move in XYZ (mm)."""
+    return math.dist(a[:3], b[:3])
+
+
+def fmt_point(point: tuple[float, float]) -> str:
+    return ", ".join(f"{v:.4f}" for v in point)
+
+
+class MachineState:
+    """What one virtual machine knows; create one Interpreter per job run."""
+
+    # Built by machine.py from the parts: statement type -> method, and the steps of a line in order.
+    _EXECUTE: ClassVar[StatementTable]
+    _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
+
+    def __init__(self, canon: Canon, config: MachineConfig | None = None, host: Host | None = None, *,
+                 max_steps: int | None = None, log_dir: Path | None = None, allow_exec: bool = False,
+                 simulation: bool = True, block_delete: bool = False, observer: Observer | None = None) -> None:
+        self.canon = canon
+        self.observer = observer
+        self.config = config or MachineConfig.default()
+        self.host = host or Host()
+        self.max_steps = max_steps
+        self.log_dir = log_dir
+        # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
+        self.own_files: frozenset[tuple[int, int]] = frozenset()
+        self.allow_exec = allow_exec
+        self.block_delete = block_delete
+        self.steps = 0
+        self.subs: dict[str, n.Sub] = {}
+        self.stack: list[CallFrame] = []
+        self.params = Parameters(self._live_param, self._offsets_changed)
+        self.evaluator = Evaluator(self.params)
+        self.modal: dict[str, int] = dict(DEFAULT_MODAL)
+        if not self.config.g64_active:  # [INTERPRETER] g64Active = 0: the machine starts in exact stop
+            self.modal["path_control"] = t.code_key(61)
+        self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
+        self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
+        self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
+        self.rpm = 0.0                     # G97: the speed the spindle turns at, S within the machine's range
+        self.css_setting: tuple[float, float, float] | None = None  # G96: surface mm/min, max and min rpm
+        self.css_max = 0.0                 # the D word of G96 (0: none)
+        self.sync_pitch = 0.0              # K of G33, mm per revolution
+        self.spindle = 5                   # M3, M4 or M5
+        self.coolant: set[int] = set()
+        self.selected_tool = 0
+        self.tool_z = 0.0                  # active G43 length
+        self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
+        self.length_follows_tool = False   # a plain G43 is in force: every M6 applies the new tool's length
+        self.g92_active = False
+        self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
+        self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
+        self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
+        self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
+        self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
+        self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
+        self.outputs: dict[int, bool] = {}
+        self.kinematics_active = False
+        self.tanknife = False
+        self.clamped = False               # M26: the rotary axes are clamped until M27
+        self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
+        self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
+        self.spindle_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the selected spindle's (M91..M97)
+        self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
+        self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
+        # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
+        # the runner sets it, an MDI session has no loaded job.
+        self.job_tools: Callable[[], Sequence[int]] = tuple
+        self.ended_by = "end of file"
+        self.messages: list[Event] = []
+        self.path = "<string>"
+        self.line = 0
+        self._offset: list[float] | None = None
+        self._tool_cursor = 0
+        self._log_file: Path | None = None
+        self._logged = 0  # bytes written to log files by this run (limits.MAX_LOG_BYTES)
+        self._init_params(simulation)
+        if self.config.lathe:
+            self.modal["plane"] = G_18
+
+    def _init_params(self, simulation: bool) -> None:
+        initial: dict[int, float] = dict(self.config.variables)
+        for number, tool in self.config.tools.items():
+            initial[t.TOOL_LENGTH + number] = tool.length
+            initial[t.TOOL_DIAMETER + number] = tool.diameter
+            initial[t.TOOL_X_OFFSET + number] = tool.width
+            initial[t.TOOL_X_WEAR + number] = tool.x_delta
+            initial[t.TOOL_Z_WEAR + number] = tool.z_delta
+            initial[t.TOOL_ORIENTATION + number] = float(tool.orientation)
+        for axis, joint in enumerate(self.config.joints):
+            initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
+            initial[t.SOFT_LIMIT_POS + axis] = joint.positive_limit
+            initial[t.HOME_POSITION + axis] = joint.home_position
+        for axis in range(3):  # the tool-change area (manual 3.1: #5131..#5133, #5141..#5143)
+            initial[t.TCA_NEGATIVE + axis] = self.config.tca_negative[axis]
+            initial[t.TCA_POSITIVE + axis] = self.config.tca_positive[axis]
+        initial.setdefault(t.COORD_SYSTEM, 1.0)
+        initial[t.SIMULATION] = 1.0 if simulation else 0.0
+        initial[t.KIN_TYPE] = 1.0
+        self.params.load(initial)
+        system = int(self.params.values[t.COORD_SYSTEM])
+        self.modal["coord_system"] = t.COORD_SYSTEM_CODES[system - 1] if 1 <= system <= 9 else G_54
+        self.params.values[t.COORD_SYSTEM] = float(t.COORD_SYSTEM_CODES.index(self.modal["coord_system"]) + 1)
+        self.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
+
+    @property
+    def inch(self) -> bool:
+        """The program's lengths are inches (G20/G70)."""
+        return self.modal["units"] in (G_20, G_70)
+
+    @property
+    def scale(self) -> float:
+        return INCH if self.inch else 1.0
+
+    def where(self, span: n.Span | None = None) -> Location:
+        if span is not None and span.line:
+            return Location(span.path, span.line, span.col)
+        return Location(self.path, self.line)
+
+    def log_folder(self) -> Path:
+        """Where the files a job names (logfile, ZHCS, ZHCL) live: --log-dir, else the job's folder."""
+        return self.log_dir or Path(self.path).resolve().parent
+
+    def fail(self, message: str, span: n.Span | None = None) -> MachineError:
+        return MachineError(message, self.where(span))
+
+    def refuse_with_comp(self, what: str, span: n.Span | None) -> None:
+        """``what`` is refused while cutter compensation is on (as LinuxCNC does)."""
+        if self.modal["cutter_comp"] != G_40:
+            raise self.fail(f"{what} is not allowed while cutter compensation (G41/G42) is on; "
+                            "turn it off with G40 first", span)
+
+    def spend(self, steps: int, span: n.Span | None = None) -> None:
+        """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""
+        self.steps += steps
+        if self.max_steps is not None and self.steps > self.max_steps:
+            raise self.fail(f"step budget of {self.max_steps:,} steps exhausted (an endless loop?): statements, "
+                            "loop turns and drilled holes count; raise it with --max-steps N "
+                            "(RunOptions.max_steps in Python)", span)
+
+    @property
+    def diameter_mode(self) -> bool:
+        """X words and the work X position are diameters (a lathe with diameterProgramming = 1)."""
+        return self.config.diameter_mode
+
+    def css(self) -> Css | None:
+        """Constant surface speed in force (G96), centred on the current work X0; None under G97."""
+        if self.css_setting is None:
+            return None
+        surface, max_rpm, min_rpm = self.css_setting
+        return Css(surface, max_rpm, min_rpm, self.offset()[0])
+
+    def rpm_at(self, x: float) -> float:
+        """The programmed spindle speed with the tool at machine X ``x`` (also while it is stopped)."""
+        css = self.css()
+        return css.rpm(x) if css is not None else self.rpm
+
+    def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
+              sync: float = 0.0) -> None:
+        start = tuple(self.pos)
+        if self.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
+            raise self.fail("a rotary axis cannot move while it is clamped (M26): release it with M27 first")
+        if self.tca_guard and kind != "home" and enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
+            low, high = self.config.tca_negative, self.config.tca_positive
+            raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
+                            f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
+                            "cnc.ini [KINEMATICS] ...TCA): switch it off with TCAGuard off first")
+        rpm, css = self.spindle_along()
+        self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
+                             css.rpm(end[0]) if css is not None else rpm, css, sync, self.caller()))
+        self.job_distance += path_length(start, end, arc)
+        self.pos = list(end)  # only a move the machine made changes the position
+
+    def travelled(self, start: Pose | list[float], ends: Sequence[Pose]) -> None:
+        """Count straight moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does."""
+        distance = self.job_distance
+        points = [start[:3], *[end[:3] for end in ends]]
+        for step in map(math.dist, points, points[1:]):  # xyz_distance of each move
+            distance += step
+        self.job_distance = distance
+
+    def spindle_along(self) -> tuple[float, Css | None]:
+        """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the
+        constant surface speed that gives the speed at any X instead."""
+        if self.spindle == 5:
+            return 0.0, None
+        css = self.css()
+        return (0.0, css) if css is not None else (self.rpm, None)
+
+    def caller(self) -> int:
+        """``Move.caller`` of a move made now: the line of the outermost sub call, 0 at the top level."""
+        return self.stack[0].line if self.stack else 0
+
+    def mean_rpm(self, xs: list[float], span: n.Span | None) -> float:
+        """The spindle speed that gives a per-revolution move through machine X ``xs`` its true time."""
+        css = self.css()
+        if css is None:
+            return self.rpm
+        try:
+            return mean_rpm_points(css, xs)
+        except SpindleError as err:
+            raise self.fail(str(err), span) from None
+
+    def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span,
+                  xs: list[float] | None = None) -> float:
+        """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode.
+
+        ``xs`` are machine X values along the move (start to end), for feed per revolution
+        under constant surface speed; by default the move is straight from here to here.
+        """
+        mode = self.modal["feed_mode"]
+        if mode == G_93:
+            if "F" not in words or words["F"] <= 0:
+                raise self.fail("inverse time mode (G93) needs a positive F on every feed move", span)
+            return length * words["F"]
+        if mode == G_95:
+            rpm = self.mean_rpm(xs or [self.pos[0]], span)
+            if self.feed > 0 and rpm <= 0:
+                raise self.fail("feed per revolution (G95) with no spindle speed: program S first", span)
+            rate = self.feed * rpm
+        else:
+            rate = self.feed
+        if rate <= 0:
+            raise self.fail("feed rate is 0: program an F word before this feed move (EdingCNC error G1516)",
+                            span)
+        return rate
+
+    if TYPE_CHECKING:
+        # What the parts call on each other.  Each is defined once, in the part named; machine.py
+        # assembles the parts into one class, and these declarations let mypy check every such call.
+        def execute(self, stmt: n.Stmt) -> None: ...                                         # flow.py
+        def call_sub(self, name: str, span: n.Span | None = None) -> None: ...              # flow.py
+        def _exec_plain_run(self, run: n.PlainRun) -> None: ...                              # bulk.py
+        def _exec_plain_lines(self, run: n.PlainRun) -> None: ...                            # bulk.py
+        def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None: ...  # messages.py
+        def offset(self) -> list[float]: ...                                                 # offsets.py
+        def _live_param(self, index: int) -> float: ...                                      # offsets.py
+        def _offsets_changed(self) -> None: ...                                              # offsets.py
+        def _target(self, words: Mapping[str, float], machine: bool = False) -> list[float]: ...  # offsets.py
+        def machine_kept(self) -> AbstractContextManager[None]: ...                          # offsets.py
+        def work_position(self, machine: list[float] | None = None) -> list[float]: ...      # offsets.py
+        def to_machine(self, work: list[float]) -> list[float]: ...                          # offsets.py
+        def machine_frame(self, pose: list[float] | tuple[float, ...]) -> tuple[float, ...]: ...  # offsets.py
+        def program_frame(self, pose: list[float] | tuple[float, ...]) -> list[float]: ...   # offsets.py
+        def reported_position(self, machine: list[float] | None = None) -> list[float]: ...  # offsets.py
+        def _machine_move(self, kind: str, machine: list[float], feed: float = 0.0) -> None: ...  # offsets.py
+        def _select_coord_system(self, code: int) -> None: ...                               # offsets.py
+        def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None: ...  # offsets.py
+        def scaling_off(self) -> None: ...                                                   # scaling.py
+        def _motion(self, words: Mapping[str, float], g: Mapping[str, int], non_modal: int | None,
+                    span: n.Span) -> None: ...                                               # moves.py
+        def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None: ...  # canned.py
+        def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
+        def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py
+        def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None: ...  # threads.py
+        def _spindle_stop(self) -> None: ...                                                 # spindle_modes.py
+        def _select_spindle(self, m: int) -> None: ...                                       # devices.py
+        def _heaters_off(self) -> None: ...                                                  # devices.py
+        def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None: ...
+        def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                                span: n.Span) -> None: ...
+        def _step_tool_select(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
+                              span: n.Span) -> None: ...

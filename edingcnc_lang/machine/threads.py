@@ -1,0 +1,107 @@
+"""Spindle-synchronised motion: G33 (a thread pass), G33.1 (rigid tapping) and the G76 cycle.
+
+A synchronised move advances ``pitch`` mm of path per spindle revolution, so it runs at pitch x
+rpm and is a ``linear`` move whose ``Move.sync`` is the pitch.  G76's passes come from the pure
+``thread_passes.py``; this part checks the words it owns (plane, axis words, the spindle) and turns
+the passes into machine moves.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.canon import Event
+from edingcnc_lang.machine.thread_passes import G76Words, ThreadError, g76
+from edingcnc_lang.machine.state import G, G_40, MachineState, PLANE_OF, format_value, xyz_distance
+
+G_33 = G(33)
+G_33_1 = G(33.1)
+G_76 = G(76)
+G76_LETTERS = "PZIJKRQHEL"
+G76_SCALED = frozenset("PZIJKE")     # lengths: converted from inch in G20
+G76_DIAMETERS = frozenset("IJK")     # halved in diameter mode, as LinuxCNC does in G7
+
+
+class Threading(MachineState):
+    """G33, G33.1 and G76: each needs the spindle turning, since the feed is the spindle's pace."""
+
+    def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None:
+        name = f"G{format_value(motion / 10)}"
+        if self.spindle == 5 or self.rpm_at(self.pos[0]) <= 0:
+            raise self.fail(f"{name} needs the spindle turning: program M3 or M4 with an S word first", span)
+        if self.modal["cutter_comp"] != G_40:
+            raise self.fail(f"{name} is not allowed while cutter compensation (G41/G42) is on", span)
+        SYNC_MOTION[motion](self, words, span)
+
+    def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None:
+        """One synchronised move from here to ``end`` (its feed: pitch x the mean spindle speed)."""
+        if xyz_distance(self.pos, end) <= 1e-12:
+            return
+        feed = pitch * self.mean_rpm([self.pos[0], end[0]], span)
+        self._move("linear", end, feed, sync=pitch)
+
+    def _pitch(self, words: Mapping[str, float], code: str, span: n.Span) -> float | None:
+        if "K" not in words:
+            return None
+        if words["K"] <= 0:
+            raise self.fail(f"{code} K{format_value(words['K'])}: the pitch (distance per revolution) must be "
+                            "greater than 0", span)
+        return words["K"] * self.scale
+
+    def _g33(self, words: Mapping[str, float], span: n.Span) -> None:
+        pitch = self._pitch(words, "G33", span)
+        if pitch is not None:
+            self.sync_pitch = pitch
+        elif self.sync_pitch <= 0:
+            raise self.fail("G33 needs K, the pitch (distance per spindle revolution)", span)
+        self._sync_move(self._target(words), self.sync_pitch, span)
+
+    def _g33_1(self, words: Mapping[str, float], span: n.Span) -> None:
+        """Rigid tapping: in at the pitch, the spindle reverses, out to the start, the spindle turns back."""
+        pitch = self._pitch(words, "G33.1", span)
+        if pitch is None:
+            raise self.fail("G33.1 needs K, the pitch of the tap", span)
+        start = list(self.pos)
+        forward = self.spindle
+        self._sync_move(self._target(words), pitch, span)
+        for direction in (7 - forward, forward):  # M3 <-> M4 and back again
+            self.canon.event(Event("spindle", self.path, self.line, {"m": direction, "speed": self.speed,
+                                                                     "rpm": self.rpm_at(self.pos[0]),
+                                                                     "rigid_tap": True}))
+            if direction != forward:
+                self._sync_move(start, pitch, span)
+
+    def _g76(self, words: Mapping[str, float], span: n.Span) -> None:
+        if PLANE_OF[self.modal["plane"]] != "XZ":
+            raise self.fail("G76 threads in the XZ plane: select G18 first", span)
+        stray = [a for a in "XYABC" if a in words]
+        if stray:
+            raise self.fail(f"G76 takes no {stray[0]} word: the thread starts at the current position "
+                            "and runs along Z to the Z word", span)
+        values: dict[str, float | None] = {}
+        for letter in G76_LETTERS:
+            value = words.get(letter)
+            if value is not None:
+                value *= self.scale if letter in G76_SCALED else 1.0
+                value /= 2.0 if letter in G76_DIAMETERS and self.diameter_mode else 1.0
+            values[letter.lower()] = value
+        if values["z"] is not None:
+            values["z"] = self._target({"Z": words["Z"]})[2]
+        start = list(self.pos)
+        try:
+            passes = g76(G76Words(**values), start[0], start[2], words)
+        except ThreadError as err:
+            raise self.fail(str(err), span) from None
+        self.spend(len(passes) // 4, span)
+        for move in passes:
+            end = list(self.pos)
+            end[0], end[2] = move.x, move.z
+            if move.kind == "rapid":
+                self._move("rapid", end)
+            else:
+                self._sync_move(end, move.pitch, span)
+
+
+# The synchronised motion codes and what runs each.
+SYNC_MOTION: Mapping[int, Callable[[Threading, Mapping[str, float], n.Span], None]] = {
+    G_33: Threading._g33, G_33_1: Threading._g33_1, G_76: Threading._g76}

@@ -1,0 +1,90 @@
+"""The limits report: how close the job came to the machine's soft limits, per axis and per joint.
+
+Axes are machine coordinates, measured against ``[KINEMATICS]`` limits on a machine with
+kinematics other than trivial and against the joints' limits otherwise; joints against
+``[JOINT_n]``.  Arcs count with their extremes, and with kinematics on the joints count at every
+sample the motion stage evaluated, so the minimum and maximum are those of the whole path.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from edingcnc_lang.canon import AXES
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.machine.geometry import arc_extremes
+from edingcnc_lang.kinematics.trajectory import Geometry
+
+if TYPE_CHECKING:
+    import numpy as np
+
+
+class LimitsReport:
+    """Running minimum and maximum of every axis and joint (plain lists: a job that does not move needs no numpy)."""
+
+    def __init__(self, config: MachineConfig) -> None:
+        self.config = config
+        self.axis_low, self.axis_high = [math.inf] * 6, [-math.inf] * 6
+        self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
+
+    def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any] | None) -> None:
+        """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints
+        or None (joints = position); ``joints`` None: the joints are the position for every move."""
+        import numpy as np
+
+        if not ends.shape[1]:
+            return
+        low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
+        for geometry in arcs.values():
+            extremes = _arc_extremes(geometry)
+            if len(extremes):
+                low, high = np.minimum(low, extremes.min(axis=0)), np.maximum(high, extremes.max(axis=0))
+        self._widen("axis", low.tolist(), high.tolist())
+        if joints is None:  # the usual case: joints = position everywhere
+            self._widen("joint", low.tolist(), high.tolist())
+            return
+        identity = [i for i, j in enumerate(joints) if j is None]
+        joint_points = np.vstack([*(np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None),
+                                  starts[:, :1].T, ends[:, identity].T])
+        self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
+
+    def _widen(self, which: str, low: list[float], high: list[float]) -> None:
+        setattr(self, f"{which}_low", [min(a, b) for a, b in zip(getattr(self, f"{which}_low"), low)])
+        setattr(self, f"{which}_high", [max(a, b) for a, b in zip(getattr(self, f"{which}_high"), high)])
+
+    def to_json(self) -> dict[str, Any]:
+        """``{"axes": {"x": {...}}, "joints": {"x": {...}}}``; each ``{"min", "max", "lower", "upper", "margin"}``.
+
+        ``margin`` is the smaller distance left to either limit (negative: beyond it); axes that
+        never moved report ``null`` values.
+        """
+        cfg = self.config
+        joints_lower = [j.negative_limit for j in cfg.joints]
+        joints_upper = [j.positive_limit for j in cfg.joints]
+        axes_lower, axes_upper = cfg.axis_limits()
+        return {"axes": _table(self.axis_low, self.axis_high, axes_lower, axes_upper),
+                "joints": _table(self.joint_low, self.joint_high, joints_lower, joints_upper)}
+
+
+def _table(low: list[float], high: list[float], lower: list[float], upper: list[float]) -> dict[str, Any]:
+    table = {}
+    for axis, lo, hi, limit_lo, limit_hi in zip(AXES.lower(), low, high, lower, upper):
+        seen = math.isfinite(lo)
+        table[axis] = {"min": lo if seen else None, "max": hi if seen else None, "lower": limit_lo, "upper": limit_hi,
+                       "margin": min(lo - limit_lo, limit_hi - hi) if seen else None}
+    return table
+
+
+def _arc_extremes(geometry: Geometry) -> np.ndarray:
+    """Points where an arc reaches its extremes in its plane (its ends are counted already)."""
+    import numpy as np
+
+    frame = geometry.arc_frame()
+    radius = max(frame.r0, frame.r1)
+    sweep = abs(frame.sweep)
+    clockwise = frame.sweep < 0.0
+    found = arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise)
+    rows = np.tile(np.asarray(geometry.end, dtype=float), (len(found), 1))
+    for row, (p1, p2) in zip(rows, found):
+        row[frame.u], row[frame.v] = p1, p2
+    return rows.reshape(-1, 6)

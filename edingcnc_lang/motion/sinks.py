@@ -1,0 +1,339 @@
+"""Output sinks behind the planner: the trace CSV, the samples file and the event recorder.
+
+Each writes incrementally, so memory stays flat however long the job is
+(the .npz samples format is the exception: numpy writes it in one go at the end).
+Numbers are written with ``repr`` so they read back as the same double.  Only the samples
+writer needs numpy, and imports it itself.
+"""
+from __future__ import annotations
+
+import io
+import math
+import os
+import sys
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from pathlib import Path
+from typing import IO, TYPE_CHECKING, Any
+
+from edingcnc_lang import speedups
+from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.errors import EcncError, UsageFailure
+from edingcnc_lang.motion.stage import Samples
+from edingcnc_lang.motion.planner.estimate import Timing
+
+if TYPE_CHECKING:
+    import numpy as np
+
+SIX_REPR = ",".join(["%r"] * 6)
+TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
+SAMPLES_FORMATS = (".csv", ".npz")  # by the file's extension; "-" is CSV on standard output
+
+
+def samples_format_problem(path: Path) -> str | None:
+    """Why ``path`` cannot take the samples (an extension that is neither .csv nor .npz), else None."""
+    if str(path) == "-" or path.suffix.lower() in SAMPLES_FORMATS:
+        return None
+    return f"{path}: the samples file must end in .csv or .npz (or be - for CSV on standard output)"
+
+
+SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
+
+
+STDOUT = "-"  # as an output path: standard output
+
+
+class _NotOpen(io.StringIO):
+    """An output's stream before the run opens it (``open()``): closing it does nothing."""
+
+    def write(self, text: str) -> int:
+        raise ValueError("output written before it was opened")
+
+    def close(self) -> None:
+        pass
+
+
+_NOT_OPEN = _NotOpen()
+
+
+def _identity(path: Path) -> tuple[int, int] | None:
+    """The file ``path`` names (device and inode: a hard link or another spelling is the same file), or None."""
+    try:
+        info = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return (info.st_dev, info.st_ino)
+
+
+def check_outputs(outputs: Mapping[str, Path | None], inputs: Iterable[Path | None]) -> None:
+    """Refuse, before anything is written, an output that is one of the run's inputs (the job, the
+    ini, a macro file: writing would truncate it before it is read) or another output.
+
+    ``outputs`` maps what the user calls each (``--trace``) to its path; ``-`` is standard output.
+    Raises UsageFailure (exit 2).
+    """
+    read = {ident: path for path in inputs if path is not None and (ident := _identity(path)) is not None}
+    written: dict[tuple[int, int], str] = {}
+    for name, path in outputs.items():
+        if path is None or str(path) == STDOUT:
+            continue
+        ident = _identity(path)
+        if ident is None:  # a new file: it can only clash with another new output of the same name
+            ident = (-1, hash(os.path.abspath(path)))
+        if ident in read:
+            raise UsageFailure(f"{name} {path}: that file is also an input of this run ({read[ident]}); "
+                               "writing it would destroy it, so name another file")
+        if ident in written:
+            raise UsageFailure(f"{written[ident]} and {name} name the same file {path}: it cannot be written twice")
+        written[ident] = name
+
+
+def output_identities(paths: Iterable[Path | None]) -> frozenset[tuple[int, int]]:
+    """The files of ``paths`` that exist, as (device, inode): what a job's own files may never be."""
+    return frozenset(ident for path in paths if path is not None and str(path) != STDOUT
+                     and (ident := _identity(path)) is not None)
+
+
+def _open_for_writing(path: Path, binary: bool = False) -> IO:
+    """The file to write, locked against another run writing it at the same time; ``-`` is
+    standard output (closing the returned stream leaves it open).
+
+    The file is truncated only once it is locked, so a second run refused here leaves the first
+    one's rows alone.  Without fcntl (Windows) there is no lock.
+    """
+    try:
+        if str(path) == STDOUT:
+            sys.stdout.flush()  # anything printed before comes first
+            return open(sys.stdout.fileno(), "w", encoding="utf-8", newline="", buffering=1 << 16, closefd=False)
+        fd = os.open(path, os.O_WRONLY | os.O_CREAT | getattr(os, "O_CLOEXEC", 0), 0o666)
+    except OSError as err:
+        raise EcncError(f"cannot write {path}: {err.strerror}") from None
+    try:
+        _lock(fd, path)
+        if os.fstat(fd).st_size:
+            os.ftruncate(fd, 0)
+    except BaseException:
+        os.close(fd)
+        raise
+    if binary:
+        return open(fd, "wb")
+    return open(fd, "w", encoding="utf-8", newline="", buffering=1 << 16)
+
+
+def _lock(fd: int, path: Path) -> None:
+    """An exclusive lock on an output for as long as it is open; EcncError if another run holds one."""
+    try:
+        import fcntl
+    except ImportError:
+        return
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        raise EcncError(f"cannot write {path}: another run is writing it (two runs cannot share an output file)") \
+            from None
+    except OSError:  # a file system without locks (some network shares): write unlocked
+        pass
+
+
+def csv_field(text: str) -> str:
+    """A CSV field: quoted (quotes doubled) only when it holds a comma, quote or line end."""
+    if any(ch in text for ch in ',"\r\n'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
+class TraceWriter:
+    """One CSV row per executed move: source line, kind, machine end point, joints there, the file
+    the line belongs to, and ``t``, the planned time (seconds from the job start) at which the move ends."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self._file: IO = _NOT_OPEN
+
+    def open(self) -> None:
+        self._file = _open_for_writing(self.path)
+        self._file.write(TRACE_HEADER)
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        self._file.write(f"{move.line},{move.kind},{SIX_REPR % move.end},{SIX_REPR % tuple(joints)},"
+                         f"{csv_field(move.path)},{timing.end!r}\n")
+
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        """Rows of straight moves whose joints equal their end points; ``times[i + 1]`` is when move i ends."""
+        self._file.write(speedups.trace_rows(batch.lines, batch.kinds, batch.ends, csv_field(batch.path), times))
+
+    def event(self, event: Event) -> None:
+        pass
+
+    def close(self) -> None:
+        self._file.close()
+
+
+def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose], name: str,
+               times: Sequence[float]) -> str:
+    """The trace rows of straight moves whose joints are their end points (``times[i + 1]``: when move i ends).
+
+    The reference for ``speedups.trace_rows``, which must give the same text byte for byte.
+    """
+    rows = []
+    for line, kind, end, t in zip(lines, kinds, ends, times[1:]):
+        coords = SIX_REPR % end
+        rows.append(f"{line},{kind},{coords},{coords},{name},{t!r}\n")
+    return "".join(rows)
+
+
+class SamplesWriter:
+    """The time-true trajectory: CSV rows as moves arrive, or one .npz array at the end.
+
+    Rows are strictly increasing in time, one every ``interpolationTime`` along the planned
+    profile, with the path speed ``v`` and acceleration ``acc``.  The .npz file holds one 1-D
+    array per column name.
+    """
+
+    def __init__(self, path: Path) -> None:
+        problem = samples_format_problem(path)
+        if problem:
+            raise UsageFailure(problem)
+        self.path = path
+        self._npz = path.suffix.lower() == ".npz"
+        self._chunks: list[np.ndarray] = []
+        self._last_time = -math.inf
+        self._file: IO = _NOT_OPEN
+
+    def open(self) -> None:
+        self._file = _open_for_writing(self.path, binary=self._npz)
+        if not self._npz:
+            self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        if samples is None:
+            return
+        import numpy as np
+
+        spindle = _spindle_column(move, samples.pos[:, 0])
+        assert samples.speed is not None and samples.accel is not None  # the planner's time-true samples
+        rows = np.column_stack([samples.t, samples.pos, samples.joints, spindle, samples.speed, samples.accel])
+        rows = rows[samples.t > self._last_time]
+        if not len(rows):
+            return
+        self._last_time = float(rows[-1, 0])
+        if self._npz:
+            self._chunks.append(rows)
+        else:
+            self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
+
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        pass  # batches come only when no samples are written
+
+    def event(self, event: Event) -> None:
+        pass
+
+    def close(self) -> None:
+        if self._npz and self._file is not _NOT_OPEN:
+            import numpy as np
+
+            data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
+            columns: dict[str, Any] = {name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)}
+            np.savez(self._file, **columns)
+        self._file.close()
+
+
+def _spindle_column(move: Move, xs: np.ndarray) -> np.ndarray:
+    """The spindle speed (rpm) at every sample: constant, or following X under constant surface speed."""
+    import numpy as np
+
+    css = move.css
+    if css is None:
+        return np.full(len(xs), move.spindle)
+    radius = np.abs(xs - css.axis_x)
+    with np.errstate(divide="ignore"):
+        rpm = css.surface / (2.0 * np.pi * radius)
+    if css.max_rpm > 0.0:
+        rpm = np.minimum(rpm, css.max_rpm)
+    return np.maximum(rpm, css.min_rpm)
+
+
+class EventsWriter:
+    """JSON Lines (``ecnc run --events``): one object per move and per event, in the order they happen.
+
+    A move: ``{"type": "move", "file", "line", "kind", "end", "feed", "spindle", "synchronised", "t"}``
+    (``t``: when the move ends, as the planner timed it)
+    plus ``"pitch"`` (mm per revolution) for a spindle-synchronised move and ``"spindle_start"``
+    when constant surface speed changes the speed along it.  An event: ``{"type": "event",
+    "file", "line", "kind", "data"}``.
+    """
+
+    def __init__(self, path: Path) -> None:
+        from edingcnc_lang.syntax.serialize import json_text  # only when writing events
+
+        self._dumps = json_text
+        self.path = path
+        self._file: IO = _NOT_OPEN
+
+    def open(self) -> None:
+        self._file = _open_for_writing(self.path)
+
+    def _write(self, record: dict[str, object]) -> None:
+        self._file.write(self._dumps(record, default=str) + "\n")
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        record: dict[str, object] = {"type": "move", "file": move.path, "line": move.line, "kind": move.kind,
+                                     "end": list(move.end), "feed": move.feed, "spindle": move.spindle,
+                                     "synchronised": move.sync > 0.0, "t": timing.end}
+        if move.sync > 0.0:
+            record["pitch"] = move.sync
+        if move.css is not None:
+            record["spindle_start"] = move.css.rpm(move.start[0])
+        self._write(record)
+
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        for move, t0, t1, speed in zip(batch.moves(), times, times[1:], speeds):
+            self.move(move, move.end, None, Timing(t0, t1, speed))
+
+    def event(self, event: Event) -> None:
+        self._write({"type": "event", "file": event.path, "line": event.line, "kind": event.kind,
+                     "data": dict(event.data)})
+
+    def close(self) -> None:
+        self._file.close()
+
+
+class CallbackSink:
+    """Forwards moves and events to callables (the embedding API's streaming interface).
+
+    ``on_timed_move(move, joints, timing)`` also gets the move's ``Timing``: planned start and end
+    times and top speed.
+    """
+
+    def __init__(self, on_move: Callable[[Move, Pose], None] | None = None,
+                 on_event: Callable[[Event], None] | None = None,
+                 on_timed_move: Callable[[Move, Pose, Timing], None] | None = None) -> None:
+        self.on_move = on_move
+        self.on_event = on_event
+        self.on_timed_move = on_timed_move
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        if self.on_move:
+            self.on_move(move, joints)
+        if self.on_timed_move:
+            self.on_timed_move(move, joints, timing)
+
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        """Straight moves in bulk, each a ``Move`` again for the callables."""
+        if not (self.on_move or self.on_timed_move):
+            return
+        for move, t0, t1, speed in zip(batch.moves(), times, times[1:], speeds):
+            self.move(move, move.end, None, Timing(t0, t1, speed))
+
+    def event(self, event: Event) -> None:
+        if self.on_event:
+            self.on_event(event)
+
+    def close(self) -> None:
+        pass
+
+
+def ensure_parent(path: str | os.PathLike[str]) -> Path:
+    result = Path(path)
+    if result.parent and not result.parent.exists():
+        raise EcncError(f"cannot write {result}: folder {result.parent} does not exist")
+    return result

@@ -1,0 +1,393 @@
+"""Parsing: source lines -> AST statements, streaming, with errors in the user's terms.
+
+Each line is one statement, so a single line is parsed at a time (``line_parser.py``: the fast
+paths, the grammar, the error messages) and this module assembles the multi-line blocks (Sub,
+If, While) from the stream, in the four reading modes, and offers the whole-file entry points.
+"""
+from __future__ import annotations
+
+import os
+import re
+from array import array
+from bisect import bisect_left
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from dataclasses import dataclass, field, replace
+from itertools import islice
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang import speedups
+from edingcnc_lang.codes import Severity
+from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
+from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
+from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
+from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
+from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, is_fast_line, plain_block, plain_words  # re-exported: the public API
+from edingcnc_lang.syntax.blocks import Close, Open
+from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
+from edingcnc_lang.syntax.tree_builder import LineError as _LineError
+
+__all__ = ["CHUNK_LINES", "RUN_LENGTH", "UNITS", "CheckedFile", "StatementReader", "check_file",
+           "is_fast_line", "parse_file", "parse_line", "parse_line_grammar", "parse_text", "plain_block",
+           "plain_words", "read_statements"]
+
+UNITS = frozenset({"mm", "inch"})
+
+_UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
+RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
+CHUNK_LINES = 8192
+_NON_PLAIN = re.compile(rf"^(?![ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$).*$", re.MULTILINE)
+# In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
+# such as "If the probe does not trip, ..." must not open a block.
+_TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
+
+
+def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
+    """The lines in lists of CHUNK_LINES, with the line number of each list's first line."""
+    source = iter(lines)
+    base = 1
+    while True:
+        chunk = list(islice(source, CHUNK_LINES))
+        if not chunk:
+            return
+        yield base, chunk
+        base += len(chunk)
+
+
+def non_plain_lines(chunk: list[str]) -> list[int]:
+    """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``), found in one regex pass.
+
+    The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
+    """
+    if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
+        return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
+    joined = "\n".join(chunk)
+    found = []
+    index, position = 0, 0
+    for match in _NON_PLAIN.finditer(joined):
+        index += joined.count("\n", position, match.start())
+        position = match.start()
+        found.append(index)
+    return found
+
+
+# --------------------------------------------------------------------------- structure
+
+@dataclass
+class _Frame:
+    """An open block while its body is being collected."""
+
+    opener: Open
+    source: str
+    body: list[n.Stmt] = field(default_factory=list)
+    orelse: list[n.Stmt] = field(default_factory=list)
+    in_else: bool = False
+
+    def add(self, stmt: n.Stmt) -> None:
+        (self.orelse if self.in_else else self.body).append(stmt)
+
+    def close(self, end: n.Span) -> n.Stmt:
+        o = self.opener
+        if o.kind == "Sub":
+            return n.Sub(o.name, tuple(self.body), o.span, end)
+        assert o.cond is not None
+        if o.kind == "If":
+            return n.If(o.cond, tuple(self.body), tuple(self.orelse), self.in_else, o.extra, o.span, end)
+        return n.While(o.cond, tuple(self.body), o.extra, o.span, end)
+
+    def describe(self) -> str:
+        o = self.opener
+        return f"Sub {o.name} (line {o.span.line})" if o.kind == "Sub" else f"{o.kind} (line {o.span.line})"
+
+
+_END_OF = {"Sub": "EndSub", "If": "EndIf", "While": "EndWhile"}
+_OPENER_OF = {"EndSub": "Sub", "EndIf": "If", "EndWhile": "While", "Else": "If"}
+_ORPHAN_CODE = {"EndSub": "S203", "EndIf": "S200", "EndWhile": "S202", "Else": "S201"}
+
+
+class StatementReader:
+    """Streams the statements of a source, top level only, as soon as each is complete.
+
+    Diagnostics are collected in ``diagnostics`` (parsing goes on at the next
+    line); ``unit`` holds the ``@unit`` directive once the first line is read.
+    """
+
+    def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree",
+                 non_plain: Sequence[int] | None = None, tolerant: bool = False,
+                 check_dialogs: bool | None = None, on_chunk: Callable[[list[str]], None] | None = None) -> None:
+        self.path = path
+        # Whoever needs more of the text than statements (the T words GetToolInfo lists) sees
+        # every chunk of lines as it is read, so the file is not read again for it.
+        self.on_chunk = on_chunk
+        self.lines = 0  # how many lines have been read so far (all of them, once iterated)
+        self._recent: list[tuple[int, list[str]]] = []  # the last chunks read: an error's line text
+        # A tolerant read (macro files) keeps a line that does not parse as a BadLine statement and
+        # lists it in ``warnings``: the controller only fails on the lines it executes.
+        self.tolerant = tolerant
+        self.warnings: list[Diagnostic] = []
+        # The dlgmsg shapes the controller calls a syntax error although the grammar takes them (G1167):
+        # a job's check reports them before anything moves.
+        self.check_dialogs = mode == "check" if check_dialogs is None else check_dialogs
+        # How plain word lines (most of a CAM job) are delivered: "tree" as Block nodes like any
+        # line; "check" not at all at the top level (checking keeps nothing); "run" as PlainRun
+        # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute;
+        # "lint" as PlainRun chunks at the top level (the linter keeps the few it needs) and nodes inside.
+        self.mode = mode
+        # Line numbers of the lines that are not plain: recorded by a "check" read, reused by a "run" read.
+        self.non_plain: Sequence[int] = non_plain if non_plain is not None else array("I")
+        self._known = non_plain is not None
+        self.unit: str | None = None
+        self.diagnostics: list[Diagnostic] = []
+        self._lines = lines
+        self._skipped = 0  # blocks open beyond MAX_BLOCK_DEPTH, whose lines are dropped
+
+    def _error(self, code: str, message: str, line: int, col: int, source: str = "") -> None:
+        self.diagnostics.append(Diagnostic.make(code, message, self.path, line, col, source))
+
+    def __iter__(self) -> Iterator[n.Stmt]:
+        stack: list[_Frame] = []
+        path = self.path
+        bulk = self.mode != "tree"
+        lineno = 0
+        for base, chunk in _chunks(self._lines):
+            self.lines = base + len(chunk) - 1
+            self._recent = [*self._recent[-1:], (base, chunk)]
+            if self.on_chunk is not None:
+                self.on_chunk(chunk)
+            # Plain lines at the top level are skipped (check) or handed over in runs (run) in
+            # bulk: the regular-expression engine finds the few other lines of a chunk.
+            others = self._others(base, chunk) if bulk else []
+            i, count = 0, len(chunk)
+            while i < count:
+                if bulk and not stack:
+                    k = bisect_left(others, i)
+                    j = others[k] if k < len(others) else count
+                    if j > i:
+                        if self.mode != "check":
+                            for first in range(i, j, RUN_LENGTH):
+                                last = min(first + RUN_LENGTH, j)
+                                yield n.PlainRun(path, tuple(zip(range(base + first, base + last), chunk[first:last])))
+                        i = j
+                        continue
+                lineno = base + i
+                yield from self._line(stack, chunk[i], lineno, bulk)
+                i += 1
+        yield from self._unwind(stack, lineno + 1, report=True)
+
+    def line_text(self, number: int) -> str | None:
+        """The text of line ``number`` if it is among the lines read last (two chunks), else None."""
+        for base, chunk in self._recent:
+            if base <= number < base + len(chunk):
+                return chunk[number - base]
+        return None
+
+    def _others(self, base: int, chunk: list[str]) -> list[int]:
+        """Indices (within the chunk) of the chunk's lines that are not plain word lines."""
+        if self._known:
+            first = bisect_left(self.non_plain, base)
+            last = bisect_left(self.non_plain, base + len(chunk))
+            return [number - base for number in self.non_plain[first:last]]
+        others = speedups.non_plain_lines(chunk)
+        self.non_plain.extend(base + i for i in others)  # type: ignore[attr-defined]
+        return others
+
+    def _line(self, stack: list[_Frame], text: str, lineno: int, bulk: bool) -> Iterator[n.Stmt]:
+        """One line taken on its own: parse it and fit it into the block structure."""
+        path = self.path
+        if lineno == 1 and self._read_unit(text):
+            return
+        if bulk and stack and self.mode == "run" and not self._skipped and len(text) <= MAX_LINE_LENGTH \
+                and FAST_LINE.match(text):
+            stack[-1].add(plain_block(text, path, lineno))
+            return
+        try:
+            result = parse_line(text, path, lineno)
+        except _LineError as err:
+            yield from self._bad_line(stack, err, text, lineno)
+            return
+        if result is None:
+            return
+        if self._skipped and not isinstance(result, Open):  # inside blocks nested too deeply: dropped
+            if isinstance(result, Close) and result.kind != "Else":
+                self._skipped -= 1
+            return
+        if isinstance(result, n.Dialog) and (self.check_dialogs or self.tolerant):
+            result = self._check_dialog(result, text)
+        if isinstance(result, Open):
+            if result.kind == "Sub" and stack and not self._skipped:
+                self._error("S205", f"Sub {result.name} starts inside {stack[0].describe()}: "
+                            f"close that first (subs cannot be nested)", lineno, result.span.col, text)
+                yield from self._unwind(stack, lineno, report=False)
+            self._push(stack, result, text)
+        elif isinstance(result, Close):
+            done = self._close(stack, result, text)
+            if done is not None:
+                yield done
+        elif stack:
+            stack[-1].add(result)
+        else:
+            yield result
+
+    def _bad_line(self, stack: list[_Frame], err: _LineError, text: str, lineno: int) -> Iterator[n.Stmt]:
+        """A line that does not parse: an error, or (tolerant) a warning and a BadLine in its place."""
+        path = self.path
+        opener = (_TOLERANT_CONDITION if self.tolerant else CONDITION_LINE).match(text)
+        if self.tolerant:
+            self.warnings.append(replace(Diagnostic.make(err.code, err.message, path, lineno, err.col, text),
+                                         severity=Severity.WARNING))
+            bad = n.BadLine(err.code, err.message, err.col, n.Span(path, lineno, err.col, lineno, len(text) + 1), text)
+            if opener is None and stack:
+                stack[-1].add(bad)
+            elif opener is None:
+                yield bad
+        else:
+            self._error(err.code, err.message, lineno, err.col, text)
+        if opener:  # keep the block structure so its EndIf/EndWhile still matches
+            span = n.Span(path, lineno, opener.start(1) + 1, lineno, len(text) + 1)
+            head = Open(opener.group(1).capitalize(), span, cond=n.Number(1.0 if self.tolerant else 0.0))
+            self._push(stack, head, text)
+            if self.tolerant and stack and stack[-1].opener is head:  # reaching the head is the error
+                stack[-1].add(n.BadLine(err.code, err.message, err.col, span, text))
+
+    def _check_dialog(self, dialog: n.Dialog, text: str) -> n.Stmt:
+        """Report the dlgmsg shapes the controller refuses when it reads the line (G1167); a tolerant
+        read warns and keeps the line as a BadLine, an error only if a run reaches it."""
+        bad: n.Stmt = dialog
+        for problem in dialog_fields(dialog)[1]:
+            if problem.code in SYNTAX_CODES:
+                item = problem.item
+                col = (text.find(f'"{item}"') + 1 or dialog.span.col) if isinstance(item, str) \
+                    else (item.span.col if item is not None else dialog.span.col)
+                if not self.tolerant:
+                    self._error(problem.code, problem.message, dialog.span.line, col, text)
+                    continue
+                self.warnings.append(replace(Diagnostic.make(problem.code, problem.message, self.path,
+                                                             dialog.span.line, col, text), severity=Severity.WARNING))
+                if bad is dialog:
+                    bad = n.BadLine(problem.code, problem.message, col, dialog.span, text)
+        return bad
+
+    def _push(self, stack: list[_Frame], opener: Open, text: str) -> None:
+        """Open a block; one nested deeper than MAX_BLOCK_DEPTH is reported and skipped to its end."""
+        if len(stack) < MAX_BLOCK_DEPTH:
+            stack.append(_Frame(opener, text))
+            return
+        if not self._skipped:
+            self._error("E112", f"blocks nested more than {MAX_BLOCK_DEPTH} deep (If, While and Sub inside "
+                        "each other, the nesting limit): move the inner part into a Sub", opener.span.line,
+                        opener.span.col, text)
+        self._skipped += 1
+
+    def raise_errors(self) -> None:
+        """Raise SyntaxErrors with every diagnostic, in line order, if there is any."""
+        if self.diagnostics:
+            raise SyntaxErrors(sorted(self.diagnostics, key=lambda d: (d.line, d.col)))
+
+    def _read_unit(self, text: str) -> bool:
+        """Record a first-line ``@unit`` directive; True if the line was one."""
+        match = _UNIT_RE.match(text)
+        if not match:
+            return False
+        unit = match.group(1).lower()
+        if unit in UNITS:
+            self.unit = unit
+        else:
+            col = match.start(1) + 1
+            self._error("E109", f"@unit must be 'mm' or 'inch', not '{match.group(1)}'", 1, col, text)
+        return True
+
+    def _close(self, stack: list[_Frame], close: Close, text: str) -> n.Stmt | None:
+        """Apply an end line (or Else) to the stack; returns a finished top-level statement."""
+        want = _OPENER_OF[close.kind]
+        line, col = close.span.line, close.span.col
+        if not any(f.opener.kind == want for f in stack):
+            hint = (f" ({stack[-1].describe()} is still open: close it with "
+                    f"{_END_OF[stack[-1].opener.kind]})") if stack else ""
+            self._error(_ORPHAN_CODE[close.kind], f"{close.kind} without {want}{hint}", line, col, text)
+            return None
+        while stack[-1].opener.kind != want:
+            inner = stack.pop()
+            self._error("S204", f"{inner.describe()} has no {_END_OF[inner.opener.kind]} before "
+                        f"this {close.kind}", line, col, text)
+            stack[-1].add(inner.close(close.span))
+        frame = stack[-1]
+        if close.kind == "Else":
+            if frame.in_else:
+                self._error("S206", f"second Else in {frame.describe()}", line, col, text)
+            frame.in_else = True
+            return None
+        stack.pop()
+        stmt = frame.close(close.span)
+        if stack:
+            stack[-1].add(stmt)
+            return None
+        return stmt
+
+    def _unwind(self, stack: list[_Frame], line: int, report: bool) -> Iterator[n.Stmt]:
+        """Close every open block (at end of file, or on a nested Sub)."""
+        end = n.Span(self.path, line, 0, line, 0)
+        while stack:
+            frame = stack.pop()
+            if report:
+                o = frame.opener
+                self._error("S204", f"{frame.describe()} has no {_END_OF[o.kind]}",
+                            o.span.line, o.span.col, frame.source)
+            stmt = frame.close(end)
+            if stack:
+                stack[-1].add(stmt)
+            else:
+                yield stmt
+
+
+# --------------------------------------------------------------------------- whole files
+
+def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
+                    non_plain: Sequence[int] | None = None, tolerant: bool = False,
+                    check_dialogs: bool | None = None, name: str | None = None,
+                    on_chunk: Callable[[list[str]], None] | None = None) -> StatementReader:
+    """A streaming reader over a file (statements are parsed as you iterate); see StatementReader.
+
+    ``name`` is what spans and errors call the file (``<stdin>`` for a copy of standard input).
+    """
+    return StatementReader(iter_file_lines(path), os.fspath(path) if name is None else name, mode=mode,
+                           non_plain=non_plain, tolerant=tolerant, check_dialogs=check_dialogs, on_chunk=on_chunk)
+
+
+@dataclass(frozen=True)
+class CheckedFile:
+    """What checking a file found out: its subs, which lines are not plain (for the run's reader), how many lines."""
+
+    subs: dict[str, n.Sub]
+    non_plain: Sequence[int]
+    lines: int = 0
+
+
+def check_file(path: str | os.PathLike[str], name: str | None = None,
+               on_chunk: Callable[[list[str]], None] | None = None) -> CheckedFile:
+    """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong.
+
+    ``on_chunk`` sees the lines as they are read (see StatementReader), so nothing else need read them.
+    """
+    reader = read_statements(path, mode="check", name=name, on_chunk=on_chunk)
+    subs: dict[str, n.Sub] = {}
+    for stmt in reader:
+        if isinstance(stmt, n.Sub):
+            subs.setdefault(stmt.name.lower(), stmt)
+    reader.raise_errors()
+    return CheckedFile(subs, reader.non_plain, reader.lines)
+
+
+def parse_text(text: str, path: str = "<string>") -> n.Program:
+    """Parse a whole string; raises SyntaxErrors listing every error found."""
+    return _collect(StatementReader(iter_text_lines(text), path))
+
+
+def parse_file(path: str | os.PathLike[str], *, check_dialogs: bool = False) -> n.Program:
+    """Parse a whole file; raises SyntaxErrors listing every error found (with ``check_dialogs``
+    also the dlgmsg shapes the controller refuses, G1167)."""
+    return _collect(read_statements(path, check_dialogs=check_dialogs))
+
+
+def _collect(reader: StatementReader) -> n.Program:
+    body = tuple(reader)
+    reader.raise_errors()
+    return n.Program(reader.path, body, reader.unit)

@@ -1,0 +1,50 @@
+"""The one tokenizer for plain lines: ``letter number`` words and nothing else (``G1 X10 Y-2.5 F300``).
+
+CAM output is mostly such lines.  The line parser turns them into nodes without Lark, the check
+pass and the run's bulk path read them with the same word grammar, so a plain line is read one way
+everywhere.  This module needs nothing but the syntax tree's node types: the machine may use it to
+execute plain lines straight from their text without importing the parser.
+"""
+from __future__ import annotations
+
+import re
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
+
+# A number the fast paths take: ASCII digits only (a regex \d would also take Arabic-Indic or
+# fullwidth digits), at most 300 before the point, so always a finite double, and at most the
+# limit after it (a longer one is left to the parser, which reports it).
+FAST_NUMBER = rf"(?:[0-9]{{1,300}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}})?|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
+FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
+FAST_LINE = re.compile(rf"^[ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$")
+_FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
+
+
+def word_matches(text: str) -> list[re.Match[str]]:
+    """The ``letter number`` words of a plain line, its ``;`` comment left out."""
+    semicolon = text.find(";")
+    return list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
+
+
+def plain_block(text: str, path: str, line: int) -> n.PlainBlock:
+    """The PlainBlock for a line of plain words: one node per line instead of one per word."""
+    matches = word_matches(text)
+    words = [(m.group(1).upper(), float(m.group(2)), m.start() + 1) for m in matches]
+    line_number = None
+    if words[0][0] == "N":
+        line_number = int(words[0][1])
+        del words[0]
+    span = n.Span(path, line, matches[0].start() + 1, line, matches[-1].end() + 1)
+    return n.PlainBlock(tuple(words), line_number, span)
+
+
+def plain_words(text: str) -> list[tuple[str, str]]:
+    """(letter, number text) pairs of a plain word line, comment excluded."""
+    semicolon = text.find(";")
+    return _FAST_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
+
+
+def is_fast_line(text: str) -> bool:
+    """True when the fast path handles this line (used by the equivalence tests)."""
+    return FAST_LINE.match(text) is not None
