@@ -36,6 +36,7 @@ def samples_format_problem(path: Path) -> str | None:
     return f"{path}: the samples file must end in .csv or .npz (or be - for CSV on standard output)"
 
 
+CSV_ROWS_AT_ONCE = 8192  # samples turned into text in one go
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
 
 
@@ -218,8 +219,10 @@ class SamplesWriter:
         self._last_time = float(rows[-1, 0])
         if self._npz:
             self._chunks.append(rows)
-        else:
-            self._file.write("".join(",".join(map(repr, row)) + "\n" for row in rows.tolist()))
+        else:  # a slice at a time: a long move's rows as text would be hundreds of megabytes at once
+            for first in range(0, len(rows), CSV_ROWS_AT_ONCE):
+                chunk = rows[first:first + CSV_ROWS_AT_ONCE].tolist()
+                self._file.write("".join(",".join(map(repr, row)) + "\n" for row in chunk))
 
     def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
         pass  # batches come only when no samples are written

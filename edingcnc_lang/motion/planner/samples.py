@@ -8,7 +8,7 @@ and acceleration of the profile there.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -24,16 +24,21 @@ _GRID_SLACK = 1e-9  # a tick this close (in dt) to a move's end counts as on it
 
 def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], moving: np.ndarray,
                       planned: Profiles, t_end: np.ndarray, duration: np.ndarray, dt: float,
-                      joints_of: Callable[[np.ndarray], np.ndarray]) -> list[Samples | None]:
-    """Samples of committed moves ``0..len(t_end)-1`` (``starts``/``ends`` as columns), None for moves
-    that take no time.
+                      joints_of: Callable[[np.ndarray], np.ndarray]) -> Iterator[Samples | None]:
+    """Samples of committed moves ``0..len(t_end)-1`` (``starts``/``ends`` as columns), in order, None for
+    moves that take no time.  They are made one move at a time as the sinks take them, so a window of
+    long moves (eight 50-minute moves are millions of samples) is never held whole.
 
     ``moving[k]`` is the move whose profile is ``planned``'s entry k (moves of zero length have none).
     """
     from edingcnc_lang.motion.stage import Samples
 
-    result: list[Samples | None] = [None] * len(t_end)
-    for k, index in enumerate(moving.tolist()):
+    profile_of = {index: k for k, index in enumerate(moving.tolist())}
+    for index in range(len(t_end)):
+        k = profile_of.get(index)
+        if k is None:
+            yield None
+            continue
         stop_after = planned.v1[k] == 0.0
         t1 = float(t_end[index])
         t0 = t1 - float(duration[index])
@@ -43,6 +48,7 @@ def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geom
         if stop_after and (not len(times) or times[-1] < t1 - _GRID_SLACK * dt):
             times = np.append(times, t1)
         if not len(times):
+            yield None
             continue
         tau = np.minimum(times - t0, float(duration[index]))
         dist, speed, accel = distance_at(planned, np.full(len(times), k), tau)
@@ -50,5 +56,4 @@ def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geom
         fraction = np.where(times >= t1, 1.0, dist / length if length > 0.0 else 1.0)  # the end point exactly
         geometry = arcs.get(index) or Geometry(tuple(starts[:, index]), tuple(ends[:, index]))
         pos = geometry.points_at(fraction)
-        result[index] = Samples(times, pos, joints_of(pos), speed=speed, accel=accel)
-    return result
+        yield Samples(times, pos, joints_of(pos), speed=speed, accel=accel)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from itertools import chain
 from typing import TYPE_CHECKING, Any, Protocol
 
@@ -277,7 +277,8 @@ class Planner:
         self._arcs = {i - count: g for i, g in self._arcs.items() if i >= count}
 
     # ------------------------------------------------------------------ output
-    def _emit(self, count: int, t_end: np.ndarray, peak: np.ndarray, samples: list[Samples | None] | None) -> None:
+    def _emit(self, count: int, t_end: np.ndarray, peak: np.ndarray,
+              samples: Iterator[Samples | None] | None) -> None:
         """Hand the first ``count`` collected moves, and the events between them, to the sinks."""
         ends, speeds = t_end.tolist(), peak.tolist()
         index = 0
@@ -288,8 +289,9 @@ class Planner:
                 self._emit_event(item[1])
             elif item[0] == "move":
                 timing = Timing(ends[index - 1] if index else self.time, ends[index], speeds[index])
+                sampled = next(samples) if samples is not None else None
                 for sink in self.sinks:
-                    sink.move(item[1], item[2], samples[index] if samples else None, timing)
+                    sink.move(item[1], item[2], sampled, timing)
                 index += 1
             else:  # a batch never has samples: the motion stage sends moves one by one when samples are wanted
                 batch = item[1]
@@ -297,6 +299,9 @@ class Planner:
                 times = [ends[index - 1] if index else self.time, *ends[index:index + take]]
                 for sink in self.sinks:
                     sink.write_batch(batch.head(take), times, speeds[index:index + take])
+                if samples is not None:  # keep the samples in step with the moves
+                    for _ in range(take):
+                        next(samples, None)
                 index += take
                 if take < len(batch):
                     queue[0] = ("batch", batch.tail(take))
