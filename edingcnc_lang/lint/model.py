@@ -12,6 +12,7 @@ from edingcnc_lang.errors import UnreadableFile
 from edingcnc_lang.syntax.line_parser import parse_line
 from edingcnc_lang.syntax.parser import StatementReader
 from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
+from edingcnc_lang.syntax.plain_words import plain_words
 from edingcnc_lang.lint.walk import ends_program
 
 
@@ -76,15 +77,20 @@ def _kept(reader: StatementReader, path: str) -> Iterator[n.Stmt]:
             after_end = ends_program(stmt)
             continue
         for lineno, text in stmt.lines:
+            if not after_end and _plain_motion(plain_words(text)):
+                continue  # decided from the words as text: no nodes are built for the lines dropped
             block = parse_line(text, path, lineno)
             assert isinstance(block, n.Block)
-            if after_end or not _plain_motion(block):
-                yield block
-                after_end = ends_program(block)
+            yield block
+            after_end = ends_program(block)
 
 
-def _plain_motion(block: n.Block) -> bool:
-    g = [w for w in block.words if w.letter == "G"]
-    return (len(g) <= 1 and all(w.value.value in (0.0, 1.0) for w in g)  # type: ignore[union-attr]
-            and all(w.letter in _MOTION_LETTERS for w in block.words)
-            and all(w.value.value != 0.0 for w in block.words if w.letter == "F"))  # type: ignore[union-attr]
+def _plain_motion(words: list[tuple[str, str]]) -> bool:
+    """At most one G, which is G0 or G1, then axis words, a non-zero F and S; a leading N word is
+    the line number (``make_block`` takes it out of the words)."""
+    if words and words[0][0] in "Nn":
+        words = words[1:]
+    g = [float(value) for letter, value in words if letter in "Gg"]
+    return (len(g) <= 1 and all(value in (0.0, 1.0) for value in g)
+            and all(letter.upper() in _MOTION_LETTERS for letter, _ in words)
+            and all(float(value) != 0.0 for letter, value in words if letter in "Ff"))
