@@ -234,8 +234,9 @@ EndSub
 ; ------------------------------------------------------- start and reset ----
 
 Sub start
-    ; Called when a job starts: begin from a known modal state.
-    G40 G80 G90 G94
+    ; Called when a job starts: begin from a known modal state. The feed mode (G94/G95) stays
+    ; as the ini's initialString sets it: a lathe starts in G95.
+    G40 G80 G90
 EndSub
 
 Sub user_reset

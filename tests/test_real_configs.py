@@ -118,3 +118,9 @@ def test_the_version_key_may_stand_in_another_section(tmp_path: Path) -> None:
     assert "F600" in invoke("lint", "--no-source", "--ini", tmp_path / "cnc.ini", tmp_path / "m.cnc").stdout
     (tmp_path / "cnc.ini").write_text('[USERINTERFACE]\nlastKnownServerVersion = "CNC V4.03.50"\n')
     assert "F600" not in invoke("lint", "--no-source", "--ini", tmp_path / "cnc.ini", tmp_path / "m.cnc").stdout
+
+
+def test_the_lathe_starts_in_the_feed_mode_of_its_initial_string() -> None:
+    """The lathe's initialString says G95: the packaged macro's start sub must not turn it back to G94."""
+    result = run_string("M3 S500\nG1 X10 Z-1 F0.1\n", RunOptions(ini=LATHE))
+    assert "G95" in result.modal and "G94" not in result.modal
