@@ -44,6 +44,7 @@ if TYPE_CHECKING:
 LIMIT_SLACK = 1e-9          # mm or degrees beyond a position limit that still counts as on it
 DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity before it is an error
 SWITCH_TOLERANCE = 1e-6     # a joint that would have to jump further than this at a switch is an error
+CRAWL_ACCELERATION_SHARE = 1e-3  # of the joints' acceleration: where the path leaves them none
 PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the fastest allowed speed
 
 
@@ -430,6 +431,9 @@ class MotionStage:
             room = np.maximum(self._joint_limits.acceleration - joint_dynamics.acceleration, 0.0)
             with np.errstate(divide="ignore", invalid="ignore"):
                 accel = float(np.nanmin(np.where(gain > 0.0, room / gain, np.inf)))
+            if not accel > 0.0:  # the curvature alone uses all of a joint's acceleration (near a singular
+                # pose): the move is timed at a crawl, as the controller would slow to one, never at zero
+                accel = CRAWL_ACCELERATION_SHARE * float(np.min(self._joint_limits.acceleration))
         start_time = self.time
         self.time += float(t[-1])
         return Samples(t + start_time, pos, joints), speed, accel
