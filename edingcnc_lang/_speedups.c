@@ -305,6 +305,20 @@ static int short_repr(double v, char *out)
     return -1;
 }
 
+/* Add a str() or repr() result to the text and release it (NULL: the call that made it failed). */
+static int text_shown(Text *text, PyObject *shown)
+{
+    const char *s;
+    Py_ssize_t n;
+    int failed;
+    if (shown == NULL)
+        return -1;
+    s = PyUnicode_AsUTF8AndSize(shown, &n);
+    failed = s == NULL ? -1 : text_add(text, s, (size_t)n);
+    Py_DECREF(shown);
+    return failed;
+}
+
 /* repr() of a number: float_repr's own formatting for floats, repr() for anything else. */
 static int text_repr(Text *text, PyObject *value)
 {
@@ -322,31 +336,13 @@ static int text_repr(Text *text, PyObject *value)
         failed = text_add(text, digits, strlen(digits));
         PyMem_Free(digits);
         return failed;
-    } else {
-        PyObject *shown = PyObject_Repr(value);
-        const char *s;
-        Py_ssize_t n;
-        if (shown == NULL)
-            return -1;
-        s = PyUnicode_AsUTF8AndSize(shown, &n);
-        failed = s == NULL ? -1 : text_add(text, s, (size_t)n);
-        Py_DECREF(shown);
-        return failed;
     }
+    return text_shown(text, PyObject_Repr(value));
 }
 
 static int text_str(Text *text, PyObject *value)
 {
-    PyObject *shown = PyObject_Str(value);
-    const char *s;
-    Py_ssize_t n;
-    int failed;
-    if (shown == NULL)
-        return -1;
-    s = PyUnicode_AsUTF8AndSize(shown, &n);
-    failed = s == NULL ? -1 : text_add(text, s, (size_t)n);
-    Py_DECREF(shown);
-    return failed;
+    return text_shown(text, PyObject_Str(value));
 }
 
 static PyObject *trace_rows(PyObject *self, PyObject *args)
