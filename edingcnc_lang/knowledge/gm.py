@@ -36,7 +36,7 @@ G_ROWS: tuple[Row, ...] = (
      "Synchronised move to the end point at pitch K, the spindle reverses, back to the start, the spindle turns back."),
     (38.2, "straight probe", "X Y Z F",
      "Moves towards the target until the probe trips. Results: #5067 = 1 if it tripped, the position in "
-     "#5061..#5066 (work) and #5051..#5056 (machine). Guard it with If [[#5380 == 0] and [#5397 == 0]] and check #5067."),
+     "#5061..#5066 (work) and #5051..#5056 (machine). No contact even slightly past the target is a run error. Guard it with If [[#5380 == 0] and [#5397 == 0]]."),
     (40, "cutter compensation off", "", "Cancels G41/G42."),
     (41, "cutter compensation left", "D", "Offsets the path to the left by the tool radius of tool D (the current tool without D)."),
     (41.1, "cutter compensation left, given diameter", "D", "As G41 with the diameter in D."),

@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from edingcnc_lang.codes import CODES
+from edingcnc_lang.codes import CODES, RETIRED
 from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError
@@ -49,10 +49,11 @@ class LintOptions:
 
 
 def parse_codes(text: str | None) -> tuple[str, ...]:
-    """``"E1,G503"`` -> ``("E1", "G503")``; raises UnknownCode for a prefix of no code."""
+    """``"E1,G503"`` -> ``("E1", "G503")``; raises UnknownCode for a prefix of no code (a retired
+    code is accepted and matches nothing)."""
     codes = tuple(c.strip().upper() for c in (text or "").split(",") if c.strip())
     for code in codes:
-        if not any(known.startswith(code) for known in CODES):
+        if not any(known.startswith(code) for known in (*CODES, *RETIRED)):
             raise UnknownCode(code)
     return codes
 

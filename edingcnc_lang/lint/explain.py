@@ -10,7 +10,7 @@ import json
 from functools import cache
 from importlib import resources
 
-from edingcnc_lang.codes import CODES, KINS_CODES
+from edingcnc_lang.codes import CODES, KINS_CODES, RETIRED
 from edingcnc_lang.lint.driver import UnknownCode
 
 
@@ -21,8 +21,12 @@ def _texts() -> dict[str, str]:
 
 
 def explain(code: str) -> str:
-    """``CODE (severity): summary`` and the long text; raises UnknownCode for a code not registered."""
-    entry = CODES.get(code.strip().upper())
+    """``CODE (severity): summary`` and the long text (a retired code: why); raises UnknownCode for a
+    code never registered."""
+    key = code.strip().upper()
+    if key in RETIRED:
+        return f"{key}: {RETIRED[key]}"
+    entry = CODES.get(key)
     if entry is None:
         raise UnknownCode(code)
     return _with_text(entry.code, f"{entry.code} ({entry.severity.value}): {entry.summary}")

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.machine.tables import ARG_PARAMS, PROBE_TRIPPED, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
+from edingcnc_lang.machine.tables import ARG_PARAMS, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
 from edingcnc_lang.lint.facts import Code, FileFacts, gather, indexed_reads
 from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point, m_sub_number
@@ -177,13 +177,6 @@ class Project:
         return any(m_sub_number(sub.name) is not None or
                    sub_key(target, sub) in self.argument_clobbering_subs
                    for target, sub in self.callees(file, stmt, scope))
-
-    @cached_property
-    def probe_checking_subs(self) -> frozenset[SubKey]:
-        """Subs that read #5067 themselves (a GoSub to one counts as checking the probe)."""
-        return frozenset(sub_key(file, scope.sub) for file in self.files
-                         for _param, index, scope in self.facts(file).reads
-                         if scope.sub and index == PROBE_TRIPPED)
 
     # ----------------------------------------------------------------- variables
     @cached_property

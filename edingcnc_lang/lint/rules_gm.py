@@ -1,11 +1,12 @@
 """G rules: G and M words on one line, and probing.
 
-Only literal G/M numbers are checked (``G[#1]`` is decided at run time).
+Only literal G/M numbers are checked (``G[#1]`` is decided at run time).  There is no rule asking for
+a check of #5067 after G38.2 (the retired G505): a probe that does not touch is a run error
+(manual 3.6.10.1), so the job never goes on to such a check with #5067 = 0.
 """
 from __future__ import annotations
 
-from collections import defaultdict
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.diagnostics import Diagnostic
@@ -15,7 +16,6 @@ from edingcnc_lang.machine.tables import (
     M_GROUPS,
     MAX_M_WORDS,
     MAX_TOOL,
-    PROBE_TRIPPED,
     UNKNOWN_G_HINTS,
     code_key,
     code_name,
@@ -26,9 +26,8 @@ from edingcnc_lang.machine.tables import (
 from edingcnc_lang.lint.evaluate import evaluate
 from edingcnc_lang.lint.facts import BlockCodes, Code
 from edingcnc_lang.lint.model import SourceFile
-from edingcnc_lang.lint.project import Project, sub_key
+from edingcnc_lang.lint.project import Project
 from edingcnc_lang.lint.registry import at, rule
-from edingcnc_lang.lint.walk import Scope
 
 PROBE = code_key(38.2)
 ARCS = frozenset(code_key(c) for c in (2, 3))
@@ -128,45 +127,3 @@ def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
         if word is not None and not project.is_guarded(file, block.scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
                      "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
-
-
-@rule("G505")
-def probe_checked(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    """Each G38.2 needs a read of #5067 later in its sub (or file), before the next G38.2."""
-    probing = {id(b.scope.sub) for b in project.facts(file).blocks if _probe_word(b.g)}  # subs (or None)
-    if not probing:
-        return
-    scopes: dict[int, list[tuple[n.Stmt, Scope]]] = defaultdict(list)  # by id() of the sub: nodes hash deeply
-    for stmt, scope in project.walked(file):
-        if id(scope.sub) in probing and not isinstance(stmt, n.Sub):
-            scopes[id(scope.sub)].append((stmt, scope))
-    for statements in scopes.values():
-        yield from _unchecked_probes(file, project, statements)
-
-
-def _unchecked_probes(file: SourceFile, project: Project,
-                      statements: Sequence[tuple[n.Stmt, Scope]]) -> Iterator[Diagnostic]:
-    pending: n.Word | None = None
-    for stmt, scope in statements:
-        if pending is not None and _checks_probe(file, project, stmt, scope):
-            pending = None
-        word = _probe_word(project.codes(file, stmt, "G"))
-        if word is not None:
-            if pending is not None:
-                yield _unchecked(pending)
-            pending = word
-    if pending is not None:
-        yield _unchecked(pending)
-
-
-def _checks_probe(file: SourceFile, project: Project, stmt: n.Stmt, scope: Scope) -> bool:
-    if any(index == PROBE_TRIPPED for _, index in project.reads(file, stmt)):
-        return True
-    return any(sub_key(target, sub) in project.probe_checking_subs
-               for target, sub in project.callees(file, stmt, scope))
-
-
-def _unchecked(word: n.Word) -> Diagnostic:
-    return at("G505", "G38.2 without a check of #5067 afterwards: if the probe never touched, the job "
-              "goes on from the end of the move; add If [#5067 <> 1] errmsg \"...\" EndIf", word.span)
-

@@ -130,6 +130,19 @@ def test_select_and_ignore_take_codes_and_prefixes(job: Path) -> None:
     assert run(job, "--ignore", "G5").exit_code == 0
 
 
+
+def test_a_retired_code_is_still_accepted_and_explained(tmp_path: Path) -> None:
+    """G505 (a #5067 check after G38.2) is retired: a probe that does not touch is a run error, so
+    a G38.2 with no check reports nothing, and scripts naming the code keep working."""
+    job = tmp_path / "probe.nc"
+    job.write_text("If [[#5380 == 0] and [#5397 == 0]]\n    G38.2 Z-5 F100\nEndIf\nG38.2 Z-5 F100 ; noqa: G504,G505\n")
+    assert run(job).exit_code == 0
+    assert run(job, "--select", "G505").exit_code == 0
+    assert run(job, "--ignore", "G505,G504").exit_code == 0
+    explained = run("--explain", "G505")
+    assert explained.exit_code == 0 and "G505: retired" in explained.output and "run error" in explained.output
+    assert "G505" not in run("--list-codes").output
+
 def test_list_codes_prints_every_code_with_severity() -> None:
     result = run("--list-codes")
     assert result.exit_code == 0

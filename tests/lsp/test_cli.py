@@ -29,15 +29,15 @@ def test_without_the_lsp_extra_the_error_names_the_install_command() -> None:
 
 def test_initialization_options_select_and_ignore_codes(tmp_path: Path) -> None:
     job = tmp_path / "job.nc"
-    job.write_text("G38.2 Z-5 F100\nG0 X10+5\n")
+    job.write_text("G38.2 Z-5 F100\nG1 X5 F0\nG0 X10+5\n")
     lsp = LspClient()
     lsp.initialize(tmp_path, {"ignore": "g504,E1"})
-    assert [d["code"] for d in lsp.diagnostics(lsp.open(job))] == ["G505"]
+    assert [d["code"] for d in lsp.diagnostics(lsp.open(job))] == ["G503"]
     assert lsp.close() == 0
     lsp = LspClient()
     lsp.initialize(tmp_path, {"select": "Q9"})  # no such code: a warning, and every code is reported
     found = lsp.diagnostics(lsp.open(job))
-    assert {d["code"] for d in found} == {"G504", "G505", "E105"}
+    assert {d["code"] for d in found} == {"G504", "G503", "E105"}
     warning = next(m for m in lsp.notifications if m.get("method") == "window/showMessage")
     assert "no code starts with Q9" in warning["params"]["message"]
     assert lsp.close() == 0

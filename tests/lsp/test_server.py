@@ -108,10 +108,10 @@ def test_diagnostics_on_open_are_what_ecnc_lint_reports(client: LspClient, folde
     expected = lint_paths([job])
     assert [(d["range"]["start"]["line"] + 1, d["range"]["start"]["character"] + 1, d["code"], d["message"])
             for d in found] == [(d.line, d.col, d.code, d.message) for d in expected]
-    assert codes(found) == [(4, "G504"), (4, "G505"), (5, "S208")]  # drill, m100, change_tool resolve
+    assert codes(found) == [(4, "G504"), (5, "S208")]  # drill, m100, change_tool resolve
     assert {d["source"] for d in found} == {"ecnc"}
-    assert [d["severity"] for d in found] == [2, 2, 1]  # warning, warning, error
-    s208 = found[2]["range"]
+    assert [d["severity"] for d in found] == [2, 1]  # warning, error
+    s208 = found[1]["range"]
     assert (s208["start"]["character"], s208["end"]["character"]) == (0, 5)  # the word, not the line
 
 
@@ -322,15 +322,15 @@ def test_a_fix_that_adds_a_line_keeps_the_files_crlf(client: LspClient, folder: 
 
 
 def test_noqa_action_silences_any_finding(client: LspClient, folder: Path) -> None:
-    text = "G38.2 Z-5 F100 ; noqa: G504\n"
+    text = "G1 X5 F0 M3 M4 ; noqa: G500\n"
     path = folder / "probe.nc"
     path.write_text(text)
     uri = client.open(path)
     found = client.diagnostics(uri)
-    assert codes(found) == [(1, "G505")]
+    assert codes(found) == [(1, "G503")]
     noqa = [a for a in quick_fixes(client, uri, found) if "noqa" in a["title"]]
     fixed = apply(text, noqa[0]["edit"]["changes"][uri])
-    assert fixed == "G38.2 Z-5 F100 ; noqa: G504,G505\n"
+    assert fixed == "G1 X5 F0 M3 M4 ; noqa: G500,G503\n"
     path.write_text(fixed)
     assert lint_paths([path]) == []
 
