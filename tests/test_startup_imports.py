@@ -125,3 +125,18 @@ def test_lint_format_names_match_the_formats() -> None:
     from edingcnc_lang.lint.formats import FORMATS
 
     assert sorted(FORMAT_NAMES) == sorted(FORMATS)
+
+
+def test_a_lint_on_one_process_loads_only_what_it_uses(tmp_path: Path) -> None:
+    """``ecnc lint`` of a macro file: no process pool, numpy, planner, ini or TOML reader, json;
+    those load when asked for (``-j``, a run, ``--ini``, an ``ecnc.toml``, ``--format json``)."""
+    job = tmp_path / "macro.cnc"
+    job.write_text(";@unit mm\nSub user_1\n    #1 = [#2 + 1]\n    G1 X[#1] F100\nEndSub\n")
+    result = subprocess.run([sys.executable, "-X", "importtime", "-m", "edingcnc_lang", "lint", str(job)],
+                            capture_output=True, text=True, cwd=tmp_path)
+    assert result.returncode == 0, result.stdout
+    modules = _imported_modules(result.stderr)
+    assert "edingcnc_lang.lint.rules_gm" in modules  # the rules really ran
+    assert not {"numpy", "lark", "multiprocessing", "concurrent.futures", "tomllib", "json",
+                "edingcnc_lang.config.machine_config", "edingcnc_lang.config.ini",
+                "edingcnc_lang.kinematics", "edingcnc_lang.motion.planner"} & modules

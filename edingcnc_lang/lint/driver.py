@@ -12,9 +12,9 @@ import re
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from edingcnc_lang.codes import CODES, RETIRED
-from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.source import iter_file_lines
@@ -22,8 +22,10 @@ from edingcnc_lang.lint import rules_comp, rules_dialog, rules_files, rules_gm, 
 from edingcnc_lang.lint.model import SourceFile, stream_source
 from edingcnc_lang.lint.project import Project
 from edingcnc_lang.lint.registry import RULES
-from edingcnc_lang.lint.rules_config import check_config
 from edingcnc_lang.lint.targets import applies, resolve
+
+if TYPE_CHECKING:  # the machine model loads only when an ini is checked (start-up time)
+    from edingcnc_lang.config.machine_config import MachineConfig
 
 SOURCE_SUFFIXES = frozenset({".cnc", ".nc", ".ngc", ".tap", ".txt"})
 CONFIG_SUFFIX = ".ini"
@@ -141,6 +143,8 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
     tool_diameters: dict[int, float] = {}
     mill = False
     for config in dict.fromkeys(configs):
+        from edingcnc_lang.lint.rules_config import check_config  # the ini reader: only with an ini
+
         diags, outputs = check_config(config)
         found.extend(diags)
         written |= outputs
@@ -162,6 +166,8 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
 def _valid_config(path: Path) -> MachineConfig | None:
     """The machine of an ini check_config passed: its tool table (``[TOOL_n] diameter``, mm) for the
     compensation rules, its machine type for the lathe codes."""
+    from edingcnc_lang.config.machine_config import load_config
+
     try:
         return load_config(path)
     except EcncError:  # already reported by check_config

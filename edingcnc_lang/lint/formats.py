@@ -1,7 +1,9 @@
-"""Rendering findings: text for people, JSON for scripts, GitHub annotations, SARIF 2.1.0."""
+"""Rendering findings: text for people, JSON for scripts, GitHub annotations, SARIF 2.1.0.
+
+json is imported by the two formats that write it: the text format of a lint does not load it.
+"""
 from __future__ import annotations
 
-import json
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
@@ -25,6 +27,8 @@ def text(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
 
 
 def as_json(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
+    import json
+
     return json.dumps([{"path": d.path, "line": d.line, "col": d.col, "code": d.code,
                         "severity": d.severity.value, "message": d.message} for d in findings], indent=1)
 
@@ -66,6 +70,8 @@ def sarif(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
     log = {"$schema": SARIF_SCHEMA, "version": "2.1.0", "runs": [{
         "tool": {"driver": {"name": "ecnc lint", "version": __version__, "rules": rules}},
         "results": results}]}
+    import json
+
     return json.dumps(log, indent=1)
 
 

@@ -12,8 +12,6 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
-from concurrent.futures import ProcessPoolExecutor
-from multiprocessing import get_context
 
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.gcpause import whole_trees
@@ -32,6 +30,10 @@ def lint_paths_parallel(paths: Iterable[str | os.PathLike[str]], options: LintOp
     sources = sorted(str(p) for p in files if p.suffix.lower() != CONFIG_SUFFIX)
     if jobs <= 1 or len(sources) < 2 or not all(os.access(p, os.R_OK) for p in sources):
         return lint_paths(given, options)  # (an unreadable file is reported from here, with its path)
+    # imported here: multiprocessing costs a one-process lint ~40 ms of start-up
+    from concurrent.futures import ProcessPoolExecutor
+    from multiprocessing import get_context
+
     groups = split(sources, min(len(sources), jobs * GROUPS_PER_JOB))
     # one controller version for every group: the one the whole command line resolves to
     options = replace(options, target=resolve(options.target, [os.fspath(p) for p in given],

@@ -15,15 +15,13 @@ import re
 import sys
 from collections.abc import Sequence
 from pathlib import Path
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # Python 3.10: the same parser, as a package (a dependency there)
-    import tomli as tomllib
+from typing import TYPE_CHECKING
 
 from edingcnc_lang.codes import CODES
 from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
-from edingcnc_lang.config.ini import IniValue, read_ini
+
+if TYPE_CHECKING:  # the ini reader loads only when an ini names the version (start-up time)
+    from edingcnc_lang.config.ini import IniValue
 
 TARGETS = ("4.03", "5")
 NEWEST = TARGETS[-1]
@@ -71,6 +69,8 @@ def resolve(given: str | None, paths: Sequence[str | os.PathLike[str]], ini: str
 
 def ini_version(path: str | os.PathLike[str]) -> IniValue | None:
     """The controller version a cnc.ini names (see VERSION_KEYS), wherever in the file the key is."""
+    from edingcnc_lang.config.ini import read_ini
+
     ini = read_ini(path)
     sections = ["system", *(name for name in ini.sections if name != "system")]
     for key in VERSION_KEYS:
@@ -97,6 +97,11 @@ def _from_config(paths: Sequence[str | os.PathLike[str]]) -> str | None:
 
 def _tool_section(path: Path) -> dict[str, object] | None:
     """The ``[tool.ecnc]`` table of a TOML file (None if absent); a broken file is a usage error."""
+    if sys.version_info >= (3, 11):  # imported here: only a folder with a TOML file pays for it
+        import tomllib
+    else:  # Python 3.10: the same parser, as a package (a dependency there)
+        import tomli as tomllib
+
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as err:
