@@ -1,12 +1,16 @@
-"""The optional compiled core (edingcnc_lang/_speedups.c); everything else is in pyproject.toml.
+"""The optional compiled core (edingcnc_lang/_speedups.c, and the macro line tokenizer
+edingcnc_lang/_lexer.c); everything else is in pyproject.toml.
 
-The extension is ``optional``: without a C compiler the install goes on and the pure-Python core
+The extensions are ``optional``: without a C compiler the install goes on and the pure-Python core
 runs (``ecnc --version`` says which).  It uses the stable ABI, so one wheel serves Python 3.10+.
 """
 from setuptools import Extension, setup
 
 setup(
     ext_modules=[Extension("edingcnc_lang._speedups", ["edingcnc_lang/_speedups.c"], optional=True,
+                           py_limited_api=True, define_macros=[("Py_LIMITED_API", "0x030A0000")],
+                           extra_compile_args=["-O2", "-ffp-contract=off"]),
+                 Extension("edingcnc_lang._lexer", ["edingcnc_lang/_lexer.c"], optional=True,
                            py_limited_api=True, define_macros=[("Py_LIMITED_API", "0x030A0000")],
                            extra_compile_args=["-O2", "-ffp-contract=off"])],
     options={"bdist_wheel": {"py_limited_api": "cp310"}},

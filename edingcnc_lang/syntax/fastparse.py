@@ -8,14 +8,18 @@ lines.  It never reports errors: on anything it is not sure about it gives up
 and explains mistakes.
 
 Speed comes from splitting the line into tokens with one regular expression
-pass and then descending over that list: no character-level scanning in Python.
+pass (or the optional compiled tokenizer, ``_lexer.c``, which gives the same tokens) and then
+descending over that list: no character-level scanning in Python.
 """
 from __future__ import annotations
 
+import os
 import re
+from collections.abc import Callable
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.plain_words import FAST_NUMBER
+from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
 
 
@@ -65,8 +69,9 @@ _HANDLED = frozenset({*_CLOSERS, *_MESSAGES, "sub", "gosub", "home", "hometandem
                       "dlgmsg"})
 
 
-def _tokens(text: str, pos: int) -> list[Token]:
-    """The tokens of ``text`` from ``pos`` on, ending with an empty-kind sentinel."""
+def _tokens_python(text: str, pos: int) -> list[Token]:
+    """The tokens of ``text`` from ``pos`` on, ending with an empty-kind sentinel (the reference
+    for the compiled ``_lexer.tokens``)."""
     tokens: list[Token] = []
     for value in _TOKEN.findall(text, pos):
         start = pos
@@ -78,6 +83,34 @@ def _tokens(text: str, pos: int) -> list[Token]:
         raise _GiveUp
     tokens.append(("", "", pos + 1, pos + 1))
     return tokens
+
+
+def _compiled_tokens() -> Callable[[str, int, int, int], object] | None:
+    """The compiled tokenizer, unless it is not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
+    from edingcnc_lang.speedups import PURE_ENV
+
+    if os.environ.get(PURE_ENV, "") not in ("", "0"):
+        return None
+    try:
+        from edingcnc_lang._lexer import tokens  # type: ignore[import-not-found]
+    except ImportError:
+        return None
+    return tokens  # type: ignore[no-any-return]
+
+
+_COMPILED = _compiled_tokens()
+
+
+def _tokens(text: str, pos: int) -> list[Token]:
+    """The tokens of ``text`` from ``pos`` on, on the compiled tokenizer when it is there."""
+    if _COMPILED is None:
+        return _tokens_python(text, pos)
+    found = _COMPILED(text, pos, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    if found is None:
+        raise _GiveUp
+    if found is NotImplemented:  # a lone surrogate: not UTF-8, the Python tokenizer reads it
+        return _tokens_python(text, pos)
+    return found  # type: ignore[return-value]
 
 
 class _Line:

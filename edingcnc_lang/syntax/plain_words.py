@@ -15,7 +15,8 @@ from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 # A number the fast paths take: ASCII digits only (a regex \d would also take Arabic-Indic or
 # fullwidth digits), at most 300 before the point, so always a finite double, and at most the
 # limit after it (a longer one is left to the parser, which reports it).
-FAST_NUMBER = rf"(?:[0-9]{{1,300}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}})?|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
+INTEGER_DIGITS = 300
+FAST_NUMBER = rf"(?:[0-9]{{1,{INTEGER_DIGITS}}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}})?|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
 FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
 FAST_LINE = re.compile(rf"^[ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$")
 _FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
