@@ -12,7 +12,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.lint.walk import Code, Scope, block_codes, literal_index, reads
+from edingcnc_lang.lint.walk import END_OF_PROGRAM, Code, Scope, block_codes, literal_index, reads
 
 Use = tuple[n.Param, "int | None", Scope]  # a parameter read or assigned, its literal index, where
 
@@ -40,6 +40,7 @@ class FileFacts:
     # The parameters each statement reads (by id(): nodes hash by value, deeply).
     reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]]
     codes_of: dict[int, BlockCodes]
+    ending: frozenset[int]  # the statements (by id()) that end the program: walk.ends_program
 
 
 def indexed_reads(stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
@@ -57,6 +58,7 @@ def gather(walked: Sequence[tuple[n.Stmt, Scope]]) -> FileFacts:
     callers: list[tuple[n.Stmt, Scope]] = []
     reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]] = {}
     codes_of: dict[int, BlockCodes] = {}
+    ending: set[int] = set()
     for stmt, scope in walked:
         found = reads_of[id(stmt)] = indexed_reads(stmt)
         all_reads += [(param, index, scope) for param, index in found]
@@ -67,11 +69,15 @@ def gather(walked: Sequence[tuple[n.Stmt, Scope]]) -> FileFacts:
             targets += [(a.target, literal_index(a.target), scope) for a in stmt.assigns]
             if codes.m:
                 callers.append((stmt, scope))
+                if not stmt.block_delete and any(key in END_OF_PROGRAM for key, _word in codes.m):
+                    ending.add(id(stmt))
         elif isinstance(stmt, n.GoSub):
             callers.append((stmt, scope))
         elif isinstance(stmt, n.Dialog):
             dialogs.append((stmt, scope))
         elif isinstance(stmt, n.Command):
             commands.append(stmt)
+        elif isinstance(stmt, n.Message) and stmt.kind == "errmsg":
+            ending.add(id(stmt))
     return FileFacts(tuple(blocks), tuple(all_reads), tuple(targets), tuple(dialogs), tuple(commands),
-                     tuple(callers), reads_of, codes_of)
+                     tuple(callers), reads_of, codes_of, frozenset(ending))

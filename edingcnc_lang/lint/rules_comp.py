@@ -26,6 +26,7 @@ COMP = LEFT | frozenset(code_key(c) for c in (42, 42.1))
 PLANES = {code_key(17): ("I", "J"), code_key(18): ("I", "K"), code_key(19): ("J", "K")}
 G2, G3 = code_key(2), code_key(3)
 G20, G21 = code_key(20), code_key(21)
+_READ_WORDS = COMP | {G10}  # the codes whose line's word values update() reads
 
 
 class _Comp:
@@ -42,8 +43,8 @@ class _Comp:
     def words(self, codes: BlockCodes) -> dict[str, float | None]:
         return {w.letter: evaluate(w.value) for w in codes.block.words if w.letter not in "GM"}
 
-    def update(self, codes: BlockCodes, words: dict[str, float | None]) -> None:
-        keys = {key for key, _ in codes.g}
+    def update(self, keys: set[int], words: dict[str, float | None]) -> None:
+        """Follow one line: its G codes (integer tenths) and its words' values (needed on G10, G41/G42 lines)."""
         self.inch = True if G20 in keys else False if G21 in keys else self.inch
         self.centre_words = next((PLANES[k] for k in keys if k in PLANES), self.centre_words)
         if G10 in keys and words.get("L") == 1 and words.get("P") is not None and words.get("R") is not None:
@@ -71,14 +72,16 @@ class _Comp:
 def arc_too_small_for_the_tool(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     comp = _Comp(project.tool_diameters)
     for codes in project.facts(file).blocks:
-        words = comp.words(codes)
-        comp.update(codes, words)
+        keys = {key for key, _ in codes.g}
+        # the words' values matter to a G10 or a G41/G42 line, and to an arc under compensation
+        words = comp.words(codes) if keys & _READ_WORDS else {}
+        comp.update(keys, words)
         if not comp.side or not comp.radius:
             continue
         arc = next(((k, w) for k, w in codes.g if k in (G2, G3)), None)
         if arc is None or (comp.side > 0) != (arc[0] == G3):  # the tool runs outside this arc
             continue
-        radius = _arc_radius(words, comp.centre_words)
+        radius = _arc_radius(words or comp.words(codes), comp.centre_words)
         if radius is not None and radius <= comp.radius:
             side = "G41" if comp.side > 0 else "G42"
             yield at("G508", f"{code_name('G', arc[0])} arc of radius {radius:g} with the tool inside it ({side}) "

@@ -14,7 +14,7 @@ from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point
 from edingcnc_lang.lint.project import Project, sub_key
 from edingcnc_lang.lint.registry import at, rule
-from edingcnc_lang.lint.walk import END_OF_PROGRAM, block_codes, ends_program, statement_lists
+from edingcnc_lang.lint.walk import END_OF_PROGRAM, block_codes, statement_lists
 
 
 @rule("S207")
@@ -52,8 +52,9 @@ def _ending(stmt: n.Stmt) -> str:
 @rule("S209")
 def unreachable(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """Statements after an unconditional end in the same list never run (Sub definitions excepted)."""
+    ending = project.facts(file).ending  # ends_program of every statement, worked out in the one walk
     for body in statement_lists(file.body, project.walked(file)):
-        stop = next((i for i, s in enumerate(body) if ends_program(s)), None)
+        stop = next((i for i, s in enumerate(body) if id(s) in ending), None)
         if stop is None:
             continue
         end = body[stop]

@@ -136,6 +136,14 @@ def expressions(stmt: n.Stmt) -> Iterator[n.Expr]:
 def reads(stmt: n.Stmt) -> list[n.Param]:
     """Every parameter the statement itself reads."""
     found: list[n.Param] = []
+    if type(stmt) is n.Block:  # most statements: ``expressions`` unrolled, the same order
+        for word in stmt.words:
+            if type(word.value) is not n.Number:  # most word values
+                found += params_in(word.value)
+        for assign in stmt.assigns:
+            found += params_in(assign.target.index)
+            found += params_in(assign.value)
+        return found
     for expr in expressions(stmt):
         if not isinstance(expr, n.Number):  # most word values
             found += params_in(expr)

@@ -64,3 +64,34 @@ def test_rules_name_the_first_matching_code_of_a_line(tmp_path) -> None:  # type
     found = {(d.line, d.col, d.code): d.message for d in lint_paths([job])}
     assert found[(1, 1, "G502")].startswith("G3 arc needs")
     assert found[(2, 10, "G503")].startswith("F0 on a G2 move")
+
+
+ENDS = """\
+G0 X1 M30
+/M30
+M2 M8
+errmsg "stop"
+msg "go on"
+If [#1 == 1]
+    M30
+EndIf
+#1 = [#2 + #[#3]] X[#4] Y2 M5
+"""
+
+
+def test_the_ending_statements_are_those_ends_program_names() -> None:
+    from edingcnc_lang.lint.walk import ends_program
+
+    walked = walk(parse_text(ENDS, "job.nc").body)
+    ending = gather(walked).ending
+    assert [id(stmt) in ending for stmt, _ in walked] == [ends_program(stmt) for stmt, _ in walked]
+    assert sum(id(stmt) in ending for stmt, _ in walked) == 4  # M30, M2, errmsg, the M30 in the If
+
+
+def test_the_reads_of_a_block_follow_its_expressions_in_order() -> None:
+    """``reads`` unrolls ``expressions`` for blocks; both give the same parameters in the same order."""
+    from edingcnc_lang.lint.evaluate import params_in
+    from edingcnc_lang.lint.walk import expressions, reads
+
+    for stmt, _ in walk(parse_text(SOURCE + ENDS, "job.nc").body):
+        assert reads(stmt) == [p for e in expressions(stmt) for p in params_in(e)], stmt
