@@ -40,53 +40,22 @@ static int operator_at(const char *s, Py_ssize_t left)
     return -1;
 }
 
-static int append(PyObject *list, PyObject *kind, PyObject *value, Py_ssize_t col, Py_ssize_t end)
-{
-    PyObject *token = PyTuple_New(4), *first, *last;
-    int failed;
-    if (token == NULL)
-        return -1;
-    first = PyLong_FromSsize_t(col);
-    last = PyLong_FromSsize_t(end);
-    if (first == NULL || last == NULL) {
-        Py_XDECREF(first);
-        Py_XDECREF(last);
-        Py_DECREF(token);
-        return -1;
-    }
-    Py_INCREF(kind);
-    Py_INCREF(value);
-    PyTuple_SetItem(token, 0, kind);  /* each steals the reference */
-    PyTuple_SetItem(token, 1, value);
-    PyTuple_SetItem(token, 2, first);
-    PyTuple_SetItem(token, 3, last);
-    failed = PyList_Append(list, token);
-    Py_DECREF(token);
-    return failed;
-}
+/* One token: its kind (an index into OPERATORS, or one of the kinds below), where it is in the
+ * UTF-8 text (bytes) and in the line (1-based code point columns, end exclusive). */
+enum { T_END = -1, T_NUMBER = -2, T_STRING = -3, T_LETTERS = -4 };
+typedef struct {
+    int kind;
+    Py_ssize_t start, stop, col, end;
+} Token;
 
-static PyObject *tokens(PyObject *self, PyObject *args)
+/* Split s[i:] (the code point before byte i is number ``chars``) into tokens, the T_END sentinel
+ * last; returns how many, or -1 where fastparse gives up (no token covers a character). ``out``
+ * has room for size - i + 1 tokens (each takes at least a byte). */
+static Py_ssize_t scan(const char *s, Py_ssize_t size, Py_ssize_t i, Py_ssize_t chars,
+                       Py_ssize_t integer_digits, Py_ssize_t fraction_digits, Token *out)
 {
-    PyObject *text, *list, *value = NULL;
-    Py_ssize_t pos, integer_digits, fraction_digits, size, i, chars, start, start_char, k;
-    const char *s;
-    (void)self;
-    if (!PyArg_ParseTuple(args, "Unnn", &text, &pos, &integer_digits, &fraction_digits))
-        return NULL;
-    s = PyUnicode_AsUTF8AndSize(text, &size);
-    if (s == NULL) {  /* a lone surrogate: the Python tokenizer reads it */
-        PyErr_Clear();
-        Py_RETURN_NOTIMPLEMENTED;
-    }
-    /* the byte where code point ``pos`` starts */
-    for (i = 0, chars = 0; i < size && chars < pos; i++)
-        if (((unsigned char)s[i] & 0xC0) != 0x80)
-            chars++;
-    while (i < size && ((unsigned char)s[i] & 0xC0) == 0x80)
-        i++;
-    list = PyList_New(0);
-    if (list == NULL)
-        return NULL;
+    Py_ssize_t count = 0, start, start_char;
+    int k;
     while (i < size) {
         unsigned char c = (unsigned char)s[i];
         start = i;
@@ -113,23 +82,18 @@ static PyObject *tokens(PyObject *self, PyObject *args)
                 i++;
             }
             if (i >= size || s[i] != '"')
-                goto give_up;
+                return -1;
             i++;
             chars += 2;
-            value = PyUnicode_DecodeUTF8(s + start, i - start, NULL);
-            if (value == NULL || append(list, kind_string, value, start_char + 1, chars + 1) < 0)
-                goto error;
-            Py_DECREF(value);
-            continue;
-        }
-        if (is_digit(c) || c == '.') {
+            k = T_STRING;
+        } else if (is_digit(c) || c == '.') {
             Py_ssize_t digits = 0;
             while (i < size && is_digit((unsigned char)s[i])) {
                 i++;
                 digits++;
             }
             if (digits > integer_digits)
-                goto give_up;
+                return -1;
             if (i < size && s[i] == '.') {
                 Py_ssize_t fraction = 0;
                 i++;
@@ -139,55 +103,644 @@ static PyObject *tokens(PyObject *self, PyObject *args)
                 }
                 /* more digits than allowed, or a lone '.': no token covers it */
                 if (fraction > fraction_digits || (digits == 0 && fraction == 0))
-                    goto give_up;
+                    return -1;
             } else if (digits == 0) {
-                goto give_up;
+                return -1;
             }
             chars += i - start;
-            value = PyUnicode_FromStringAndSize(s + start, i - start);
-            if (value == NULL || append(list, kind_number, value, start_char + 1, chars + 1) < 0)
-                goto error;
-            Py_DECREF(value);
-            continue;
-        }
-        if (is_letter(c)) {
+            k = T_NUMBER;
+        } else if (is_letter(c)) {
             while (i < size && is_letter((unsigned char)s[i]))
                 i++;
             chars += i - start;
-            value = PyUnicode_FromStringAndSize(s + start, i - start);
-            if (value == NULL || append(list, kind_letters, value, start_char + 1, chars + 1) < 0)
-                goto error;
-            Py_DECREF(value);
-            continue;
+            k = T_LETTERS;
+        } else {
+            k = operator_at(s + i, size - i);
+            if (k < 0)
+                return -1;
+            i += (Py_ssize_t)strlen(OPERATORS[k]);
+            chars += i - start;
         }
-        k = operator_at(s + i, size - i);
-        if (k < 0)
-            goto give_up;
-        value = operator_text[k];
-        i += (Py_ssize_t)strlen(OPERATORS[k]);
-        chars += i - start;
-        if (append(list, value, value, start_char + 1, chars + 1) < 0) {
-            Py_DECREF(list);
-            return NULL;
-        }
+        out[count].kind = k;
+        out[count].start = start;
+        out[count].stop = i;
+        out[count].col = start_char + 1;
+        out[count].end = chars + 1;
+        count++;
     }
-    if (append(list, empty, empty, chars + 1, chars + 1) < 0) {
-        Py_DECREF(list);
+    out[count].kind = T_END;
+    out[count].start = out[count].stop = i;
+    out[count].col = out[count].end = chars + 1;
+    return count + 1;
+}
+
+/* The UTF-8 text of ``text`` and the byte where code point ``pos`` starts; NULL for a text
+ * UTF-8 cannot hold (a lone surrogate), with the error cleared. */
+static const char *utf8_at(PyObject *text, Py_ssize_t pos, Py_ssize_t *size, Py_ssize_t *at)
+{
+    Py_ssize_t i, chars;
+    const char *s = PyUnicode_AsUTF8AndSize(text, size);
+    if (s == NULL) {
+        PyErr_Clear();
         return NULL;
     }
+    for (i = 0, chars = 0; i < *size && chars < pos; i++)
+        if (((unsigned char)s[i] & 0xC0) != 0x80)
+            chars++;
+    while (i < *size && ((unsigned char)s[i] & 0xC0) == 0x80)
+        i++;
+    *at = i;
+    return s;
+}
+
+#define STACK_TOKENS 128
+
+static PyObject *tokens(PyObject *self, PyObject *args)
+{
+    PyObject *text, *list = NULL, *item = NULL, *kind, *value;
+    Py_ssize_t pos, integer_digits, fraction_digits, size, at, count, t;
+    Token stack[STACK_TOKENS], *found = stack;
+    const char *s;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "Unnn", &text, &pos, &integer_digits, &fraction_digits))
+        return NULL;
+    s = utf8_at(text, pos, &size, &at);
+    if (s == NULL)  /* a lone surrogate: the Python tokenizer reads it */
+        Py_RETURN_NOTIMPLEMENTED;
+    if (size - at + 1 > STACK_TOKENS && (found = PyMem_New(Token, size - at + 1)) == NULL)
+        return PyErr_NoMemory();
+    count = scan(s, size, at, pos, integer_digits, fraction_digits, found);
+    if (count < 0) {
+        if (found != stack)
+            PyMem_Free(found);
+        Py_RETURN_NONE;
+    }
+    list = PyList_New(count);
+    if (list == NULL)
+        goto error;
+    for (t = 0; t < count; t++) {
+        Token *token = &found[t];
+        if (token->kind >= 0) {
+            kind = value = operator_text[token->kind];
+            Py_INCREF(value);
+        } else {
+            kind = token->kind == T_NUMBER ? kind_number : token->kind == T_STRING ? kind_string
+                 : token->kind == T_LETTERS ? kind_letters : empty;
+            if (token->kind == T_END) {
+                value = empty;
+                Py_INCREF(value);
+            } else {
+                value = PyUnicode_DecodeUTF8(s + token->start, token->stop - token->start, NULL);
+                if (value == NULL)
+                    goto error;
+            }
+        }
+        item = Py_BuildValue("(ONnn)", kind, value, token->col, token->end);
+        if (item == NULL)
+            goto error;
+        PyList_SetItem(list, t, item);  /* steals the reference */
+    }
+    if (found != stack)
+        PyMem_Free(found);
     return list;
-give_up:
-    Py_DECREF(list);
-    Py_RETURN_NONE;
 error:
-    Py_XDECREF(value);
-    Py_DECREF(list);
+    Py_XDECREF(list);
+    if (found != stack)
+        PyMem_Free(found);
     return NULL;
+}
+
+/* ------------------------------------------------------------------------------------------
+ * block(text, path, line, integer_digits, fraction_digits): the Block node of a line of words and
+ * assignments, exactly as fastparse._Line.block builds it over the tokens above; None where that
+ * method gives up, or on anything this function does not take (the Python method then decides).
+ * The node classes come from setup(nodes_module); nodes are made as ``object.__new__`` and
+ * ``object.__setattr__`` make them (their frozen ``__init__`` does no more).
+ */
+enum { NUMBER, PARAM, UNARY, BINARY, COMPARE, CALL, WORD, ASSIGN, BLOCK, N_CLASSES };
+static const char *const CLASS_NAMES[N_CLASSES] = {"Number", "Param", "Unary", "Binary", "Compare", "Call",
+                                                   "Word", "Assign", "Block"};
+static PyObject *classes[N_CLASSES], *span_class;
+static newfunc tuple_new;
+enum { F_VALUE, F_SPAN, F_INDEX, F_OP, F_OPERAND, F_LEFT, F_RIGHT, F_NAME, F_ARGS, F_LETTER, F_TARGET,
+       F_WORDS, F_ASSIGNS, F_MESSAGE, F_LINE_NUMBER, F_BLOCK_DELETE, N_FIELDS };
+static const char *const FIELD_NAMES[N_FIELDS] = {"value", "span", "index", "op", "operand", "left", "right",
+                                                  "name", "args", "letter", "target", "words", "assigns",
+                                                  "message", "line_number", "block_delete"};
+static PyObject *fields[N_FIELDS];
+static const char *const FUNCTIONS[] = {"ABS", "ACOS", "ASIN", "COS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN",
+                                        "SQRT", "TAN", "ATAN"};
+#define N_FUNCTIONS (sizeof(FUNCTIONS) / sizeof(FUNCTIONS[0]))
+static PyObject *function_names[N_FUNCTIONS];
+static const char *const WORD_OPERATORS[] = {"EQ", "NE", "GT", "GE", "LT", "LE", "OR", "XOR", "AND", "MOD"};
+#define N_WORD_OPERATORS (sizeof(WORD_OPERATORS) / sizeof(WORD_OPERATORS[0]))
+static PyObject *word_operator_text[N_WORD_OPERATORS];
+static const int WORD_LEVEL[N_WORD_OPERATORS] = {1, 1, 1, 1, 1, 1, 2, 2, 2, 3};
+/* what each comparison is normalised to (fastparse._COMPARE_OPS), by word and by symbol */
+static const char *const WORD_COMPARE[N_WORD_OPERATORS] = {"==", "<>", ">", ">=", "<", "<=", 0, 0, 0, 0};
+static PyObject *letters[26];
+
+typedef struct {
+    const char *s;
+    Token *tokens;
+    Py_ssize_t i, count;
+    PyObject *path, *line;
+    int gave_up;
+} Parser;
+
+/* Which operator or function a letters token is, case-insensitively: its index in ``table``, or -1. */
+static int lookup(const char *s, Py_ssize_t length, const char *const *table, size_t size)
+{
+    size_t k;
+    Py_ssize_t j;
+    for (k = 0; k < size; k++) {
+        const char *name = table[k];
+        for (j = 0; j < length && name[j] != '\0'; j++)
+            if ((s[j] & ~0x20) != name[j])
+                break;
+        if (j == length && name[j] == '\0')
+            return (int)k;
+    }
+    return -1;
+}
+
+static PyObject *give_up(Parser *p)
+{
+    p->gave_up = 1;
+    return NULL;
+}
+
+static Token *at(Parser *p, Py_ssize_t i) { return &p->tokens[i < p->count ? i : p->count - 1]; }
+
+static PyObject *span(Parser *p, Py_ssize_t col, Py_ssize_t end)
+{
+    PyObject *items = Py_BuildValue("(OOnOn)", p->path, p->line, col, p->line, end), *made;
+    if (items == NULL)
+        return NULL;
+    made = PyTuple_Pack(1, items);
+    Py_DECREF(items);
+    if (made == NULL)
+        return NULL;
+    items = made;
+    made = tuple_new((PyTypeObject *)span_class, items, NULL);
+    Py_DECREF(items);
+    return made;
+}
+
+/* A node of class ``which`` with ``count`` fields; steals the references to ``values`` (any may be NULL
+ * after a failure, then nothing is made). */
+static PyObject *node(int which, int count, const int *names, PyObject **values)
+{
+    PyObject *made = NULL;
+    int k;
+    for (k = 0; k < count; k++)
+        if (values[k] == NULL)
+            goto done;
+    made = PyType_GenericAlloc((PyTypeObject *)classes[which], 0);
+    if (made == NULL)
+        goto done;
+    for (k = 0; k < count; k++) {
+        if (PyObject_GenericSetAttr(made, fields[names[k]], values[k]) < 0) {
+            Py_CLEAR(made);
+            goto done;
+        }
+    }
+done:
+    for (k = 0; k < count; k++)
+        Py_XDECREF(values[k]);
+    return made;
+}
+
+static PyObject *number(Parser *p, Token *token, double sign, Py_ssize_t col, Py_ssize_t end)
+{
+    static const int names[] = {F_VALUE, F_SPAN};
+    char buffer[1024];
+    Py_ssize_t length = token->stop - token->start;
+    double value;
+    PyObject *values[2];
+    if (length >= (Py_ssize_t)sizeof(buffer))
+        return give_up(p);
+    memcpy(buffer, p->s + token->start, (size_t)length);
+    buffer[length] = '\0';
+    value = PyOS_string_to_double(buffer, NULL, NULL);
+    if (value == -1.0 && PyErr_Occurred())
+        return NULL;
+    values[0] = PyFloat_FromDouble(sign * value);
+    values[1] = span(p, col, end);
+    return node(NUMBER, 2, names, values);
+}
+
+static PyObject *expr(Parser *p, int min_level, Py_ssize_t *start, Py_ssize_t *end);
+
+/* ']' expected: consumed, its end column returned; 0 (given up) otherwise. */
+static Py_ssize_t expect(Parser *p, int kind)
+{
+    Token *token = at(p, p->i);
+    if (token->kind != kind) {
+        p->gave_up = 1;
+        return 0;
+    }
+    p->i++;
+    return token->end;
+}
+
+#define OP_BRACKET 12
+#define OP_CLOSE 13
+#define OP_HASH 14
+#define OP_ASSIGN 15
+#define OP_MINUS 6
+#define OP_PLUS 7
+#define OP_SLASH 9
+
+static PyObject *param(Parser *p, Py_ssize_t *start, Py_ssize_t *end)
+{
+    static const int names[] = {F_INDEX, F_SPAN};
+    Token *token;
+    PyObject *values[2];
+    Py_ssize_t col = at(p, p->i)->col, inner_start, last;
+    p->i++;
+    token = at(p, p->i);
+    if (token->kind == OP_HASH) {
+        values[0] = param(p, &inner_start, &last);
+    } else if (token->kind == OP_BRACKET) {
+        p->i++;
+        values[0] = expr(p, 1, &inner_start, &last);
+        if (values[0] == NULL)
+            return NULL;
+        last = expect(p, OP_CLOSE);
+        if (!last) {
+            Py_DECREF(values[0]);
+            return NULL;
+        }
+    } else if (token->kind == T_NUMBER) {
+        p->i++;
+        last = token->end;
+        values[0] = number(p, token, 1.0, token->col, token->end);
+    } else {
+        return give_up(p);
+    }
+    if (values[0] == NULL)
+        return NULL;
+    values[1] = span(p, col, last);
+    *start = col;
+    *end = last;
+    return node(PARAM, 2, names, values);
+}
+
+static PyObject *operand(Parser *p, Py_ssize_t *start, Py_ssize_t *end)
+{
+    Token *token = at(p, p->i);
+    Py_ssize_t col = token->col, inner_start, last;
+    int function;
+    PyObject *inner, *values[4];
+    if (token->kind == T_NUMBER) {
+        p->i++;
+        *start = col;
+        *end = token->end;
+        return number(p, token, 1.0, col, token->end);
+    }
+    if (token->kind == OP_HASH)
+        return param(p, start, end);
+    if (token->kind == OP_MINUS || token->kind == OP_PLUS) {
+        static const int unary_names[] = {F_OP, F_OPERAND, F_SPAN};
+        int minus = token->kind == OP_MINUS;
+        p->i++;
+        inner = operand(p, &inner_start, &last);
+        if (inner == NULL)
+            return NULL;
+        *start = col;
+        *end = last;
+        if (Py_IS_TYPE(inner, (PyTypeObject *)classes[NUMBER])) {  /* a sign folds into a literal */
+            static const int names[] = {F_VALUE, F_SPAN};
+            PyObject *value = PyObject_GetAttr(inner, fields[F_VALUE]);
+            double folded;
+            Py_DECREF(inner);
+            if (value == NULL)
+                return NULL;
+            folded = PyFloat_AsDouble(value);
+            Py_DECREF(value);
+            values[0] = PyFloat_FromDouble(minus ? -folded : folded);
+            values[1] = span(p, col, last);
+            return node(NUMBER, 2, names, values);
+        }
+        values[0] = operator_text[token->kind];
+        Py_INCREF(values[0]);
+        values[1] = inner;
+        values[2] = span(p, col, last);
+        return node(UNARY, 3, unary_names, values);
+    }
+    if (token->kind == OP_BRACKET) {
+        p->i++;
+        inner = expr(p, 1, &inner_start, &last);
+        if (inner == NULL)
+            return NULL;
+        last = expect(p, OP_CLOSE);
+        if (!last) {
+            Py_DECREF(inner);
+            return NULL;
+        }
+        *start = col;
+        *end = last;
+        return inner;
+    }
+    if (token->kind != T_LETTERS || at(p, p->i + 1)->kind != OP_BRACKET)
+        return give_up(p);
+    function = lookup(p->s + token->start, token->stop - token->start, FUNCTIONS, N_FUNCTIONS);
+    if (function < 0)
+        return give_up(p);
+    {
+        static const int names[] = {F_NAME, F_ARGS, F_SPAN};
+        PyObject *first, *second = NULL;
+        p->i += 2;
+        first = expr(p, 1, &inner_start, &last);
+        if (first == NULL)
+            return NULL;
+        last = expect(p, OP_CLOSE);
+        if (!last) {
+            Py_DECREF(first);
+            return NULL;
+        }
+        /* ATAN[y]/[x] takes two operands; ATAN[x]/2 divides */
+        if (strcmp(FUNCTIONS[function], "ATAN") == 0 && at(p, p->i)->kind == OP_SLASH
+                && at(p, p->i + 1)->kind == OP_BRACKET) {
+            p->i += 2;
+            second = expr(p, 1, &inner_start, &last);
+            if (second == NULL) {
+                Py_DECREF(first);
+                return NULL;
+            }
+            last = expect(p, OP_CLOSE);
+            if (!last) {
+                Py_DECREF(first);
+                Py_DECREF(second);
+                return NULL;
+            }
+        }
+        values[0] = function_names[function];
+        Py_INCREF(values[0]);
+        values[1] = second ? PyTuple_Pack(2, first, second) : PyTuple_Pack(1, first);
+        Py_DECREF(first);
+        Py_XDECREF(second);
+        values[2] = span(p, col, last);
+        *start = col;
+        *end = last;
+        return node(CALL, 3, names, values);
+    }
+}
+
+/* The binding level of the token at p->i as an operator (0: none) and the text a node keeps. */
+static int level_of(Parser *p, PyObject **op, int *compare)
+{
+    Token *token = at(p, p->i);
+    int k;
+    *compare = -1;
+    if (token->kind >= 0) {
+        static const int LEVEL[] = {4, 1, 1, 1, 1, 1, 2, 2, 3, 3, 1, 1, 0, 0, 0, 0};  /* by OPERATORS */
+        *op = operator_text[token->kind];
+        if (LEVEL[token->kind] == 1)
+            *compare = token->kind;
+        return LEVEL[token->kind];
+    }
+    if (token->kind != T_LETTERS)
+        return 0;
+    {
+        Token *after = at(p, p->i + 1);  /* MOD2 is a name, MOD.5 is not */
+        if (after->kind == T_NUMBER && after->col == token->end && p->s[after->start] != '.')
+            return 0;
+    }
+    k = lookup(p->s + token->start, token->stop - token->start, WORD_OPERATORS, N_WORD_OPERATORS);
+    if (k < 0)
+        return 0;
+    *op = word_operator_text[k];
+    if (WORD_LEVEL[k] == 1)
+        *compare = 100 + k;
+    return WORD_LEVEL[k];
+}
+
+static PyObject *compare_text(int compare)
+{
+    static const int SYMBOL[] = {-1, 1, 2, 2, 4, 5};  /* ** == <> != <= >= -> the OPERATORS entry kept */
+    if (compare >= 100)
+        return PyUnicode_InternFromString(WORD_COMPARE[compare - 100]);
+    if (compare >= 1 && compare <= 5) {
+        PyObject *text = operator_text[SYMBOL[compare]];
+        Py_INCREF(text);
+        return text;
+    }
+    {  /* '<' or '>' */
+        PyObject *text = operator_text[compare];
+        Py_INCREF(text);
+        return text;
+    }
+}
+
+static PyObject *expr(Parser *p, int min_level, Py_ssize_t *start, Py_ssize_t *end)
+{
+    static const int names[] = {F_OP, F_LEFT, F_RIGHT, F_SPAN};
+    Py_ssize_t right_start, right_end;
+    PyObject *left = operand(p, start, end), *right, *op, *values[4];
+    int level, compare;
+    while (left != NULL) {
+        level = level_of(p, &op, &compare);
+        if (level < min_level || level == 0)
+            return left;
+        p->i++;
+        right = expr(p, level + 1, &right_start, &right_end);
+        if (right == NULL) {
+            Py_DECREF(left);
+            return NULL;
+        }
+        *end = right_end;
+        if (level == 1) {
+            values[0] = compare_text(compare);
+        } else {
+            values[0] = op;
+            Py_INCREF(op);
+        }
+        values[1] = left;
+        values[2] = right;
+        values[3] = span(p, *start, *end);
+        left = node(level == 1 ? COMPARE : BINARY, 4, names, values);
+    }
+    return NULL;
+}
+
+static PyObject *block(PyObject *self, PyObject *args)
+{
+    static const int word_names[] = {F_LETTER, F_VALUE, F_SPAN};
+    static const int assign_names[] = {F_TARGET, F_VALUE, F_SPAN};
+    static const int block_names[] = {F_WORDS, F_ASSIGNS, F_MESSAGE, F_LINE_NUMBER, F_BLOCK_DELETE, F_SPAN};
+    PyObject *text, *words = NULL, *assigns = NULL, *result = NULL, *values[6];
+    Py_ssize_t integer_digits, fraction_digits, size, at_byte, count, first_col, last_end = 0, start, end;
+    Token stack[STACK_TOKENS], *found = stack;
+    Parser p;
+    int block_delete;
+    (void)self;
+    if (classes[0] == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not called");
+        return NULL;
+    }
+    if (!PyArg_ParseTuple(args, "UOOnn", &text, &p.path, &p.line, &integer_digits, &fraction_digits))
+        return NULL;
+    p.s = utf8_at(text, 0, &size, &at_byte);
+    if (p.s == NULL)
+        Py_RETURN_NONE;
+    if (size + 1 > STACK_TOKENS && (found = PyMem_New(Token, size + 1)) == NULL)
+        return PyErr_NoMemory();
+    count = scan(p.s, size, 0, 0, integer_digits, fraction_digits, found);
+    if (count < 2)  /* nothing to read, or no token covers a character */
+        goto done;
+    p.tokens = found;
+    p.count = count;
+    p.i = 0;
+    p.gave_up = 0;
+    words = PyList_New(0);
+    assigns = PyList_New(0);
+    if (words == NULL || assigns == NULL)
+        goto done;
+    first_col = found[0].col;
+    block_delete = found[0].kind == OP_SLASH;
+    if (block_delete)
+        p.i = 1;
+    for (;;) {
+        Token *token = at(&p, p.i);
+        PyObject *made;
+        if (token->kind == OP_HASH) {
+            PyObject *target = param(&p, &start, &end), *value;
+            if (target == NULL)
+                goto done;
+            if (!expect(&p, OP_ASSIGN) || at(&p, p.i)->kind == OP_ASSIGN) {
+                p.gave_up = 1;
+                Py_DECREF(target);
+                goto done;
+            }
+            value = expr(&p, 1, &start, &end);
+            if (value == NULL) {
+                Py_DECREF(target);
+                goto done;
+            }
+            values[0] = target;
+            values[1] = value;
+            values[2] = span(&p, token->col, end);
+            made = node(ASSIGN, 3, assign_names, values);
+            if (made == NULL || PyList_Append(assigns, made) < 0) {
+                Py_XDECREF(made);
+                goto done;
+            }
+            Py_DECREF(made);
+            last_end = end;
+        } else if (token->kind == T_LETTERS) {
+            Py_ssize_t length = token->stop - token->start, col = token->col;
+            char letter = (char)(p.s[token->start] & ~0x20);
+            PyObject *value;
+            if (length == 1) {
+                p.i++;
+            } else if (lookup(p.s + token->start + 1, length - 1, FUNCTIONS, N_FUNCTIONS) >= 0
+                       && lookup(p.s + token->start, length, FUNCTIONS, N_FUNCTIONS) < 0) {
+                token->start += 1;  /* XSIN[1]: the word X, then SIN */
+                token->col += 1;
+            } else {  /* ASIN[ (the function wins), MOD, GX: the grammar's */
+                p.gave_up = 1;
+                goto done;
+            }
+            value = operand(&p, &start, &end);
+            if (value == NULL)
+                goto done;
+            values[0] = letters[letter - 'A'];
+            Py_INCREF(values[0]);
+            values[1] = value;
+            values[2] = span(&p, col, end);
+            made = node(WORD, 3, word_names, values);
+            if (made == NULL || PyList_Append(words, made) < 0) {
+                Py_XDECREF(made);
+                goto done;
+            }
+            Py_DECREF(made);
+            last_end = end;
+        } else if (token->kind == T_END) {
+            break;
+        } else {
+            p.gave_up = 1;
+            goto done;
+        }
+    }
+    if (PyList_Size(words) == 0 && PyList_Size(assigns) == 0) {
+        p.gave_up = 1;
+        goto done;
+    }
+    {
+        PyObject *line_number = Py_None, *word_tuple;
+        Py_ssize_t skip = 0;
+        Py_INCREF(Py_None);
+        if (PyList_Size(words) > 0) {
+            PyObject *first = PyList_GetItem(words, 0);
+            PyObject *letter = PyObject_GetAttr(first, fields[F_LETTER]);
+            PyObject *value = letter ? PyObject_GetAttr(first, fields[F_VALUE]) : NULL;
+            if (value == NULL) {
+                Py_XDECREF(letter);
+                Py_DECREF(Py_None);
+                goto done;
+            }
+            if (letter == letters['N' - 'A'] && Py_IS_TYPE(value, (PyTypeObject *)classes[NUMBER])) {
+                PyObject *number_value = PyObject_GetAttr(value, fields[F_VALUE]);
+                Py_DECREF(Py_None);
+                line_number = number_value ? PyLong_FromDouble(PyFloat_AsDouble(number_value)) : NULL;
+                Py_XDECREF(number_value);
+                skip = 1;
+            }
+            Py_DECREF(letter);
+            Py_DECREF(value);
+            if (line_number == NULL)
+                goto done;
+        }
+        word_tuple = PyList_GetSlice(words, skip, PyList_Size(words));
+        values[0] = word_tuple ? PyList_AsTuple(word_tuple) : NULL;
+        Py_XDECREF(word_tuple);
+        values[1] = PyList_AsTuple(assigns);
+        values[2] = Py_None;
+        Py_INCREF(Py_None);
+        values[3] = line_number;
+        values[4] = PyBool_FromLong(block_delete);
+        values[5] = span(&p, first_col, last_end);
+        result = node(BLOCK, 6, block_names, values);
+    }
+done:
+    Py_XDECREF(words);
+    Py_XDECREF(assigns);
+    if (found != stack)
+        PyMem_Free(found);
+    if (result == NULL && !PyErr_Occurred())
+        Py_RETURN_NONE;
+    return result;
+}
+
+/* setup(nodes_module): the node classes block() makes. */
+static PyObject *setup(PyObject *self, PyObject *module)
+{
+    int k;
+    (void)self;
+    for (k = 0; k < N_CLASSES; k++) {
+        PyObject *found = PyObject_GetAttrString(module, CLASS_NAMES[k]);
+        if (found == NULL || !PyType_Check(found)) {
+            Py_XDECREF(found);
+            return found == NULL ? NULL : (PyErr_SetString(PyExc_TypeError, "a node class expected"), NULL);
+        }
+        Py_XDECREF(classes[k]);
+        classes[k] = found;
+    }
+    Py_XDECREF(span_class);
+    span_class = PyObject_GetAttrString(module, "Span");
+    if (span_class == NULL)
+        return NULL;
+    Py_RETURN_NONE;
 }
 
 static PyMethodDef methods[] = {
     {"tokens", tokens, METH_VARARGS,
      "tokens(text, pos, integer_digits, fraction_digits): the fast path's tokens, None to give up."},
+    {"block", block, METH_VARARGS,
+     "block(text, path, line, integer_digits, fraction_digits): the Block of a word line, None to give up."},
+    {"setup", setup, METH_O, "setup(nodes_module): the node classes block() makes."},
     {NULL, NULL, 0, NULL},
 };
 
@@ -210,5 +763,20 @@ PyMODINIT_FUNC PyInit__lexer(void)
         if (operator_text[k] == NULL)
             return NULL;
     }
+    for (k = 0; k < N_FIELDS; k++)
+        if ((fields[k] = PyUnicode_InternFromString(FIELD_NAMES[k])) == NULL)
+            return NULL;
+    for (k = 0; k < N_FUNCTIONS; k++)
+        if ((function_names[k] = PyUnicode_InternFromString(FUNCTIONS[k])) == NULL)
+            return NULL;
+    for (k = 0; k < N_WORD_OPERATORS; k++)
+        if ((word_operator_text[k] = PyUnicode_InternFromString(WORD_OPERATORS[k])) == NULL)
+            return NULL;
+    for (k = 0; k < 26; k++) {
+        char name[2] = {(char)('A' + k), '\0'};
+        if ((letters[k] = PyUnicode_InternFromString(name)) == NULL)
+            return NULL;
+    }
+    tuple_new = (newfunc)PyType_GetSlot(&PyTuple_Type, Py_tp_new);
     return PyModule_Create(&module);
 }

@@ -85,20 +85,22 @@ def _tokens_python(text: str, pos: int) -> list[Token]:
     return tokens
 
 
-def _compiled_tokens() -> Callable[[str, int, int, int], object] | None:
-    """The compiled tokenizer, unless it is not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
+def _compiled() -> tuple[Callable[..., object] | None, Callable[..., object] | None]:
+    """The compiled tokenizer and block reader (``_lexer.c``), unless they are not built or
+    ``ECNC_PURE_PYTHON`` asks for the Python core."""
     from edingcnc_lang.speedups import PURE_ENV
 
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None
+        return None, None
     try:
-        from edingcnc_lang._lexer import tokens  # type: ignore[import-not-found]
+        from edingcnc_lang import _lexer  # type: ignore[attr-defined]
     except ImportError:
-        return None
-    return tokens  # type: ignore[no-any-return]
+        return None, None
+    _lexer.setup(n)
+    return _lexer.tokens, _lexer.block
 
 
-_COMPILED = _compiled_tokens()
+_COMPILED, _COMPILED_BLOCK = _compiled()
 
 
 def _tokens(text: str, pos: int) -> list[Token]:
@@ -289,7 +291,7 @@ def _statement(text: str, path: str, line: int) -> LineResult:
     head = _HEAD.match(text)
     word = head.group(1).lower() if head else ""
     if head is None or word not in _KEYWORDS:
-        return _Line(_tokens(text, 0), path, line).block()
+        return _block(text, path, line)
     if word not in _HANDLED:  # kin, exec, tanknife, ...: the grammar's
         raise _GiveUp
     start, pos = head.start(1) + 1, head.end()
@@ -321,6 +323,16 @@ def _statement(text: str, path: str, line: int) -> LineResult:
         items, last = rest.items(end)
         return n.Dialog(tuple(items), rest.span(start, last))
     raise _GiveUp
+
+
+def _block(text: str, path: str, line: int) -> n.Block:
+    """A line of words and assignments: the compiled reader builds the same Block as ``_Line.block``
+    (or gives up, returning None, and the Python method decides)."""
+    if _COMPILED_BLOCK is not None:
+        found = _COMPILED_BLOCK(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+        if found is not None:
+            return found  # type: ignore[return-value]
+    return _Line(_tokens(text, 0), path, line).block()
 
 
 def _logfile(text: str, path: str, line: int, start: int, pos: int) -> n.LogFile:

@@ -1,5 +1,6 @@
 """The compiled tokenizer (``_lexer.c``) gives exactly the tokens of the Python one, or gives up where
-it gives up; the Python tokenizer is the reference.
+it gives up, and its block reader builds exactly the Blocks of ``fastparse._Line.block``; the Python
+functions are the reference.
 
 Lines are built from the pieces the fast path meets (numbers near the digit limits, strings,
 comments, operators, letters) and from arbitrary text (other characters, non-ASCII, lone
@@ -8,16 +9,21 @@ surrogates, newlines), read from a random start.
 from __future__ import annotations
 
 import os
+import random
 import subprocess
 import sys
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang.syntax import fastparse
 from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 from edingcnc_lang.syntax.plain_words import INTEGER_DIGITS
+from edingcnc_lang.syntax.printer import stmt_lines
+
+from .test_fastparse import _respace
+from .test_properties import blocks
 
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled tokenizer is not built")
 
@@ -89,3 +95,54 @@ def test_the_fast_path_takes_the_compiled_tokenizer_unless_told_not_to() -> None
                           check=True).stdout.strip() == "True"
     assert subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           env={**env, "ECNC_PURE_PYTHON": "1"}, check=True).stdout.strip() == "False"
+
+
+# ------------------------------------------------------------------ the compiled block reader
+
+def _python_block(line: str) -> object:
+    try:
+        return fastparse._Line(fastparse._tokens_python(line, 0), "f", 7).block()
+    except (fastparse._GiveUp, IndexError):
+        return None
+
+
+def _same_block(line: str) -> object:
+    """The compiled reader gives the Python method's Block (spans and node types included, as repr
+    shows them), or gives up; it never answers where the Python method gives up."""
+    compiled = lexer.block(line, "f", 7, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    python = _python_block(line)
+    if compiled is not None:
+        assert python is not None, line
+        assert repr(compiled) == repr(python) and compiled == python, line
+        assert [type(w.value) for w in compiled.words] == [type(w.value) for w in python.words], line
+    return compiled
+
+
+@settings(max_examples=150, deadline=None)
+@given(blocks.map(lambda b: stmt_lines(b)[0]), st.sampled_from(["", " ; note", ";x G1 X2", "   ", " ; é"]),
+       st.randoms(use_true_random=False))
+def test_the_compiled_block_reader_builds_the_python_blocks(line: str, comment: str, rnd: random.Random) -> None:
+    for spaced in (line.replace(" ", ""), line, _respace(line, rnd)):
+        _same_block(spaced + comment)
+
+
+@given(st.lists(pieces, max_size=12).map("".join))
+def test_the_compiled_block_reader_on_any_pieces(line: str) -> None:
+    _same_block(line)
+
+
+@pytest.mark.parametrize("line", [
+    "#1003 = [#1001 * 1.234 + #4000]", "G1 X[#2 * 2.5] Y[SIN[#2 * 10] * #3] F[#4001 + 100]", "N10 G0 X-1.5 y.5",
+    "/M3 S[#1*100]", "#1 = [[#2 > 3] and [#3 <> 0]]", "#1=ATAN[1]/[2]", "#1 = ATAN[1]/2", "#1 = -[2]",
+    "XSIN[1]", "#1 = [1 EQ 2] + [3 != 4] - [1 le 2]", "#1 = 2 MOD 3 ** 2 / 4 xor 1", "#1 = #[#2 + 1]",
+    "#1 = ##2", "G1 X-#1 Y+[1] Z+2", "N1.5 X1", "#1 = 1 ; é", "x[#1 mod 2] ; ü", "G1 X" + "9" * 300 + ".5",
+])
+def test_the_compiled_block_reader_takes_the_common_lines(line: str) -> None:
+    assert _same_block(line) is not None, line
+
+
+@pytest.mark.parametrize("line", ["#1 == 2", "GX1", "ASIN[1]", "#1 = MOD2", "G1 X", "G0 X1+2", "é X1",
+                                  "#1 = [1", "N", "/", "", "G1 X\ud800"])
+def test_the_compiled_block_reader_gives_up_where_python_does(line: str) -> None:
+    assert _python_block(line) is None
+    assert lexer.block(line, "f", 7, INTEGER_DIGITS, MAX_NUMBER_DIGITS) is None
