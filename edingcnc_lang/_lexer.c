@@ -714,6 +714,65 @@ done:
     return result;
 }
 
+/* condition(text, pos, path, line, is_if, integer_digits, fraction_digits): the condition of an
+ * If/While head whose keyword ends before ``pos``, as (cond, end column, stray ']' count), exactly
+ * as fastparse._Line.condition reads it; None where that method gives up or this one does not try. */
+static PyObject *condition(PyObject *self, PyObject *args)
+{
+    static const char *const THEN[] = {"THEN"};
+    PyObject *text, *cond = NULL, *result = NULL;
+    Py_ssize_t pos, integer_digits, fraction_digits, size, at_byte, count, start, end, extra = 0;
+    Token stack[STACK_TOKENS], *found = stack;
+    Parser p;
+    int is_if;
+    Token *then;
+    (void)self;
+    if (classes[0] == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not called");
+        return NULL;
+    }
+    if (!PyArg_ParseTuple(args, "UnOOpnn", &text, &pos, &p.path, &p.line, &is_if, &integer_digits,
+                          &fraction_digits))
+        return NULL;
+    p.s = utf8_at(text, pos, &size, &at_byte);
+    if (p.s == NULL)
+        Py_RETURN_NONE;
+    if (size - at_byte + 1 > STACK_TOKENS && (found = PyMem_New(Token, size - at_byte + 1)) == NULL)
+        return PyErr_NoMemory();
+    count = scan(p.s, size, at_byte, pos, integer_digits, fraction_digits, found);
+    if (count < 1)
+        goto done;
+    p.tokens = found;
+    p.count = count;
+    p.i = 0;
+    p.gave_up = 0;
+    if (!expect(&p, OP_BRACKET))
+        goto done;
+    cond = expr(&p, 1, &start, &end);
+    if (cond == NULL || !(end = expect(&p, OP_CLOSE)))
+        goto done;
+    while (at(&p, p.i)->kind == OP_CLOSE) {
+        end = expect(&p, OP_CLOSE);
+        extra++;
+    }
+    then = at(&p, p.i);
+    if (is_if && then->kind == T_LETTERS) {
+        if (lookup(p.s + then->start, then->stop - then->start, THEN, 1) < 0)
+            goto done;
+        end = expect(&p, T_LETTERS);
+    }
+    if (at(&p, p.i)->kind != T_END)
+        goto done;
+    result = Py_BuildValue("(Onn)", cond, end, extra);
+done:
+    Py_XDECREF(cond);
+    if (found != stack)
+        PyMem_Free(found);
+    if (result == NULL && !PyErr_Occurred())
+        Py_RETURN_NONE;
+    return result;
+}
+
 /* setup(nodes_module): the node classes block() makes. */
 static PyObject *setup(PyObject *self, PyObject *module)
 {
@@ -740,6 +799,8 @@ static PyMethodDef methods[] = {
      "tokens(text, pos, integer_digits, fraction_digits): the fast path's tokens, None to give up."},
     {"block", block, METH_VARARGS,
      "block(text, path, line, integer_digits, fraction_digits): the Block of a word line, None to give up."},
+    {"condition", condition, METH_VARARGS,
+     "condition(text, pos, path, line, is_if, integer_digits, fraction_digits): (cond, end, extra), None to give up."},
     {"setup", setup, METH_O, "setup(nodes_module): the node classes block() makes."},
     {NULL, NULL, 0, NULL},
 };

@@ -85,22 +85,25 @@ def _tokens_python(text: str, pos: int) -> list[Token]:
     return tokens
 
 
-def _compiled() -> tuple[Callable[..., object] | None, Callable[..., object] | None]:
-    """The compiled tokenizer and block reader (``_lexer.c``), unless they are not built or
-    ``ECNC_PURE_PYTHON`` asks for the Python core."""
+_Compiled = Callable[..., object] | None
+
+
+def _compiled() -> tuple[_Compiled, _Compiled, _Compiled]:
+    """The compiled tokenizer, block and condition readers (``_lexer.c``), unless they are not built
+    or ``ECNC_PURE_PYTHON`` asks for the Python core."""
     from edingcnc_lang.speedups import PURE_ENV
 
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None
+        return None, None, None
     try:
         from edingcnc_lang import _lexer  # type: ignore[attr-defined]
     except ImportError:
-        return None, None
+        return None, None, None
     _lexer.setup(n)
-    return _lexer.tokens, _lexer.block
+    return _lexer.tokens, _lexer.block, _lexer.condition
 
 
-_COMPILED, _COMPILED_BLOCK = _compiled()
+_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION = _compiled()
 
 
 def _tokens(text: str, pos: int) -> list[Token]:
@@ -313,9 +316,9 @@ def _statement(text: str, path: str, line: int) -> LineResult:
         return n.Home(axis.group(1).upper(), word == "hometandem", n.Span(path, line, start, line, axis.end(1) + 1))
     if word == "logfile":
         return _logfile(text, path, line, start, pos)
-    rest = _Line(_tokens(text, pos), path, line)
     if word in ("if", "while"):
-        return rest.condition(word.capitalize(), start)
+        return _condition(text, path, line, word.capitalize(), start, pos)
+    rest = _Line(_tokens(text, pos), path, line)
     if word in _MESSAGES:
         items, last = rest.items(end)
         return n.Message(word, tuple(items), rest.span(start, last))
@@ -333,6 +336,18 @@ def _block(text: str, path: str, line: int) -> n.Block:
         if found is not None:
             return found  # type: ignore[return-value]
     return _Line(_tokens(text, 0), path, line).block()
+
+
+def _condition(text: str, path: str, line: int, kind: str, start: int, pos: int) -> Open:
+    """An If/While head from ``pos`` on (the keyword before it): on the compiled reader when it is
+    there (the same condition as ``_Line.condition``, or None to let that method decide)."""
+    if _COMPILED_CONDITION is not None:
+        found: tuple[n.Expr, int, int] | None = _COMPILED_CONDITION(  # type: ignore[assignment]
+            text, pos, path, line, kind == "If", INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+        if found is not None:
+            cond, end, extra = found
+            return Open(kind, _new_span(n.Span, (path, line, start, line, end)), cond=cond, extra=extra)
+    return _Line(_tokens(text, pos), path, line).condition(kind, start)
 
 
 def _logfile(text: str, path: str, line: int, start: int, pos: int) -> n.LogFile:

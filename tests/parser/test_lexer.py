@@ -20,10 +20,10 @@ from hypothesis import strategies as st
 from edingcnc_lang.syntax import fastparse
 from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 from edingcnc_lang.syntax.plain_words import INTEGER_DIGITS
-from edingcnc_lang.syntax.printer import stmt_lines
+from edingcnc_lang.syntax.printer import expr_text, stmt_lines
 
 from .test_fastparse import _respace
-from .test_properties import blocks
+from .test_properties import blocks, exprs
 
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled tokenizer is not built")
 
@@ -146,3 +146,43 @@ def test_the_compiled_block_reader_takes_the_common_lines(line: str) -> None:
 def test_the_compiled_block_reader_gives_up_where_python_does(line: str) -> None:
     assert _python_block(line) is None
     assert lexer.block(line, "f", 7, INTEGER_DIGITS, MAX_NUMBER_DIGITS) is None
+
+
+# ------------------------------------------------------------------ the compiled condition reader
+
+def _same_condition(line: str) -> object:
+    """``If``/``While`` heads: the compiled reader gives the condition, end column and stray ']' count
+    of ``_Line.condition``, or gives up; never an answer where the Python method gives up."""
+    head = fastparse._HEAD.match(line)
+    assert head is not None
+    kind, start, pos = head.group(1).capitalize(), head.start(1) + 1, head.end()
+    compiled = lexer.condition(line, pos, "f", 7, kind == "If", INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    try:
+        python = fastparse._Line(fastparse._tokens_python(line, pos), "f", 7).condition(kind, start)
+    except (fastparse._GiveUp, IndexError):
+        python = None
+    if compiled is not None:
+        assert python is not None, line
+        cond, end, extra = compiled
+        assert (repr(cond), end, extra) == (repr(python.cond), python.span.end_col, python.extra), line
+    return compiled
+
+
+@settings(max_examples=100, deadline=None)
+@given(exprs.map(expr_text), st.sampled_from(["If ", "IF", "while ", "WHILE"]),
+       st.sampled_from(["", "]", "]]", " THEN", " then ; x", "] Then", " ELSE", " X1", " é", " ; é"]))
+def test_the_compiled_condition_reader_reads_the_python_conditions(cond: str, keyword: str, tail: str) -> None:
+    _same_condition(f"{keyword}[{cond}]{tail}")
+    _same_condition(f"{keyword}[{cond.replace(' ', '')}]{tail}")
+
+
+@pytest.mark.parametrize("line", ["If [[#5380 == 0] and [#5397 == 0]]", "While [#1 < 10]", "IF [#1] THEN",
+                                  "If [#1 > 2]] ; stray", "while [[#1 <> 1] or [#2 ge 3]]"])
+def test_the_compiled_condition_reader_takes_the_common_heads(line: str) -> None:
+    assert _same_condition(line) is not None, line
+
+
+@pytest.mark.parametrize("line", ["If [1] AND [2]", "While [#1] then", "If #1", "If [#1", "If [1] THEN X",
+                                  "If [1] é"])
+def test_the_compiled_condition_reader_gives_up_where_python_does(line: str) -> None:
+    assert _same_condition(line) is None
