@@ -328,14 +328,17 @@ def _statement(text: str, path: str, line: int) -> LineResult:
     raise _GiveUp
 
 
+def compiled_block(text: str, path: str, line: int) -> n.Block | None:
+    """The Block of a line of words and assignments on the compiled reader, the same as
+    ``_Line.block`` builds (and, for a plain word line, ``line_parser._fast_block``); None when the
+    reader is not built or gives up."""
+    if _COMPILED_BLOCK is None:
+        return None
+    return _COMPILED_BLOCK(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)  # type: ignore[return-value]
+
+
 def _block(text: str, path: str, line: int) -> n.Block:
-    """A line of words and assignments: the compiled reader builds the same Block as ``_Line.block``
-    (or gives up, returning None, and the Python method decides)."""
-    if _COMPILED_BLOCK is not None:
-        found = _COMPILED_BLOCK(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
-        if found is not None:
-            return found  # type: ignore[return-value]
-    return _Line(_tokens(text, 0), path, line).block()
+    return compiled_block(text, path, line) or _Line(_tokens(text, 0), path, line).block()
 
 
 def _condition(text: str, path: str, line: int, kind: str, start: int, pos: int) -> Open:

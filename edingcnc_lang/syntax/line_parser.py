@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.fastparse import GIVE_UP, parse_fast
+from edingcnc_lang.syntax.fastparse import GIVE_UP, compiled_block, parse_fast
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, line_problem
 from edingcnc_lang.syntax.blocks import LineResult
 from edingcnc_lang.syntax.plain_words import FAST_LINE, word_matches
@@ -172,8 +172,8 @@ def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
     if len(text) > MAX_LINE_LENGTH:
         raise _LineError("E110", f"line is longer than {MAX_LINE_LENGTH} characters, the limit for one line "
                          "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)
-    if FAST_LINE.match(text):
-        return _fast_block(text, path, line)
+    if FAST_LINE.match(text):  # the compiled reader builds the same Block faster, when it is built
+        return compiled_block(text, path, line) or _fast_block(text, path, line)
     if _EMPTY_LINE.match(text):  # blank or comments only
         return None
     problem = line_problem(text)

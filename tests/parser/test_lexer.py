@@ -23,7 +23,7 @@ from edingcnc_lang.syntax.plain_words import INTEGER_DIGITS
 from edingcnc_lang.syntax.printer import expr_text, stmt_lines
 
 from .test_fastparse import _respace
-from .test_properties import blocks, exprs
+from .test_properties import blocks, exprs, plain_lines
 
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled tokenizer is not built")
 
@@ -186,3 +186,14 @@ def test_the_compiled_condition_reader_takes_the_common_heads(line: str) -> None
                                   "If [1] é"])
 def test_the_compiled_condition_reader_gives_up_where_python_does(line: str) -> None:
     assert _same_condition(line) is None
+
+
+@settings(max_examples=300, deadline=None)
+@given(plain_lines)
+def test_the_compiled_block_reader_builds_the_plain_line_blocks(line: str) -> None:
+    """Plain word lines (``line_parser._fast_block``, the regular-expression path) read the same."""
+    from edingcnc_lang.syntax.line_parser import _fast_block
+
+    compiled = lexer.block(line, "f", 3, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    assert compiled is not None, line
+    assert repr(compiled) == repr(_fast_block(line, "f", 3)), line
