@@ -59,25 +59,31 @@ def gather(walked: Sequence[tuple[n.Stmt, Scope]]) -> FileFacts:
     reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]] = {}
     codes_of: dict[int, BlockCodes] = {}
     ending: set[int] = set()
-    for stmt, scope in walked:
-        found = reads_of[id(stmt)] = indexed_reads(stmt)
-        all_reads += [(param, index, scope) for param, index in found]
-        if isinstance(stmt, n.Block):
+    for stmt, scope in walked:  # exact type tests: node classes are final, and this runs for every statement
+        params = reads(stmt)
+        if params:  # most statements read none
+            found = tuple([(param, literal_index(param)) for param in params])
+            all_reads += [(param, index, scope) for param, index in found]
+        else:
+            found = ()
+        reads_of[id(stmt)] = found
+        if type(stmt) is n.Block:
             codes = BlockCodes(stmt, scope, *block_codes(stmt))
             blocks.append(codes)
             codes_of[id(stmt)] = codes
-            targets += [(a.target, literal_index(a.target), scope) for a in stmt.assigns]
+            if stmt.assigns:
+                targets += [(a.target, literal_index(a.target), scope) for a in stmt.assigns]
             if codes.m:
                 callers.append((stmt, scope))
                 if not stmt.block_delete and any(key in END_OF_PROGRAM for key, _word in codes.m):
                     ending.add(id(stmt))
-        elif isinstance(stmt, n.GoSub):
+        elif type(stmt) is n.GoSub:
             callers.append((stmt, scope))
-        elif isinstance(stmt, n.Dialog):
+        elif type(stmt) is n.Dialog:
             dialogs.append((stmt, scope))
-        elif isinstance(stmt, n.Command):
+        elif type(stmt) is n.Command:
             commands.append(stmt)
-        elif isinstance(stmt, n.Message) and stmt.kind == "errmsg":
+        elif type(stmt) is n.Message and stmt.kind == "errmsg":
             ending.add(id(stmt))
     return FileFacts(tuple(blocks), tuple(all_reads), tuple(targets), tuple(dialogs), tuple(commands),
                      tuple(callers), reads_of, codes_of, frozenset(ending))

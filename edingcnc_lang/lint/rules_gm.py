@@ -64,28 +64,31 @@ def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic
 
 
 def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
-    block, g = codes.block, dict(codes.g)
+    block = codes.block
     letters = {w.letter: w for w in block.words}
-    if G53 in g and not G53_MOTIONS & g.keys():
-        yield at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. G53 G0 Z0",
-                 g[G53].span)
-    arc = next((k for k in g if k in ARCS), None)
-    if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
-        yield at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
-                 g[arc].span)
-    feed = letters.get("F")
-    move = next((k for k in g if k in FEED_MOVES), None)
-    if feed is not None and move is not None and evaluate(feed.value) == 0:
-        yield at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
-                 "(EdingCNC G1516: incorrect feed rate)", feed.span)
+    if codes.g:  # G501..G503 are about G codes: most lines have none
+        g = dict(codes.g)
+        if G53 in g and not G53_MOTIONS & g.keys():
+            yield at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. G53 G0 Z0",
+                     g[G53].span)
+        arc = next((k for k in g if k in ARCS), None)
+        if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
+            yield at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
+                     g[arc].span)
+        feed = letters.get("F")
+        move = next((k for k in g if k in FEED_MOVES), None) if feed is not None else None
+        if feed is not None and move is not None and evaluate(feed.value) == 0:
+            yield at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
+                     "(EdingCNC G1516: incorrect feed rate)", feed.span)
     tool = letters.get("T")
     number = evaluate(tool.value) if tool else None
     if tool is not None and number is not None and number > MAX_TOOL:
         yield at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span)
-    m_words = [w for w in block.words if w.letter == "M"]
-    if len(m_words) > MAX_M_WORDS:
-        yield at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
-                 f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
+    if len(block.words) > MAX_M_WORDS:
+        m_words = [w for w in block.words if w.letter == "M"]
+        if len(m_words) > MAX_M_WORDS:
+            yield at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
+                     f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
 
 
 @rule("G509")
