@@ -41,10 +41,10 @@ def _walk_into(found: list[tuple[n.Stmt, Scope]], body: Sequence[n.Stmt], scope:
         elif isinstance(stmt, n.While):
             _walk_into(found, stmt.body, here)
         elif isinstance(stmt, n.If):
-            then_guard, else_guard = guard_branches(stmt.cond)
+            then_guard, else_guard, exits = _in_simulation(stmt)
             _walk_into(found, stmt.then, Scope(scope.sub, True) if then_guard else here)
             _walk_into(found, stmt.orelse, Scope(scope.sub, True) if else_guard else here)
-            if not here.guarded and exits_in_simulation(stmt):
+            if not here.guarded and exits:
                 here = Scope(scope.sub, True)  # the rest of this block only runs on a real machine
 
 
@@ -62,6 +62,13 @@ def statement_lists(body: Sequence[n.Stmt], walked: Iterable[tuple[n.Stmt, Scope
 def simulation_value(index: int) -> float | None:
     """Parameter lookup for a simulated run: #5380 is 1, nothing else is known."""
     return 1.0 if index == SIMULATION else None
+
+
+def _in_simulation(stmt: n.If) -> tuple[bool, bool, bool]:
+    """``guard_branches(stmt.cond)`` and ``exits_in_simulation(stmt)`` with one look at the condition."""
+    if not reads_param(stmt.cond, SIMULATION):  # most conditions
+        return False, False, False
+    return (*guard_branches(stmt.cond), exits_in_simulation(stmt))
 
 
 def guard_branches(cond: n.Expr) -> tuple[bool, bool]:
