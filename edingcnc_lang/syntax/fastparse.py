@@ -104,6 +104,7 @@ def _compiled() -> tuple[_Compiled, _Compiled, _Compiled]:
 
 
 _COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION = _compiled()
+COMPILED_READER = _COMPILED_BLOCK is not None
 
 
 def _tokens(text: str, pos: int) -> list[Token]:

@@ -107,7 +107,7 @@ def _blank(match: re.Match[str]) -> str:
 
 
 # Each operator, '[' and digit is at least one character: a line this short passes every limit.
-_SHORTEST_PROBLEM = min(MAX_LINE_OPERATORS, MAX_BRACKET_DEPTH, MAX_NUMBER_DIGITS)
+SHORTEST_PROBLEM = min(MAX_LINE_OPERATORS, MAX_BRACKET_DEPTH, MAX_NUMBER_DIGITS)
 
 
 def line_problem(text: str) -> Problem | None:
@@ -116,7 +116,7 @@ def line_problem(text: str) -> Problem | None:
     One linear pass each: the operator past MAX_LINE_OPERATORS, the '[' past MAX_BRACKET_DEPTH,
     a run of digits past MAX_NUMBER_DIGITS; strings and comments are left out.
     """
-    if len(text) <= _SHORTEST_PROBLEM:  # every limit needs more characters than that to be passed
+    if len(text) <= SHORTEST_PROBLEM:  # every limit needs more characters than that to be passed
         return None
     code = _NOT_CODE.sub(_blank, text) if ('"' in text or "(" in text or ";" in text) else text
     past = next(islice(_OPERATOR.finditer(code), MAX_LINE_OPERATORS, None), None)

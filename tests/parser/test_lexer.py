@@ -9,6 +9,7 @@ surrogates, newlines), read from a random start.
 from __future__ import annotations
 
 import os
+from pathlib import Path
 import random
 import subprocess
 import sys
@@ -197,3 +198,39 @@ def test_the_compiled_block_reader_builds_the_plain_line_blocks(line: str) -> No
     compiled = lexer.block(line, "f", 3, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
     assert compiled is not None, line
     assert repr(compiled) == repr(_fast_block(line, "f", 3)), line
+
+
+def test_no_keyword_line_reads_as_words() -> None:
+    """``parse_line`` lets the compiled reader try short lines first: it must give up on every line
+    that starts with a keyword (none is a letter and a function name, like XSIN)."""
+    for keyword in fastparse._KEYWORDS:
+        for line in (keyword, f"{keyword} [1]", f"{keyword} X1", f"{keyword.upper()}[#1] = 2", f"{keyword}1"):
+            assert lexer.block(line, "f", 1, INTEGER_DIGITS, MAX_NUMBER_DIGITS) is None, line
+
+
+PARSE_FILES = """
+import sys
+from pathlib import Path
+from edingcnc_lang.syntax.parser import StatementReader
+from edingcnc_lang.syntax.source import iter_file_lines
+for name in sorted(p for folder in sys.argv[1:] for p in Path(folder).rglob("*")
+                   if p.suffix.lower() in (".cnc", ".nc", ".ngc", ".tap")):
+    reader = StatementReader(iter_file_lines(name), str(name), tolerant=True)
+    print(name, repr(tuple(reader)), repr(reader.diagnostics), repr(reader.warnings))
+"""
+
+
+def test_both_cores_read_the_shipped_files_alike() -> None:
+    """Every statement of the examples, the packaged macros and the parser's test files, spans and
+    findings included, is the same on the compiled reader and on the pure-Python one."""
+    root = Path(__file__).resolve().parent.parent.parent
+    folders = [str(root / f) for f in ("examples", "stdlib", "tests/parser", "tests/lint/cases", "tests/corpus")]
+    env = {k: v for k, v in os.environ.items() if k != "ECNC_PURE_PYTHON"}
+
+    def read(pure: bool) -> str:
+        return subprocess.run([sys.executable, "-c", PARSE_FILES, *folders], capture_output=True, text=True,
+                              check=True, env={**env, "ECNC_PURE_PYTHON": "1"} if pure else env).stdout
+
+    compiled = read(False)
+    assert compiled.count("\n") > 50  # the files were really read
+    assert compiled == read(True)
