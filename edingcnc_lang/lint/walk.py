@@ -148,7 +148,8 @@ def reads(stmt: n.Stmt) -> list[n.Param]:
             if type(word.value) is not n.Number:  # most word values
                 found += params_in(word.value)
         for assign in stmt.assigns:
-            found += params_in(assign.target.index)
+            if type(assign.target.index) is not n.Number:  # #[#1 + 2] = ... reads #1
+                found += params_in(assign.target.index)
             found += params_in(assign.value)
         return found
     for expr in expressions(stmt):
