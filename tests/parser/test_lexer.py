@@ -196,6 +196,9 @@ def test_the_compiled_block_reader_builds_the_plain_line_blocks(line: str) -> No
     from edingcnc_lang.syntax.line_parser import _fast_block
 
     compiled = lexer.block(line, "f", 3, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    if "(" in line:  # a ( ) comment among the words: the compiled reader leaves it to _fast_block
+        assert compiled is None, line
+        return
     assert compiled is not None, line
     assert repr(compiled) == repr(_fast_block(line, "f", 3)), line
 
