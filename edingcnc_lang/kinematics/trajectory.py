@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import PLANES, Move
@@ -48,8 +49,9 @@ class Geometry:
         return sample_arc(self.start, self.end, self.center, self.normal, self.turns, speed, dt,
                           self.full_circle_epsilon)
 
-    def arc_frame(self) -> ArcFrame:
-        """The circle of an arc move (not for straight moves)."""
+    @cached_property
+    def frame(self) -> ArcFrame:
+        """The circle of an arc move (not for straight moves); the planner and the limits report both ask."""
         from edingcnc_lang.kinematics.sampling import arc_frame
 
         assert self.center is not None
@@ -66,7 +68,7 @@ class Geometry:
             return pts
         from edingcnc_lang.kinematics.sampling import arc_points
 
-        return arc_points(self.start, self.end, self.arc_frame(), s)
+        return arc_points(self.start, self.end, self.frame, s)
 
 
 def geometry_of(move: Move) -> Geometry:

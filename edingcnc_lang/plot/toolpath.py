@@ -88,7 +88,7 @@ class Toolpath:
         first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
         c1, c2 = geometry.center[first], geometry.center[second]
         radius = max(math.hypot(start[first] - c1, start[second] - c2), 1e-9)
-        swept = abs(geometry.arc_frame().sweep)
+        swept = abs(geometry.frame.sweep)
         chords = max(2, math.ceil(swept / arc_step))
         length = math.hypot(swept * radius, end[geometry.normal] - start[geometry.normal])
         if length <= 0.0:

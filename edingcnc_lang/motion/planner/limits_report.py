@@ -35,10 +35,9 @@ class LimitsReport:
         if not ends.shape[1]:
             return
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
-        for geometry in arcs.values():
-            extremes = _arc_extremes(geometry)
-            if len(extremes):
-                low, high = np.minimum(low, extremes.min(axis=0)), np.maximum(high, extremes.max(axis=0))
+        extremes = [point for geometry in arcs.values() for point in _arc_extremes(geometry)]
+        if extremes:
+            low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())
         if joints is None:  # the usual case: joints = position everywhere
             self._widen("joint", low.tolist(), high.tolist())
@@ -75,16 +74,15 @@ def _table(low: list[float], high: list[float], lower: list[float], upper: list[
     return table
 
 
-def _arc_extremes(geometry: Geometry) -> np.ndarray:
+def _arc_extremes(geometry: Geometry) -> list[list[float]]:
     """Points where an arc reaches its extremes in its plane (its ends are counted already)."""
-    import numpy as np
-
-    frame = geometry.arc_frame()
+    frame = geometry.frame
     radius = max(frame.r0, frame.r1)
     sweep = abs(frame.sweep)
     clockwise = frame.sweep < 0.0
-    found = arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise)
-    rows = np.tile(np.asarray(geometry.end, dtype=float), (len(found), 1))
-    for row, (p1, p2) in zip(rows, found):
+    rows = []
+    for p1, p2 in arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise):
+        row = list(geometry.end)
         row[frame.u], row[frame.v] = p1, p2
-    return rows.reshape(-1, 6)
+        rows.append(row)
+    return rows
