@@ -68,6 +68,29 @@ static int append_new(PyObject *list, PyObject *item)
     return failed;
 }
 
+/* The end of a ( ) comment that opens at s[i] and that the grammar drops, or -1 for anything else
+ * (no ')', or an operator message "(msg ...)"); plain_words.py's FAST_COMMENT, byte for byte. */
+static Py_ssize_t skip_comment(const char *s, Py_ssize_t len, Py_ssize_t i)
+{
+    Py_ssize_t j = i + 1;
+    while (j < len && (s[j] == ' ' || s[j] == '\t'))
+        j++;
+    if (j < len) {
+        unsigned char c = (unsigned char)s[j];
+        if (c < 0x20 || c > 0x7e)  /* a control or non-ASCII character: the parser decides */
+            return -1;
+        if (j + 2 < len && (s[j] | 0x20) == 'm' && (s[j + 1] | 0x20) == 's' && (s[j + 2] | 0x20) == 'g') {
+            unsigned char after = j + 3 < len ? (unsigned char)s[j + 3] : 0;
+            if (!((after >= 'A' && after <= 'Z') || (after >= 'a' && after <= 'z')
+                  || (after >= '0' && after <= '9') || after == '_'))
+                return -1;
+        }
+    }
+    for (j = i + 1; j < len && s[j] != ')' && s[j] != '\n'; j++)
+        ;
+    return j < len && s[j] == ')' ? j + 1 : -1;
+}
+
 /* One plain line's words: 1 if it is a straight move (or F/G/N only), 0 if anything else. */
 static int scan_line(const char *s, Py_ssize_t len, const double *base, double scale, double target[6],
                      int *motion, double *feed, int *moved)
@@ -82,6 +105,12 @@ static int scan_line(const char *s, Py_ssize_t len, const double *base, double s
         char *stop;
         if (c == ' ' || c == '\t') {
             i++;
+            continue;
+        }
+        if (c == '(') {
+            i = skip_comment(s, len, i);
+            if (i < 0)
+                return 0;
             continue;
         }
         if (c == ';')
@@ -464,11 +493,25 @@ static int is_digit(char c)
 }
 
 /* Whether a line matches line_parser.FAST_LINE: words (letter, number) only, then a ; comment. */
+/* Blanks and ( ) comments from s[i] on: the index after them, or -1 at a comment the parser must read. */
+static Py_ssize_t skip_gap(const char *s, Py_ssize_t len, Py_ssize_t i)
+{
+    for (;;) {
+        while (i < len && is_blank(s[i]))
+            i++;
+        if (i == len || s[i] != '(')
+            return i;
+        i = skip_comment(s, len, i);
+        if (i < 0)
+            return -1;
+    }
+}
+
 static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
 {
-    Py_ssize_t i = 0, words = 0, run;
-    while (i < len && is_blank(s[i]))
-        i++;
+    Py_ssize_t i = skip_gap(s, len, 0), words = 0, run;
+    if (i < 0)
+        return 0;
     for (;;) {
         if (i == len || s[i] == ';')
             return words > 0;
@@ -499,8 +542,9 @@ static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
             return 0;
         }
         words++;
-        while (i < len && is_blank(s[i]))
-            i++;
+        i = skip_gap(s, len, i);
+        if (i < 0)
+            return 0;
     }
 }
 

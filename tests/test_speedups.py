@@ -28,9 +28,13 @@ compiled = pytest.importorskip("edingcnc_lang._speedups", reason="the compiled c
 numbers = st.one_of(st.integers(-999, 999).map(str), st.floats(-1000, 1000).map(lambda v: f"{v:.4f}"),
                     st.sampled_from([".5", "-.25", "+3", "7.", "0", "00012.500", "1" * 40, "-0"]))
 words = st.tuples(st.sampled_from("GXYZABCFNMSgxyzf"), st.sampled_from(["", " ", "\t"]), numbers)
-lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{a}{gap}{v}" for a, gap, v in ws) + tail,
-                  st.lists(words, max_size=6), st.sampled_from(["", " ", "\t"]),
-                  st.sampled_from(["", " ; cut X5", ";", " (note)", "#1=2", "\r"]))
+# ( ) comments the plain path skips, and the ones it must leave to the parser (messages, unclosed,
+# a control or non-ASCII character after the '(')
+comments = st.sampled_from(["", "", "", "(note)", " (a;b) ", "(T1 D=6)", "(msg)", "( MSG, hi)", "(msg1)", "(msg_x)",
+                            "(\tmsg x)", "(note", "(é)", "(x é)", "(\x0bmsg)", "( \u00a0msg)", "(()", "(msg"])
+lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{c}{a}{gap}{v}" for c, (a, gap, v) in ws) + tail,
+                  st.lists(st.tuples(comments, words), max_size=6), st.sampled_from(["", " ", "\t", "(c) "]),
+                  st.sampled_from(["", " ; cut X5", ";", " (note)", "(msg hi)", " (unclosed", "#1=2", "\r"]))
 
 
 @settings(max_examples=300, deadline=None)

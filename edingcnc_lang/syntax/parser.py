@@ -21,7 +21,7 @@ from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
 from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
 from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
-from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, is_fast_line, plain_block, plain_words  # re-exported: the public API
+from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.blocks import Close, Open
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
@@ -35,7 +35,7 @@ UNITS = frozenset({"mm", "inch"})
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 CHUNK_LINES = 8192
-_NON_PLAIN = re.compile(rf"^(?![ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$).*$", re.MULTILINE)
+_NON_PLAIN = re.compile(rf"^(?!{PLAIN_LINE}$).*$", re.MULTILINE)
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
