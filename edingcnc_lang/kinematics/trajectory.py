@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import cached_property
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import PLANES, Move
@@ -49,13 +48,18 @@ class Geometry:
         return sample_arc(self.start, self.end, self.center, self.normal, self.turns, speed, dt,
                           self.full_circle_epsilon)
 
-    @cached_property
+    @property
     def frame(self) -> ArcFrame:
-        """The circle of an arc move (not for straight moves); the planner and the limits report both ask."""
-        from edingcnc_lang.kinematics.sampling import arc_frame
+        """The circle of an arc move (not for straight moves), computed once: the planner and the limits
+        report both ask (kept by hand: functools.cached_property takes a lock on every read)."""
+        frame: ArcFrame | None = self.__dict__.get("_frame")
+        if frame is None:
+            from edingcnc_lang.kinematics.sampling import arc_frame
 
-        assert self.center is not None
-        return arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
+            assert self.center is not None
+            frame = arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
+            object.__setattr__(self, "_frame", frame)
+        return frame
 
     def points_at(self, s: np.ndarray) -> np.ndarray:
         """Poses at fractions ``s`` (0..1) of the path: for arcs, of the sweep; s = 1 is the end exactly."""

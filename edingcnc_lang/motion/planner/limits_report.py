@@ -35,7 +35,10 @@ class LimitsReport:
         if not ends.shape[1]:
             return
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
-        extremes = [point for geometry in arcs.values() for point in _arc_extremes(geometry)]
+        # an arc whose whole circle lies within what the end points reach cannot reach further
+        inside_low, inside_high = np.minimum(low, self.axis_low).tolist(), np.maximum(high, self.axis_high).tolist()
+        extremes = [point for geometry in arcs.values() if not _circle_within(geometry, inside_low, inside_high)
+                    for point in _arc_extremes(geometry)]
         if extremes:
             low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())
@@ -72,6 +75,13 @@ def _table(low: list[float], high: list[float], lower: list[float], upper: list[
         table[axis] = {"min": lo if seen else None, "max": hi if seen else None, "lower": limit_lo, "upper": limit_hi,
                        "margin": min(lo - limit_lo, limit_hi - hi) if seen else None}
     return table
+
+
+def _circle_within(geometry: Geometry, low: list[float], high: list[float]) -> bool:
+    frame = geometry.frame
+    radius = max(frame.r0, frame.r1)
+    (cu, cv), u, v = frame.center, frame.u, frame.v
+    return low[u] <= cu - radius and cu + radius <= high[u] and low[v] <= cv - radius and cv + radius <= high[v]
 
 
 def _arc_extremes(geometry: Geometry) -> list[list[float]]:
