@@ -44,11 +44,11 @@ class ColumnFiles:
             self.remove()
             raise
 
-    def append(self, rows: np.ndarray) -> None:
-        """Rows of every column ((n, len(names)))."""
-        for handle, column in zip(self._files, rows.T):
+    def append(self, columns: Sequence[np.ndarray]) -> None:
+        """The next rows of every column, one array (of the same length) per name."""
+        for handle, column in zip(self._files, columns, strict=True):
             handle.write(np.ascontiguousarray(column, dtype=DTYPE).data)
-        self.rows += len(rows)
+        self.rows += len(columns[0])
 
     def write_npz(self, out: IO[bytes]) -> None:
         """The zip of every column into ``out``; each column's file is removed once it is copied."""

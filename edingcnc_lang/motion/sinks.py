@@ -226,16 +226,19 @@ class SamplesWriter:
 
         spindle = _spindle_column(move, samples.pos[:, 0])
         assert samples.speed is not None and samples.accel is not None  # the planner's time-true samples
-        rows = np.column_stack([samples.t, samples.pos, samples.joints, spindle, samples.speed, samples.accel])
-        rows = rows[samples.t > self._last_time]
-        if not len(rows):
+        # as columns (views), never one table of a long move's rows: that would be 128 bytes a sample more
+        columns = [samples.t, *samples.pos.T, *samples.joints.T, spindle, samples.speed, samples.accel]
+        keep = samples.t > self._last_time
+        if not keep.all():
+            columns = [column[keep] for column in columns]
+        if not len(columns[0]):
             return
-        self._last_time = float(rows[-1, 0])
+        self._last_time = float(columns[0][-1])
         if self._columns is not None:
-            self._columns.append(rows)
+            self._columns.append(columns)
         else:  # a slice at a time: a long move's rows as text would be hundreds of megabytes at once
-            for first in range(0, len(rows), CSV_ROWS_AT_ONCE):
-                chunk = rows[first:first + CSV_ROWS_AT_ONCE].tolist()
+            for first in range(0, len(columns[0]), CSV_ROWS_AT_ONCE):
+                chunk = np.column_stack([column[first:first + CSV_ROWS_AT_ONCE] for column in columns]).tolist()
                 self._file.write("".join(",".join(map(repr, row)) + "\n" for row in chunk))
 
     def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
