@@ -214,7 +214,7 @@ class SamplesWriter:
         from edingcnc_lang.motion.samples_file import ColumnFiles
 
         try:
-            self._columns = ColumnFiles(SAMPLES_COLUMNS, self.path)
+            self._columns = ColumnFiles(SAMPLES_COLUMNS, Path(os.path.realpath(self.path)))
         except BaseException:
             self._file.close()
             raise
@@ -258,15 +258,20 @@ class SamplesWriter:
             self._file.close()
 
     def _write_npz(self, columns: ColumnFiles) -> None:
-        """Assemble the .npz beside the old file and swap it in; in place (the old file cut first) only when
-        a new file would lose a hard link or the owner, or the folder takes no new file."""
+        """Assemble the .npz beside the old file (a symbolic link's target) and swap it in; in place (the
+        old file cut first) only when a new file would lose a hard link or the owner, when the folder
+        takes no new file or when the output is no plain file (a FIFO)."""
+        import stat
+
         from edingcnc_lang.config.ini import write_atomic
 
         info = os.fstat(self._file.fileno())
-        if columns.beside and info.st_nlink == 1 and write_atomic(self.path, columns.write_npz, info):
+        plain = stat.S_ISREG(info.st_mode) and info.st_nlink == 1
+        if columns.beside and plain and write_atomic(Path(os.path.realpath(self.path)), columns.write_npz, info):
             return
-        self._file.seek(0)
-        self._file.truncate()
+        if self._file.seekable():
+            self._file.seek(0)
+            self._file.truncate()
         columns.write_npz(self._file)
 
 

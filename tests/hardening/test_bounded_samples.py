@@ -3,6 +3,8 @@ the file is assembled at the end, swapped in whole; ``plot --joints`` reads it b
 measured with tracemalloc (numpy reports its arrays to it), never timed."""
 from __future__ import annotations
 
+import os
+import threading
 import tracemalloc
 from collections.abc import Iterator
 from pathlib import Path
@@ -159,6 +161,30 @@ def test_a_new_file_replaces_the_old_one_with_its_mode(tmp_path: Path) -> None:
     _write(out, _moves(2, 50))
     assert out.stat().st_ino != inode and out.stat().st_mode & 0o777 == 0o640
     _same_npz(out, _expected(tmp_path, 2, 50))
+
+
+def test_a_symbolic_link_keeps_pointing_at_the_new_file(tmp_path: Path) -> None:
+    (tmp_path / "real").mkdir()
+    target = tmp_path / "real" / "data.npz"
+    target.write_bytes(b"old")
+    link = tmp_path / "s.npz"
+    link.symlink_to(target)
+    _write(link, _moves(2, 50))
+    assert link.is_symlink() and link.resolve() == target
+    _same_npz(target, _expected(tmp_path, 2, 50))
+    assert sorted(p.name for p in (tmp_path / "real").iterdir()) == ["data.npz"]
+
+
+def test_a_fifo_gets_the_file_as_a_stream(tmp_path: Path) -> None:
+    fifo = tmp_path / "s.npz"
+    os.mkfifo(fifo)
+    received: list[bytes] = []
+    reader = threading.Thread(target=lambda: received.append(fifo.read_bytes()))
+    reader.start()
+    _write(fifo, _moves(2, 50))
+    reader.join(10)
+    (tmp_path / "got.npz").write_bytes(received[0])
+    _same_npz(tmp_path / "got.npz", _expected(tmp_path, 2, 50))
 
 
 def test_the_samples_are_read_back_thinned_in_bounded_memory(tmp_path: Path) -> None:
