@@ -262,6 +262,12 @@ def _update_variables(text: str, values: Mapping[int, float]) -> str:
     return "".join(body + end for body, end in lines)
 
 
+def owned_by_us(info: os.stat_result) -> bool:
+    """Whether a file we write anew gets the owner and group of the file ``info`` describes (always
+    without owners, as on Windows)."""
+    return (info.st_uid, info.st_gid) == (os.getuid(), os.getgid()) if hasattr(os, "getuid") else True
+
+
 def write_atomic(path: Path, write: Callable[[IO[bytes]], object], info: os.stat_result) -> bool:
     """Write (``write`` fills the file) beside the target and rename over it, with the mode and owner
     of ``info`` (the old file's), so a kill leaves the old file or the new one.  Also used for the
@@ -279,7 +285,7 @@ def write_atomic(path: Path, write: Callable[[IO[bytes]], object], info: os.stat
             handle.flush()
             os.fsync(handle.fileno())
         os.chmod(tmp, stat.S_IMODE(info.st_mode))
-        if (info.st_uid, info.st_gid) != (os.getuid(), os.getgid()) if hasattr(os, "getuid") else False:
+        if not owned_by_us(info):
             try:
                 os.chown(tmp, info.st_uid, info.st_gid)
             except OSError:  # someone else's file we may write: keep it theirs by writing in place

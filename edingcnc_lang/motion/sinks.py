@@ -259,15 +259,16 @@ class SamplesWriter:
 
     def _write_npz(self, columns: ColumnFiles) -> None:
         """Assemble the .npz beside the old file (a symbolic link's target) and swap it in; in place (the
-        old file cut first) only when a new file would lose a hard link or the owner, when the folder
-        takes no new file or when the output is no plain file (a FIFO)."""
+        old file cut first) only when a new file would lose a hard link or the owner (decided first:
+        the columns are used up as they are assembled), when the folder takes no new file or when
+        the output is no plain file (a FIFO)."""
         import stat
 
-        from edingcnc_lang.config.ini import write_atomic
+        from edingcnc_lang.config.ini import owned_by_us, write_atomic
 
         info = os.fstat(self._file.fileno())
-        plain = stat.S_ISREG(info.st_mode) and info.st_nlink == 1
-        if columns.beside and plain and write_atomic(Path(os.path.realpath(self.path)), columns.write_npz, info):
+        if columns.beside and owned_by_us(info) and stat.S_ISREG(info.st_mode) and info.st_nlink == 1:
+            write_atomic(Path(os.path.realpath(self.path)), columns.write_npz, info)  # our file: never False
             return
         if self._file.seekable():
             self._file.seek(0)

@@ -153,6 +153,16 @@ def test_a_folder_that_takes_no_new_file_gets_the_samples_in_place(tmp_path: Pat
     _same_npz(out, _expected(tmp_path, 2, 50))
 
 
+def test_another_owners_file_is_written_in_place(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    out = tmp_path / "s.npz"
+    out.write_bytes(b"old")
+    inode = out.stat().st_ino
+    monkeypatch.setattr(os, "getuid", lambda: out.stat().st_uid + 1)  # as if another user ran it
+    _write(out, _moves(2, 50))
+    assert out.stat().st_ino == inode
+    _same_npz(out, _expected(tmp_path, 2, 50))
+
+
 def test_a_new_file_replaces_the_old_one_with_its_mode(tmp_path: Path) -> None:
     out = tmp_path / "s.npz"
     out.write_bytes(b"old")
