@@ -61,7 +61,7 @@ class ColumnFiles:
                 column = self.folder / f"{index}.bin"
                 with archive.open(f"{name}.npy", "w", force_zip64=True) as member, open(column, "rb") as rows:
                     np.lib.format.write_array_header_1_0(member, header)
-                    shutil.copyfileobj(rows, member, COPY_BYTES)
+                    _copy(rows, member, self.rows * DTYPE.itemsize)
                 column.unlink()
 
     def remove(self) -> None:
@@ -70,6 +70,17 @@ class ColumnFiles:
             with contextlib.suppress(OSError):
                 handle.close()
         shutil.rmtree(self.folder, ignore_errors=True)
+
+
+def _copy(source: IO[bytes], target: IO[bytes], count: int) -> None:
+    """The first ``count`` bytes of ``source`` (a column file may hold part of a row that failed, a full
+    disk, beyond the rows every column has), a megabyte at a time."""
+    while count > 0:
+        chunk = source.read(min(COPY_BYTES, count))
+        if not chunk:
+            raise OSError(f"a temporary samples column ended {count} bytes early")
+        target.write(chunk)
+        count -= len(chunk)
 
 
 def read_thinned(path: str | os.PathLike[str], max_rows: int) -> tuple[dict[str, np.ndarray], dict[str, float], int]:

@@ -8,6 +8,7 @@ import threading
 import tracemalloc
 from collections.abc import Iterator
 from pathlib import Path
+from typing import IO
 
 import numpy as np
 import pytest
@@ -90,13 +91,13 @@ def test_an_interrupted_assembly_leaves_the_old_file_and_no_temporaries(tmp_path
                                                                        monkeypatch: pytest.MonkeyPatch) -> None:
     out = tmp_path / "s.npz"
     out.write_bytes(b"the user's old file")
-    copy = samples_file.shutil.copyfileobj
+    copy = samples_file._copy
 
-    def interrupted(source: object, target: object, length: int = 0) -> None:
-        copy(source, target, length)  # type: ignore[arg-type]
+    def interrupted(source: IO[bytes], target: IO[bytes], count: int) -> None:
+        copy(source, target, count)
         raise KeyboardInterrupt  # Ctrl-C after the first column went into the new file
 
-    monkeypatch.setattr(samples_file.shutil, "copyfileobj", interrupted)
+    monkeypatch.setattr(samples_file, "_copy", interrupted)
     with pytest.raises(KeyboardInterrupt):
         _write(out, _moves(3, 100))
     assert out.read_bytes() == b"the user's old file"
@@ -133,6 +134,25 @@ def test_ctrl_c_in_a_run_writes_its_samples_so_far_and_no_temporaries(tmp_path: 
     with np.load(out) as data:
         assert data["x"][-1] == 10.0 and data["y"][-1] == 10.0 and data["z"][-1] == 0.0
     assert [p.name for p in tmp_path.iterdir()] == ["s.npz"]
+
+
+def test_a_full_disk_keeps_the_rows_every_column_has(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The disk fills up halfway through a move's columns: the file holds the moves before it, whole."""
+    out = tmp_path / "s.npz"
+    append = samples_file.ColumnFiles.append
+
+    def full_on_the_third(self: samples_file.ColumnFiles, columns: list[np.ndarray]) -> None:
+        if self.rows == 200:
+            for handle, column in zip(self._files[:5], columns):
+                handle.write(column.tobytes())
+            raise OSError(28, "No space left on device")
+        append(self, columns)
+
+    monkeypatch.setattr(samples_file.ColumnFiles, "append", full_on_the_third)
+    with pytest.raises(OSError, match="No space"):
+        _write(out, _moves(4, 100))
+    _same_npz(out, _expected(tmp_path, 2, 100))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["expected.npz", "s.npz"]
 
 
 def test_a_folder_that_takes_no_new_file_gets_the_samples_in_place(tmp_path: Path,
