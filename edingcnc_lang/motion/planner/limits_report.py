@@ -4,6 +4,8 @@ Axes are machine coordinates, measured against ``[KINEMATICS]`` limits on a mach
 kinematics other than trivial and against the joints' limits otherwise; joints against
 ``[JOINT_n]``.  Arcs count with their extremes, and with kinematics on the joints count at every
 sample the motion stage evaluated, so the minimum and maximum are those of the whole path.
+Only a move's extremes matter, so the planner keeps those of its samples (``joint_extremes``)
+rather than the samples, and a window of long moves holds two rows per move.
 """
 from __future__ import annotations
 
@@ -28,8 +30,9 @@ class LimitsReport:
         self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
 
     def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any] | None) -> None:
-        """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints
-        or None (joints = position); ``joints`` None: the joints are the position for every move."""
+        """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints (or
+        just their ``joint_extremes``) or None (joints = position); ``joints`` None: the joints are the
+        position for every move."""
         import numpy as np
 
         if not ends.shape[1]:
@@ -49,6 +52,14 @@ class LimitsReport:
         joint_points = np.vstack([*(np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None),
                                   starts[:, :1].T, ends[:, identity].T])
         self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
+
+    @staticmethod
+    def joint_extremes(joints: np.ndarray) -> np.ndarray:
+        """What ``add`` needs of a move's sampled joints ((N, 6)): their lowest and highest value per joint,
+        (2, 6); the report comes out the same as from every sample."""
+        import numpy as np
+
+        return np.vstack([joints.min(axis=0), joints.max(axis=0)])
 
     def _widen(self, which: str, low: list[float], high: list[float]) -> None:
         setattr(self, f"{which}_low", [min(a, b) for a, b in zip(getattr(self, f"{which}_low"), low)])

@@ -97,7 +97,9 @@ class Planner:
         self._cap.add(cap)
         self._accel_cap.add(accel_cap)
         self._state.add(self._state_id(limit, limit, self._feed_factor(move.sync)))
-        self._joints.append(None if samples is None else samples.joints)
+        # only the extremes of a move's samples count (for the limits report): a window of long moves holds
+        # two rows per move, never their millions of samples
+        self._joints.append(None if samples is None else self.limits.joint_extremes(samples.joints))
         self._sampled += samples is not None
         self._queue.append(("move", move, joints))
         self._after_add()
@@ -171,7 +173,8 @@ class Planner:
         self._cap = Runs()              # the speed the kinematics' joints allow
         self._accel_cap = Runs()        # the path acceleration they allow
         self._state = Runs()            # index into self._states
-        self._joints: list[Any] = []    # the joints sampled along the move, None where they are the position
+        self._joints: list[Any] = []    # the extremes of the joints sampled along the move ((2, 6)), None where
+        #                                 they are the position
         self._sampled = 0               # how many of them are not None
         self._arcs: dict[int, Geometry] = {}
         self._queue: deque[tuple[Any, ...]] = deque()
