@@ -6,7 +6,7 @@ prints medians of CPU and wall time, ratios and peak memory (max RSS of the chil
 table.  rs274 is optional: without it the reference column stays empty.
 
     python benchmarks/bench_run.py               # all benchmarks
-    python benchmarks/bench_run.py --only parse  # one of: parse run1m macro startup comp
+    python benchmarks/bench_run.py --only parse  # one of: parse run run1m macro startup comp cam
 """
 from __future__ import annotations
 
@@ -44,6 +44,31 @@ def write_comp_job(path: Path, lines: int) -> None:
             angle, grow = i * 0.01, 1 + i * 1e-5
             out.write(f"G1 X{100 * math.cos(angle) * grow:.3f} Y{100 * math.sin(angle) * grow:.3f}\n")
         out.write("G40\nG1 X0 Y0\nM2\n")
+
+
+def write_cam_job(path: Path, lines: int, ngc: bool = False) -> None:
+    """A CAM finishing pass as post-processors write it: N words, CRLF (LF for rs274), a tool change,
+    G1 XY moves with an occasional F, a tenth I/J arcs, now and then a lift (seeded, deterministic)."""
+    rng = random.Random(9)
+    out = ["G21 G17 G90 G94 G40 G49 G80", "T1 M6", "S12000 M3", "G0 X0 Y0 Z5", "G1 Z-1 F300"]
+    number, x, y = 10, 0.0, 0.0
+    while len(out) < lines:
+        number += 2
+        draw = rng.random()
+        if draw < 0.1:
+            nx, ny = x + rng.uniform(-5, 5), y + rng.uniform(-5, 5)
+            out.append(f"N{number} G{rng.choice([2, 3])} X{nx:.4f} Y{ny:.4f} I{(nx - x) / 2:.4f} J{(ny - y) / 2:.4f}")
+            x, y = nx, ny
+        elif draw < 0.12:
+            out += [f"N{number} G0 Z5.", f"N{number + 1} X{x:.4f} Y{y:.4f}", f"N{number + 2} G1 Z-1. F300"]
+            number += 2
+        else:
+            x, y = min(300.0, max(0.0, x + rng.uniform(-3, 3))), min(200.0, max(0.0, y + rng.uniform(-3, 3)))
+            feed = f" F{rng.choice([800, 1200, 1500])}" if rng.random() < 0.05 else ""
+            out.append(f"N{number} G1 X{x:.4f} Y{y:.4f}{feed}")
+    out += ["G0 Z5", "M5", "M30"]
+    with open(path, "w", newline="") as handle:
+        handle.write(("%\n" + "\n".join(out) + "\n%\n") if ngc else "\r\n".join(out) + "\r\n")
 
 
 def write_macro_loop(path: Path, iterations: int, ngc: bool) -> None:
@@ -148,6 +173,16 @@ def bench_comp(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)
 
 
+def bench_cam(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job, ngc = tmp / "cam_200k.nc", tmp / "cam_200k.ngc"
+    write_cam_job(job, 200_000)
+    write_cam_job(ngc, 200_000, ngc=True)
+    rs274 = shutil.which("rs274")
+    return _versus("run a 200k-line CAM job, a tenth arcs (--trace CSV) vs rs274 -g",
+                   ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")],
+                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
+
+
 def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     job = tmp / "g1_1m.nc"
     write_g1_job(job, 1_000_000)
@@ -184,7 +219,7 @@ def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
 
 BENCHES: dict[str, Callable[[Path, int], list[tuple[str, str, str, str]]]] = {
     "parse": bench_parse, "run": bench_run, "run1m": bench_run1m, "macro": bench_macro, "startup": bench_startup,
-    "comp": bench_comp,
+    "comp": bench_comp, "cam": bench_cam,
 }
 
 

@@ -1,7 +1,7 @@
 /* The optional compiled core: the two hot loops of a big job, byte for byte as the Python reference.
  *
- * plain_moves: interpreter/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
- * trace_rows:  outputs.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
+ * plain_moves: machine/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
+ * trace_rows:  motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  *
  * Built by setuptools as an optional extension against the stable ABI (abi3, Python 3.10+);
  * without it the Python functions run (edingcnc_lang/speedups.py chooses).  Compiled with
@@ -68,6 +68,29 @@ static int append_new(PyObject *list, PyObject *item)
     return failed;
 }
 
+/* The end of a ( ) comment that opens at s[i] and that the grammar drops, or -1 for anything else
+ * (no ')', or an operator message "(msg ...)"); plain_words.py's FAST_COMMENT, byte for byte. */
+static Py_ssize_t skip_comment(const char *s, Py_ssize_t len, Py_ssize_t i)
+{
+    Py_ssize_t j = i + 1;
+    while (j < len && (s[j] == ' ' || s[j] == '\t'))
+        j++;
+    if (j < len) {
+        unsigned char c = (unsigned char)s[j];
+        if (c < 0x20 || c > 0x7e)  /* a control or non-ASCII character: the parser decides */
+            return -1;
+        if (j + 2 < len && (s[j] | 0x20) == 'm' && (s[j + 1] | 0x20) == 's' && (s[j + 2] | 0x20) == 'g') {
+            unsigned char after = j + 3 < len ? (unsigned char)s[j + 3] : 0;
+            if (!((after >= 'A' && after <= 'Z') || (after >= 'a' && after <= 'z')
+                  || (after >= '0' && after <= '9') || after == '_'))
+                return -1;
+        }
+    }
+    for (j = i + 1; j < len && s[j] != ')' && s[j] != '\n'; j++)
+        ;
+    return j < len && s[j] == ')' ? j + 1 : -1;
+}
+
 /* One plain line's words: 1 if it is a straight move (or F/G/N only), 0 if anything else. */
 static int scan_line(const char *s, Py_ssize_t len, const double *base, double scale, double target[6],
                      int *motion, double *feed, int *moved)
@@ -82,6 +105,12 @@ static int scan_line(const char *s, Py_ssize_t len, const double *base, double s
         char *stop;
         if (c == ' ' || c == '\t') {
             i++;
+            continue;
+        }
+        if (c == '(') {
+            i = skip_comment(s, len, i);
+            if (i < 0)
+                return 0;
             continue;
         }
         if (c == ';')
@@ -255,55 +284,85 @@ static int text_add(Text *text, const char *s, size_t n)
     return 0;
 }
 
-static const double POWERS[] = {1.0, 10.0, 100.0, 1000.0, 10000.0, 100000.0, 1000000.0};
+#ifdef __SIZEOF_INT128__
+typedef unsigned __int128 Wide;
 
-/* repr() of a double with at most six decimals, without the general shortest-digits search.
+/* repr() of a double in fixed notation (0, and 1e-4 <= |v| < 2^49), without Python's general routine.
  *
- * If v == k / 10^d for the smallest such d (k and 10^d exact doubles; the division rounds
- * correctly, as reading the text back does), the text of k / 10^d reads back as v, and no text
- * with fewer decimals does.  For |v| < 1e9 and d <= 6, 10^-d is wider than the spacing of the
- * doubles near v, so that text is the only one with d decimals: it is repr(v).  Returns its
- * length, or -1 when v is outside that case (repr then asks Python's own routine).
+ * |v| = f / 2^(s-2) exactly (f: the 53-bit mantissa), and the texts that read back as v are the
+ * decimals strictly between the midpoints to its neighbours, (4f - 2) / 2^s and (4f + 2) / 2^s (the
+ * lower one is (4f - 1) / 2^s when f is a power of two).  Scaled by 10^k and 2^s these are integers
+ * of at most 125 bits, so the search is exact: the first k (number of decimals) for which an integer
+ * lies inside gives the shortest text, and the inside integer nearest to v * 10^k is the one repr()
+ * chooses (of two equally near, the even one).  In this range no midpoint can be that integer: it
+ * would need at least s - 1 decimals, more than the 17 digits the shortest text has at most.
+ * Returns the text's length, or -1 out of range (the caller then asks Python's routine).
  */
-static int short_repr(double v, char *out)
+static int fixed_repr(double v, char *out)
 {
     double magnitude = v < 0 ? -v : v;
-    int d, n = 0;
-    if (!(magnitude < 1e9) || (magnitude < 1e-4 && v != 0.0))
-        return -1;
+    int n = 0, exponent, shift, k;
+    Wide f, scaled, low, high, one, half;
     if (v == 0.0) {
         if (1.0 / v < 0)
             out[n++] = '-';
         memcpy(out + n, "0.0", 3);
         return n + 3;
     }
-    for (d = 0; d <= 6; d++) {
-        long long k = llround(v * POWERS[d]);
+    if (!(magnitude >= 1e-4 && magnitude < 562949953421312.0))
+        return -1;
+    f = (Wide)(unsigned long long)ldexp(frexp(magnitude, &exponent), 53);
+    shift = 53 - exponent + 2;  /* 6 ... 68 */
+    one = (Wide)1 << shift;
+    half = one >> 1;
+    scaled = f << 2;
+    high = scaled + 2;
+    low = f == ((Wide)1 << 52) ? scaled - 1 : scaled - 2;
+    for (k = 0; k <= 21; k++, scaled *= 10, low *= 10, high *= 10) {
+        Wide candidate = (scaled + half) >> shift, at = candidate << shift;
+        unsigned long long digits_of;
         char digits[24];
         int width = 0, j;
-        if ((double)k / POWERS[d] != v)
-            continue;
-        if (k < 0) {
-            out[n++] = '-';
-            k = -k;
+        if ((scaled & (one - 1)) == half && (candidate & 1)) {  /* a tie: to the even one, as repr() does */
+            at -= one;
+            candidate -= 1;
         }
-        do {  /* the digits of k, last first */
-            digits[width++] = (char)('0' + k % 10);
-            k /= 10;
-        } while (k > 0);
-        while (width <= d)  /* at least one digit before the point */
+        if (at <= low) {  /* below a power of two the interval is lopsided: the next integer up may be in */
+            at += one;
+            candidate += 1;
+        }
+        if (at <= low || at >= high)
+            continue;
+        if (candidate >> 63)
+            return -1;
+        digits_of = (unsigned long long)candidate;
+        if (v < 0)
+            out[n++] = '-';
+        do {  /* the digits, last first */
+            digits[width++] = (char)('0' + digits_of % 10);
+            digits_of /= 10;
+        } while (digits_of > 0);
+        while (width <= k)  /* at least one digit before the point */
             digits[width++] = '0';
-        for (j = width - 1; j >= d; j--)
+        for (j = width - 1; j >= k; j--)
             out[n++] = digits[j];
         out[n++] = '.';
-        if (d == 0)
+        if (k == 0)
             out[n++] = '0';
-        for (j = d - 1; j >= 0; j--)
+        for (j = k - 1; j >= 0; j--)
             out[n++] = digits[j];
         return n;
     }
     return -1;
 }
+#else
+static int fixed_repr(double v, char *out)  /* no 128-bit integers (MSVC): Python's routine for all */
+{
+    (void)v;
+    (void)out;
+    return -1;
+}
+#endif
 
 /* Add a str() or repr() result to the text and release it (NULL: the call that made it failed). */
 static int text_shown(Text *text, PyObject *shown)
@@ -326,7 +385,7 @@ static int text_repr(Text *text, PyObject *value)
     if (PyFloat_CheckExact(value)) {
         char quick[64];
         double v = PyFloat_AsDouble(value);
-        int n = short_repr(v, quick);
+        int n = fixed_repr(v, quick);
         char *digits;
         if (n >= 0)
             return text_add(text, quick, (size_t)n);
@@ -340,8 +399,24 @@ static int text_repr(Text *text, PyObject *value)
     return text_shown(text, PyObject_Repr(value));
 }
 
+/* str() of a value: the digits of an int that fits a long long written here, anything else by str(). */
 static int text_str(Text *text, PyObject *value)
 {
+    if (PyLong_CheckExact(value)) {
+        int overflow;
+        long long number = PyLong_AsLongLongAndOverflow(value, &overflow);
+        if (!overflow && number >= 0) {
+            char digits[24];
+            int width = sizeof digits;
+            do {
+                digits[--width] = (char)('0' + number % 10);
+                number /= 10;
+            } while (number > 0);
+            return text_add(text, digits + width, sizeof digits - (size_t)width);
+        }
+        if (PyErr_Occurred())
+            return -1;
+    }
     return text_shown(text, PyObject_Str(value));
 }
 
@@ -418,11 +493,25 @@ static int is_digit(char c)
 }
 
 /* Whether a line matches line_parser.FAST_LINE: words (letter, number) only, then a ; comment. */
+/* Blanks and ( ) comments from s[i] on: the index after them, or -1 at a comment the parser must read. */
+static Py_ssize_t skip_gap(const char *s, Py_ssize_t len, Py_ssize_t i)
+{
+    for (;;) {
+        while (i < len && is_blank(s[i]))
+            i++;
+        if (i == len || s[i] != '(')
+            return i;
+        i = skip_comment(s, len, i);
+        if (i < 0)
+            return -1;
+    }
+}
+
 static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
 {
-    Py_ssize_t i = 0, words = 0, run;
-    while (i < len && is_blank(s[i]))
-        i++;
+    Py_ssize_t i = skip_gap(s, len, 0), words = 0, run;
+    if (i < 0)
+        return 0;
     for (;;) {
         if (i == len || s[i] == ';')
             return words > 0;
@@ -453,8 +542,9 @@ static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
             return 0;
         }
         words++;
-        while (i < len && is_blank(s[i]))
-            i++;
+        i = skip_gap(s, len, i);
+        if (i < 0)
+            return 0;
     }
 }
 

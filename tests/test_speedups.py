@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import os
+import random
 import subprocess
 import sys
 from pathlib import Path
@@ -27,9 +28,13 @@ compiled = pytest.importorskip("edingcnc_lang._speedups", reason="the compiled c
 numbers = st.one_of(st.integers(-999, 999).map(str), st.floats(-1000, 1000).map(lambda v: f"{v:.4f}"),
                     st.sampled_from([".5", "-.25", "+3", "7.", "0", "00012.500", "1" * 40, "-0"]))
 words = st.tuples(st.sampled_from("GXYZABCFNMSgxyzf"), st.sampled_from(["", " ", "\t"]), numbers)
-lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{a}{gap}{v}" for a, gap, v in ws) + tail,
-                  st.lists(words, max_size=6), st.sampled_from(["", " ", "\t"]),
-                  st.sampled_from(["", " ; cut X5", ";", " (note)", "#1=2", "\r"]))
+# ( ) comments the plain path skips, and the ones it must leave to the parser (messages, unclosed,
+# a control or non-ASCII character after the '(')
+comments = st.sampled_from(["", "", "", "(note)", " (a;b) ", "(T1 D=6)", "(msg)", "( MSG, hi)", "(msg1)", "(msg_x)",
+                            "(\tmsg x)", "(note", "(é)", "(x é)", "(\x0bmsg)", "( \u00a0msg)", "(()", "(msg"])
+lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{c}{a}{gap}{v}" for c, (a, gap, v) in ws) + tail,
+                  st.lists(st.tuples(comments, words), max_size=6), st.sampled_from(["", " ", "\t", "(c) "]),
+                  st.sampled_from(["", " ; cut X5", ";", " (note)", "(msg hi)", " (unclosed", "#1=2", "\r"]))
 
 
 @settings(max_examples=300, deadline=None)
@@ -64,6 +69,29 @@ def test_trace_rows_are_the_same_bytes() -> None:
 def test_any_double_is_written_as_repr_writes_it(rows: list[tuple[float, ...]]) -> None:
     ends, times = [row[:6] for row in rows], [0.0, *(row[6] for row in rows)]
     args = (list(range(len(rows))), ["linear"] * len(rows), ends, "job.nc", times)
+    assert compiled.trace_rows(*args) == trace_rows(*args)
+
+
+def _doubles_near_decimals(count: int) -> list[float]:
+    """Doubles of the kinds a trace holds, and their hard neighbours: short decimals, the next double
+    either side of one, long sums, dyadic fractions, powers of two, the edges of the fixed notation."""
+    rng = random.Random(22)
+    values = [1e-4, math.nextafter(1e-4, 0), 2.0 ** 49, math.nextafter(2.0 ** 49, 0), 1e16, 0.1, 0.3]
+    for _ in range(count):
+        short = round(rng.uniform(-1e4, 1e4), rng.randint(0, 9))
+        values += [short, math.nextafter(short, math.inf), math.nextafter(short, -math.inf),
+                   sum(rng.random() for _ in range(3)) * 10 ** rng.randint(-5, 15),
+                   rng.randint(-2 ** 53, 2 ** 53) / 2 ** rng.randint(0, 70), 2.0 ** rng.randint(-16, 52)]
+    return values
+
+
+def test_doubles_in_fixed_notation_are_written_as_repr_writes_them() -> None:
+    """The compiled core finds the shortest text itself for 1e-4 <= |v| < 2**49 (the fallback is
+    Python's routine): checked against repr() on 60,000 doubles, the hard cases included."""
+    values = _doubles_near_decimals(10_000)
+    ends = [(v, -v, 0.0, -0.0, v, v) for v in values]
+    lines = [1, 0, 2 ** 40, -7, True, 2 ** 70] * (len(values) // 6) + [3] * (len(values) % 6)
+    args = (lines, ["linear"] * len(values), ends, "job.nc", [0.0, *values])
     assert compiled.trace_rows(*args) == trace_rows(*args)
 
 

@@ -17,10 +17,11 @@ import math
 import os
 import re
 import stat
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
+from typing import IO
 
 from edingcnc_lang.errors import ConfigError, Location
 from edingcnc_lang.syntax.input_limits import MAX_INI_BYTES
@@ -261,8 +262,16 @@ def _update_variables(text: str, values: Mapping[int, float]) -> str:
     return "".join(body + end for body, end in lines)
 
 
-def _write_atomic(path: Path, data: bytes, info: os.stat_result) -> bool:
-    """Write beside the target and rename over it, so a kill leaves the old file or the new one.
+def owned_by_us(info: os.stat_result) -> bool:
+    """Whether a file we write anew gets the owner and group of the file ``info`` describes (always
+    without owners, as on Windows)."""
+    return (info.st_uid, info.st_gid) == (os.getuid(), os.getgid()) if hasattr(os, "getuid") else True
+
+
+def write_atomic(path: Path, write: Callable[[IO[bytes]], object], info: os.stat_result) -> bool:
+    """Write (``write`` fills the file) beside the target and rename over it, with the mode and owner
+    of ``info`` (the old file's), so a kill leaves the old file or the new one.  Also used for the
+    ``.npz`` samples file, which is assembled at the end of a run.
 
     Returns False, having changed nothing, when the new file could not keep the old one's owner.
     """
@@ -272,11 +281,11 @@ def _write_atomic(path: Path, data: bytes, info: os.stat_result) -> bool:
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
         with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
+            write(handle)
             handle.flush()
             os.fsync(handle.fileno())
         os.chmod(tmp, stat.S_IMODE(info.st_mode))
-        if (info.st_uid, info.st_gid) != (os.getuid(), os.getgid()) if hasattr(os, "getuid") else False:
+        if not owned_by_us(info):
             try:
                 os.chown(tmp, info.st_uid, info.st_gid)
             except OSError:  # someone else's file we may write: keep it theirs by writing in place
@@ -406,7 +415,7 @@ def write_variables(path: str | os.PathLike[str], values: Mapping[int, float]) -
             else:
                 bom = _BOM if raw.startswith(_BOM) else b""
                 data = bom + _update_variables(raw[len(bom):].decode("latin-1"), values).encode("latin-1")
-            if info.st_nlink > 1 or not _write_atomic(target, data, info):
+            if info.st_nlink > 1 or not write_atomic(target, lambda handle: handle.write(data), info):
                 _write_in_place(target, data)
     except OSError as exc:
         raise ConfigError(f"cannot write variables back: {exc.strerror or exc}", Location(str(path))) from exc

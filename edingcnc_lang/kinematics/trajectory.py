@@ -48,12 +48,18 @@ class Geometry:
         return sample_arc(self.start, self.end, self.center, self.normal, self.turns, speed, dt,
                           self.full_circle_epsilon)
 
-    def arc_frame(self) -> ArcFrame:
-        """The circle of an arc move (not for straight moves)."""
-        from edingcnc_lang.kinematics.sampling import arc_frame
+    @property
+    def frame(self) -> ArcFrame:
+        """The circle of an arc move (not for straight moves), computed once: the planner and the limits
+        report both ask (kept by hand: functools.cached_property takes a lock on every read)."""
+        frame: ArcFrame | None = self.__dict__.get("_frame")
+        if frame is None:
+            from edingcnc_lang.kinematics.sampling import arc_frame
 
-        assert self.center is not None
-        return arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
+            assert self.center is not None
+            frame = arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
+            object.__setattr__(self, "_frame", frame)
+        return frame
 
     def points_at(self, s: np.ndarray) -> np.ndarray:
         """Poses at fractions ``s`` (0..1) of the path: for arcs, of the sweep; s = 1 is the end exactly."""
@@ -66,7 +72,7 @@ class Geometry:
             return pts
         from edingcnc_lang.kinematics.sampling import arc_points
 
-        return arc_points(self.start, self.end, self.arc_frame(), s)
+        return arc_points(self.start, self.end, self.frame, s)
 
 
 def geometry_of(move: Move) -> Geometry:

@@ -1,7 +1,8 @@
 """Output sinks behind the planner: the trace CSV, the samples file and the event recorder.
 
-Each writes incrementally, so memory stays flat however long the job is
-(the .npz samples format is the exception: numpy writes it in one go at the end).
+Each writes incrementally, so memory stays flat however long the job is (the .npz samples
+file streams its columns to temporary files and is assembled from them at the end, see
+``samples_file``).
 Numbers are written with ``repr`` so they read back as the same double.  Only the samples
 writer needs numpy, and imports it itself.
 """
@@ -13,7 +14,7 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any
+from typing import IO, TYPE_CHECKING
 
 from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
@@ -23,6 +24,8 @@ from edingcnc_lang.motion.planner.estimate import Timing
 
 if TYPE_CHECKING:
     import numpy as np
+
+    from edingcnc_lang.motion.samples_file import ColumnFiles
 
 SIX_REPR = ",".join(["%r"] * 6)
 TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
@@ -94,12 +97,13 @@ def output_identities(paths: Iterable[Path | None]) -> frozenset[tuple[int, int]
                      and (ident := _identity(path)) is not None)
 
 
-def _open_for_writing(path: Path, binary: bool = False) -> IO:
+def _open_for_writing(path: Path, binary: bool = False, truncate: bool = True) -> IO:
     """The file to write, locked against another run writing it at the same time; ``-`` is
     standard output (closing the returned stream leaves it open).
 
     The file is truncated only once it is locked, so a second run refused here leaves the first
-    one's rows alone.  Without fcntl (Windows) there is no lock.
+    one's rows alone; not at all with ``truncate`` False (a file replaced whole at the end).
+    Without fcntl (Windows) there is no lock.
     """
     try:
         if str(path) == STDOUT:
@@ -110,7 +114,7 @@ def _open_for_writing(path: Path, binary: bool = False) -> IO:
         raise EcncError(f"cannot write {path}: {err.strerror}") from None
     try:
         _lock(fd, path)
-        if os.fstat(fd).st_size:
+        if truncate and os.fstat(fd).st_size:
             os.ftruncate(fd, 0)
     except BaseException:
         os.close(fd)
@@ -183,11 +187,13 @@ def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose],
 
 
 class SamplesWriter:
-    """The time-true trajectory: CSV rows as moves arrive, or one .npz array at the end.
+    """The time-true trajectory: CSV rows as moves arrive, or an .npz file assembled at the end.
 
     Rows are strictly increasing in time, one every ``interpolationTime`` along the planned
     profile, with the path speed ``v`` and acceleration ``acc``.  The .npz file holds one 1-D
-    array per column name.
+    array per column name; its rows wait in temporary files beside it (``ColumnFiles``), and the
+    whole file replaces the old one when the run ends (also one ended by an error or Ctrl-C, with
+    the rows so far), so a run that cannot finish it leaves the old file as it was.
     """
 
     def __init__(self, path: Path) -> None:
@@ -196,14 +202,22 @@ class SamplesWriter:
             raise UsageFailure(problem)
         self.path = path
         self._npz = path.suffix.lower() == ".npz"
-        self._chunks: list[np.ndarray] = []
+        self._columns: ColumnFiles | None = None
         self._last_time = -math.inf
         self._file: IO = _NOT_OPEN
 
     def open(self) -> None:
-        self._file = _open_for_writing(self.path, binary=self._npz)
+        self._file = _open_for_writing(self.path, binary=self._npz, truncate=not self._npz)
         if not self._npz:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
+            return
+        from edingcnc_lang.motion.samples_file import ColumnFiles
+
+        try:
+            self._columns = ColumnFiles(SAMPLES_COLUMNS, Path(os.path.realpath(self.path)))
+        except BaseException:
+            self._file.close()
+            raise
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         if samples is None:
@@ -212,16 +226,19 @@ class SamplesWriter:
 
         spindle = _spindle_column(move, samples.pos[:, 0])
         assert samples.speed is not None and samples.accel is not None  # the planner's time-true samples
-        rows = np.column_stack([samples.t, samples.pos, samples.joints, spindle, samples.speed, samples.accel])
-        rows = rows[samples.t > self._last_time]
-        if not len(rows):
+        # as columns (views), never one table of a long move's rows: that would be 128 bytes a sample more
+        columns = [samples.t, *samples.pos.T, *samples.joints.T, spindle, samples.speed, samples.accel]
+        keep = samples.t > self._last_time
+        if not keep.all():
+            columns = [column[keep] for column in columns]
+        if not len(columns[0]):
             return
-        self._last_time = float(rows[-1, 0])
-        if self._npz:
-            self._chunks.append(rows)
+        self._last_time = float(columns[0][-1])
+        if self._columns is not None:
+            self._columns.append(columns)
         else:  # a slice at a time: a long move's rows as text would be hundreds of megabytes at once
-            for first in range(0, len(rows), CSV_ROWS_AT_ONCE):
-                chunk = rows[first:first + CSV_ROWS_AT_ONCE].tolist()
+            for first in range(0, len(columns[0]), CSV_ROWS_AT_ONCE):
+                chunk = np.column_stack([column[first:first + CSV_ROWS_AT_ONCE] for column in columns]).tolist()
                 self._file.write("".join(",".join(map(repr, row)) + "\n" for row in chunk))
 
     def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
@@ -231,13 +248,32 @@ class SamplesWriter:
         pass
 
     def close(self) -> None:
-        if self._npz and self._file is not _NOT_OPEN:
-            import numpy as np
+        columns, self._columns = self._columns, None
+        try:
+            if columns is not None:
+                self._write_npz(columns)
+        finally:
+            if columns is not None:
+                columns.remove()
+            self._file.close()
 
-            data = np.concatenate(self._chunks) if self._chunks else np.zeros((0, len(SAMPLES_COLUMNS)))
-            columns: dict[str, Any] = {name: data[:, i] for i, name in enumerate(SAMPLES_COLUMNS)}
-            np.savez(self._file, **columns)
-        self._file.close()
+    def _write_npz(self, columns: ColumnFiles) -> None:
+        """Assemble the .npz beside the old file (a symbolic link's target) and swap it in; in place (the
+        old file cut first) only when a new file would lose a hard link or the owner (decided first:
+        the columns are used up as they are assembled), when the folder takes no new file or when
+        the output is no plain file (a FIFO)."""
+        import stat
+
+        from edingcnc_lang.config.ini import owned_by_us, write_atomic
+
+        info = os.fstat(self._file.fileno())
+        if columns.beside and owned_by_us(info) and stat.S_ISREG(info.st_mode) and info.st_nlink == 1:
+            write_atomic(Path(os.path.realpath(self.path)), columns.write_npz, info)  # our file: never False
+            return
+        if self._file.seekable():
+            self._file.seek(0)
+            self._file.truncate()
+        columns.write_npz(self._file)
 
 
 def _spindle_column(move: Move, xs: np.ndarray) -> np.ndarray:

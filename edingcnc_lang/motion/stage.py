@@ -453,11 +453,16 @@ class MotionStage:
             center = (geo.center[first], geo.center[second])
             s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
             clockwise = move.arc.turn < 0
-            # the interpreter's decision: a full circle, or the arc between its ends (never a circle)
-            angle = 2 * math.pi if move.arc.full_turns else sweep(s, center, e, clockwise, -1.0, r_form=True)[0]
-            start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
             radius = math.hypot(s[0] - center[0], s[1] - center[1])
-            for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):
+            lower, upper = self._lower, self._upper
+            if lower[first] <= center[0] - radius and center[0] + radius <= upper[first] \
+                    and lower[second] <= center[1] - radius and center[1] + radius <= upper[second]:
+                extremes = []  # the whole circle is inside: so is every point of the arc
+            else:  # the interpreter's decision: a full circle, or the arc between its ends (never a circle)
+                angle = 2 * math.pi if move.arc.full_turns else sweep(s, center, e, clockwise, -1.0, r_form=True)[0]
+                start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
+                extremes = arc_extremes(center, radius, start_angle, angle, clockwise)
+            for p1, p2 in extremes:
                 extreme = list(move.end)
                 extreme[first], extreme[second] = p1, p2
                 points.append(as_pose(extreme))

@@ -14,11 +14,11 @@ from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.render import DPI
-from edingcnc_lang.plot.toolpath import Toolpath
+from edingcnc_lang.plot.toolpath import SAMPLE_ROWS, Toolpath
 
 JOINT_COLUMNS = ("jx", "jy", "jz", "ja", "jb", "jc")
 STRIP_INCHES = 1.6
-MAX_CURVE_POINTS = 200_000  # samples drawn per joint: far more than the picture's pixels, a bounded figure
+MAX_CURVE_POINTS = SAMPLE_ROWS  # samples drawn per joint: far more than the picture's pixels, a bounded figure
 WIDTH_INCHES = 11.0
 
 
@@ -27,7 +27,9 @@ def moving_joints(path: Toolpath) -> list[int]:
     samples = path.samples or {}
     count = min(len(path.joint_names) or 6, len(JOINT_COLUMNS))
     present = [i for i in range(count) if JOINT_COLUMNS[i] in samples and len(samples[JOINT_COLUMNS[i]])]
-    moving = [i for i in present if np.ptp(samples[JOINT_COLUMNS[i]]) > 1e-9]
+    # over every sample: the thinned ones could miss a short move
+    spread = path.sample_spread or {JOINT_COLUMNS[i]: np.ptp(samples[JOINT_COLUMNS[i]]) for i in present}
+    moving = [i for i in present if spread[JOINT_COLUMNS[i]] > 1e-9]
     return moving or present
 
 

@@ -33,6 +33,7 @@ PROBE = KINDS.index("probe")
 ARC_STEP = math.radians(3.0)  # 120 chords a turn: 0.014 mm off a 40 mm radius
 ROW = 9                       # values the recorder keeps per move (see Recorder.rows)
 WIDE = 1e5                    # mm: a limit this far out is "no limit configured" (the defaults are 1e6)
+SAMPLE_ROWS = 200_000         # rows of each --samples column a toolpath keeps (every step-th): a joint plot's points
 
 
 @dataclass(frozen=True)
@@ -71,7 +72,9 @@ class Toolpath:
     joint_names: tuple[str, ...] = ()
     joint_kinds: tuple[str, ...] | None = None  # "linear"/"rotary" per joint, as the plug-in declares them
     kinematics: str = "trivial"
-    samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for
+    samples: dict[str, np.ndarray] | None = None  # the run's --samples columns, when asked for (every step-th
+    #                                               row, at most SAMPLE_ROWS)
+    sample_spread: dict[str, float] | None = None  # each of those columns' max - min over every row
     copies: dict[str, str] = field(default_factory=dict)  # a name in ``paths`` -> the file to read its text from
 
     def __len__(self) -> int:
@@ -88,7 +91,7 @@ class Toolpath:
         first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
         c1, c2 = geometry.center[first], geometry.center[second]
         radius = max(math.hypot(start[first] - c1, start[second] - c2), 1e-9)
-        swept = abs(geometry.arc_frame().sweep)
+        swept = abs(geometry.frame.sweep)
         chords = max(2, math.ceil(swept / arc_step))
         length = math.hypot(swept * radius, end[geometry.normal] - start[geometry.normal])
         if length <= 0.0:
@@ -259,15 +262,17 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
 
     Syntax and configuration errors (nothing ran, or the machine could not be built) are raised.
     Callbacks already in ``options`` still receive every move and event.  With ``samples`` the
-    trajectory is also sampled at the interpolation rate (the ``--samples`` columns, for joint plots).
+    trajectory is also sampled at the interpolation rate (the ``--samples`` columns, for joint plots),
+    and every step-th sample kept, at most SAMPLE_ROWS per column.
     """
     if samples:
+        from edingcnc_lang.motion.samples_file import read_thinned
+
         with tempfile.TemporaryDirectory(prefix="ecnc-plot-") as folder:
             target = Path(folder) / "samples.npz"
             path = record_job(job, replace(options or RunOptions(), samples=target), name=name)
-            if target.exists():
-                with np.load(target) as data:
-                    path.samples = {name: data[name] for name in data.files}
+            if target.exists():  # read back thinned: a long job's samples are gigabytes
+                path.samples, path.sample_spread, _ = read_thinned(target, SAMPLE_ROWS)
             return path
     options = options or RunOptions()
     recorder = Recorder()

@@ -171,7 +171,7 @@ class Simulator:
 
     def _chords(self, move: Move) -> np.ndarray:
         """The arc's points, chords at most a quarter cell from the circle (helices and every plane)."""
-        frame = geometry_of(move).arc_frame()
+        frame = geometry_of(move).frame
         radius = max(frame.r0, frame.r1, 1e-9)
         step = 2.0 * math.acos(max(1.0 - self.chord / radius, -1.0))
         count = max(2, math.ceil(abs(frame.sweep) / max(step, 1e-6)))

@@ -21,9 +21,9 @@ from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
 from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
 from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
-from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, is_fast_line, plain_block, plain_words  # re-exported: the public API
+from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.blocks import Close, Open
-from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
+from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
 
 __all__ = ["CHUNK_LINES", "RUN_LENGTH", "UNITS", "CheckedFile", "StatementReader", "check_file",
@@ -35,22 +35,27 @@ UNITS = frozenset({"mm", "inch"})
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 CHUNK_LINES = 8192
-_NON_PLAIN = re.compile(rf"^(?![ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$).*$", re.MULTILINE)
+_NON_PLAIN = re.compile(rf"^(?!{PLAIN_LINE}$).*$", re.MULTILINE)
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
 
 
-def _chunks(lines: Iterable[str]) -> Iterator[tuple[int, list[str]]]:
-    """The lines in lists of CHUNK_LINES, with the line number of each list's first line."""
+def _batched(lines: Iterable[str]) -> Iterator[list[str]]:
+    """Lines in lists of CHUNK_LINES."""
     source = iter(lines)
+    while chunk := list(islice(source, CHUNK_LINES)):
+        yield chunk
+
+
+def _chunks(blocks: Iterable[list[str]]) -> Iterator[tuple[int, list[str]]]:
+    """The lines in lists of at most CHUNK_LINES, with the line number of each list's first line."""
     base = 1
-    while True:
-        chunk = list(islice(source, CHUNK_LINES))
-        if not chunk:
-            return
-        yield base, chunk
-        base += len(chunk)
+    for block in blocks:
+        for first in range(0, len(block), CHUNK_LINES):
+            chunk = block[first:first + CHUNK_LINES] if len(block) > CHUNK_LINES else block
+            yield base, chunk
+            base += len(chunk)
 
 
 def non_plain_lines(chunk: list[str]) -> list[int]:
@@ -113,8 +118,12 @@ class StatementReader:
 
     def __init__(self, lines: Iterable[str], path: str, *, mode: str = "tree",
                  non_plain: Sequence[int] | None = None, tolerant: bool = False,
-                 check_dialogs: bool | None = None, on_chunk: Callable[[list[str]], None] | None = None) -> None:
+                 check_dialogs: bool | None = None, on_chunk: Callable[[list[str]], None] | None = None,
+                 blocks: Iterable[list[str]] | None = None) -> None:
         self.path = path
+        # The lines come one by one (``lines``) or, cheaper for a big file, in lists (``blocks``, then
+        # ``lines`` is not read): either way they are taken in chunks.
+        self._blocks = _batched(lines) if blocks is None else blocks
         # Whoever needs more of the text than statements (the T words GetToolInfo lists) sees
         # every chunk of lines as it is read, so the file is not read again for it.
         self.on_chunk = on_chunk
@@ -137,7 +146,6 @@ class StatementReader:
         self._known = non_plain is not None
         self.unit: str | None = None
         self.diagnostics: list[Diagnostic] = []
-        self._lines = lines
         self._skipped = 0  # blocks open beyond MAX_BLOCK_DEPTH, whose lines are dropped
 
     def _error(self, code: str, message: str, line: int, col: int, source: str = "") -> None:
@@ -148,7 +156,7 @@ class StatementReader:
         path = self.path
         bulk = self.mode != "tree"
         lineno = 0
-        for base, chunk in _chunks(self._lines):
+        for base, chunk in _chunks(self._blocks):
             self.lines = base + len(chunk) - 1
             self._recent = [*self._recent[-1:], (base, chunk)]
             if self.on_chunk is not None:
@@ -348,8 +356,9 @@ def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
 
     ``name`` is what spans and errors call the file (``<stdin>`` for a copy of standard input).
     """
-    return StatementReader(iter_file_lines(path), os.fspath(path) if name is None else name, mode=mode,
-                           non_plain=non_plain, tolerant=tolerant, check_dialogs=check_dialogs, on_chunk=on_chunk)
+    return StatementReader((), os.fspath(path) if name is None else name, mode=mode, non_plain=non_plain,
+                           tolerant=tolerant, check_dialogs=check_dialogs, on_chunk=on_chunk,
+                           blocks=iter_file_blocks(path))
 
 
 @dataclass(frozen=True)

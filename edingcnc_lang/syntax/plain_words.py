@@ -1,4 +1,4 @@
-"""The one tokenizer for plain lines: ``letter number`` words and nothing else (``G1 X10 Y-2.5 F300``).
+"""The one tokenizer for plain lines: ``letter number`` words, comments and nothing else (``G1 X10 Y-2.5 F300``).
 
 CAM output is mostly such lines.  The line parser turns them into nodes without Lark, the check
 pass and the run's bulk path read them with the same word grammar, so a plain line is read one way
@@ -18,12 +18,28 @@ from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 INTEGER_DIGITS = 300
 FAST_NUMBER = rf"(?:[0-9]{{1,{INTEGER_DIGITS}}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}})?|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
 FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
-FAST_LINE = re.compile(rf"^[ \t]*(?:{FAST_WORD}[ \t]*)+(?:;.*)?$")
+# A ( ) comment among the words, which the grammar drops (PAREN_COMMENT), CAM output has them on many
+# lines.  Not an operator message ("(msg ...)", MSG_COMMENT, a statement of its own), decided on ASCII
+# alone: where a control or non-ASCII character follows the '(' and its blanks, or "msg" without a
+# letter, digit or '_' after it, the line is left to the parser.  _speedups.c's skip_comment is the same.
+FAST_COMMENT = r"\((?![ \t]*(?:[^\x20-\x7e\t]|[mM][sS][gG](?![A-Za-z0-9_])))[^)\n]*\)"
+_GAP = rf"[ \t]*(?:{FAST_COMMENT}[ \t]*)*"
+PLAIN_LINE = rf"{_GAP}(?:{FAST_WORD}{_GAP})+(?:;.*)?"  # a whole plain line, for patterns of several lines
+FAST_LINE = re.compile(rf"^{PLAIN_LINE}$")
 _FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
+_FAST_TOKENS = re.compile(rf"{FAST_COMMENT}|;|([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
 
 
 def word_matches(text: str) -> list[re.Match[str]]:
-    """The ``letter number`` words of a plain line, its ``;`` comment left out."""
+    """The ``letter number`` words of a plain line, its comments left out."""
+    if "(" in text:  # a ';' may stand inside a ( ) comment: read the line token by token
+        words = []
+        for match in _FAST_TOKENS.finditer(text):
+            if match.group(1) is not None:
+                words.append(match)
+            elif match.group(0) == ";":
+                break
+        return words
     semicolon = text.find(";")
     return list(_FAST_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text)))
 
@@ -41,7 +57,9 @@ def plain_block(text: str, path: str, line: int) -> n.PlainBlock:
 
 
 def plain_words(text: str) -> list[tuple[str, str]]:
-    """(letter, number text) pairs of a plain word line, comment excluded."""
+    """(letter, number text) pairs of a plain word line, comments excluded."""
+    if "(" in text:
+        return [(match.group(1), match.group(2)) for match in word_matches(text)]
     semicolon = text.find(";")
     return _FAST_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
 

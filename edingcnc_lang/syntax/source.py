@@ -68,14 +68,21 @@ def is_device(mode: int) -> bool:
 
 
 def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
-    """Yield the lines of a file without their line ends (LF, with any CRs before it).
+    """Yield the lines of a file without their line ends (LF, with any CRs before it); see iter_file_blocks."""
+    for block in iter_file_blocks(path):
+        yield from block
+
+
+def iter_file_blocks(path: str | os.PathLike[str]) -> Iterator[list[str]]:
+    """Yield the lines of a file, without their line ends, in lists: the lines of each block read.
 
     A file that cannot be opened raises UnreadableFile (an EcncError naming it), when the first
-    line is asked for.
+    block is asked for.
 
-    The file is read in blocks of about a megabyte and each block is decoded at once;
-    only a block that is not valid UTF-8 is decoded line by line.  A line longer than
-    LONG_LINE_BYTES is cut there (the parser refuses it), so memory stays bounded.
+    The file is read in blocks of about a megabyte and each block is decoded and split at once
+    (a reader that goes through the lines in lists pays nothing per line here); only a block that
+    is not valid UTF-8 is decoded line by line.  A line longer than LONG_LINE_BYTES is cut there
+    (the parser refuses it), so memory stays bounded.
     """
     try:
         handle = open(path, "rb")
@@ -86,7 +93,7 @@ def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
             raise UnreadableFile("cannot read: a device, not a file", Location(os.fspath(path)))
         head = handle.read(len(BOM))
         if head.startswith(UTF16_BOMS):
-            yield from _utf16_lines(handle, head)
+            yield from _utf16_blocks(handle, head)
             return
         pending = b"" if head == BOM else head
         skipping = False  # inside the rest of an over-long line
@@ -113,11 +120,14 @@ def iter_file_lines(path: str | os.PathLike[str]) -> Iterator[str]:
                 lines = body.decode("utf-8").split("\n")
             except UnicodeDecodeError:
                 lines = [decode_line(raw) for raw in body.split(b"\n")]
-            for line in lines:
-                yield line.rstrip("\r")
+            yield _without_crs(lines) if b"\r" in body else lines
 
 
-def _utf16_lines(handle: BinaryIO, head: bytes) -> Iterator[str]:
+def _without_crs(lines: list[str]) -> list[str]:
+    return [line.rstrip("\r") for line in lines]
+
+
+def _utf16_blocks(handle: BinaryIO, head: bytes) -> Iterator[list[str]]:
     """The lines of a UTF-16 file (``head``: its first bytes, BOM included), decoded as a stream and
     cut after MAX_LINE_LENGTH + 1 characters like any other file's; a broken pair shows as U+FFFD."""
     decoder = codecs.getincrementaldecoder("utf-16")(errors="replace")
@@ -134,12 +144,12 @@ def _utf16_lines(handle: BinaryIO, head: bytes) -> Iterator[str]:
         pending = lines.pop()
         if len(pending) > limit:
             pending, skipping = pending[:limit], True
-        for line in lines:
-            yield line.rstrip("\r")
+        if lines:
+            yield _without_crs(lines)
     if not skipping:
         pending += decoder.decode(b"", final=True)
     if pending:
-        yield pending.rstrip("\r")
+        yield [pending.rstrip("\r")]
 
 
 def iter_text_lines(text: str) -> Iterator[str]:

@@ -76,3 +76,21 @@ def test_bulk_trace_matches_the_general_trace(tmp_path: Path, source: str) -> No
     run_file(job, RunOptions(trace=bulk))
     run_string(source, RunOptions(trace=general), path=str(job))
     assert bulk.read_text() == general.read_text()
+
+
+def test_a_long_job_is_timed_the_same_in_batches_and_one_by_one(tmp_path: Path) -> None:
+    """The planner commits fixed windows of moves, however the moves arrive: the ``t`` column of a
+    job longer than several windows is the same to the last bit from the bulk path (batches cut
+    where the reader's blocks and chunks end) and from the general path (one move at a time)."""
+    rng = __import__("random").Random(4)
+    source = "G21 G90 F1500\n" + "".join(
+        f"G1 X{rng.uniform(0, 300):.3f} Y{rng.uniform(0, 200):.3f} Z{rng.uniform(-5, 0):.3f}\n"
+        for _ in range(10_000)) + "M30\n"
+    job = tmp_path / "job.nc"
+    job.write_text(source)
+    bulk, general = tmp_path / "bulk.csv", tmp_path / "general.csv"
+    with pytest.MonkeyPatch.context() as patch:  # chunks that do not divide the runs or the windows
+        patch.setattr("edingcnc_lang.syntax.parser.CHUNK_LINES", 1234)
+        run_file(job, RunOptions(trace=bulk))
+    run_string(source, RunOptions(trace=general), path=str(job))
+    assert bulk.read_text() == general.read_text()

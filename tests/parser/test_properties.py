@@ -79,8 +79,10 @@ def test_round_trip_keeps_a_known_program() -> None:
 spaces = st.sampled_from(["", " ", "  ", "\t"])
 plain_numbers = st.from_regex(r"[+-]?([0-9]{1,5}(\.[0-9]{0,5})?|\.[0-9]{1,5})", fullmatch=True)  # ASCII: "٠" is no digit
 plain_words = st.tuples(st.sampled_from("GMXYZABCIJKFSTPQRNgmxyz"), spaces, plain_numbers, spaces).map("".join)
-plain_lines = st.tuples(spaces, st.lists(plain_words, min_size=1, max_size=7).map("".join),
-                        st.sampled_from(["", ";", "; comment", " ;x", "; ring 8 mm G1 X2"])).map("".join)
+gaps = st.sampled_from(["", "", "(note)", "(T1 D=6 ;x) ", "(msg1)", "( msg_2)", "(a(b)"])  # comments the grammar drops
+plain_lines = st.tuples(gaps, spaces, st.lists(st.tuples(plain_words, gaps).map("".join), min_size=1, max_size=7)
+                        .map("".join), st.sampled_from(["", ";", "; comment", " ;x", "; ring 8 mm G1 X2", "(end)"])
+                        ).map("".join)
 
 
 @settings(max_examples=400, deadline=None)
@@ -104,5 +106,6 @@ def test_comment_only_lines_agree_with_the_grammar(line: str) -> None:
 
 
 def test_fast_path_declines_lines_it_does_not_understand() -> None:
-    for line in ["G1 X[1]", "#1=2", "G0 X1 (c)", "msg \"a\"", "Sub a1", "/G0 X1", "G0 X1+2"]:
+    for line in ["G1 X[1]", "#1=2", "G0 X1 (msg c)", "G0 X1 (MSG)", "G0 X1 (c", "G0 X1 ( \u00a0msg)", "G0 (é) X1",
+                 "msg \"a\"", "Sub a1", "/G0 X1", "G0 X1+2", "G0 X(c)1"]:
         assert not is_fast_line(line)

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang.syntax import source
+from edingcnc_lang.syntax import parser, source
 
 
 def _reference(path: Path) -> list[str]:
@@ -59,3 +59,24 @@ def test_a_utf16_line_longer_than_the_limit_is_cut(tmp_path: Path) -> None:
         patch.setattr(source, "CHUNK", 4096)
         lines = list(source.iter_file_lines(path))
     assert lines[0] == "G0 X1" and len(lines[1]) == source.MAX_LINE_LENGTH + 1 and lines[2:] == ["G0 X2"]
+
+
+@settings(max_examples=60, deadline=None)
+@given(lines=st.lists(st.sampled_from(["G1 X1 Y2", "G0 Z5", "If [#1 > 0]", "EndIf", "Sub a", "EndSub", "M30",
+                                      "#1 = 2", "G1 X[#1]", "; note", "", "G2 X1 Y0 R5"]), max_size=40),
+       eol=st.sampled_from(["\n", "\r\n"]), chunk=st.sampled_from([1, 5, 1 << 20]),
+       chunk_lines=st.sampled_from([1, 3, 8192]), mode=st.sampled_from(["tree", "check", "run", "lint"]))
+def test_a_file_read_in_blocks_gives_the_statements_of_its_lines(
+        tmp_path_factory: pytest.TempPathFactory, lines: list[str], eol: str, chunk: int, chunk_lines: int,
+        mode: str) -> None:
+    """The reader of a file takes its lines in the lists they were read in (blocks of any size, cut
+    into chunks): the statements, diagnostics and line count are those of the same lines one by one."""
+    path = tmp_path_factory.mktemp("src") / "f.nc"
+    path.write_bytes("".join(line + eol for line in lines).encode())
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(source, "CHUNK", chunk)
+        patch.setattr(parser, "CHUNK_LINES", chunk_lines)
+        blocks = parser.read_statements(path, mode=mode)
+        one_by_one = parser.StatementReader(source.iter_file_lines(path), str(path), mode=mode)
+        assert list(blocks) == list(one_by_one)
+    assert blocks.diagnostics == one_by_one.diagnostics and blocks.lines == one_by_one.lines == len(lines)

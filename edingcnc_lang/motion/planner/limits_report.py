@@ -4,6 +4,8 @@ Axes are machine coordinates, measured against ``[KINEMATICS]`` limits on a mach
 kinematics other than trivial and against the joints' limits otherwise; joints against
 ``[JOINT_n]``.  Arcs count with their extremes, and with kinematics on the joints count at every
 sample the motion stage evaluated, so the minimum and maximum are those of the whole path.
+Only a move's extremes matter, so the planner keeps those of its samples (``joint_extremes``)
+rather than the samples, and a window of long moves holds two rows per move.
 """
 from __future__ import annotations
 
@@ -28,17 +30,20 @@ class LimitsReport:
         self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
 
     def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any] | None) -> None:
-        """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints
-        or None (joints = position); ``joints`` None: the joints are the position for every move."""
+        """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints (or
+        just their ``joint_extremes``) or None (joints = position); ``joints`` None: the joints are the
+        position for every move."""
         import numpy as np
 
         if not ends.shape[1]:
             return
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
-        for geometry in arcs.values():
-            extremes = _arc_extremes(geometry)
-            if len(extremes):
-                low, high = np.minimum(low, extremes.min(axis=0)), np.maximum(high, extremes.max(axis=0))
+        # an arc whose whole circle lies within what the end points reach cannot reach further
+        inside_low, inside_high = np.minimum(low, self.axis_low).tolist(), np.maximum(high, self.axis_high).tolist()
+        extremes = [point for geometry in arcs.values() if not _circle_within(geometry, inside_low, inside_high)
+                    for point in _arc_extremes(geometry)]
+        if extremes:
+            low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())
         if joints is None:  # the usual case: joints = position everywhere
             self._widen("joint", low.tolist(), high.tolist())
@@ -47,6 +52,14 @@ class LimitsReport:
         joint_points = np.vstack([*(np.atleast_2d(np.asarray(j, dtype=float)) for j in joints if j is not None),
                                   starts[:, :1].T, ends[:, identity].T])
         self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
+
+    @staticmethod
+    def joint_extremes(joints: np.ndarray) -> np.ndarray:
+        """What ``add`` needs of a move's sampled joints ((N, 6)): their lowest and highest value per joint,
+        (2, 6); the report comes out the same as from every sample."""
+        import numpy as np
+
+        return np.vstack([joints.min(axis=0), joints.max(axis=0)])
 
     def _widen(self, which: str, low: list[float], high: list[float]) -> None:
         setattr(self, f"{which}_low", [min(a, b) for a, b in zip(getattr(self, f"{which}_low"), low)])
@@ -75,16 +88,22 @@ def _table(low: list[float], high: list[float], lower: list[float], upper: list[
     return table
 
 
-def _arc_extremes(geometry: Geometry) -> np.ndarray:
-    """Points where an arc reaches its extremes in its plane (its ends are counted already)."""
-    import numpy as np
+def _circle_within(geometry: Geometry, low: list[float], high: list[float]) -> bool:
+    frame = geometry.frame
+    radius = max(frame.r0, frame.r1)
+    (cu, cv), u, v = frame.center, frame.u, frame.v
+    return low[u] <= cu - radius and cu + radius <= high[u] and low[v] <= cv - radius and cv + radius <= high[v]
 
-    frame = geometry.arc_frame()
+
+def _arc_extremes(geometry: Geometry) -> list[list[float]]:
+    """Points where an arc reaches its extremes in its plane (its ends are counted already)."""
+    frame = geometry.frame
     radius = max(frame.r0, frame.r1)
     sweep = abs(frame.sweep)
     clockwise = frame.sweep < 0.0
-    found = arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise)
-    rows = np.tile(np.asarray(geometry.end, dtype=float), (len(found), 1))
-    for row, (p1, p2) in zip(rows, found):
+    rows = []
+    for p1, p2 in arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise):
+        row = list(geometry.end)
         row[frame.u], row[frame.v] = p1, p2
-    return rows.reshape(-1, 6)
+        rows.append(row)
+    return rows

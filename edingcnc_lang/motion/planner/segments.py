@@ -4,11 +4,10 @@ The stage collects moves as plain Python values (cheap per move); ``segments`` t
 them into arrays.  A move's path speed is limited by every axis it moves: an axis that does a
 fraction f of the path's length runs at f times the path speed, so the path may run at most
 ``limit / f`` (the same for acceleration).  The feed applies to the XYZ path; a move of the
-rotary axes only is measured in degrees.  Arcs (few per job) get their geometry one by one.
+rotary axes only is measured in degrees.  The arcs of a window are computed together too.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,31 +30,6 @@ class Segments:
     tangent_out: np.ndarray  # (6, n) unit direction at the end
     vmax: np.ndarray         # (n,) path speed limit, units/s
     accel: np.ndarray        # (n,) path acceleration limit, units/s^2
-
-
-def _unit(vector: np.ndarray) -> np.ndarray:
-    norm = float(np.linalg.norm(vector))
-    return vector / norm if norm > 0.0 else vector
-
-
-def _arc(start: np.ndarray, end: np.ndarray, geometry: Geometry
-         ) -> tuple[float, float, np.ndarray, np.ndarray, np.ndarray, float, tuple[int, int]]:
-    """Path and XYZ lengths, per-axis fractions, start and end tangents (unscaled), mean radius and
-    in-plane axes of one arc."""
-    frame = geometry.arc_frame()
-    u, v, sweep = frame.u, frame.v, frame.sweep
-    delta = end - start
-    in_plane = abs(sweep) * (frame.r0 + frame.r1) / 2.0
-    length = frame.linear if frame.linear > 0.0 else float(np.linalg.norm(delta[3:]))
-    fraction = np.abs(delta) / length if length > 0.0 else np.zeros(6)
-    if length > 0.0:
-        fraction[u] = fraction[v] = in_plane / length  # each in-plane axis carries the whole arc speed somewhere
-    tangents = []
-    for angle, radius in ((frame.start_angle, frame.r0), (frame.start_angle + sweep, frame.r1)):
-        tangent = delta.copy()
-        tangent[u], tangent[v] = -math.sin(angle) * sweep * radius, math.cos(angle) * sweep * radius
-        tangents.append(tangent)
-    return length, frame.linear, fraction, tangents[0], tangents[1], (frame.r0 + frame.r1) / 2.0, (u, v)
 
 
 def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.ndarray, alim: np.ndarray,
@@ -84,17 +58,52 @@ def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.nda
     tangent_out = tangent_in.copy() if arcs else tangent_in
     speed = speed.copy()
     xyz_length = linear.copy() if arcs else linear
-    for index, geometry in arcs.items():
-        arc_len, linear_len, fraction, t_in, t_out, radius, (u, v) = _arc(start[:, index], end[:, index], geometry)
-        length[index], xyz_length[index] = arc_len, linear_len
-        tangent_in[:, index], tangent_out[:, index] = _unit(t_in), _unit(t_out)
-        row_v, row_a = vlim[:, index if vlim.shape[1] > 1 else 0], alim[:, index if alim.shape[1] > 1 else 0]
-        with np.errstate(divide="ignore"):
-            vmax[index], accel[index] = 1.0 / np.max(fraction / row_v), 1.0 / np.max(fraction / row_a)
-        if arc_len >= min_arc_length and radius > 0.0:
-            in_plane = min(row_a[u], row_a[v])
-            centripetal = in_plane * min(CURVATURE_SHARE * arc_accel_factor, MAX_CURVATURE_SHARE)
-            speed[index] = min(speed[index], vmax[index], math.sqrt(centripetal * radius))
-            # speeding up along the arc gets what the circle leaves of the in-plane acceleration
-            accel[index] = min(accel[index], in_plane - speed[index] ** 2 / radius)
+    if arcs:
+        _arcs(start, end, arcs, vlim, alim, length, xyz_length, tangent_in, tangent_out, vmax, accel, speed,
+              arc_accel_factor, min_arc_length)
     return Segments(length, xyz_length, tangent_in, tangent_out, np.minimum(vmax, speed), accel)
+
+
+def _arcs(start: np.ndarray, end: np.ndarray, arcs: dict[int, Geometry], vlim: np.ndarray, alim: np.ndarray,
+          length: np.ndarray, xyz_length: np.ndarray, tangent_in: np.ndarray, tangent_out: np.ndarray,
+          vmax: np.ndarray, accel: np.ndarray, speed: np.ndarray, arc_accel_factor: float,
+          min_arc_length: float) -> None:
+    """The arcs' entries of a window's arrays (in place), all arcs at once: a CAM job has many.
+
+    An arc's path runs along its circle (helical: with the normal axis) and its tangents turn with
+    it; each in-plane axis carries the whole arc speed somewhere on it.
+    """
+    index = np.fromiter(arcs, np.intp, len(arcs))
+    frames = [geometry.frame for geometry in arcs.values()]
+    u = np.fromiter((f.u for f in frames), np.intp, len(frames))
+    v = np.fromiter((f.v for f in frames), np.intp, len(frames))
+    r0, r1, angle, sweep, linear = (np.array([getattr(f, name) for f in frames], dtype=float)
+                                    for name in ("r0", "r1", "start_angle", "sweep", "linear"))
+    delta = end[:, index] - start[:, index]
+    columns = np.arange(len(index))
+    in_plane = np.abs(sweep) * (r0 + r1) / 2.0
+    arc_len = np.where(linear > 0.0, linear, np.sqrt((delta[3:] * delta[3:]).sum(axis=0)))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        fraction = np.where(arc_len > 0.0, np.abs(delta) / arc_len, 0.0)
+        fraction[u, columns] = fraction[v, columns] = np.where(arc_len > 0.0, in_plane / arc_len, 0.0)
+    length[index], xyz_length[index] = arc_len, linear
+    for tangents, at, radius in ((tangent_in, angle, r0), (tangent_out, angle + sweep, r1)):
+        tangent = delta.copy()
+        tangent[u, columns], tangent[v, columns] = -np.sin(at) * sweep * radius, np.cos(at) * sweep * radius
+        norm = np.sqrt((tangent * tangent).sum(axis=0))
+        tangents[:, index] = np.where(norm > 0.0, tangent / np.where(norm > 0.0, norm, 1.0), tangent)
+    row_v = vlim[:, index] if vlim.shape[1] > 1 else vlim[:, [0]]
+    row_a = alim[:, index] if alim.shape[1] > 1 else alim[:, [0]]
+    with np.errstate(divide="ignore"):
+        vmax[index], accel[index] = 1.0 / np.max(fraction / row_v, axis=0), 1.0 / np.max(fraction / row_a, axis=0)
+    radius = (r0 + r1) / 2.0
+    turning = (arc_len >= min_arc_length) & (radius > 0.0)
+    if turning.any():
+        at, radius = index[turning], radius[turning]
+        chosen = columns[turning]
+        plane_accel = np.minimum(row_a[u[turning], chosen if row_a.shape[1] > 1 else 0],
+                                 row_a[v[turning], chosen if row_a.shape[1] > 1 else 0])
+        centripetal = plane_accel * min(CURVATURE_SHARE * arc_accel_factor, MAX_CURVATURE_SHARE)
+        speed[at] = np.minimum(np.minimum(speed[at], vmax[at]), np.sqrt(centripetal * radius))
+        # speeding up along the arc gets what the circle leaves of the in-plane acceleration
+        accel[at] = np.minimum(accel[at], plane_accel - speed[at] ** 2 / radius)

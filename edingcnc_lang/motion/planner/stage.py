@@ -97,7 +97,9 @@ class Planner:
         self._cap.add(cap)
         self._accel_cap.add(accel_cap)
         self._state.add(self._state_id(limit, limit, self._feed_factor(move.sync)))
-        self._joints.append(None if samples is None else samples.joints)
+        # only the extremes of a move's samples count (for the limits report): a window of long moves holds
+        # two rows per move, never their millions of samples
+        self._joints.append(None if samples is None else self.limits.joint_extremes(samples.joints))
         self._sampled += samples is not None
         self._queue.append(("move", move, joints))
         self._after_add()
@@ -171,7 +173,8 @@ class Planner:
         self._cap = Runs()              # the speed the kinematics' joints allow
         self._accel_cap = Runs()        # the path acceleration they allow
         self._state = Runs()            # index into self._states
-        self._joints: list[Any] = []    # the joints sampled along the move, None where they are the position
+        self._joints: list[Any] = []    # the extremes of the joints sampled along the move ((2, 6)), None where
+        #                                 they are the position
         self._sampled = 0               # how many of them are not None
         self._arcs: dict[int, Geometry] = {}
         self._queue: deque[tuple[Any, ...]] = deque()
@@ -197,11 +200,14 @@ class Planner:
         return index
 
     def _after_add(self) -> None:
-        if len(self._ends) >= WINDOW + LOOKAHEAD:
-            self._commit(len(self._ends) - LOOKAHEAD)
+        # Windows of WINDOW moves planned with LOOKAHEAD more, however the moves came (one by one or
+        # in batches of any size): the times of a job never depend on how its reader cut it.
+        while len(self._ends) >= WINDOW + LOOKAHEAD:
+            self._commit(WINDOW, WINDOW + LOOKAHEAD)
 
-    def _commit(self, count: int) -> None:
-        """Plan every collected move, then commit the first ``count`` of them (all: the machine stops after them).
+    def _commit(self, count: int, horizon: int | None = None) -> None:
+        """Plan the first ``horizon`` collected moves (default: all), then commit the first ``count`` of them
+        (all: the machine stops after them).
 
         numpy and the model load here, with the first move: a job that does not move never needs them.
         """
@@ -212,27 +218,29 @@ class Planner:
         from edingcnc_lang.motion.planner.samples import time_true_samples
         from edingcnc_lang.motion.planner.segments import segments
 
-        n = len(self._ends)
-        ends = np.fromiter(chain.from_iterable(self._ends), float, 6 * n).reshape(n, 6).T.copy()  # columns
+        n = len(self._ends) if horizon is None else horizon
+        ends = np.fromiter(chain.from_iterable(self._ends[:n]), float, 6 * n).reshape(n, 6).T.copy()  # columns
         starts = np.empty_like(ends)
         starts[:, 0], starts[:, 1:] = self._origin, ends[:, :-1]
-        feed, kind, state = np.fromiter(self._feed, float, n), self._kind.array(np.int64), self._state.array(np.int64)
+        feed = np.fromiter(self._feed, float, n)
+        kind, state = self._kind.array(np.int64)[:n], self._state.array(np.int64)[:n]
+        arcs = self._arcs if horizon is None else {i: g for i, g in self._arcs.items() if i < n}
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
         exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
         limit = np.where(kind == RAPID, rapid_limits[state], other_limits[state])
         exact = exact_mode[state] | (kind == RAPID) | (kind == PROBE) | (kind == HOME)
         fastest = (kind == RAPID) | (kind == HOME)
-        speed = np.minimum(self._cap.array(float), np.where(fastest, np.inf, feed * factor[state] / 60.0))
+        speed = np.minimum(self._cap.array(float)[:n], np.where(fastest, np.inf, feed * factor[state] / 60.0))
         cfg = self.config
         if (limit == limit[0]).all():  # the usual case: one set of limits for the whole window
             vlim, alim = self._limit_sets[int(limit[0])]
         else:
             vlim = np.array([v for v, _ in self._limit_sets])[limit].T
             alim = np.array([a for _, a in self._limit_sets])[limit].T
-        seg = segments(starts, ends, speed, vlim, alim, self._arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
+        seg = segments(starts, ends, speed, vlim, alim, arcs, cfg.laf_arcfeed_factor, cfg.min_circle_segment_size)
         moving = np.flatnonzero(seg.length > 0.0)  # moves of zero length take no time and do not stop the machine
         exact = exact[moving]
-        all_accel = np.minimum(seg.accel, self._accel_cap.array(float))
+        all_accel = np.minimum(seg.accel, self._accel_cap.array(float)[:n])
         length, vmax, accel = seg.length[moving], seg.vmax[moving], all_accel[moving]
         before, after = moving[:-1], moving[1:]
         corner = corner_speeds2(seg.tangent_out[:, before], seg.tangent_in[:, after], seg.length[before],
@@ -252,7 +260,7 @@ class Planner:
                         self._joints[:count] if self._sampled else None)
         samples = None
         if self.want_samples and self.joints_of is not None:
-            samples = time_true_samples(starts[:, :count], ends[:, :count], self._arcs, moving[:done], planned, t_end,
+            samples = time_true_samples(starts[:, :count], ends[:, :count], arcs, moving[:done], planned, t_end,
                                         duration[:count], cfg.interpolation_time, self.joints_of)
         self._emit(count, t_end, peak[:count], samples)
         if count:
