@@ -18,7 +18,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang.syntax import fastparse
+from edingcnc_lang.syntax import fastparse, nodes
 from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 from edingcnc_lang.syntax.plain_words import INTEGER_DIGITS
 from edingcnc_lang.syntax.printer import expr_text, stmt_lines
@@ -27,6 +27,7 @@ from .test_fastparse import _respace
 from .test_properties import blocks, exprs, plain_lines
 
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled tokenizer is not built")
+lexer.setup(nodes)  # done by fastparse on the compiled core; here also under ECNC_PURE_PYTHON=1
 
 
 def _python(text: str, pos: int) -> object:
