@@ -11,7 +11,7 @@ run of moves in a batch gets the very bits the moves would get one by one.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
@@ -96,9 +96,14 @@ def line_corner(ops: Ops[R], side: int, theta: R, alpha: R) -> tuple[R, R, R, fl
     """
     if side == LEFT:
         theta = ops.where(theta < alpha, theta + 2 * math.pi, theta)
-        return theta, alpha, theta - alpha - HALF_PI, HALF_PI
+        return theta, alpha, theta - alpha - HALF_PI, side_angle(side)
     alpha = ops.where(alpha < theta, alpha + 2 * math.pi, alpha)
-    return theta, alpha, alpha - theta - HALF_PI, -HALF_PI
+    return theta, alpha, alpha - theta - HALF_PI, side_angle(side)
+
+
+def side_angle(side: int) -> float:
+    """The tool's side as an angle from the direction of the move."""
+    return HALF_PI if side == LEFT else -HALF_PI
 
 
 def inside_corner(beta: R) -> R:
@@ -153,6 +158,15 @@ class Frame:
         if normal is not None:
             pose[self.normal] = normal
         return pose
+
+    def poses(self, bases: Iterable[Pose], firsts: Iterable[float], seconds: Iterable[float]) -> list[Pose]:
+        """``pose`` for many six-value poses at once, as tuples (unpacked: the cheapest way in Python)."""
+        pairs = zip(firsts, seconds, bases)
+        if self.plane == "XY":
+            return [(a, b, z, u, v, w) for a, b, (_, _, z, u, v, w) in pairs]
+        if self.plane == "XZ":  # first Z, second X
+            return [(b, y, a, u, v, w) for a, b, (_, y, _, u, v, w) in pairs]
+        return [(x, a, b, u, v, w) for a, b, (x, _, _, u, v, w) in pairs]
 
 
 @dataclass

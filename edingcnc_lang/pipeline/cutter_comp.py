@@ -60,6 +60,8 @@ def _refuse(move: Move | Event, what: str) -> MachineError:
 class CutterCompensation(Stage):
     """Offsets the programmed path by the tool radius while G41/G42 is on."""
 
+    long_run = 32  # a batch this long goes through comp_runs: its runs of plain corners as arrays
+
     def __init__(self, next_canon: Canon, config: MachineConfig) -> None:
         super().__init__(next_canon, config)
         self.side = 0                      # LEFT, RIGHT or 0 (off, or a radius of 0)
@@ -89,8 +91,13 @@ class CutterCompensation(Stage):
             self.next.straight_moves(batch)
             return
         try:
-            for move in batch.moves():
-                self._take(move)
+            if self.side and batch.css is None and len(batch) >= self.long_run:
+                from edingcnc_lang.pipeline.comp_runs import take_batch  # numpy: only for long runs
+
+                take_batch(self, batch)
+            else:
+                for move in batch.moves():
+                    self._take(move)
         finally:
             self._send()
 
@@ -138,16 +145,33 @@ class CutterCompensation(Stage):
             self.next.move(move)
             return move.end
         end = tuple(item.end)
-        out = self.out
-        if out is None or (out.path, out.spindle, out.sync, out.caller) != (origin.path, origin.spindle,
-                                                                              origin.sync, origin.caller):
-            self._send()
-            out = self.out = Batch(origin.path, start, [], [], [], [], origin.spindle, None, origin.sync, origin.caller)
+        out = self._collecting(origin, start)
         out.kinds.append(item.kind)  # type: ignore[attr-defined]
         out.lines.append(origin.line)  # type: ignore[attr-defined]
         out.ends.append(end)  # type: ignore[attr-defined]
         out.feeds.append(item.feed)  # type: ignore[attr-defined]
         return end  # type: ignore[return-value]
+
+    def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose]) -> None:
+        """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``."""
+        stop = first + len(ends)
+        out = self._collecting(batch, self.emitted)  # type: ignore[arg-type]
+        out.kinds.extend(batch.kinds[first:stop])  # type: ignore[attr-defined]
+        out.lines.extend(batch.lines[first:stop])  # type: ignore[attr-defined]
+        out.ends.extend(ends)  # type: ignore[attr-defined]
+        out.feeds.extend(batch.feeds[first:stop])  # type: ignore[attr-defined]
+        self.emitted = ends[-1]
+
+    def _collecting(self, source: Move | Batch, start: Pose) -> Batch:
+        """The batch being collected, if moves from ``source`` (same file, spindle, caller) may join it;
+        else a new one starting at ``start``, after handing on the one before."""
+        out = self.out
+        if out is None or (out.path, out.spindle, out.sync, out.caller) != (source.path, source.spindle,
+                                                                              source.sync, source.caller):
+            self._send()
+            out = self.out = Batch(source.path, start, [], [], [], [], source.spindle, None, source.sync,
+                                   source.caller)
+        return out
 
     def _send(self) -> None:
         """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
