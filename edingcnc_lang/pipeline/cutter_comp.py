@@ -17,10 +17,15 @@ the path sideways by the tool radius in the selected plane:
 
 A compensated move is held back until the next move shows which kind of corner follows; events
 programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wait with it.
+
+A long batch of straight moves goes through ``comp_runs``: its runs of straight-on and inside
+line-line corners are computed as arrays with the same corner functions (``comp_geometry``) and go
+on as one batch; every other move is taken here, one at a time, with the very same results.
 """
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import replace
 
 from edingcnc_lang.canon import Arc, Batch, Canon, Event, Move, Pose
@@ -60,7 +65,10 @@ def _refuse(move: Move | Event, what: str) -> MachineError:
 class CutterCompensation(Stage):
     """Offsets the programmed path by the tool radius while G41/G42 is on."""
 
-    long_run = 32  # a batch this long goes through comp_runs: its runs of plain corners as arrays
+    # A batch this long goes through comp_runs (its runs of plain corners as numpy arrays) once numpy
+    # is loaded, or once this many moves went one at a time (about what loading numpy costs).
+    long_run = 32
+    numpy_after = 8000
 
     def __init__(self, next_canon: Canon, config: MachineConfig) -> None:
         super().__init__(next_canon, config)
@@ -77,6 +85,7 @@ class CutterCompensation(Stage):
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
         # compensated straight moves released during one call, handed on together as one Batch
         self.out: Batch | None = None
+        self.alone = 0  # moves of long batches taken one at a time because numpy was not loaded
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
@@ -91,8 +100,8 @@ class CutterCompensation(Stage):
             self.next.straight_moves(batch)
             return
         try:
-            if self.side and batch.css is None and len(batch) >= self.long_run:
-                from edingcnc_lang.pipeline.comp_runs import take_batch  # numpy: only for long runs
+            if self.side and batch.css is None and len(batch) >= self.long_run and self._arrays_pay(len(batch)):
+                from edingcnc_lang.pipeline.comp_runs import take_batch
 
                 take_batch(self, batch)
             else:
@@ -100,6 +109,14 @@ class CutterCompensation(Stage):
                     self._take(move)
         finally:
             self._send()
+
+    def _arrays_pay(self, count: int) -> bool:
+        """Whether to take a long batch as arrays: numpy is loaded, or the moves taken one at a time have
+        cost about what loading it does (a short job need not load it)."""
+        if "numpy" in sys.modules or self.alone >= self.numpy_after:
+            return True
+        self.alone += count
+        return False
 
     def _take(self, move: Move) -> None:
         if not self.side:

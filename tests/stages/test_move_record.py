@@ -187,11 +187,12 @@ def test_compensation_in_batches_gives_the_moves_of_compensation_move_by_move(
                                        css, sync, caller))
 
     alone = _compensated(programmed, comp, one_by_one)
-    default, CutterCompensation.long_run = CutterCompensation.long_run, long_run
+    defaults = CutterCompensation.long_run, CutterCompensation.numpy_after
+    CutterCompensation.long_run, CutterCompensation.numpy_after = long_run, 0
     try:
         batched = _compensated(programmed, comp, in_batches)
     finally:
-        CutterCompensation.long_run = default
+        CutterCompensation.long_run, CutterCompensation.numpy_after = defaults
     assert batched == alone
 
 
@@ -204,6 +205,7 @@ def test_a_long_contour_goes_on_in_batches_and_gives_the_moves_one_by_one() -> N
     alone = _compensated(programmed, ("left", 1.0, "XY"), lambda stage: [stage.move(m) for m in programmed])
     sink = Recorder()
     stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
+    stage.numpy_after = 0
     stage.event(Event("cutter_comp", "job.nc", 1, {"side": "left", "radius": 1.0, "plane": "XY"}))
     stage.straight_moves(batch)
     assert [(kind, len(what)) for kind, what in sink.log[1:]] == [("batch", 199)]  # the last one held back
