@@ -131,33 +131,33 @@ class LineRun:
         self.outside, self.concave, self.half = outside, concave, half
         self.hx, self.hy, self.ex, self.ey, self.tx, self.ty, self.dx, self.dy = hx, hy, ex, ey, tx, ty, dx, dy
 
-    def usual(self, stage: CutterCompensation, index: int) -> int:
+    def count_from(self, stage: CutterCompensation, index: int) -> int:
         """How many moves from batch move ``index`` on this run can take (0: the stage takes that one)."""
-        at_ = index - self.base
-        if at_ >= self.limit or self.outside[at_]:
+        i = index - self.base
+        if i >= self.limit or self.outside[i]:
             return 0
-        if self.concave[at_]:  # checked against where the stage really is (it may have taken the move before)
+        if self.concave[i]:  # checked against where the stage really is (it may have taken the move before)
             queued = stage.queue[0]
             assert isinstance(queued, Queued) and stage.endpoint is not None
-            if self.half[at_] == 0.0 or reverses(queued.direction, stage.endpoint,
-                                                  (float(self.hx[at_]), float(self.hy[at_]))):
+            if self.half[i] == 0.0 or reverses(queued.direction, stage.endpoint,
+                                                  (float(self.hx[i]), float(self.hy[i]))):
                 return 0
-        following = self.bad[bisect_right(self.bad, at_)] if self.bad and self.bad[-1] > at_ else self.limit
-        return min(following, self.limit) - at_
+        following = self.bad[bisect_right(self.bad, i)] if self.bad and self.bad[-1] > i else self.limit
+        return min(following, self.limit) - i
 
     def take(self, stage: CutterCompensation, batch: Batch, index: int, count: int) -> None:
         """Compensate batch moves ``index`` .. ``index + count - 1``: hand on the move the stage holds and all
         but the last of them, and hold the last one back, as the stage does move by move."""
-        frame, at_ = self.frame, index - self.base
+        frame, i = self.frame, index - self.base
         queued = stage.queue[0]
         assert isinstance(queued, Queued)
-        queued.end = frame.pose(queued.end, (float(self.hx[at_]), float(self.hy[at_])))
+        queued.end = frame.pose(queued.end, (float(self.hx[i]), float(self.hy[i])))
         stage._dequeue()
-        last = at_ + count - 1
+        last = i + count - 1
         if count > 1:
             stage._hand_on_run(batch, index, frame.poses(islice(batch.ends, index, index + count - 1),
-                                                         self.hx[at_ + 1:last + 1].tolist(),
-                                                         self.hy[at_ + 1:last + 1].tolist()))
+                                                         self.hx[i + 1:last + 1].tolist(),
+                                                         self.hy[i + 1:last + 1].tolist()))
         move = batch.move(index + count - 1, batch.ends[index + count - 2] if index + count > 1 else batch.start)
         end = (float(self.ex[last]), float(self.ey[last]))
         stage.queue.append(Queued(move, move.kind, frame.pose(move.end, end), move.feed,
@@ -183,11 +183,11 @@ def take_batch(stage: CutterCompensation, batch: Batch) -> None:
                     and stage.frame.point(batch.ends[index]) != stage.program:
                 run, taken = LineRun(stage, batch, index), 0
             if run is not None:
-                usual = run.usual(stage, index)
-                if usual:
-                    run.take(stage, batch, index, usual)
-                    index += usual
-                    taken += usual
+                plain = run.count_from(stage, index)
+                if plain:
+                    run.take(stage, batch, index, plain)
+                    index += plain
+                    taken += plain
                     continue
         stage._take(batch.move(index, batch.ends[index - 1] if index else batch.start))
         index += 1
