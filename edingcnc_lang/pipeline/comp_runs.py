@@ -100,8 +100,12 @@ class LineRun:
         alpha0 = heading(ARRAYS, (sx, sy), (tx, ty))
         gamma = side_angle(side)
         # each end depends on the corner before it only through line_corner's choice of turn for alpha:
-        # start from none and repeat until the choices agree with the corners they give
-        adjusted = alpha0
+        # guess the choices from the directions to the tool (each move's alpha + gamma, in (-pi, pi]), and
+        # repeat until they agree with the corners they give
+        toward_tool = _after(math.atan2(cy0 - sy[0], cx0 - sx[0]) if limit else 0.0, alpha0 + gamma)
+        toward_tool = np.where(toward_tool > math.pi, toward_tool - 2 * math.pi,
+                               np.where(toward_tool <= -math.pi, toward_tool + 2 * math.pi, toward_tool))
+        adjusted = line_corner(ARRAYS, side, toward_tool, alpha0)[1]
         for _ in range(3):
             ex, ey = at(ARRAYS, (tx, ty), radius, adjusted + gamma)
             cx, cy = _after(cx0, ex), _after(cy0, ey)
