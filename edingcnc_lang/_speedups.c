@@ -55,6 +55,9 @@ static PyObject *pose_tuple(const double values[6])
         }
         PyTuple_SetItem(tuple, k, number);
     }
+    /* Six floats can be in no reference cycle: the collector need not walk the pose (the planner
+     * holds thousands of them; it would untrack them itself only after walking each once). */
+    PyObject_GC_UnTrack(tuple);
     return tuple;
 }
 

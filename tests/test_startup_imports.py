@@ -10,6 +10,7 @@ because this test process has imported everything already.
 from __future__ import annotations
 
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -63,6 +64,18 @@ def test_a_plain_run_of_a_job_that_moves_does_not_import_numpy(tmp_path: Path) -
     modules = _imported_modules(result.stderr)
     assert "edingcnc_lang.motion.stage" in modules  # the job really ran
     assert not {"numpy", "edingcnc_lang.motion.planner.profile", "edingcnc_lang.motion.planner.segments"} & modules
+
+
+def test_a_plain_run_of_a_short_compensated_contour_does_not_import_numpy(tmp_path: Path) -> None:
+    # its batches are long enough for compensation's arrays, but loading numpy would cost more than they save
+    job = tmp_path / "contour.nc"
+    job.write_text("G0 X60 Y0\nG41.1 D2\nG1 X40 Y0 F500\n"
+                   + "".join(f"X{40 * math.cos(k / 50):.3f} Y{40 * math.sin(k / 50):.3f}\n" for k in range(1, 300))
+                   + "G40\nG1 X0 Y0\nM30\n")
+    result = _python("-X", "importtime", "-m", "edingcnc_lang", "run", str(job))
+    modules = _imported_modules(result.stderr)
+    assert "edingcnc_lang.pipeline.cutter_comp" in modules  # compensated
+    assert not {"numpy", "edingcnc_lang.pipeline.comp_runs"} & modules
 
 
 def test_an_unplanned_api_run_reports_moves_but_no_estimate(tmp_path: Path) -> None:

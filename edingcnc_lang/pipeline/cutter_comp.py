@@ -17,10 +17,15 @@ the path sideways by the tool radius in the selected plane:
 
 A compensated move is held back until the next move shows which kind of corner follows; events
 programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wait with it.
+
+A long batch of straight moves goes through ``comp_runs``: its runs of straight-on and inside
+line-line corners are computed as arrays with the same corner functions (``comp_geometry``) and go
+on as one batch; every other move is taken here, one at a time, with the very same results.
 """
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import replace
 
 from edingcnc_lang.canon import Arc, Batch, Canon, Event, Move, Pose
@@ -31,18 +36,26 @@ from edingcnc_lang.pipeline.comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
     ARC_SWEEP_SLACK_MM,
     CONCAVE_TOLERANCE,
+    HALF_PI,
     LEFT,
     RIGHT,
+    SCALAR,
     Frame,
     Point,
     Queued,
     at,
+    cut_back,
     find_turn,
+    half_corner,
+    heading,
+    inside_corner,
+    line_corner,
+    outside_corner,
+    reverses,
     tool_inside_arc,
 )
 
 SIDES = {"left": LEFT, "right": RIGHT}
-HALF_PI = math.pi / 2
 
 
 def _refuse(move: Move | Event, what: str) -> MachineError:
@@ -51,6 +64,11 @@ def _refuse(move: Move | Event, what: str) -> MachineError:
 
 class CutterCompensation(Stage):
     """Offsets the programmed path by the tool radius while G41/G42 is on."""
+
+    # A batch this long goes through comp_runs (its runs of plain corners as numpy arrays) once numpy
+    # is loaded, or once this many moves went one at a time (about what loading numpy costs).
+    long_run = 32
+    numpy_after = 8000
 
     def __init__(self, next_canon: Canon, config: MachineConfig) -> None:
         super().__init__(next_canon, config)
@@ -67,6 +85,7 @@ class CutterCompensation(Stage):
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
         # compensated straight moves released during one call, handed on together as one Batch
         self.out: Batch | None = None
+        self.alone = 0  # moves of long batches taken one at a time because numpy was not loaded
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
@@ -81,10 +100,23 @@ class CutterCompensation(Stage):
             self.next.straight_moves(batch)
             return
         try:
-            for move in batch.moves():
-                self._take(move)
+            if self.side and batch.css is None and len(batch) >= self.long_run and self._arrays_pay(len(batch)):
+                from edingcnc_lang.pipeline.comp_runs import take_batch
+
+                take_batch(self, batch)
+            else:
+                for move in batch.moves():
+                    self._take(move)
         finally:
             self._send()
+
+    def _arrays_pay(self, count: int) -> bool:
+        """Whether to take a long batch as arrays: numpy is loaded, or the moves taken one at a time have
+        cost about what loading it does (a short job need not load it)."""
+        if "numpy" in sys.modules or self.alone >= self.numpy_after:
+            return True
+        self.alone += count
+        return False
 
     def _take(self, move: Move) -> None:
         if not self.side:
@@ -130,16 +162,33 @@ class CutterCompensation(Stage):
             self.next.move(move)
             return move.end
         end = tuple(item.end)
-        out = self.out
-        if out is None or (out.path, out.spindle, out.sync, out.caller) != (origin.path, origin.spindle,
-                                                                              origin.sync, origin.caller):
-            self._send()
-            out = self.out = Batch(origin.path, start, [], [], [], [], origin.spindle, None, origin.sync, origin.caller)
+        out = self._collecting(origin, start)
         out.kinds.append(item.kind)  # type: ignore[attr-defined]
         out.lines.append(origin.line)  # type: ignore[attr-defined]
         out.ends.append(end)  # type: ignore[attr-defined]
         out.feeds.append(item.feed)  # type: ignore[attr-defined]
         return end  # type: ignore[return-value]
+
+    def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose]) -> None:
+        """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``."""
+        stop = first + len(ends)
+        out = self._collecting(batch, self.emitted)  # type: ignore[arg-type]
+        out.kinds.extend(batch.kinds[first:stop])  # type: ignore[attr-defined]
+        out.lines.extend(batch.lines[first:stop])  # type: ignore[attr-defined]
+        out.ends.extend(ends)  # type: ignore[attr-defined]
+        out.feeds.extend(batch.feeds[first:stop])  # type: ignore[attr-defined]
+        self.emitted = ends[-1]
+
+    def _collecting(self, source: Move | Batch, start: Pose) -> Batch:
+        """The batch being collected, if moves from ``source`` (same file, spindle, caller) may join it;
+        else a new one starting at ``start``, after handing on the one before."""
+        out = self.out
+        if out is None or (out.path, out.spindle, out.sync, out.caller) != (source.path, source.spindle,
+                                                                              source.sync, source.caller):
+            self._send()
+            out = self.out = Batch(source.path, start, [], [], [], [], source.spindle, None, source.sync,
+                                   source.caller)
+        return out
 
     def _send(self) -> None:
         """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
@@ -206,8 +255,7 @@ class CutterCompensation(Stage):
                         and abs(new_sweep) > abs(item.sweep) + self.sweep_slack):
                     raise _refuse(move, "an arc in an inside corner cannot be reached by the tool without gouging")
             elif move is not None and self.endpoint is not None:
-                dx, dy = point[0] - self.endpoint[0], point[1] - self.endpoint[1]
-                if item.direction[0] * dx + item.direction[1] * dy < 0:
+                if reverses(item.direction, self.endpoint, point):
                     raise _refuse(move, "a straight move in an inside corner cannot be reached by the tool "
                                        "without gouging (the tool is larger than the corner)")
             item.end = frame.pose(item.end, point)
@@ -235,26 +283,16 @@ class CutterCompensation(Stage):
             self.current = frame.pose(move.end, current)
             return
         side, radius = self.side, self.radius
-        theta = math.atan2(current[1] - start[1], current[0] - start[0])
-        alpha = math.atan2(target[1] - start[1], target[0] - start[0])
-        if side == LEFT:
-            if theta < alpha:
-                theta += 2 * math.pi
-            beta = theta - alpha - HALF_PI
-            gamma = HALF_PI
-        else:
-            if alpha < theta:
-                alpha += 2 * math.pi
-            beta = alpha - theta - HALF_PI
-            gamma = -HALF_PI
-        end = at(target, radius, alpha + gamma)
-        mid = at(start, radius, alpha + gamma)
+        theta, alpha, beta, gamma = line_corner(SCALAR, side, heading(SCALAR, start, current),
+                                                heading(SCALAR, start, target))
+        end = at(SCALAR, target, radius, alpha + gamma)
         front = self._front()
-        concave = beta < -CONCAVE_TOLERANCE or beta > math.pi + CONCAVE_TOLERANCE
+        concave = inside_corner(beta)
         if not concave and beta > math.pi - CONCAVE_TOLERANCE and front is not None and front.center is not None \
                 and ((side == RIGHT and front.turn > 0) or (side == LEFT and front.turn < 0)):
             concave = True  # over the round top of an "h": stay on the outside
-        if not concave and beta > CONCAVE_TOLERANCE:  # outside corner: round it
+        if not concave and outside_corner(beta):  # outside corner: round it
+            mid = at(SCALAR, start, radius, alpha + gamma)
             self._move_endpoint_and_flush(current, move)
             corner = frame.pose(move.end, mid, self.current[frame.normal])
             if move.kind == "linear":
@@ -266,11 +304,10 @@ class CutterCompensation(Stage):
             self.endpoint = mid
         elif concave:
             if front is None or front.center is None:
-                half_corner = (beta + math.pi) / 2.0
-                if half_corner == 0.0:
+                half = half_corner(beta)
+                if half == 0.0:
                     raise _refuse(move, "a zero-degree inside corner cannot be compensated")
-                retreat = radius / math.tan(half_corner)
-                self._move_endpoint_and_flush(at(current, retreat, theta + gamma), move)
+                self._move_endpoint_and_flush(cut_back(SCALAR, radius, current, theta, gamma, half), move)
             else:
                 self._move_endpoint_and_flush(self._arc_line_corner(front, start, target, move), move)
         else:  # straight on (or a tangent arc-line junction)
@@ -288,7 +325,7 @@ class CutterCompensation(Stage):
             raise _refuse(move, f"the entry move ({distance:.4f} mm in the plane) must be longer than the tool "
                                f"radius {self.radius:.4f} mm")
         alpha = math.atan2(target[1] - current[1], target[0] - current[0]) + HALF_PI * self.side
-        end = at(target, self.radius, alpha)
+        end = at(SCALAR, target, self.radius, alpha)
         self.endpoint = current
         self._enqueue(Queued(move, move.kind, self.frame.pose(move.end, end), move.feed,
                              direction=(math.cos(alpha), math.sin(alpha))))
@@ -314,7 +351,7 @@ class CutterCompensation(Stage):
         if not -1.0 <= ratio <= 1.0:
             raise _refuse(move, "the arc-to-line corner is too tight for the tool without gouging")
         sign = (-1 if prev.turn > 0 else 1) if inside else (1 if prev.turn > 0 else -1)
-        return at(prev.center, old, sign * math.acos(ratio) + theta + math.pi)
+        return at(SCALAR, prev.center, old, sign * math.acos(ratio) + theta + math.pi)
 
     # ---------------------------------------------------------------- arcs
     def _arc(self, move: Move) -> None:
@@ -347,19 +384,18 @@ class CutterCompensation(Stage):
         else:
             gamma = math.atan2(end_p[1] - center[1], end_p[0] - center[0])
             delta += math.pi
-        new_end = at(end_p, radius, gamma)
+        new_end = at(SCALAR, end_p, radius, gamma)
         sweep = find_turn(start, center, turn, end_p)
         arc_end = frame.pose(move.end, new_end)
-        if beta < -CONCAVE_TOLERANCE or beta > math.pi + CONCAVE_TOLERANCE \
-                or (abs(beta - math.pi) < CONCAVE_TOLERANCE and not inside):
+        if inside_corner(beta) or (abs(beta - math.pi) < CONCAVE_TOLERANCE and not inside):
             front = self._front()
             if front is None or front.center is None:
                 mid = self._line_arc_corner(center, arc_radius, theta, beta, turn, move)
             else:
                 mid = self._arc_arc_corner(front, center, arc_radius, turn, move)
             self._move_endpoint_and_flush(mid, move)
-        elif beta > CONCAVE_TOLERANCE:  # outside corner: round it first
-            corner = at(start, radius, delta)
+        elif outside_corner(beta):  # outside corner: round it first
+            corner = at(SCALAR, start, radius, delta)
             self._dequeue()
             self._enqueue(Queued(move, "arc", frame.pose(move.end, corner, self.current[frame.normal]),
                                  move.feed, center=start, turn=-1 if side == LEFT else 1))
@@ -383,7 +419,7 @@ class CutterCompensation(Stage):
             raise _refuse(move, f"the tool radius {self.radius:.4f} mm does not fit inside the arc of radius "
                                 f"{math.dist(center, end_p):.4f} mm")
         toward = (center, end_p) if tool_inside_arc(self.side, arc.turn) else (end_p, center)
-        end = at(end_p, self.radius, math.atan2(toward[0][1] - toward[1][1], toward[0][0] - toward[1][0]))
+        end = at(SCALAR, end_p, self.radius, math.atan2(toward[0][1] - toward[1][1], toward[0][0] - toward[1][0]))
         # the compensated arc's centre: on the line from its end towards the programmed centre,
         # equally far from the end and from the start (the tool)
         half = math.dist(current, end) / 2.0
@@ -391,7 +427,7 @@ class CutterCompensation(Stage):
         cosine = math.cos(math.atan2(current[1] - end[1], current[0] - end[0]) - towards_center)
         if abs(cosine) < 1e-4:
             raise _refuse(move, "the tool radius is not smaller than the radius of the entry arc")
-        new_center = at(end, half / cosine, towards_center)
+        new_center = at(SCALAR, end, half / cosine, towards_center)
         self.endpoint = None
         self._enqueue(Queued(move, "arc", frame.pose(move.end, end), move.feed, center=new_center,
                              turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end)))
@@ -414,7 +450,7 @@ class CutterCompensation(Stage):
             ratio = (offset - radius) / distance
             self._fits(ratio, move)
             angle = theta + math.pi - math.asin(ratio) if turn > 0 else theta + math.pi + math.asin(ratio)
-        return at(center, distance, angle)
+        return at(SCALAR, center, distance, angle)
 
     def _arc_arc_corner(self, prev: Queued, center: Point, arc_radius: float, turn: int, move: Move) -> Point:
         """Where two compensated arcs meet in an inside corner."""
@@ -430,7 +466,7 @@ class CutterCompensation(Stage):
         pullback = math.acos(ratio)
         direction = math.atan2(center[1] - prev.center[1], center[0] - prev.center[0])
         sign = (1 if turn > 0 else -1) if tool_inside_arc(self.side, prev.turn) else (-1 if turn > 0 else 1)
-        return at(prev.center, old, direction + sign * pullback)
+        return at(SCALAR, prev.center, old, direction + sign * pullback)
 
     @staticmethod
     def _fits(ratio: float, move: Move) -> None:

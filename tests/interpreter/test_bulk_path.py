@@ -9,6 +9,7 @@ and errors are compared.
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
@@ -18,6 +19,7 @@ from hypothesis import strategies as st
 from edingcnc_lang import EcncError, Event, Move, RunOptions, run_file, run_string
 from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
+from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 
 numbers = st.one_of(st.integers(-200, 200).map(str),
                     st.floats(-200, 200, allow_nan=False).map(lambda v: f"{v:.3f}"),
@@ -57,7 +59,11 @@ def _outcome(run) -> tuple:  # type: ignore[no-untyped-def]
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(jobs, st.booleans())
-def test_bulk_and_general_paths_agree(tmp_path: Path, lines: list[str], zhc: bool) -> None:
+def test_bulk_and_general_paths_agree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, lines: list[str],
+                                      zhc: bool) -> None:
+    # compensation takes even short batches as arrays here (comp_runs), so the general path checks that too
+    monkeypatch.setattr(CutterCompensation, "long_run", 2)
+    monkeypatch.setattr(CutterCompensation, "numpy_after", 0)
     text = (ZHC_HEADER if zhc else "") + "\n".join([*lines, "GetJobDistance 101"]) + "\n"
     job = tmp_path / "job.nc"
     job.write_text(text)
@@ -67,8 +73,26 @@ def test_bulk_and_general_paths_agree(tmp_path: Path, lines: list[str], zhc: boo
     assert bulk == general
 
 
+def _contour(side: str, plane: str) -> str:
+    """A compensated arc of a circle in 120 segments, counter-clockwise (straight on, then corners of
+    0.09 rad: inside on the left, outside on the right), with a plunge and a rapid in it."""
+    a, b = {"G17": "XY", "G18": "ZX", "G19": "YZ"}[plane]
+    angles = [k * 0.01 for k in range(60)] + [0.6 + k * 0.09 for k in range(60)]
+    lines = [f"{plane} G0 {a}45 {b}-20", f"{side} D2", f"G1 {a}30 {b}0 F800"]
+    for k, angle in enumerate(angles):
+        lines.append(f"{a}{30 * math.cos(angle):.4f} {b}{30 * math.sin(angle):.4f}")
+        if k == 70:
+            lines.append("G1 Z-1" if plane == "G17" else "G1 Y-1" if plane == "G18" else "G1 X-1")
+        if k == 90:
+            lines.append("G0")
+    lines += ["G40", f"G1 {a}0 {b}0", "M30"]
+    return "\n".join(lines) + "\n"
+
+
 @pytest.mark.parametrize("source", ["G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n",
-                                    "M3 S900\nG68 X1 Y1 R30\nG1 X1 F100\nY2\nG51 P2\nX3 Y3\n"])
+                                    "M3 S900\nG68 X1 Y1 R30\nG1 X1 F100\nY2\nG51 P2\nX3 Y3\n",
+                                    _contour("G41.1", "G17"), _contour("G42.1", "G17"), _contour("G41.1", "G18"),
+                                    "G20\n" + _contour("G42.1", "G19")])
 def test_bulk_trace_matches_the_general_trace(tmp_path: Path, source: str) -> None:
     job = tmp_path / "job.nc"
     job.write_text(source)

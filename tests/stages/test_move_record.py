@@ -7,7 +7,9 @@ line.  The runs at the end are the two defects that dropped those fields.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import fields
+from random import Random
 from pathlib import Path
 
 import pytest
@@ -16,7 +18,7 @@ from hypothesis import strategies as st
 from stage_helpers import Recorder, pose
 
 from edingcnc_lang import RunOptions, run_file, run_string
-from edingcnc_lang.canon import Batch, Event, Move
+from edingcnc_lang.canon import PLANES, Batch, Event, Move
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.config.heightmap import HeightMap
@@ -112,6 +114,104 @@ def test_a_stage_keeps_every_field_of_a_batch_it_does_not_own(factory: type[Stag
                   sync, caller)
     assert list(batch.moves()) == programmed  # the array form of the very same records
     _assert_kept(factory, programmed, _through(factory, lambda stage: stage.straight_moves(batch)))
+
+
+# --------------------------------------------------------------------------- compensation in batches
+# A contour as a random walk: each step turns by some angle (straight on, inside and outside corners,
+# folds back) and goes some length; length 0 is a plunge (no motion in the plane).
+compensations = st.tuples(st.sampled_from(["left", "right"]), st.sampled_from([0.25, 1.0, 3.0]),
+                          st.sampled_from(["XY", "XY", "XZ", "YZ"]))
+
+
+def _step(rng: Random) -> tuple[str, float, float, float]:
+    roll = rng.random()
+    turn = (rng.uniform(-1.2, 1.2) if roll < 0.7 else rng.uniform(-0.06, 0.06) if roll < 0.85
+            else rng.choice([0.0, 1e-9, 2.6, -2.6, math.pi]))
+    roll = rng.random()
+    length = rng.uniform(2.0, 12.0) if roll < 0.85 else rng.uniform(0.2, 2.0) if roll < 0.95 else 0.0
+    return rng.choice(["linear", "linear", "linear", "rapid"]), turn, length, rng.choice([0.0, 0.0, -1.0])
+
+
+def _walk(items: list, spindle: tuple, plane: str) -> list[Move]:  # type: ignore[type-arg]
+    rpm, css, sync, caller = spindle
+    first, second, normal = PLANES[plane]
+    heading, point, depth = 0.3, [0.0, 0.0], 0.0
+    start, made = pose(), []
+    for number, (kind, turn, length, dz) in enumerate(items, 2):
+        heading += turn
+        point = [point[0] + length * math.cos(heading), point[1] + length * math.sin(heading)]
+        depth += dz if length == 0.0 else 0.0
+        end = [0.0] * 6
+        end[first], end[second], end[normal] = point[0], point[1], depth
+        made.append(Move(kind, "job.nc", number, start, tuple(end), 500.0 if kind == "linear" else 0.0, None,
+                         css.rpm(end[0]) if css is not None else rpm, css, sync, caller))
+        start = tuple(end)
+    return made
+
+
+def _compensated(programmed: list[Move], comp: tuple[str, float, str], send: object) -> tuple:  # type: ignore[type-arg]
+    side, radius, plane = comp
+    sink = Recorder()
+    stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
+    stage.event(Event("cutter_comp", "job.nc", 1, {"side": side, "radius": radius, "plane": plane}))
+    error = None
+    try:
+        send(stage)  # type: ignore[operator]
+        stage.event(Event("cutter_comp", "job.nc", 99, {"side": "off"}))
+        stage.flush()
+    except MachineError as err:
+        error = err.format()
+    return sink.moves(), error
+
+
+@settings(max_examples=150, deadline=None)
+@given(rng=st.randoms(use_true_random=False), count=st.integers(1, 80), spindle=spindles, comp=compensations,
+       cuts=st.lists(st.integers(1, 79), max_size=4), long_run=st.sampled_from([1, 2, 5]))
+def test_compensation_in_batches_gives_the_moves_of_compensation_move_by_move(
+        rng: Random, count: int, spindle: tuple, comp: tuple, cuts: list[int], long_run: int) -> None:  # type: ignore[type-arg]
+    """Runs of corners as arrays (comp_runs) give the very moves, bit for bit, and the same refusals;
+    the batches are cut anywhere (the interpreter's batches end at any line)."""
+    programmed = _walk([_step(rng) for _ in range(count)], spindle, comp[2])
+    rpm, css, sync, caller = spindle
+
+    def one_by_one(stage: Stage) -> None:
+        for move in programmed:
+            stage.move(move)
+
+    def in_batches(stage: Stage) -> None:
+        bounds = sorted({0, len(programmed), *(cut for cut in cuts if cut < len(programmed))})
+        for low, high in zip(bounds, bounds[1:]):
+            part = programmed[low:high]
+            stage.straight_moves(Batch("job.nc", part[0].start, [m.kind for m in part], [m.line for m in part],
+                                       [m.end for m in part], [m.feed for m in part], rpm if css is None else 0.0,
+                                       css, sync, caller))
+
+    alone = _compensated(programmed, comp, one_by_one)
+    defaults = CutterCompensation.long_run, CutterCompensation.numpy_after
+    CutterCompensation.long_run, CutterCompensation.numpy_after = long_run, 0
+    try:
+        batched = _compensated(programmed, comp, in_batches)
+    finally:
+        CutterCompensation.long_run, CutterCompensation.numpy_after = defaults
+    assert batched == alone
+
+
+def test_a_long_contour_goes_on_in_batches_and_gives_the_moves_one_by_one() -> None:
+    """The real threshold: a 200-segment spiral (straight on, then inside corners) leaves the stage as batches."""
+    items = [("linear", 0.01, 5.0, 0.0)] * 100 + [("linear", 0.3, 4.0, 0.0)] * 100
+    programmed = _walk(items, (1000.0, None, 0.0, 0), "XY")
+    batch = Batch("job.nc", pose(), [m.kind for m in programmed], [m.line for m in programmed],
+                  [m.end for m in programmed], [m.feed for m in programmed], 1000.0)
+    alone = _compensated(programmed, ("left", 1.0, "XY"), lambda stage: [stage.move(m) for m in programmed])
+    sink = Recorder()
+    stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
+    stage.numpy_after = 0
+    stage.event(Event("cutter_comp", "job.nc", 1, {"side": "left", "radius": 1.0, "plane": "XY"}))
+    stage.straight_moves(batch)
+    assert [(kind, len(what)) for kind, what in sink.log[1:]] == [("batch", 199)]  # the last one held back
+    stage.event(Event("cutter_comp", "job.nc", 99, {"side": "off"}))
+    stage.flush()
+    assert (sink.moves(), None) == alone
 
 
 def test_a_single_move_is_a_batch_of_one() -> None:
