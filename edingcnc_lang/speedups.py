@@ -25,8 +25,20 @@ def _compiled() -> Any:
     return _speedups
 
 
+def _core_name(core: Any) -> str:
+    """What ``ecnc --version`` reports: "compiled" when both extensions are built (``_speedups``, and
+    ``_lexer`` for the macro line reader), "python" when neither runs, else which one is missing."""
+    if core is None:
+        return "python"
+    try:  # the parser loads it anyway
+        from edingcnc_lang import _lexer  # type: ignore[attr-defined]  # noqa: F401
+    except ImportError:
+        return "compiled (without _lexer)"
+    return "compiled"
+
+
 _CORE = _compiled()
-CORE = "compiled" if _CORE is not None else "python"  # what ``ecnc --version`` reports
+CORE = _core_name(_CORE)
 
 
 def _pick(name: str, module: str) -> Any:
