@@ -22,10 +22,9 @@ from functools import cached_property
 from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Batch, Event, Move, Pose
+from edingcnc_lang.canon import AXES, Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location, MachineError, PluginError
-from edingcnc_lang.machine.geometry import arc_extremes, sweep
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
 from edingcnc_lang.kinematics.builtin import (
@@ -35,6 +34,7 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, Geometry, dynamics, geometry_of
+from edingcnc_lang.motion.reach import reach_points
 
 _T = TypeVar("_T")
 
@@ -445,30 +445,10 @@ class MotionStage:
 
     def _check_exact(self, move: Move) -> None:
         """Joints = position: the end point and an arc's extremes bound the whole move."""
-        points = [move.end]
-        if move.arc is not None:
-            first, second, _ = PLANES[move.arc.plane]
-            geo = geometry_of(move)
-            assert geo.center is not None
-            center = (geo.center[first], geo.center[second])
-            s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
-            clockwise = move.arc.turn < 0
-            radius = math.hypot(s[0] - center[0], s[1] - center[1])
-            lower, upper = self._lower, self._upper
-            if lower[first] <= center[0] - radius and center[0] + radius <= upper[first] \
-                    and lower[second] <= center[1] - radius and center[1] + radius <= upper[second]:
-                extremes = []  # the whole circle is inside: so is every point of the arc
-            else:  # the interpreter's decision: a full circle, or the arc between its ends (never a circle)
-                angle = 2 * math.pi if move.arc.full_turns else sweep(s, center, e, clockwise, -1.0, r_form=True)[0]
-                start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
-                extremes = arc_extremes(center, radius, start_angle, angle, clockwise)
-            for p1, p2 in extremes:
-                extreme = list(move.end)
-                extreme[first], extreme[second] = p1, p2
-                points.append(as_pose(extreme))
-        for point in points:
+        lower, upper = self._lower, self._upper
+        for point in reach_points(move, lower, upper):
             for axis, value in enumerate(point):
-                if not self._lower[axis] <= value <= self._upper[axis]:
+                if not lower[axis] <= value <= upper[axis]:
                     raise self._limit_error(move, axis, value)
 
     def _check_samples(self, move: Move, samples: Samples, start_time: float) -> None:
