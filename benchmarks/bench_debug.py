@@ -90,12 +90,7 @@ def pause_latency(job: Path) -> float:
     client.until("stopped")
     client.send("continue", threadId=1)
     time.sleep(0.5)
-    start = time.perf_counter()
-    client.send("pause", threadId=1)
-    client.until("stopped")
-    elapsed = time.perf_counter() - start
-    client.close()
-    return elapsed
+    return _timed(client, "pause")
 
 
 def step_back(job: Path, line: int, after_next: bool = False) -> float:
@@ -106,8 +101,13 @@ def step_back(job: Path, line: int, after_next: bool = False) -> float:
     if after_next:
         client.send("next", threadId=1)
         client.until("stopped")
+    return _timed(client, "stepBack")
+
+
+def _timed(client: Client, command: str) -> float:
+    """Seconds from sending ``command`` to the ``stopped`` event it leads to; then the session ends."""
     start = time.perf_counter()
-    client.send("stepBack", threadId=1)
+    client.send(command, threadId=1)
     client.until("stopped")
     elapsed = time.perf_counter() - start
     client.close()

@@ -77,6 +77,15 @@ def sweep(start: tuple[float, float], center: tuple[float, float], end: tuple[fl
     return delta, 0
 
 
+def circle_within(center: tuple[float, float], radius: float, axes: tuple[int, int],
+                  low: Sequence[float], high: Sequence[float]) -> bool:
+    """Whether the whole circle (in the plane of ``axes``) lies within ``low``..``high``: then no point
+    of an arc on it, its extremes included, can be outside (rounding is monotonic, so the extremes
+    ``arc_extremes`` computes lie within centre +- radius too)."""
+    (cu, cv), (u, v) = center, axes
+    return low[u] <= cu - radius and cu + radius <= high[u] and low[v] <= cv - radius and cv + radius <= high[v]
+
+
 def arc_extremes(center: tuple[float, float], radius: float, start_angle: float, sweep_angle: float,
                  clockwise: bool) -> list[tuple[float, float]]:
     """In-plane points where the arc reaches its extremes along each axis (for exact limit checks)."""

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from edingcnc_lang.canon import PLANES, Move, Pose
 from edingcnc_lang.kinematics.base import as_pose
 from edingcnc_lang.kinematics.trajectory import geometry_of
-from edingcnc_lang.machine.geometry import arc_extremes, sweep
+from edingcnc_lang.machine.geometry import arc_extremes, circle_within, sweep
 
 
 def reach_points(move: Move, lower: Sequence[float], upper: Sequence[float]) -> list[Pose]:
@@ -27,8 +27,7 @@ def reach_points(move: Move, lower: Sequence[float], upper: Sequence[float]) -> 
     center = (geo.center[first], geo.center[second])
     s, e = (move.start[first], move.start[second]), (move.end[first], move.end[second])
     radius = math.hypot(s[0] - center[0], s[1] - center[1])
-    if lower[first] <= center[0] - radius and center[0] + radius <= upper[first] \
-            and lower[second] <= center[1] - radius and center[1] + radius <= upper[second]:
+    if circle_within(center, radius, (first, second), lower, upper):
         return points
     clockwise = move.arc.turn < 0
     # the interpreter's decision: a full circle, or the arc between its ends (never a circle)

@@ -55,26 +55,25 @@ class LspClient:
 
     # ----------------------------------------------------------------- messages
     def request(self, method: str, params: Any = None) -> Any:
-        self._next += 1
-        ident = self._next
-        self._send({"id": ident, "method": method, "params": params})
-        while True:
-            message = self._take()
-            if message.get("id") == ident and "method" not in message:
-                assert "error" not in message, message["error"]
-                return message.get("result")
-            self._keep(message)
+        message = self._reply(method, params)
+        assert "error" not in message, message["error"]
+        return message.get("result")
 
     def request_error(self, method: str, params: Any = None) -> dict[str, Any]:
         """A request the server must refuse: its error (code and message)."""
+        message = self._reply(method, params)
+        assert "error" in message, message
+        return message["error"]
+
+    def _reply(self, method: str, params: Any) -> dict[str, Any]:
+        """Send a request and wait for its response, keeping what else arrives meanwhile."""
         self._next += 1
         ident = self._next
         self._send({"id": ident, "method": method, "params": params})
         while True:
             message = self._take()
             if message.get("id") == ident and "method" not in message:
-                assert "error" in message, message
-                return message["error"]
+                return message
             self._keep(message)
 
     def notify(self, method: str, params: Any = None) -> None:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.machine.geometry import arc_extremes
+from edingcnc_lang.machine.geometry import arc_extremes, circle_within
 from edingcnc_lang.kinematics.trajectory import Geometry
 
 if TYPE_CHECKING:
@@ -40,8 +40,7 @@ class LimitsReport:
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
         # an arc whose whole circle lies within what the end points reach cannot reach further
         inside_low, inside_high = np.minimum(low, self.axis_low).tolist(), np.maximum(high, self.axis_high).tolist()
-        extremes = [point for geometry in arcs.values() if not _circle_within(geometry, inside_low, inside_high)
-                    for point in _arc_extremes(geometry)]
+        extremes = [point for geometry in arcs.values() for point in _arc_extremes(geometry, inside_low, inside_high)]
         if extremes:
             low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())
@@ -88,17 +87,14 @@ def _table(low: list[float], high: list[float], lower: list[float], upper: list[
     return table
 
 
-def _circle_within(geometry: Geometry, low: list[float], high: list[float]) -> bool:
+def _arc_extremes(geometry: Geometry, low: list[float] | None = None,
+                  high: list[float] | None = None) -> list[list[float]]:
+    """Points where an arc reaches its extremes in its plane (its ends are counted already); none when
+    its whole circle lies within ``low``..``high``, which they could then not widen."""
     frame = geometry.frame
     radius = max(frame.r0, frame.r1)
-    (cu, cv), u, v = frame.center, frame.u, frame.v
-    return low[u] <= cu - radius and cu + radius <= high[u] and low[v] <= cv - radius and cv + radius <= high[v]
-
-
-def _arc_extremes(geometry: Geometry) -> list[list[float]]:
-    """Points where an arc reaches its extremes in its plane (its ends are counted already)."""
-    frame = geometry.frame
-    radius = max(frame.r0, frame.r1)
+    if low is not None and high is not None and circle_within(frame.center, radius, (frame.u, frame.v), low, high):
+        return []
     sweep = abs(frame.sweep)
     clockwise = frame.sweep < 0.0
     rows = []
