@@ -35,7 +35,7 @@ def timed(name):
         finally:
             spent[0] += time.perf_counter() - start
     setattr(stage.Planner, name, call)
-for name in ("move", "straight_moves", "event", "flush", "close"):
+for name in ("move", "move_batch", "event", "flush", "close"):
     timed(name)
 import numpy  # loaded by the first planned window in a normal run; loaded here so it is not counted
 start = time.perf_counter()
@@ -60,7 +60,7 @@ planner = Planner(MachineConfig.default(), [], Overrides())
 start = time.perf_counter()
 for first in range(0, count, 500):
     part = ends[first:first + 500]
-    planner.straight_moves(Batch("job", (0.0,) * 6 if not first else ends[first - 1], ["linear"] * len(part),
+    planner.move_batch(Batch("job", (0.0,) * 6 if not first else ends[first - 1], ["linear"] * len(part),
                                  list(range(first, first + len(part))), part, [1000.0] * len(part)),
                            {"rapid": limits, "linear": limits})
 planner.close()

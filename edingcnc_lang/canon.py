@@ -95,19 +95,21 @@ class Move:
 
 @dataclass(frozen=True, slots=True)
 class Batch:
-    """Straight moves in bulk: the array form of ``Move`` (a single straight move is a batch of one).
+    """Moves in bulk: the array form of ``Move`` (a single move is a batch of one).
 
-    The per-move fields are columns (``kinds``, ``lines``, ``ends``, ``feeds``); the fields a run
-    of moves shares are kept once (``path``, and the spindle state: ``spindle``, ``css``, ``sync``,
-    ``caller``).  Move ``i`` starts where move ``i - 1`` ended, the first at ``start``; its spindle
-    speed is ``css.rpm(end x)`` under constant surface speed, else ``spindle``.  ``move(i)`` and
-    ``moves()`` give the very ``Move`` records the general path would have made.  A stage changes
-    what it owns with ``dataclasses.replace`` here as it does on a ``Move``.
+    The per-move fields are columns (``kinds``, ``lines``, ``ends``, ``feeds`` and ``arcs``, the
+    circle data of the arcs among them; ``arcs`` is None when every move is straight, the common
+    case); the fields a run of moves shares are kept once (``path``, and the spindle state:
+    ``spindle``, ``css``, ``sync``, ``caller``).  Move ``i`` starts where move ``i - 1`` ended, the
+    first at ``start``; its spindle speed is ``css.rpm(end x)`` under constant surface speed, else
+    ``spindle``.  ``move(i)`` and ``moves()`` give the very ``Move`` records the general path would
+    have made.  A stage changes what it owns with ``dataclasses.replace`` here as it does on a
+    ``Move``.
     """
 
     path: str
     start: Pose
-    kinds: Sequence[str]   # "rapid" | "linear"
+    kinds: Sequence[str]   # "rapid" | "linear" | "arc"
     lines: Sequence[int]
     ends: Sequence[Pose]
     feeds: Sequence[float]
@@ -115,6 +117,7 @@ class Batch:
     css: Css | None = None
     sync: float = 0.0
     caller: int = 0
+    arcs: Sequence[Arc | None] | None = None  # None: no arcs (every move straight)
 
     def __len__(self) -> int:
         return len(self.lines)
@@ -128,7 +131,8 @@ class Batch:
         """Move ``index`` as a record, starting at ``start`` (where move ``index - 1`` ended)."""
         end = self.ends[index]
         css = self.css
-        return Move(self.kinds[index], self.path, self.lines[index], start, end, self.feeds[index], None,
+        return Move(self.kinds[index], self.path, self.lines[index], start, end, self.feeds[index],
+                    None if self.arcs is None else self.arcs[index],
                     css.rpm(end[0]) if css is not None else self.spindle, css, self.sync, self.caller)
 
     def moves(self) -> Iterator[Move]:
@@ -144,22 +148,23 @@ class Batch:
         if count >= len(self.lines):
             return self
         return replace(self, kinds=self.kinds[:count], lines=self.lines[:count], ends=self.ends[:count],
-                       feeds=self.feeds[:count])
+                       feeds=self.feeds[:count], arcs=None if self.arcs is None else self.arcs[:count])
 
     def tail(self, count: int) -> Batch:
         """The moves after the first ``count``, starting where those ended."""
         start = self.ends[count - 1] if count else self.start
         return replace(self, start=start, kinds=self.kinds[count:], lines=self.lines[count:],
-                       ends=self.ends[count:], feeds=self.feeds[count:])
+                       ends=self.ends[count:], feeds=self.feeds[count:],
+                       arcs=None if self.arcs is None else self.arcs[count:])
 
     @classmethod
     def of(cls, move: Move) -> Batch:
-        """A straight move as a batch of one."""
-        if move.arc is not None or move.kind not in ("rapid", "linear"):
-            raise ValueError(f"a batch holds straight moves only, not a {move.kind} move")
+        """A rapid, feed or arc move as a batch of one."""
+        if move.kind not in ("rapid", "linear", "arc"):
+            raise ValueError(f"a batch holds rapids, feed moves and arcs, not a {move.kind} move")
         spindle = 0.0 if move.css is not None else move.spindle
         return cls(move.path, move.start, (move.kind,), (move.line,), (move.end,), (move.feed,),
-                   spindle, move.css, move.sync, move.caller)
+                   spindle, move.css, move.sync, move.caller, None if move.arc is None else (move.arc,))
 
 
 @dataclass(frozen=True, slots=True)
@@ -178,8 +183,8 @@ class Canon(Protocol):
     def move(self, move: Move) -> None:
         """Execute a move (called in program order)."""
 
-    def straight_moves(self, batch: Batch) -> None:
-        """Straight moves in bulk: the same as one ``move`` per ``batch.moves()``, so the common case costs less."""
+    def move_batch(self, batch: Batch) -> None:
+        """Moves in bulk: the same as one ``move`` per ``batch.moves()``, so the common case costs less."""
 
     def event(self, event: Event) -> None:
         """Record a non-motion event."""

@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from edingcnc_lang.canon import PLANES, Move
+from edingcnc_lang.canon import PLANES, Arc, Move, Pose
 
 if TYPE_CHECKING:
     import numpy as np
@@ -76,21 +76,26 @@ class Geometry:
 
 
 def geometry_of(move: Move) -> Geometry:
-    """The path of a canon move (arcs: centre in all three linear axes, normal axis, signed turns).
+    """The path of a canon move (arcs: centre in all three linear axes, normal axis, signed turns)."""
+    if move.arc is None:
+        return Geometry(move.start, move.end)
+    return arc_geometry(move.start, move.end, move.arc)
+
+
+def arc_geometry(start: Pose, end: Pose, arc: Arc) -> Geometry:
+    """The path of an arc from ``start`` to ``end``, for callers that hold no ``Move`` (a batch's columns).
 
     Whether an arc is a full circle was decided once, by the interpreter (``Arc.full_turns``); the
     path follows that decision, never an angle epsilon of its own."""
-    if move.arc is None:
-        return Geometry(move.start, move.end)
-    first, second, normal = PLANES[move.arc.plane]
-    c1, c2 = move.arc.center
-    if move.arc.plane == "XZ":  # the canon names the XZ centre (x, z); the plane's order is (z, x)
+    first, second, normal = PLANES[arc.plane]
+    c1, c2 = arc.center
+    if arc.plane == "XZ":  # the canon names the XZ centre (x, z); the plane's order is (z, x)
         c1, c2 = c2, c1
-    center = list(move.start[:3])
+    center = list(start[:3])
     center[first], center[second] = c1, c2
-    turns = move.arc.turn * max(1, move.arc.full_turns)
-    full = math.inf if move.arc.full_turns else -1.0  # as arc_sweep's epsilon: always, or never (ends differ)
-    return Geometry(move.start, move.end, (center[0], center[1], center[2]), normal, turns, full)
+    turns = arc.turn * max(1, arc.full_turns)
+    full = math.inf if arc.full_turns else -1.0  # as arc_sweep's epsilon: always, or never (ends differ)
+    return Geometry(start, end, (center[0], center[1], center[2]), normal, turns, full)
 
 
 @dataclass(frozen=True)

@@ -19,14 +19,29 @@ from collections.abc import Sequence
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
-from edingcnc_lang.canon import Batch
+from edingcnc_lang.canon import Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, plain_block, plain_words
-from edingcnc_lang.machine.state import G_0, G_1, G_91, G_94, MachineState, StatementTable
+from edingcnc_lang.machine.geometry import ArcError
+from edingcnc_lang.machine.state import (
+    AXIS_SET,
+    CENTER_WORDS,
+    G_0,
+    G_1,
+    G_2,
+    G_3,
+    G_91,
+    G_94,
+    PLANE_OF,
+    MachineState,
+    StatementTable,
+)
 
 NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
 _AXIS_OF = {letter: axis for axis, letter in enumerate("XYZABC")}
 _NO_AXES = (None,) * 6
+# The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
+_ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 # The usual order of a CAM line's words, [G] [X] [Y] [Z] [A] [B] [C] [F], matched at once; the words
 # are line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.
 _VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
@@ -167,36 +182,114 @@ class BulkPath(MachineState):
                     or self.css_setting is not None or self.config.lathe)
 
     def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
-        """Execute lines[first:] as long as each is a plain G0/G1 move; returns the first it left."""
-        motion = self.modal["motion"]
+        """Execute lines[first:] as long as each is a plain G0/G1 move or arc; returns the first it left.
+
+        ``plain_moves`` takes the straight lines; a line it stops at may be an arc (``_plain_arc``),
+        which joins the same batch, and the straight lines after it are scanned on.
+        """
+        start = tuple(self.pos)
         budget = self.max_steps
         room = len(lines) if budget is None else budget - self.steps  # statements left in the step budget
-        index, done, motion, feed, kinds, numbers, ends, feeds, in_force = speedups.plain_moves(
-            lines, first, self.pos, self.offset(), self.scale, self.modal["distance"] == G_91,
-            motion if motion in (G_0, G_1) else NO_MOTION, self.feed, room)
-        self.steps += done
+        offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
+        motion, feed, pos = self.modal["motion"], self.feed, start
+        kinds: list[str] = []
+        numbers: list[int] = []
+        ends: list[Pose] = []
+        feeds: list[float] = []
+        in_force: list[float] = []
+        arcs: list[Arc | None] | None = None
+        index = first
+        while True:
+            index, done, after, feed, *columns = speedups.plain_moves(
+                lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
+                feed, room)
+            room -= done
+            if after != NO_MOTION:
+                motion = after
+            if columns[1]:
+                for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
+                    column.extend(values)  # type: ignore[attr-defined]
+                if arcs is not None:
+                    arcs.extend([None] * len(columns[1]))
+                pos = ends[-1]
+            if index >= len(lines) or room <= 0:
+                break
+            taken = self._plain_arc(lines[index][1], pos, motion, feed)
+            if taken is None:
+                break
+            motion, feed, end, arc = taken
+            if arcs is None:
+                arcs = [None] * len(numbers)
+            kinds.append("arc")
+            numbers.append(lines[index][0])
+            ends.append(end)
+            feeds.append(feed)
+            in_force.append(feed)
+            arcs.append(arc)
+            pos = end
+            room -= 1
+            index += 1
+        self.steps += index - first
         if numbers:
             rpm, _css = self.spindle_along()
             self.path, self.line = path, numbers[-1]
             try:
-                self.canon.straight_moves(Batch(path, tuple(self.pos), kinds, numbers, ends, feeds,
-                                                rpm, None, 0.0, self.caller()))
+                self.canon.move_batch(Batch(path, start, kinds, numbers, ends, feeds, rpm, None, 0.0, self.caller(),
+                                            arcs))
             except EcncError as err:  # a move was refused: the state is that of the move before it
                 failed = next((k for k, number in enumerate(numbers)
                                if err.location is not None and number == err.location.line), 0)
-                self.travelled(self.pos, ends[:failed])
-                if failed:
-                    self.pos = list(ends[failed - 1])
+                self.travelled(start, ends[:failed], None if arcs is None else arcs[:failed])
+                self.pos = list(ends[failed - 1] if failed else start)
                 self.feed = in_force[failed]
-                self.modal["motion"] = G_1 if kinds[failed] == "linear" else G_0
+                self.modal["motion"] = self._motion_of(kinds[failed], None if arcs is None else arcs[failed])
                 self.line = numbers[failed]
                 raise
-            self.travelled(self.pos, ends)
-            self.pos = list(ends[-1])
+            self.travelled(start, ends, arcs)
+        self.pos = list(pos)
         self.feed = feed
         if motion != NO_MOTION:
             self.modal["motion"] = motion
         return index
+
+    def _plain_arc(self, text: str, start: Pose, motion: int, feed: float) -> tuple[int, float, Pose, Arc] | None:
+        """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
+        words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
+        after it.  None for any other line, and for an arc the general path would refuse (it reports it).
+        """
+        words: dict[str, float] = {}
+        for letter, number in plain_words(text):
+            letter = letter.upper()
+            if letter in words:
+                return None
+            words[letter] = float(number)
+        code = words.pop("G", None)
+        if code is not None:
+            motion = G_2 if code == 2.0 else G_3 if code == 3.0 else NO_MOTION
+        words.pop("N", None)
+        plane = PLANE_OF[self.modal["plane"]]
+        if motion not in (G_2, G_3) or AXIS_SET.isdisjoint(words) or self.config.absolute_center_coords \
+                or not words.keys() <= _ARC_LETTERS[plane]:
+            return None
+        if "F" in words:
+            if words["F"] < 0:
+                return None
+            feed = words["F"] * self.scale
+        if feed <= 0 or ("R" in words and not words.keys().isdisjoint(CENTER_WORDS[plane])):
+            return None
+        self.pos = list(start)
+        end = self._target(words)
+        try:
+            plan = self.arc_plan(plane, (motion == G_2) != self.config.reverse_g2g3, start, end, words)
+        except ArcError:
+            return None
+        return motion, feed, tuple(end), plan.arc
+
+    def _motion_of(self, kind: str, arc: Arc | None) -> int:
+        """The motion mode a move of the bulk path was made in."""
+        if arc is not None:
+            return G_2 if (arc.turn < 0) != self.config.reverse_g2g3 else G_3
+        return G_1 if kind == "linear" else G_0
 
 
 # The statements this part executes (machine.py builds the dispatch table from every part's).

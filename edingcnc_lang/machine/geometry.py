@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from typing import NamedTuple
 
+from edingcnc_lang.canon import Arc
 from edingcnc_lang.machine.tables import MM_PER_INCH
 
 # A start/end radius difference up to this much is accepted (in the program's units, or a fraction
@@ -20,7 +22,20 @@ TINY = 1e-12
 
 
 class ArcError(ValueError):
-    """Arc words that describe no circle; the message is for the user."""
+    """Arc words that describe no circle; the message is for the user, ``center`` the centre when it is known."""
+
+    def __init__(self, message: str, center: tuple[float, float] | None = None) -> None:
+        super().__init__(message)
+        self.center = center
+
+
+class ArcPlan(NamedTuple):
+    """An arc as a line's words describe it: its record, its centre (in-plane), swept angle and path length."""
+
+    arc: Arc
+    center: tuple[float, float]
+    angle: float
+    length: float
 
 
 def radius_tolerance(inch: bool) -> float:

@@ -2,12 +2,12 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import PLANES, Arc
-from edingcnc_lang.machine.geometry import ArcError, center_from_radius, check_radius, radius_tolerance, sweep
+from edingcnc_lang.machine.geometry import ArcError, ArcPlan, center_from_radius, check_radius, radius_tolerance, sweep
 from edingcnc_lang.host import checked_trip
 from edingcnc_lang.machine.state import (
     AXIS_SET,
@@ -88,50 +88,59 @@ class Moves(MachineState):
 
     def _arc(self, motion: int, words: Mapping[str, float], span: n.Span) -> None:
         plane = PLANE_OF[self.modal["plane"]]
-        first, second, normal = PLANES[plane]
+        first, second, _ = PLANES[plane]
         clockwise = (motion == G_2) != self.config.reverse_g2g3
         end = self._target(words)
-        start = self.pos
-        s = (start[first], start[second])
-        e = (end[first], end[second])
-        scale = self.scale
-        center: tuple[float, float] | None = None
-        tolerance = radius_tolerance(self.inch)
         try:
-            if "R" in words:
-                center = center_from_radius(s, e, words["R"] * scale, clockwise, tolerance)
-            else:
-                w1, w2 = CENTER_WORDS[plane]
-                if w1 not in words and w2 not in words:
-                    raise ArcError(f"an arc needs R or centre words {w1}/{w2} in the {plane} plane")
-                if self.config.absolute_center_coords:
-                    work = self.work_position()
-                    work[first], work[second] = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
-                    if self.diameter_mode and 0 in (first, second):  # an absolute X centre is a diameter too
-                        work[0] /= 2.0
-                    machine = self.to_machine(work)
-                    center = (machine[first], machine[second])
-                else:
-                    d1, d2 = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
-                    center = (s[0] + d1, s[1] + d2)
-                check_radius(s, center, e, tolerance)
+            plan = self.arc_plan(plane, clockwise, self.pos, end, words)
         except ArcError as err:
-            where = (f"start ({fmt_point(s)})" + (f", centre ({fmt_point(center)})" if center else "")
+            s, e = (self.pos[first], self.pos[second]), (end[first], end[second])
+            where = (f"start ({fmt_point(s)})" + (f", centre ({fmt_point(err.center)})" if err.center else "")
                      + f", end ({fmt_point(e)})")
             raise self.fail(f"{err}; {where} in the {plane} plane", span) from None
-        assert center is not None
-        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon, "R" in words, tolerance)
-        radius = math.hypot(s[0] - center[0], s[1] - center[1])
-        along = end[normal] - start[normal]
-        length = math.hypot(radius * angle, along)
-        feed = self._feed_for(length, words, span, self._arc_xs(plane, s, center, angle, clockwise))
-        named = (center[1], center[0]) if plane == "XZ" else center
+        s, center = (self.pos[first], self.pos[second]), plan.center
+        feed = self._feed_for(plan.length, words, span, self._arc_xs(plane, s, center, plan.angle, clockwise))
         if self.tanknife and plane == "XY":  # the knife follows the tangent all along the arc
             normal_deg = -90.0 if clockwise else 90.0
             start_tangent = math.degrees(math.atan2(s[1] - center[1], s[0] - center[0])) + normal_deg
             c_start = self._knife_align(start_tangent)
-            end[5] = c_start + math.degrees(angle) * (-1.0 if clockwise else 1.0)
-        self._move("arc", end, feed, Arc(named, plane, -1 if clockwise else 1, full))
+            end[5] = c_start + math.degrees(plan.angle) * (-1.0 if clockwise else 1.0)
+        self._move("arc", end, feed, plan.arc)
+
+    def arc_plan(self, plane: str, clockwise: bool, start: Sequence[float], end: Sequence[float],
+                 words: Mapping[str, float]) -> ArcPlan:
+        """The arc from ``start`` to ``end`` (machine) that a line's R or centre words describe, in the
+        general path and the bulk path alike; ArcError when they describe none."""
+        first, second, normal = PLANES[plane]
+        s = (start[first], start[second])
+        e = (end[first], end[second])
+        scale = self.scale
+        tolerance = radius_tolerance(self.inch)
+        if "R" in words:
+            center = center_from_radius(s, e, words["R"] * scale, clockwise, tolerance)
+        else:
+            w1, w2 = CENTER_WORDS[plane]
+            if w1 not in words and w2 not in words:
+                raise ArcError(f"an arc needs R or centre words {w1}/{w2} in the {plane} plane")
+            if self.config.absolute_center_coords:
+                work = self.work_position()
+                work[first], work[second] = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
+                if self.diameter_mode and 0 in (first, second):  # an absolute X centre is a diameter too
+                    work[0] /= 2.0
+                machine = self.to_machine(work)
+                center = (machine[first], machine[second])
+            else:
+                d1, d2 = words.get(w1, 0.0) * scale, words.get(w2, 0.0) * scale
+                center = (s[0] + d1, s[1] + d2)
+            try:
+                check_radius(s, center, e, tolerance)
+            except ArcError as err:
+                raise ArcError(str(err), center) from None
+        angle, full = sweep(s, center, e, clockwise, self.config.full_circle_theta_epsilon, "R" in words, tolerance)
+        radius = math.hypot(s[0] - center[0], s[1] - center[1])
+        length = math.hypot(radius * angle, end[normal] - start[normal])
+        named = (center[1], center[0]) if plane == "XZ" else center
+        return ArcPlan(Arc(named, plane, -1 if clockwise else 1, full), center, angle, length)
 
     def _arc_xs(self, plane: str, start: tuple[float, float], center: tuple[float, float], angle: float,
                 clockwise: bool) -> list[float]:

@@ -25,6 +25,9 @@ from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, mean_rpm_points
 from edingcnc_lang.machine.observe import Observer
 
+if TYPE_CHECKING:
+    from edingcnc_lang.machine.geometry import ArcPlan
+
 INCH = t.MM_PER_INCH
 MAX_CALL_DEPTH = 64
 MIN_PROBE_DISTANCE = 0.254
@@ -333,11 +336,17 @@ class MachineState:
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
-    def travelled(self, start: Pose | list[float], ends: Sequence[Pose]) -> None:
-        """Count straight moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does."""
+    def travelled(self, start: Pose | list[float], ends: Sequence[Pose],
+                  arcs: Sequence[Arc | None] | None = None) -> None:
+        """Count moves from ``start`` through ``ends`` (straight, or arcs where ``arcs`` has one) into
+        GetJobDistance, one by one as ``_move`` does."""
         distance = self.job_distance
         points = [start[:3], *[end[:3] for end in ends]]
-        for step in map(math.dist, points, points[1:]):  # xyz_distance of each move
+        steps = list(map(math.dist, points, points[1:]))  # xyz_distance of each move
+        if arcs is not None:
+            for index in [index for index, arc in enumerate(arcs) if arc is not None]:
+                steps[index] = path_length(ends[index - 1] if index else tuple(start), ends[index], arcs[index])
+        for step in steps:
             distance += step
         self.job_distance = distance
 
@@ -411,6 +420,8 @@ class MachineState:
         def scaling_off(self) -> None: ...                                                   # scaling.py
         def _motion(self, words: Mapping[str, float], g: Mapping[str, int], non_modal: int | None,
                     span: n.Span) -> None: ...                                               # moves.py
+        def arc_plan(self, plane: str, clockwise: bool, start: Sequence[float], end: Sequence[float],
+                     words: Mapping[str, float]) -> ArcPlan: ...                            # moves.py
         def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None: ...  # canned.py
         def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
         def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py

@@ -57,7 +57,7 @@ class PlannerStage(Protocol):
     def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
-    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None: ...
+    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -158,8 +158,8 @@ class MotionStage:
         self.planner.move(move, joints, samples, self._limits_for(move) if self.planner.needs_limits else None,
                           cap, accel)
 
-    def straight_moves(self, batch: Batch) -> None:
-        """Straight moves in bulk; joints = position and no samples make this the cheap case."""
+    def move_batch(self, batch: Batch) -> None:
+        """Moves in bulk; joints = position and no samples make this the cheap case."""
         if not (self._identity() and not self.sample_always and self.active is None):
             for move in batch.moves():
                 self.move(move)
@@ -168,22 +168,28 @@ class MotionStage:
         for axis, column in enumerate(zip(*batch.ends)):
             if min(column) < lower[axis] or max(column) > upper[axis]:
                 self._first_limit_violation(batch)
+        if batch.arcs is not None:  # an arc may bulge beyond its ends
+            start = batch.start
+            for index, arc in enumerate(batch.arcs):
+                if arc is not None and len(reach_points(start, batch.ends[index], arc, lower, upper)) > 1:
+                    self._first_limit_violation(batch)
+                start = batch.ends[index]
         self._write_batch(batch)
 
     def _first_limit_violation(self, batch: Batch) -> None:
-        """Write the moves before the first one out of limits, then raise its error."""
-        lower, upper = self._lower, self._upper
+        """Write the moves before the first one out of limits, then raise its error (if there is one)."""
         for count, move in enumerate(batch.moves()):
-            for axis, value in enumerate(move.end):
-                if not lower[axis] <= value <= upper[axis]:
-                    self._write_batch(batch.head(count))
-                    raise self._limit_error(move, axis, value)
+            try:
+                self._check_exact(move)
+            except MachineError:
+                self._write_batch(batch.head(count))
+                raise
 
     def _write_batch(self, batch: Batch) -> None:
         if batch.lines:
             self.moves += len(batch)
             self.joints = batch.end
-            self.planner.straight_moves(batch, self._straight_limits if self.planner.needs_limits else None)
+            self.planner.move_batch(batch, self._straight_limits if self.planner.needs_limits else None)
 
     @cached_property
     def _straight_limits(self) -> dict[str, AxisLimits]:
@@ -446,7 +452,7 @@ class MotionStage:
     def _check_exact(self, move: Move) -> None:
         """Joints = position: the end point and an arc's extremes bound the whole move."""
         lower, upper = self._lower, self._upper
-        for point in reach_points(move, lower, upper):
+        for point in reach_points(move.start, move.end, move.arc, lower, upper):
             for axis, value in enumerate(point):
                 if not lower[axis] <= value <= upper[axis]:
                     raise self._limit_error(move, axis, value)

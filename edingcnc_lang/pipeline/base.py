@@ -32,8 +32,8 @@ class Stage:
     def move(self, move: Move) -> None:
         self.next.move(move)
 
-    def straight_moves(self, batch: Batch) -> None:
-        self.next.straight_moves(batch)
+    def move_batch(self, batch: Batch) -> None:
+        self.next.move_batch(batch)
 
     def event(self, event: Event) -> None:
         self.next.event(event)
@@ -75,9 +75,9 @@ class LookaheadStage(Stage):
         self._emit(self.release(held, move))
         self.held = move
 
-    def straight_moves(self, batch: Batch) -> None:
+    def move_batch(self, batch: Batch) -> None:
         if not self.active and self.held is None:
-            self.next.straight_moves(batch)
+            self.next.move_batch(batch)
             return
         for move in batch.moves():
             self.move(move)

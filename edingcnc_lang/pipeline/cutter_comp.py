@@ -94,13 +94,14 @@ class CutterCompensation(Stage):
         finally:
             self._send()
 
-    def straight_moves(self, batch: Batch) -> None:
+    def move_batch(self, batch: Batch) -> None:
         if not self.side and self.exit_from is None:
             self._send()
-            self.next.straight_moves(batch)
+            self.next.move_batch(batch)
             return
         try:
-            if self.side and batch.css is None and len(batch) >= self.long_run and self._arrays_pay(len(batch)):
+            if (self.side and batch.css is None and batch.arcs is None and len(batch) >= self.long_run
+                    and self._arrays_pay(len(batch))):
                 from edingcnc_lang.pipeline.comp_runs import take_batch
 
                 take_batch(self, batch)
@@ -194,7 +195,7 @@ class CutterCompensation(Stage):
         """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
         out, self.out = self.out, None
         if out is not None:
-            self.next.straight_moves(out)
+            self.next.move_batch(out)
 
     # ---------------------------------------------------------------- on and off
     def _switch(self, event: Event) -> None:

@@ -64,9 +64,9 @@ class HeightCompensation(Stage):
         self.applied = self.surface.height(move.end[0], move.end[1])
         self.next.move(move)
 
-    def straight_moves(self, batch: Batch) -> None:
+    def move_batch(self, batch: Batch) -> None:
         if self.surface is None and self.applied == 0.0:
-            self.next.straight_moves(batch)
+            self.next.move_batch(batch)
             return
         for move in batch.moves():
             self.move(move)

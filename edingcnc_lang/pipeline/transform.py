@@ -53,10 +53,11 @@ class PoseTransform(Stage):
         self.next.move(move)
         self.at = move.end
 
-    def straight_moves(self, batch: Batch) -> None:
+    def move_batch(self, batch: Batch) -> None:
         if not batch.lines:
             return
-        if batch.css is not None and self.on:  # the spindle speed follows the programmed X: move by move
+        if self.on and (batch.css is not None or batch.arcs is not None):  # the spindle speed follows the
+            # programmed X, or an arc's centre turns too (and may be refused): move by move
             for move in batch.moves():
                 self.move(move)
             return
@@ -64,7 +65,7 @@ class PoseTransform(Stage):
             start = self.at if self.at is not None else self.forward(batch.start)
             ends = [self.forward(end) for end in batch.ends] if self.on else batch.ends
             batch = replace(batch, start=start, ends=ends)
-        self.next.straight_moves(batch)
+        self.next.move_batch(batch)
         self.at = batch.end
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:

@@ -21,7 +21,7 @@ from edingcnc_lang.canon import Arc, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
-from edingcnc_lang.kinematics.trajectory import geometry_of
+from edingcnc_lang.kinematics.trajectory import arc_geometry
 from edingcnc_lang.motion.planner.estimate import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.syntax.source import iter_file_lines
@@ -86,7 +86,7 @@ class Toolpath:
         arc = self.arcs.get(index)
         if arc is None:
             return np.vstack((start[:3], end[:3]))
-        geometry = geometry_of(Move("arc", "", 0, tuple(start), tuple(end), arc=arc))
+        geometry = arc_geometry(tuple(start), tuple(end), arc)
         assert geometry.center is not None
         first, second = (geometry.normal + 1) % 3, (geometry.normal + 2) % 3
         c1, c2 = geometry.center[first], geometry.center[second]

@@ -1,4 +1,4 @@
-"""The bulk path for plain G0/G1 lines behaves exactly like the general path.
+"""The bulk path for plain G0/G1 lines and arcs behaves exactly like the general path.
 
 ``run_file`` reads a job in run mode (plain lines in bulk); ``run_string`` parses the same
 text into ordinary blocks, which always take the general path.  Generated jobs mix plain
@@ -33,13 +33,26 @@ plain_lines = st.builds(
     st.sampled_from(["", "G0", "G1", "G01", "g1", "G2", "G81"]), axis_words,
     st.sampled_from(["", "", "100", "0", "-5", "1200.5"]), st.sampled_from([0, 0, 10]),
     st.sampled_from([" ", ""]), st.sampled_from(["", " ; cut"]))
-state_lines = st.sampled_from(["G91", "G90", "G20", "G21", "G10 L2 P1 X5 Y-3 Z1", "G92 X0 Y0", "G92.1",
+# arcs: R forms that reach most ends, centre words that rarely fit (errors must agree too), words of
+# another plane, R with centre words; the incremental ones always fit under G91
+fitting_arcs = st.sampled_from(["G2 X10 Y0 I5 J0", "G3 X-10 Y0 I-5 J0 F300", "X10 Y10 I10", "G2 X0 Y0 Z-1 I5 J0",
+                                "G3 X4 Z4 I2 K2", "G2 Y6 Z0 J3 K0 F80", "G2 X20 R10", "G3 X1 Y1 Z1 A5 R-1 (arc)",
+                                "G2 X5 Y-5 R300", "G3 Y7 R-300 F40"])
+arc_lines = st.one_of(fitting_arcs, fitting_arcs, st.builds(
+    lambda g, words, centre, f, n: " ".join(([f"N{n}"] if n else []) + ([g] if g else []) + [f"{a}{v}" for a, v in words]
+                                             + centre + ([f"F{f}"] if f else [])),
+    st.sampled_from(["G2", "G3", "G02", "g3", ""]), axis_words,
+    st.sampled_from([["R300"], ["r-300"], ["R5"], ["I5", "J0"], ["I-5"], ["J5"], ["K5", "I0"], ["J3", "K4"],
+                     ["I5", "R300"], []]),
+    st.sampled_from(["", "", "100", "0"]), st.sampled_from([0, 10])))
+state_lines = st.sampled_from(["G17", "G18", "G19", "G91", "G90", "G20", "G21", "G10 L2 P1 X5 Y-3 Z1", "G92 X0 Y0", "G92.1",
                                "G93", "G94", "G55", "G54", "#1 = [#1 + 1]", "G68 X0 Y0 R30", "G69",
                                "G43 H1", "G49", "(comment)", "M3 S1000", "G80", "G17 G2 X1 Y1 I1 J0 F100",
                                "M4 S2500", "M5", "G51 P2", "G51 X2 Y-1", "G50", "G68 X5 Y5 R-45",
                                "G41.1 D0.5", "G42.1 D1", "G40", "ZHC on", "ZHC off", "GetJobDistance 100",
                                "G1 X1 Y1 F50 M3 S300", "G0 X0 Y0 Z0"])
-jobs = st.lists(st.one_of(plain_lines, plain_lines, plain_lines, state_lines), min_size=1, max_size=30)
+jobs = st.lists(st.one_of(plain_lines, plain_lines, plain_lines, arc_lines, arc_lines, state_lines), min_size=1,
+                max_size=30)
 # a 2 x 2 height map probed on a tilted surface, so "ZHC on" has a table to follow
 ZHC_HEADER = "ZHCINIT 100 2 2\n" + "".join(
     f"G0 Z5\nG0 X{x} Y{y}\nG38.2 Z-20 F500\nZHCADDPOINT\n" for y in (0, 100) for x in (0, 100)) + "G0 Z5\nG0 X0 Y0\n"
@@ -89,17 +102,32 @@ def _contour(side: str, plane: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-@pytest.mark.parametrize("source", ["G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n",
+ARCS = ("G1 X0 Y0 F100\nG2 X10 Y0 I5 J0\nG1 X20\nG3 X30 Y0 R5\nX40 Y0 R-5\nG2 X40 Y0 I-5 J0 Z-2\n"
+        "G18 G2 X50 Z-2 I5 K0\nG19 G3 Y10 Z-2 J5 K0 F50\nG17 G91 G2 X10 I5\nG1 Y2\nG90 G0 X0 Y0\n")
+
+
+@pytest.mark.parametrize("source", [ARCS, "M3 S900\nG68 X1 Y1 R30\n" + ARCS, "G51 P2\n" + ARCS,
+                                    "G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n",
                                     "M3 S900\nG68 X1 Y1 R30\nG1 X1 F100\nY2\nG51 P2\nX3 Y3\n",
                                     _contour("G41.1", "G17"), _contour("G42.1", "G17"), _contour("G41.1", "G18"),
                                     "G20\n" + _contour("G42.1", "G19")])
 def test_bulk_trace_matches_the_general_trace(tmp_path: Path, source: str) -> None:
+    """The same rows and the same error either way (G68 and G51 P2 refuse the XZ arc: Z is not scaled)."""
     job = tmp_path / "job.nc"
     job.write_text(source)
     bulk, general = tmp_path / "bulk.csv", tmp_path / "general.csv"
-    run_file(job, RunOptions(trace=bulk))
-    run_string(source, RunOptions(trace=general), path=str(job))
-    assert bulk.read_text() == general.read_text()
+
+    def traced(run, trace: Path) -> tuple[str, str | None]:  # type: ignore[no-untyped-def]
+        try:
+            run(RunOptions(trace=trace))
+        except EcncError as err:
+            return trace.read_text(), err.format()
+        return trace.read_text(), None
+
+    made = traced(lambda options: run_file(job, options), bulk)
+    assert made == traced(lambda options: run_string(source, options, path=str(job)), general)
+    if source.endswith(ARCS):
+        assert made[0].count(",arc,") == (7 if source == ARCS else 4)
 
 
 def test_a_long_job_is_timed_the_same_in_batches_and_one_by_one(tmp_path: Path) -> None:
@@ -118,3 +146,21 @@ def test_a_long_job_is_timed_the_same_in_batches_and_one_by_one(tmp_path: Path) 
         run_file(job, RunOptions(trace=bulk))
     run_string(source, RunOptions(trace=general), path=str(job))
     assert bulk.read_text() == general.read_text()
+
+
+def test_an_arc_in_a_batch_is_refused_where_it_bulges_past_a_limit(tmp_path: Path) -> None:
+    """Both ends of the arc are inside Y 0..5, its top (Y 10) is not: the moves before it are written,
+    and the error names its line, as one move at a time."""
+    (tmp_path / "cnc.ini").write_text("[JOINT_1]\nnegativeLimit = -1\npositiveLimit = 5\n")
+    source = "G0 X0 Y0\nG1 X1 F200\nG2 X21 Y0 I10 J0\nG1 X0\n"
+    job = tmp_path / "job.nc"
+    job.write_text(source)
+    results = []
+    for run, trace in ((lambda o: run_file(job, o), tmp_path / "bulk.csv"),
+                       (lambda o: run_string(source, o, path=str(job)), tmp_path / "general.csv")):
+        with pytest.raises(EcncError) as caught:
+            run(RunOptions(ini=tmp_path / "cnc.ini", trace=trace))
+        results.append((trace.read_text(), caught.value.format()))
+    assert results[0] == results[1]
+    assert ":3:" in results[0][1] and "joint Y would reach 10.0000" in results[0][1]
+    assert results[0][0].count("\n") == 3  # the header and the two moves before the arc

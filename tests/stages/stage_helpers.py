@@ -29,7 +29,7 @@ class Recorder:
     def move(self, move: Move) -> None:
         self.log.append(("move", move))
 
-    def straight_moves(self, batch: Batch) -> None:
+    def move_batch(self, batch: Batch) -> None:
         self.log.append(("batch", batch))
 
     def event(self, event: Event) -> None:

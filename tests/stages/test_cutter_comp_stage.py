@@ -75,10 +75,10 @@ def test_a_move_is_held_until_the_next_one_and_events_wait_behind_it() -> None:
     assert [e[1] if e[0] == "event" else list(e[1].lines) for e in sink.log[1:]] == [[2], "coolant"]
 
 
-def test_compensated_straight_moves_go_on_as_one_batch_with_their_spindle() -> None:
+def test_compensated_move_batch_go_on_as_one_batch_with_their_spindle() -> None:
     sink, stage = entered("left", 1.0)
     moves = [line(0, 0, 10, 0, 4), line(10, 0, 20, 1, 5), line(20, 1, 30, 3, 6)]
-    stage.straight_moves(batch(pose(), *[(m.kind, m.line, m.end, m.feed) for m in moves]))
+    stage.move_batch(batch(pose(), *[(m.kind, m.line, m.end, m.feed) for m in moves]))
     kinds = [entry[0] for entry in sink.log]
     assert kinds.count("batch") == 1 and "move" not in kinds
     stage.flush()
@@ -87,7 +87,7 @@ def test_compensated_straight_moves_go_on_as_one_batch_with_their_spindle() -> N
 
 def test_the_bulk_path_passes_whole_while_compensation_is_off() -> None:
     sink = Recorder()
-    CutterCompensation(sink, CONFIG).straight_moves(batch(pose(), ("linear", 1, pose(1), 100.0)))
+    CutterCompensation(sink, CONFIG).move_batch(batch(pose(), ("linear", 1, pose(1), 100.0)))
     assert sink.log[0][0] == "batch"
 
 

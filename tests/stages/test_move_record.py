@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from stage_helpers import Recorder, pose
 
 from edingcnc_lang import RunOptions, run_file, run_string
-from edingcnc_lang.canon import PLANES, Batch, Event, Move
+from edingcnc_lang.canon import PLANES, Arc, Batch, Event, Move
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.config.heightmap import HeightMap
@@ -52,16 +52,22 @@ coordinate = st.integers(-20, 20).map(float)
 spindles = st.tuples(st.sampled_from([0.0, 600.0, 12000.0]),
                      st.sampled_from([None, Css(20000.0, 3000.0, 0.0, 0.0)]),
                      st.sampled_from([0.0, 1.5]), st.sampled_from([0, 7]))
-moves = st.lists(st.tuples(st.sampled_from(["linear", "linear", "rapid"]), coordinate, coordinate, coordinate,
+moves = st.lists(st.tuples(st.sampled_from(["linear", "linear", "rapid", "arc"]), coordinate, coordinate, coordinate,
                            st.sampled_from([100.0, 2500.0])), min_size=1, max_size=8)
 
 
 def _programmed(items: list[tuple[str, float, float, float, float]], spindle: tuple) -> list[Move]:  # type: ignore[type-arg]
+    """The moves, an arc as a half circle in XY (a helix when Z changes) or, where it would not move in XY,
+    a feed move."""
     rpm, css, sync, caller = spindle
     start, made = pose(), []
     for number, (kind, x, y, z, feed) in enumerate(items, 2):
         end = pose(x, y, z)
-        made.append(Move(kind, "job.nc", number, start, end, feed if kind == "linear" else 0.0, None,
+        arc = None
+        if kind == "arc" and (x, y) != start[:2]:
+            arc = Arc(((start[0] + x) / 2.0, (start[1] + y) / 2.0), "XY", 1 if number % 2 else -1)
+        kind = "linear" if kind == "arc" and arc is None else kind
+        made.append(Move(kind, "job.nc", number, start, end, feed if kind != "rapid" else 0.0, arc,
                          css.rpm(x) if css is not None else rpm, css, sync, caller))
         start = end
     return made
@@ -109,11 +115,12 @@ def test_a_stage_keeps_every_field_of_a_batch_it_does_not_own(factory: type[Stag
                                                                 spindle: tuple) -> None:  # type: ignore[type-arg]
     rpm, css, sync, caller = spindle
     programmed = _programmed(items, spindle)
+    arcs = [m.arc for m in programmed]
     batch = Batch("job.nc", pose(), [m.kind for m in programmed], [m.line for m in programmed],
                   [m.end for m in programmed], [m.feed for m in programmed], rpm if css is None else 0.0, css,
-                  sync, caller)
+                  sync, caller, None if arcs == [None] * len(arcs) else arcs)
     assert list(batch.moves()) == programmed  # the array form of the very same records
-    _assert_kept(factory, programmed, _through(factory, lambda stage: stage.straight_moves(batch)))
+    _assert_kept(factory, programmed, _through(factory, lambda stage: stage.move_batch(batch)))
 
 
 # --------------------------------------------------------------------------- compensation in batches
@@ -182,7 +189,7 @@ def test_compensation_in_batches_gives_the_moves_of_compensation_move_by_move(
         bounds = sorted({0, len(programmed), *(cut for cut in cuts if cut < len(programmed))})
         for low, high in zip(bounds, bounds[1:]):
             part = programmed[low:high]
-            stage.straight_moves(Batch("job.nc", part[0].start, [m.kind for m in part], [m.line for m in part],
+            stage.move_batch(Batch("job.nc", part[0].start, [m.kind for m in part], [m.line for m in part],
                                        [m.end for m in part], [m.feed for m in part], rpm if css is None else 0.0,
                                        css, sync, caller))
 
@@ -207,17 +214,28 @@ def test_a_long_contour_goes_on_in_batches_and_gives_the_moves_one_by_one() -> N
     stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
     stage.numpy_after = 0
     stage.event(Event("cutter_comp", "job.nc", 1, {"side": "left", "radius": 1.0, "plane": "XY"}))
-    stage.straight_moves(batch)
+    stage.move_batch(batch)
     assert [(kind, len(what)) for kind, what in sink.log[1:]] == [("batch", 199)]  # the last one held back
     stage.event(Event("cutter_comp", "job.nc", 99, {"side": "off"}))
     stage.flush()
     assert (sink.moves(), None) == alone
 
 
-def test_a_single_move_is_a_batch_of_one() -> None:
-    move = Move("linear", "job.nc", 3, pose(), pose(1, 2), 500.0, None, 800.0, None, 0.0, 9)
+@pytest.mark.parametrize("move", [Move("linear", "job.nc", 3, pose(), pose(1, 2), 500.0, None, 800.0, None, 0.0, 9),
+                                  Move("arc", "job.nc", 4, pose(), pose(2), 300.0, Arc((1.0, 0.0), "XY", -1),
+                                       Css(20000.0, 3000.0, 0.0, 0.0).rpm(2.0), Css(20000.0, 3000.0, 0.0, 0.0))])
+def test_a_single_move_is_a_batch_of_one(move: Move) -> None:
     assert list(Batch.of(move).moves()) == [move]
     assert list(Batch.of(move).tail(1).moves()) == [] and Batch.of(move).head(1) == Batch.of(move)
+
+
+def test_the_arcs_column_is_cut_with_the_others() -> None:
+    arc = Arc((1.0, 0.0), "XY", 1)
+    batch = Batch("job.nc", pose(), ["linear", "arc", "rapid"], [1, 2, 3], [pose(0, 1), pose(2, 1), pose(5)],
+                  [100.0, 100.0, 0.0], arcs=[None, arc, None])
+    assert [m.arc for m in batch.head(2).moves()] == [None, arc]
+    assert [m.arc for m in batch.tail(1).moves()] == [arc, None] and batch.tail(1).start == pose(0, 1)
+    assert list(batch.head(2).moves()) + list(batch.tail(2).moves()) == list(batch.moves())
 
 
 # --------------------------------------------------------------------------- the two defects

@@ -37,7 +37,7 @@ def test_a_plain_stage_passes_everything_through() -> None:
     sink = Recorder()
     stage = Stage(sink, CONFIG)
     stage.move(line(0, 0, 1, 0))
-    stage.straight_moves(batch(pose(1), ("linear", 2, pose(2), 100.0)))
+    stage.move_batch(batch(pose(1), ("linear", 2, pose(2), 100.0)))
     stage.event(Event("coolant", "job.nc", 3))
     assert stage.kinematics("ON", (), pose(5), "job.nc", 4) == pose(5)
     stage.flush()
@@ -89,10 +89,10 @@ def test_kinematics_flushes_first() -> None:
 def test_bulk_moves_pass_an_idle_stage_whole_and_split_through_an_active_one() -> None:
     moves = batch(pose(), ("linear", 2, pose(1), 100.0), ("rapid", 3, pose(1, 1), 0.0))
     idle_sink, active_sink = Recorder(), Recorder()
-    Idle(idle_sink, CONFIG).straight_moves(moves)
+    Idle(idle_sink, CONFIG).move_batch(moves)
     assert idle_sink.log == [("batch", moves)]
     active = Successor(active_sink, CONFIG)
-    active.straight_moves(moves)
+    active.move_batch(moves)
     active.flush()
     moves = active_sink.moves()
     assert [(m.kind, m.start, m.end, m.feed, m.path) for m in moves] == [

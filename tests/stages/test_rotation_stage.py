@@ -36,12 +36,12 @@ def test_arcs_outside_the_xy_plane_are_refused() -> None:
 
 def test_bulk_moves_turn_while_on_and_pass_whole_after_g69() -> None:
     sink, stage = turned(180.0)
-    stage.straight_moves(batch(pose(), ("linear", 2, pose(1, 2), 100.0)))
+    stage.move_batch(batch(pose(), ("linear", 2, pose(1, 2), 100.0)))
     assert sink.moves()[-1].end == pytest.approx(pose(-1, -2))
     stage.event(Event("rotation", "job.nc", 3, {"on": False}))
-    stage.straight_moves(batch(pose(1, 2), ("linear", 4, pose(3, 3), 100.0)))
+    stage.move_batch(batch(pose(1, 2), ("linear", 4, pose(3, 3), 100.0)))
     assert sink.moves()[-1].start == pytest.approx(pose(-1, -2))  # starts where the tool really was
-    stage.straight_moves(batch(pose(3, 3), ("linear", 5, pose(4, 4), 100.0)))
+    stage.move_batch(batch(pose(3, 3), ("linear", 5, pose(4, 4), 100.0)))
     assert sink.log[-1][0] == "batch"
 
 

@@ -50,12 +50,12 @@ def test_after_g50_the_next_move_starts_where_the_machine_is() -> None:
     sink, stage = scaled((2.0, 2.0, 1.0))
     stage.move(line(10, 10, 20, 20, 3))
     stage.event(Event("scaling", "job.nc", 4, {"on": False}))
-    stage.straight_moves(batch(pose(20, 20), ("linear", 5, pose(0, 0), 100.0)))
+    stage.move_batch(batch(pose(20, 20), ("linear", 5, pose(0, 0), 100.0)))
     last = sink.moves()[-1]
     assert last.start == pose(40, 40) and last.end == pose(0, 0)
 
 
 def test_bulk_moves_pass_whole_while_off() -> None:
     sink = Recorder()
-    Scaling(sink, CONFIG).straight_moves(batch(pose(), ("linear", 1, pose(1), 100.0)))
+    Scaling(sink, CONFIG).move_batch(batch(pose(), ("linear", 1, pose(1), 100.0)))
     assert sink.log[0][0] == "batch"

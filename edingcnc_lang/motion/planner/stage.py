@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.kinematics.trajectory import Geometry, geometry_of
+from edingcnc_lang.kinematics.trajectory import Geometry, arc_geometry, geometry_of
 from edingcnc_lang.motion.planner.estimate import Estimate, Timing
 from edingcnc_lang.motion.planner.limits_report import LimitsReport
 from edingcnc_lang.motion.planner.overrides import Overrides
@@ -53,7 +53,7 @@ class TimedSink(Protocol):
 
 
 class Planner:
-    """One run's planner: ``move``/``straight_moves``/``event`` in program order, ``close`` at the end."""
+    """One run's planner: ``move``/``move_batch``/``event`` in program order, ``close`` at the end."""
 
     needs_limits = True  # every move comes with the limits it runs against
 
@@ -104,11 +104,11 @@ class Planner:
         self._queue.append(("move", move, joints))
         self._after_add()
 
-    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
-        """Straight moves in bulk whose joints are their positions (the interpreter's fast path).
+    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
+        """Moves in bulk whose joints are their positions (the interpreter's fast path).
 
-        Per move only the end and the feed are kept (a rapid is a move with feed 0); the rest is
-        the same for the whole batch, as it is for a single ``move``.
+        Per move only the end and the feed are kept (a straight move is a rapid if its feed is 0),
+        and an arc's geometry; the rest is the same for the whole batch, as it is for a single ``move``.
         """
         assert limits is not None  # needs_limits, as in move()
         if self._ends and batch.start != self._ends[-1]:
@@ -116,9 +116,19 @@ class Planner:
         if not self._ends:
             self._origin = batch.start
         count = len(batch)
+        if batch.arcs is None:
+            self._kind.add(STRAIGHT, count)
+        else:
+            first, ends, done = len(self._ends), batch.ends, 0
+            for index in [index for index, arc in enumerate(batch.arcs) if arc is not None]:
+                self._kind.add(STRAIGHT, index - done)
+                self._kind.add(ARC)
+                self._arcs[first + index] = arc_geometry(ends[index - 1] if index else batch.start, ends[index],
+                                                         batch.arcs[index])  # type: ignore[arg-type]
+                done = index + 1
+            self._kind.add(STRAIGHT, count - done)
         self._ends.extend(batch.ends)
         self._feed.extend(batch.feeds)
-        self._kind.add(STRAIGHT, count)
         self._cap.add(math.inf, count)
         self._accel_cap.add(math.inf, count)
         state = self._state_id(self._limit_id(limits["rapid"]), self._limit_id(limits["linear"]),

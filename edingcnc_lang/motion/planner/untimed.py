@@ -36,7 +36,7 @@ class Untimed:
         if self.on_move:
             self.on_move(move, joints)
 
-    def straight_moves(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
+    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
         if not self.on_move:
             return
         for move in batch.moves():
