@@ -583,10 +583,77 @@ fail:
     return NULL;
 }
 
+/* motion.reach.column_bounds, compiled: the least and greatest value of each of the six columns of a
+   sequence of poses of floats, as min() and max() of each column find them (the first of equal values;
+   a NaN is never less or greater than another value), as two lists. */
+static PyObject *column_bounds(PyObject *self, PyObject *args)
+{
+    PyObject *ends, *low = NULL, *high = NULL;
+    double least[6], most[6];
+    Py_ssize_t count, i, k;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "O", &ends))
+        return NULL;
+    count = PySequence_Size(ends);
+    if (count < 0)
+        return NULL;
+    if (count == 0) {
+        PyErr_SetString(PyExc_ValueError, "min() arg is an empty sequence");
+        return NULL;
+    }
+    for (i = 0; i < count; i++) {
+        PyObject *end = PySequence_GetItem(ends, i);
+        if (end == NULL)
+            return NULL;
+        if (PySequence_Size(end) != 6) {
+            Py_DECREF(end);
+            PyErr_SetString(PyExc_ValueError, "a pose has six values");
+            return NULL;
+        }
+        for (k = 0; k < 6; k++) {
+            PyObject *item = PySequence_GetItem(end, k);
+            double value = item == NULL ? -1.0 : PyFloat_AsDouble(item);
+            Py_XDECREF(item);
+            if (value == -1.0 && PyErr_Occurred()) {
+                Py_DECREF(end);
+                return NULL;
+            }
+            if (i == 0) {
+                least[k] = most[k] = value;
+            } else {
+                if (value < least[k])
+                    least[k] = value;
+                if (value > most[k])
+                    most[k] = value;
+            }
+        }
+        Py_DECREF(end);
+    }
+    low = PyList_New(6);
+    high = PyList_New(6);
+    for (k = 0; low != NULL && high != NULL && k < 6; k++) {
+        PyObject *a = PyFloat_FromDouble(least[k]), *b = PyFloat_FromDouble(most[k]);
+        if (a == NULL || b == NULL) {
+            Py_XDECREF(a);
+            Py_XDECREF(b);
+            break;
+        }
+        PyList_SetItem(low, k, a);
+        PyList_SetItem(high, k, b);
+    }
+    if (low == NULL || high == NULL || k < 6) {
+        Py_XDECREF(low);
+        Py_XDECREF(high);
+        return NULL;
+    }
+    return Py_BuildValue("(NN)", low, high);
+}
+
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
     {"plain_moves", plain_moves, METH_VARARGS, "interpreter.bulk.plain_moves, compiled."},
     {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
+    {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {NULL, NULL, 0, NULL},
 };
 

@@ -255,7 +255,7 @@ class Run:
         def find_tools(chunk: list[str]) -> None:
             joined = "\n".join(chunk)
             if "T" in joined or "t" in joined:
-                tools.update(tools_used(chunk))
+                tools.update(tools_used((joined,)))
 
         self._jobs.append(job)
         try:

@@ -4,7 +4,8 @@ The compiled core is optional: ``pip install`` builds it when a C compiler is th
 without it when not.  It does exactly what the Python functions do (the equivalence tests run
 both): finding the lines that are not plain word lines in the check pass
 (``syntax.parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
-(``machine.bulk.plain_moves``) and formatting trace rows (``motion.sinks.trace_rows``), byte for byte.  ``ECNC_PURE_PYTHON=1``
+(``machine.bulk.plain_moves``), formatting trace rows (``motion.sinks.trace_rows``), byte for byte,
+and the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``).  ``ECNC_PURE_PYTHON=1``
 selects the Python core at run time; ``ecnc --version`` says which one runs.
 """
 from __future__ import annotations
@@ -76,3 +77,10 @@ def trace_rows(*args: Any) -> Any:
     global trace_rows
     trace_rows = _pick("trace_rows", ".motion.sinks")
     return trace_rows(*args)
+
+
+def column_bounds(*args: Any) -> Any:
+    """``motion.reach.column_bounds`` on the core that runs (see there)."""
+    global column_bounds
+    column_bounds = _pick("column_bounds", ".motion.reach")
+    return column_bounds(*args)

@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from edingcnc_lang import RunOptions, run_file
 from edingcnc_lang.machine.bulk import NO_MOTION, plain_moves
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+from edingcnc_lang.motion.reach import column_bounds
 from edingcnc_lang.motion.sinks import trace_rows
 from edingcnc_lang.syntax.parser import non_plain_lines
 
@@ -83,6 +84,13 @@ def _doubles_near_decimals(count: int) -> list[float]:
                    sum(rng.random() for _ in range(3)) * 10 ** rng.randint(-5, 15),
                    rng.randint(-2 ** 53, 2 ** 53) / 2 ** rng.randint(0, 70), 2.0 ** rng.randint(-16, 52)]
     return values
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(*[st.one_of(st.floats(), st.sampled_from([0.0, -0.0, 1.5]))] * 6), min_size=1, max_size=12))
+def test_the_bounds_of_a_batch_are_the_same(ends: list[tuple[float, ...]]) -> None:
+    """The limit check's bounds: NaN, infinities and signed zeros found as min() and max() find them."""
+    assert repr(compiled.column_bounds(ends)) == repr(column_bounds(ends))
 
 
 def test_doubles_in_fixed_notation_are_written_as_repr_writes_them() -> None:

@@ -13,14 +13,14 @@ from edingcnc_lang.machine import devices, zhc_commands as height_comp
 from edingcnc_lang.machine.state import CommandTable, MachineState, StatementTable
 
 _EXEC_ARG = re.compile(r'"([^"]*)"|(\S+)')  # Windows-style arguments: quotes group, backslashes are text
-_NOT_CODE = re.compile(r'\([^)]*\)?|"[^"]*"?|;.*')  # comments and message texts
+_NOT_CODE = re.compile(r'\([^)\n]*\)?|"[^"\n]*"?|;.*')  # comments and message texts (never past a line end)
 _T_WORD = re.compile(r"(?<![A-Za-z_#])[Tt][ \t]*\+?([0-9]+)")
 
 
 def tools_used(lines: Iterable[str]) -> list[int]:
     """The tool numbers a job's T words name (literal ones, T0 = no tool left out), in order: what
     ``GetToolInfo`` enumerates, as the controller scans the loaded G-code (the stock macro.cnc's
-    ``measure_used_tools``)."""
+    ``measure_used_tools``).  An item of ``lines`` may hold several lines joined by LF."""
     found: set[int] = set()
     for line in lines:
         found.update(int(number) for number in _T_WORD.findall(_NOT_CODE.sub(" ", line)))

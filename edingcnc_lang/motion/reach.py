@@ -2,6 +2,7 @@
 
 A straight move reaches no further than its end point (its start was checked as the end of the
 move before); an arc may bulge beyond both ends, to the extremes of its circle that it sweeps over.
+A batch of moves reaches no further than the bounds of its end points and its arcs' extremes.
 """
 from __future__ import annotations
 
@@ -38,3 +39,10 @@ def reach_points(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float]
         extreme[first], extreme[second] = p1, p2
         points.append(as_pose(extreme))
     return points
+
+
+def column_bounds(ends: Sequence[Pose]) -> tuple[list[float], list[float]]:
+    """The least and greatest value of each axis over the poses ``ends`` (not empty): what a batch's
+    straight moves reach.  The reference for ``speedups.column_bounds``."""
+    columns = list(zip(*ends))
+    return [min(column) for column in columns], [max(column) for column in columns]

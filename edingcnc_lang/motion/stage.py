@@ -16,11 +16,13 @@ written and nothing reads time (the planner is ``planner.untimed``), a run never
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
+from edingcnc_lang import speedups
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
@@ -165,9 +167,11 @@ class MotionStage:
                 self.move(move)
             return
         lower, upper = self._lower, self._upper
-        for axis, column in enumerate(zip(*batch.ends)):
-            if min(column) < lower[axis] or max(column) > upper[axis]:
-                self._first_limit_violation(batch)
+        if not batch.lines:
+            return
+        least, most = speedups.column_bounds(batch.ends)
+        if any(map(operator.lt, least, lower)) or any(map(operator.gt, most, upper)):
+            self._first_limit_violation(batch)
         if batch.arcs is not None:  # an arc may bulge beyond its ends
             start = batch.start
             for index, arc in enumerate(batch.arcs):

@@ -117,14 +117,26 @@ def iter_file_blocks(path: str | os.PathLike[str]) -> Iterator[list[str]]:
             else:  # the end of the file: what is left is the last line(s)
                 pending, body = b"", data[:-1] if data.endswith(b"\n") else data
             try:
-                lines = body.decode("utf-8").split("\n")
+                text = body.decode("utf-8")
             except UnicodeDecodeError:
                 lines = [decode_line(raw) for raw in body.split(b"\n")]
-            yield _without_crs(lines) if b"\r" in body else lines
+                yield _without_crs(lines) if b"\r" in body else lines
+            else:
+                yield _split_crlf(text) if "\r" in text else text.split("\n")
 
 
 def _without_crs(lines: list[str]) -> list[str]:
     return [line.rstrip("\r") for line in lines]
+
+
+def _split_crlf(text: str) -> list[str]:
+    """``text`` split at LF, the CRs before each LF dropped (CRLF files): the same as ``_without_crs``
+    but without a call per line, unless a line ends in more than one CR."""
+    if "\r\r" in text:
+        return _without_crs(text.split("\n"))
+    lines = text.replace("\r\n", "\n").split("\n")
+    lines[-1] = lines[-1].rstrip("\r")  # the block's last line: its LF was cut off
+    return lines
 
 
 def _utf16_blocks(handle: BinaryIO, head: bytes) -> Iterator[list[str]]:

@@ -13,10 +13,13 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from edingcnc_lang.canon import Pose
 from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
+from edingcnc_lang.machine.named_commands import tools_used
 from edingcnc_lang.runner import RunOptions, RunResult, run_string
 from edingcnc_lang.syntax.parser import read_statements
 from edingcnc_lang.syntax import nodes as n
@@ -133,3 +136,11 @@ def test_the_toolsetter_measures_the_tools_the_job_uses(tmp_path: Path) -> None:
     assert result.variables[5025] == 3.0  # the last tool measured
     assert [result.variables[5030 + n] for n in (1, 2, 3)] == [1.0, 0.0, 1.0]
     assert {1, 3} <= {int(k) - 5400 for k in result.variables if 5401 <= int(k) <= 5499}
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.text(st.sampled_from(["T", "t", "1", "2", " ", "(", ")", '"', ";", "#", "X", "+"]), max_size=12),
+                max_size=8))
+def test_the_t_words_of_a_chunk_are_those_of_its_lines(lines: list[str]) -> None:
+    """The check pass scans a chunk joined by LF at once: an unclosed comment or text ends with its line."""
+    assert tools_used(("\n".join(lines),)) == tools_used(lines)
