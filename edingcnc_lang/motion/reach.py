@@ -11,34 +11,51 @@ from collections.abc import Sequence
 
 from edingcnc_lang.canon import PLANES, Arc, Pose
 from edingcnc_lang.kinematics.base import as_pose
-from edingcnc_lang.machine.geometry import arc_extremes, circle_within, sweep
+from edingcnc_lang.kinematics.trajectory import Geometry, arc_geometry
+from edingcnc_lang.machine.geometry import arc_extremes, circle_within
 
 
 def reach_points(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float],
                  upper: Sequence[float]) -> list[Pose]:
     """The points that bound a move from ``start`` to ``end``: its end and, for an arc, the extremes of
-    its circle it sweeps over; those are left out when the whole circle lies within ``lower``..``upper``
-    (the usual case), since then they cannot be outside.
+    its circle it sweeps over (``arc_extremes_of``); those are left out when the whole circle lies within
+    ``lower``..``upper`` (the usual case, found here without building the arc's frame), since then they
+    cannot be outside.
 
     Takes the move's fields rather than a ``Move``, so a batch's columns need not become records."""
-    points = [end]
     if arc is None:
-        return points
+        return [end]
     first, second, _ = PLANES[arc.plane]
     center = (arc.center[1], arc.center[0]) if arc.plane == "XZ" else arc.center  # XZ is named (x, z)
-    s, e = (start[first], start[second]), (end[first], end[second])
-    radius = math.hypot(s[0] - center[0], s[1] - center[1])
+    radius = max(math.hypot(start[first] - center[0], start[second] - center[1]),
+                 math.hypot(end[first] - center[0], end[second] - center[1]))
     if circle_within(center, radius, (first, second), lower, upper):
-        return points
-    clockwise = arc.turn < 0
-    # the interpreter's decision: a full circle, or the arc between its ends (never a circle)
-    angle = 2 * math.pi if arc.full_turns else sweep(s, center, e, clockwise, -1.0, r_form=True)[0]
-    start_angle = math.atan2(s[1] - center[1], s[0] - center[0])
-    for p1, p2 in arc_extremes(center, radius, start_angle, angle, clockwise):
-        extreme = list(end)
-        extreme[first], extreme[second] = p1, p2
-        points.append(as_pose(extreme))
-    return points
+        return [end]
+    return [end, *arc_extremes_of(arc_geometry(start, end, arc))]
+
+
+def arc_extremes_of(geometry: Geometry, low: Sequence[float] | None = None,
+                    high: Sequence[float] | None = None) -> list[Pose]:
+    """Points where an arc reaches its extremes in its plane (its ends are counted already); none when
+    its whole circle lies within ``low``..``high``, which they could then not widen.
+
+    The one reading of an arc's reach, for the motion stage's limit check, the limits report and the
+    test runner's forbidden zones: the larger of its two radii (an arc whose ends lie on slightly
+    different circles, within the radius tolerance, may reach either), over its sweep (a full circle
+    once, however many turns it makes).
+    """
+    frame = geometry.frame
+    radius = max(frame.r0, frame.r1)
+    if low is not None and high is not None and circle_within(frame.center, radius, (frame.u, frame.v), low, high):
+        return []
+    sweep = abs(frame.sweep)
+    clockwise = frame.sweep < 0.0
+    rows = []
+    for p1, p2 in arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise):
+        row = list(geometry.end)
+        row[frame.u], row[frame.v] = p1, p2
+        rows.append(as_pose(row))
+    return rows
 
 
 def column_bounds(ends: Sequence[Pose]) -> tuple[list[float], list[float]]:

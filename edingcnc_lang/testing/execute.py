@@ -213,9 +213,9 @@ class _Watch:
         if move.arc is None:
             return [move.end]
         from edingcnc_lang.kinematics.trajectory import geometry_of
-        from edingcnc_lang.motion.planner.limits_report import _arc_extremes  # the limits report's own arc extremes
+        from edingcnc_lang.motion.reach import arc_extremes_of  # as the limit check and the limits report read it
 
-        return [move.end, *(tuple(float(v) for v in row) for row in _arc_extremes(geometry_of(move)))]
+        return [move.end, *arc_extremes_of(geometry_of(move))]
 
     def _add(self, rule: str, text: str) -> None:
         self.found.setdefault(rule, []).append(text)

@@ -1,6 +1,7 @@
 """Limits: a violation stops the run with exit 70 and `PATH:LINE: error:` naming the joint and the value."""
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -39,6 +40,18 @@ def test_trivial_arc_extreme_outside_the_limits(run_job, tmp_path: Path, samples
     assert run_job("G0 X10 Y50\nG2 X10 Y10 I0 J-20 F1000\n", SAMPLE_LIMITS, *options).code == 0
     outcome = run_job("G0 X10 Y50\nG3 X10 Y10 I0 J-20 F1000\n", SAMPLE_LIMITS, *options)
     assert_error(outcome, 2, "joint X would reach -10.0000")
+
+
+def test_a_spiral_arc_is_checked_at_its_larger_radius_as_the_limits_report_shows_it(run_job) -> None:  # type: ignore[no-untyped-def]
+    # start radius 10, end radius 10.0015 (within the 0.002 mm tolerance): the top is at Y 10.0015, past
+    # the limit of 10.001 that the start radius alone would keep
+    limits = {**joints((-1000.0, 1000.0)), "JOINT_1": {"negativeLimit": -20, "positiveLimit": 10.001}}
+    outcome = run_job("G0 X0 Y0\nG2 X20.0015 Y0 I10 J0 F500\n", limits)
+    assert_error(outcome, 2, "joint Y would reach 10.0015")
+    limits["JOINT_1"]["positiveLimit"] = 10.002
+    outcome = run_job("G0 X0 Y0\nG2 X20.0015 Y0 I10 J0 F500\n", limits, "--json")
+    assert outcome.code == 0, outcome.err
+    assert json.loads(outcome.out)["limits"]["joints"]["y"]["max"] == pytest.approx(10.0015, abs=1e-12)
 
 
 def test_kinematics_moves_a_joint_out_of_its_limits(run_job) -> None:  # type: ignore[no-untyped-def]

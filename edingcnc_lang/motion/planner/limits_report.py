@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.machine.geometry import arc_extremes, circle_within
 from edingcnc_lang.kinematics.trajectory import Geometry
+from edingcnc_lang.motion.reach import arc_extremes_of
 
 if TYPE_CHECKING:
     import numpy as np
@@ -40,7 +40,7 @@ class LimitsReport:
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
         # an arc whose whole circle lies within what the end points reach cannot reach further
         inside_low, inside_high = np.minimum(low, self.axis_low).tolist(), np.maximum(high, self.axis_high).tolist()
-        extremes = [point for geometry in arcs.values() for point in _arc_extremes(geometry, inside_low, inside_high)]
+        extremes = [point for geometry in arcs.values() for point in arc_extremes_of(geometry, inside_low, inside_high)]
         if extremes:
             low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())
@@ -85,21 +85,3 @@ def _table(low: list[float], high: list[float], lower: list[float], upper: list[
         table[axis] = {"min": lo if seen else None, "max": hi if seen else None, "lower": limit_lo, "upper": limit_hi,
                        "margin": min(lo - limit_lo, limit_hi - hi) if seen else None}
     return table
-
-
-def _arc_extremes(geometry: Geometry, low: list[float] | None = None,
-                  high: list[float] | None = None) -> list[list[float]]:
-    """Points where an arc reaches its extremes in its plane (its ends are counted already); none when
-    its whole circle lies within ``low``..``high``, which they could then not widen."""
-    frame = geometry.frame
-    radius = max(frame.r0, frame.r1)
-    if low is not None and high is not None and circle_within(frame.center, radius, (frame.u, frame.v), low, high):
-        return []
-    sweep = abs(frame.sweep)
-    clockwise = frame.sweep < 0.0
-    rows = []
-    for p1, p2 in arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise):
-        row = list(geometry.end)
-        row[frame.u], row[frame.v] = p1, p2
-        rows.append(row)
-    return rows
