@@ -7,7 +7,7 @@ rest; an arc in another plane would leave its plane and is refused, naming its l
 """
 from __future__ import annotations
 
-from edingcnc_lang.canon import Arc, Canon, Event, Move, Pose
+from edingcnc_lang.canon import Arc, Canon, Event, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.geometry import rotate_about
@@ -44,8 +44,8 @@ class Rotation(PoseTransform):
     def inverse(self, pose: Pose) -> Pose:
         return rotate_about(pose, self.pivot, -self.angle, self.plane) if self.angle else pose  # type: ignore[return-value]
 
-    def arc(self, move: Move, arc: Arc) -> Arc:
+    def arc(self, arc: Arc, where: Location) -> Arc:
         if arc.plane != self.plane and self.angle and self.angle % 360.0:
             raise MachineError(f"an arc in the {arc.plane} plane cannot be turned by G68 (it turns the {self.plane} "
-                               f"plane); use {PLANE_CODE[self.plane]} arcs or G69 first", Location(move.path, move.line))
+                               f"plane); use {PLANE_CODE[self.plane]} arcs or G69 first", where)
         return Arc(map_center(arc, self.forward), arc.plane, arc.turn, arc.full_turns)

@@ -8,7 +8,7 @@ the previous move really ended, so switching scaling on or off never jumps.
 """
 from __future__ import annotations
 
-from edingcnc_lang.canon import PLANES, Arc, Canon, Event, Move, Pose
+from edingcnc_lang.canon import PLANES, Arc, Canon, Event, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.geometry import scale_about
@@ -47,13 +47,12 @@ class Scaling(PoseTransform):
             return pose
         return scale_about(pose, self.center, [1.0 / f for f in self.factors])  # type: ignore[return-value]
 
-    def arc(self, move: Move, arc: Arc) -> Arc:
+    def arc(self, arc: Arc, where: Location) -> Arc:
         assert self.factors is not None
         first, second, _ = PLANES[arc.plane]
         f1, f2 = self.factors[first], self.factors[second]
         if abs(f1) != abs(f2):
             raise MachineError(f"an arc cannot be scaled by different factors in the {arc.plane} plane "
-                               f"({f1:g} and {f2:g}); use G51 P or break the arc into lines",
-                               Location(move.path, move.line))
+                               f"({f1:g} and {f2:g}); use G51 P or break the arc into lines", where)
         turn = arc.turn if f1 * f2 > 0 else -arc.turn
         return Arc(map_center(arc, self.forward), arc.plane, turn, arc.full_turns)

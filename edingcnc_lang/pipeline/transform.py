@@ -6,10 +6,11 @@ it is off, and answers kinematics calls in the interpreter's (programmed) frame.
 """
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from edingcnc_lang.canon import PLANES, Arc, Batch, Move, Pose
+from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.pipeline.base import Stage
 
 
@@ -40,14 +41,14 @@ class PoseTransform(Stage):
         """The programmed pose the machine pose ``pose`` corresponds to."""
         raise NotImplementedError
 
-    def arc(self, move: Move, arc: Arc) -> Arc:
-        """The arc data of a mapped arc move (or an error naming the move's line)."""
+    def arc(self, arc: Arc, where: Location) -> Arc:
+        """The arc data of a mapped arc move (or an error naming the move's line, ``where``)."""
         raise NotImplementedError
 
     def move(self, move: Move) -> None:
         if self.on or (self.at is not None and move.start != self.at):
             start = self.at if self.at is not None else self.forward(move.start)
-            arc = self.arc(move, move.arc) if move.arc is not None and self.on else move.arc
+            arc = self.arc(move.arc, Location(move.path, move.line)) if move.arc is not None and self.on else move.arc
             end = self.forward(move.end) if self.on else move.end
             move = replace(move, start=start, end=end, arc=arc)  # the pose is all a transform owns
         self.next.move(move)
@@ -56,17 +57,32 @@ class PoseTransform(Stage):
     def move_batch(self, batch: Batch) -> None:
         if not batch.lines:
             return
-        if self.on and (batch.css is not None or batch.arcs is not None):  # the spindle speed follows the
-            # programmed X, or an arc's centre turns too (and may be refused): move by move
+        if batch.css is not None and self.on:  # the spindle speed follows the programmed X: move by move
             for move in batch.moves():
                 self.move(move)
             return
         if self.on or (self.at is not None and self.at != batch.start):
             start = self.at if self.at is not None else self.forward(batch.start)
             ends = [self.forward(end) for end in batch.ends] if self.on else batch.ends
-            batch = replace(batch, start=start, ends=ends)
+            arcs = self._mapped_arcs(batch, start, ends) if self.on and batch.arcs is not None else batch.arcs
+            batch = replace(batch, start=start, ends=ends, arcs=arcs)
         self.next.move_batch(batch)
         self.at = batch.end
+
+    def _mapped_arcs(self, batch: Batch, start: Pose, ends: Sequence[Pose]) -> list[Arc | None]:
+        """A batch's arcs mapped; when one is refused, the moves before it are handed on first, as one
+        move at a time would have."""
+        assert batch.arcs is not None
+        arcs: list[Arc | None] = []
+        for index, arc in enumerate(batch.arcs):
+            try:
+                arcs.append(None if arc is None else self.arc(arc, Location(batch.path, batch.lines[index])))
+            except MachineError:
+                if index:
+                    self.next.move_batch(replace(batch.head(index), start=start, ends=ends[:index], arcs=arcs))
+                    self.at = ends[index - 1]
+                raise
+        return arcs
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:
         actual = self.next.kinematics(mode, args, self.at or self.forward(pos), path, line)

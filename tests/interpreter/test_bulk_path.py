@@ -106,7 +106,11 @@ ARCS = ("G1 X0 Y0 F100\nG2 X10 Y0 I5 J0\nG1 X20\nG3 X30 Y0 R5\nX40 Y0 R-5\nG2 X4
         "G18 G2 X50 Z-2 I5 K0\nG19 G3 Y10 Z-2 J5 K0 F50\nG17 G91 G2 X10 I5\nG1 Y2\nG90 G0 X0 Y0\n")
 
 
+REFUSED_IN_A_BATCH = "G1 X1 F100\nG2 X11 I5\nG18\nG1 X2\nZ1\nG2 X12 Z1 I5 K0\nG1 X0\n"  # the XZ arc: refused
+
+
 @pytest.mark.parametrize("source", [ARCS, "M3 S900\nG68 X1 Y1 R30\n" + ARCS, "G51 P2\n" + ARCS,
+                                    "G68 X1 Y1 R30\n" + REFUSED_IN_A_BATCH, "G51 P2\n" + REFUSED_IN_A_BATCH,
                                     "G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n",
                                     "M3 S900\nG68 X1 Y1 R30\nG1 X1 F100\nY2\nG51 P2\nX3 Y3\n",
                                     _contour("G41.1", "G17"), _contour("G42.1", "G17"), _contour("G41.1", "G18"),
@@ -128,6 +132,9 @@ def test_bulk_trace_matches_the_general_trace(tmp_path: Path, source: str) -> No
     assert made == traced(lambda options: run_string(source, options, path=str(job)), general)
     if source.endswith(ARCS):
         assert made[0].count(",arc,") == (7 if source == ARCS else 4)
+    if source.endswith(REFUSED_IN_A_BATCH):  # the moves of the batch before the refused arc are written
+        assert made[0].count("\n") == 5 and made[1] is not None and ":7:1: error: an arc" in made[1]
+        assert "XZ plane" in made[1]
 
 
 def test_a_long_job_is_timed_the_same_in_batches_and_one_by_one(tmp_path: Path) -> None:
