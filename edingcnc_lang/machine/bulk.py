@@ -257,12 +257,10 @@ class BulkPath(MachineState):
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
         """
-        words: dict[str, float] = {}
-        for letter, number in plain_words(text):
-            letter = letter.upper()
-            if letter in words:
-                return None
-            words[letter] = float(number)
+        pairs = plain_words(text)
+        words = {letter.upper(): float(number) for letter, number in pairs}
+        if len(words) < len(pairs):  # a letter twice
+            return None
         code = words.pop("G", None)
         if code is not None:
             motion = G_2 if code == 2.0 else G_3 if code == 3.0 else NO_MOTION

@@ -275,7 +275,8 @@ class MachineState:
 
     @property
     def scale(self) -> float:
-        return INCH if self.inch else 1.0
+        """mm per program unit (asked for every word of a line: the units test is written out here)."""
+        return INCH if self.modal["units"] in (G_20, G_70) else 1.0
 
     def where(self, span: n.Span | None = None) -> Location:
         if span is not None and span.line:
