@@ -230,3 +230,15 @@ def declared_joint_kinds(kins: object) -> tuple[str, ...] | None:
         raise PluginError(f"kinematics plug-in {getattr(kins, 'name', '')!r}: JOINT_KINDS must be six of "
                           f"{' or '.join(map(repr, JOINT_KIND_NAMES))}, got {kinds!r}")
     return tuple(kinds)
+
+
+def checked_rows(joints: object, count: int) -> np.ndarray:
+    """A plug-in's inverse_many result as an (N, 6) float array of finite numbers."""
+    import numpy as np
+
+    rows = np.asarray(joints, dtype=float)
+    if rows.shape != (count, 6):
+        raise ValueError(f"inverse_many returned shape {rows.shape}, expected ({count}, 6)")
+    if not np.isfinite(rows).all():
+        raise ValueError("inverse_many returned a joint that is not a finite number")
+    return rows

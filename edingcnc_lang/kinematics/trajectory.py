@@ -61,6 +61,21 @@ class Geometry:
             object.__setattr__(self, "_frame", frame)
         return frame
 
+    def chord_speed(self, max_velocity: np.ndarray) -> float:
+        """Path speed at which the straight chord of the move keeps every axis within its velocity limit
+        (the first guess of the motion stage's sampling of a rapid)."""
+        import numpy as np
+
+        delta = np.abs(np.subtract(self.end, self.start))
+        linear = float(np.linalg.norm(delta[:3]))
+        length = linear if linear > 0.0 else float(np.linalg.norm(delta[3:]))
+        if length == 0.0:
+            return float(np.min(max_velocity[:3])) if np.isfinite(max_velocity[:3]).any() else 1.0
+        with np.errstate(divide="ignore"):
+            bound = np.where(delta > 0.0, max_velocity * length / delta, np.inf)
+        speed = float(bound.min())
+        return speed if math.isfinite(speed) else 1000.0
+
     def points_at(self, s: np.ndarray) -> np.ndarray:
         """Poses at fractions ``s`` (0..1) of the path: for arcs, of the sweep; s = 1 is the end exactly."""
         import numpy as np

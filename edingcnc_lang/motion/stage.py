@@ -28,14 +28,14 @@ from edingcnc_lang.canon import AXES, Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location, MachineError, PluginError
 from edingcnc_lang.kinematics import abi
-from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose
+from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsDomainError, as_pose, checked_rows
 from edingcnc_lang.kinematics.builtin import (
     MAPPINGS,
     CylinderMapping,
     TrivialKinematics,
     bend_knife_correction,
 )
-from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, Geometry, dynamics, geometry_of
+from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
 from edingcnc_lang.motion.reach import reach_points
 
 _T = TypeVar("_T")
@@ -355,7 +355,7 @@ class MotionStage:
             joints = pos.copy()
         else:
             try:
-                joints = self._plugin_call(lambda: _checked_rows(kin.inverse_many(pos), len(pos)), where)
+                joints = self._plugin_call(lambda: checked_rows(kin.inverse_many(pos), len(pos)), where)
             except KinematicsDomainError as err:
                 raise MachineError(f"{err.message} (kinematics {kin.name})", where) from None
         return joints + self._bend_offset(pos) if self._bend_active() else joints  # type: ignore[return-value]
@@ -416,7 +416,7 @@ class MotionStage:
         joint_timed = not self._identity() and move.kind != "home"
         joint_velocity = self._joint_limits.velocity * (self._rapid_velocity_factor if fastest else 1.0)
         feed = move.feed / 60.0 * (1.0 if move.sync > 0.0 else self.planner.overrides.feed_factor)
-        speed = feed if not fastest else _first_guess(geo, limits.velocity)
+        speed = feed if not fastest else geo.chord_speed(limits.velocity)
         joint_dynamics = None
         for attempt in range(PLAN_PASSES + 1):
             try:
@@ -496,29 +496,3 @@ class MotionStage:
             raise MachineError(f"joint {AXES[axis]} would move at {measured.velocity[axis]:.1f} units/s, above its "
                                f"maxVelocity {limits.velocity[axis]:g} ([JOINT_{axis}]); lower the feed", where)
 
-
-def _checked_rows(joints: object, count: int) -> np.ndarray:
-    """A plug-in's inverse_many result as an (N, 6) float array of finite numbers."""
-    import numpy as np
-
-    rows = np.asarray(joints, dtype=float)
-    if rows.shape != (count, 6):
-        raise ValueError(f"inverse_many returned shape {rows.shape}, expected ({count}, 6)")
-    if not np.isfinite(rows).all():
-        raise ValueError("inverse_many returned a joint that is not a finite number")
-    return rows
-
-
-def _first_guess(geo: Geometry, max_velocity: np.ndarray) -> float:
-    """Path speed at which the straight chord of a move keeps every axis within its velocity limit."""
-    import numpy as np
-
-    delta = np.abs(np.subtract(geo.end, geo.start))
-    linear = float(np.linalg.norm(delta[:3]))
-    length = linear if linear > 0.0 else float(np.linalg.norm(delta[3:]))
-    if length == 0.0:
-        return float(np.min(max_velocity[:3])) if np.isfinite(max_velocity[:3]).any() else 1.0
-    with np.errstate(divide="ignore"):
-        bound = np.where(delta > 0.0, max_velocity * length / delta, np.inf)
-    speed = float(bound.min())
-    return speed if math.isfinite(speed) else 1000.0
