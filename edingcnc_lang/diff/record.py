@@ -222,7 +222,7 @@ def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarra
 @dataclass
 class _Circles:
     """The arc moves' circles, as columns: in-plane axes, centre, start and end radius, start angle,
-    signed sweep, path length and pieces (as ``geometry_of`` and ``sampling.arc_frame`` read an arc)."""
+    signed sweep, path length and pieces (as ``geometry_of`` and ``trajectory.arc_frame`` read an arc)."""
 
     u: np.ndarray
     v: np.ndarray
@@ -273,7 +273,7 @@ def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
     angle = np.arctan2(dv0, du0)
     turns = table[:, 3] * np.maximum(1.0, table[:, 4])
     direction = np.where(turns > 0, 1.0, -1.0)
-    sweep = np.mod(direction * (np.arctan2(dv1, du1) - angle), 2.0 * math.pi)  # as sampling.arc_sweep
+    sweep = np.mod(direction * (np.arctan2(dv1, du1) - angle), 2.0 * math.pi)  # as trajectory.arc_sweep
     sweep = np.where(sweep <= 1e-12, 2.0 * math.pi, sweep)
     sweep = direction * (sweep + 2.0 * math.pi * (np.abs(turns) - 1.0))
     r0, r1 = np.hypot(du0, dv0), np.hypot(du1, dv1)

@@ -12,10 +12,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import NamedTuple
-
 import numpy as np
 
+from edingcnc_lang.kinematics.trajectory import ArcFrame, arc_frame
 from edingcnc_lang.syntax.input_limits import MAX_MOVE_SAMPLES
 
 # Sample times closer than this fraction of dt to the end are merged into the end point.
@@ -58,50 +57,6 @@ def sample_line(start: Sequence[float], end: Sequence[float], feed: float, dt: f
     pts = p0 + fraction[:, None] * delta
     pts[-1] = p1
     return t, pts
-
-
-def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsilon: float = 1e-12) -> float:
-    """Signed angle swept (radians): ``turns`` > 0 counter-clockwise, < 0 clockwise.
-
-    |turns| = 1 goes the short way round in the requested direction (a full circle when start
-    and end are less than ``full_circle_epsilon`` radians apart, as ``[INTERPRETER]
-    fullCircleThetaEpsilon`` decides); each further turn adds one full revolution.
-    """
-    if turns == 0:
-        raise ValueError("turns must be non-zero: its sign is the direction of the arc")
-    direction = 1.0 if turns > 0 else -1.0
-    sweep = (direction * (end_angle - start_angle)) % (2.0 * math.pi)
-    if sweep <= full_circle_epsilon or sweep == 0.0:
-        sweep = 2.0 * math.pi
-    return direction * (sweep + 2.0 * math.pi * (abs(turns) - 1))
-
-
-class ArcFrame(NamedTuple):
-    """An arc's circle in its plane: in-plane axes ``u``, ``v``, centre, start and end radius,
-    start angle, signed sweep, and its XYZ length (helix included).  A named tuple: the planner makes
-    one per arc of a job, and a frozen dataclass takes five times as long to build."""
-
-    u: int
-    v: int
-    center: tuple[float, float]
-    r0: float
-    r1: float
-    start_angle: float
-    sweep: float
-    linear: float
-
-
-def arc_frame(start: Sequence[float], end: Sequence[float], center: Sequence[float], normal: int, turns: int,
-              full_circle_epsilon: float = 1e-12) -> ArcFrame:
-    """The circle of an arc about ``center`` in the plane normal to axis ``normal`` (see ``sample_arc``)."""
-    u, v = (normal + 1) % 3, (normal + 2) % 3
-    cu, cv = float(center[u]), float(center[v])
-    r0 = math.hypot(start[u] - cu, start[v] - cv)
-    r1 = math.hypot(end[u] - cu, end[v] - cv)
-    a0 = math.atan2(start[v] - cv, start[u] - cu)
-    sweep = arc_sweep(a0, math.atan2(end[v] - cv, end[u] - cu), turns, full_circle_epsilon)
-    linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal])
-    return ArcFrame(u, v, (cu, cv), r0, r1, a0, sweep, linear)
 
 
 def arc_points(start: Sequence[float], end: Sequence[float], frame: ArcFrame, s: np.ndarray) -> np.ndarray:

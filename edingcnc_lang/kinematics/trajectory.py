@@ -12,20 +12,62 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, NamedTuple
 
 from edingcnc_lang.canon import PLANES, Arc, Move, Pose
 
 if TYPE_CHECKING:
     import numpy as np
 
-    from edingcnc_lang.kinematics.sampling import ArcFrame
-
-
 # On a curve the acceleration goes to two jobs: turning (v^2 / r) and speeding up along it.  As in
 # LinuxCNC, the turn may use at most sqrt(3)/2 of an axis' (or joint's) acceleration and the change
 # of speed gets what is left, so that together they stay within the limit (docs/planner.md).
 CURVATURE_SHARE = math.sqrt(3.0) / 2.0
+
+
+def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsilon: float = 1e-12) -> float:
+    """Signed angle swept (radians): ``turns`` > 0 counter-clockwise, < 0 clockwise.
+
+    |turns| = 1 goes the short way round in the requested direction (a full circle when start
+    and end are less than ``full_circle_epsilon`` radians apart, as ``[INTERPRETER]
+    fullCircleThetaEpsilon`` decides); each further turn adds one full revolution.
+    """
+    if turns == 0:
+        raise ValueError("turns must be non-zero: its sign is the direction of the arc")
+    direction = 1.0 if turns > 0 else -1.0
+    sweep = (direction * (end_angle - start_angle)) % (2.0 * math.pi)
+    if sweep <= full_circle_epsilon or sweep == 0.0:
+        sweep = 2.0 * math.pi
+    return direction * (sweep + 2.0 * math.pi * (abs(turns) - 1))
+
+
+class ArcFrame(NamedTuple):
+    """An arc's circle in its plane: in-plane axes ``u``, ``v``, centre, start and end radius,
+    start angle, signed sweep, and its XYZ length (helix included).  A named tuple: the planner makes
+    one per arc of a job, and a frozen dataclass takes five times as long to build."""
+
+    u: int
+    v: int
+    center: tuple[float, float]
+    r0: float
+    r1: float
+    start_angle: float
+    sweep: float
+    linear: float
+
+
+def arc_frame(start: Sequence[float], end: Sequence[float], center: Sequence[float], normal: int, turns: int,
+              full_circle_epsilon: float = 1e-12) -> ArcFrame:
+    """The circle of an arc about ``center`` in the plane normal to axis ``normal`` (see ``sample_arc``)."""
+    u, v = (normal + 1) % 3, (normal + 2) % 3
+    cu, cv = float(center[u]), float(center[v])
+    r0 = math.hypot(start[u] - cu, start[v] - cv)
+    r1 = math.hypot(end[u] - cu, end[v] - cv)
+    a0 = math.atan2(start[v] - cv, start[u] - cu)
+    sweep = arc_sweep(a0, math.atan2(end[v] - cv, end[u] - cu), turns, full_circle_epsilon)
+    linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal])
+    return ArcFrame(u, v, (cu, cv), r0, r1, a0, sweep, linear)
 
 
 @dataclass(frozen=True)
@@ -54,8 +96,6 @@ class Geometry:
         report both ask (kept by hand: functools.cached_property takes a lock on every read)."""
         frame: ArcFrame | None = self.__dict__.get("_frame")
         if frame is None:
-            from edingcnc_lang.kinematics.sampling import arc_frame
-
             assert self.center is not None
             frame = arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
             object.__setattr__(self, "_frame", frame)

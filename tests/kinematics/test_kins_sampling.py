@@ -6,7 +6,8 @@ import math
 import numpy as np
 import pytest
 
-from edingcnc_lang.kinematics.sampling import arc_sweep, sample_arc, sample_line
+from edingcnc_lang.kinematics.sampling import sample_arc, sample_line
+from edingcnc_lang.kinematics.trajectory import arc_sweep
 
 DT = 0.005
 
