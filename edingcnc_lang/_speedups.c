@@ -649,11 +649,200 @@ static PyObject *column_bounds(PyObject *self, PyObject *args)
     return Py_BuildValue("(NN)", low, high);
 }
 
+/* ---------------------------------------------------------------- plain arcs
+ * machine/bulk.py's BulkPath._plain_arc for an arc with centre words, compiled: the words of the line,
+ * its target (as plain_moves finds it), the centre, the radius check and the sweep of
+ * machine/geometry.py's check_radius and sweep.  Every double is computed as Python computes it:
+ * math.hypot and math.dist are Python's own (called, not libm's hypot, which rounds differently),
+ * atan2 is CPython's m_atan2 and % is float's remainder. */
+static PyObject *math_hypot;
+
+static int py_hypot(double a, double b, double *out)
+{
+    PyObject *result = PyObject_CallFunction(math_hypot, "dd", a, b);
+    if (result == NULL)
+        return -1;
+    *out = PyFloat_AsDouble(result);
+    Py_DECREF(result);
+    return *out == -1.0 && PyErr_Occurred() ? -1 : 0;
+}
+
+static double py_atan2(double y, double x)  /* CPython's m_atan2 */
+{
+    if (isnan(x) || isnan(y))
+        return NAN;
+    if (isinf(y)) {
+        if (isinf(x))
+            return copysign(copysign(1., x) == 1. ? 0.25 * M_PI : 0.75 * M_PI, y);
+        return copysign(0.5 * M_PI, y);
+    }
+    if (isinf(x) || y == 0.)
+        return copysign(copysign(1., x) == 1. ? 0. : M_PI, y);
+    return atan2(y, x);
+}
+
+static double py_mod(double vx, double wx)  /* float's % (float_rem) */
+{
+    double mod = fmod(vx, wx);
+    if (mod) {
+        if ((wx < 0) != (mod < 0))
+            mod += wx;
+    } else {
+        mod = copysign(0.0, wx);
+    }
+    return mod;
+}
+
+/* The words of a plain line: value[letter] and seen[letter]; 0 if a letter comes twice or the line
+ * is not made of words (the caller then leaves it to Python). */
+static int scan_words(const char *s, Py_ssize_t len, double value[26], int seen[26])
+{
+    char buffer[NUMBER_BUFFER];
+    Py_ssize_t i = 0;
+    while (i < len) {
+        char c = s[i], letter;
+        Py_ssize_t start, digits;
+        char *stop;
+        double number;
+        if (c == ' ' || c == '\t') {
+            i++;
+            continue;
+        }
+        if (c == '(') {
+            i = skip_comment(s, len, i);
+            if (i < 0)
+                return 0;
+            continue;
+        }
+        if (c == ';')
+            break;
+        if (c >= 'a' && c <= 'z')
+            letter = (char)(c - 'a' + 'A');
+        else if (c >= 'A' && c <= 'Z')
+            letter = c;
+        else
+            return 0;
+        i++;
+        while (i < len && (s[i] == ' ' || s[i] == '\t'))
+            i++;
+        start = i;
+        if (i < len && (s[i] == '+' || s[i] == '-'))
+            i++;
+        digits = i;
+        while (i < len && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.'))
+            i++;
+        if (i == digits || i - start >= NUMBER_BUFFER)
+            return 0;
+        memcpy(buffer, s + start, (size_t)(i - start));
+        buffer[i - start] = '\0';
+        number = PyOS_string_to_double(buffer, &stop, NULL);
+        if (number == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            return 0;
+        }
+        if (*stop != '\0' || seen[letter - 'A'])
+            return 0;
+        seen[letter - 'A'] = 1;
+        value[letter - 'A'] = number;
+    }
+    return 1;
+}
+
+#define G2 20
+#define G3 30
+#define SEEN(letter) seen[(letter) - 'A']
+#define VALUE(letter) value[(letter) - 'A']
+
+static PyObject *plain_arc(PyObject *self, PyObject *args)
+{
+    /* plane: 0 XY, 1 XZ, 2 YZ (PLANES order: first, second in-plane axes) */
+    static const int first_axis[3] = {0, 2, 1}, second_axis[3] = {1, 0, 2};
+    static const char first_word[3] = {'I', 'K', 'J'}, second_word[3] = {'J', 'I', 'K'};
+    PyObject *text, *start_obj, *offset_obj, *end = NULL;
+    const char *s;
+    Py_ssize_t len;
+    double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, rel, tiny;
+    double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, limit;
+    int seen[26] = {0}, incremental, motion, plane, reverse, clockwise, full, k, axes = 0;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "UOOdpidipdddd", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
+                          &feed, &plane, &reverse, &tolerance, &epsilon, &rel, &tiny))
+        return NULL;
+    if (plane < 0 || plane > 2) {
+        PyErr_SetString(PyExc_ValueError, "plane must be 0 (XY), 1 (XZ) or 2 (YZ)");
+        return NULL;
+    }
+    if (read_six(start_obj, start) < 0 || read_six(offset_obj, offset) < 0)
+        return NULL;
+    s = PyUnicode_AsUTF8AndSize(text, &len);
+    if (s == NULL)
+        return NULL;
+    if (!scan_words(s, len, value, seen))
+        Py_RETURN_FALSE;
+    if (SEEN('R'))
+        Py_RETURN_FALSE;  /* an R arc: the Python function takes it */
+    if (SEEN('G')) {
+        double g = VALUE('G');
+        motion = g == 2.0 ? G2 : g == 3.0 ? G3 : NO_MOTION;
+    }
+    for (k = 0; k < 26; k++) {
+        char letter = (char)('A' + k);
+        if (!seen[k] || letter == 'G' || letter == 'N' || letter == 'F')
+            continue;
+        if (strchr("XYZABC", letter) != NULL)
+            axes = 1;
+        else if (letter != first_word[plane] && letter != second_word[plane])
+            Py_RETURN_NONE;
+    }
+    if ((motion != G2 && motion != G3) || !axes)
+        Py_RETURN_NONE;
+    if (SEEN('F')) {
+        if (VALUE('F') < 0)
+            Py_RETURN_NONE;
+        feed = VALUE('F') * scale;
+    }
+    if (feed <= 0 || (!SEEN(first_word[plane]) && !SEEN(second_word[plane])))
+        Py_RETURN_NONE;
+    memcpy(target, start, sizeof target);
+    for (k = 0; k < 6; k++) {
+        char letter = "XYZABC"[k];
+        if (SEEN(letter)) {
+            double number = VALUE(letter) * (k < 3 ? scale : 1.0);
+            target[k] = incremental ? start[k] + number : number + offset[k];
+        }
+    }
+    s1 = start[first_axis[plane]];
+    s2 = start[second_axis[plane]];
+    e1 = target[first_axis[plane]];
+    e2 = target[second_axis[plane]];
+    c1 = s1 + (SEEN(first_word[plane]) ? VALUE(first_word[plane]) : 0.0) * scale;
+    c2 = s2 + (SEEN(second_word[plane]) ? VALUE(second_word[plane]) : 0.0) * scale;
+    if (py_hypot(s1 - c1, s2 - c2, &r1) < 0 || py_hypot(e1 - c1, e2 - c2, &r2) < 0)
+        return NULL;
+    limit = rel * r1 > tolerance ? rel * r1 : tolerance;
+    if (r1 < tiny || fabs(r1 - r2) > limit)
+        Py_RETURN_NONE;  /* the general path reports it */
+    clockwise = (motion == G2) != reverse;
+    a0 = py_atan2(s2 - c2, s1 - c1);
+    a1 = py_atan2(e2 - c2, e1 - c1);
+    delta = py_mod(clockwise ? a0 - a1 : a1 - a0, 2 * M_PI);
+    if (py_hypot(s1 - e1, s2 - e2, &dist) < 0)
+        return NULL;
+    full = delta == 0.0 || (dist <= tolerance && delta < epsilon);
+    end = pose_tuple(target);
+    if (end == NULL)
+        return NULL;
+    /* the centre named in the plane's name order: XZ is (x, z), its axes run (z, x) */
+    return Py_BuildValue("idN(dd)ii", motion, feed, end, plane == 1 ? c2 : c1, plane == 1 ? c1 : c2,
+                         clockwise ? -1 : 1, full);
+}
+
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
     {"plain_moves", plain_moves, METH_VARARGS, "interpreter.bulk.plain_moves, compiled."},
     {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
+    {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._plain_arc for centre-word arcs, compiled."},
     {NULL, NULL, 0, NULL},
 };
 
@@ -668,5 +857,14 @@ PyMODINIT_FUNC PyInit__speedups(void)
     rapid_kind = PyUnicode_InternFromString("rapid");
     if (linear_kind == NULL || rapid_kind == NULL)
         return NULL;
+    {
+        PyObject *math = PyImport_ImportModule("math");
+        if (math == NULL)
+            return NULL;
+        math_hypot = PyObject_GetAttrString(math, "hypot");
+        Py_DECREF(math);
+        if (math_hypot == NULL)
+            return NULL;
+    }
     return PyModule_Create(&module);
 }

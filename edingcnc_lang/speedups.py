@@ -5,7 +5,8 @@ without it when not.  It does exactly what the Python functions do (the equivale
 both): finding the lines that are not plain word lines in the check pass
 (``syntax.parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
 (``machine.bulk.plain_moves``), formatting trace rows (``motion.sinks.trace_rows``), byte for byte,
-and the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``).  ``ECNC_PURE_PYTHON=1``
+the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``) and the arcs with
+centre words of the bulk path (``machine.bulk.BulkPath._arc_of_words``).  ``ECNC_PURE_PYTHON=1``
 selects the Python core at run time; ``ecnc --version`` says which one runs.
 """
 from __future__ import annotations
@@ -84,3 +85,9 @@ def column_bounds(*args: Any) -> Any:
     global column_bounds
     column_bounds = _pick("column_bounds", ".motion.reach")
     return column_bounds(*args)
+
+
+def compiled(name: str) -> Any:
+    """The compiled function ``name``, or None on the Python core: for a caller whose Python reference is
+    its own method (``machine.bulk.BulkPath._arc_of_words`` for ``plain_arc``)."""
+    return None if _CORE is None else getattr(_CORE, name)

@@ -17,7 +17,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from dataclasses import replace
+
 from edingcnc_lang import RunOptions, run_file
+from edingcnc_lang.runner import Run
 from edingcnc_lang.machine.bulk import NO_MOTION, plain_moves
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
 from edingcnc_lang.motion.reach import column_bounds
@@ -53,6 +56,41 @@ def test_the_targets_of_plain_lines_are_the_same(chunk: list[str], scale: float,
     pos, offset = [1.5, -2.0, 0.25, 0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, 0.0, 45.0]
     args = (numbered, 0, pos, offset, scale, incremental, motion, feed, room)
     assert compiled.plain_moves(*args) == plain_moves(*args)
+
+
+# arc lines: centre words that fit (a half circle, a full circle, a helix), that nearly fit and that do
+# not, words of another plane, R (left to the Python function), F, N and comments
+ARC_LINES = ["G2 X10 Y0 I5 J0", "G3 X-10 Y0 I-5", "X10 Y10 I10", "G2 X0 Y0 Z-1 I5 J0", "G2 I5 Z-2",
+                             "G3 X4 Z4 I2 K2", "G2 Y6 Z0 J3 K0 F80", "G2 X20 R10", "G3 X10.0015 Y0 I5 J0",
+                             "G02 x10 y0 i5 j0.0001 f0", "G3 X10 Y0 I5 J0 F-1", "G2 X1 I1 I2", "G2 X5 Y5",
+                             "N7 G3 X10 Y0 I5 J0 (cut) F1200.5", "X3 Y4 J5 K1", "G2 X5 A10 B2 C3 I2.5 ; note",
+                             "G2.5 X1 I1", "G1 X1 I1", "G2 I5 J0", "G3 X1e3 I1", "G2 X10 Y0 I5 J0 M3"]
+
+
+ARC_STATES = [f"{plane} {distance} {units}\n{offsets}\n" for plane in ("G17", "G18", "G19")
+              for distance in ("G90", "G91") for units in ("G21", "G20") for offsets in ("", "G10 L2 P1 X5 Y-3 Z1")]
+
+
+def test_the_arcs_of_plain_lines_are_the_same() -> None:
+    """The compiled arc of a plain line against the Python one (the general path's target and arc_plan),
+    in every plane, G90/G91, mm and inch, with offsets and reversed G2/G3: the same record or the same None."""
+    made, full = 0, 0
+    for state in ARC_STATES:
+        run = Run(RunOptions())
+        run.execute_text(state, "job.nc")
+        interp = run.interpreter
+        for reverse in (False, True):
+            interp.config = replace(interp.config, reverse_g2g3=reverse)
+            for text in ARC_LINES:
+                for start in ((0.0, 0.0, 0.0), (1.5, -2.25, 10.0)):
+                    pose = (*start, 0.0, 0.0, 0.0)
+                    for motion in (0, 20, 30):
+                        for feed in (0.0, 300.0):
+                            arc = interp._plain_arc(text, pose, motion, feed)
+                            assert arc == interp._arc_of_words(text, pose, motion, feed), (state, text, pose, motion)
+                            made += arc is not None
+                            full += arc is not None and arc[3].full_turns == 1
+    assert made > 500 and full > 50
 
 
 def test_trace_rows_are_the_same_bytes() -> None:

@@ -22,7 +22,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.canon import Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, plain_block, plain_words
-from edingcnc_lang.machine.geometry import ArcError
+from edingcnc_lang.machine.geometry import RADIUS_TOLERANCE_REL, TINY, ArcError, radius_tolerance
 from edingcnc_lang.machine.state import (
     AXIS_SET,
     CENTER_WORDS,
@@ -42,6 +42,8 @@ _AXIS_OF = {letter: axis for axis, letter in enumerate("XYZABC")}
 _NO_AXES = (None,) * 6
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
+_PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
+_COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
 # The usual order of a CAM line's words, [G] [X] [Y] [Z] [A] [B] [C] [F], matched at once; the words
 # are line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.
 _VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
@@ -253,9 +255,25 @@ class BulkPath(MachineState):
         return index
 
     def _plain_arc(self, text: str, start: Pose, motion: int, feed: float) -> tuple[int, float, Pose, Arc] | None:
+        """``_arc_of_words`` on the core that runs: the compiled one takes arcs with centre words (CAM output's),
+        and leaves R arcs, absolute centres and diameter programs to the Python reference."""
+        plane = PLANE_OF[self.modal["plane"]]
+        if _COMPILED_ARC is not None and not (self.config.absolute_center_coords or self.diameter_mode):
+            found = _COMPILED_ARC(text, start, self.offset(), self.scale, self.modal["distance"] == G_91, motion, feed,
+                                  _PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
+                                  self.config.full_circle_theta_epsilon, RADIUS_TOLERANCE_REL, TINY)
+            if found is None:
+                return None
+            if found is not False:
+                motion, feed, end, center, turn, full = found
+                return motion, feed, end, Arc(center, plane, turn, full)
+        return self._arc_of_words(text, start, motion, feed)
+
+    def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> tuple[int, float, Pose, Arc] | None:
         """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
+        The reference for ``speedups.plain_arc``: the general path's own target and ``arc_plan``.
         """
         pairs = plain_words(text)
         words = {letter.upper(): float(number) for letter, number in pairs}
