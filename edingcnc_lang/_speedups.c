@@ -837,11 +837,56 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
                          clockwise ? -1 : 1, full);
 }
 
+/* kinematics/trajectory.py's arc_frame, compiled (the planner asks for one per arc of a job): the same
+ * doubles, from Python's own math.hypot, CPython's atan2 and float's remainder. */
+static PyObject *arc_frame(PyObject *self, PyObject *args)
+{
+    PyObject *start_obj, *end_obj, *center_obj, *item;
+    double start[6], end[6], cu, cv, r0, r1, a0, a1, sweep, direction, linear;
+    int normal, turns, u, v;
+    double epsilon;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOOiid", &start_obj, &end_obj, &center_obj, &normal, &turns, &epsilon))
+        return NULL;
+    if (normal < 0 || normal > 2 || turns == 0) {
+        PyErr_SetString(PyExc_ValueError, "normal must be 0..2 and turns non-zero");
+        return NULL;
+    }
+    if (read_six(start_obj, start) < 0 || read_six(end_obj, end) < 0)
+        return NULL;
+    u = (normal + 1) % 3;
+    v = (normal + 2) % 3;
+    item = PySequence_GetItem(center_obj, u);
+    cu = item == NULL ? -1.0 : PyFloat_AsDouble(item);
+    Py_XDECREF(item);
+    if (cu == -1.0 && PyErr_Occurred())
+        return NULL;
+    item = PySequence_GetItem(center_obj, v);
+    cv = item == NULL ? -1.0 : PyFloat_AsDouble(item);
+    Py_XDECREF(item);
+    if (cv == -1.0 && PyErr_Occurred())
+        return NULL;
+    if (py_hypot(start[u] - cu, start[v] - cv, &r0) < 0 || py_hypot(end[u] - cu, end[v] - cv, &r1) < 0)
+        return NULL;
+    a0 = py_atan2(start[v] - cv, start[u] - cu);
+    a1 = py_atan2(end[v] - cv, end[u] - cu);
+    /* arc_sweep */
+    direction = turns > 0 ? 1.0 : -1.0;
+    sweep = py_mod(direction * (a1 - a0), 2.0 * M_PI);
+    if (sweep <= epsilon || sweep == 0.0)
+        sweep = 2.0 * M_PI;
+    sweep = direction * (sweep + 2.0 * M_PI * (double)(abs(turns) - 1));
+    if (py_hypot(fabs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal], &linear) < 0)
+        return NULL;
+    return Py_BuildValue("ii(dd)ddddd", u, v, cu, cv, r0, r1, a0, sweep, linear);
+}
+
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
     {"plain_moves", plain_moves, METH_VARARGS, "interpreter.bulk.plain_moves, compiled."},
     {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
+    {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
     {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._plain_arc for centre-word arcs, compiled."},
     {NULL, NULL, 0, NULL},
 };

@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from dataclasses import replace
 
 from edingcnc_lang import RunOptions, run_file
+from edingcnc_lang.kinematics.trajectory import arc_frame
 from edingcnc_lang.runner import Run
 from edingcnc_lang.machine.bulk import NO_MOTION, plain_moves
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
@@ -91,6 +92,27 @@ def test_the_arcs_of_plain_lines_are_the_same() -> None:
                             made += arc is not None
                             full += arc is not None and arc[3].full_turns == 1
     assert made > 500 and full > 50
+
+
+coordinates = st.one_of(st.floats(-1e4, 1e4), st.sampled_from([0.0, -0.0, 5.0, -5.0, 1e-9]))
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.tuples(*[coordinates] * 6), st.tuples(*[coordinates] * 6), st.tuples(*[coordinates] * 3),
+       st.integers(0, 2), st.sampled_from([1, -1, 2, -3]), st.sampled_from([-1.0, 1e-12, 1e-6, math.inf]))
+def test_the_frame_of_an_arc_is_the_same(start: tuple[float, ...], end: tuple[float, ...],
+                                         center: tuple[float, ...], normal: int, turns: int, epsilon: float) -> None:
+    """The circle of an arc as the planner reads it: radii, angles, sweep and length to the last bit."""
+    frame = arc_frame(start, end, center, normal, turns, epsilon)
+    assert repr(compiled.arc_frame(start, end, center, normal, turns, epsilon)) == repr(tuple(frame))
+
+
+def test_the_frame_of_an_arc_whose_ends_are_its_centre_is_the_same() -> None:
+    """Zero radii and ends on the centre: atan2 of signed zeros, as CPython's own atan2 reads them."""
+    for start, end in (((0.0,) * 6, (0.0,) * 6), ((-0.0,) * 6, (0.0, -0.0, 1.0, 0.0, 0.0, 0.0))):
+        for turns in (1, -1):
+            expected = tuple(arc_frame(start, end, (0.0, -0.0, 0.0), 2, turns, 1e-12))
+            assert repr(compiled.arc_frame(start, end, (0.0, -0.0, 0.0), 2, turns, 1e-12)) == repr(expected)
 
 
 def test_trace_rows_are_the_same_bytes() -> None:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, NamedTuple
 
+from edingcnc_lang import speedups
 from edingcnc_lang.canon import PLANES, Arc, Move, Pose
 
 if TYPE_CHECKING:
@@ -24,6 +25,7 @@ if TYPE_CHECKING:
 # LinuxCNC, the turn may use at most sqrt(3)/2 of an axis' (or joint's) acceleration and the change
 # of speed gets what is left, so that together they stay within the limit (docs/planner.md).
 CURVATURE_SHARE = math.sqrt(3.0) / 2.0
+_COMPILED_FRAME = speedups.compiled("arc_frame")  # arc_frame in C, or None on the Python core
 
 
 def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsilon: float = 1e-12) -> float:
@@ -70,9 +72,12 @@ def arc_frame(start: Sequence[float], end: Sequence[float], center: Sequence[flo
     return ArcFrame(u, v, (cu, cv), r0, r1, a0, sweep, linear)
 
 
-@dataclass(frozen=True)
+@dataclass
 class Geometry:
-    """The path of a move in machine coordinates; ``center`` is None for a straight move."""
+    """The path of a move in machine coordinates; ``center`` is None for a straight move.
+
+    Not a frozen dataclass, though nothing changes one once made: the planner makes one per arc of
+    a job, and a frozen one takes several times as long to build."""
 
     start: tuple[float, ...]
     end: tuple[float, ...]
@@ -97,8 +102,12 @@ class Geometry:
         frame: ArcFrame | None = self.__dict__.get("_frame")
         if frame is None:
             assert self.center is not None
-            frame = arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
-            object.__setattr__(self, "_frame", frame)
+            if _COMPILED_FRAME is None:
+                frame = arc_frame(self.start, self.end, self.center, self.normal, self.turns, self.full_circle_epsilon)
+            else:
+                frame = ArcFrame._make(_COMPILED_FRAME(self.start, self.end, self.center, self.normal, self.turns,
+                                                       self.full_circle_epsilon))
+            self.__dict__["_frame"] = frame
         return frame
 
     def chord_speed(self, max_velocity: np.ndarray) -> float:
