@@ -650,7 +650,7 @@ static PyObject *column_bounds(PyObject *self, PyObject *args)
 }
 
 /* ---------------------------------------------------------------- plain arcs
- * machine/bulk.py's BulkPath._plain_arc for an arc with centre words, compiled: the words of the line,
+ * machine/bulk.py's BulkPath._arc_of_words for an arc with centre words, compiled: the words of the line,
  * its target (as plain_moves finds it), the centre, the radius check and the sweep of
  * machine/geometry.py's check_radius and sweep.  Every double is computed as Python computes it:
  * math.hypot and math.dist are Python's own (called, not libm's hypot, which rounds differently),
@@ -887,7 +887,7 @@ static PyMethodDef methods[] = {
     {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
-    {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._plain_arc for centre-word arcs, compiled."},
+    {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._arc_of_words for centre-word arcs, compiled."},
     {NULL, NULL, 0, NULL},
 };
 

@@ -82,12 +82,14 @@ def test_the_arcs_of_plain_lines_are_the_same() -> None:
         interp = run.interpreter
         for reverse in (False, True):
             interp.config = replace(interp.config, reverse_g2g3=reverse)
+            read_arc = interp._arc_reader()
+            assert read_arc != interp._arc_of_words  # the compiled reader
             for text in ARC_LINES:
                 for start in ((0.0, 0.0, 0.0), (1.5, -2.25, 10.0)):
                     pose = (*start, 0.0, 0.0, 0.0)
                     for motion in (0, 20, 30):
                         for feed in (0.0, 300.0):
-                            arc = interp._plain_arc(text, pose, motion, feed)
+                            arc = read_arc(text, pose, motion, feed)
                             assert arc == interp._arc_of_words(text, pose, motion, feed), (state, text, pose, motion)
                             made += arc is not None
                             full += arc is not None and arc[3].full_turns == 1

@@ -15,7 +15,7 @@ The equivalence tests run both and compare whole moves with the general path's.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
@@ -44,6 +44,8 @@ _NO_AXES = (None,) * 6
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
 _COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
+# What an arc line gives the bulk path: the motion and feed in force after it, its end and its arc.
+ArcLine = tuple[int, float, Pose, Arc]
 # The usual order of a CAM line's words, [G] [X] [Y] [Z] [A] [B] [C] [F], matched at once; the words
 # are line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.
 _VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
@@ -186,7 +188,7 @@ class BulkPath(MachineState):
     def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
         """Execute lines[first:] as long as each is a plain G0/G1 move or arc; returns the first it left.
 
-        ``plain_moves`` takes the straight lines; a line it stops at may be an arc (``_plain_arc``),
+        ``plain_moves`` takes the straight lines; a line it stops at may be an arc (``_arc_reader``),
         which joins the same batch, and the straight lines after it are scanned on.
         """
         start = tuple(self.pos)
@@ -200,6 +202,7 @@ class BulkPath(MachineState):
         feeds: list[float] = []
         in_force: list[float] = []
         arcs: list[Arc | None] | None = None
+        read_arc: Callable[[str, Pose, int, float], ArcLine | None] | None = None
         index = first
         while True:
             index, done, after, feed, *columns = speedups.plain_moves(
@@ -216,7 +219,9 @@ class BulkPath(MachineState):
                 pos = ends[-1]
             if index >= len(lines) or room <= 0:
                 break
-            taken = self._plain_arc(lines[index][1], pos, motion, feed)
+            if read_arc is None:
+                read_arc = self._arc_reader()
+            taken = read_arc(lines[index][1], pos, motion, feed)
             if taken is None:
                 break
             motion, feed, end, arc = taken
@@ -254,22 +259,28 @@ class BulkPath(MachineState):
             self.modal["motion"] = motion
         return index
 
-    def _plain_arc(self, text: str, start: Pose, motion: int, feed: float) -> tuple[int, float, Pose, Arc] | None:
-        """``_arc_of_words`` on the core that runs: the compiled one takes arcs with centre words (CAM output's),
-        and leaves R arcs, absolute centres and diameter programs to the Python reference."""
+    def _arc_reader(self) -> Callable[[str, Pose, int, float], ArcLine | None]:
+        """``_arc_of_words`` on the core that runs, for the lines of one run (the state it reads cannot change
+        within a run): the compiled one takes arcs with centre words (CAM output's), and leaves R arcs to the
+        Python reference, which reads absolute centres and diameter programs too."""
+        if _COMPILED_ARC is None or self.config.absolute_center_coords or self.diameter_mode:
+            return self._arc_of_words
         plane = PLANE_OF[self.modal["plane"]]
-        if _COMPILED_ARC is not None and not (self.config.absolute_center_coords or self.diameter_mode):
-            found = _COMPILED_ARC(text, start, self.offset(), self.scale, self.modal["distance"] == G_91, motion, feed,
-                                  _PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
-                                  self.config.full_circle_theta_epsilon, RADIUS_TOLERANCE_REL, TINY)
+        offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
+        fixed = (_PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
+                 self.config.full_circle_theta_epsilon, RADIUS_TOLERANCE_REL, TINY)
+
+        def read(text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
+            found = _COMPILED_ARC(text, start, offset, scale, incremental, motion, feed, *fixed)
             if found is None:
                 return None
-            if found is not False:
-                motion, feed, end, center, turn, full = found
-                return motion, feed, end, Arc(center, plane, turn, full)
-        return self._arc_of_words(text, start, motion, feed)
+            if found is False:
+                return self._arc_of_words(text, start, motion, feed)
+            motion, feed, end, center, turn, full = found
+            return motion, feed, end, Arc(center, plane, turn, full)
+        return read
 
-    def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> tuple[int, float, Pose, Arc] | None:
+    def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
         """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
