@@ -1,7 +1,11 @@
-/* The optional compiled core: the two hot loops of a big job, byte for byte as the Python reference.
+/* The optional compiled core: the hot loops of a big job, byte for byte as the Python reference.
  *
- * plain_moves: machine/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
- * trace_rows:  motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
+ * non_plain_lines: syntax/parser.py's non_plain_lines (the check pass's scan for lines that are not plain).
+ * plain_moves:     machine/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
+ * plain_arc:       machine/bulk.py's BulkPath._arc_of_words (an arc line with centre words).
+ * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
+ * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
+ * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  *
  * Built by setuptools as an optional extension against the stable ABI (abi3, Python 3.10+);
  * without it the Python functions run (edingcnc_lang/speedups.py chooses).  Compiled with
