@@ -6,7 +6,7 @@ prints medians of CPU and wall time, ratios and peak memory (max RSS of the chil
 table.  rs274 is optional: without it the reference column stays empty.
 
     python benchmarks/bench_run.py               # all benchmarks
-    python benchmarks/bench_run.py --only parse  # one of: parse run run1m macro startup comp cam
+    python benchmarks/bench_run.py --only parse  # one of: parse run run1m macro startup comp cam arcs
 """
 from __future__ import annotations
 
@@ -46,20 +46,21 @@ def write_comp_job(path: Path, lines: int) -> None:
         out.write("G40\nG1 X0 Y0\nM2\n")
 
 
-def write_cam_job(path: Path, lines: int, ngc: bool = False) -> None:
+def write_cam_job(path: Path, lines: int, ngc: bool = False, arcs: float = 0.1) -> None:
     """A CAM finishing pass as post-processors write it: N words, CRLF (LF for rs274), a tool change,
-    G1 XY moves with an occasional F, a tenth I/J arcs, now and then a lift (seeded, deterministic)."""
+    G1 XY moves with an occasional F, a share ``arcs`` of I/J arcs (a tenth; an adaptive clearing path has
+    far more), now and then a lift (seeded, deterministic)."""
     rng = random.Random(9)
     out = ["G21 G17 G90 G94 G40 G49 G80", "T1 M6", "S12000 M3", "G0 X0 Y0 Z5", "G1 Z-1 F300"]
     number, x, y = 10, 0.0, 0.0
     while len(out) < lines:
         number += 2
         draw = rng.random()
-        if draw < 0.1:
+        if draw < arcs:
             nx, ny = x + rng.uniform(-5, 5), y + rng.uniform(-5, 5)
             out.append(f"N{number} G{rng.choice([2, 3])} X{nx:.4f} Y{ny:.4f} I{(nx - x) / 2:.4f} J{(ny - y) / 2:.4f}")
             x, y = nx, ny
-        elif draw < 0.12:
+        elif draw < arcs + 0.02:
             out += [f"N{number} G0 Z5.", f"N{number + 1} X{x:.4f} Y{y:.4f}", f"N{number + 2} G1 Z-1. F300"]
             number += 2
         else:
@@ -183,6 +184,16 @@ def bench_cam(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)
 
 
+def bench_arcs(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    job, ngc = tmp / "arcs_200k.nc", tmp / "arcs_200k.ngc"
+    write_cam_job(job, 200_000, arcs=0.6)
+    write_cam_job(ngc, 200_000, ngc=True, arcs=0.6)
+    rs274 = shutil.which("rs274")
+    return _versus("run a 200k-line CAM job, 60 % arcs (--trace CSV) vs rs274 -g",
+                   ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")],
+                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
+
+
 def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     job = tmp / "g1_1m.nc"
     write_g1_job(job, 1_000_000)
@@ -219,7 +230,7 @@ def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
 
 BENCHES: dict[str, Callable[[Path, int], list[tuple[str, str, str, str]]]] = {
     "parse": bench_parse, "run": bench_run, "run1m": bench_run1m, "macro": bench_macro, "startup": bench_startup,
-    "comp": bench_comp, "cam": bench_cam,
+    "comp": bench_comp, "cam": bench_cam, "arcs": bench_arcs,
 }
 
 
