@@ -3,7 +3,9 @@
 To add a stage: write a ``Stage`` (or ``LookaheadStage``) subclass in a module of its own here
 and put its class in ``STAGES`` at the place it belongs; it is built with the next canon and the
 machine configuration.  A stage may import ``canon``, ``config``, ``geometry``, ``heightmap`` and
-``errors``, never the interpreter or the motion stage.
+``errors``, never the interpreter or the motion stage.  Moves come one at a time (``move``) or in
+bulk (``move_batch``): a batch may hold arcs (``Batch.arcs``), and a stage with no batch form for
+what it changes hands ``batch.moves()`` to its own ``move`` one at a time.
 """
 from __future__ import annotations
 
