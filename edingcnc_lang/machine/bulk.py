@@ -1,16 +1,18 @@
-"""The bulk path: runs of plain G0/G1 lines executed without building nodes, as one ``Batch``.
+"""The bulk path: runs of plain G0/G1/G2/G3 lines executed without building nodes, as one ``Batch``.
 
-CAM output is mostly lines such as ``G1 X.. Y.. Z..``.  While the machine is in a state where
-such a line can only be a straight move (``batchable``, the one place that decides it), a run of
-them is turned into targets by ``plain_moves`` and handed to the canon as one ``Batch``: the
-array form of the ``Move`` records the general path would have made, with the same spindle and
-caller.  The step budget and GetJobDistance are counted by the general path's own helpers
-(``MachineState.travelled``); any other line, and every error, goes to the general path, so
-messages stay exactly the same.
+CAM output is mostly lines such as ``G1 X.. Y.. Z..`` and ``G2 X.. Y.. I.. J..``.  While the
+machine is in a state where such a line can only be a straight move or an arc (``batchable``, the
+one place that decides it), a run of them is turned into targets by ``plain_moves`` (straight
+lines) and ``BulkPath._arc_of_words`` (an arc line: the general path's own target and
+``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
+general path would have made, with the same spindle and caller.  The step budget and
+GetJobDistance are counted by the general path's own helpers (``MachineState.travelled``); any
+other line, and every error, goes to the general path, so messages stay exactly the same.
 
-``plain_moves`` here is the reference; ``speedups.plain_moves`` is the same function compiled
-(``edingcnc_lang/_speedups.c``), used when it is built and ``ECNC_PURE_PYTHON`` is not set.
-The equivalence tests run both and compare whole moves with the general path's.
+``plain_moves`` and ``_arc_of_words`` here are the references; ``speedups.plain_moves`` and
+``_speedups.plain_arc`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
+and ``ECNC_PURE_PYTHON`` is not set.  The equivalence tests run both and compare whole moves with
+the general path's.
 """
 from __future__ import annotations
 
@@ -155,10 +157,10 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
 
 
 class BulkPath(MachineState):
-    """Runs of plain lines: straight moves in bulk while they are simple, any other line on its own."""
+    """Runs of plain lines: moves in bulk while they are simple, any other line on its own."""
 
     def _exec_plain_run(self, run: n.PlainRun) -> None:
-        """Plain lines: straight moves in bulk while they are simple, any other line on its own."""
+        """Plain lines: straight moves and arcs in bulk while they are simple, any other line on its own."""
         lines = run.lines
         done = 0
         while done < len(lines):
@@ -175,7 +177,7 @@ class BulkPath(MachineState):
             self.execute(plain_block(text, run.path, lineno))
 
     def batchable(self) -> bool:
-        """Whether a plain G0/G1 line can only be a straight move now, so it may go in a batch.
+        """Whether a plain G0/G1/G2/G3 line can only be a straight move or an arc now, so it may go in a batch.
 
         Not with a tangential knife (it turns C), clamped rotary axes or TCAGuard (refusals per
         move), not outside G94 (the feed depends on the move), not under G96 (the speed follows
