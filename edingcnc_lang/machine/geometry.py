@@ -54,6 +54,8 @@ def center_from_radius(start: tuple[float, float], end: tuple[float, float], rad
     half = math.hypot(mid1 - e1, mid2 - e2)
     if half - abs_r > tolerance:
         raise ArcError(f"R{radius:g} is too small to reach the end point: the chord is {2 * half:.4f} mm long")
+    if abs_r == 0.0:  # ends closer than the tolerance: R0 still describes no circle
+        raise ArcError(f"R{radius:g} is no radius: an R-form arc needs R other than 0")
     if half / abs_r > 1.0 - TINY:
         half = abs_r
     theta = math.atan2(e2 - s2, e1 - s1) + (-math.pi / 2 if (clockwise == (radius > 0)) else math.pi / 2)

@@ -42,7 +42,7 @@ arc_lines = st.one_of(fitting_arcs, fitting_arcs, st.builds(
     lambda g, words, centre, f, n: " ".join(([f"N{n}"] if n else []) + ([g] if g else []) + [f"{a}{v}" for a, v in words]
                                              + centre + ([f"F{f}"] if f else [])),
     st.sampled_from(["G2", "G3", "G02", "g3", ""]), axis_words,
-    st.sampled_from([["R300"], ["r-300"], ["R5"], ["I5", "J0"], ["I-5"], ["J5"], ["K5", "I0"], ["J3", "K4"],
+    st.sampled_from([["R300"], ["r-300"], ["R5"], ["R0"], ["I5", "J0"], ["I-5"], ["J5"], ["K5", "I0"], ["J3", "K4"],
                      ["I5", "R300"], []]),
     st.sampled_from(["", "", "100", "0"]), st.sampled_from([0, 10])))
 state_lines = st.sampled_from(["G17", "G18", "G19", "G91", "G90", "G20", "G21", "G10 L2 P1 X5 Y-3 Z1", "G92 X0 Y0", "G92.1",

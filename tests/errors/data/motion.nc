@@ -12,6 +12,9 @@ G2 X0 Y10 F100
 G2 X0 Y0 R5 F100
 ;### 1: an R-form arc needs an end point different from its start point; start (0.0000, 0.0000), end (0.0000, 0.0000) in the XY plane
 ---
+G2 X0.001 R0 F100
+;### 1: R0 is no radius: an R-form arc needs R other than 0; start (0.0000, 0.0000), end (0.0010, 0.0000) in the XY plane
+---
 G2 X5 I0 J0 F100
 ;### 1: the arc centre lies on its start point (radius 0); start (0.0000, 0.0000), centre (0.0000, 0.0000), end (5.0000, 0.0000) in the XY plane
 ---
