@@ -217,16 +217,18 @@ error:
  * The node classes come from setup(nodes_module); nodes are made as ``object.__new__`` and
  * ``object.__setattr__`` make them (their frozen ``__init__`` does no more).
  */
-enum { NUMBER, PARAM, UNARY, BINARY, COMPARE, CALL, WORD, ASSIGN, BLOCK, N_CLASSES };
-static const char *const CLASS_NAMES[N_CLASSES] = {"Number", "Param", "Unary", "Binary", "Compare", "Call",
-                                                   "Word", "Assign", "Block"};
-static PyObject *classes[N_CLASSES], *span_class;
-static newfunc tuple_new;
+enum { NUMBER, PARAM, UNARY, BINARY, COMPARE, CALL, WORD, ASSIGN, BLOCK, MESSAGE, DIALOG, GOSUB, N_CLASSES,
+       OPEN = N_CLASSES, CLOSE, N_ALL_CLASSES };
+static const char *const CLASS_NAMES[N_ALL_CLASSES] = {"Number", "Param", "Unary", "Binary", "Compare", "Call",
+                                                       "Word", "Assign", "Block", "Message", "Dialog", "GoSub",
+                                                       "Open", "Close"};
+static PyObject *classes[N_ALL_CLASSES], *span_class;
 enum { F_VALUE, F_SPAN, F_INDEX, F_OP, F_OPERAND, F_LEFT, F_RIGHT, F_NAME, F_ARGS, F_LETTER, F_TARGET,
-       F_WORDS, F_ASSIGNS, F_MESSAGE, F_LINE_NUMBER, F_BLOCK_DELETE, N_FIELDS };
+       F_WORDS, F_ASSIGNS, F_MESSAGE, F_LINE_NUMBER, F_BLOCK_DELETE, F_KIND, F_ITEMS, F_COND, F_EXTRA, N_FIELDS };
 static const char *const FIELD_NAMES[N_FIELDS] = {"value", "span", "index", "op", "operand", "left", "right",
                                                   "name", "args", "letter", "target", "words", "assigns",
-                                                  "message", "line_number", "block_delete"};
+                                                  "message", "line_number", "block_delete", "kind", "items",
+                                                  "cond", "extra"};
 static PyObject *fields[N_FIELDS];
 static const char *const FUNCTIONS[] = {"ABS", "ACOS", "ASIN", "COS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN",
                                         "SQRT", "TAN", "ATAN"};
@@ -272,19 +274,33 @@ static PyObject *give_up(Parser *p)
 
 static Token *at(Parser *p, Py_ssize_t i) { return &p->tokens[i < p->count ? i : p->count - 1]; }
 
-static PyObject *span(Parser *p, Py_ssize_t col, Py_ssize_t end)
+/* A Span: a tuple subclass, allocated and filled as tuple.__new__ fills one (without an argument tuple). */
+static PyObject *make_span(PyObject *path, PyObject *line, Py_ssize_t col, Py_ssize_t end)
 {
-    PyObject *items = Py_BuildValue("(OOnOn)", p->path, p->line, col, p->line, end), *made;
-    if (items == NULL)
-        return NULL;
-    made = PyTuple_Pack(1, items);
-    Py_DECREF(items);
+    PyObject *made = PyType_GenericAlloc((PyTypeObject *)span_class, 5), *number;
+    Py_ssize_t k;
     if (made == NULL)
         return NULL;
-    items = made;
-    made = tuple_new((PyTypeObject *)span_class, items, NULL);
-    Py_DECREF(items);
+    Py_INCREF(path);
+    PyTuple_SetItem(made, 0, path);
+    Py_INCREF(line);
+    PyTuple_SetItem(made, 1, line);
+    Py_INCREF(line);
+    PyTuple_SetItem(made, 3, line);
+    for (k = 0; k < 2; k++) {
+        number = PyLong_FromSsize_t(k ? end : col);
+        if (number == NULL) {
+            Py_DECREF(made);
+            return NULL;
+        }
+        PyTuple_SetItem(made, k ? 4 : 2, number);
+    }
     return made;
+}
+
+static PyObject *span(Parser *p, Py_ssize_t col, Py_ssize_t end)
+{
+    return make_span(p->path, p->line, col, end);
 }
 
 /* A node of class ``which`` with ``count`` fields; steals the references to ``values`` (any may be NULL
@@ -565,26 +581,21 @@ static PyObject *expr(Parser *p, int min_level, Py_ssize_t *start, Py_ssize_t *e
     return NULL;
 }
 
-static PyObject *block(PyObject *self, PyObject *args)
+/* The Block of the UTF-8 line s[:size]; NULL without an exception where fastparse gives up. */
+static PyObject *read_block(const char *s, Py_ssize_t size, PyObject *path, PyObject *line,
+                            Py_ssize_t integer_digits, Py_ssize_t fraction_digits)
 {
     static const int word_names[] = {F_LETTER, F_VALUE, F_SPAN};
     static const int assign_names[] = {F_TARGET, F_VALUE, F_SPAN};
     static const int block_names[] = {F_WORDS, F_ASSIGNS, F_MESSAGE, F_LINE_NUMBER, F_BLOCK_DELETE, F_SPAN};
-    PyObject *text, *words = NULL, *assigns = NULL, *result = NULL, *values[6];
-    Py_ssize_t integer_digits, fraction_digits, size, at_byte, count, first_col, last_end = 0, start, end;
+    PyObject *words = NULL, *assigns = NULL, *result = NULL, *values[6];
+    Py_ssize_t count, first_col, last_end = 0, start, end;
     Token stack[STACK_TOKENS], *found = stack;
     Parser p;
     int block_delete;
-    (void)self;
-    if (classes[0] == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not called");
-        return NULL;
-    }
-    if (!PyArg_ParseTuple(args, "UOOnn", &text, &p.path, &p.line, &integer_digits, &fraction_digits))
-        return NULL;
-    p.s = utf8_at(text, 0, &size, &at_byte);
-    if (p.s == NULL)
-        Py_RETURN_NONE;
+    p.s = s;
+    p.path = path;
+    p.line = line;
     if (size + 1 > STACK_TOKENS && (found = PyMem_New(Token, size + 1)) == NULL)
         return PyErr_NoMemory();
     count = scan(p.s, size, 0, 0, integer_digits, fraction_digits, found);
@@ -709,9 +720,85 @@ done:
     Py_XDECREF(assigns);
     if (found != stack)
         PyMem_Free(found);
+    return result;
+}
+
+static int ready(void)
+{
+    if (classes[0] != NULL)
+        return 1;
+    PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not called");
+    return 0;
+}
+
+static PyObject *block(PyObject *self, PyObject *args)
+{
+    PyObject *text, *path, *line, *result;
+    Py_ssize_t integer_digits, fraction_digits, size, at_byte;
+    const char *s;
+    (void)self;
+    if (!ready() || !PyArg_ParseTuple(args, "UOOnn", &text, &path, &line, &integer_digits, &fraction_digits))
+        return NULL;
+    s = utf8_at(text, 0, &size, &at_byte);
+    if (s == NULL)
+        Py_RETURN_NONE;
+    result = read_block(s, size, path, line, integer_digits, fraction_digits);
     if (result == NULL && !PyErr_Occurred())
         Py_RETURN_NONE;
     return result;
+}
+
+/* The condition of an If/While head whose keyword ends at byte ``at_byte`` (code point ``pos``) of the
+ * UTF-8 line s[:size], exactly as fastparse._Line.condition reads it, with its end column and stray
+ * ']' count; NULL without an exception where that method gives up. */
+static PyObject *read_condition(const char *s, Py_ssize_t size, Py_ssize_t at_byte, Py_ssize_t pos,
+                                PyObject *path, PyObject *line, int is_if, Py_ssize_t integer_digits,
+                                Py_ssize_t fraction_digits, Py_ssize_t *end, Py_ssize_t *extra)
+{
+    static const char *const THEN[] = {"THEN"};
+    PyObject *cond = NULL;
+    Py_ssize_t count, start;
+    Token stack[STACK_TOKENS], *found = stack;
+    Parser p;
+    Token *then;
+    *extra = 0;
+    if (size - at_byte + 1 > STACK_TOKENS && (found = PyMem_New(Token, size - at_byte + 1)) == NULL)
+        return PyErr_NoMemory();
+    count = scan(s, size, at_byte, pos, integer_digits, fraction_digits, found);
+    if (count < 1)
+        goto fail;
+    p.s = s;
+    p.path = path;
+    p.line = line;
+    p.tokens = found;
+    p.count = count;
+    p.i = 0;
+    p.gave_up = 0;
+    if (!expect(&p, OP_BRACKET))
+        goto fail;
+    cond = expr(&p, 1, &start, end);
+    if (cond == NULL || !(*end = expect(&p, OP_CLOSE)))
+        goto fail;
+    while (at(&p, p.i)->kind == OP_CLOSE) {
+        *end = expect(&p, OP_CLOSE);
+        (*extra)++;
+    }
+    then = at(&p, p.i);
+    if (is_if && then->kind == T_LETTERS) {
+        if (lookup(p.s + then->start, then->stop - then->start, THEN, 1) < 0)
+            goto fail;
+        *end = expect(&p, T_LETTERS);
+    }
+    if (at(&p, p.i)->kind != T_END)
+        goto fail;
+    if (found != stack)
+        PyMem_Free(found);
+    return cond;
+fail:
+    Py_XDECREF(cond);
+    if (found != stack)
+        PyMem_Free(found);
+    return NULL;
 }
 
 /* condition(text, pos, path, line, is_if, integer_digits, fraction_digits): the condition of an
@@ -719,73 +806,254 @@ done:
  * as fastparse._Line.condition reads it; None where that method gives up or this one does not try. */
 static PyObject *condition(PyObject *self, PyObject *args)
 {
-    static const char *const THEN[] = {"THEN"};
-    PyObject *text, *cond = NULL, *result = NULL;
-    Py_ssize_t pos, integer_digits, fraction_digits, size, at_byte, count, start, end, extra = 0;
+    PyObject *text, *path, *line, *cond, *result;
+    Py_ssize_t pos, integer_digits, fraction_digits, size, at_byte, end, extra;
+    int is_if;
+    const char *s;
+    (void)self;
+    if (!ready() || !PyArg_ParseTuple(args, "UnOOpnn", &text, &pos, &path, &line, &is_if, &integer_digits,
+                                      &fraction_digits))
+        return NULL;
+    s = utf8_at(text, pos, &size, &at_byte);
+    if (s == NULL)
+        Py_RETURN_NONE;
+    cond = read_condition(s, size, at_byte, pos, path, line, is_if, integer_digits, fraction_digits, &end, &extra);
+    if (cond == NULL) {
+        if (PyErr_Occurred())
+            return NULL;
+        Py_RETURN_NONE;
+    }
+    result = Py_BuildValue("(Onn)", cond, end, extra);
+    Py_DECREF(cond);
+    return result;
+}
+
+/* ------------------------------------------------------------------------------------------
+ * statement(text, path, line, integer_digits, fraction_digits): what fastparse.parse_fast makes of a
+ * line without '(' (the caller checks that, and the input limits): None for a blank or comment line,
+ * the Block of words and assignments (as block() above), the Open/Close of a Sub/If/While head or
+ * end line, a GoSub, a message or a dlgmsg, the same nodes as the Python methods build; the give-up
+ * marker of setup() where that function gives up or this one does not try (logfile, home, ...).
+ */
+enum { K_ENDSUB, K_ENDIF, K_ENDWHILE, K_ELSE, K_MSG, K_WARNMSG, K_ERRMSG, K_LOGMSG, K_SUB, K_GOSUB, K_IF,
+       K_WHILE, K_DLGMSG, N_HANDLED };
+static const char *const HANDLED[N_HANDLED] = {"ENDSUB", "ENDIF", "ENDWHILE", "ELSE", "MSG", "WARNMSG", "ERRMSG",
+                                               "LOGMSG", "SUB", "GOSUB", "IF", "WHILE", "DLGMSG"};
+/* the text each keeps: a closer's or opener's kind (fastparse._CLOSERS), a message's kind (lower-case) */
+static const char *const HANDLED_TEXT[N_HANDLED] = {"EndSub", "EndIf", "EndWhile", "Else", "msg", "warnmsg",
+                                                    "errmsg", "logmsg", "Sub", "", "If", "While", ""};
+static PyObject *handled_text[N_HANDLED], *give_up_marker, *keywords;
+
+static int is_name_char(unsigned char c) { return is_letter(c) || is_digit(c) || c == '_'; }
+
+/* [ \t]*(?:;.*)?\Z from byte i: only blanks and a comment (without a newline) are left. */
+static int blank_from(const char *s, Py_ssize_t size, Py_ssize_t i)
+{
+    while (i < size && (s[i] == ' ' || s[i] == '\t'))
+        i++;
+    return i == size || (s[i] == ';' && memchr(s + i, '\n', (size_t)(size - i)) == NULL);
+}
+
+/* The strings and values of a msg/dlgmsg from byte (and code point) ``pos`` on, as _Line.items reads
+ * them, and the end column (``*end`` comes in as the keyword's). */
+static PyObject *read_items(const char *s, Py_ssize_t size, Py_ssize_t pos, PyObject *path, PyObject *line,
+                            Py_ssize_t integer_digits, Py_ssize_t fraction_digits, Py_ssize_t *end)
+{
+    PyObject *items = NULL, *item, *result = NULL;
     Token stack[STACK_TOKENS], *found = stack;
     Parser p;
-    int is_if;
-    Token *then;
-    (void)self;
-    if (classes[0] == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not called");
-        return NULL;
-    }
-    if (!PyArg_ParseTuple(args, "UnOOpnn", &text, &pos, &p.path, &p.line, &is_if, &integer_digits,
-                          &fraction_digits))
-        return NULL;
-    p.s = utf8_at(text, pos, &size, &at_byte);
-    if (p.s == NULL)
-        Py_RETURN_NONE;
-    if (size - at_byte + 1 > STACK_TOKENS && (found = PyMem_New(Token, size - at_byte + 1)) == NULL)
+    Py_ssize_t count, start;
+    if (size - pos + 1 > STACK_TOKENS && (found = PyMem_New(Token, size - pos + 1)) == NULL)
         return PyErr_NoMemory();
-    count = scan(p.s, size, at_byte, pos, integer_digits, fraction_digits, found);
-    if (count < 1)
+    count = scan(s, size, pos, pos, integer_digits, fraction_digits, found);
+    if (count < 1 || (items = PyList_New(0)) == NULL)
         goto done;
+    p.s = s;
+    p.path = path;
+    p.line = line;
     p.tokens = found;
     p.count = count;
     p.i = 0;
     p.gave_up = 0;
-    if (!expect(&p, OP_BRACKET))
-        goto done;
-    cond = expr(&p, 1, &start, &end);
-    if (cond == NULL || !(end = expect(&p, OP_CLOSE)))
-        goto done;
-    while (at(&p, p.i)->kind == OP_CLOSE) {
-        end = expect(&p, OP_CLOSE);
-        extra++;
-    }
-    then = at(&p, p.i);
-    if (is_if && then->kind == T_LETTERS) {
-        if (lookup(p.s + then->start, then->stop - then->start, THEN, 1) < 0)
+    for (;;) {
+        Token *token = at(&p, p.i);
+        if (token->kind == T_END)
+            break;
+        if (token->kind == T_STRING) {
+            item = PyUnicode_DecodeUTF8(s + token->start + 1, token->stop - token->start - 2, NULL);
+            *end = token->end;
+            p.i++;
+        } else {
+            item = operand(&p, &start, end);
+        }
+        if (item == NULL || PyList_Append(items, item) < 0) {
+            Py_XDECREF(item);
             goto done;
-        end = expect(&p, T_LETTERS);
+        }
+        Py_DECREF(item);
     }
-    if (at(&p, p.i)->kind != T_END)
-        goto done;
-    result = Py_BuildValue("(Onn)", cond, end, extra);
+    result = PyList_AsTuple(items);
 done:
-    Py_XDECREF(cond);
+    Py_XDECREF(items);
     if (found != stack)
         PyMem_Free(found);
-    if (result == NULL && !PyErr_Occurred())
-        Py_RETURN_NONE;
     return result;
 }
 
-/* setup(nodes_module): the node classes block() makes. */
-static PyObject *setup(PyObject *self, PyObject *module)
+static PyObject *read_statement(const char *s, Py_ssize_t size, PyObject *path, PyObject *line,
+                                Py_ssize_t integer_digits, Py_ssize_t fraction_digits)
 {
+    static const int close_names[] = {F_KIND, F_SPAN};
+    static const int open_names[] = {F_KIND, F_SPAN, F_NAME, F_COND, F_EXTRA};
+    static const int message_names[] = {F_KIND, F_ITEMS, F_SPAN};
+    static const int dialog_names[] = {F_ITEMS, F_SPAN};
+    static const int gosub_names[] = {F_NAME, F_SPAN};
+    PyObject *values[5];
+    Py_ssize_t i = 0, head, pos, end, extra;
+    int k;
+    while (i < size && (s[i] == ' ' || s[i] == '\t'))
+        i++;
+    if (blank_from(s, size, i))
+        Py_RETURN_NONE;
+    head = i;
+    while (i < size && is_name_char((unsigned char)s[i]))
+        i++;
+    k = i > head ? lookup(s + head, i - head, HANDLED, N_HANDLED) : -1;
+    if (k < 0) {
+        if (i - head >= 2 && i - head < 64) {  /* another keyword (logfile, kin, ...): not read here */
+            char lower[64];
+            PyObject *name;
+            int known;
+            Py_ssize_t j;
+            for (j = head; j < i; j++)
+                lower[j - head] = (char)(is_letter((unsigned char)s[j]) ? s[j] | 0x20 : s[j]);
+            if ((name = PyUnicode_FromStringAndSize(lower, i - head)) == NULL)
+                return NULL;
+            known = PySequence_Contains(keywords, name);
+            Py_DECREF(name);
+            if (known != 0)
+                return NULL;  /* given up, or the error */
+        }
+        return read_block(s, size, path, line, integer_digits, fraction_digits);
+    }
+    pos = i;  /* the keyword and the blanks before it are ASCII: bytes are code points here */
+    end = pos + 1;
+    if (k <= K_ELSE) {
+        if (!blank_from(s, size, pos))
+            return NULL;
+        values[0] = handled_text[k];
+        Py_INCREF(values[0]);
+        values[1] = make_span(path, line, head + 1, end);
+        return node(CLOSE, 2, close_names, values);
+    }
+    if (k == K_SUB || k == K_GOSUB) {
+        Py_ssize_t name_start;
+        while (i < size && (s[i] == ' ' || s[i] == '\t'))
+            i++;
+        name_start = i;
+        while (i < size && is_name_char((unsigned char)s[i]))
+            i++;
+        if (i == name_start || !blank_from(s, size, i))
+            return NULL;
+        if (k == K_GOSUB) {
+            values[0] = PyUnicode_FromStringAndSize(s + name_start, i - name_start);
+            values[1] = make_span(path, line, head + 1, i + 1);
+            return node(GOSUB, 2, gosub_names, values);
+        }
+        values[0] = handled_text[k];
+        Py_INCREF(values[0]);
+        values[1] = make_span(path, line, head + 1, i + 1);
+        values[2] = PyUnicode_FromStringAndSize(s + name_start, i - name_start);
+        values[3] = Py_None;
+        Py_INCREF(Py_None);
+        values[4] = PyLong_FromLong(0);
+        return node(OPEN, 5, open_names, values);
+    }
+    if (k == K_IF || k == K_WHILE) {
+        PyObject *cond = read_condition(s, size, pos, pos, path, line, k == K_IF, integer_digits, fraction_digits,
+                                        &end, &extra);
+        if (cond == NULL)
+            return NULL;
+        values[0] = handled_text[k];
+        Py_INCREF(values[0]);
+        values[1] = make_span(path, line, head + 1, end);
+        values[2] = PyUnicode_FromStringAndSize("", 0);
+        values[3] = cond;
+        values[4] = PyLong_FromSsize_t(extra);
+        return node(OPEN, 5, open_names, values);
+    }
+    {  /* a message or a dlgmsg */
+        PyObject *items = read_items(s, size, pos, path, line, integer_digits, fraction_digits, &end);
+        if (items == NULL)
+            return NULL;
+        if (k == K_DLGMSG) {
+            values[0] = items;
+            values[1] = make_span(path, line, head + 1, end);
+            return node(DIALOG, 2, dialog_names, values);
+        }
+        values[0] = handled_text[k];
+        Py_INCREF(values[0]);
+        values[1] = items;
+        values[2] = make_span(path, line, head + 1, end);
+        return node(MESSAGE, 3, message_names, values);
+    }
+}
+
+static PyObject *statement(PyObject *self, PyObject *args)
+{
+    PyObject *text, *path, *line, *result;
+    Py_ssize_t integer_digits, fraction_digits, size;
+    const char *s;
+    (void)self;
+    if (!ready() || !PyArg_ParseTuple(args, "UOOnn", &text, &path, &line, &integer_digits, &fraction_digits))
+        return NULL;
+    if (give_up_marker == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not given the block module");
+        return NULL;
+    }
+    s = PyUnicode_AsUTF8AndSize(text, &size);
+    if (s == NULL) {  /* a lone surrogate: the Python path reads it */
+        PyErr_Clear();
+        result = NULL;
+    } else {
+        result = read_statement(s, size, path, line, integer_digits, fraction_digits);
+    }
+    if (result == NULL && !PyErr_Occurred()) {
+        Py_INCREF(give_up_marker);
+        return give_up_marker;
+    }
+    return result;
+}
+
+/* setup(nodes_module[, blocks_module, give_up, keywords]): the node classes block() makes; with the
+ * blocks module (Open, Close), the marker statement() gives up with and the keywords it leaves to the
+ * Python path, also those statement() makes. */
+static PyObject *setup(PyObject *self, PyObject *args)
+{
+    PyObject *module, *blocks = NULL, *marker = NULL, *names = NULL;
     int k;
     (void)self;
-    for (k = 0; k < N_CLASSES; k++) {
-        PyObject *found = PyObject_GetAttrString(module, CLASS_NAMES[k]);
+    if (!PyArg_ParseTuple(args, "O|OOO", &module, &blocks, &marker, &names))
+        return NULL;
+    for (k = 0; k < N_ALL_CLASSES; k++) {
+        PyObject *found;
+        if (k >= N_CLASSES && blocks == NULL)
+            break;
+        found = PyObject_GetAttrString(k < N_CLASSES ? module : blocks, CLASS_NAMES[k]);
         if (found == NULL || !PyType_Check(found)) {
             Py_XDECREF(found);
             return found == NULL ? NULL : (PyErr_SetString(PyExc_TypeError, "a node class expected"), NULL);
         }
         Py_XDECREF(classes[k]);
         classes[k] = found;
+    }
+    if (marker != NULL && names != NULL) {
+        Py_INCREF(marker);
+        Py_XDECREF(give_up_marker);
+        give_up_marker = marker;
+        Py_INCREF(names);
+        Py_XDECREF(keywords);
+        keywords = names;
     }
     Py_XDECREF(span_class);
     span_class = PyObject_GetAttrString(module, "Span");
@@ -801,7 +1069,11 @@ static PyMethodDef methods[] = {
      "block(text, path, line, integer_digits, fraction_digits): the Block of a word line, None to give up."},
     {"condition", condition, METH_VARARGS,
      "condition(text, pos, path, line, is_if, integer_digits, fraction_digits): (cond, end, extra), None to give up."},
-    {"setup", setup, METH_O, "setup(nodes_module): the node classes block() makes."},
+    {"statement", statement, METH_VARARGS,
+     "statement(text, path, line, integer_digits, fraction_digits): the node of a line, None if blank, "
+     "the give-up marker to give up."},
+    {"setup", setup, METH_VARARGS,
+     "setup(nodes_module[, blocks_module, give_up, keywords]): the classes the readers make."},
     {NULL, NULL, 0, NULL},
 };
 
@@ -833,11 +1105,13 @@ PyMODINIT_FUNC PyInit__lexer(void)
     for (k = 0; k < N_WORD_OPERATORS; k++)
         if ((word_operator_text[k] = PyUnicode_InternFromString(WORD_OPERATORS[k])) == NULL)
             return NULL;
+    for (k = 0; k < N_HANDLED; k++)
+        if ((handled_text[k] = PyUnicode_InternFromString(HANDLED_TEXT[k])) == NULL)
+            return NULL;
     for (k = 0; k < 26; k++) {
         char name[2] = {(char)('A' + k), '\0'};
         if ((letters[k] = PyUnicode_InternFromString(name)) == NULL)
             return NULL;
     }
-    tuple_new = (newfunc)PyType_GetSlot(&PyTuple_Type, Py_tp_new);
     return PyModule_Create(&module);
 }

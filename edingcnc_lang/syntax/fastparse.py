@@ -88,22 +88,23 @@ def _tokens_python(text: str, pos: int) -> list[Token]:
 _Compiled = Callable[..., object] | None
 
 
-def _compiled() -> tuple[_Compiled, _Compiled, _Compiled]:
-    """The compiled tokenizer, block and condition readers (``_lexer.c``), unless they are not built
-    or ``ECNC_PURE_PYTHON`` asks for the Python core."""
+def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled]:
+    """The compiled tokenizer, block, condition and statement readers (``_lexer.c``), unless they are
+    not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
     from edingcnc_lang.speedups import PURE_ENV
+    from edingcnc_lang.syntax import blocks
 
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None, None
+        return None, None, None, None
     try:
         from edingcnc_lang import _lexer  # type: ignore[attr-defined]
     except ImportError:
-        return None, None, None
-    _lexer.setup(n)
-    return _lexer.tokens, _lexer.block, _lexer.condition
+        return None, None, None, None
+    _lexer.setup(n, blocks, GIVE_UP, _KEYWORDS - _HANDLED)
+    return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement
 
 
-_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION = _compiled()
+_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT = _compiled()
 COMPILED_READER = _COMPILED_BLOCK is not None
 
 
@@ -336,6 +337,15 @@ def compiled_block(text: str, path: str, line: int) -> n.Block | None:
     if _COMPILED_BLOCK is None:
         return None
     return _COMPILED_BLOCK(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)  # type: ignore[return-value]
+
+
+def compiled_statement(text: str, path: str, line: int) -> LineResult | object:
+    """``parse_fast`` of a line without '(' that passes the input limits, on the compiled reader
+    (``_lexer.statement``): the same node, None for a blank line, or GIVE_UP where ``parse_fast``
+    gives up or the compiled reader does not try (then ``parse_fast`` decides)."""
+    if _COMPILED_STATEMENT is None:
+        return GIVE_UP
+    return _COMPILED_STATEMENT(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
 
 
 def _block(text: str, path: str, line: int) -> n.Block:
