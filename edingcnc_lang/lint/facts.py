@@ -1,24 +1,28 @@
 """One walk over a file that sorts out what most rules look at.
 
 Most rules care about one kind of thing: the G and M numbers of blocks, the
-parameters read or assigned, the dialogs.  Gathering them in a single pass, with
-each parameter's literal index worked out once, spares those rules a walk over
-every statement and keeps linting a big macro file fast (rules about the block
-structure, such as unreachable code, still follow the statements themselves).
+parameters read or assigned, the dialogs.  Gathering them in the single walk that
+also works out each statement's scope (``walk.walk``), with each parameter's literal
+index worked out once, spares those rules a walk over every statement and keeps
+linting a big macro file fast: a rule about G, M or T words visits only the blocks
+that have one, the unreachable-code rule only the lists that hold an end.
 """
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.lint.walk import END_OF_PROGRAM, Code, Scope, block_codes, literal_index, reads
+from edingcnc_lang.machine.tables import SIMULATION, code_key
+from edingcnc_lang.lint.evaluate import params_in
+from edingcnc_lang.lint.walk import END_OF_PROGRAM, Code, Scope, literal_index, reads, simulation_branches
 
 Use = tuple[n.Param, "int | None", Scope]  # a parameter read or assigned, its literal index, where
+Walked = tuple[tuple[n.Stmt, Scope], ...]
 
 
-@dataclass(frozen=True, slots=True)
-class BlockCodes:
+class BlockCodes(NamedTuple):
     """A block, where it sits, and its literal G and M numbers in line order."""
 
     block: n.Block
@@ -31,16 +35,22 @@ class BlockCodes:
 class FileFacts:
     """A file's statements sorted by what the rules ask about them."""
 
-    blocks: tuple[BlockCodes, ...]
+    walked: Walked  # every statement with its scope, as walk.walk gives them
+    blocks: tuple[BlockCodes, ...]  # every block
+    coded: tuple[BlockCodes, ...]  # the blocks with a G, M or T word (literal or not): the others hold no code
     reads: tuple[Use, ...]  # every parameter read, in source order
     targets: tuple[Use, ...]  # every assignment target, in source order
     dialogs: tuple[tuple[n.Dialog, Scope], ...]
     commands: tuple[n.Command, ...]
     callers: tuple[tuple[n.Stmt, Scope], ...]  # statements that may run a sub: GoSub, blocks with M codes
-    # The parameters each statement reads (by id(): nodes hash by value, deeply).
+    heads: tuple[n.If | n.While, ...]  # every If and While
+    # The parameters each statement that reads any reads (by id(): nodes hash by value, deeply).
     reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]]
-    codes_of: dict[int, BlockCodes]
+    codes_of: dict[int, BlockCodes]  # the coded blocks, by id()
     ending: frozenset[int]  # the statements (by id()) that end the program: walk.ends_program
+    # In each list of statements that holds an end followed by more: the first end and the first
+    # statement after it that is not a Sub definition (it never runs).
+    unreachable: tuple[tuple[n.Stmt, n.Stmt], ...]
 
 
 def indexed_reads(stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
@@ -48,42 +58,137 @@ def indexed_reads(stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
     return tuple((param, literal_index(param)) for param in reads(stmt))
 
 
-def gather(walked: Sequence[tuple[n.Stmt, Scope]]) -> FileFacts:
-    """Everything the rules look up about a file's statements (as ``walk`` yields them)."""
+def _indexed(params: list[n.Param]) -> list[tuple[n.Param, int | None]]:
+    """``indexed_reads`` of a list of parameters, ``#n`` (most of them) without a call."""
+    found = []
+    for param in params:
+        index = param.index
+        if type(index) is n.Number:
+            value = index.value
+            found.append((param, int(value) if value.is_integer() else None))
+        else:
+            found.append((param, literal_index(param)))
+    return found
+
+
+def _block_reads(block: n.Block) -> list[n.Param]:
+    """``walk.reads`` of a block, ``#n`` values without a call (the same order)."""
+    found: list[n.Param] = []
+    for word in block.words:
+        value = word.value
+        if type(value) is n.Number:
+            continue
+        if type(value) is n.Param and type(value.index) is n.Number:
+            found.append(value)
+        else:
+            found += params_in(value)
+    for assign in block.assigns:
+        index = assign.target.index
+        if type(index) is not n.Number:  # #[#1 + 2] = ... reads #1
+            found += params_in(index)
+        value = assign.value
+        if type(value) is n.Param and type(value.index) is n.Number:
+            found.append(value)
+        elif type(value) is not n.Number:
+            found += params_in(value)
+    return found
+
+
+def survey(body: Sequence[n.Stmt]) -> FileFacts:
+    """Every statement with its scope (``walk.walk``) and everything the rules look up about them."""
+    walked: list[tuple[n.Stmt, Scope]] = []
     blocks: list[BlockCodes] = []
+    coded: list[BlockCodes] = []
     all_reads: list[Use] = []
     targets: list[Use] = []
     dialogs: list[tuple[n.Dialog, Scope]] = []
     commands: list[n.Command] = []
     callers: list[tuple[n.Stmt, Scope]] = []
+    heads: list[n.If | n.While] = []
     reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]] = {}
     codes_of: dict[int, BlockCodes] = {}
     ending: set[int] = set()
-    for stmt, scope in walked:  # exact type tests: node classes are final, and this runs for every statement
-        params = reads(stmt)
-        if params:  # most statements read none
-            found = tuple([(param, literal_index(param)) for param in params])
-            all_reads += [(param, index, scope) for param, index in found]
-        else:
-            found = ()
-        reads_of[id(stmt)] = found
-        if type(stmt) is n.Block:
-            codes = BlockCodes(stmt, scope, *block_codes(stmt))
-            blocks.append(codes)
-            codes_of[id(stmt)] = codes
-            if stmt.assigns:
-                targets += [(a.target, literal_index(a.target), scope) for a in stmt.assigns]
-            if codes.m:
-                callers.append((stmt, scope))
-                if not stmt.block_delete and any(key in END_OF_PROGRAM for key, _word in codes.m):
-                    ending.add(id(stmt))
-        elif type(stmt) is n.GoSub:
-            callers.append((stmt, scope))
-        elif type(stmt) is n.Dialog:
-            dialogs.append((stmt, scope))
-        elif type(stmt) is n.Command:
-            commands.append(stmt)
-        elif type(stmt) is n.Message and stmt.kind == "errmsg":
-            ending.add(id(stmt))
-    return FileFacts(tuple(blocks), tuple(all_reads), tuple(targets), tuple(dialogs), tuple(commands),
-                     tuple(callers), reads_of, codes_of, frozenset(ending))
+    unreachable: list[tuple[n.Stmt, n.Stmt]] = []
+    add = walked.append
+
+    def visit(body: Sequence[n.Stmt], scope: Scope) -> None:
+        here = scope
+        end: n.Stmt | None = None  # the first statement of this list that ends the program
+        dead = False  # the statement after it that never runs is found
+        for stmt in body:
+            add((stmt, here))
+            ends = False
+            if isinstance(stmt, n.Block):
+                g: list[Code] = []
+                m: list[Code] = []
+                has_code = False
+                for word in stmt.words:
+                    letter = word.letter
+                    if letter == "G" or letter == "M":
+                        has_code = True
+                        value = word.value
+                        if type(value) is n.Number:
+                            (g if letter == "G" else m).append((code_key(value.value), word))
+                    elif letter == "T":
+                        has_code = True
+                params = _block_reads(stmt)
+                if params:
+                    found = _indexed(params)
+                    reads_of[id(stmt)] = tuple(found)
+                    all_reads.extend([(param, index, here) for param, index in found])
+                if stmt.assigns:
+                    targets.extend([(a.target, literal_index(a.target), here) for a in stmt.assigns])
+                codes = BlockCodes(stmt, here, tuple(g), tuple(m))
+                blocks.append(codes)
+                if has_code:
+                    coded.append(codes)
+                    codes_of[id(stmt)] = codes
+                if m:
+                    callers.append((stmt, here))
+                    ends = not stmt.block_delete and any(key in END_OF_PROGRAM for key, _word in m)
+            elif isinstance(stmt, n.Sub):
+                visit(stmt.body, Scope(stmt, False))
+            elif isinstance(stmt, (n.If, n.While)):
+                heads.append(stmt)
+                found = _indexed(params_in(stmt.cond))
+                reads_of[id(stmt)] = tuple(found)
+                all_reads.extend([(param, index, here) for param, index in found])
+                if isinstance(stmt, n.While):
+                    visit(stmt.body, here)
+                elif any(index == SIMULATION for _param, index in found):  # most conditions do not read #5380
+                    then_guard, else_guard, exits = simulation_branches(stmt)
+                    guarded = Scope(scope.sub, True)
+                    visit(stmt.then, guarded if then_guard else here)
+                    visit(stmt.orelse, guarded if else_guard else here)
+                    if not here.guarded and exits:
+                        here = guarded  # the rest of this list only runs on a real machine
+                else:
+                    visit(stmt.then, here)
+                    visit(stmt.orelse, here)
+            else:
+                params = reads(stmt)
+                if params:
+                    found = _indexed(params)
+                    reads_of[id(stmt)] = tuple(found)
+                    all_reads.extend([(param, index, here) for param, index in found])
+                if isinstance(stmt, n.GoSub):
+                    callers.append((stmt, here))
+                elif isinstance(stmt, n.Dialog):
+                    dialogs.append((stmt, here))
+                elif isinstance(stmt, n.Command):
+                    commands.append(stmt)
+                elif isinstance(stmt, n.Message):
+                    ends = stmt.kind == "errmsg"
+            if end is not None:
+                if not dead and not isinstance(stmt, n.Sub):
+                    unreachable.append((end, stmt))
+                    dead = True
+            elif ends:
+                end = stmt
+            if ends:
+                ending.add(id(stmt))
+
+    visit(body, Scope())
+    return FileFacts(tuple(walked), tuple(blocks), tuple(coded), tuple(all_reads), tuple(targets), tuple(dialogs),
+                     tuple(commands), tuple(callers), tuple(heads), reads_of, codes_of, frozenset(ending),
+                     tuple(unreachable))

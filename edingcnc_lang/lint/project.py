@@ -13,10 +13,10 @@ from functools import cached_property
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine.tables import ARG_PARAMS, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
-from edingcnc_lang.lint.facts import Code, FileFacts, gather, indexed_reads
+from edingcnc_lang.lint.facts import Code, FileFacts, indexed_reads, survey
 from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point, m_sub_number
-from edingcnc_lang.lint.walk import Scope, dialog_fields, walk
+from edingcnc_lang.lint.walk import Scope, dialog_fields
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 # Commands that store a result in the variable whose number they are given.
@@ -62,20 +62,16 @@ class Project:
         self.mill = mill  # the --ini is a mill's (machineType = 0): lathe codes stop the job there
         self._macros = macros
         self._extra_written = extra_written
-        self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}
         self._facts: dict[str, FileFacts] = {}
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
         """Every statement of the file with its scope."""
-        found = self._walked.get(file.path)
-        if found is None:
-            found = self._walked[file.path] = tuple(walk(file.body))
-        return found
+        return self.facts(file).walked
 
     def facts(self, file: SourceFile) -> FileFacts:
         found = self._facts.get(file.path)
         if found is None:
-            found = self._facts[file.path] = gather(self.walked(file))
+            found = self._facts[file.path] = survey(file.body)
         return found
 
     def reads(self, file: SourceFile, stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:

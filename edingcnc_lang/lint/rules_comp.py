@@ -71,7 +71,9 @@ class _Comp:
 @rule("G508")
 def arc_too_small_for_the_tool(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     comp = _Comp(project.tool_diameters)
-    for codes in project.facts(file).blocks:
+    for codes in project.facts(file).coded:  # a block without G codes changes nothing here
+        if not codes.g:
+            continue
         keys = {key for key, _ in codes.g}
         # the words' values matter to a G10 or a G41/G42 line, and to an arc under compensation
         words = comp.words(codes) if keys & _READ_WORDS else {}

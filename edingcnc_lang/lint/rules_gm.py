@@ -40,7 +40,7 @@ CENTRE = frozenset("IJKR")
 
 @rule("G500")
 def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         for letter, codes, groups in (("G", block.g, G_GROUPS), ("M", block.m, M_GROUPS)):
             seen: dict[str, int] = {}
             for key, word in codes:
@@ -59,7 +59,7 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 
 @rule("G501", "G502", "G503", "G506", "G507")
 def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for codes in project.facts(file).blocks:
+    for codes in project.facts(file).coded:
         yield from _line_words(codes)
 
 
@@ -95,7 +95,7 @@ def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
 def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A literal G number outside the dialect's tables stops the job at run time (``unknown G code``),
     and so does a lathe code on the mill the ``--ini`` describes."""
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         for key, word in block.g:
             if key not in G_GROUPS:
                 hint = UNKNOWN_G_HINTS.get(key)
@@ -108,7 +108,7 @@ def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """An M code the controller has no action for runs the Sub mNNN of its number (manual 3.7.13);
     without one it does nothing, which the run reports too."""
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         for key, word in block.m:
             name = m_sub_name(key)
             if key in M_GROUPS or (name is not None and project.resolve(file, name) is not None):
@@ -125,7 +125,7 @@ def _probe_word(g: Iterable[Code]) -> n.Word | None:
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         word = _probe_word(block.g)
         if word is not None and not project.is_guarded(file, block.scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "

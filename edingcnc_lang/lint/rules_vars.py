@@ -122,8 +122,8 @@ def arguments_after_call(file: SourceFile, project: Project) -> Iterator[Diagnos
 
 @rule("V304")
 def extra_bracket(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for stmt, _ in project.walked(file):
-        if isinstance(stmt, (n.If, n.While)) and stmt.extra_brackets:
+    for stmt in project.facts(file).heads:
+        if stmt.extra_brackets:
             keyword = "If" if isinstance(stmt, n.If) else "While"
             yield at("V304", f"{stmt.extra_brackets} extra ']' after the {keyword} condition: the "
                      "controller ignores it, but remove it so the brackets match", stmt.span)
