@@ -96,22 +96,39 @@ def _block_reads(block: n.Block) -> list[n.Param]:
 
 def survey(body: Sequence[n.Stmt]) -> FileFacts:
     """Every statement with its scope (``walk.walk``) and everything the rules look up about them."""
-    walked: list[tuple[n.Stmt, Scope]] = []
-    blocks: list[BlockCodes] = []
-    coded: list[BlockCodes] = []
-    all_reads: list[Use] = []
-    targets: list[Use] = []
-    dialogs: list[tuple[n.Dialog, Scope]] = []
-    commands: list[n.Command] = []
-    callers: list[tuple[n.Stmt, Scope]] = []
-    heads: list[n.If | n.While] = []
-    reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]] = {}
-    codes_of: dict[int, BlockCodes] = {}
-    ending: set[int] = set()
-    unreachable: list[tuple[n.Stmt, n.Stmt]] = []
-    add = walked.append
+    found = _Survey()
+    found.visit(body, Scope())
+    return found.facts()
 
-    def visit(body: Sequence[n.Stmt], scope: Scope) -> None:
+
+class _Survey:
+    """What ``survey`` collects while it walks (a class, not closures: a recursive closure is a reference
+    cycle, which would keep the whole tree alive until the cyclic collector runs)."""
+
+    def __init__(self) -> None:
+        self.walked: list[tuple[n.Stmt, Scope]] = []
+        self.blocks: list[BlockCodes] = []
+        self.coded: list[BlockCodes] = []
+        self.reads: list[Use] = []
+        self.targets: list[Use] = []
+        self.dialogs: list[tuple[n.Dialog, Scope]] = []
+        self.commands: list[n.Command] = []
+        self.callers: list[tuple[n.Stmt, Scope]] = []
+        self.heads: list[n.If | n.While] = []
+        self.reads_of: dict[int, tuple[tuple[n.Param, int | None], ...]] = {}
+        self.codes_of: dict[int, BlockCodes] = {}
+        self.ending: set[int] = set()
+        self.unreachable: list[tuple[n.Stmt, n.Stmt]] = []
+
+    def facts(self) -> FileFacts:
+        return FileFacts(tuple(self.walked), tuple(self.blocks), tuple(self.coded), tuple(self.reads),
+                         tuple(self.targets), tuple(self.dialogs), tuple(self.commands), tuple(self.callers),
+                         tuple(self.heads), self.reads_of, self.codes_of, frozenset(self.ending),
+                         tuple(self.unreachable))
+
+    def visit(self, body: Sequence[n.Stmt], scope: Scope) -> None:
+        """The statements of one list, and those nested in them, in source order."""
+        add, all_reads, reads_of, visit = self.walked.append, self.reads, self.reads_of, self.visit
         here = scope
         end: n.Stmt | None = None  # the first statement of this list that ends the program
         dead = False  # the statement after it that never runs is found
@@ -137,19 +154,19 @@ def survey(body: Sequence[n.Stmt]) -> FileFacts:
                     reads_of[id(stmt)] = tuple(found)
                     all_reads.extend([(param, index, here) for param, index in found])
                 if stmt.assigns:
-                    targets.extend([(a.target, literal_index(a.target), here) for a in stmt.assigns])
+                    self.targets.extend([(a.target, literal_index(a.target), here) for a in stmt.assigns])
                 codes = BlockCodes(stmt, here, tuple(g), tuple(m))
-                blocks.append(codes)
+                self.blocks.append(codes)
                 if has_code:
-                    coded.append(codes)
-                    codes_of[id(stmt)] = codes
+                    self.coded.append(codes)
+                    self.codes_of[id(stmt)] = codes
                 if m:
-                    callers.append((stmt, here))
+                    self.callers.append((stmt, here))
                     ends = not stmt.block_delete and any(key in END_OF_PROGRAM for key, _word in m)
             elif isinstance(stmt, n.Sub):
                 visit(stmt.body, Scope(stmt, False))
             elif isinstance(stmt, (n.If, n.While)):
-                heads.append(stmt)
+                self.heads.append(stmt)
                 found = _indexed(params_in(stmt.cond))
                 reads_of[id(stmt)] = tuple(found)
                 all_reads.extend([(param, index, here) for param, index in found])
@@ -172,23 +189,18 @@ def survey(body: Sequence[n.Stmt]) -> FileFacts:
                     reads_of[id(stmt)] = tuple(found)
                     all_reads.extend([(param, index, here) for param, index in found])
                 if isinstance(stmt, n.GoSub):
-                    callers.append((stmt, here))
+                    self.callers.append((stmt, here))
                 elif isinstance(stmt, n.Dialog):
-                    dialogs.append((stmt, here))
+                    self.dialogs.append((stmt, here))
                 elif isinstance(stmt, n.Command):
-                    commands.append(stmt)
+                    self.commands.append(stmt)
                 elif isinstance(stmt, n.Message):
                     ends = stmt.kind == "errmsg"
             if end is not None:
                 if not dead and not isinstance(stmt, n.Sub):
-                    unreachable.append((end, stmt))
+                    self.unreachable.append((end, stmt))
                     dead = True
             elif ends:
                 end = stmt
             if ends:
-                ending.add(id(stmt))
-
-    visit(body, Scope())
-    return FileFacts(tuple(walked), tuple(blocks), tuple(coded), tuple(all_reads), tuple(targets), tuple(dialogs),
-                     tuple(commands), tuple(callers), tuple(heads), reads_of, codes_of, frozenset(ending),
-                     tuple(unreachable))
+                self.ending.add(id(stmt))

@@ -42,6 +42,8 @@ CENTRE = frozenset("IJKR")
 def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     for block in project.facts(file).coded:
         for letter, codes, groups in (("G", block.g, G_GROUPS), ("M", block.m, M_GROUPS)):
+            if len(codes) < 2:  # most lines: no two codes to conflict
+                continue
             seen: dict[str, int] = {}
             for key, word in codes:
                 group = groups.get(key)
@@ -126,7 +128,7 @@ def _probe_word(g: Iterable[Code]) -> n.Word | None:
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
     for block in project.facts(file).coded:
-        word = _probe_word(block.g)
+        word = _probe_word(block.g) if block.g else None
         if word is not None and not project.is_guarded(file, block.scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
                      "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)

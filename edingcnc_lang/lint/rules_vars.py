@@ -54,8 +54,9 @@ def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     targets = [(index, param.span) for param, index, _scope in facts.targets]
     for dialog, _scope in facts.dialogs:
         targets += [(index, node.span) for index, node in dialog_fields(dialog)]
+    read_only = {index for index in {index for index, _span in targets} if index is not None and is_read_only(index)}
     for index, span in targets:
-        if index is not None and is_read_only(index):
+        if index in read_only:
             yield at("V301", f"#{index} is read-only: the controller sets it, a macro cannot "
                      "(use a variable of your own, e.g. one of #27..#3999)", span)
 
@@ -64,8 +65,9 @@ def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 def never_written(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """First read in each file of a volatile variable nothing assigns (a typo or a missing setup)."""
     seen: set[int] = set()
+    written = project.written
     for param, index, _scope in project.facts(file).reads:
-        if index is not None and index in VOLATILE_PARAMS and index not in project.written and index not in seen:
+        if index is not None and index in VOLATILE_PARAMS and index not in written and index not in seen:
             seen.add(index)
             yield at("V302", f"#{index} is read but never assigned in this file or its macro files, "
                      "so it is 0 or left over from an earlier job: assign it first", param.span)

@@ -105,3 +105,22 @@ def test_the_reads_of_a_block_follow_its_expressions_in_order() -> None:
 
     for stmt, _ in walk(parse_text(SOURCE + ENDS, "job.nc").body):
         assert reads(stmt) == [p for e in expressions(stmt) for p in params_in(e)], stmt
+
+
+def test_linting_leaves_no_reference_cycles(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """The CLI pauses the cyclic collector while it lints: a cycle holding a tree (a recursive closure
+    in the walk did) would keep the whole tree alive until the collector walked it at the end."""
+    import gc
+
+    from edingcnc_lang.lint import lint_paths
+
+    job = tmp_path / "macro.cnc"
+    job.write_text(";@unit mm\n" + SOURCE + ENDS)
+    lint_paths([job])  # everything imported and cached first
+    gc.collect()
+    gc.disable()
+    try:
+        assert lint_paths([job])
+        assert gc.collect() == 0
+    finally:
+        gc.enable()
