@@ -60,37 +60,39 @@ def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 
 
 @rule("G501", "G502", "G503", "G506", "G507")
-def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+def word_combinations(file: SourceFile, project: Project) -> list[Diagnostic]:
+    found: list[Diagnostic] = []
     for codes in project.facts(file).coded:
-        yield from _line_words(codes)
+        _line_words(codes, found)
+    return found
 
 
-def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
+def _line_words(codes: BlockCodes, found: list[Diagnostic]) -> None:
     block = codes.block
     letters = {w.letter: w for w in block.words}
     if codes.g:  # G501..G503 are about G codes: most lines have none
         g = dict(codes.g)
         if G53 in g and not G53_MOTIONS & g.keys():
-            yield at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. G53 G0 Z0",
-                     g[G53].span)
-        arc = next((k for k in g if k in ARCS), None)
+            found.append(at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. "
+                            "G53 G0 Z0", g[G53].span))
+        arc = next((k for k in g if k in ARCS), None) if ARCS & g.keys() else None
         if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
-            yield at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
-                     g[arc].span)
+            found.append(at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
+                            g[arc].span))
         feed = letters.get("F")
         move = next((k for k in g if k in FEED_MOVES), None) if feed is not None else None
         if feed is not None and move is not None and evaluate(feed.value) == 0:
-            yield at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
-                     "(EdingCNC G1516: incorrect feed rate)", feed.span)
+            found.append(at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
+                            "(EdingCNC G1516: incorrect feed rate)", feed.span))
     tool = letters.get("T")
     number = evaluate(tool.value) if tool else None
     if tool is not None and number is not None and number > MAX_TOOL:
-        yield at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span)
+        found.append(at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span))
     if len(block.words) > MAX_M_WORDS:
         m_words = [w for w in block.words if w.letter == "M"]
         if len(m_words) > MAX_M_WORDS:
-            yield at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
-                     f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
+            found.append(at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
+                            f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span))
 
 
 @rule("G509")
@@ -121,14 +123,17 @@ def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagn
 
 
 def _probe_word(g: Iterable[Code]) -> n.Word | None:
-    return next((w for k, w in g if k == PROBE), None)
+    for key, word in g:
+        if key == PROBE:
+            return word
+    return None
 
 
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
     for block in project.facts(file).coded:
-        word = _probe_word(block.g) if block.g else None
+        word = _probe_word(block.g)
         if word is not None and not project.is_guarded(file, block.scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
                      "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)

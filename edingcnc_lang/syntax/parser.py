@@ -307,7 +307,7 @@ class StatementReader:
         """Apply an end line (or Else) to the stack; returns a finished top-level statement."""
         want = _OPENER_OF[close.kind]
         line, col = close.span.line, close.span.col
-        if not any(f.opener.kind == want for f in stack):
+        if not (stack and stack[-1].opener.kind == want) and not any(f.opener.kind == want for f in stack):
             hint = (f" ({stack[-1].describe()} is still open: close it with "
                     f"{_END_OF[stack[-1].opener.kind]})") if stack else ""
             self._error(_ORPHAN_CODE[close.kind], f"{close.kind} without {want}{hint}", line, col, text)
