@@ -13,6 +13,7 @@
 #define PY_SSIZE_T_CLEAN
 #define Py_LIMITED_API 0x030A0000
 #include <Python.h>
+#include <math.h>
 
 static PyObject *kind_number, *kind_string, *kind_letters, *empty;
 /* The operators, each once: a token's kind is its own text (the same object, as in Python). */
@@ -1062,6 +1063,203 @@ static PyObject *setup(PyObject *self, PyObject *args)
     Py_RETURN_NONE;
 }
 
+/* ------------------------------------------------------------------------------------------
+ * The linter's look at a block (lint/facts.py, whose Python functions are the reference).
+ *
+ * block_facts(code_key, literal_index, block): (g, m, coded, reads) as facts.block_facts gives them:
+ * the literal G and M numbers of the block as (code_key(value), word) in line order, whether it has
+ * a G, M or T word at all, and every parameter it reads as (param, literal index) in walk.reads
+ * order.  expr_reads(literal_index, expr): the (param, literal index) pairs of one expression in
+ * evaluate.params_in order.  The two callables are the Python ones, called where the value is not
+ * the plain case (a computed index, a number too large to round here).
+ */
+
+/* literal_index(param) for a #n whose n is a Number (the Python function for any other). */
+static PyObject *literal_of(PyObject *param, PyObject *literal_index)
+{
+    PyObject *index = PyObject_GetAttr(param, fields[F_INDEX]), *result;
+    double value;
+    if (index == NULL)
+        return NULL;
+    if (!Py_IS_TYPE(index, (PyTypeObject *)classes[NUMBER])) {
+        Py_DECREF(index);
+        return PyObject_CallFunctionObjArgs(literal_index, param, NULL);
+    }
+    result = PyObject_GetAttr(index, fields[F_VALUE]);
+    Py_DECREF(index);
+    if (result == NULL)
+        return NULL;
+    value = PyFloat_AsDouble(result);
+    Py_DECREF(result);
+    if (value == -1.0 && PyErr_Occurred())
+        return NULL;
+    if (isfinite(value) && floor(value) == value)  /* float.is_integer() */
+        return PyLong_FromDouble(value);
+    Py_RETURN_NONE;
+}
+
+/* Append (param, literal index) for every parameter of ``expr`` to ``out``, outer ones first, left to
+ * right (evaluate.params_in); 0, or -1 with an exception. */
+static int reads_into(PyObject *out, PyObject *expr, PyObject *literal_index)
+{
+    static const int two[] = {F_LEFT, F_RIGHT};
+    PyTypeObject *type = Py_TYPE(expr);
+    PyObject *child;
+    int k, failed;
+    if (type == (PyTypeObject *)classes[NUMBER])
+        return 0;
+    if (type == (PyTypeObject *)classes[PARAM]) {
+        PyObject *literal = literal_of(expr, literal_index), *pair;
+        if (literal == NULL)
+            return -1;
+        pair = PyTuple_Pack(2, expr, literal);
+        Py_DECREF(literal);
+        if (pair == NULL || PyList_Append(out, pair) < 0) {
+            Py_XDECREF(pair);
+            return -1;
+        }
+        Py_DECREF(pair);
+        if ((child = PyObject_GetAttr(expr, fields[F_INDEX])) == NULL)
+            return -1;
+        failed = reads_into(out, child, literal_index);
+        Py_DECREF(child);
+        return failed;
+    }
+    if (type == (PyTypeObject *)classes[BINARY] || type == (PyTypeObject *)classes[COMPARE]) {
+        for (k = 0; k < 2; k++) {
+            if ((child = PyObject_GetAttr(expr, fields[two[k]])) == NULL)
+                return -1;
+            failed = reads_into(out, child, literal_index);
+            Py_DECREF(child);
+            if (failed)
+                return -1;
+        }
+        return 0;
+    }
+    if (type == (PyTypeObject *)classes[UNARY]) {
+        if ((child = PyObject_GetAttr(expr, fields[F_OPERAND])) == NULL)
+            return -1;
+        failed = reads_into(out, child, literal_index);
+        Py_DECREF(child);
+        return failed;
+    }
+    if (type == (PyTypeObject *)classes[CALL]) {
+        PyObject *args = PyObject_GetAttr(expr, fields[F_ARGS]);
+        Py_ssize_t i, count;
+        if (args == NULL)
+            return -1;
+        count = PyTuple_Size(args);
+        for (i = 0; i < count; i++)
+            if (reads_into(out, PyTuple_GetItem(args, i), literal_index) < 0) {
+                Py_DECREF(args);
+                return -1;
+            }
+        Py_DECREF(args);
+    }
+    return 0;
+}
+
+static PyObject *expr_reads(PyObject *self, PyObject *args)
+{
+    PyObject *expr, *literal_index, *out;
+    (void)self;
+    if (!ready() || !PyArg_ParseTuple(args, "OO", &literal_index, &expr))
+        return NULL;
+    if ((out = PyList_New(0)) != NULL && reads_into(out, expr, literal_index) < 0)
+        Py_CLEAR(out);
+    return out;
+}
+
+/* (code_key(value), word) appended to ``out``: integer tenths, rounded half to even as round() does. */
+static int code_into(PyObject *out, PyObject *number, PyObject *word, PyObject *code_key)
+{
+    PyObject *value = PyObject_GetAttr(number, fields[F_VALUE]), *key, *pair;
+    double tenths;
+    if (value == NULL)
+        return -1;
+    tenths = PyFloat_AsDouble(value) * 10.0;
+    if (tenths == -10.0 && PyErr_Occurred()) {
+        Py_DECREF(value);
+        return -1;
+    }
+    if (isfinite(tenths) && fabs(tenths) < 1e15)
+        key = PyLong_FromDouble(nearbyint(tenths));
+    else
+        key = PyObject_CallFunctionObjArgs(code_key, value, NULL);  /* the Python function decides (or raises) */
+    Py_DECREF(value);
+    if (key == NULL)
+        return -1;
+    pair = PyTuple_Pack(2, key, word);
+    Py_DECREF(key);
+    if (pair == NULL || PyList_Append(out, pair) < 0) {
+        Py_XDECREF(pair);
+        return -1;
+    }
+    Py_DECREF(pair);
+    return 0;
+}
+
+static PyObject *block_facts(PyObject *self, PyObject *args)
+{
+    PyObject *block, *code_key, *literal_index, *words = NULL, *assigns = NULL, *g = NULL, *m = NULL,
+             *reads = NULL, *result = NULL;
+    Py_ssize_t i, count;
+    int coded = 0;
+    (void)self;
+    if (!ready() || !PyArg_ParseTuple(args, "OOO", &code_key, &literal_index, &block))
+        return NULL;
+    if ((words = PyObject_GetAttr(block, fields[F_WORDS])) == NULL
+            || (assigns = PyObject_GetAttr(block, fields[F_ASSIGNS])) == NULL
+            || (g = PyList_New(0)) == NULL || (m = PyList_New(0)) == NULL || (reads = PyList_New(0)) == NULL)
+        goto done;
+    count = PyTuple_Size(words);
+    for (i = 0; i < count; i++) {
+        PyObject *word = PyTuple_GetItem(words, i), *letter, *value;
+        Py_UCS4 c = 0;
+        int failed = 0;
+        if ((letter = PyObject_GetAttr(word, fields[F_LETTER])) == NULL)
+            goto done;
+        if (PyUnicode_GetLength(letter) == 1)
+            c = PyUnicode_ReadChar(letter, 0);
+        Py_DECREF(letter);
+        if ((value = PyObject_GetAttr(word, fields[F_VALUE])) == NULL)
+            goto done;
+        if (c == 'G' || c == 'M' || c == 'T')
+            coded = 1;
+        if (Py_IS_TYPE(value, (PyTypeObject *)classes[NUMBER])) {
+            if (c == 'G' || c == 'M')
+                failed = code_into(c == 'G' ? g : m, value, word, code_key);
+        } else {
+            failed = reads_into(reads, value, literal_index);
+        }
+        Py_DECREF(value);
+        if (failed)
+            goto done;
+    }
+    count = PyTuple_Size(assigns);
+    for (i = 0; i < count; i++) {
+        PyObject *assign = PyTuple_GetItem(assigns, i), *target, *index = NULL, *value = NULL;
+        int failed = -1;
+        if ((target = PyObject_GetAttr(assign, fields[F_TARGET])) != NULL
+                && (index = PyObject_GetAttr(target, fields[F_INDEX])) != NULL
+                && (value = PyObject_GetAttr(assign, fields[F_VALUE])) != NULL)
+            failed = reads_into(reads, index, literal_index) || reads_into(reads, value, literal_index);
+        Py_XDECREF(target);
+        Py_XDECREF(index);
+        Py_XDECREF(value);
+        if (failed)
+            goto done;
+    }
+    result = Py_BuildValue("(OONO)", g, m, PyBool_FromLong(coded), reads);
+done:
+    Py_XDECREF(words);
+    Py_XDECREF(assigns);
+    Py_XDECREF(g);
+    Py_XDECREF(m);
+    Py_XDECREF(reads);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"tokens", tokens, METH_VARARGS,
      "tokens(text, pos, integer_digits, fraction_digits): the fast path's tokens, None to give up."},
@@ -1072,6 +1270,10 @@ static PyMethodDef methods[] = {
     {"statement", statement, METH_VARARGS,
      "statement(text, path, line, integer_digits, fraction_digits): the node of a line, None if blank, "
      "the give-up marker to give up."},
+    {"block_facts", block_facts, METH_VARARGS,
+     "block_facts(code_key, literal_index, block): (g, m, coded, reads) as lint.facts.block_facts."},
+    {"expr_reads", expr_reads, METH_VARARGS,
+     "expr_reads(literal_index, expr): the (param, literal index) pairs of lint.facts.expr_reads."},
     {"setup", setup, METH_VARARGS,
      "setup(nodes_module[, blocks_module, give_up, keywords]): the classes the readers make."},
     {NULL, NULL, 0, NULL},

@@ -9,11 +9,13 @@ that have one, the unreachable-code rule only the lists that hold an end.
 """
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.fastparse import COMPILED_READER
 from edingcnc_lang.machine.tables import SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import params_in
 from edingcnc_lang.lint.walk import END_OF_PROGRAM, Code, Scope, literal_index, reads, simulation_branches
@@ -36,7 +38,6 @@ class FileFacts:
     """A file's statements sorted by what the rules ask about them."""
 
     walked: Walked  # every statement with its scope, as walk.walk gives them
-    blocks: tuple[BlockCodes, ...]  # every block
     coded: tuple[BlockCodes, ...]  # the blocks with a G, M or T word (literal or not): the others hold no code
     reads: tuple[Use, ...]  # every parameter read, in source order
     targets: tuple[Use, ...]  # every assignment target, in source order
@@ -94,6 +95,45 @@ def _block_reads(block: n.Block) -> list[n.Param]:
     return found
 
 
+Indexed = list[tuple[n.Param, "int | None"]]  # parameters read, each with its literal index
+
+
+def block_facts(block: n.Block) -> tuple[list[Code], list[Code], bool, Indexed]:
+    """A block's literal G and M numbers with their words in line order, whether it has a G, M or T word
+    at all (literal or not), and the parameters it reads with their literal indices (``walk.reads``
+    order).  The reference for the compiled ``_lexer.block_facts``."""
+    g: list[Code] = []
+    m: list[Code] = []
+    coded = False
+    for word in block.words:
+        letter = word.letter
+        if letter == "G" or letter == "M" or letter == "T":
+            coded = True
+            value = word.value
+            if letter != "T" and type(value) is n.Number:
+                (g if letter == "G" else m).append((code_key(value.value), word))
+    return g, m, coded, _indexed(_block_reads(block))
+
+
+def expr_reads(expr: n.Expr) -> Indexed:
+    """The parameters an expression reads with their literal indices (``evaluate.params_in`` order).
+    The reference for the compiled ``_lexer.expr_reads``."""
+    return _indexed(params_in(expr))
+
+
+def _compiled() -> tuple[Callable[[n.Block], tuple[list[Code], list[Code], bool, Indexed]],
+                         Callable[[n.Expr], Indexed]]:
+    """``block_facts`` and ``expr_reads`` on the compiled reader when it runs (see fastparse)."""
+    if not COMPILED_READER:
+        return block_facts, expr_reads
+    from edingcnc_lang import _lexer  # type: ignore[attr-defined]
+
+    return partial(_lexer.block_facts, code_key, literal_index), partial(_lexer.expr_reads, literal_index)
+
+
+_BLOCK_FACTS, _EXPR_READS = _compiled()
+
+
 def survey(body: Sequence[n.Stmt]) -> FileFacts:
     """Every statement with its scope (``walk.walk``) and everything the rules look up about them."""
     found = _Survey()
@@ -107,7 +147,6 @@ class _Survey:
 
     def __init__(self) -> None:
         self.walked: list[tuple[n.Stmt, Scope]] = []
-        self.blocks: list[BlockCodes] = []
         self.coded: list[BlockCodes] = []
         self.reads: list[Use] = []
         self.targets: list[Use] = []
@@ -121,7 +160,7 @@ class _Survey:
         self.unreachable: list[tuple[n.Stmt, n.Stmt]] = []
 
     def facts(self) -> FileFacts:
-        return FileFacts(tuple(self.walked), tuple(self.blocks), tuple(self.coded), tuple(self.reads),
+        return FileFacts(tuple(self.walked), tuple(self.coded), tuple(self.reads),
                          tuple(self.targets), tuple(self.dialogs), tuple(self.commands), tuple(self.callers),
                          tuple(self.heads), self.reads_of, self.codes_of, frozenset(self.ending),
                          tuple(self.unreachable))
@@ -129,6 +168,7 @@ class _Survey:
     def visit(self, body: Sequence[n.Stmt], scope: Scope) -> None:
         """The statements of one list, and those nested in them, in source order."""
         add, all_reads, reads_of, visit = self.walked.append, self.reads, self.reads_of, self.visit
+        block_facts_of, expr_reads_of = _BLOCK_FACTS, _EXPR_READS
         here = scope
         end: n.Stmt | None = None  # the first statement of this list that ends the program
         dead = False  # the statement after it that never runs is found
@@ -136,28 +176,14 @@ class _Survey:
             add((stmt, here))
             ends = False
             if isinstance(stmt, n.Block):
-                g: list[Code] = []
-                m: list[Code] = []
-                has_code = False
-                for word in stmt.words:
-                    letter = word.letter
-                    if letter == "G" or letter == "M":
-                        has_code = True
-                        value = word.value
-                        if type(value) is n.Number:
-                            (g if letter == "G" else m).append((code_key(value.value), word))
-                    elif letter == "T":
-                        has_code = True
-                params = _block_reads(stmt)
-                if params:
-                    found = _indexed(params)
+                g, m, coded, found = block_facts_of(stmt)
+                if found:
                     reads_of[id(stmt)] = tuple(found)
                     all_reads.extend([(param, index, here) for param, index in found])
                 if stmt.assigns:
                     self.targets.extend([(a.target, literal_index(a.target), here) for a in stmt.assigns])
-                codes = BlockCodes(stmt, here, tuple(g), tuple(m))
-                self.blocks.append(codes)
-                if has_code:
+                if coded:
+                    codes = BlockCodes(stmt, here, tuple(g), tuple(m))
                     self.coded.append(codes)
                     self.codes_of[id(stmt)] = codes
                 if m:
@@ -167,7 +193,7 @@ class _Survey:
                 visit(stmt.body, Scope(stmt, False))
             elif isinstance(stmt, (n.If, n.While)):
                 self.heads.append(stmt)
-                found = _indexed(params_in(stmt.cond))
+                found = expr_reads_of(stmt.cond)
                 reads_of[id(stmt)] = tuple(found)
                 all_reads.extend([(param, index, here) for param, index in found])
                 if isinstance(stmt, n.While):

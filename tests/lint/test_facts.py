@@ -31,11 +31,11 @@ def _facts():  # type: ignore[no-untyped-def]
 
 def test_blocks_carry_their_g_and_m_numbers_in_line_order() -> None:
     facts = _facts()
-    codes = [([k for k, _ in b.g], [k for k, _ in b.m]) for b in facts.blocks]
-    assert codes == [([382, 910], []), ([], []), ([0, 900], [30, 80]), ([], [])]
-    probe = facts.blocks[0]
+    codes = [([k for k, _ in b.g], [k for k, _ in b.m]) for b in facts.coded]
+    assert codes == [([382, 910], []), ([0, 900], [30, 80])]  # the blocks with a G, M or T word
+    probe = facts.coded[0]
     assert probe.scope.guarded and probe.scope.sub is not None and probe.scope.sub.name == "probe_z"
-    assert facts.blocks[2].scope.sub is None
+    assert facts.coded[1].scope.sub is None
 
 
 def test_reads_and_targets_in_source_order_with_literal_indices() -> None:

@@ -1,0 +1,81 @@
+"""The compiled look at a block (``_lexer.block_facts``, ``_lexer.expr_reads``) gives exactly what the
+Python functions of ``lint/facts.py`` give (the reference): the same G and M numbers with the same word
+nodes, the same parameters in the same order with the same literal indices."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from edingcnc_lang.lint import facts
+from edingcnc_lang.lint.walk import literal_index
+from edingcnc_lang.machine.tables import code_key
+from edingcnc_lang.syntax import blocks, fastparse
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.parser import parse_text
+from edingcnc_lang.syntax.source import iter_file_lines
+
+from tests.parser.test_properties import blocks as block_nodes, exprs
+
+lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled reader is not built")
+lexer.setup(n, blocks, fastparse.GIVE_UP, fastparse._KEYWORDS - fastparse._HANDLED)  # also under ECNC_PURE_PYTHON=1
+
+
+def _same_block(block: n.Block) -> None:
+    g, m, coded, reads = lexer.block_facts(code_key, literal_index, block)
+    want = facts.block_facts(block)
+    assert (g, m, coded, reads) == want
+    assert [id(w) for _k, w in g + m] == [id(w) for _k, w in want[0] + want[1]]  # the very word nodes
+    assert [(id(p), type(i)) for p, i in reads] == [(id(p), type(i)) for p, i in want[3]]
+
+
+computed = st.builds(lambda e: n.Param(e), exprs)  # #[expr]: a literal index only when it folds
+odd_numbers = st.sampled_from([0.05, 0.15, 2.5, 38.25, -1.05, 1e300, 5380.0, 1.5, 27.0])
+
+
+@settings(max_examples=200, deadline=None)
+@given(block_nodes)
+def test_the_compiled_block_facts_are_the_python_ones(block: n.Block) -> None:
+    _same_block(block)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from("GMTXF"), st.one_of(odd_numbers.map(n.Number), computed, exprs)),
+                max_size=6),
+       st.lists(st.tuples(st.one_of(computed, st.integers(1, 6000).map(lambda i: n.Param(n.Number(float(i))))),
+                          exprs), max_size=3))
+def test_codes_that_round_half_to_even_and_computed_indices(words: list[tuple[str, n.Expr]],
+                                                            assigns: list[tuple[n.Param, n.Expr]]) -> None:
+    _same_block(n.Block(tuple(n.Word(letter, value) for letter, value in words),
+                        tuple(n.Assign(target, value) for target, value in assigns)))
+
+
+@settings(max_examples=200, deadline=None)
+@given(exprs)
+def test_the_compiled_expression_reads_are_the_python_ones(expr: n.Expr) -> None:
+    got = lexer.expr_reads(literal_index, expr)
+    assert got == facts.expr_reads(expr)
+    assert [id(p) for p, _ in got] == [id(p) for p, _ in facts.expr_reads(expr)]
+
+
+def test_the_shipped_files() -> None:
+    """Every block and If/While condition of the examples, packaged macros and test files."""
+    root = Path(__file__).resolve().parent.parent.parent
+    count = 0
+    for folder in ("examples", "stdlib", "tests/lint/cases", "tests/corpus"):
+        for path in sorted((root / folder).rglob("*")):
+            if path.suffix.lower() not in (".cnc", ".nc", ".ngc", ".tap"):
+                continue
+            try:
+                program = parse_text("\n".join(iter_file_lines(path)), str(path))
+            except Exception:  # files with syntax errors: other tests read them
+                continue
+            for stmt, _scope in facts.survey(program.body).walked:
+                if isinstance(stmt, n.Block):
+                    _same_block(stmt)
+                    count += 1
+                elif isinstance(stmt, (n.If, n.While)):
+                    assert lexer.expr_reads(literal_index, stmt.cond) == facts.expr_reads(stmt.cond)
+    assert count > 100
