@@ -84,7 +84,7 @@ class Project:
         found = self.facts(file).codes_of.get(id(stmt))
         if found is None:
             return ()
-        return {"G": found.g, "M": found.m}[letter]
+        return found.g if letter == "G" else found.m if letter == "M" else ()
 
     # ----------------------------------------------------------------- calls
     def searched(self, file: SourceFile) -> tuple[SourceFile, ...]:

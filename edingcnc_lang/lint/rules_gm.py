@@ -68,23 +68,42 @@ def word_combinations(file: SourceFile, project: Project) -> list[Diagnostic]:
 
 
 def _line_words(codes: BlockCodes, found: list[Diagnostic]) -> None:
+    """G501..G503, G506, G507 of one line; a code's word is the last one with that number, and the
+    last F and T words count, as the controller reads a line (one loop each: this runs for most lines)."""
     block = codes.block
-    letters = {w.letter: w for w in block.words}
-    if codes.g:  # G501..G503 are about G codes: most lines have none
-        g = dict(codes.g)
-        if G53 in g and not G53_MOTIONS & g.keys():
+    feed = tool = None
+    axes = centre = False
+    for word in block.words:
+        letter = word.letter
+        if letter == "F":
+            feed = word
+        elif letter == "T":
+            tool = word
+        elif letter in AXES:
+            axes = True
+        elif letter in CENTRE:
+            centre = True
+    if codes.g:  # G501..G503 are about G codes
+        g53 = arc = arc_word = move = None
+        g53_motion = False
+        for key, word in codes.g:
+            if key == G53:
+                g53 = word
+            if key in G53_MOTIONS:
+                g53_motion = True
+            if key in ARCS and (arc is None or key == arc):  # the first arc code, its last word
+                arc, arc_word = key, word
+            if move is None and key in FEED_MOVES:
+                move = key
+        if g53 is not None and not g53_motion:
             found.append(at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. "
-                            "G53 G0 Z0", g[G53].span))
-        arc = next((k for k in g if k in ARCS), None) if ARCS & g.keys() else None
-        if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
+                            "G53 G0 Z0", g53.span))
+        if arc is not None and arc_word is not None and axes and not centre:
             found.append(at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
-                            g[arc].span))
-        feed = letters.get("F")
-        move = next((k for k in g if k in FEED_MOVES), None) if feed is not None else None
+                            arc_word.span))
         if feed is not None and move is not None and evaluate(feed.value) == 0:
             found.append(at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
                             "(EdingCNC G1516: incorrect feed rate)", feed.span))
-    tool = letters.get("T")
     number = evaluate(tool.value) if tool else None
     if tool is not None and number is not None and number > MAX_TOOL:
         found.append(at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span))
