@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import partial
+from functools import cached_property, partial
 from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
@@ -52,6 +52,17 @@ class FileFacts:
     # In each list of statements that holds an end followed by more: the first end and the first
     # statement after it that is not a Sub definition (it never runs).
     unreachable: tuple[tuple[n.Stmt, n.Stmt], ...]
+
+    @cached_property
+    def read_indices(self) -> frozenset[int | None]:
+        """The literal indices of every parameter read (None for a computed one): the few rules about
+        indices look at each index once, and at the single reads only when one may be reported."""
+        return frozenset([index for _param, index, _scope in self.reads])
+
+    @cached_property
+    def target_indices(self) -> frozenset[int | None]:
+        """The literal indices of every assignment target (None for a computed one)."""
+        return frozenset([index for _param, index, _scope in self.targets])
 
 
 def indexed_reads(stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:

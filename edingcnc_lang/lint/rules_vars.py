@@ -29,7 +29,7 @@ from edingcnc_lang.lint.walk import Scope, assigned, dialog_fields, literal_inde
 def _indexed(file: SourceFile, project: Project) -> Iterator[tuple[float, n.Span]]:
     """Every parameter index the file names literally, with where it is written."""
     facts = project.facts(file)
-    literals = {literal for _param, literal, _scope in facts.reads} | {literal for _p, literal, _s in facts.targets}
+    literals = facts.read_indices | facts.target_indices
     if any(literal is None or not FIRST_PARAM <= literal <= LAST_PARAM for literal in literals):  # (few files)
         yield from _computed_or_outside(facts.reads + facts.targets)
     for dialog, _scope in facts.dialogs:
@@ -60,7 +60,7 @@ def index_range(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     facts = project.facts(file)
     fields = [(index, node.span) for dialog, _scope in facts.dialogs for index, node in dialog_fields(dialog)]
-    indices = {index for _param, index, _scope in facts.targets} | {index for index, _span in fields}
+    indices = facts.target_indices | {index for index, _span in fields}
     read_only = {index for index in indices if index is not None and is_read_only(index)}
     if not read_only:  # most files
         return
@@ -74,12 +74,12 @@ def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 @rule("V302")
 def never_written(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """First read in each file of a volatile variable nothing assigns (a typo or a missing setup)."""
-    reads = project.facts(file).reads
+    facts = project.facts(file)
     written = project.written
-    unwritten = {index for _param, index, _scope in reads
-                 if index is not None and index in VOLATILE_PARAMS and index not in written}
-    if not unwritten:  # most files: one pass in C finds nothing
+    if not any(index is not None and index in VOLATILE_PARAMS and index not in written
+               for index in facts.read_indices):  # most files
         return
+    reads = facts.reads
     seen: set[int] = set()
     for param, index, _scope in reads:
         if index is not None and index in VOLATILE_PARAMS and index not in written and index not in seen:
