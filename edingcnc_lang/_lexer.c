@@ -1026,6 +1026,54 @@ static PyObject *statement(PyObject *self, PyObject *args)
     return result;
 }
 
+/* statements(lines, path, first_line, shortest_problem, integer_digits, fraction_digits): statement()
+ * of each line of a list (line numbers from ``first_line`` on), the give-up marker for a line that
+ * is longer than ``shortest_problem`` code points or holds a '(' (line_parser.parse_line asks the
+ * compiled reader about the other lines only). */
+static PyObject *statements(PyObject *self, PyObject *args)
+{
+    PyObject *lines, *path, *out;
+    Py_ssize_t first, shortest, integer_digits, fraction_digits, count, i, size;
+    (void)self;
+    if (!ready() || !PyArg_ParseTuple(args, "O!Onnnn", &PyList_Type, &lines, &path, &first, &shortest,
+                                      &integer_digits, &fraction_digits))
+        return NULL;
+    if (give_up_marker == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "_lexer.setup() was not given the block module");
+        return NULL;
+    }
+    count = PyList_Size(lines);
+    if ((out = PyList_New(count)) == NULL)
+        return NULL;
+    for (i = 0; i < count; i++) {
+        PyObject *text = PyList_GetItem(lines, i), *result = NULL, *line;
+        const char *s;
+        if (PyUnicode_Check(text) && PyUnicode_GetLength(text) <= shortest) {
+            s = PyUnicode_AsUTF8AndSize(text, &size);
+            if (s == NULL) {  /* a lone surrogate: the Python path reads it */
+                PyErr_Clear();
+            } else if (memchr(s, '(', (size_t)size) == NULL) {
+                if ((line = PyLong_FromSsize_t(first + i)) == NULL) {
+                    Py_DECREF(out);
+                    return NULL;
+                }
+                result = read_statement(s, size, path, line, integer_digits, fraction_digits);
+                Py_DECREF(line);
+                if (result == NULL && PyErr_Occurred()) {
+                    Py_DECREF(out);
+                    return NULL;
+                }
+            }
+        }
+        if (result == NULL) {
+            result = give_up_marker;
+            Py_INCREF(result);
+        }
+        PyList_SetItem(out, i, result);  /* steals the reference */
+    }
+    return out;
+}
+
 /* setup(nodes_module[, blocks_module, give_up, keywords]): the node classes block() makes; with the
  * blocks module (Open, Close), the marker statement() gives up with and the keywords it leaves to the
  * Python path, also those statement() makes. */
@@ -1274,6 +1322,9 @@ static PyMethodDef methods[] = {
      "block_facts(code_key, literal_index, block): (g, m, coded, reads) as lint.facts.block_facts."},
     {"expr_reads", expr_reads, METH_VARARGS,
      "expr_reads(literal_index, expr): the (param, literal index) pairs of lint.facts.expr_reads."},
+    {"statements", statements, METH_VARARGS,
+     "statements(lines, path, first_line, shortest_problem, integer_digits, fraction_digits): statement() of "
+     "each short line without '(', the give-up marker for the others."},
     {"setup", setup, METH_VARARGS,
      "setup(nodes_module[, blocks_module, give_up, keywords]): the classes the readers make."},
     {NULL, NULL, 0, NULL},

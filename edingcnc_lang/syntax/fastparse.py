@@ -18,7 +18,7 @@ import re
 from collections.abc import Callable
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
 
@@ -88,23 +88,23 @@ def _tokens_python(text: str, pos: int) -> list[Token]:
 _Compiled = Callable[..., object] | None
 
 
-def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled]:
-    """The compiled tokenizer, block, condition and statement readers (``_lexer.c``), unless they are
-    not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
+def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
+    """The compiled tokenizer, block, condition, statement and lines readers (``_lexer.c``), unless
+    they are not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
     from edingcnc_lang.speedups import PURE_ENV
     from edingcnc_lang.syntax import blocks
 
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None, None, None
+        return None, None, None, None, None
     try:
         from edingcnc_lang import _lexer  # type: ignore[attr-defined]
     except ImportError:
-        return None, None, None, None
+        return None, None, None, None, None
     _lexer.setup(n, blocks, GIVE_UP, _KEYWORDS - _HANDLED)
-    return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement
+    return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement, _lexer.statements
 
 
-_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT = _compiled()
+_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT, _COMPILED_STATEMENTS = _compiled()
 COMPILED_READER = _COMPILED_BLOCK is not None
 
 
@@ -346,6 +346,16 @@ def compiled_statement(text: str, path: str, line: int) -> LineResult | object:
     if _COMPILED_STATEMENT is None:
         return GIVE_UP
     return _COMPILED_STATEMENT(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+
+
+def compiled_statements(lines: list[str], path: str, first: int) -> list[LineResult | object] | None:
+    """``compiled_statement`` of each line (numbered from ``first`` on) that is short enough to pass
+    every input limit and holds no '(', GIVE_UP for the others, in one call; None when the compiled
+    reader is not built or not asked for."""
+    if _COMPILED_STATEMENTS is None:
+        return None
+    return _COMPILED_STATEMENTS(lines, path, first, SHORTEST_PROBLEM, INTEGER_DIGITS,  # type: ignore[return-value]
+                                MAX_NUMBER_DIGITS)
 
 
 def _block(text: str, path: str, line: int) -> n.Block:

@@ -22,7 +22,8 @@ from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
 from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
-from edingcnc_lang.syntax.blocks import Close, Open
+from edingcnc_lang.syntax.blocks import Close, LineResult, Open
+from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_statements
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
 
@@ -34,6 +35,7 @@ UNITS = frozenset({"mm", "inch"})
 
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
+READ_AHEAD = 128  # lines inside a block the compiled reader reads in one call (tree and lint reads)
 CHUNK_LINES = 8192
 _NON_PLAIN = re.compile(rf"^(?!{PLAIN_LINE}$).*$", re.MULTILINE)
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
@@ -155,6 +157,7 @@ class StatementReader:
         stack: list[_Frame] = []
         path = self.path
         bulk = self.mode != "tree"
+        read_ahead = COMPILED_READER and self.mode in ("tree", "lint")  # (the others read plain lines otherwise)
         lineno = 0
         for base, chunk in _chunks(self._blocks):
             self.lines = base + len(chunk) - 1
@@ -164,6 +167,8 @@ class StatementReader:
             # Plain lines at the top level are skipped (check) or handed over in runs (run) in
             # bulk: the regular-expression engine finds the few other lines of a chunk.
             others = self._others(base, chunk) if bulk else []
+            parsed: list[LineResult | object] = []  # the compiled reader's results of chunk[ahead:...]
+            ahead = 0
             i, count = 0, len(chunk)
             while i < count:
                 if bulk and not stack:
@@ -177,6 +182,21 @@ class StatementReader:
                         i = j
                         continue
                 lineno = base + i
+                if stack and read_ahead and not self._skipped:
+                    # Inside a block every line is parsed: the compiled reader reads the next lines in
+                    # one call, and the reader adds most of them to the block without more ado.
+                    if not ahead <= i < ahead + len(parsed):
+                        ahead, parsed = i, compiled_statements(chunk[i:i + READ_AHEAD], path, lineno) or []
+                    result = parsed[i - ahead]
+                    if result is not GIVE_UP:
+                        if result is not None:
+                            kind = type(result)
+                            if kind is Open or kind is Close or kind is n.Dialog:
+                                yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
+                            else:
+                                stack[-1].add(result)  # type: ignore[arg-type]
+                        i += 1
+                        continue
                 yield from self._line(stack, chunk[i], lineno, bulk)
                 i += 1
         yield from self._unwind(stack, lineno + 1, report=True)
@@ -212,6 +232,10 @@ class StatementReader:
         except _LineError as err:
             yield from self._bad_line(stack, err, text, lineno)
             return
+        yield from self._fit(stack, result, text, lineno)
+
+    def _fit(self, stack: list[_Frame], result: LineResult, text: str, lineno: int) -> Iterator[n.Stmt]:
+        """Fit what a line says into the block structure."""
         if result is None:
             return
         if self._skipped and not isinstance(result, Open):  # inside blocks nested too deeply: dropped

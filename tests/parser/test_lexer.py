@@ -301,3 +301,22 @@ def test_the_compiled_statement_reader_takes_the_common_lines(line: str) -> None
 ])
 def test_the_compiled_statement_reader_gives_up_where_it_should(line: str) -> None:
     assert lexer.statement(line, "f", 7, INTEGER_DIGITS, MAX_NUMBER_DIGITS) is fastparse.GIVE_UP, line
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.one_of(lines, st.lists(pieces, max_size=8).map("".join),
+                          st.sampled_from(["(x) G1", "G1 X1 (note)", "x" * 101, "#1 = 1" + " " * 95])),
+                max_size=12), st.integers(1, 5000))
+def test_the_compiled_lines_reader_reads_each_line_as_the_statement_reader(chunk: list[str], first: int) -> None:
+    """``statements`` is ``statement`` of each line short enough for every input limit and without '(',
+    and gives up on the others (``parse_line`` asks the compiled reader about no other line)."""
+    from edingcnc_lang.syntax.input_limits import SHORTEST_PROBLEM
+
+    found = lexer.statements(chunk, "f", first, SHORTEST_PROBLEM, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    assert len(found) == len(chunk)
+    for number, (line, got) in enumerate(zip(chunk, found), first):
+        if len(line) > SHORTEST_PROBLEM or "(" in line:
+            assert got is fastparse.GIVE_UP, line
+        else:
+            want = lexer.statement(line, "f", number, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+            assert got is want if want in (None, fastparse.GIVE_UP) else repr(got) == repr(want), line
