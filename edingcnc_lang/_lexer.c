@@ -1114,10 +1114,11 @@ static PyObject *setup(PyObject *self, PyObject *args)
 /* ------------------------------------------------------------------------------------------
  * The linter's look at a block (lint/facts.py, whose Python functions are the reference).
  *
- * block_facts(code_key, literal_index, block): (g, m, coded, reads) as facts.block_facts gives them:
- * the literal G and M numbers of the block as (code_key(value), word) in line order, whether it has
- * a G, M or T word at all, and every parameter it reads as (param, literal index) in walk.reads
- * order.  expr_reads(literal_index, expr): the (param, literal index) pairs of one expression in
+ * block_facts(code_key, literal_index, block, scope, uses, targets): (g, m, coded, reads) as
+ * facts.block_facts gives them: the literal G and M numbers of the block as (code_key(value), word)
+ * in line order, whether it has a G, M or T word at all, and every parameter it reads as (param,
+ * literal index) in walk.reads order, each also appended to ``uses`` as (param, literal index,
+ * scope); every assignment target is appended to ``targets`` the same way.  expr_reads(literal_index, expr): the (param, literal index) pairs of one expression in
  * evaluate.params_in order.  The two callables are the Python ones, called where the value is not
  * the plain case (a computed index, a number too large to round here).
  */
@@ -1247,14 +1248,32 @@ static int code_into(PyObject *out, PyObject *number, PyObject *word, PyObject *
     return 0;
 }
 
+/* Append (param, literal index, scope) to ``uses`` for every pair of ``pairs``. */
+static int uses_into(PyObject *uses, PyObject *pairs, PyObject *scope)
+{
+    Py_ssize_t i, count = PyList_Size(pairs);
+    for (i = 0; i < count; i++) {
+        PyObject *pair = PyList_GetItem(pairs, i);
+        PyObject *use = PyTuple_Pack(3, PyTuple_GetItem(pair, 0), PyTuple_GetItem(pair, 1), scope);
+        if (use == NULL || PyList_Append(uses, use) < 0) {
+            Py_XDECREF(use);
+            return -1;
+        }
+        Py_DECREF(use);
+    }
+    return 0;
+}
+
 static PyObject *block_facts(PyObject *self, PyObject *args)
 {
-    PyObject *block, *code_key, *literal_index, *words = NULL, *assigns = NULL, *g = NULL, *m = NULL,
-             *reads = NULL, *result = NULL;
+    PyObject *block, *code_key, *literal_index, *scope, *uses, *targets, *words = NULL, *assigns = NULL,
+             *g = NULL, *m = NULL, *reads = NULL, *result = NULL, *g_tuple = NULL, *m_tuple = NULL,
+             *reads_tuple = NULL;
     Py_ssize_t i, count;
     int coded = 0;
     (void)self;
-    if (!ready() || !PyArg_ParseTuple(args, "OOO", &code_key, &literal_index, &block))
+    if (!ready() || !PyArg_ParseTuple(args, "OOOOO!O!", &code_key, &literal_index, &block, &scope, &PyList_Type,
+                                      &uses, &PyList_Type, &targets))
         return NULL;
     if ((words = PyObject_GetAttr(block, fields[F_WORDS])) == NULL
             || (assigns = PyObject_GetAttr(block, fields[F_ASSIGNS])) == NULL
@@ -1292,19 +1311,32 @@ static PyObject *block_facts(PyObject *self, PyObject *args)
                 && (index = PyObject_GetAttr(target, fields[F_INDEX])) != NULL
                 && (value = PyObject_GetAttr(assign, fields[F_VALUE])) != NULL)
             failed = reads_into(reads, index, literal_index) || reads_into(reads, value, literal_index);
-        Py_XDECREF(target);
         Py_XDECREF(index);
         Py_XDECREF(value);
+        if (!failed) {  /* the target, its literal index and where: one of the file's assignments */
+            PyObject *literal = literal_of(target, literal_index), *use;
+            use = literal ? PyTuple_Pack(3, target, literal, scope) : NULL;
+            Py_XDECREF(literal);
+            failed = use == NULL || PyList_Append(targets, use) < 0;
+            Py_XDECREF(use);
+        }
+        Py_XDECREF(target);
         if (failed)
             goto done;
     }
-    result = Py_BuildValue("(OONO)", g, m, PyBool_FromLong(coded), reads);
+    if (uses_into(uses, reads, scope) < 0 || (g_tuple = PyList_AsTuple(g)) == NULL
+            || (m_tuple = PyList_AsTuple(m)) == NULL || (reads_tuple = PyList_AsTuple(reads)) == NULL)
+        goto done;
+    result = PyTuple_Pack(4, g_tuple, m_tuple, coded ? Py_True : Py_False, reads_tuple);
 done:
     Py_XDECREF(words);
     Py_XDECREF(assigns);
     Py_XDECREF(g);
     Py_XDECREF(m);
     Py_XDECREF(reads);
+    Py_XDECREF(g_tuple);
+    Py_XDECREF(m_tuple);
+    Py_XDECREF(reads_tuple);
     return result;
 }
 
@@ -1319,7 +1351,8 @@ static PyMethodDef methods[] = {
      "statement(text, path, line, integer_digits, fraction_digits): the node of a line, None if blank, "
      "the give-up marker to give up."},
     {"block_facts", block_facts, METH_VARARGS,
-     "block_facts(code_key, literal_index, block): (g, m, coded, reads) as lint.facts.block_facts."},
+     "block_facts(code_key, literal_index, block, scope, uses, targets): (g, m, coded, reads) as "
+     "lint.facts.block_facts."},
     {"expr_reads", expr_reads, METH_VARARGS,
      "expr_reads(literal_index, expr): the (param, literal index) pairs of lint.facts.expr_reads."},
     {"statements", statements, METH_VARARGS,

@@ -24,6 +24,9 @@ Use = tuple[n.Param, "int | None", Scope]  # a parameter read or assigned, its l
 Walked = tuple[tuple[n.Stmt, Scope], ...]
 
 
+_new_codes = tuple.__new__  # BlockCodes(...) without the named tuple's Python-level __new__: one per coded block
+
+
 class BlockCodes(NamedTuple):
     """A block, where it sits, and its literal G and M numbers in line order."""
 
@@ -107,12 +110,14 @@ def _block_reads(block: n.Block) -> list[n.Param]:
 
 
 Indexed = list[tuple[n.Param, "int | None"]]  # parameters read, each with its literal index
+BlockFacts = tuple[tuple[Code, ...], tuple[Code, ...], bool, tuple[tuple[n.Param, "int | None"], ...]]
 
 
-def block_facts(block: n.Block) -> tuple[list[Code], list[Code], bool, Indexed]:
+def block_facts(block: n.Block, scope: Scope, uses: list[Use], targets: list[Use]) -> BlockFacts:
     """A block's literal G and M numbers with their words in line order, whether it has a G, M or T word
     at all (literal or not), and the parameters it reads with their literal indices (``walk.reads``
-    order).  The reference for the compiled ``_lexer.block_facts``."""
+    order), each also appended to ``uses`` with the scope; its assignment targets are appended to
+    ``targets`` the same way.  The reference for the compiled ``_lexer.block_facts``."""
     g: list[Code] = []
     m: list[Code] = []
     coded = False
@@ -123,7 +128,10 @@ def block_facts(block: n.Block) -> tuple[list[Code], list[Code], bool, Indexed]:
             value = word.value
             if letter != "T" and type(value) is n.Number:
                 (g if letter == "G" else m).append((code_key(value.value), word))
-    return g, m, coded, _indexed(_block_reads(block))
+    found = tuple(_indexed(_block_reads(block)))
+    uses.extend([(param, index, scope) for param, index in found])
+    targets.extend([(a.target, literal_index(a.target), scope) for a in block.assigns])
+    return tuple(g), tuple(m), coded, found
 
 
 def expr_reads(expr: n.Expr) -> Indexed:
@@ -132,8 +140,7 @@ def expr_reads(expr: n.Expr) -> Indexed:
     return _indexed(params_in(expr))
 
 
-def _compiled() -> tuple[Callable[[n.Block], tuple[list[Code], list[Code], bool, Indexed]],
-                         Callable[[n.Expr], Indexed]]:
+def _compiled() -> tuple[Callable[[n.Block, Scope, list[Use], list[Use]], BlockFacts], Callable[[n.Expr], Indexed]]:
     """``block_facts`` and ``expr_reads`` on the compiled reader when it runs (see fastparse)."""
     if not COMPILED_READER:
         return block_facts, expr_reads
@@ -179,7 +186,7 @@ class _Survey:
     def visit(self, body: Sequence[n.Stmt], scope: Scope) -> None:
         """The statements of one list, and those nested in them, in source order."""
         add, all_reads, reads_of, visit = self.walked.append, self.reads, self.reads_of, self.visit
-        block_facts_of, expr_reads_of = _BLOCK_FACTS, _EXPR_READS
+        block_facts_of, expr_reads_of, targets = _BLOCK_FACTS, _EXPR_READS, self.targets
         here = scope
         end: n.Stmt | None = None  # the first statement of this list that ends the program
         dead = False  # the statement after it that never runs is found
@@ -187,14 +194,11 @@ class _Survey:
             add((stmt, here))
             ends = False
             if isinstance(stmt, n.Block):
-                g, m, coded, found = block_facts_of(stmt)
+                g, m, coded, found = block_facts_of(stmt, here, all_reads, targets)
                 if found:
-                    reads_of[id(stmt)] = tuple(found)
-                    all_reads.extend([(param, index, here) for param, index in found])
-                if stmt.assigns:
-                    self.targets.extend([(a.target, literal_index(a.target), here) for a in stmt.assigns])
+                    reads_of[id(stmt)] = found
                 if coded:
-                    codes = BlockCodes(stmt, here, tuple(g), tuple(m))
+                    codes = _new_codes(BlockCodes, (stmt, here, g, m))
                     self.coded.append(codes)
                     self.codes_of[id(stmt)] = codes
                 if m:
@@ -204,12 +208,12 @@ class _Survey:
                 visit(stmt.body, Scope(stmt, False))
             elif isinstance(stmt, (n.If, n.While)):
                 self.heads.append(stmt)
-                found = expr_reads_of(stmt.cond)
-                reads_of[id(stmt)] = tuple(found)
-                all_reads.extend([(param, index, here) for param, index in found])
+                pairs = expr_reads_of(stmt.cond)
+                reads_of[id(stmt)] = tuple(pairs)
+                all_reads.extend([(param, index, here) for param, index in pairs])
                 if isinstance(stmt, n.While):
                     visit(stmt.body, here)
-                elif any(index == SIMULATION for _param, index in found):  # most conditions do not read #5380
+                elif any(index == SIMULATION for _param, index in pairs):  # most conditions do not read #5380
                     then_guard, else_guard, exits = simulation_branches(stmt)
                     guarded = Scope(scope.sub, True)
                     visit(stmt.then, guarded if then_guard else here)
@@ -222,9 +226,9 @@ class _Survey:
             else:
                 params = reads(stmt)
                 if params:
-                    found = _indexed(params)
-                    reads_of[id(stmt)] = tuple(found)
-                    all_reads.extend([(param, index, here) for param, index in found])
+                    pairs = _indexed(params)
+                    reads_of[id(stmt)] = tuple(pairs)
+                    all_reads.extend([(param, index, here) for param, index in pairs])
                 if isinstance(stmt, n.GoSub):
                     self.callers.append((stmt, here))
                 elif isinstance(stmt, n.Dialog):

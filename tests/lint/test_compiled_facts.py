@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang.lint import facts
-from edingcnc_lang.lint.walk import literal_index
+from edingcnc_lang.lint.walk import Scope, literal_index
 from edingcnc_lang.machine.tables import code_key
 from edingcnc_lang.syntax import blocks, fastparse
 from edingcnc_lang.syntax import nodes as n
@@ -24,11 +24,18 @@ lexer.setup(n, blocks, fastparse.GIVE_UP, fastparse._KEYWORDS - fastparse._HANDL
 
 
 def _same_block(block: n.Block) -> None:
-    g, m, coded, reads = lexer.block_facts(code_key, literal_index, block)
-    want = facts.block_facts(block)
-    assert (g, m, coded, reads) == want
+    scope = Scope(None, True)
+    uses: list[facts.Use] = [(n.Param(n.Number(1.0)), 1, scope)]  # appended to, as the walk's lists are
+    targets: list[facts.Use] = []
+    g, m, coded, reads = lexer.block_facts(code_key, literal_index, block, scope, uses, targets)
+    want_uses, want_targets = [uses[0]], []
+    want = facts.block_facts(block, scope, want_uses, want_targets)
+    assert (g, m, coded, reads) == want and type(g) is type(m) is type(reads) is tuple
     assert [id(w) for _k, w in g + m] == [id(w) for _k, w in want[0] + want[1]]  # the very word nodes
     assert [(id(p), type(i)) for p, i in reads] == [(id(p), type(i)) for p, i in want[3]]
+    assert uses == want_uses and targets == want_targets
+    assert [(id(p), type(i), s) for p, i, s in uses + targets] == [(id(p), type(i), s) for p, i, s in
+                                                                   want_uses + want_targets]
 
 
 computed = st.builds(lambda e: n.Param(e), exprs)  # #[expr]: a literal index only when it folds
