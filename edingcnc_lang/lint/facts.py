@@ -209,8 +209,9 @@ class _Survey:
             elif isinstance(stmt, (n.If, n.While)):
                 self.heads.append(stmt)
                 pairs = expr_reads_of(stmt.cond)
-                reads_of[id(stmt)] = tuple(pairs)
-                all_reads.extend([(param, index, here) for param, index in pairs])
+                if pairs:
+                    reads_of[id(stmt)] = tuple(pairs)
+                    all_reads.extend([(param, index, here) for param, index in pairs])
                 if isinstance(stmt, n.While):
                     visit(stmt.body, here)
                 elif any(index == SIMULATION for _param, index in pairs):  # most conditions do not read #5380
@@ -223,20 +224,24 @@ class _Survey:
                 else:
                     visit(stmt.then, here)
                     visit(stmt.orelse, here)
+            elif isinstance(stmt, n.Dialog):  # (its items are field numbers, not reads)
+                self.dialogs.append((stmt, here))
             else:
-                params = reads(stmt)
-                if params:
-                    pairs = _indexed(params)
+                if isinstance(stmt, n.Message):  # walk.reads of a message: its values' parameters
+                    pairs = []
+                    for item in stmt.items:
+                        if not isinstance(item, (str, n.Stamp)):
+                            pairs += expr_reads_of(item)
+                    ends = stmt.kind == "errmsg"
+                else:
+                    pairs = _indexed(reads(stmt))
+                    if isinstance(stmt, n.GoSub):
+                        self.callers.append((stmt, here))
+                    elif isinstance(stmt, n.Command):
+                        self.commands.append(stmt)
+                if pairs:
                     reads_of[id(stmt)] = tuple(pairs)
                     all_reads.extend([(param, index, here) for param, index in pairs])
-                if isinstance(stmt, n.GoSub):
-                    self.callers.append((stmt, here))
-                elif isinstance(stmt, n.Dialog):
-                    self.dialogs.append((stmt, here))
-                elif isinstance(stmt, n.Command):
-                    self.commands.append(stmt)
-                elif isinstance(stmt, n.Message):
-                    ends = stmt.kind == "errmsg"
             if end is not None:
                 if not dead and not isinstance(stmt, n.Sub):
                     self.unreachable.append((end, stmt))
