@@ -140,28 +140,32 @@ def expr_reads(expr: n.Expr) -> Indexed:
     return _indexed(params_in(expr))
 
 
-def _compiled() -> tuple[Callable[[n.Block, Scope, list[Use], list[Use]], BlockFacts], Callable[[n.Expr], Indexed]]:
-    """``block_facts`` and ``expr_reads`` on the compiled reader when it runs (see fastparse)."""
+def _other_reads(stmt: n.Stmt) -> Indexed:
+    """The reads of a statement that is not a block, a message, an If or a While (logfile, KIN, ...)."""
+    return _indexed(reads(stmt))
+
+
+def _compiled() -> Callable[[_Survey, Sequence[n.Stmt], Scope], None] | None:
+    """``_Survey.visit`` on the compiled reader when it runs (see fastparse), else None."""
     if not COMPILED_READER:
-        return block_facts, expr_reads
+        return None
     from edingcnc_lang import _lexer  # type: ignore[attr-defined]
 
-    return partial(_lexer.block_facts, code_key, literal_index), partial(_lexer.expr_reads, literal_index)
-
-
-_BLOCK_FACTS, _EXPR_READS = _compiled()
+    return partial(_lexer.survey, code_key, literal_index, Scope, simulation_branches, _other_reads, BlockCodes,
+                   END_OF_PROGRAM, SIMULATION)
 
 
 def survey(body: Sequence[n.Stmt]) -> FileFacts:
     """Every statement with its scope (``walk.walk``) and everything the rules look up about them."""
     found = _Survey()
-    found.visit(body, Scope())
+    (_COMPILED_SURVEY or _Survey.visit)(found, body, Scope())
     return found.facts()
 
 
 class _Survey:
     """What ``survey`` collects while it walks (a class, not closures: a recursive closure is a reference
-    cycle, which would keep the whole tree alive until the cyclic collector runs)."""
+    cycle, which would keep the whole tree alive until the cyclic collector runs).  ``visit`` is the
+    reference for the compiled ``_lexer.survey``, which fills the same lists the same way."""
 
     def __init__(self) -> None:
         self.walked: list[tuple[n.Stmt, Scope]] = []
@@ -186,7 +190,7 @@ class _Survey:
     def visit(self, body: Sequence[n.Stmt], scope: Scope) -> None:
         """The statements of one list, and those nested in them, in source order."""
         add, all_reads, reads_of, visit = self.walked.append, self.reads, self.reads_of, self.visit
-        block_facts_of, expr_reads_of, targets = _BLOCK_FACTS, _EXPR_READS, self.targets
+        block_facts_of, expr_reads_of, targets = block_facts, expr_reads, self.targets
         here = scope
         end: n.Stmt | None = None  # the first statement of this list that ends the program
         dead = False  # the statement after it that never runs is found
@@ -234,7 +238,7 @@ class _Survey:
                             pairs += expr_reads_of(item)
                     ends = stmt.kind == "errmsg"
                 else:
-                    pairs = _indexed(reads(stmt))
+                    pairs = _other_reads(stmt)
                     if isinstance(stmt, n.GoSub):
                         self.callers.append((stmt, here))
                     elif isinstance(stmt, n.Command):
@@ -250,3 +254,6 @@ class _Survey:
                 end = stmt
             if ends:
                 self.ending.add(id(stmt))
+
+
+_COMPILED_SURVEY = _compiled()

@@ -17,7 +17,8 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.syntax.parser import parse_text
 from edingcnc_lang.syntax.source import iter_file_lines
 
-from tests.parser.test_properties import blocks as block_nodes, exprs
+from tests.parser.test_properties import blocks as block_nodes, exprs, programs
+from edingcnc_lang.lint.model import load_source
 
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled reader is not built")
 lexer.setup(n, blocks, fastparse.GIVE_UP, fastparse._KEYWORDS - fastparse._HANDLED)  # also under ECNC_PURE_PYTHON=1
@@ -86,3 +87,77 @@ def test_the_shipped_files() -> None:
                 elif isinstance(stmt, (n.If, n.While)):
                     assert lexer.expr_reads(literal_index, stmt.cond) == facts.expr_reads(stmt.cond)
     assert count > 100
+
+
+# ------------------------------------------------------------------ the compiled walk
+
+def _python_survey(body: tuple[n.Stmt, ...]) -> facts.FileFacts:
+    found = facts._Survey()
+    found.visit(body, Scope())
+    return found.facts()
+
+
+def _compiled_survey(body: tuple[n.Stmt, ...]) -> facts.FileFacts:
+    found = facts._Survey()
+    lexer.survey(code_key, literal_index, Scope, facts.simulation_branches, facts._other_reads, facts.BlockCodes,
+                 facts.END_OF_PROGRAM, facts.SIMULATION, found, body, Scope())
+    return found.facts()
+
+
+def _ids(value: object) -> object:
+    """Nodes by identity, scopes and numbers by value, through tuples, lists and dicts."""
+    if isinstance(value, (tuple, list)):
+        return [type(value).__name__, *(_ids(v) for v in value)]
+    if isinstance(value, dict):
+        return {k: _ids(v) for k, v in value.items()}
+    if isinstance(value, (frozenset, set)):
+        return sorted(value)
+    if value is None or isinstance(value, (int, float, str, bool, Scope)):
+        return (type(value).__name__, value)
+    return id(value)
+
+
+def _same_survey(body: tuple[n.Stmt, ...]) -> None:
+    compiled, python = _compiled_survey(body), _python_survey(body)
+    for field in ("walked", "coded", "reads", "targets", "dialogs", "commands", "callers", "heads", "reads_of",
+                  "codes_of", "ending", "unreachable"):
+        assert _ids(getattr(compiled, field)) == _ids(getattr(python, field)), field
+    assert all(type(c) is facts.BlockCodes for c in compiled.coded)
+
+
+@settings(max_examples=100, deadline=None)
+@given(programs)
+def test_the_compiled_walk_is_the_python_walk(program: n.Program) -> None:
+    _same_survey(program.body)
+
+
+def test_the_compiled_walk_of_the_shipped_files_and_the_guards() -> None:
+    root = Path(__file__).resolve().parent.parent.parent
+    count = 0
+    for folder in ("examples", "stdlib", "tests/lint/cases", "tests/corpus"):
+        for path in sorted((root / folder).rglob("*")):
+            if path.suffix.lower() in (".cnc", ".nc", ".ngc", ".tap"):
+                _same_survey(load_source(path, is_macro=True).body)
+                count += 1
+    guards = """\
+If [[#5380 == 0] and [#5397 == 0]]
+  G38.2 Z-1 F10
+EndIf
+If [#5380 == 1]
+  M30
+EndIf
+G1 X1
+If [#5380 <> #1]
+  msg "x" %d #2
+Else
+  errmsg "y"
+EndIf
+logfile "a" [#3]
+M2
+Sub m3
+  M3
+EndSub
+GoSub m3
+"""
+    _same_survey(parse_text(guards, "g.nc").body)
+    assert count > 20
