@@ -189,12 +189,17 @@ class StatementReader:
                         ahead, parsed = i, compiled_statements(chunk[i:i + READ_AHEAD], path, lineno) or []
                     result = parsed[i - ahead]
                     if result is not GIVE_UP:
-                        if result is not None:
-                            kind = type(result)
-                            if kind is Open or kind is Close or kind is n.Dialog:
-                                yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
-                            else:
-                                stack[-1].add(result)  # type: ignore[arg-type]
+                        kind = type(result)
+                        if kind is Close:  # (_fit, for a line inside a block that is read as it should)
+                            done = self._close(stack, result, chunk[i])  # type: ignore[arg-type]
+                            if done is not None:
+                                yield done
+                        elif kind is Open and result.kind != "Sub":  # type: ignore[union-attr]
+                            self._push(stack, result, chunk[i])  # type: ignore[arg-type]
+                        elif kind is Open or kind is n.Dialog:
+                            yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
+                        elif result is not None:
+                            stack[-1].add(result)  # type: ignore[arg-type]
                         i += 1
                         continue
                 yield from self._line(stack, chunk[i], lineno, bulk)
