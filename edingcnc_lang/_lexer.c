@@ -922,11 +922,14 @@ static PyObject *read_statement(const char *s, Py_ssize_t size, PyObject *path, 
         i++;
     k = i > head ? lookup(s + head, i - head, HANDLED, N_HANDLED) : -1;
     if (k < 0) {
-        if (i - head >= 2 && i - head < 64) {  /* another keyword (logfile, kin, ...): not read here */
+        Py_ssize_t j;
+        int letters_only = 1;
+        for (j = head; j < i; j++)
+            letters_only = letters_only && is_letter((unsigned char)s[j]);
+        if (letters_only && i - head >= 2 && i - head < 64) {  /* another keyword (logfile, kin, ...): not here */
             char lower[64];
             PyObject *name;
             int known;
-            Py_ssize_t j;
             for (j = head; j < i; j++)
                 lower[j - head] = (char)(is_letter((unsigned char)s[j]) ? s[j] | 0x20 : s[j]);
             if ((name = PyUnicode_FromStringAndSize(lower, i - head)) == NULL)
@@ -1073,6 +1076,32 @@ static PyObject *statements(PyObject *self, PyObject *args)
         PyList_SetItem(out, i, result);  /* steals the reference */
     }
     return out;
+}
+
+/* new(cls, values): a node of a frozen dataclass ``cls`` with ``values`` for its fields in the order of
+ * its __match_args__, made as its __init__ makes it (object.__new__, then object.__setattr__ for each
+ * field) without the Python-level call of that __init__. */
+static PyObject *new_node(PyObject *self, PyObject *args)
+{
+    PyObject *cls, *values, *names, *made;
+    Py_ssize_t k, count;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "O!O!", &PyType_Type, &cls, &PyTuple_Type, &values))
+        return NULL;
+    if ((names = PyObject_GetAttrString(cls, "__match_args__")) == NULL)
+        return NULL;
+    count = PyTuple_Check(names) ? PyTuple_Size(names) : -1;
+    if (count != PyTuple_Size(values)) {
+        Py_DECREF(names);
+        PyErr_SetString(PyExc_TypeError, "new(): one value for each field expected");
+        return NULL;
+    }
+    made = PyType_GenericAlloc((PyTypeObject *)cls, 0);
+    for (k = 0; made != NULL && k < count; k++)
+        if (PyObject_GenericSetAttr(made, PyTuple_GetItem(names, k), PyTuple_GetItem(values, k)) < 0)
+            Py_CLEAR(made);
+    Py_DECREF(names);
+    return made;
 }
 
 /* setup(nodes_module[, blocks_module, give_up, keywords]): the node classes block() makes; with the
@@ -1666,6 +1695,8 @@ static PyMethodDef methods[] = {
     {"survey", survey, METH_VARARGS,
      "survey(code_key, literal_index, scope_class, simulation_branches, other_reads, codes_class, end_keys, "
      "simulation, into, body, scope): lint.facts._Survey.visit(body, scope) on into."},
+    {"new", new_node, METH_VARARGS,
+     "new(cls, values): a frozen dataclass node with these field values, as its __init__ makes it."},
     {"setup", setup, METH_VARARGS,
      "setup(nodes_module[, blocks_module, give_up, keywords]): the classes the readers make."},
     {NULL, NULL, 0, NULL},

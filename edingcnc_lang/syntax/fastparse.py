@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable
+from typing import TypeVar
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
@@ -86,6 +87,7 @@ def _tokens_python(text: str, pos: int) -> list[Token]:
 
 
 _Compiled = Callable[..., object] | None
+_N = TypeVar("_N")
 
 
 def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
@@ -106,6 +108,20 @@ def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
 
 _COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT, _COMPILED_STATEMENTS = _compiled()
 COMPILED_READER = _COMPILED_BLOCK is not None
+
+
+def _construct(cls: type[_N], values: tuple[object, ...]) -> _N:
+    """A node of ``cls`` with these field values (the reference for the compiled ``_lexer.new``)."""
+    return cls(*values)
+
+
+# A node of a frozen dataclass from its field values: on the compiled reader without the Python-level
+# call of the dataclass's __init__ (the reader makes an If, While or Sub node at every end line).
+new_node: Callable[[type[_N], tuple[object, ...]], _N] = _construct
+if COMPILED_READER:
+    from edingcnc_lang import _lexer  # type: ignore[attr-defined]
+
+    new_node = _lexer.new  # type: ignore[attr-defined]
 
 
 def _tokens(text: str, pos: int) -> list[Token]:

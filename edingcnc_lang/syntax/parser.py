@@ -23,7 +23,7 @@ from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
-from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_statements
+from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_statements, new_node
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
 
@@ -95,11 +95,11 @@ class _Frame:
     def close(self, end: n.Span) -> n.Stmt:
         o = self.opener
         if o.kind == "Sub":
-            return n.Sub(o.name, tuple(self.body), o.span, end)
+            return new_node(n.Sub, (o.name, tuple(self.body), o.span, end))
         assert o.cond is not None
         if o.kind == "If":
-            return n.If(o.cond, tuple(self.body), tuple(self.orelse), self.in_else, o.extra, o.span, end)
-        return n.While(o.cond, tuple(self.body), o.extra, o.span, end)
+            return new_node(n.If, (o.cond, tuple(self.body), tuple(self.orelse), self.in_else, o.extra, o.span, end))
+        return new_node(n.While, (o.cond, tuple(self.body), o.extra, o.span, end))
 
     def describe(self) -> str:
         o = self.opener

@@ -320,3 +320,20 @@ def test_the_compiled_lines_reader_reads_each_line_as_the_statement_reader(chunk
         else:
             want = lexer.statement(line, "f", number, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
             assert got is want if want in (None, fastparse.GIVE_UP) else repr(got) == repr(want), line
+
+
+def test_new_makes_the_node_the_class_makes() -> None:
+    """``_lexer.new`` (the reader's If, While and Sub nodes at end lines) gives what the dataclass's
+    own ``__init__`` gives, and refuses a wrong number of values."""
+    span, end = nodes.Span("f", 1, 1, 1, 9), nodes.Span("f", 3, 1, 3, 6)
+    cond = nodes.Compare("<", nodes.Param(nodes.Number(1.0)), nodes.Number(2.0))
+    body = (nodes.GoSub("a", span),)
+    for cls, values in ((nodes.If, (cond, body, (), True, 1, span, end)), (nodes.While, (cond, body, 0, span, end)),
+                        (nodes.Sub, ("name", body, span, end))):
+        made = lexer.new(cls, values)
+        want = cls(*values)  # type: ignore[operator]
+        assert type(made) is cls and made == want and repr(made) == repr(want)
+        assert [getattr(made, f) for f in cls.__match_args__] == list(values)  # type: ignore[attr-defined]
+        assert fastparse._construct(cls, values) == want
+    with pytest.raises(TypeError):
+        lexer.new(nodes.Sub, ("name", body, span))
