@@ -6,7 +6,7 @@ a check of #5067 after G38.2 (the retired G505): a probe that does not touch is 
 """
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.diagnostics import Diagnostic
@@ -39,24 +39,31 @@ CENTRE = frozenset("IJKR")
 
 
 @rule("G500")
-def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
+def modal_conflict(file: SourceFile, project: Project) -> list[Diagnostic]:
+    found: list[Diagnostic] = []
     for block in project.facts(file).coded:
-        for letter, codes, groups in (("G", block.g, G_GROUPS), ("M", block.m, M_GROUPS)):
-            if len(codes) < 2:  # most lines: no two codes to conflict
-                continue
-            seen: dict[str, int] = {}
-            for key, word in codes:
-                group = groups.get(key)
-                if group is None:
-                    continue
-                first = seen.setdefault(group, key)
-                winner = same_line_winner(group, first, key) if letter == "G" and first != key else None
-                if winner is not None:
-                    seen[group] = winner
-                elif first != key:
-                    yield at("G500", f"{code_name(letter, first)} and {code_name(letter, key)} are both in "
-                             f"the {group.replace('_', ' ')} group: one line may hold only one of them; "
-                             "put them on separate lines", word.span)
+        if len(block.g) > 1:  # most lines: no two codes to conflict
+            _conflicts("G", block.g, G_GROUPS, found)
+        if len(block.m) > 1:
+            _conflicts("M", block.m, M_GROUPS, found)
+    return found
+
+
+def _conflicts(letter: str, codes: tuple[Code, ...], groups: Mapping[int, str], found: list[Diagnostic]) -> None:
+    """Two codes of one modal group on a line, unless one of them wins on the same line (G only)."""
+    seen: dict[str, int] = {}
+    for key, word in codes:
+        group = groups.get(key)
+        if group is None:
+            continue
+        first = seen.setdefault(group, key)
+        winner = same_line_winner(group, first, key) if letter == "G" and first != key else None
+        if winner is not None:
+            seen[group] = winner
+        elif first != key:
+            found.append(at("G500", f"{code_name(letter, first)} and {code_name(letter, key)} are both in "
+                            f"the {group.replace('_', ' ')} group: one line may hold only one of them; "
+                            "put them on separate lines", word.span))
 
 
 @rule("G501", "G502", "G503", "G506", "G507")
@@ -133,8 +140,10 @@ def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagn
     without one it does nothing, which the run reports too."""
     for block in project.facts(file).coded:
         for key, word in block.m:
+            if key in M_GROUPS:  # most M codes: a built-in
+                continue
             name = m_sub_name(key)
-            if key in M_GROUPS or (name is not None and project.resolve(file, name) is not None):
+            if name is not None and project.resolve(file, name) is not None:
                 continue
             yield at("G510", f"{code_name('M', key)} has no built-in meaning and no Sub "
                      f"{name or code_name('m', key)} is defined in the file or its macro files: it does nothing",

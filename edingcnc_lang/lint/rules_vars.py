@@ -14,6 +14,7 @@ from edingcnc_lang.machine.tables import (
     FIRST_PARAM,
     LAST_PARAM,
     LETTER_ARGS,
+    READ_ONLY_PARAMS,
     VOLATILE_PARAMS,
     is_read_only,
 )
@@ -56,12 +57,15 @@ def index_range(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
                      f"{FIRST_PARAM}..{LAST_PARAM}", span)
 
 
+_FIRST_READ_ONLY = min(r.start for r in READ_ONLY_PARAMS)  # below it no parameter is read-only
+
+
 @rule("V301")
 def read_only_write(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     facts = project.facts(file)
     fields = [(index, node.span) for dialog, _scope in facts.dialogs for index, node in dialog_fields(dialog)]
     indices = facts.target_indices | {index for index, _span in fields}
-    read_only = {index for index in indices if index is not None and is_read_only(index)}
+    read_only = {index for index in indices if index is not None and index >= _FIRST_READ_ONLY and is_read_only(index)}
     if not read_only:  # most files
         return
     targets = [(index, param.span) for param, index, _scope in facts.targets]
