@@ -5,7 +5,9 @@ parameters read or assigned, the dialogs.  Gathering them in the single walk tha
 also works out each statement's scope (``walk.walk``), with each parameter's literal
 index worked out once, spares those rules a walk over every statement and keeps
 linting a big macro file fast: a rule about G, M or T words visits only the blocks
-that have one, the unreachable-code rule only the lists that hold an end.
+that have one, the unreachable-code rule only the lists that hold an end.  With the
+compiled core the walk itself runs in C (``_lexer.survey``); ``_Survey.visit`` and the
+functions it calls are its reference, and the tests compare the two.
 """
 from __future__ import annotations
 
