@@ -190,7 +190,7 @@ class StatementReader:
                     result = parsed[i - ahead]
                     if result is not GIVE_UP:
                         kind = type(result)
-                        if kind is Close:  # (_fit, for a line inside a block that is read as it should)
+                        if kind is Close:  # what _fit does, inlined: a block is open and none is skipped
                             done = self._close(stack, result, chunk[i])  # type: ignore[arg-type]
                             if done is not None:
                                 yield done
