@@ -198,8 +198,22 @@ class StatementReader:
                             self._push(stack, result, chunk[i])  # type: ignore[arg-type]
                         elif kind is Open or kind is n.Dialog:
                             yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
-                        elif result is not None:
-                            stack[-1].add(result)  # type: ignore[arg-type]
+                        else:  # a statement or a blank line, and most likely more of them: add them all
+                            frame = stack[-1]
+                            add = (frame.orelse if frame.in_else else frame.body).append
+                            stop = ahead + len(parsed)
+                            while True:
+                                if result is not None:
+                                    add(result)  # type: ignore[arg-type]
+                                i += 1
+                                if i == stop:
+                                    break
+                                result = parsed[i - ahead]
+                                kind = type(result)
+                                if kind is Open or kind is Close or kind is n.Dialog or result is GIVE_UP:
+                                    break
+                            lineno = base + i - 1
+                            continue
                         i += 1
                         continue
                 yield from self._line(stack, chunk[i], lineno, bulk)
