@@ -307,6 +307,56 @@ static PyObject *span(Parser *p, Py_ssize_t col, Py_ssize_t end)
 
 /* A node of class ``which`` with ``count`` fields; steals the references to ``values`` (any may be NULL
  * after a failure, then nothing is made). */
+/* Each node class's slot descriptor of each field and its setter, found by setup(): setting a field
+ * through them is what object.__setattr__ does once it has looked the descriptor up. */
+static PyObject *descriptors[N_ALL_CLASSES][N_FIELDS];
+static descrsetfunc setters[N_ALL_CLASSES][N_FIELDS];
+static descrgetfunc getters[N_ALL_CLASSES][N_FIELDS];
+
+/* ``obj.<field>`` for an object most likely of class ``which``: through the slot descriptor when it is. */
+static PyObject *get_field(PyObject *obj, int which, int field)
+{
+    if (getters[which][field] != NULL && Py_IS_TYPE(obj, (PyTypeObject *)classes[which]))
+        return getters[which][field](descriptors[which][field], obj, (PyObject *)Py_TYPE(obj));
+    return PyObject_GetAttr(obj, fields[field]);
+}
+
+static int set_field(int which, PyObject *made, int field, PyObject *value)
+{
+    if (setters[which][field] != NULL)
+        return setters[which][field](descriptors[which][field], made, value);
+    return PyObject_GenericSetAttr(made, fields[field], value);
+}
+
+/* The slot descriptors of class ``which`` (none for a class without __slots__, such as Open). */
+static void find_setters(int which)
+{
+    int f;
+    for (f = 0; f < N_FIELDS; f++) {
+        PyObject *found = PyObject_GetAttr(classes[which], fields[f]);
+        descrsetfunc set = NULL;
+        Py_XDECREF(descriptors[which][f]);
+        descriptors[which][f] = NULL;
+        setters[which][f] = NULL;
+        getters[which][f] = NULL;
+        if (found == NULL) {
+            PyErr_Clear();
+            continue;
+        }
+        /* a member descriptor of this very class: a slot (a class attribute holding a default is not) */
+        if (PyObject_HasAttrString(found, "__objclass__") && !PyType_Check(found)
+                && Py_TYPE(found) != &PyUnicode_Type)
+            set = (descrsetfunc)PyType_GetSlot(Py_TYPE(found), Py_tp_descr_set);
+        if (set != NULL) {
+            descriptors[which][f] = found;
+            setters[which][f] = set;
+            getters[which][f] = (descrgetfunc)PyType_GetSlot(Py_TYPE(found), Py_tp_descr_get);
+        } else {
+            Py_DECREF(found);
+        }
+    }
+}
+
 static PyObject *node(int which, int count, const int *names, PyObject **values)
 {
     PyObject *made = NULL;
@@ -318,7 +368,7 @@ static PyObject *node(int which, int count, const int *names, PyObject **values)
     if (made == NULL)
         goto done;
     for (k = 0; k < count; k++) {
-        if (PyObject_GenericSetAttr(made, fields[names[k]], values[k]) < 0) {
+        if (set_field(which, made, names[k], values[k]) < 0) {
             Py_CLEAR(made);
             goto done;
         }
@@ -1125,6 +1175,7 @@ static PyObject *setup(PyObject *self, PyObject *args)
         }
         Py_XDECREF(classes[k]);
         classes[k] = found;
+        find_setters(k);
     }
     if (marker != NULL && names != NULL) {
         Py_INCREF(marker);
@@ -1156,7 +1207,7 @@ static PyObject *setup(PyObject *self, PyObject *args)
 /* literal_index(param) for a #n whose n is a Number (the Python function for any other). */
 static PyObject *literal_of(PyObject *param, PyObject *literal_index)
 {
-    PyObject *index = PyObject_GetAttr(param, fields[F_INDEX]), *result;
+    PyObject *index = get_field(param, PARAM, F_INDEX), *result;
     double value;
     if (index == NULL)
         return NULL;
@@ -1164,7 +1215,7 @@ static PyObject *literal_of(PyObject *param, PyObject *literal_index)
         Py_DECREF(index);
         return PyObject_CallFunctionObjArgs(literal_index, param, NULL);
     }
-    result = PyObject_GetAttr(index, fields[F_VALUE]);
+    result = get_field(index, NUMBER, F_VALUE);
     Py_DECREF(index);
     if (result == NULL)
         return NULL;
@@ -1198,7 +1249,7 @@ static int reads_into(PyObject *out, PyObject *expr, PyObject *literal_index)
             return -1;
         }
         Py_DECREF(pair);
-        if ((child = PyObject_GetAttr(expr, fields[F_INDEX])) == NULL)
+        if ((child = get_field(expr, PARAM, F_INDEX)) == NULL)
             return -1;
         failed = reads_into(out, child, literal_index);
         Py_DECREF(child);
@@ -1206,7 +1257,7 @@ static int reads_into(PyObject *out, PyObject *expr, PyObject *literal_index)
     }
     if (type == (PyTypeObject *)classes[BINARY] || type == (PyTypeObject *)classes[COMPARE]) {
         for (k = 0; k < 2; k++) {
-            if ((child = PyObject_GetAttr(expr, fields[two[k]])) == NULL)
+            if ((child = get_field(expr, type == (PyTypeObject *)classes[BINARY] ? BINARY : COMPARE, two[k])) == NULL)
                 return -1;
             failed = reads_into(out, child, literal_index);
             Py_DECREF(child);
@@ -1216,14 +1267,14 @@ static int reads_into(PyObject *out, PyObject *expr, PyObject *literal_index)
         return 0;
     }
     if (type == (PyTypeObject *)classes[UNARY]) {
-        if ((child = PyObject_GetAttr(expr, fields[F_OPERAND])) == NULL)
+        if ((child = get_field(expr, UNARY, F_OPERAND)) == NULL)
             return -1;
         failed = reads_into(out, child, literal_index);
         Py_DECREF(child);
         return failed;
     }
     if (type == (PyTypeObject *)classes[CALL]) {
-        PyObject *args = PyObject_GetAttr(expr, fields[F_ARGS]);
+        PyObject *args = get_field(expr, CALL, F_ARGS);
         Py_ssize_t i, count;
         if (args == NULL)
             return -1;
@@ -1252,7 +1303,7 @@ static PyObject *expr_reads(PyObject *self, PyObject *args)
 /* (code_key(value), word) appended to ``out``: integer tenths, rounded half to even as round() does. */
 static int code_into(PyObject *out, PyObject *number, PyObject *word, PyObject *code_key)
 {
-    PyObject *value = PyObject_GetAttr(number, fields[F_VALUE]), *key, *pair;
+    PyObject *value = get_field(number, NUMBER, F_VALUE), *key, *pair;
     double tenths;
     if (value == NULL)
         return -1;
@@ -1301,8 +1352,8 @@ static PyObject *block_facts_of(PyObject *code_key, PyObject *literal_index, PyO
              *g_tuple = NULL, *m_tuple = NULL, *reads_tuple = NULL;
     Py_ssize_t i, count;
     int coded = 0;
-    if ((words = PyObject_GetAttr(block, fields[F_WORDS])) == NULL
-            || (assigns = PyObject_GetAttr(block, fields[F_ASSIGNS])) == NULL
+    if ((words = get_field(block, BLOCK, F_WORDS)) == NULL
+            || (assigns = get_field(block, BLOCK, F_ASSIGNS)) == NULL
             || (g = PyList_New(0)) == NULL || (m = PyList_New(0)) == NULL || (reads = PyList_New(0)) == NULL)
         goto done;
     count = PyTuple_Size(words);
@@ -1310,12 +1361,12 @@ static PyObject *block_facts_of(PyObject *code_key, PyObject *literal_index, PyO
         PyObject *word = PyTuple_GetItem(words, i), *letter, *value;
         Py_UCS4 c = 0;
         int failed = 0;
-        if ((letter = PyObject_GetAttr(word, fields[F_LETTER])) == NULL)
+        if ((letter = get_field(word, WORD, F_LETTER)) == NULL)
             goto done;
         if (PyUnicode_GetLength(letter) == 1)
             c = PyUnicode_ReadChar(letter, 0);
         Py_DECREF(letter);
-        if ((value = PyObject_GetAttr(word, fields[F_VALUE])) == NULL)
+        if ((value = get_field(word, WORD, F_VALUE)) == NULL)
             goto done;
         if (c == 'G' || c == 'M' || c == 'T')
             coded = 1;
@@ -1333,9 +1384,9 @@ static PyObject *block_facts_of(PyObject *code_key, PyObject *literal_index, PyO
     for (i = 0; i < count; i++) {
         PyObject *assign = PyTuple_GetItem(assigns, i), *target, *index = NULL, *value = NULL;
         int failed = -1;
-        if ((target = PyObject_GetAttr(assign, fields[F_TARGET])) != NULL
-                && (index = PyObject_GetAttr(target, fields[F_INDEX])) != NULL
-                && (value = PyObject_GetAttr(assign, fields[F_VALUE])) != NULL)
+        if ((target = get_field(assign, ASSIGN, F_TARGET)) != NULL
+                && (index = get_field(target, PARAM, F_INDEX)) != NULL
+                && (value = get_field(assign, ASSIGN, F_VALUE)) != NULL)
             failed = reads_into(reads, index, literal_index) || reads_into(reads, value, literal_index);
         Py_XDECREF(index);
         Py_XDECREF(value);
@@ -1462,7 +1513,7 @@ static int survey_block(Survey *sv, PyObject *stmt, PyObject *here, int *ends)
     if (count > 0) {
         PyObject *block_delete;
         int deleted;
-        if (append_pair(sv->callers, stmt, here) < 0 || (block_delete = PyObject_GetAttr(stmt, fields[F_BLOCK_DELETE])) == NULL)
+        if (append_pair(sv->callers, stmt, here) < 0 || (block_delete = get_field(stmt, BLOCK, F_BLOCK_DELETE)) == NULL)
             goto done;
         deleted = PyObject_IsTrue(block_delete);
         Py_DECREF(block_delete);
@@ -1581,7 +1632,7 @@ static int survey_list(Survey *sv, PyObject *body, PyObject *scope)
             PyObject *pairs;
             int bad;
             if (PyObject_TypeCheck(stmt, (PyTypeObject *)classes[MESSAGE])) {
-                PyObject *items = PyObject_GetAttr(stmt, fields[F_ITEMS]), *kind;
+                PyObject *items = get_field(stmt, MESSAGE, F_ITEMS), *kind;
                 Py_ssize_t k;
                 if (items == NULL || (pairs = PyList_New(0)) == NULL) {
                     Py_XDECREF(items);
@@ -1593,7 +1644,7 @@ static int survey_list(Survey *sv, PyObject *body, PyObject *scope)
                         bad = reads_into(pairs, item, sv->literal_index) < 0;
                 }
                 Py_DECREF(items);
-                if (!bad && (kind = PyObject_GetAttr(stmt, fields[F_KIND])) != NULL) {
+                if (!bad && (kind = get_field(stmt, MESSAGE, F_KIND)) != NULL) {
                     ends = PyUnicode_Check(kind) && PyUnicode_CompareWithASCIIString(kind, "errmsg") == 0;
                     Py_DECREF(kind);
                 } else {
