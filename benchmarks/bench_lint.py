@@ -9,12 +9,15 @@ it (``ecnc lint`` of a one-line file), and, measured in this process, how the
 rest splits into parsing and the rules.
 
     python benchmarks/bench_lint.py [--lines N] [--repeat N]
+    python benchmarks/bench_lint.py --before /tmp/old   # side by side with an older checkout (its
+                                                        # extensions built in place), run alternately
     python benchmarks/bench_lint.py --files 400 --jobs 2   # many files: -j 1 beside -j N
 """
 from __future__ import annotations
 
 import argparse
 import gc
+import os
 import random
 import statistics
 import tempfile
@@ -85,9 +88,10 @@ def _median_wall(cmd: list[str], repeat: int) -> float:
     return statistics.median(measure(cmd)[0] for _ in range(repeat))
 
 
-def _split(path: Path, repeat: int) -> tuple[float, float]:
-    """Best-of-``repeat`` seconds of parsing and of running every rule, with the GC paused as the CLI does."""
-    parse, rules = [], []
+def _split(path: Path, repeat: int) -> tuple[float, float, float]:
+    """Best-of-``repeat`` seconds of parsing, of the one walk that gathers the facts, and of running every
+    rule, with the GC paused as the CLI does."""
+    parse, walk, rules = [], [], []
     gc.disable()
     for _ in range(repeat):
         start = time.perf_counter()
@@ -95,11 +99,14 @@ def _split(path: Path, repeat: int) -> tuple[float, float]:
         parse.append(time.perf_counter() - start)
         start = time.perf_counter()
         project = Project([source], {source.path: []})
+        project.facts(source)
+        walk.append(time.perf_counter() - start)
+        start = time.perf_counter()
         for rule in RULES:
             list(rule.check(source, project))
         rules.append(time.perf_counter() - start)
     gc.enable()
-    return min(parse), min(rules)
+    return min(parse), min(walk), min(rules)
 
 
 def bench_many(files: int, lines: int, jobs: int, repeat: int) -> None:
@@ -121,6 +128,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=7)
     parser.add_argument("--files", type=int, help="Many files instead: this many, of --lines lines each.")
     parser.add_argument("--jobs", type=int, default=2, help="With --files: the -j to compare with -j 1.")
+    parser.add_argument("--before", type=Path, help="An older checkout to time alongside (PYTHONPATH).")
     args = parser.parse_args()
     if args.files:
         bench_many(args.files, args.lines, args.jobs, args.repeat)
@@ -131,16 +139,24 @@ def main() -> None:
         one.parent.mkdir()
         one.write_text(";@unit mm\nG0 X1\n")
         lines = len(path.read_text(encoding="utf-8").splitlines())
-        runs = median_runs({"compiled": [*ECNC, "lint", str(path)], "python": [*ECNC, "lint", str(path)],
-                            "start-up": [*ECNC, "lint", str(one)], "start-up, python": [*ECNC, "lint", str(one)]},
-                           args.repeat, {"python": PURE, "start-up, python": PURE})
-        parse, rules = _split(path, args.repeat)
-    print(f"lines:                      {lines}")
+        cmds = {"compiled": [*ECNC, "lint", str(path)], "python": [*ECNC, "lint", str(path)],
+                "start-up": [*ECNC, "lint", str(one)], "start-up, python": [*ECNC, "lint", str(one)]}
+        envs = {"python": PURE, "start-up, python": PURE}
+        if args.before:  # the same commands on the older checkout, in the same rounds
+            older = {"PYTHONPATH": str(args.before.resolve())}
+            for name, cmd in list(cmds.items()):
+                cmds[f"before: {name}"] = cmd
+                envs[f"before: {name}"] = {**envs.get(name, {}), **older}
+        runs = median_runs(cmds, args.repeat, envs)
+        parse, walk, rules = _split(path, args.repeat)
+    print(f"lines:                      {lines}  (load average {' '.join(f'{x:.2f}' for x in os.getloadavg())})")
     for name, (wall, cpu, _rss) in runs.items():
-        what = "ecnc lint" if not name.startswith("start-up") else "  start-up (one-line file)"
+        what = "ecnc lint" if "start-up" not in name else "  start-up (one-line file)"
         core = "python core" if name.endswith("python") else "compiled core"
-        print(f"{what}, {core} (median of {args.repeat}): {wall:.3f} s wall, {cpu:.3f} s CPU")
+        before = "before: " if name.startswith("before") else ""
+        print(f"{before}{what}, {core} (median of {args.repeat}): {wall:.3f} s wall, {cpu:.3f} s CPU")
     print(f"  parse (best, in process): {parse:.3f} s")
+    print(f"  facts (best, in process): {walk:.3f} s")
     print(f"  rules (best, in process): {rules:.3f} s")
     wall = runs["compiled"][0]
     print(f"target <= 0.5 s: {'met' if wall <= 0.5 else 'NOT met'} ({lines / wall:,.0f} lines/s)")

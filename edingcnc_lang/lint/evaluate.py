@@ -88,11 +88,6 @@ def constant_index(param: n.Param) -> float | None:
     return evaluate(param.index)
 
 
-def reads_param(expr: n.Expr, index: int) -> bool:
-    """True if ``expr`` reads parameter ``index`` directly (a literal ``#index``)."""
-    return any(constant_index(p) == index for p in params_in(expr))
-
-
 def params_in(expr: n.Expr) -> list[n.Param]:
     """Every parameter reference in ``expr``, outer ones first (``##5`` gives both)."""
     if type(expr) is n.Param and type(expr.index) is n.Number:  # ``#1000``: the most common expression

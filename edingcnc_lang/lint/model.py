@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import os
+from itertools import chain
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -11,7 +12,7 @@ from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import UnreadableFile
 from edingcnc_lang.syntax.line_parser import parse_line
 from edingcnc_lang.syntax.parser import StatementReader
-from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
+from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.plain_words import plain_words
 from edingcnc_lang.lint.walk import ends_program
 
@@ -41,11 +42,12 @@ def load_source(path: str | os.PathLike[str], is_macro: bool, text: str | None =
     (``ecnc lint`` of a million-line CAM job); the body is then not the whole file.
     """
     shown = os.fspath(path)
-    try:
-        lines = tuple(iter_file_lines(path) if text is None else iter_text_lines(text))
+    try:  # the file's lines in the lists it is read in: nothing is done per line here
+        blocks = list(iter_file_blocks(path)) if text is None else [list(iter_text_lines(text))]
     except OSError as exc:
         raise UnreadableFile.of(shown, exc) from None
-    reader = StatementReader(lines, shown, mode="lint" if stream else "tree")
+    lines = tuple(chain.from_iterable(blocks))
+    reader = StatementReader((), shown, mode="lint" if stream else "tree", blocks=blocks)
     body = tuple(_kept(reader, shown) if stream else reader)
     subs: dict[str, n.Sub] = {}
     for stmt in body:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from edingcnc_lang.machine.tables import TOOL_CHANGE_SUB
 
@@ -14,6 +15,7 @@ CONTROLLER_SUBS = frozenset(
 _M_SUB = re.compile(r"m0*([1-9]\d{0,2})")
 
 
+@lru_cache(maxsize=4096)  # asked for the sub of every call, and for every sub
 def m_sub_number(name: str) -> int | None:
     """The M number a sub answers to (``Sub m100`` -> 100), or None for other names."""
     match = _M_SUB.fullmatch(name.lower())

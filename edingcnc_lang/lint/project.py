@@ -13,10 +13,10 @@ from functools import cached_property
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine.tables import ARG_PARAMS, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
-from edingcnc_lang.lint.facts import Code, FileFacts, gather, indexed_reads
+from edingcnc_lang.lint.facts import Code, FileFacts, indexed_reads, survey
 from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point, m_sub_number
-from edingcnc_lang.lint.walk import Scope, dialog_fields, walk
+from edingcnc_lang.lint.walk import Scope, dialog_fields
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 # Commands that store a result in the variable whose number they are given.
@@ -47,6 +47,16 @@ class Call:
         return sub_key(self.callee, self.sub)
 
 
+def _own_code(scope: Scope) -> int | None:
+    """The M number (whole) a sub answers to, whose own M code inside it is the built-in: ``Sub m3``'s
+    M3, ``change_tool``'s M6."""
+    if scope.sub is None:
+        return None
+    if scope.sub.name.lower() == TOOL_CHANGE_SUB:
+        return TOOL_CHANGE // 10
+    return m_sub_number(scope.sub.name)
+
+
 def sub_key(file: SourceFile, sub: n.Sub) -> SubKey:
     return file.path, sub.name.lower()
 
@@ -62,20 +72,17 @@ class Project:
         self.mill = mill  # the --ini is a mill's (machineType = 0): lathe codes stop the job there
         self._macros = macros
         self._extra_written = extra_written
-        self._walked: dict[str, tuple[tuple[n.Stmt, Scope], ...]] = {}
         self._facts: dict[str, FileFacts] = {}
+        self._resolved: dict[tuple[str, str], tuple[SourceFile, n.Sub] | None] = {}
 
     def walked(self, file: SourceFile) -> tuple[tuple[n.Stmt, Scope], ...]:
         """Every statement of the file with its scope."""
-        found = self._walked.get(file.path)
-        if found is None:
-            found = self._walked[file.path] = tuple(walk(file.body))
-        return found
+        return self.facts(file).walked
 
     def facts(self, file: SourceFile) -> FileFacts:
         found = self._facts.get(file.path)
         if found is None:
-            found = self._facts[file.path] = gather(self.walked(file))
+            found = self._facts[file.path] = survey(file.body)
         return found
 
     def reads(self, file: SourceFile, stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:
@@ -88,7 +95,7 @@ class Project:
         found = self.facts(file).codes_of.get(id(stmt))
         if found is None:
             return ()
-        return {"G": found.g, "M": found.m}[letter]
+        return found.g if letter == "G" else found.m if letter == "M" else ()
 
     # ----------------------------------------------------------------- calls
     def searched(self, file: SourceFile) -> tuple[SourceFile, ...]:
@@ -97,11 +104,17 @@ class Project:
 
     def resolve(self, file: SourceFile, name: str) -> tuple[SourceFile, n.Sub] | None:
         """The sub ``name`` as the controller finds it: in the file itself, then its macro files."""
+        key = file.path, name.lower()
+        if key in self._resolved:  # the same few names (m3, m5, a GoSub target) are asked for again and again
+            return self._resolved[key]
+        found = None
         for candidate in self.searched(file):
-            sub = candidate.subs.get(name.lower())
+            sub = candidate.subs.get(key[1])
             if sub is not None:
-                return candidate, sub
-        return None
+                found = candidate, sub
+                break
+        self._resolved[key] = found
+        return found
 
     def callees(self, file: SourceFile, stmt: n.Stmt, scope: Scope) -> Iterator[tuple[SourceFile, n.Sub]]:
         """The subs a statement runs (inside ``Sub m3`` an M3 is the built-in, not a call; so is M6
@@ -111,15 +124,10 @@ class Project:
             if found:
                 yield found
         elif isinstance(stmt, n.Block):
-            own = m_sub_number(scope.sub.name) if scope.sub else None
-            if scope.sub and scope.sub.name.lower() == TOOL_CHANGE_SUB:
-                own = TOOL_CHANGE // 10
             for key, _word in self.codes(file, stmt, "M"):
                 name = m_code_sub(key)
-                if name is None or key // 10 == own:
-                    continue
-                found = self.resolve(file, name)
-                if found:
+                found = self.resolve(file, name) if name is not None else None
+                if found and key // 10 != _own_code(scope):
                     yield found
 
     @cached_property
@@ -185,7 +193,7 @@ class Project:
         found = set(self._extra_written)
         for file in self.files:
             facts = self.facts(file)
-            found.update(index for _param, index, _scope in facts.targets if index is not None)
+            found.update(index for index in facts.target_indices if index is not None)
             for dialog, _scope in facts.dialogs:
                 found.update(index for index, _ in dialog_fields(dialog))
             for command in facts.commands:

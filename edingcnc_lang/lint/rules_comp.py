@@ -27,6 +27,7 @@ PLANES = {code_key(17): ("I", "J"), code_key(18): ("I", "K"), code_key(19): ("J"
 G2, G3 = code_key(2), code_key(3)
 G20, G21 = code_key(20), code_key(21)
 _READ_WORDS = COMP | {G10}  # the codes whose line's word values update() reads
+_UPDATING = _READ_WORDS | {OFF, G20, G21} | PLANES.keys()  # the codes update() follows
 
 
 class _Comp:
@@ -71,11 +72,14 @@ class _Comp:
 @rule("G508")
 def arc_too_small_for_the_tool(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     comp = _Comp(project.tool_diameters)
-    for codes in project.facts(file).blocks:
+    for codes in project.facts(file).coded:  # a block without G codes changes nothing here
+        if not codes.g:
+            continue
         keys = {key for key, _ in codes.g}
         # the words' values matter to a G10 or a G41/G42 line, and to an arc under compensation
         words = comp.words(codes) if keys & _READ_WORDS else {}
-        comp.update(keys, words)
+        if keys & _UPDATING:  # a line without these leaves the compensation as it is
+            comp.update(keys, words)
         if not comp.side or not comp.radius:
             continue
         arc = next(((k, w) for k, w in codes.g if k in (G2, G3)), None)

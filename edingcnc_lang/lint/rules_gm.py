@@ -6,7 +6,7 @@ a check of #5067 after G38.2 (the retired G505): a probe that does not touch is 
 """
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.diagnostics import Diagnostic
@@ -39,63 +39,93 @@ CENTRE = frozenset("IJKR")
 
 
 @rule("G500")
-def modal_conflict(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for block in project.facts(file).blocks:
-        for letter, codes, groups in (("G", block.g, G_GROUPS), ("M", block.m, M_GROUPS)):
-            seen: dict[str, int] = {}
-            for key, word in codes:
-                group = groups.get(key)
-                if group is None:
-                    continue
-                first = seen.setdefault(group, key)
-                winner = same_line_winner(group, first, key) if letter == "G" and first != key else None
-                if winner is not None:
-                    seen[group] = winner
-                elif first != key:
-                    yield at("G500", f"{code_name(letter, first)} and {code_name(letter, key)} are both in "
-                             f"the {group.replace('_', ' ')} group: one line may hold only one of them; "
-                             "put them on separate lines", word.span)
+def modal_conflict(file: SourceFile, project: Project) -> list[Diagnostic]:
+    found: list[Diagnostic] = []
+    for block in project.facts(file).coded:
+        if len(block.g) > 1:  # most lines: no two codes to conflict
+            _conflicts("G", block.g, G_GROUPS, found)
+        if len(block.m) > 1:
+            _conflicts("M", block.m, M_GROUPS, found)
+    return found
+
+
+def _conflicts(letter: str, codes: tuple[Code, ...], groups: Mapping[int, str], found: list[Diagnostic]) -> None:
+    """Two codes of one modal group on a line, unless one of them wins on the same line (G only)."""
+    seen: dict[str, int] = {}
+    for key, word in codes:
+        group = groups.get(key)
+        if group is None:
+            continue
+        first = seen.setdefault(group, key)
+        winner = same_line_winner(group, first, key) if letter == "G" and first != key else None
+        if winner is not None:
+            seen[group] = winner
+        elif first != key:
+            found.append(at("G500", f"{code_name(letter, first)} and {code_name(letter, key)} are both in "
+                            f"the {group.replace('_', ' ')} group: one line may hold only one of them; "
+                            "put them on separate lines", word.span))
 
 
 @rule("G501", "G502", "G503", "G506", "G507")
-def word_combinations(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for codes in project.facts(file).blocks:
-        yield from _line_words(codes)
+def word_combinations(file: SourceFile, project: Project) -> list[Diagnostic]:
+    found: list[Diagnostic] = []
+    for codes in project.facts(file).coded:
+        _line_words(codes, found)
+    return found
 
 
-def _line_words(codes: BlockCodes) -> Iterator[Diagnostic]:
+def _line_words(codes: BlockCodes, found: list[Diagnostic]) -> None:
+    """G501..G503, G506, G507 of one line; a code's word is the last one with that number, and the
+    last F and T words count, as the controller reads a line (one loop each: this runs for most lines)."""
     block = codes.block
-    letters = {w.letter: w for w in block.words}
-    if codes.g:  # G501..G503 are about G codes: most lines have none
-        g = dict(codes.g)
-        if G53 in g and not G53_MOTIONS & g.keys():
-            yield at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. G53 G0 Z0",
-                     g[G53].span)
-        arc = next((k for k in g if k in ARCS), None)
-        if arc is not None and AXES & letters.keys() and not CENTRE & letters.keys():
-            yield at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
-                     g[arc].span)
-        feed = letters.get("F")
-        move = next((k for k in g if k in FEED_MOVES), None) if feed is not None else None
+    feed = tool = None
+    axes = centre = False
+    for word in block.words:
+        letter = word.letter
+        if letter == "F":
+            feed = word
+        elif letter == "T":
+            tool = word
+        elif letter in AXES:
+            axes = True
+        elif letter in CENTRE:
+            centre = True
+    if codes.g:  # G501..G503 are about G codes
+        g53 = arc = arc_word = move = None
+        g53_motion = False
+        for key, word in codes.g:
+            if key == G53:
+                g53 = word
+            if key in G53_MOTIONS:
+                g53_motion = True
+            if key in ARCS and (arc is None or key == arc):  # the first arc code, its last word
+                arc, arc_word = key, word
+            if move is None and key in FEED_MOVES:
+                move = key
+        if g53 is not None and not g53_motion:
+            found.append(at("G501", "G53 (machine coordinates) needs G0, G1 or G38.2 on the same line, e.g. "
+                            "G53 G0 Z0", g53.span))
+        if arc is not None and arc_word is not None and axes and not centre:
+            found.append(at("G502", f"{code_name('G', arc)} arc needs its centre (I, J, K) or a radius (R)",
+                            arc_word.span))
         if feed is not None and move is not None and evaluate(feed.value) == 0:
-            yield at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
-                     "(EdingCNC G1516: incorrect feed rate)", feed.span)
-    tool = letters.get("T")
+            found.append(at("G503", f"F0 on a {code_name('G', move)} move: give a feed rate above 0 "
+                            "(EdingCNC G1516: incorrect feed rate)", feed.span))
     number = evaluate(tool.value) if tool else None
     if tool is not None and number is not None and number > MAX_TOOL:
-        yield at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span)
+        found.append(at("G506", f"T{number:g}: tool numbers go up to {MAX_TOOL}", tool.span))
     if len(block.words) > MAX_M_WORDS:
         m_words = [w for w in block.words if w.letter == "M"]
         if len(m_words) > MAX_M_WORDS:
-            yield at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
-                     f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span)
+            found.append(at("G507", f"{len(m_words)} M words on one line; the controller takes at most "
+                            f"{MAX_M_WORDS}: split the line", m_words[MAX_M_WORDS].span))
 
 
 @rule("G509")
 def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A literal G number outside the dialect's tables stops the job at run time (``unknown G code``),
     and so does a lathe code on the mill the ``--ini`` describes."""
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         for key, word in block.g:
             if key not in G_GROUPS:
                 hint = UNKNOWN_G_HINTS.get(key)
@@ -108,10 +138,12 @@ def unknown_g_code(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """An M code the controller has no action for runs the Sub mNNN of its number (manual 3.7.13);
     without one it does nothing, which the run reports too."""
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         for key, word in block.m:
+            if key in M_GROUPS:  # most M codes: a built-in
+                continue
             name = m_sub_name(key)
-            if key in M_GROUPS or (name is not None and project.resolve(file, name) is not None):
+            if name is not None and project.resolve(file, name) is not None:
                 continue
             yield at("G510", f"{code_name('M', key)} has no built-in meaning and no Sub "
                      f"{name or code_name('m', key)} is defined in the file or its macro files: it does nothing",
@@ -119,13 +151,16 @@ def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagn
 
 
 def _probe_word(g: Iterable[Code]) -> n.Word | None:
-    return next((w for k, w in g if k == PROBE), None)
+    for key, word in g:
+        if key == PROBE:
+            return word
+    return None
 
 
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
-    for block in project.facts(file).blocks:
+    for block in project.facts(file).coded:
         word = _probe_word(block.g)
         if word is not None and not project.is_guarded(file, block.scope):
             yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "

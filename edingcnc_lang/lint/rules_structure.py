@@ -14,7 +14,7 @@ from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point
 from edingcnc_lang.lint.project import Project, sub_key
 from edingcnc_lang.lint.registry import at, rule
-from edingcnc_lang.lint.walk import END_OF_PROGRAM, block_codes, statement_lists
+from edingcnc_lang.lint.walk import END_OF_PROGRAM, block_codes
 
 
 @rule("S207")
@@ -29,7 +29,7 @@ def duplicate_sub(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
 
 @rule("S208")
 def unknown_gosub(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    for stmt, _ in project.walked(file):
+    for stmt, _ in project.facts(file).callers:
         if isinstance(stmt, n.GoSub) and project.resolve(file, stmt.name) is None:
             others = [Path(other.path).name for other in project.searched(file)[1:]]
             if others:
@@ -52,16 +52,9 @@ def _ending(stmt: n.Stmt) -> str:
 @rule("S209")
 def unreachable(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """Statements after an unconditional end in the same list never run (Sub definitions excepted)."""
-    ending = project.facts(file).ending  # ends_program of every statement, worked out in the one walk
-    for body in statement_lists(file.body, project.walked(file)):
-        stop = next((i for i, s in enumerate(body) if id(s) in ending), None)
-        if stop is None:
-            continue
-        end = body[stop]
-        dead = next((s for s in body[stop + 1:] if not isinstance(s, n.Sub)), None)
-        if dead is not None:
-            yield at("S209", f"this never runs: the {_ending(end)} on line {end.span.line} ends the "
-                     "program first; move it before that line or remove it", dead.span)
+    for end, dead in project.facts(file).unreachable:  # found in the one walk
+        yield at("S209", f"this never runs: the {_ending(end)} on line {end.span.line} ends the "
+                 "program first; move it before that line or remove it", dead.span)
 
 
 @rule("S210")

@@ -6,12 +6,12 @@ parameters a statement reads and writes and whether it ends the program.
 """
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine.tables import SIMULATION, code_key
-from edingcnc_lang.lint.evaluate import constant_index, evaluate, params_in, reads_param
+from edingcnc_lang.lint.evaluate import constant_index, evaluate, params_in
 
 END_OF_PROGRAM = frozenset(code_key(c) for c in (2, 30))
 Code = tuple[int, n.Word]  # a literal G or M number as integer tenths (G38.2 -> 382) and its word
@@ -25,38 +25,12 @@ class Scope:
     guarded: bool = False
 
 
-def walk(body: Sequence[n.Stmt], scope: Scope = Scope()) -> list[tuple[n.Stmt, Scope]]:
-    """Every statement, nested ones included, in source order with its scope."""
-    found: list[tuple[n.Stmt, Scope]] = []
-    _walk_into(found, body, scope)
-    return found
+def walk(body: Sequence[n.Stmt]) -> list[tuple[n.Stmt, Scope]]:
+    """Every statement, nested ones included, in source order with its scope (worked out in the
+    walk that gathers the lint facts, ``lint.facts.survey``)."""
+    from edingcnc_lang.lint.facts import survey  # (that module builds on this one)
 
-
-def _walk_into(found: list[tuple[n.Stmt, Scope]], body: Sequence[n.Stmt], scope: Scope) -> None:
-    here = scope
-    for stmt in body:
-        found.append((stmt, here))
-        if isinstance(stmt, n.Sub):
-            _walk_into(found, stmt.body, Scope(stmt, False))
-        elif isinstance(stmt, n.While):
-            _walk_into(found, stmt.body, here)
-        elif isinstance(stmt, n.If):
-            then_guard, else_guard, exits = _in_simulation(stmt)
-            _walk_into(found, stmt.then, Scope(scope.sub, True) if then_guard else here)
-            _walk_into(found, stmt.orelse, Scope(scope.sub, True) if else_guard else here)
-            if not here.guarded and exits:
-                here = Scope(scope.sub, True)  # the rest of this block only runs on a real machine
-
-
-def statement_lists(body: Sequence[n.Stmt], walked: Iterable[tuple[n.Stmt, Scope]]) -> Iterator[Sequence[n.Stmt]]:
-    """Every list of statements that runs in sequence: the file, sub bodies, branches, loop bodies."""
-    yield body
-    for stmt, _ in walked:
-        if isinstance(stmt, (n.Sub, n.While)):
-            yield stmt.body
-        elif isinstance(stmt, n.If):
-            yield stmt.then
-            yield stmt.orelse
+    return list(survey(body).walked)
 
 
 def simulation_value(index: int) -> float | None:
@@ -64,36 +38,18 @@ def simulation_value(index: int) -> float | None:
     return 1.0 if index == SIMULATION else None
 
 
-def _in_simulation(stmt: n.If) -> tuple[bool, bool, bool]:
-    """``guard_branches(stmt.cond)`` and ``exits_in_simulation(stmt)`` with one look at the condition."""
-    if not reads_param(stmt.cond, SIMULATION):  # most conditions
-        return False, False, False
-    return (*guard_branches(stmt.cond), exits_in_simulation(stmt))
+def simulation_branches(stmt: n.If) -> tuple[bool, bool, bool]:
+    """For an If whose condition reads #5380: which branches never run in simulation (then, else),
+    and whether the If ends the program or aborts whenever it runs in simulation.
 
-
-def guard_branches(cond: n.Expr) -> tuple[bool, bool]:
-    """Which branches of an If never run in simulation: (then, else).
-
-    A condition that reads #5380 but cannot be decided counts as guarding
-    both branches: the author checked for simulation, so no finding.
+    A condition that cannot be decided counts as guarding both branches (the author checked
+    for simulation, so no finding) and as not ending the program.
     """
-    if not reads_param(cond, SIMULATION):
-        return False, False
-    value = evaluate(cond, simulation_value)
-    if value is None:
-        return True, True
-    return (False, True) if value else (True, False)
-
-
-def exits_in_simulation(stmt: n.If) -> bool:
-    """True for an If that ends the program or aborts whenever it runs in simulation."""
-    if not reads_param(stmt.cond, SIMULATION):
-        return False
     value = evaluate(stmt.cond, simulation_value)
     if value is None:
-        return False
+        return True, True, False
     branch = stmt.then if value else stmt.orelse
-    return any(ends_program(s) for s in branch)
+    return not value, bool(value), any(ends_program(s) for s in branch)
 
 
 def ends_program(stmt: n.Stmt) -> bool:

@@ -16,9 +16,10 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable
+from typing import TypeVar
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
 
@@ -86,25 +87,41 @@ def _tokens_python(text: str, pos: int) -> list[Token]:
 
 
 _Compiled = Callable[..., object] | None
+_N = TypeVar("_N")
 
 
-def _compiled() -> tuple[_Compiled, _Compiled, _Compiled]:
-    """The compiled tokenizer, block and condition readers (``_lexer.c``), unless they are not built
-    or ``ECNC_PURE_PYTHON`` asks for the Python core."""
+def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
+    """The compiled tokenizer, block, condition, statement and lines readers (``_lexer.c``), unless
+    they are not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
     from edingcnc_lang.speedups import PURE_ENV
+    from edingcnc_lang.syntax import blocks
 
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None, None
+        return None, None, None, None, None
     try:
         from edingcnc_lang import _lexer  # type: ignore[attr-defined]
     except ImportError:
-        return None, None, None
-    _lexer.setup(n)
-    return _lexer.tokens, _lexer.block, _lexer.condition
+        return None, None, None, None, None
+    _lexer.setup(n, blocks, GIVE_UP, _KEYWORDS - _HANDLED)
+    return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement, _lexer.statements
 
 
-_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION = _compiled()
+_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT, _COMPILED_STATEMENTS = _compiled()
 COMPILED_READER = _COMPILED_BLOCK is not None
+
+
+def _construct(cls: type[_N], values: tuple[object, ...]) -> _N:
+    """A node of ``cls`` with these field values (the reference for the compiled ``_lexer.new``)."""
+    return cls(*values)
+
+
+# A node of a frozen dataclass from its field values: on the compiled reader without the Python-level
+# call of the dataclass's __init__ (the reader makes an If, While or Sub node at every end line).
+new_node: Callable[[type[_N], tuple[object, ...]], _N] = _construct
+if COMPILED_READER:
+    from edingcnc_lang import _lexer  # type: ignore[attr-defined]
+
+    new_node = _lexer.new  # type: ignore[attr-defined]
 
 
 def _tokens(text: str, pos: int) -> list[Token]:
@@ -336,6 +353,25 @@ def compiled_block(text: str, path: str, line: int) -> n.Block | None:
     if _COMPILED_BLOCK is None:
         return None
     return _COMPILED_BLOCK(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)  # type: ignore[return-value]
+
+
+def compiled_statement(text: str, path: str, line: int) -> LineResult | object:
+    """``parse_fast`` of a line without '(' that passes the input limits, on the compiled reader
+    (``_lexer.statement``): the same node, None for a blank line, or GIVE_UP where ``parse_fast``
+    gives up or the compiled reader does not try (then ``parse_fast`` decides)."""
+    if _COMPILED_STATEMENT is None:
+        return GIVE_UP
+    return _COMPILED_STATEMENT(text, path, line, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+
+
+def compiled_statements(lines: list[str], path: str, first: int) -> list[LineResult | object] | None:
+    """``compiled_statement`` of each line (numbered from ``first`` on) that is short enough to pass
+    every input limit and holds no '(', GIVE_UP for the others, in one call; None when the compiled
+    reader is not built or not asked for."""
+    if _COMPILED_STATEMENTS is None:
+        return None
+    return _COMPILED_STATEMENTS(lines, path, first, SHORTEST_PROBLEM, INTEGER_DIGITS,  # type: ignore[return-value]
+                                MAX_NUMBER_DIGITS)
 
 
 def _block(text: str, path: str, line: int) -> n.Block:

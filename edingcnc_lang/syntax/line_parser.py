@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_block, parse_fast
+from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_block, compiled_statement, parse_fast
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, SHORTEST_PROBLEM, line_problem
 from edingcnc_lang.syntax.blocks import LineResult
 from edingcnc_lang.syntax.plain_words import FAST_LINE, word_matches
@@ -174,11 +174,11 @@ def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
                          "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)
     if COMPILED_READER and len(text) <= SHORTEST_PROBLEM and "(" not in text:
         # A line this short passes every limit, and without '(' it holds no ( ) comment: the
-        # compiled reader may answer first.  It builds the Block the paths below build, and gives
-        # up on anything else (blank lines, keywords, which never read as words, strings).
-        block = compiled_block(text, path, line)
-        if block is not None:
-            return block
+        # compiled reader may answer first.  It builds what the paths below build (the Block of a
+        # plain line as _fast_block, the rest as parse_fast), and gives up on anything else.
+        found = compiled_statement(text, path, line)
+        if found is not GIVE_UP:
+            return found  # type: ignore[return-value]
     if FAST_LINE.match(text):  # the compiled reader builds the same Block faster, when it is built
         return compiled_block(text, path, line) or _fast_block(text, path, line)
     if _EMPTY_LINE.match(text):  # blank or comments only

@@ -22,7 +22,8 @@ from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
 from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
-from edingcnc_lang.syntax.blocks import Close, Open
+from edingcnc_lang.syntax.blocks import Close, LineResult, Open
+from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_statements, new_node
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
 
@@ -34,6 +35,7 @@ UNITS = frozenset({"mm", "inch"})
 
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
+READ_AHEAD = 128  # lines inside a block the compiled reader reads in one call (tree and lint reads)
 CHUNK_LINES = 8192
 _NON_PLAIN = re.compile(rf"^(?!{PLAIN_LINE}$).*$", re.MULTILINE)
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
@@ -93,11 +95,11 @@ class _Frame:
     def close(self, end: n.Span) -> n.Stmt:
         o = self.opener
         if o.kind == "Sub":
-            return n.Sub(o.name, tuple(self.body), o.span, end)
+            return new_node(n.Sub, (o.name, tuple(self.body), o.span, end))
         assert o.cond is not None
         if o.kind == "If":
-            return n.If(o.cond, tuple(self.body), tuple(self.orelse), self.in_else, o.extra, o.span, end)
-        return n.While(o.cond, tuple(self.body), o.extra, o.span, end)
+            return new_node(n.If, (o.cond, tuple(self.body), tuple(self.orelse), self.in_else, o.extra, o.span, end))
+        return new_node(n.While, (o.cond, tuple(self.body), o.extra, o.span, end))
 
     def describe(self) -> str:
         o = self.opener
@@ -155,6 +157,7 @@ class StatementReader:
         stack: list[_Frame] = []
         path = self.path
         bulk = self.mode != "tree"
+        read_ahead = COMPILED_READER and self.mode in ("tree", "lint")  # (the others read plain lines otherwise)
         lineno = 0
         for base, chunk in _chunks(self._blocks):
             self.lines = base + len(chunk) - 1
@@ -164,6 +167,8 @@ class StatementReader:
             # Plain lines at the top level are skipped (check) or handed over in runs (run) in
             # bulk: the regular-expression engine finds the few other lines of a chunk.
             others = self._others(base, chunk) if bulk else []
+            parsed: list[LineResult | object] = []  # the compiled reader's results of chunk[ahead:...]
+            ahead = 0
             i, count = 0, len(chunk)
             while i < count:
                 if bulk and not stack:
@@ -177,6 +182,40 @@ class StatementReader:
                         i = j
                         continue
                 lineno = base + i
+                if stack and read_ahead and not self._skipped:
+                    # Inside a block every line is parsed: the compiled reader reads the next lines in
+                    # one call, and the reader adds most of them to the block without more ado.
+                    if not ahead <= i < ahead + len(parsed):
+                        ahead, parsed = i, compiled_statements(chunk[i:i + READ_AHEAD], path, lineno) or []
+                    result = parsed[i - ahead]
+                    if result is not GIVE_UP:
+                        kind = type(result)
+                        if kind is Close:  # what _fit does, inlined: a block is open and none is skipped
+                            done = self._close(stack, result, chunk[i])  # type: ignore[arg-type]
+                            if done is not None:
+                                yield done
+                        elif kind is Open and result.kind != "Sub":  # type: ignore[union-attr]
+                            self._push(stack, result, chunk[i])  # type: ignore[arg-type]
+                        elif kind is Open or kind is n.Dialog:
+                            yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
+                        else:  # a statement or a blank line, and most likely more of them: add them all
+                            frame = stack[-1]
+                            add = (frame.orelse if frame.in_else else frame.body).append
+                            stop = ahead + len(parsed)
+                            while True:
+                                if result is not None:
+                                    add(result)  # type: ignore[arg-type]
+                                i += 1
+                                if i == stop:
+                                    break
+                                result = parsed[i - ahead]
+                                kind = type(result)
+                                if kind is Open or kind is Close or kind is n.Dialog or result is GIVE_UP:
+                                    break
+                            lineno = base + i - 1
+                            continue
+                        i += 1
+                        continue
                 yield from self._line(stack, chunk[i], lineno, bulk)
                 i += 1
         yield from self._unwind(stack, lineno + 1, report=True)
@@ -212,6 +251,10 @@ class StatementReader:
         except _LineError as err:
             yield from self._bad_line(stack, err, text, lineno)
             return
+        yield from self._fit(stack, result, text, lineno)
+
+    def _fit(self, stack: list[_Frame], result: LineResult, text: str, lineno: int) -> Iterator[n.Stmt]:
+        """Fit what a line says into the block structure."""
         if result is None:
             return
         if self._skipped and not isinstance(result, Open):  # inside blocks nested too deeply: dropped
@@ -307,7 +350,7 @@ class StatementReader:
         """Apply an end line (or Else) to the stack; returns a finished top-level statement."""
         want = _OPENER_OF[close.kind]
         line, col = close.span.line, close.span.col
-        if not any(f.opener.kind == want for f in stack):
+        if not (stack and stack[-1].opener.kind == want) and not any(f.opener.kind == want for f in stack):
             hint = (f" ({stack[-1].describe()} is still open: close it with "
                     f"{_END_OF[stack[-1].opener.kind]})") if stack else ""
             self._error(_ORPHAN_CODE[close.kind], f"{close.kind} without {want}{hint}", line, col, text)

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.lint.facts import gather
+from edingcnc_lang.lint.facts import indexed_reads, survey
 from edingcnc_lang.lint.walk import walk
 from edingcnc_lang.syntax.parser import parse_text
 
@@ -26,16 +26,16 @@ GoSub probe_z
 
 def _facts():  # type: ignore[no-untyped-def]
     program = parse_text(SOURCE, "job.nc")
-    return gather(walk(program.body))
+    return survey(program.body)
 
 
 def test_blocks_carry_their_g_and_m_numbers_in_line_order() -> None:
     facts = _facts()
-    codes = [([k for k, _ in b.g], [k for k, _ in b.m]) for b in facts.blocks]
-    assert codes == [([382, 910], []), ([], []), ([0, 900], [30, 80]), ([], [])]
-    probe = facts.blocks[0]
+    codes = [([k for k, _ in b.g], [k for k, _ in b.m]) for b in facts.coded]
+    assert codes == [([382, 910], []), ([0, 900], [30, 80])]  # the blocks with a G, M or T word
+    probe = facts.coded[0]
     assert probe.scope.guarded and probe.scope.sub is not None and probe.scope.sub.name == "probe_z"
-    assert facts.blocks[2].scope.sub is None
+    assert facts.coded[1].scope.sub is None
 
 
 def test_reads_and_targets_in_source_order_with_literal_indices() -> None:
@@ -51,8 +51,11 @@ def test_statements_of_each_kind_and_the_possible_callers() -> None:
     assert [c.name for c in facts.commands] == ["gettoolinfo"]
     callers = [type(stmt).__name__ for stmt, _ in facts.callers]
     assert callers == ["Block", "GoSub"]  # the block with M3 M8 may run Sub m3 / m8
-    every = [stmt for stmt, _ in walk(parse_text(SOURCE, "job.nc").body)]
-    assert len(facts.reads_of) == len(every)  # every statement has its reads, most of them none
+    every = [stmt for stmt, _ in facts.walked]
+    assert len(every) == len(walk(parse_text(SOURCE, "job.nc").body))
+    for stmt in every:  # the statements that read parameters have their reads; the others read none
+        assert facts.reads_of.get(id(stmt), ()) == indexed_reads(stmt), stmt
+    assert [type(b.block.words[0].value).__name__ for b in facts.coded] == ["Number", "Number"]  # G38.2.., G0..
 
 
 def test_rules_name_the_first_matching_code_of_a_line(tmp_path) -> None:  # type: ignore[no-untyped-def]
@@ -82,10 +85,17 @@ EndIf
 def test_the_ending_statements_are_those_ends_program_names() -> None:
     from edingcnc_lang.lint.walk import ends_program
 
-    walked = walk(parse_text(ENDS, "job.nc").body)
-    ending = gather(walked).ending
+    facts = survey(parse_text(ENDS, "job.nc").body)
+    walked, ending = facts.walked, facts.ending
     assert [id(stmt) in ending for stmt, _ in walked] == [ends_program(stmt) for stmt, _ in walked]
     assert sum(id(stmt) in ending for stmt, _ in walked) == 4  # M30, M2, errmsg, the M30 in the If
+
+
+def test_each_list_with_an_end_names_its_first_end_and_the_first_statement_after_it() -> None:
+    """The first end of a list and what follows it (not a Sub), as S209 reports them."""
+    text = "M30\nSub a\nEndSub\nG0 X1\nM2\nIf [#1 == 1]\n    errmsg \"x\"\n    M30\nEndIf\nWhile [1]\n    M2\nEndWhile\n"
+    found = [(end.span.line, dead.span.line) for end, dead in survey(parse_text(text, "job.nc").body).unreachable]
+    assert sorted(found) == [(1, 4), (7, 8)]
 
 
 def test_the_reads_of_a_block_follow_its_expressions_in_order() -> None:
@@ -95,3 +105,22 @@ def test_the_reads_of_a_block_follow_its_expressions_in_order() -> None:
 
     for stmt, _ in walk(parse_text(SOURCE + ENDS, "job.nc").body):
         assert reads(stmt) == [p for e in expressions(stmt) for p in params_in(e)], stmt
+
+
+def test_linting_leaves_no_reference_cycles(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """The CLI pauses the cyclic collector while it lints: a cycle holding a tree (a recursive closure
+    in the walk did) would keep the whole tree alive until the collector walked it at the end."""
+    import gc
+
+    from edingcnc_lang.lint import lint_paths
+
+    job = tmp_path / "macro.cnc"
+    job.write_text(";@unit mm\n" + SOURCE + ENDS)
+    lint_paths([job])  # everything imported and cached first
+    gc.collect()
+    gc.disable()
+    try:
+        assert lint_paths([job])
+        assert gc.collect() == 0
+    finally:
+        gc.enable()

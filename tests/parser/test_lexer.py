@@ -18,16 +18,16 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang.syntax import fastparse, nodes
+from edingcnc_lang.syntax import blocks, fastparse, nodes
 from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 from edingcnc_lang.syntax.plain_words import INTEGER_DIGITS
 from edingcnc_lang.syntax.printer import expr_text, stmt_lines
 
-from .test_fastparse import _respace
-from .test_properties import blocks, exprs, plain_lines
+from .test_fastparse import _respace, comments, lines
+from .test_properties import blocks as block_nodes, exprs, plain_lines
 
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled tokenizer is not built")
-lexer.setup(nodes)  # done by fastparse on the compiled core; here also under ECNC_PURE_PYTHON=1
+lexer.setup(nodes, blocks, fastparse.GIVE_UP, fastparse._KEYWORDS - fastparse._HANDLED)  # as fastparse does (also under ECNC_PURE_PYTHON=1)
 
 
 def _python(text: str, pos: int) -> object:
@@ -121,7 +121,7 @@ def _same_block(line: str) -> object:
 
 
 @settings(max_examples=150, deadline=None)
-@given(blocks.map(lambda b: stmt_lines(b)[0]), st.sampled_from(["", " ; note", ";x G1 X2", "   ", " ; é"]),
+@given(block_nodes.map(lambda b: stmt_lines(b)[0]), st.sampled_from(["", " ; note", ";x G1 X2", "   ", " ; é"]),
        st.randoms(use_true_random=False))
 def test_the_compiled_block_reader_builds_the_python_blocks(line: str, comment: str, rnd: random.Random) -> None:
     for spaced in (line.replace(" ", ""), line, _respace(line, rnd)):
@@ -238,3 +238,102 @@ def test_both_cores_read_the_shipped_files_alike() -> None:
     compiled = read(False)
     assert compiled.count("\n") > 50  # the files were really read
     assert compiled == read(True)
+
+
+# ------------------------------------------------------------------ the compiled statement reader
+
+def _python_statement(line: str) -> object:
+    """``parse_fast`` on the Python tokenizer and methods alone (the reference)."""
+    saved = fastparse._COMPILED, fastparse._COMPILED_BLOCK, fastparse._COMPILED_CONDITION
+    fastparse._COMPILED = fastparse._COMPILED_BLOCK = fastparse._COMPILED_CONDITION = None
+    try:
+        return fastparse.parse_fast(line, "f", 7)
+    finally:
+        fastparse._COMPILED, fastparse._COMPILED_BLOCK, fastparse._COMPILED_CONDITION = saved
+
+
+def _same_statement(line: str) -> object:
+    """The compiled statement reader gives ``parse_fast``'s node (spans, node and item types included),
+    None for a blank line, or gives up; never an answer where ``parse_fast`` gives up.  The caller
+    (``line_parser.parse_line``) hands it only lines without '('."""
+    compiled = lexer.statement(line, "f", 7, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    if compiled is fastparse.GIVE_UP:
+        return compiled
+    python = _python_statement(line)
+    assert python is not fastparse.GIVE_UP, line
+    assert type(compiled) is type(python) and repr(compiled) == repr(python) and compiled == python, line
+    if isinstance(python, (nodes.Message, nodes.Dialog)):
+        assert [type(item) for item in compiled.items] == [type(item) for item in python.items], line
+    if isinstance(python, blocks.Open):
+        assert vars(compiled) == vars(python), line
+    return compiled
+
+
+@settings(max_examples=200, deadline=None)
+@given(lines, comments, st.randoms(use_true_random=False))
+def test_the_compiled_statement_reader_builds_the_python_nodes(line: str, comment: str, rnd: random.Random) -> None:
+    for spaced in (line, _respace(line, rnd)):
+        if "(" not in spaced + comment:
+            _same_statement(spaced + comment)
+
+
+@given(st.lists(st.one_of(pieces, st.sampled_from(["msg ", "dlgmsg", "If ", "while", "EndIf", "else", "Sub ",
+                                                  "gosub ", "logfile ", "home ", "kin", "_", "1"])),
+                max_size=10).map("".join))
+def test_the_compiled_statement_reader_on_any_pieces(line: str) -> None:
+    if "(" not in line:
+        _same_statement(line)
+
+
+@pytest.mark.parametrize("line", [
+    "", "   ", "\t; note", "; é", "EndSub", "  ENDIF ; x", "endwhile", "Else", "Sub user_macro_1",
+    "sub 1st ; x", "GoSub change_tool", "If [[#5380 == 0] and [#5397 == 0]]", "IF [#1] THEN", "While [#1 < 10]]",
+    'msg "value "#1000" ok"', 'warnmsg "é" #1 "x"', "errmsg", 'logmsg "a" -#2 [1 + 2] SIN[3]',
+    'dlgmsg "Setup 0" "Depth" 1000 "Width" 1001', "#1 = [#2 * 2.5]", "G1 X[#2] F100", "N10 G0 X1",
+])
+def test_the_compiled_statement_reader_takes_the_common_lines(line: str) -> None:
+    assert _same_statement(line) is not fastparse.GIVE_UP, line
+
+
+@pytest.mark.parametrize("line", [
+    "home x", 'logfile "a.txt" 1', "kin on", "If [1] AND [2]", "EndIf X1", "Sub", "Sub a b", "GoSub a;\nb",
+    'msg "open', "msg ]", "Else\n", " \x0c", "G1 X\ud800", 'msg "\ud800"', "tanknife on", "exec x",
+])
+def test_the_compiled_statement_reader_gives_up_where_it_should(line: str) -> None:
+    assert lexer.statement(line, "f", 7, INTEGER_DIGITS, MAX_NUMBER_DIGITS) is fastparse.GIVE_UP, line
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.one_of(lines, st.lists(pieces, max_size=8).map("".join),
+                          st.sampled_from(["(x) G1", "G1 X1 (note)", "x" * 101, "#1 = 1" + " " * 95])),
+                max_size=12), st.integers(1, 5000))
+def test_the_compiled_lines_reader_reads_each_line_as_the_statement_reader(chunk: list[str], first: int) -> None:
+    """``statements`` is ``statement`` of each line short enough for every input limit and without '(',
+    and gives up on the others (``parse_line`` asks the compiled reader about no other line)."""
+    from edingcnc_lang.syntax.input_limits import SHORTEST_PROBLEM
+
+    found = lexer.statements(chunk, "f", first, SHORTEST_PROBLEM, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+    assert len(found) == len(chunk)
+    for number, (line, got) in enumerate(zip(chunk, found), first):
+        if len(line) > SHORTEST_PROBLEM or "(" in line:
+            assert got is fastparse.GIVE_UP, line
+        else:
+            want = lexer.statement(line, "f", number, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
+            assert got is want if want in (None, fastparse.GIVE_UP) else repr(got) == repr(want), line
+
+
+def test_new_makes_the_node_the_class_makes() -> None:
+    """``_lexer.new`` (the reader's If, While and Sub nodes at end lines) gives what the dataclass's
+    own ``__init__`` gives, and refuses a wrong number of values."""
+    span, end = nodes.Span("f", 1, 1, 1, 9), nodes.Span("f", 3, 1, 3, 6)
+    cond = nodes.Compare("<", nodes.Param(nodes.Number(1.0)), nodes.Number(2.0))
+    body = (nodes.GoSub("a", span),)
+    for cls, values in ((nodes.If, (cond, body, (), True, 1, span, end)), (nodes.While, (cond, body, 0, span, end)),
+                        (nodes.Sub, ("name", body, span, end))):
+        made = lexer.new(cls, values)
+        want = cls(*values)  # type: ignore[operator]
+        assert type(made) is cls and made == want and repr(made) == repr(want)
+        assert [getattr(made, f) for f in cls.__match_args__] == list(values)  # type: ignore[attr-defined]
+        assert fastparse._construct(cls, values) == want
+    with pytest.raises(TypeError):
+        lexer.new(nodes.Sub, ("name", body, span))
