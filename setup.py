@@ -4,13 +4,20 @@ edingcnc_lang/_lexer.c); everything else is in pyproject.toml.
 The extensions are ``optional``: without a C compiler the install goes on and the pure-Python core
 runs (``ecnc --version`` says which).  It uses the stable ABI, so one wheel serves Python 3.10+.
 """
+from glob import glob
+
 from setuptools import Extension, setup
 
+# Each extension is one translation unit whose parts (a part per job) it includes from csrc/: a change
+# to a part rebuilds it.
+PARTS = {name: sorted(glob(f"edingcnc_lang/csrc/{name}_*.c")) for name in ("speedups", "lexer")}
+
 setup(
-    ext_modules=[Extension("edingcnc_lang._speedups", ["edingcnc_lang/_speedups.c"], optional=True,
+    ext_modules=[Extension("edingcnc_lang._speedups", ["edingcnc_lang/_speedups.c"], depends=PARTS["speedups"],
+                           optional=True,
                            py_limited_api=True, define_macros=[("Py_LIMITED_API", "0x030A0000")],
                            extra_compile_args=["-O2", "-ffp-contract=off"]),
-                 Extension("edingcnc_lang._lexer", ["edingcnc_lang/_lexer.c"], optional=True,
+                 Extension("edingcnc_lang._lexer", ["edingcnc_lang/_lexer.c"], depends=PARTS["lexer"], optional=True,
                            py_limited_api=True, define_macros=[("Py_LIMITED_API", "0x030A0000")],
                            extra_compile_args=["-O2", "-ffp-contract=off"])],
     options={"bdist_wheel": {"py_limited_api": "cp310"}},
