@@ -175,13 +175,15 @@ class MotionStage:
         if batch.arcs is not None:  # an arc may bulge beyond its ends
             start = batch.start
             for index, arc in enumerate(batch.arcs):
-                if arc is not None and len(reach_points(start, batch.ends[index], arc, lower, upper)) > 1:
+                if arc is not None and any(not lower[axis] <= value <= upper[axis]
+                                           for point in reach_points(start, batch.ends[index], arc, lower, upper)[1:]
+                                           for axis, value in enumerate(point)):
                     self._first_limit_violation(batch)
                 start = batch.ends[index]
         self._write_batch(batch)
 
     def _first_limit_violation(self, batch: Batch) -> None:
-        """Write the moves before the first one out of limits, then raise its error (if there is one)."""
+        """Write the moves before the first one out of limits, then raise its error."""
         for count, move in enumerate(batch.moves()):
             try:
                 self._check_exact(move)
