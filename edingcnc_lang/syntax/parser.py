@@ -35,7 +35,7 @@ UNITS = frozenset({"mm", "inch"})
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 CHUNK_LINES = 8192
-_NON_PLAIN = re.compile(rf"^(?!{PLAIN_LINE}$).*$", re.MULTILINE)
+_PLAIN_LINES = re.compile(rf"(?:{PLAIN_LINE}\n)*")  # a run of plain lines, each with its line end
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
@@ -59,20 +59,24 @@ def _chunks(blocks: Iterable[list[str]]) -> Iterator[tuple[int, list[str]]]:
 
 
 def non_plain_lines(chunk: list[str]) -> list[int]:
-    """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``), found in one regex pass.
+    """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``): each run of
+    plain lines is taken by one regular-expression match, and the scan goes on after the line that ends it.
 
     The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
     """
     if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
         return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
-    joined = "\n".join(chunk)
-    found = []
+    joined = "\n".join(chunk) + "\n"
+    found: list[int] = []
     index, position = 0, 0
-    for match in _NON_PLAIN.finditer(joined):
-        index += joined.count("\n", position, match.start())
-        position = match.start()
+    while True:
+        stop = _PLAIN_LINES.match(joined, position).end()  # type: ignore[union-attr]  # it may take no line
+        index += joined.count("\n", position, stop)
+        if stop == len(joined):
+            return found
         found.append(index)
-    return found
+        index += 1
+        position = joined.index("\n", stop) + 1
 
 
 # --------------------------------------------------------------------------- structure

@@ -24,8 +24,8 @@ FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
 # alone: where a control or non-ASCII character follows the '(' and its blanks, or "msg" without a
 # letter, digit or '_' after it, the line is left to the parser.  _speedups.c's skip_comment is the same.
 FAST_COMMENT = r"\((?![ \t]*(?:[^\x20-\x7e\t]|[mM][sS][gG](?![A-Za-z0-9_])))[^)\n]*\)"
-_GAP = rf"[ \t]*(?:{FAST_COMMENT}[ \t]*)*"
-PLAIN_LINE = rf"{_GAP}(?:{FAST_WORD}{_GAP})+(?:;.*)?"  # a whole plain line, for patterns of several lines
+_GAP = rf"[ \t]*(?:(?:{FAST_COMMENT}[ \t]*)+|)"
+PLAIN_LINE = rf"{_GAP}(?:{FAST_WORD}{_GAP})+(?:;.*|)"  # a whole plain line, for patterns of several lines
 FAST_LINE = re.compile(rf"^{PLAIN_LINE}$")
 _FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
 _FAST_TOKENS = re.compile(rf"{FAST_COMMENT}|;|([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
