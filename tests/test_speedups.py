@@ -54,6 +54,27 @@ def test_the_targets_of_plain_lines_are_the_same(chunk: list[str], scale: float,
     assert compiled.plain_moves(*args) == plain_moves(*args)
 
 
+@pytest.mark.parametrize("chunk", [
+    ["M3", "G1 X1", "G1 X2"], ["G1 X1", "G1 X2", "M5"], ["M3", "M4", "G1 X1", "(msg hi)", "#1=2", "G0 Y1"],
+    ["G1 X1"], ["G1X1Y2 (note) ; tail", "x 1.5 Y 2", "G1 X1.2.3", "G1 X" + "1" * 301]])
+def test_the_check_scan_at_the_ends_of_a_chunk(chunk: list[str]) -> None:
+    """Other lines first, last and one after another: each run of plain lines ends where the scan resumes."""
+    assert compiled.non_plain_lines(MAX_LINE_LENGTH, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+
+
+@pytest.mark.parametrize("texts", [
+    ["N10 G1 X1 Y2 F100", "n12 g0 z5", "N14 X3 G1", "N16 X4 N18"],    # N words; another order; N twice
+    ["G1 X1 F100", "G01 Y2", "G1.0 Z-0", "F-0 X1", "G0 X-0 F0", "G1 X1"],  # G1.0, F-0, a G1 after F0
+    ["Y1 X2 Z3 C4 B5 A6 F7 G1", "X1 X2"], ["G1 X1 ; G2", "G2 X1 Y1 I1 J0"], ["G1 Z1 F-5", "G1 Z2"],
+    ["G0 X-0 F0", "F-0 G0 Y1", "Z2", "G1 X1"]])  # rapids with no feed, then a G1 without one
+def test_the_targets_of_edge_lines_are_the_same(texts: list[str]) -> None:
+    numbered = tuple(enumerate(texts, 3))
+    for scale, incremental, motion in [(1.0, False, NO_MOTION), (25.4, True, 10), (1.0, False, 0)]:
+        args = (numbered, 0, [1.5, -2.0, 0.25, -0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, -0.0, 45.0],
+                scale, incremental, motion, 250.0, len(texts))
+        assert compiled.plain_moves(*args) == plain_moves(*args)
+
+
 def test_trace_rows_are_the_same_bytes() -> None:
     values = [0.0, -0.0, 1e-4, 9.99e-5, 0.1 + 0.2, 1 / 3, 40.309, -1000.001, 999999999.999999, 1e9, 2.5e-7,
               123456.789012, 1e22, 5e-324, math.inf, -math.inf, math.nan, 25.4 * 12.345, 7.0, 1]
