@@ -22,6 +22,7 @@ from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
 from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
+from edingcnc_lang.syntax.plain_words import FAST_NUMBER
 from edingcnc_lang.syntax.blocks import Close, Open
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
@@ -36,6 +37,9 @@ _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 CHUNK_LINES = 8192
 _PLAIN_LINES = re.compile(rf"(?:{PLAIN_LINE}\n)*")  # a run of plain lines, each with its line end
+# Most plain lines are words with at most one blank after each (CAM output): this shorter pattern
+# takes a run of those about a third faster, and _PLAIN_LINES goes on from where it stops.
+_SIMPLE_LINES = re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n)*")
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
@@ -60,7 +64,7 @@ def _chunks(blocks: Iterable[list[str]]) -> Iterator[tuple[int, list[str]]]:
 
 def non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``): each run of
-    plain lines is taken by one regular-expression match, and the scan goes on after the line that ends it.
+    plain lines is taken by regular-expression matches, and the scan goes on after the line that ends it.
 
     The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
     """
@@ -70,7 +74,8 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     found: list[int] = []
     index, position = 0, 0
     while True:
-        stop = _PLAIN_LINES.match(joined, position).end()  # type: ignore[union-attr]  # it may take no line
+        simple = _SIMPLE_LINES.match(joined, position).end()  # type: ignore[union-attr]  # (it may take no line)
+        stop = _PLAIN_LINES.match(joined, simple).end()  # type: ignore[union-attr]
         index += joined.count("\n", position, stop)
         if stop == len(joined):
             return found
