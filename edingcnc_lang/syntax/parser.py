@@ -36,10 +36,12 @@ UNITS = frozenset({"mm", "inch"})
 _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 CHUNK_LINES = 8192
-_PLAIN_LINES = re.compile(rf"(?:{PLAIN_LINE}\n)*")  # a run of plain lines, each with its line end
-# Most plain lines are words with at most one blank after each (CAM output): this shorter pattern
-# takes a run of those about a third faster, and _PLAIN_LINES goes on from where it stops.
-_SIMPLE_LINES = re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n)*")
+# Runs of plain lines, each with its line end, at most RUN_LENGTH at a time (the regular-expression
+# engine keeps a little memory for each line of a run it matches).  Most plain lines are words with
+# at most one blank after each (CAM output): _SIMPLE_LINES takes a run of those about a third
+# faster, and _PLAIN_LINES goes on from where it stops.
+_PLAIN_LINES = re.compile(rf"(?:{PLAIN_LINE}\n){{0,{RUN_LENGTH}}}")
+_SIMPLE_LINES = re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n){{0,{RUN_LENGTH}}}")
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
@@ -64,7 +66,7 @@ def _chunks(blocks: Iterable[list[str]]) -> Iterator[tuple[int, list[str]]]:
 
 def non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``): each run of
-    plain lines is taken by regular-expression matches, and the scan goes on after the line that ends it.
+    plain lines is taken by regular-expression matches, a line they cannot take is an other line.
 
     The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
     """
@@ -73,15 +75,16 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     joined = "\n".join(chunk) + "\n"
     found: list[int] = []
     index, position = 0, 0
-    while True:
-        simple = _SIMPLE_LINES.match(joined, position).end()  # type: ignore[union-attr]  # (it may take no line)
+    while position < len(joined):
+        simple = _SIMPLE_LINES.match(joined, position).end()  # type: ignore[union-attr]  # (they may take no line)
         stop = _PLAIN_LINES.match(joined, simple).end()  # type: ignore[union-attr]
         index += joined.count("\n", position, stop)
-        if stop == len(joined):
-            return found
-        found.append(index)
-        index += 1
-        position = joined.index("\n", stop) + 1
+        if stop == position:  # neither takes this line: it is not plain
+            found.append(index)
+            index += 1
+            stop = joined.index("\n", stop) + 1
+        position = stop
+    return found
 
 
 # --------------------------------------------------------------------------- structure
