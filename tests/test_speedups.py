@@ -1,7 +1,8 @@
 """The compiled core does exactly what the Python reference does (skipped where it is not built).
 
 The whole suite runs on whichever core is active; these tests put both side by side on the
-same inputs: the check pass's scan, the bulk path's targets and the trace rows, byte for byte.
+same inputs: the check pass's scan, the bulk path's targets and arcs, an arc's frame, a batch's bounds and
+the trace rows, byte for byte.
 ``ECNC_PURE_PYTHON=1`` must select the Python core in a fresh process.
 """
 from __future__ import annotations
@@ -11,13 +12,12 @@ import os
 import random
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from dataclasses import replace
 
 from edingcnc_lang import RunOptions, run_file
 from edingcnc_lang.kinematics.trajectory import arc_frame
@@ -117,6 +117,27 @@ def test_the_frame_of_an_arc_whose_ends_are_its_centre_is_the_same() -> None:
         for turns in (1, -1):
             expected = tuple(arc_frame(start, end, (0.0, -0.0, 0.0), 2, turns, 1e-12))
             assert repr(compiled.arc_frame(start, end, (0.0, -0.0, 0.0), 2, turns, 1e-12)) == repr(expected)
+
+
+@pytest.mark.parametrize("chunk", [
+    ["M3", "G1 X1", "G1 X2"], ["G1 X1", "G1 X2", "M5"], ["M3", "M4", "G1 X1", "(msg hi)", "#1=2", "G0 Y1"],
+    ["G1 X1"], ["G1X1Y2 (note) ; tail", "x 1.5 Y 2", "G1 X1.2.3", "G1 X" + "1" * 301]])
+def test_the_check_scan_at_the_ends_of_a_chunk(chunk: list[str]) -> None:
+    """Other lines first, last and one after another: each run of plain lines ends where the scan resumes."""
+    assert compiled.non_plain_lines(MAX_LINE_LENGTH, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+
+
+@pytest.mark.parametrize("texts", [
+    ["N10 G1 X1 Y2 F100", "n12 g0 z5", "N14 X3 G1", "N16 X4 N18"],    # N words; another order; N twice
+    ["G1 X1 F100", "G01 Y2", "G1.0 Z-0", "F-0 X1", "G0 X-0 F0", "G1 X1"],  # G1.0, F-0, a G1 after F0
+    ["Y1 X2 Z3 C4 B5 A6 F7 G1", "X1 X2"], ["G1 X1 ; G2", "G2 X1 Y1 I1 J0"], ["G1 Z1 F-5", "G1 Z2"],
+    ["G0 X-0 F0", "F-0 G0 Y1", "Z2", "G1 X1"]])  # rapids with no feed, then a G1 without one
+def test_the_targets_of_edge_lines_are_the_same(texts: list[str]) -> None:
+    numbered = tuple(enumerate(texts, 3))
+    for scale, incremental, motion in [(1.0, False, NO_MOTION), (25.4, True, 10), (1.0, False, 0)]:
+        args = (numbered, 0, [1.5, -2.0, 0.25, -0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, -0.0, 45.0],
+                scale, incremental, motion, 250.0, len(texts))
+        assert compiled.plain_moves(*args) == plain_moves(*args)
 
 
 def test_trace_rows_are_the_same_bytes() -> None:

@@ -40,19 +40,20 @@ from edingcnc_lang.machine.state import (
 )
 
 NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
-_AXIS_OF = {letter: axis for axis, letter in enumerate("XYZABC")}
-_NO_AXES = (None,) * 6
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
 _COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
 # What an arc line gives the bulk path: the motion and feed in force after it, its end and its arc.
 ArcLine = tuple[int, float, Pose, Arc]
-# The usual order of a CAM line's words, [G] [X] [Y] [Z] [A] [B] [C] [F], matched at once; the words
-# are line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.
+# The usual order of a CAM line's words, [N] [G] [X] [Y] [Z] [A] [B] [C] [F]; the words are
+# line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.  Each
+# optional word is "(?:...|)", which Python's engine runs faster than "(?:...)?".
 _VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
-USUAL_ORDER = re.compile(r"[ \t]*" + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE})?" for a in "GXYZABCF")
-                         + r"(?:;.*)?$")
+_USUAL = (rf"[ \t]*(?:[Nn][ \t]*[+-]?{FAST_NUMBER}[ \t]*|)"
+          + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE}|)" for a in "GXYZABCF") + r"(?:;.*|)")
+USUAL_ORDER = re.compile(_USUAL + "$")
+_WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
 
 # What plain_moves returns: the index of the first line it left, the steps it took (lines it
 # consumed), the motion and feed in force after them, and the moves as columns: kinds, line
@@ -76,67 +77,26 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
     in_force: list[float] = []
     position = tuple(pos)
     done = 0
-    index = first
-    count = len(lines)
-    while index < count and done < room:
-        lineno, text = lines[index]
-        seen = ""
-        line_motion = motion
-        target = list(position)
-        base = position if incremental else offset
-        moved = False
-        simple = True
-        new_feed = feed
+    for lineno, text in lines[first:first + max(room, 0)]:
         usual = USUAL_ORDER.match(text)
-        if usual is not None:
-            g, x, y, z, a, b, c, f = usual.groups()
-            if g is not None:
-                value = float(g)
-                if value != 0.0 and value != 1.0:
-                    break
-                line_motion = G_0 if value == 0.0 else G_1
-            if f is not None:
-                value = float(f)
-                if value < 0:
-                    break
-                new_feed = value * scale
-            if x is not None:
-                target[0] = base[0] + float(x) * scale
-            if y is not None:
-                target[1] = base[1] + float(y) * scale
-            if z is not None:
-                target[2] = base[2] + float(z) * scale
-            if a is not None:
-                target[3] = base[3] + float(a)
-            if b is not None:
-                target[4] = base[4] + float(b)
-            if c is not None:
-                target[5] = base[5] + float(c)
-            moved = (x, y, z, a, b, c) != _NO_AXES
-            words: list[tuple[str, str]] = []
-        else:
-            words = plain_words(text)
-        for letter, number in words:
-            letter = letter.upper()
-            if letter in seen:
-                simple = False
-                break
-            seen += letter
-            value = float(number)
-            word_axis = _AXIS_OF.get(letter)
-            if word_axis is not None:
-                target[word_axis] = base[word_axis] + (value * scale if word_axis < 3 else value)
-                moved = True
-            elif letter == "F" and value >= 0:
-                new_feed = value * scale
-            elif letter == "G" and (value == 0.0 or value == 1.0):
-                line_motion = G_0 if value == 0.0 else G_1
-            elif letter != "N":
-                simple = False
-                break
-        if not simple or line_motion == NO_MOTION:
+        row = usual.groups() if usual is not None else _words_row(text)
+        if row is None:
             break
-        if moved:
+        g, x, y, z, a, b, c, f = row  # the number texts, empty or None where the line has no such word
+        line_motion, new_feed = motion, feed
+        if g:
+            value = float(g)
+            if value != 0.0 and value != 1.0:
+                break
+            line_motion = G_0 if value == 0.0 else G_1
+        if f:
+            value = float(f)
+            if value < 0:
+                break
+            new_feed = value * scale
+        if line_motion == NO_MOTION:
+            break
+        if x or y or z or a or b or c:
             if line_motion == G_1:
                 if new_feed <= 0:
                     break
@@ -145,15 +105,34 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
             else:
                 kinds.append("rapid")
                 feeds.append(0.0)
+            base = position if incremental else offset
+            position = (base[0] + float(x) * scale if x else position[0],
+                        base[1] + float(y) * scale if y else position[1],
+                        base[2] + float(z) * scale if z else position[2],
+                        base[3] + float(a) if a else position[3],
+                        base[4] + float(b) if b else position[4],
+                        base[5] + float(c) if c else position[5])
             numbers.append(lineno)
-            position = tuple(target)
             ends.append(position)
             in_force.append(new_feed)
-        feed = new_feed
-        motion = line_motion
+        motion, feed = line_motion, new_feed
         done += 1
-        index += 1
-    return index, done, motion, feed, kinds, numbers, ends, feeds, in_force
+    return first + done, done, motion, feed, kinds, numbers, ends, feeds, in_force
+
+
+def _words_row(text: str) -> list[str] | None:
+    """The G X Y Z A B C F number texts of a line whose words are in another order ('' where it
+    has no such word); None when it has another word (but N) or one twice."""
+    row = [""] * 8
+    seen = ""
+    for letter, number in plain_words(text):
+        letter = letter.upper()
+        if letter in seen or (letter not in _WORD_COLUMN and letter != "N"):
+            return None
+        seen += letter
+        if letter != "N":
+            row[_WORD_COLUMN[letter]] = number
+    return row
 
 
 class BulkPath(MachineState):

@@ -14,17 +14,18 @@ from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
 
 # A number the fast paths take: ASCII digits only (a regex \d would also take Arabic-Indic or
 # fullwidth digits), at most 300 before the point, so always a finite double, and at most the
-# limit after it (a longer one is left to the parser, which reports it).
+# limit after it (a longer one is left to the parser, which reports it).  An optional part is
+# written "(?:...|)", not "(?:...)?": the same pattern, which Python's engine runs a third faster.
 INTEGER_DIGITS = 300
-FAST_NUMBER = rf"(?:[0-9]{{1,{INTEGER_DIGITS}}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}})?|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
+FAST_NUMBER = rf"(?:[0-9]{{1,{INTEGER_DIGITS}}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}}|)|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
 FAST_WORD = rf"[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"
 # A ( ) comment among the words, which the grammar drops (PAREN_COMMENT), CAM output has them on many
 # lines.  Not an operator message ("(msg ...)", MSG_COMMENT, a statement of its own), decided on ASCII
 # alone: where a control or non-ASCII character follows the '(' and its blanks, or "msg" without a
 # letter, digit or '_' after it, the line is left to the parser.  _speedups.c's skip_comment is the same.
 FAST_COMMENT = r"\((?![ \t]*(?:[^\x20-\x7e\t]|[mM][sS][gG](?![A-Za-z0-9_])))[^)\n]*\)"
-_GAP = rf"[ \t]*(?:{FAST_COMMENT}[ \t]*)*"
-PLAIN_LINE = rf"{_GAP}(?:{FAST_WORD}{_GAP})+(?:;.*)?"  # a whole plain line, for patterns of several lines
+_GAP = rf"[ \t]*(?:(?:{FAST_COMMENT}[ \t]*)+|)"
+PLAIN_LINE = rf"{_GAP}(?:{FAST_WORD}{_GAP})+(?:;.*|)"  # a whole plain line, for patterns of several lines
 FAST_LINE = re.compile(rf"^{PLAIN_LINE}$")
 _FAST_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
 _FAST_TOKENS = re.compile(rf"{FAST_COMMENT}|;|([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
