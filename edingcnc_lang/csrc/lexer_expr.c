@@ -247,18 +247,12 @@ static PyObject *read_block(const char *s, Py_ssize_t size, PyObject *path, PyOb
     Token stack[STACK_TOKENS], *found = stack;
     Parser p;
     int block_delete;
-    p.s = s;
-    p.path = path;
-    p.line = line;
     if (size + 1 > STACK_TOKENS && (found = PyMem_New(Token, size + 1)) == NULL)
         return PyErr_NoMemory();
-    count = scan(p.s, size, 0, 0, integer_digits, fraction_digits, found);
+    count = scan(s, size, 0, 0, integer_digits, fraction_digits, found);
     if (count < 2)  /* nothing to read, or no token covers a character */
         goto done;
-    p.tokens = found;
-    p.count = count;
-    p.i = 0;
-    p.gave_up = 0;
+    parser_start(&p, s, path, line, found, count);
     words = PyList_New(0);
     assigns = PyList_New(0);
     if (words == NULL || assigns == NULL)
@@ -421,13 +415,7 @@ static PyObject *read_condition(const char *s, Py_ssize_t size, Py_ssize_t at_by
     count = scan(s, size, at_byte, pos, integer_digits, fraction_digits, found);
     if (count < 1)
         goto fail;
-    p.s = s;
-    p.path = path;
-    p.line = line;
-    p.tokens = found;
-    p.count = count;
-    p.i = 0;
-    p.gave_up = 0;
+    parser_start(&p, s, path, line, found, count);
     if (!expect(&p, OP_BRACKET))
         goto fail;
     cond = expr(&p, 1, &start, end);

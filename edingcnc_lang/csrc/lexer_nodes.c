@@ -41,6 +41,18 @@ typedef struct {
     int gave_up;
 } Parser;
 
+/* A parser at the first of the ``count`` tokens ``tokens`` of the line ``s`` (file ``path``, line ``line``). */
+static void parser_start(Parser *p, const char *s, PyObject *path, PyObject *line, Token *tokens, Py_ssize_t count)
+{
+    p->s = s;
+    p->path = path;
+    p->line = line;
+    p->tokens = tokens;
+    p->count = count;
+    p->i = 0;
+    p->gave_up = 0;
+}
+
 /* Which operator or function a letters token is, case-insensitively: its index in ``table``, or -1. */
 static int lookup(const char *s, Py_ssize_t length, const char *const *table, size_t size)
 {

@@ -40,13 +40,7 @@ static PyObject *read_items(const char *s, Py_ssize_t size, Py_ssize_t pos, PyOb
     count = scan(s, size, pos, pos, integer_digits, fraction_digits, found);
     if (count < 1 || (items = PyList_New(0)) == NULL)
         goto done;
-    p.s = s;
-    p.path = path;
-    p.line = line;
-    p.tokens = found;
-    p.count = count;
-    p.i = 0;
-    p.gave_up = 0;
+    parser_start(&p, s, path, line, found, count);
     for (;;) {
         Token *token = at(&p, p.i);
         if (token->kind == T_END)

@@ -110,61 +110,6 @@ static double py_mod(double vx, double wx)  /* float's % (float_rem) */
     return mod;
 }
 
-/* The words of a plain line: value[letter] and seen[letter]; 0 if a letter comes twice or the line
- * is not made of words (the caller then leaves it to Python). */
-static int scan_words(const char *s, Py_ssize_t len, double value[26], int seen[26])
-{
-    char buffer[NUMBER_BUFFER];
-    Py_ssize_t i = 0;
-    while (i < len) {
-        char c = s[i], letter;
-        Py_ssize_t start, digits;
-        char *stop;
-        double number;
-        if (c == ' ' || c == '\t') {
-            i++;
-            continue;
-        }
-        if (c == '(') {
-            i = skip_comment(s, len, i);
-            if (i < 0)
-                return 0;
-            continue;
-        }
-        if (c == ';')
-            break;
-        if (c >= 'a' && c <= 'z')
-            letter = (char)(c - 'a' + 'A');
-        else if (c >= 'A' && c <= 'Z')
-            letter = c;
-        else
-            return 0;
-        i++;
-        while (i < len && (s[i] == ' ' || s[i] == '\t'))
-            i++;
-        start = i;
-        if (i < len && (s[i] == '+' || s[i] == '-'))
-            i++;
-        digits = i;
-        while (i < len && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.'))
-            i++;
-        if (i == digits || i - start >= NUMBER_BUFFER)
-            return 0;
-        memcpy(buffer, s + start, (size_t)(i - start));
-        buffer[i - start] = '\0';
-        number = PyOS_string_to_double(buffer, &stop, NULL);
-        if (number == -1.0 && PyErr_Occurred()) {
-            PyErr_Clear();
-            return 0;
-        }
-        if (*stop != '\0' || seen[letter - 'A'])
-            return 0;
-        seen[letter - 'A'] = 1;
-        value[letter - 'A'] = number;
-    }
-    return 1;
-}
-
 #define G2 20
 #define G3 30
 #define SEEN(letter) seen[(letter) - 'A']

@@ -72,18 +72,17 @@ static Py_ssize_t skip_comment(const char *s, Py_ssize_t len, Py_ssize_t i)
     return j < len && s[j] == ')' ? j + 1 : -1;
 }
 
-/* One plain line's words: 1 if it is a straight move (or F/G/N only), 0 if anything else. */
-static int scan_line(const char *s, Py_ssize_t len, const double *base, double scale, double target[6],
-                     int *motion, double *feed, int *moved)
+/* The words of a plain line: value[letter] and seen[letter]; 0 if a letter comes twice or the line
+ * is not made of words (the caller then leaves it to Python). */
+static int scan_words(const char *s, Py_ssize_t len, double value[26], int seen[26])
 {
     char buffer[NUMBER_BUFFER];
-    int seen[26] = {0};
     Py_ssize_t i = 0;
     while (i < len) {
         char c = s[i], letter;
         Py_ssize_t start, digits;
-        double value;
         char *stop;
+        double number;
         if (c == ' ' || c == '\t') {
             i++;
             continue;
@@ -115,38 +114,49 @@ static int scan_line(const char *s, Py_ssize_t len, const double *base, double s
             return 0;
         memcpy(buffer, s + start, (size_t)(i - start));
         buffer[i - start] = '\0';
-        value = PyOS_string_to_double(buffer, &stop, NULL);
-        if (value == -1.0 && PyErr_Occurred()) {
+        number = PyOS_string_to_double(buffer, &stop, NULL);
+        if (number == -1.0 && PyErr_Occurred()) {
             PyErr_Clear();
             return 0;
         }
-        if (*stop != '\0')
-            return 0;
-        if (seen[letter - 'A'])
+        if (*stop != '\0' || seen[letter - 'A'])
             return 0;
         seen[letter - 'A'] = 1;
+        value[letter - 'A'] = number;
+    }
+    return 1;
+}
+
+/* One plain line's words: 1 if it is a straight move (or F/G/N only), 0 if anything else. */
+static int scan_line(const char *s, Py_ssize_t len, const double *base, double scale, double target[6],
+                     int *motion, double *feed, int *moved)
+{
+    double value[26];
+    int seen[26] = {0}, k;
+    if (!scan_words(s, len, value, seen))
+        return 0;
+    for (k = 0; k < 26; k++) {
+        char letter = (char)('A' + k);
+        if (!seen[k])
+            continue;
         switch (letter) {
-        case 'X': case 'Y': case 'Z': {
-            int axis = letter - 'X';
-            target[axis] = base[axis] + value * scale;
+        case 'X': case 'Y': case 'Z':
+            target[letter - 'X'] = base[letter - 'X'] + value[k] * scale;
             *moved = 1;
             break;
-        }
-        case 'A': case 'B': case 'C': {
-            int axis = 3 + letter - 'A';
-            target[axis] = base[axis] + value;
+        case 'A': case 'B': case 'C':
+            target[3 + letter - 'A'] = base[3 + letter - 'A'] + value[k];
             *moved = 1;
             break;
-        }
         case 'F':
-            if (!(value >= 0))
+            if (!(value[k] >= 0))
                 return 0;
-            *feed = value * scale;
+            *feed = value[k] * scale;
             break;
         case 'G':
-            if (value == 0.0)
+            if (value[k] == 0.0)
                 *motion = G0;
-            else if (value == 1.0)
+            else if (value[k] == 1.0)
                 *motion = G1;
             else
                 return 0;
