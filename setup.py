@@ -10,7 +10,8 @@ from setuptools import Extension, setup
 
 # Each extension is one translation unit whose parts (a part per job) it includes from csrc/: a change
 # to a part rebuilds it.
-PARTS = {name: sorted(glob(f"edingcnc_lang/csrc/{name}_*.c")) for name in ("speedups", "lexer")}
+PARTS = {name: ["edingcnc_lang/csrc/common.c", *sorted(glob(f"edingcnc_lang/csrc/{name}_*.c"))]
+         for name in ("speedups", "lexer")}
 
 setup(
     ext_modules=[Extension("edingcnc_lang._speedups", ["edingcnc_lang/_speedups.c"], depends=PARTS["speedups"],

@@ -17,6 +17,7 @@
 #include <Python.h>
 #include <math.h>
 
+#include "csrc/common.c"
 #include "csrc/lexer_tokens.c"
 #include "csrc/lexer_nodes.c"
 #include "csrc/lexer_expr.c"
@@ -66,23 +67,11 @@ PyMODINIT_FUNC PyInit__lexer(void)
     empty = PyUnicode_InternFromString("");
     if (kind_number == NULL || kind_string == NULL || kind_letters == NULL || empty == NULL)
         return NULL;
-    for (k = 0; k < N_OPERATORS; k++) {
-        operator_text[k] = PyUnicode_InternFromString(OPERATORS[k]);
-        if (operator_text[k] == NULL)
-            return NULL;
-    }
-    for (k = 0; k < N_FIELDS; k++)
-        if ((fields[k] = PyUnicode_InternFromString(FIELD_NAMES[k])) == NULL)
-            return NULL;
-    for (k = 0; k < N_FUNCTIONS; k++)
-        if ((function_names[k] = PyUnicode_InternFromString(FUNCTIONS[k])) == NULL)
-            return NULL;
-    for (k = 0; k < N_WORD_OPERATORS; k++)
-        if ((word_operator_text[k] = PyUnicode_InternFromString(WORD_OPERATORS[k])) == NULL)
-            return NULL;
-    for (k = 0; k < N_HANDLED; k++)
-        if ((handled_text[k] = PyUnicode_InternFromString(HANDLED_TEXT[k])) == NULL)
-            return NULL;
+    if (intern_all(operator_text, OPERATORS, N_OPERATORS) < 0 || intern_all(fields, FIELD_NAMES, N_FIELDS) < 0
+        || intern_all(function_names, FUNCTIONS, N_FUNCTIONS) < 0
+        || intern_all(word_operator_text, WORD_OPERATORS, N_WORD_OPERATORS) < 0
+        || intern_all(handled_text, HANDLED_TEXT, N_HANDLED) < 0)
+        return NULL;
     for (k = 0; k < 26; k++) {
         char name[2] = {(char)('A' + k), '\0'};
         if ((letters[k] = PyUnicode_InternFromString(name)) == NULL)

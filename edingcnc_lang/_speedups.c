@@ -29,6 +29,7 @@
 static PyObject *linear_kind;
 static PyObject *rapid_kind;
 
+#include "csrc/common.c"
 #include "csrc/speedups_plain.c"
 #include "csrc/speedups_trace.c"
 #include "csrc/speedups_arcs.c"

@@ -282,11 +282,8 @@ static PyObject *read_block(const char *s, Py_ssize_t size, PyObject *path, PyOb
             values[1] = value;
             values[2] = span(&p, token->col, end);
             made = node(ASSIGN, 3, assign_names, values);
-            if (made == NULL || PyList_Append(assigns, made) < 0) {
-                Py_XDECREF(made);
+            if (append_new(assigns, made) < 0)
                 goto done;
-            }
-            Py_DECREF(made);
             last_end = end;
         } else if (token->kind == T_LETTERS) {
             Py_ssize_t length = token->stop - token->start, col = token->col;
@@ -310,11 +307,8 @@ static PyObject *read_block(const char *s, Py_ssize_t size, PyObject *path, PyOb
             values[1] = value;
             values[2] = span(&p, col, end);
             made = node(WORD, 3, word_names, values);
-            if (made == NULL || PyList_Append(words, made) < 0) {
-                Py_XDECREF(made);
+            if (append_new(words, made) < 0)
                 goto done;
-            }
-            Py_DECREF(made);
             last_end = end;
         } else if (token->kind == T_END) {
             break;

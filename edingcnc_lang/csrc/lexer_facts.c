@@ -52,11 +52,8 @@ static int reads_into(PyObject *out, PyObject *expr, PyObject *literal_index)
             return -1;
         pair = PyTuple_Pack(2, expr, literal);
         Py_DECREF(literal);
-        if (pair == NULL || PyList_Append(out, pair) < 0) {
-            Py_XDECREF(pair);
+        if (append_new(out, pair) < 0)
             return -1;
-        }
-        Py_DECREF(pair);
         if ((child = get_field(expr, PARAM, F_INDEX)) == NULL)
             return -1;
         failed = reads_into(out, child, literal_index);
@@ -129,12 +126,7 @@ static int code_into(PyObject *out, PyObject *number, PyObject *word, PyObject *
         return -1;
     pair = PyTuple_Pack(2, key, word);
     Py_DECREF(key);
-    if (pair == NULL || PyList_Append(out, pair) < 0) {
-        Py_XDECREF(pair);
-        return -1;
-    }
-    Py_DECREF(pair);
-    return 0;
+    return append_new(out, pair) < 0 ? -1 : 0;
 }
 
 /* Append (param, literal index, scope) to ``uses`` for every pair of ``pairs``. */
@@ -143,12 +135,8 @@ static int uses_into(PyObject *uses, PyObject *pairs, PyObject *scope)
     Py_ssize_t i, count = PyList_Size(pairs);
     for (i = 0; i < count; i++) {
         PyObject *pair = PyList_GetItem(pairs, i);
-        PyObject *use = PyTuple_Pack(3, PyTuple_GetItem(pair, 0), PyTuple_GetItem(pair, 1), scope);
-        if (use == NULL || PyList_Append(uses, use) < 0) {
-            Py_XDECREF(use);
+        if (append_new(uses, PyTuple_Pack(3, PyTuple_GetItem(pair, 0), PyTuple_GetItem(pair, 1), scope)) < 0)
             return -1;
-        }
-        Py_DECREF(use);
     }
     return 0;
 }
@@ -199,11 +187,9 @@ static PyObject *block_facts_of(PyObject *code_key, PyObject *literal_index, PyO
         Py_XDECREF(index);
         Py_XDECREF(value);
         if (!failed) {  /* the target, its literal index and where: one of the file's assignments */
-            PyObject *literal = literal_of(target, literal_index), *use;
-            use = literal ? PyTuple_Pack(3, target, literal, scope) : NULL;
+            PyObject *literal = literal_of(target, literal_index);
+            failed = append_new(targets, literal ? PyTuple_Pack(3, target, literal, scope) : NULL) < 0;
             Py_XDECREF(literal);
-            failed = use == NULL || PyList_Append(targets, use) < 0;
-            Py_XDECREF(use);
         }
         Py_XDECREF(target);
         if (failed)

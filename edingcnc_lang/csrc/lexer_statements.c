@@ -52,11 +52,8 @@ static PyObject *read_items(const char *s, Py_ssize_t size, Py_ssize_t pos, PyOb
         } else {
             item = operand(&p, &start, end);
         }
-        if (item == NULL || PyList_Append(items, item) < 0) {
-            Py_XDECREF(item);
+        if (append_new(items, item) < 0)
             goto done;
-        }
-        Py_DECREF(item);
     }
     result = PyList_AsTuple(items);
 done:

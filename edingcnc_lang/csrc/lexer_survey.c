@@ -18,10 +18,7 @@ static const char *const SURVEY_LISTS[] = {"walked", "coded", "reads", "targets"
 
 static int append_pair(PyObject *list, PyObject *first, PyObject *second)
 {
-    PyObject *pair = PyTuple_Pack(2, first, second);
-    int failed = pair == NULL || PyList_Append(list, pair) < 0;
-    Py_XDECREF(pair);
-    return failed ? -1 : 0;
+    return append_new(list, PyTuple_Pack(2, first, second)) < 0 ? -1 : 0;
 }
 
 static int set_by_id(PyObject *dict, PyObject *stmt, PyObject *value)

@@ -39,16 +39,6 @@ static PyObject *pose_tuple(const double values[6])
     return tuple;
 }
 
-static int append_new(PyObject *list, PyObject *item)
-{
-    int failed;
-    if (item == NULL)
-        return -1;
-    failed = PyList_Append(list, item);
-    Py_DECREF(item);
-    return failed;
-}
-
 /* The end of a ( ) comment that opens at s[i] and that the grammar drops, or -1 for anything else
  * (no ')', or an operator message "(msg ...)"); plain_words.py's FAST_COMMENT, byte for byte. */
 static Py_ssize_t skip_comment(const char *s, Py_ssize_t len, Py_ssize_t i)
