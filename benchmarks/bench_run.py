@@ -174,24 +174,23 @@ def bench_comp(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)
 
 
-def bench_cam(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
-    job, ngc = tmp / "cam_200k.nc", tmp / "cam_200k.ngc"
-    write_cam_job(job, 200_000)
-    write_cam_job(ngc, 200_000, ngc=True)
+def _versus_cam(tmp: Path, repeat: int, arcs: float) -> list[tuple[str, str, str, str]]:
+    """The 200k-line CAM job with a share ``arcs`` of arcs, with --trace, beside rs274 -g."""
+    job, ngc = tmp / f"cam_{arcs:g}.nc", tmp / f"cam_{arcs:g}.ngc"
+    write_cam_job(job, 200_000, arcs=arcs)
+    write_cam_job(ngc, 200_000, ngc=True, arcs=arcs)
     rs274 = shutil.which("rs274")
-    return _versus("run a 200k-line CAM job, a tenth arcs (--trace CSV) vs rs274 -g",
+    return _versus(f"run a 200k-line CAM job, {arcs:.0%} arcs (--trace CSV) vs rs274 -g",
                    ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")],
                    [rs274, "-g", str(ngc)] if rs274 else None, repeat)
+
+
+def bench_cam(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    return _versus_cam(tmp, repeat, 0.1)
 
 
 def bench_arcs(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
-    job, ngc = tmp / "arcs_200k.nc", tmp / "arcs_200k.ngc"
-    write_cam_job(job, 200_000, arcs=0.6)
-    write_cam_job(ngc, 200_000, ngc=True, arcs=0.6)
-    rs274 = shutil.which("rs274")
-    return _versus("run a 200k-line CAM job, 60 % arcs (--trace CSV) vs rs274 -g",
-                   ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")],
-                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
+    return _versus_cam(tmp, repeat, 0.6)
 
 
 def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:

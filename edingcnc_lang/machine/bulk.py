@@ -285,8 +285,7 @@ class BulkPath(MachineState):
             feed = words["F"] * self.scale
         if feed <= 0 or ("R" in words and not words.keys().isdisjoint(CENTER_WORDS[plane])):
             return None
-        self.pos = list(start)
-        end = self._target(words)
+        end = self._target(words, start=start)
         try:
             plan = self.arc_plan(plane, (motion == G_2) != self.config.reverse_g2g3, start, end, words)
         except ArcError:

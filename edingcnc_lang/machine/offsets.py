@@ -1,7 +1,7 @@
 """Coordinate systems and offsets: G54..G59.3, G92, G10, G28/G30, G53, G68, tool length."""
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 
 from edingcnc_lang.syntax import nodes as n
@@ -150,12 +150,14 @@ class CoordinateSystems(MachineState):
             values[0] /= 2.0
         return values
 
-    def _target(self, words: Mapping[str, float], machine: bool = False) -> list[float]:
-        """Machine position the axis words of a line point at."""
+    def _target(self, words: Mapping[str, float], machine: bool = False,
+                start: Sequence[float] | None = None) -> list[float]:
+        """Machine position the axis words of a line point at, from ``start`` (default: where the tool is;
+        the bulk path passes the end of the batch so far)."""
         axes = self._axis_values(words)
         if machine:  # G53: machine coordinates, absolute
             return self.program_frame([axes.get(i, p) for i, p in enumerate(self.machine_frame(self.pos))])
-        target = list(self.pos)
+        target = list(self.pos if start is None else start)
         if self.modal["distance"] == G_91:
             for axis, number in axes.items():
                 target[axis] += number

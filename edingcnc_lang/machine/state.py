@@ -275,8 +275,7 @@ class MachineState:
 
     @property
     def scale(self) -> float:
-        """mm per program unit (asked for every word of a line: the units test is written out here)."""
-        return INCH if self.modal["units"] in (G_20, G_70) else 1.0
+        return INCH if self.inch else 1.0
 
     def where(self, span: n.Span | None = None) -> Location:
         if span is not None and span.line:
@@ -408,7 +407,8 @@ class MachineState:
         def offset(self) -> list[float]: ...                                                 # offsets.py
         def _live_param(self, index: int) -> float: ...                                      # offsets.py
         def _offsets_changed(self) -> None: ...                                              # offsets.py
-        def _target(self, words: Mapping[str, float], machine: bool = False) -> list[float]: ...  # offsets.py
+        def _target(self, words: Mapping[str, float], machine: bool = False,
+                    start: Sequence[float] | None = None) -> list[float]: ...                 # offsets.py
         def machine_kept(self) -> AbstractContextManager[None]: ...                          # offsets.py
         def work_position(self, machine: list[float] | None = None) -> list[float]: ...      # offsets.py
         def to_machine(self, work: list[float]) -> list[float]: ...                          # offsets.py

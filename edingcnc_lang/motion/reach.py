@@ -34,6 +34,16 @@ def reach_points(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float]
     return [end, *arc_extremes_of(arc_geometry(start, end, arc))]
 
 
+def beyond(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float],
+           upper: Sequence[float]) -> tuple[int, float] | None:
+    """The first axis, and its value, at which a move reaches outside ``lower``..``upper``; None inside."""
+    for point in reach_points(start, end, arc, lower, upper):
+        for axis, value in enumerate(point):
+            if not lower[axis] <= value <= upper[axis]:
+                return axis, value
+    return None
+
+
 def arc_extremes_of(geometry: Geometry, low: Sequence[float] | None = None,
                     high: Sequence[float] | None = None) -> list[Pose]:
     """Points where an arc reaches its extremes in its plane (its ends are counted already); none when

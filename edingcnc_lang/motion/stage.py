@@ -36,7 +36,7 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
-from edingcnc_lang.motion.reach import reach_points
+from edingcnc_lang.motion.reach import beyond
 
 _T = TypeVar("_T")
 
@@ -175,9 +175,7 @@ class MotionStage:
         if batch.arcs is not None:  # an arc may bulge beyond its ends
             start = batch.start
             for index, arc in enumerate(batch.arcs):
-                if arc is not None and any(not lower[axis] <= value <= upper[axis]
-                                           for point in reach_points(start, batch.ends[index], arc, lower, upper)[1:]
-                                           for axis, value in enumerate(point)):
+                if arc is not None and beyond(start, batch.ends[index], arc, lower, upper) is not None:
                     self._first_limit_violation(batch)
                 start = batch.ends[index]
         self._write_batch(batch)
@@ -457,11 +455,9 @@ class MotionStage:
 
     def _check_exact(self, move: Move) -> None:
         """Joints = position: the end point and an arc's extremes bound the whole move."""
-        lower, upper = self._lower, self._upper
-        for point in reach_points(move.start, move.end, move.arc, lower, upper):
-            for axis, value in enumerate(point):
-                if not lower[axis] <= value <= upper[axis]:
-                    raise self._limit_error(move, axis, value)
+        outside = beyond(move.start, move.end, move.arc, self._lower, self._upper)
+        if outside is not None:
+            raise self._limit_error(move, *outside)
 
     def _check_samples(self, move: Move, samples: Samples, start_time: float) -> None:
         """Kinematics on: Cartesian limits, then joint positions, velocities and accelerations."""
