@@ -62,11 +62,13 @@ ecnc = click.version_option(__version__, "--version", prog_name="ecnc",
                             message=f"%(prog)s, version %(version)s ({CORE} core)")(ecnc)
 
 
-def run_command_line(argv: list[str]) -> int:
+def run_command_line(argv: list[str], until_exit: list[object] | None = None) -> int:
     """Run ``ecnc ARGV`` and return its exit code; every failure is reported here, never raised.
 
     Errors go to stderr as ``PATH:LINE:COL: error: MESSAGE``; with ``--json`` stdout still gets one
     JSON document: the state so far for a run that started, else ``{"error": {...}}``.
+    ``until_exit`` is given by ``entry()``, which ends the process without freeing anything: a
+    command may leave what it built there instead of freeing it (``base.until_exit``).
     """
     if os.environ.get(COMPLETE_VAR):
         from click.shell_completion import shell_complete
@@ -78,7 +80,7 @@ def run_command_line(argv: list[str]) -> int:
     warnings.filterwarnings("ignore", category=RuntimeWarning, module=r"edingcnc_lang\.|numpy")
     as_json = "--json" in (argv[:argv.index("--")] if "--" in argv else argv)
     try:
-        with ecnc.make_context("ecnc", argv) as ctx:
+        with ecnc.make_context("ecnc", argv, obj=until_exit) as ctx:
             code = ecnc.invoke(ctx)
         sys.stdout.flush()  # so that a closed pipe or a full disk shows up here
         return code if isinstance(code, int) else EXIT_OK
@@ -131,7 +133,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def entry() -> NoReturn:
-    """The ``ecnc`` program: ``main()``, then the end of the process at once.
+    """The ``ecnc`` program: ``main()``, then the end of the process at once, nothing freed.
 
     By then every file the command wrote is closed, and stdout and stderr are flushed here, so
     the interpreter's own teardown (clearing every module, a last full garbage collection) can be
@@ -139,8 +141,9 @@ def entry() -> NoReturn:
     command line calls ``main()``, which returns.
     """
     _terminate_cleanly()
+    until_exit: list[object] = []
     try:
-        code = main()
+        code = run_command_line(sys.argv[1:], until_exit)
     except SystemExit as stop:  # SIGTERM: the temporary copy of a piped job is removed by now
         code = stop.code if isinstance(stop.code, int) else EXIT_TERMINATED
     flush_quietly()

@@ -25,6 +25,17 @@ NEGATIVE_NUMBER = re.compile(r"-\.?\d|-inf|-nan", re.IGNORECASE)
 
 CONTEXT_SETTINGS: dict[str, Any] = {"help_option_names": ["-h", "--help"]}
 
+def until_exit() -> list[object] | None:
+    """Where a command may leave what it built when ``entry()`` ends the process (``os._exit``, nothing
+    freed); None when it runs through ``main()`` (embedded, or click's test runner) and frees as usual.
+
+    Freeing a whole syntax tree object by object is work for nothing when the process is about to
+    end: about 60 ms of ``ecnc lint`` on 30,000 lines.
+    """
+    ctx = click.get_current_context(silent=True)
+    kept = ctx.find_root().obj if ctx is not None else None
+    return kept if isinstance(kept, list) else None
+
 
 class ArgvParser(OptionParser):  # type: ignore[misc]
     """click's parser, taking a negative number where an argument may stand for that argument."""

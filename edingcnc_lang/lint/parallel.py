@@ -15,21 +15,24 @@ from dataclasses import replace
 
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.gcpause import whole_trees
-from edingcnc_lang.lint.driver import CONFIG_SUFFIX, LintOptions, expand, lint_paths
+from edingcnc_lang.lint.driver import CONFIG_SUFFIX, LintOptions, Reader, expand, lint_paths
+from edingcnc_lang.lint.model import stream_source
 from edingcnc_lang.lint.targets import resolve
 
 GROUPS_PER_JOB = 4  # more groups than workers, so a slow group does not leave the others idle
 
 
 def lint_paths_parallel(paths: Iterable[str | os.PathLike[str]], options: LintOptions = LintOptions(),
-                        jobs: int = 1) -> list[Diagnostic]:
-    """``lint_paths`` on ``jobs`` processes; the same findings for files that do not share facts."""
+                        jobs: int = 1, reader: Reader = stream_source) -> list[Diagnostic]:
+    """``lint_paths`` on ``jobs`` processes; the same findings for files that do not share facts.
+
+    ``reader`` parses the files when they are checked in this process (see ``lint_paths``)."""
     given = list(paths)
     files = expand(given)
     configs = [str(p) for p in files if p.suffix.lower() == CONFIG_SUFFIX]
     sources = sorted(str(p) for p in files if p.suffix.lower() != CONFIG_SUFFIX)
     if jobs <= 1 or len(sources) < 2 or not all(os.access(p, os.R_OK) for p in sources):
-        return lint_paths(given, options)  # (an unreadable file is reported from here, with its path)
+        return lint_paths(given, options, reader)  # (an unreadable file is reported from here, with its path)
     # imported here: multiprocessing costs a one-process lint ~40 ms of start-up
     from concurrent.futures import ProcessPoolExecutor
     from multiprocessing import get_context

@@ -62,3 +62,26 @@ def test_jobs_from_the_real_program(tmp_path: Path) -> None:
                           capture_output=True, text=True, check=False, timeout=120)
     assert done.returncode == 1 and done.stderr == ""
     assert done.stdout == invoke("lint", "--no-source", shop).stdout
+
+
+def test_the_program_keeps_its_trees_to_the_end_and_main_frees_them(tmp_path: Path, capsys) -> None:
+    """``entry()`` ends the process without freeing anything, so lint leaves its parsed files to it (and
+    out of the collector's sight); through ``main()`` (embedded) nothing is kept."""
+    import gc
+
+    from edingcnc_lang.cli import main, run_command_line
+    from edingcnc_lang.lint.model import SourceFile
+
+    shop = _shop(tmp_path)
+    kept: list[object] = []
+    frozen = gc.get_freeze_count()
+    try:
+        assert run_command_line(["lint", str(shop)], kept) == 1
+        assert sorted(Path(s.path).name for s in kept if isinstance(s, SourceFile)) == \
+            [*(f"job{i:02d}.nc" for i in range(12)), "macro.cnc"]
+        assert gc.get_freeze_count() > frozen
+    finally:
+        gc.unfreeze()
+    assert main(["lint", str(shop)]) == 1
+    assert gc.get_freeze_count() == 0
+    assert "G500" in capsys.readouterr().out
