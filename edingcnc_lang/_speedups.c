@@ -4,6 +4,7 @@
  * plain_moves:     machine/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
  * plain_arc:       machine/bulk.py's BulkPath._arc_of_words (an arc line with centre words).
  * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
+ * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  *
@@ -40,6 +41,7 @@ static PyMethodDef methods[] = {
     {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
+    {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
     {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._arc_of_words for centre-word arcs, compiled."},
     {NULL, NULL, 0, NULL},
 };

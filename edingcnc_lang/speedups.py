@@ -5,8 +5,9 @@ without it when not.  It does exactly what the Python functions do (the equivale
 both): finding the lines that are not plain word lines in the check pass
 (``syntax.parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
 (``machine.bulk.plain_moves``), formatting trace rows (``motion.sinks.trace_rows``), byte for byte,
-the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``) and the arcs with
-centre words of the bulk path (``machine.bulk.BulkPath._arc_of_words``).  ``ECNC_PURE_PYTHON=1``
+the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``), the arcs with
+centre words of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of a batch's arcs
+(``kinematics.trajectory.arc_frame_rows``).  ``ECNC_PURE_PYTHON=1``
 selects the Python core at run time; ``ecnc --version`` says which one runs.
 """
 from __future__ import annotations
@@ -85,6 +86,13 @@ def column_bounds(*args: Any) -> Any:
     global column_bounds
     column_bounds = _pick("column_bounds", ".motion.reach")
     return column_bounds(*args)
+
+
+def arc_frame_rows(*args: Any) -> Any:
+    """``kinematics.trajectory.arc_frame_rows`` on the core that runs (see there)."""
+    global arc_frame_rows
+    arc_frame_rows = _pick("arc_frame_rows", ".kinematics.trajectory")
+    return arc_frame_rows(*args)
 
 
 def compiled(name: str) -> Any:

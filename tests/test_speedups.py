@@ -20,7 +20,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import RunOptions, run_file
-from edingcnc_lang.kinematics.trajectory import arc_frame
+from edingcnc_lang.canon import Arc
+from edingcnc_lang.kinematics.trajectory import arc_frame, arc_frame_rows
 from edingcnc_lang.runner import Run
 from edingcnc_lang.machine import bulk
 from edingcnc_lang.machine.bulk import NO_MOTION, plain_moves
@@ -117,6 +118,24 @@ def test_the_frame_of_an_arc_whose_ends_are_its_centre_is_the_same() -> None:
         for turns in (1, -1):
             expected = tuple(arc_frame(start, end, (0.0, -0.0, 0.0), 2, turns, 1e-12))
             assert repr(compiled.arc_frame(start, end, (0.0, -0.0, 0.0), 2, turns, 1e-12)) == repr(expected)
+
+
+arcs = st.builds(Arc, st.tuples(coordinates, coordinates), st.sampled_from(["XY", "XZ", "YZ"]),
+                 st.sampled_from([1, -1]), st.sampled_from([0, 0, 1, 3]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.tuples(*[coordinates] * 6), st.lists(st.tuples(st.tuples(*[coordinates] * 6), st.none() | arcs), max_size=8))
+def test_the_frames_of_a_batchs_arcs_are_the_same(start: tuple[float, ...],
+                                                  moves: list[tuple[tuple[float, ...], Arc | None]]) -> None:
+    """A batch's arcs as the motion stage and the planner read them (straight moves between them, every plane,
+    full circles and more turns): each the frame the arc's own ``arc_frame`` gives, to the last bit."""
+    ends, arcs_of = [end for end, _ in moves], [arc for _, arc in moves]
+    rows = arc_frame_rows(start, ends, arcs_of)
+    assert repr(compiled.arc_frame_rows(start, ends, arcs_of)) == repr(rows)
+    assert len(rows) == 10 * sum(arc is not None for arc in arcs_of)
+    with pytest.raises(ValueError):
+        compiled.arc_frame_rows(start, [start], [Arc((0.0, 0.0), "XW", 1)])
 
 
 @pytest.mark.parametrize("chunk", [

@@ -199,12 +199,47 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
                          clockwise ? -1 : 1, full);
 }
 
-/* kinematics/trajectory.py's arc_frame, compiled (the planner asks for one per arc of a job): the same
- * doubles, from Python's own math.hypot, CPython's atan2 and float's remainder. */
+/* kinematics/trajectory.py's arc_frame, compiled: the same doubles, from Python's own math.hypot, CPython's
+ * atan2 and float's remainder.  out: r0, r1, start angle, sweep, linear. */
+static int frame_of(const double *start, const double *end, double cu, double cv, int normal, int turns,
+                    double epsilon, double *out)
+{
+    int u = (normal + 1) % 3, v = (normal + 2) % 3;
+    double r0, r1, a0, a1, sweep, direction, linear;
+    if (py_hypot(start[u] - cu, start[v] - cv, &r0) < 0 || py_hypot(end[u] - cu, end[v] - cv, &r1) < 0)
+        return -1;
+    a0 = py_atan2(start[v] - cv, start[u] - cu);
+    a1 = py_atan2(end[v] - cv, end[u] - cu);
+    /* arc_sweep */
+    direction = turns > 0 ? 1.0 : -1.0;
+    sweep = py_mod(direction * (a1 - a0), 2.0 * M_PI);
+    if (sweep <= epsilon || sweep == 0.0)
+        sweep = 2.0 * M_PI;
+    sweep = direction * (sweep + 2.0 * M_PI * (double)(abs(turns) - 1));
+    if (py_hypot(fabs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal], &linear) < 0)
+        return -1;
+    out[0] = r0;
+    out[1] = r1;
+    out[2] = a0;
+    out[3] = sweep;
+    out[4] = linear;
+    return 0;
+}
+
+static int item_double(PyObject *sequence, Py_ssize_t index, double *out)
+{
+    PyObject *item = PySequence_GetItem(sequence, index);
+    *out = item == NULL ? -1.0 : PyFloat_AsDouble(item);
+    Py_XDECREF(item);
+    return *out == -1.0 && PyErr_Occurred() ? -1 : 0;
+}
+
+/* The planner asks for the frame of every arc of a job: one at a time here (a plain tuple), or a batch's
+ * at once (arc_frame_rows). */
 static PyObject *arc_frame(PyObject *self, PyObject *args)
 {
-    PyObject *start_obj, *end_obj, *center_obj, *item;
-    double start[6], end[6], cu, cv, r0, r1, a0, a1, sweep, direction, linear;
+    PyObject *start_obj, *end_obj, *center_obj;
+    double start[6], end[6], cu, cv, out[5];
     int normal, turns, u, v;
     double epsilon;
     (void)self;
@@ -218,27 +253,82 @@ static PyObject *arc_frame(PyObject *self, PyObject *args)
         return NULL;
     u = (normal + 1) % 3;
     v = (normal + 2) % 3;
-    item = PySequence_GetItem(center_obj, u);
-    cu = item == NULL ? -1.0 : PyFloat_AsDouble(item);
-    Py_XDECREF(item);
-    if (cu == -1.0 && PyErr_Occurred())
+    if (item_double(center_obj, u, &cu) < 0 || item_double(center_obj, v, &cv) < 0)
         return NULL;
-    item = PySequence_GetItem(center_obj, v);
-    cv = item == NULL ? -1.0 : PyFloat_AsDouble(item);
-    Py_XDECREF(item);
-    if (cv == -1.0 && PyErr_Occurred())
+    if (frame_of(start, end, cu, cv, normal, turns, epsilon, out) < 0)
         return NULL;
-    if (py_hypot(start[u] - cu, start[v] - cv, &r0) < 0 || py_hypot(end[u] - cu, end[v] - cv, &r1) < 0)
+    return Py_BuildValue("ii(dd)ddddd", u, v, cu, cv, out[0], out[1], out[2], out[3], out[4]);
+}
+
+/* kinematics/trajectory.py's arc_frame_rows, compiled: the frames of a batch's arcs (canon.Arc records, None
+ * for a straight move), ARC_ROW numbers each, as arc_geometry and arc_frame make them. */
+static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
+{
+    PyObject *start_obj, *ends, *arcs, *rows;
+    double previous[6], end[6];
+    Py_ssize_t count, index;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOO", &start_obj, &ends, &arcs))
         return NULL;
-    a0 = py_atan2(start[v] - cv, start[u] - cu);
-    a1 = py_atan2(end[v] - cv, end[u] - cu);
-    /* arc_sweep */
-    direction = turns > 0 ? 1.0 : -1.0;
-    sweep = py_mod(direction * (a1 - a0), 2.0 * M_PI);
-    if (sweep <= epsilon || sweep == 0.0)
-        sweep = 2.0 * M_PI;
-    sweep = direction * (sweep + 2.0 * M_PI * (double)(abs(turns) - 1));
-    if (py_hypot(fabs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal], &linear) < 0)
+    if (read_six(start_obj, previous) < 0 || (count = PySequence_Size(arcs)) < 0)
         return NULL;
-    return Py_BuildValue("ii(dd)ddddd", u, v, cu, cv, r0, r1, a0, sweep, linear);
+    if ((rows = PyList_New(0)) == NULL)
+        return NULL;
+    for (index = 0; index < count; index++) {
+        PyObject *end_obj = PySequence_GetItem(ends, index), *arc = PySequence_GetItem(arcs, index);
+        PyObject *center = NULL, *plane = NULL, *turn = NULL, *full = NULL;
+        int failed = end_obj == NULL || arc == NULL || read_six(end_obj, end) < 0;
+        if (!failed && arc != Py_None) {
+            const char *name;
+            double c1 = 0.0, c2 = 0.0, swap, row[10];
+            long turns = 0, full_turns = 0;
+            int normal = 2, k;
+            failed = (center = PyObject_GetAttrString(arc, "center")) == NULL
+                || (plane = PyObject_GetAttrString(arc, "plane")) == NULL
+                || (turn = PyObject_GetAttrString(arc, "turn")) == NULL
+                || (full = PyObject_GetAttrString(arc, "full_turns")) == NULL
+                || item_double(center, 0, &c1) < 0 || item_double(center, 1, &c2) < 0
+                || (name = PyUnicode_AsUTF8AndSize(plane, NULL)) == NULL
+                || ((turns = PyLong_AsLong(turn)) == -1 && PyErr_Occurred())
+                || ((full_turns = PyLong_AsLong(full)) == -1 && PyErr_Occurred());
+            if (!failed) {  /* canon.PLANES' normal axis; its in-plane axes (first, second) are (u, v) */
+                if (strcmp(name, "XZ") == 0) {
+                    normal = 1;
+                    swap = c1, c1 = c2, c2 = swap;  /* the canon names the XZ centre (x, z) */
+                } else if (strcmp(name, "YZ") == 0) {
+                    normal = 0;
+                } else if (strcmp(name, "XY") != 0) {
+                    PyErr_SetString(PyExc_ValueError, "an arc's plane is XY, XZ or YZ");
+                    failed = 1;
+                }
+            }
+            if (!failed && turns == 0) {
+                PyErr_SetString(PyExc_ValueError, "an arc's turn is non-zero");
+                failed = 1;
+            }
+            if (!failed) {
+                row[0] = (double)index;
+                row[1] = (double)((normal + 1) % 3);
+                row[2] = (double)((normal + 2) % 3);
+                row[3] = c1;
+                row[4] = c2;
+                failed = frame_of(previous, end, c1, c2, normal, (int)(turns * (full_turns > 1 ? full_turns : 1)),
+                                  full_turns ? INFINITY : -1.0, row + 5) < 0;
+            }
+            for (k = 0; !failed && k < 10; k++)
+                failed = append_new(rows, PyFloat_FromDouble(row[k])) < 0;
+        }
+        Py_XDECREF(center);
+        Py_XDECREF(plane);
+        Py_XDECREF(turn);
+        Py_XDECREF(full);
+        Py_XDECREF(end_obj);
+        Py_XDECREF(arc);
+        if (failed) {
+            Py_DECREF(rows);
+            return NULL;
+        }
+        memcpy(previous, end, sizeof previous);
+    }
+    return rows;
 }

@@ -72,6 +72,30 @@ def arc_frame(start: Sequence[float], end: Sequence[float], center: Sequence[flo
     return ArcFrame(u, v, (cu, cv), r0, r1, a0, sweep, linear)
 
 
+ARC_ROW = 10  # the numbers of an arc in arc_frame_rows: move index, u, v, centre (2), r0, r1, start angle, sweep, linear
+
+
+def arc_frame_rows(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]) -> list[float]:
+    """The frames of a batch's arcs (moves from ``start`` through ``ends``, arcs where ``arcs`` has one), as
+    one flat list of ``ARC_ROW`` numbers per arc: its index among the moves, then its ``arc_frame``.
+
+    The planner and the motion stage read a batch's arcs as columns (``motion.arc_table``): a frame per
+    arc, each the very numbers ``arc_geometry(...).frame`` gives.  The reference for
+    ``speedups.arc_frame_rows``."""
+    rows: list[float] = []
+    previous = start
+    for index, arc in enumerate(arcs):
+        end = ends[index]
+        if arc is not None:
+            path = arc_geometry(previous, end, arc)
+            assert path.center is not None
+            frame = arc_frame(path.start, path.end, path.center, path.normal, path.turns, path.full_circle_epsilon)
+            rows += (float(index), float(frame.u), float(frame.v), *frame.center, frame.r0, frame.r1,
+                     frame.start_angle, frame.sweep, frame.linear)
+        previous = end
+    return rows
+
+
 @dataclass
 class Geometry:
     """The path of a move in machine coordinates; ``center`` is None for a straight move.

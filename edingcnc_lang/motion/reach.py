@@ -8,11 +8,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import PLANES, Arc, Pose
 from edingcnc_lang.kinematics.base import as_pose
-from edingcnc_lang.kinematics.trajectory import Geometry, arc_geometry
+from edingcnc_lang.kinematics.trajectory import ArcFrame, Geometry, arc_geometry
 from edingcnc_lang.machine.geometry import arc_extremes, circle_within
+
+if TYPE_CHECKING:
+    from edingcnc_lang.motion.arc_table import ArcTable
 
 
 def reach_points(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float],
@@ -37,7 +41,22 @@ def reach_points(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float]
 def beyond(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float],
            upper: Sequence[float]) -> tuple[int, float] | None:
     """The first axis, and its value, at which a move reaches outside ``lower``..``upper``; None inside."""
-    for point in reach_points(start, end, arc, lower, upper):
+    return first_outside(reach_points(start, end, arc, lower, upper), lower, upper)
+
+
+def table_beyond(arcs: ArcTable, ends: Sequence[Pose], lower: Sequence[float], upper: Sequence[float]) -> bool:
+    """Whether an arc of a batch's table (its moves ending at ``ends``) reaches outside ``lower``..``upper``,
+    as ``beyond`` finds it arc by arc: only an arc whose circle leaves them can, at its extremes."""
+    import numpy as np
+
+    moves = arcs.index
+    return any(first_outside(frame_extremes(arcs.frame(k), ends[moves[k]]), lower, upper) is not None
+               for k in np.flatnonzero(~arcs.circle_within(lower, upper)).tolist())
+
+
+def first_outside(points: Sequence[Pose], lower: Sequence[float], upper: Sequence[float]) -> tuple[int, float] | None:
+    """The first axis, and its value, at which one of ``points`` lies outside ``lower``..``upper``; None inside."""
+    for point in points:
         for axis, value in enumerate(point):
             if not lower[axis] <= value <= upper[axis]:
                 return axis, value
@@ -54,7 +73,12 @@ def arc_extremes_of(geometry: Geometry, low: Sequence[float] | None = None,
     different circles, within the radius tolerance, may reach either), over its sweep (a full circle
     once, however many turns it makes).
     """
-    frame = geometry.frame
+    return frame_extremes(geometry.frame, geometry.end, low, high)
+
+
+def frame_extremes(frame: ArcFrame, end: Pose, low: Sequence[float] | None = None,
+                   high: Sequence[float] | None = None) -> list[Pose]:
+    """``arc_extremes_of`` an arc ending at ``end`` whose frame is known (a batch's, ``motion.arc_table``)."""
     radius = max(frame.r0, frame.r1)
     if low is not None and high is not None and circle_within(frame.center, radius, (frame.u, frame.v), low, high):
         return []
@@ -62,7 +86,7 @@ def arc_extremes_of(geometry: Geometry, low: Sequence[float] | None = None,
     clockwise = frame.sweep < 0.0
     rows = []
     for p1, p2 in arc_extremes(frame.center, radius, frame.start_angle, min(sweep, 2.0 * math.pi), clockwise):
-        row = list(geometry.end)
+        row = list(end)
         row[frame.u], row[frame.v] = p1, p2
         rows.append(as_pose(row))
     return rows

@@ -36,12 +36,14 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
-from edingcnc_lang.motion.reach import beyond
+from edingcnc_lang.motion.reach import beyond, table_beyond
 
 _T = TypeVar("_T")
 
 if TYPE_CHECKING:
     import numpy as np
+
+    from edingcnc_lang.motion.arc_table import ArcTable
 
 LIMIT_SLACK = 1e-9          # mm or degrees beyond a position limit that still counts as on it
 DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity before it is an error
@@ -59,7 +61,7 @@ class PlannerStage(Protocol):
     def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None: ...
+    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -172,13 +174,18 @@ class MotionStage:
         least, most = speedups.column_bounds(batch.ends)
         if any(map(operator.lt, least, lower)) or any(map(operator.gt, most, upper)):
             self._first_limit_violation(batch)
-        if batch.arcs is not None:  # an arc may bulge beyond its ends
-            start = batch.start
-            for index, arc in enumerate(batch.arcs):
+        arcs = None
+        if batch.arcs is not None and self.planner.needs_limits:  # the planner reads the arcs as one table
+            from edingcnc_lang.motion.arc_table import ArcTable
+
+            arcs = ArcTable.of(batch.start, batch.ends, batch.arcs)
+            if table_beyond(arcs, batch.ends, lower, upper):
+                self._first_limit_violation(batch)
+        elif batch.arcs is not None:  # one by one: an untimed run never loads numpy
+            for index, (start, arc) in enumerate(zip((batch.start, *batch.ends), batch.arcs)):
                 if arc is not None and beyond(start, batch.ends[index], arc, lower, upper) is not None:
                     self._first_limit_violation(batch)
-                start = batch.ends[index]
-        self._write_batch(batch)
+        self._write_batch(batch, arcs)
 
     def _first_limit_violation(self, batch: Batch) -> None:
         """Write the moves before the first one out of limits, then raise its error."""
@@ -189,11 +196,11 @@ class MotionStage:
                 self._write_batch(batch.head(count))
                 raise
 
-    def _write_batch(self, batch: Batch) -> None:
+    def _write_batch(self, batch: Batch, arcs: ArcTable | None = None) -> None:
         if batch.lines:
             self.moves += len(batch)
             self.joints = batch.end
-            self.planner.move_batch(batch, self._straight_limits if self.planner.needs_limits else None)
+            self.planner.move_batch(batch, self._straight_limits if self.planner.needs_limits else None, arcs)
 
     @cached_property
     def _straight_limits(self) -> dict[str, AxisLimits]:

@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang import RunOptions, run_string
+from edingcnc_lang.motion.arc_table import ArcTable
 from edingcnc_lang.motion.planner.profile import profiles, plan_nodes
 from edingcnc_lang.motion.planner.samples import time_true_samples
 
@@ -23,7 +24,7 @@ def test_the_samples_of_a_window_come_one_move_at_a_time() -> None:
         calls.append(len(pos))
         return pos
 
-    stream = time_true_samples(starts, ends, {}, np.arange(3), planned, t_end, planned.duration, 0.01, joints_of)
+    stream = time_true_samples(starts, ends, ArcTable(), np.arange(3), planned, t_end, planned.duration, 0.01, joints_of)
     assert calls == []  # nothing is made before it is asked for
     first = next(stream)
     assert first is not None and len(calls) == 1 and first.pos[-1][0] == 10.0

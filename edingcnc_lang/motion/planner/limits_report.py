@@ -14,11 +14,12 @@ from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.kinematics.trajectory import Geometry
-from edingcnc_lang.motion.reach import arc_extremes_of
+from edingcnc_lang.motion.reach import frame_extremes
 
 if TYPE_CHECKING:
     import numpy as np
+
+    from edingcnc_lang.motion.arc_table import ArcTable
 
 
 class LimitsReport:
@@ -29,7 +30,7 @@ class LimitsReport:
         self.axis_low, self.axis_high = [math.inf] * 6, [-math.inf] * 6
         self.joint_low, self.joint_high = [math.inf] * 6, [-math.inf] * 6
 
-    def add(self, starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], joints: list[Any] | None) -> None:
+    def add(self, starts: np.ndarray, ends: np.ndarray, arcs: ArcTable, joints: list[Any] | None) -> None:
         """Moves from ``starts`` to ``ends`` (columns, (6, n)); ``joints[i]`` is move i's sampled joints (or
         just their ``joint_extremes``) or None (joints = position); ``joints`` None: the joints are the
         position for every move."""
@@ -40,7 +41,9 @@ class LimitsReport:
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
         # an arc whose whole circle lies within what the end points reach cannot reach further
         inside_low, inside_high = np.minimum(low, self.axis_low).tolist(), np.maximum(high, self.axis_high).tolist()
-        extremes = [point for geometry in arcs.values() for point in arc_extremes_of(geometry, inside_low, inside_high)]
+        moves = arcs.index
+        extremes = [point for k in np.flatnonzero(~arcs.circle_within(inside_low, inside_high)).tolist()
+                    for point in frame_extremes(arcs.frame(k), tuple(ends[:, moves[k]].tolist()))]
         if extremes:
             low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())

@@ -13,16 +13,18 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from edingcnc_lang.kinematics.sampling import arc_points
 from edingcnc_lang.kinematics.trajectory import Geometry
 from edingcnc_lang.motion.planner.profile import Profiles, distance_at
 
 if TYPE_CHECKING:
+    from edingcnc_lang.motion.arc_table import ArcTable
     from edingcnc_lang.motion.stage import Samples
 
 _GRID_SLACK = 1e-9  # a tick this close (in dt) to a move's end counts as on it
 
 
-def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geometry], moving: np.ndarray,
+def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: ArcTable, moving: np.ndarray,
                       planned: Profiles, t_end: np.ndarray, duration: np.ndarray, dt: float,
                       joints_of: Callable[[np.ndarray], np.ndarray]) -> Iterator[Samples | None]:
     """Samples of committed moves ``0..len(t_end)-1`` (``starts``/``ends`` as columns), in order, None for
@@ -34,6 +36,7 @@ def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geom
     from edingcnc_lang.motion.stage import Samples
 
     profile_of = {index: k for k, index in enumerate(moving.tolist())}
+    arc_of = {index: k for k, index in enumerate(arcs.index.tolist())}
     for index in range(len(t_end)):
         k = profile_of.get(index)
         if k is None:
@@ -54,6 +57,7 @@ def time_true_samples(starts: np.ndarray, ends: np.ndarray, arcs: dict[int, Geom
         dist, speed, accel = distance_at(planned, np.full(len(times), k), tau)
         length = planned.length[k]
         fraction = np.where(times >= t1, 1.0, dist / length if length > 0.0 else 1.0)  # the end point exactly
-        geometry = arcs.get(index) or Geometry(tuple(starts[:, index]), tuple(ends[:, index]))
-        pos = geometry.points_at(fraction)
+        start, end, arc = tuple(starts[:, index].tolist()), tuple(ends[:, index].tolist()), arc_of.get(index)
+        pos = Geometry(start, end).points_at(fraction) if arc is None else \
+            arc_points(start, end, arcs.frame(arc), fraction)
         yield Samples(times, pos, joints_of(pos), speed=speed, accel=accel)

@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Geometry
+from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE
+from edingcnc_lang.motion.arc_table import ArcTable
 
 MAX_CURVATURE_SHARE = 0.95  # lafArcfeedFactor may raise the turn's share, never to all of it
 
@@ -33,7 +34,7 @@ class Segments:
 
 
 def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.ndarray, alim: np.ndarray,
-             arcs: dict[int, Geometry], arc_accel_factor: float, min_arc_length: float) -> Segments:
+             arcs: ArcTable, arc_accel_factor: float, min_arc_length: float) -> Segments:
     """Arrays for a window of n moves from ``start`` to ``end`` (columns, (6, n)).
 
     ``speed`` is each move's own speed limit (the programmed feed with its override, a plug-in's or
@@ -55,16 +56,16 @@ def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.nda
         # min over the axes of limit / fraction (fraction = span / length), as length / max(span / limit)
         vmax = length / np.max(span / vlim, axis=0)
         accel = length / np.max(span / alim, axis=0)
-    tangent_out = tangent_in.copy() if arcs else tangent_in
+    tangent_out = tangent_in.copy() if len(arcs) else tangent_in
     speed = speed.copy()
-    xyz_length = linear.copy() if arcs else linear
-    if arcs:
+    xyz_length = linear.copy() if len(arcs) else linear
+    if len(arcs):
         _arcs(start, end, arcs, vlim, alim, length, xyz_length, tangent_in, tangent_out, vmax, accel, speed,
               arc_accel_factor, min_arc_length)
     return Segments(length, xyz_length, tangent_in, tangent_out, np.minimum(vmax, speed), accel)
 
 
-def _arcs(start: np.ndarray, end: np.ndarray, arcs: dict[int, Geometry], vlim: np.ndarray, alim: np.ndarray,
+def _arcs(start: np.ndarray, end: np.ndarray, arcs: ArcTable, vlim: np.ndarray, alim: np.ndarray,
           length: np.ndarray, xyz_length: np.ndarray, tangent_in: np.ndarray, tangent_out: np.ndarray,
           vmax: np.ndarray, accel: np.ndarray, speed: np.ndarray, arc_accel_factor: float,
           min_arc_length: float) -> None:
@@ -73,12 +74,8 @@ def _arcs(start: np.ndarray, end: np.ndarray, arcs: dict[int, Geometry], vlim: n
     An arc's path runs along its circle (helical: with the normal axis) and its tangents turn with
     it; each in-plane axis carries the whole arc speed somewhere on it.
     """
-    index = np.fromiter(arcs, np.intp, len(arcs))
-    frames = [geometry.frame for geometry in arcs.values()]
-    u = np.fromiter((f.u for f in frames), np.intp, len(frames))
-    v = np.fromiter((f.v for f in frames), np.intp, len(frames))
-    r0, r1, angle, sweep, linear = (np.array([getattr(f, name) for f in frames], dtype=float)
-                                    for name in ("r0", "r1", "start_angle", "sweep", "linear"))
+    index, u, v = arcs.index, arcs.column("u"), arcs.column("v")
+    r0, r1, angle, sweep, linear = (arcs.column(name) for name in ("r0", "r1", "start_angle", "sweep", "linear"))
     delta = end[:, index] - start[:, index]
     columns = np.arange(len(index))
     in_plane = np.abs(sweep) * (r0 + r1) / 2.0

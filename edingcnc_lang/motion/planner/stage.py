@@ -17,7 +17,6 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.kinematics.trajectory import Geometry, arc_geometry, geometry_of
 from edingcnc_lang.motion.planner.estimate import Estimate, Timing
 from edingcnc_lang.motion.planner.limits_report import LimitsReport
 from edingcnc_lang.motion.planner.overrides import Overrides
@@ -26,6 +25,7 @@ from edingcnc_lang.motion.planner.runs import Runs
 if TYPE_CHECKING:
     import numpy as np
 
+    from edingcnc_lang.motion.arc_table import ArcTable
     from edingcnc_lang.motion.stage import AxisLimits, Samples
 
 # Move kinds as small integers (the window keeps one per move).
@@ -89,7 +89,9 @@ class Planner:
         if not self._ends:
             self._origin = move.start
         if move.arc is not None:
-            self._arcs[len(self._ends)] = geometry_of(move)
+            from edingcnc_lang.motion.arc_table import ArcTable
+
+            self._arc_tables.append(ArcTable.of(move.start, [move.end], [move.arc]).shifted(len(self._ends)))
         limit = self._limit_id(limits)
         self._ends.append(move.end)
         self._feed.append(move.feed)
@@ -104,11 +106,12 @@ class Planner:
         self._queue.append(("move", move, joints))
         self._after_add()
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
+    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
         """Moves in bulk whose joints are their positions (the interpreter's fast path).
 
         Per move only the end and the feed are kept (a straight move is a rapid if its feed is 0),
-        and an arc's geometry; the rest is the same for the whole batch, as it is for a single ``move``.
+        and the arcs' frames (``arcs``, the motion stage's table of them, else made here); the rest is
+        the same for the whole batch, as it is for a single ``move``.
         """
         assert limits is not None  # needs_limits, as in move()
         if self._ends and batch.start != self._ends[-1]:
@@ -116,17 +119,13 @@ class Planner:
         if not self._ends:
             self._origin = batch.start
         count = len(batch)
-        if batch.arcs is None:
-            self._kind.add(STRAIGHT, count)
-        else:
-            first, ends, done = len(self._ends), batch.ends, 0
-            for index in [index for index, arc in enumerate(batch.arcs) if arc is not None]:
-                self._kind.add(STRAIGHT, index - done)
-                self._kind.add(ARC)
-                self._arcs[first + index] = arc_geometry(ends[index - 1] if index else batch.start, ends[index],
-                                                         batch.arcs[index])  # type: ignore[arg-type]
-                done = index + 1
-            self._kind.add(STRAIGHT, count - done)
+        self._kind.add(STRAIGHT, count)  # the arcs among them are marked from their table when planned
+        if batch.arcs is not None:
+            if arcs is None:
+                from edingcnc_lang.motion.arc_table import ArcTable
+
+                arcs = ArcTable.of(batch.start, batch.ends, batch.arcs)
+            self._arc_tables.append(arcs.shifted(len(self._ends)))
         self._ends.extend(batch.ends)
         self._feed.extend(batch.feeds)
         self._cap.add(math.inf, count)
@@ -186,7 +185,7 @@ class Planner:
         self._joints: list[Any] = []    # the extremes of the joints sampled along the move ((2, 6)), None where
         #                                 they are the position
         self._sampled = 0               # how many of them are not None
-        self._arcs: dict[int, Geometry] = {}
+        self._arc_tables: list[ArcTable] = []  # the frames of the arcs among them, in order
         self._queue: deque[tuple[Any, ...]] = deque()
 
     def _limit_id(self, limits: AxisLimits) -> int:
@@ -226,6 +225,7 @@ class Planner:
         from edingcnc_lang.motion.planner.junctions import corner_speeds2
         from edingcnc_lang.motion.planner.profile import plan_nodes, profiles
         from edingcnc_lang.motion.planner.samples import time_true_samples
+        from edingcnc_lang.motion.arc_table import ArcTable
         from edingcnc_lang.motion.planner.segments import segments
 
         n = len(self._ends) if horizon is None else horizon
@@ -234,8 +234,11 @@ class Planner:
         starts[:, 0], starts[:, 1:] = self._origin, ends[:, :-1]
         feed = np.fromiter(self._feed, float, n)
         kind, state = self._kind.array(np.int64)[:n], self._state.array(np.int64)[:n]
-        arcs = self._arcs if horizon is None else {i: g for i, g in self._arcs.items() if i < n}
+        every_arc = ArcTable.joined(self._arc_tables)
+        self._arc_tables = [every_arc] if len(every_arc) else []
+        arcs = every_arc.before(n)
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
+        kind[arcs.index] = ARC
         exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
         limit = np.where(kind == RAPID, rapid_limits[state], other_limits[state])
         exact = exact_mode[state] | (kind == RAPID) | (kind == PROBE) | (kind == HOME)
@@ -266,7 +269,7 @@ class Planner:
         self._start2 = float(node2[done]) if count < n else 0.0
         t_end = self.time + np.cumsum(duration[:count])
         self._account(kind[:count], duration[:count], seg.xyz_length[:count])
-        self.limits.add(starts[:, :count], ends[:, :count], {i: g for i, g in self._arcs.items() if i < count},
+        self.limits.add(starts[:, :count], ends[:, :count], arcs.before(count),
                         self._joints[:count] if self._sampled else None)
         samples = None
         if self.want_samples and self.joints_of is not None:
@@ -292,7 +295,7 @@ class Planner:
             runs.drop(count)
         if self._sampled:
             self._sampled = sum(j is not None for j in self._joints)
-        self._arcs = {i - count: g for i, g in self._arcs.items() if i >= count}
+        self._arc_tables = [left for table in self._arc_tables if len(left := table.after(count))]
 
     # ------------------------------------------------------------------ output
     def _emit(self, count: int, t_end: np.ndarray, peak: np.ndarray,

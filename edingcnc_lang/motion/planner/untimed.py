@@ -17,6 +17,7 @@ from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.motion.planner.overrides import Overrides
 
 if TYPE_CHECKING:
+    from edingcnc_lang.motion.arc_table import ArcTable
     from edingcnc_lang.motion.stage import AxisLimits, Samples
 
 
@@ -36,7 +37,7 @@ class Untimed:
         if self.on_move:
             self.on_move(move, joints)
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None) -> None:
+    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
         if not self.on_move:
             return
         for move in batch.moves():
