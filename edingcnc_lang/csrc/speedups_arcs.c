@@ -118,13 +118,13 @@ static double py_mod(double vx, double wx)  /* float's % (float_rem) */
 static PyObject *plain_arc(PyObject *self, PyObject *args)
 {
     /* plane: 0 XY, 1 XZ, 2 YZ (PLANES order: first, second in-plane axes) */
-    static const int first_axis[3] = {0, 2, 1}, second_axis[3] = {1, 0, 2};
+    static const int first_axis[3] = {0, 2, 1}, second_axis[3] = {1, 0, 2}, normal_axis[3] = {2, 1, 0};
     static const char first_word[3] = {'I', 'K', 'J'}, second_word[3] = {'J', 'I', 'K'};
     PyObject *text, *start_obj, *offset_obj, *end = NULL;
     const char *s;
     Py_ssize_t len;
     double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, rel, tiny;
-    double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, limit;
+    double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, limit, length;
     int seen[26] = {0}, incremental, motion, plane, reverse, clockwise, full, k, axes = 0;
     (void)self;
     if (!PyArg_ParseTuple(args, "UOOdpidipdddd", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
@@ -191,12 +191,17 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     if (py_hypot(s1 - e1, s2 - e2, &dist) < 0)
         return NULL;
     full = delta == 0.0 || (dist <= tolerance && delta < epsilon);
+    /* machine/state.py's path_length, the helix GetJobDistance counts: the angle turned is delta (a turn of
+       -1 makes (a1 - a0) * turn the a0 - a1 above), a full circle one more turn */
+    if (py_hypot(r1 * (delta + 2 * M_PI * (double)full), target[normal_axis[plane]] - start[normal_axis[plane]],
+                 &length) < 0)
+        return NULL;
     end = pose_tuple(target);
     if (end == NULL)
         return NULL;
     /* the centre named in the plane's name order: XZ is (x, z), its axes run (z, x) */
-    return Py_BuildValue("idN(dd)ii", motion, feed, end, plane == 1 ? c2 : c1, plane == 1 ? c1 : c2,
-                         clockwise ? -1 : 1, full);
+    return Py_BuildValue("idN(dd)iid", motion, feed, end, plane == 1 ? c2 : c1, plane == 1 ? c1 : c2,
+                         clockwise ? -1 : 1, full, length);
 }
 
 /* kinematics/trajectory.py's arc_frame, compiled: the same doubles, from Python's own math.hypot, CPython's

@@ -36,6 +36,7 @@ from edingcnc_lang.machine.state import (
     G_94,
     PLANE_OF,
     MachineState,
+    path_length,
     StatementTable,
 )
 
@@ -44,8 +45,9 @@ NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
 _COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
-# What an arc line gives the bulk path: the motion and feed in force after it, its end and its arc.
-ArcLine = tuple[int, float, Pose, Arc]
+# What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
+# length (``path_length``, what GetJobDistance counts).
+ArcLine = tuple[int, float, Pose, Arc, float]
 # The usual order of a CAM line's words, [N] [G] [X] [Y] [Z] [A] [B] [C] [F]; the words are
 # line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.  Each
 # optional word is "(?:...|)", which Python's engine runs faster than "(?:...)?".
@@ -170,7 +172,8 @@ class BulkPath(MachineState):
         """Execute lines[first:] as long as each is a plain G0/G1 move or arc; returns the first it left.
 
         ``plain_moves`` takes the straight lines; a line it stops at may be an arc (``_arc_reader``),
-        which joins the same batch, and the straight lines after it are scanned on.
+        which joins the same batch, and the straight lines after it are scanned on.  After an arc the next
+        line is tried as an arc first: a CAM job's arcs come in runs.
         """
         start = tuple(self.pos)
         budget = self.max_steps
@@ -183,29 +186,35 @@ class BulkPath(MachineState):
         feeds: list[float] = []
         in_force: list[float] = []
         arcs: list[Arc | None] | None = None
+        lengths: dict[int, float] = {}  # the arcs' lengths, by their index among the moves
         read_arc: Callable[[str, Pose, int, float], ArcLine | None] | None = None
         index = first
-        while True:
-            index, done, after, feed, *columns = speedups.plain_moves(
-                lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
-                feed, room)
-            room -= done
-            if after != NO_MOTION:
-                motion = after
-            if columns[1]:
-                for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
-                    column.extend(values)  # type: ignore[attr-defined]
-                if arcs is not None:
-                    arcs.extend([None] * len(columns[1]))
-                pos = ends[-1]
-            if index >= len(lines) or room <= 0:
-                break
+        arc_next = False
+        while index < len(lines) and room > 0:
+            if not arc_next:
+                index, done, after, feed, *columns = speedups.plain_moves(
+                    lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
+                    feed, room)
+                room -= done
+                if after != NO_MOTION:
+                    motion = after
+                if columns[1]:
+                    for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
+                        column.extend(values)  # type: ignore[attr-defined]
+                    if arcs is not None:
+                        arcs.extend([None] * len(columns[1]))
+                    pos = ends[-1]
+                if index >= len(lines) or room <= 0:
+                    break
             if read_arc is None:
                 read_arc = self._arc_reader()
             taken = read_arc(lines[index][1], pos, motion, feed)
             if taken is None:
-                break
-            motion, feed, end, arc = taken
+                if not arc_next:
+                    break
+                arc_next = False  # a straight line, most likely
+                continue
+            motion, feed, end, arc, lengths[len(numbers)] = taken
             if arcs is None:
                 arcs = [None] * len(numbers)
             kinds.append("arc")
@@ -217,6 +226,7 @@ class BulkPath(MachineState):
             pos = end
             room -= 1
             index += 1
+            arc_next = True
         self.steps += index - first
         if numbers:
             rpm, _css = self.spindle_along()
@@ -227,13 +237,13 @@ class BulkPath(MachineState):
             except EcncError as err:  # a move was refused: the state is that of the move before it
                 failed = next((k for k, number in enumerate(numbers)
                                if err.location is not None and number == err.location.line), 0)
-                self.travelled(start, ends[:failed], None if arcs is None else arcs[:failed])
+                self.travelled(start, ends[:failed], {k: length for k, length in lengths.items() if k < failed})
                 self.pos = list(ends[failed - 1] if failed else start)
                 self.feed = in_force[failed]
                 self.modal["motion"] = self._motion_of(kinds[failed], None if arcs is None else arcs[failed])
                 self.line = numbers[failed]
                 raise
-            self.travelled(start, ends, arcs)
+            self.travelled(start, ends, lengths)
         self.pos = list(pos)
         self.feed = feed
         if motion != NO_MOTION:
@@ -257,8 +267,8 @@ class BulkPath(MachineState):
                 return None
             if found is False:
                 return self._arc_of_words(text, start, motion, feed)
-            motion, feed, end, center, turn, full = found
-            return motion, feed, end, Arc(center, plane, turn, full)
+            motion, feed, end, center, turn, full, length = found
+            return motion, feed, end, Arc(center, plane, turn, full), length
         return read
 
     def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
@@ -290,7 +300,7 @@ class BulkPath(MachineState):
             plan = self.arc_plan(plane, (motion == G_2) != self.config.reverse_g2g3, start, end, words)
         except ArcError:
             return None
-        return motion, feed, tuple(end), plan.arc
+        return motion, feed, tuple(end), plan.arc, path_length(start, end, plan.arc)
 
     def _motion_of(self, kind: str, arc: Arc | None) -> int:
         """The motion mode a move of the bulk path was made in."""

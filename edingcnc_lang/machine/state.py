@@ -336,16 +336,14 @@ class MachineState:
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
-    def travelled(self, start: Pose | list[float], ends: Sequence[Pose],
-                  arcs: Sequence[Arc | None] | None = None) -> None:
-        """Count moves from ``start`` through ``ends`` (straight, or arcs where ``arcs`` has one) into
-        GetJobDistance, one by one as ``_move`` does."""
+    def travelled(self, start: Pose | list[float], ends: Sequence[Pose], arc_lengths: Mapping[int, float]) -> None:
+        """Count moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does: straight,
+        or arcs, whose ``path_length`` the bulk path found as it read them (``arc_lengths``, by index)."""
         distance = self.job_distance
         points = [start[:3], *[end[:3] for end in ends]]
         steps = list(map(math.dist, points, points[1:]))  # xyz_distance of each move
-        if arcs is not None:
-            for index in [index for index, arc in enumerate(arcs) if arc is not None]:
-                steps[index] = path_length(ends[index - 1] if index else tuple(start), ends[index], arcs[index])
+        for index, length in arc_lengths.items():
+            steps[index] = length
         for step in steps:
             distance += step
         self.job_distance = distance
