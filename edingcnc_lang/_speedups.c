@@ -66,5 +66,12 @@ PyMODINIT_FUNC PyInit__speedups(void)
         if (math_hypot == NULL)
             return NULL;
     }
+    {
+        static const char *names[4] = {"center", "plane", "turn", "full_turns"};
+        int k;
+        for (k = 0; k < 4; k++)
+            if ((arc_fields[k] = PyUnicode_InternFromString(names[k])) == NULL)
+                return NULL;
+    }
     return PyModule_Create(&module);
 }

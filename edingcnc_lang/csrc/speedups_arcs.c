@@ -110,6 +110,25 @@ static double py_mod(double vx, double wx)  /* float's % (float_rem) */
     return mod;
 }
 
+/* The names of canon.Arc's fields, in order (set in PyInit__speedups). */
+static PyObject *arc_fields[4];
+
+/* A canon.Arc record made as its own __init__ makes it: each field set past the frozen __setattr__.
+   Steals the references to the values (any may be NULL after a failure: then nothing is made). */
+static PyObject *new_arc(PyObject *cls, PyObject *center, PyObject *plane, PyObject *turn, PyObject *full)
+{
+    PyObject *values[4] = {center, plane, turn, full}, *made = NULL;
+    int k;
+    if (center != NULL && plane != NULL && turn != NULL && full != NULL)
+        made = PyType_GenericAlloc((PyTypeObject *)cls, 0);
+    for (k = 0; made != NULL && k < 4; k++)
+        if (PyObject_GenericSetAttr(made, arc_fields[k], values[k]) < 0)
+            Py_CLEAR(made);
+    for (k = 0; k < 4; k++)
+        Py_XDECREF(values[k]);
+    return made;
+}
+
 #define G2 20
 #define G3 30
 #define SEEN(letter) seen[(letter) - 'A']
@@ -120,15 +139,16 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     /* plane: 0 XY, 1 XZ, 2 YZ (PLANES order: first, second in-plane axes) */
     static const int first_axis[3] = {0, 2, 1}, second_axis[3] = {1, 0, 2}, normal_axis[3] = {2, 1, 0};
     static const char first_word[3] = {'I', 'K', 'J'}, second_word[3] = {'J', 'I', 'K'};
-    PyObject *text, *start_obj, *offset_obj, *end = NULL;
+    PyObject *text, *start_obj, *offset_obj, *arc_class, *plane_name, *end = NULL, *arc;
     const char *s;
     Py_ssize_t len;
     double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, rel, tiny;
     double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, limit, length;
     int seen[26] = {0}, incremental, motion, plane, reverse, clockwise, full, k, axes = 0;
     (void)self;
-    if (!PyArg_ParseTuple(args, "UOOdpidipdddd", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
-                          &feed, &plane, &reverse, &tolerance, &epsilon, &rel, &tiny))
+    if (!PyArg_ParseTuple(args, "UOOdpidipddddO!U", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
+                          &feed, &plane, &reverse, &tolerance, &epsilon, &rel, &tiny, &PyType_Type, &arc_class,
+                          &plane_name))
         return NULL;
     if (plane < 0 || plane > 2) {
         PyErr_SetString(PyExc_ValueError, "plane must be 0 (XY), 1 (XZ) or 2 (YZ)");
@@ -188,9 +208,12 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     a0 = py_atan2(s2 - c2, s1 - c1);
     a1 = py_atan2(e2 - c2, e1 - c1);
     delta = py_mod(clockwise ? a0 - a1 : a1 - a0, 2 * M_PI);
-    if (py_hypot(s1 - e1, s2 - e2, &dist) < 0)
-        return NULL;
-    full = delta == 0.0 || (dist <= tolerance && delta < epsilon);
+    full = delta == 0.0;
+    if (!full && delta < epsilon) {  /* the chord only matters for an arc this close to a full circle */
+        if (py_hypot(s1 - e1, s2 - e2, &dist) < 0)
+            return NULL;
+        full = dist <= tolerance;
+    }
     /* machine/state.py's path_length, the helix GetJobDistance counts: the angle turned is delta (a turn of
        -1 makes (a1 - a0) * turn the a0 - a1 above), a full circle one more turn */
     if (py_hypot(r1 * (delta + 2 * M_PI * (double)full), target[normal_axis[plane]] - start[normal_axis[plane]],
@@ -200,8 +223,14 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     if (end == NULL)
         return NULL;
     /* the centre named in the plane's name order: XZ is (x, z), its axes run (z, x) */
-    return Py_BuildValue("idN(dd)iid", motion, feed, end, plane == 1 ? c2 : c1, plane == 1 ? c1 : c2,
-                         clockwise ? -1 : 1, full, length);
+    Py_INCREF(plane_name);
+    arc = new_arc(arc_class, Py_BuildValue("(dd)", plane == 1 ? c2 : c1, plane == 1 ? c1 : c2), plane_name,
+                  PyLong_FromLong(clockwise ? -1 : 1), PyLong_FromLong(full));
+    if (arc == NULL) {
+        Py_DECREF(end);
+        return NULL;
+    }
+    return Py_BuildValue("idNNd", motion, feed, end, arc, length);
 }
 
 /* kinematics/trajectory.py's arc_frame, compiled: the same doubles, from Python's own math.hypot, CPython's

@@ -259,16 +259,11 @@ class BulkPath(MachineState):
         plane = PLANE_OF[self.modal["plane"]]
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
         fixed = (_PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
-                 self.config.full_circle_theta_epsilon, RADIUS_TOLERANCE_REL, TINY)
+                 self.config.full_circle_theta_epsilon, RADIUS_TOLERANCE_REL, TINY, Arc, plane)
 
         def read(text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
             found = _COMPILED_ARC(text, start, offset, scale, incremental, motion, feed, *fixed)
-            if found is None:
-                return None
-            if found is False:
-                return self._arc_of_words(text, start, motion, feed)
-            motion, feed, end, center, turn, full, length = found
-            return motion, feed, end, Arc(center, plane, turn, full), length
+            return self._arc_of_words(text, start, motion, feed) if found is False else found
         return read
 
     def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
