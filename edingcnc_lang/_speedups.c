@@ -2,7 +2,7 @@
  *
  * non_plain_lines: syntax/parser.py's non_plain_lines (the check pass's scan for lines that are not plain).
  * plain_moves:     machine/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
- * plain_arc:       machine/bulk.py's BulkPath._arc_of_words (an arc line with centre words).
+ * plain_arc:       machine/bulk.py's BulkPath._arc_of_words (an arc line with centre words or R).
  * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
  * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).

@@ -6,7 +6,7 @@ both): finding the lines that are not plain word lines in the check pass
 (``syntax.parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
 (``machine.bulk.plain_moves``), formatting trace rows (``motion.sinks.trace_rows``), byte for byte,
 the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``), the arcs with
-centre words of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of a batch's arcs
+centre words or R of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of a batch's arcs
 (``kinematics.trajectory.arc_frame_rows``).  ``ECNC_PURE_PYTHON=1``
 selects the Python core at run time; ``ecnc --version`` says which one runs.
 """

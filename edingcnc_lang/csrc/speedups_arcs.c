@@ -67,9 +67,9 @@ static PyObject *column_bounds(PyObject *self, PyObject *args)
 }
 
 /* ---------------------------------------------------------------- plain arcs
- * machine/bulk.py's BulkPath._arc_of_words for an arc with centre words, compiled: the words of the line,
- * its target (as plain_moves finds it), the centre, the radius check and the sweep of
- * machine/geometry.py's check_radius and sweep.  Every double is computed as Python computes it:
+ * machine/bulk.py's BulkPath._arc_of_words, compiled: the words of the line, its target (as plain_moves finds
+ * it), the centre from centre words or R, the radius check, the sweep and the length of machine/geometry.py's
+ * center_from_radius, check_radius and sweep.  Every double is computed as Python computes it:
  * math.hypot and math.dist are Python's own (called, not libm's hypot, which rounds differently),
  * atan2 is CPython's m_atan2 and % is float's remainder. */
 static PyObject *math_hypot;
@@ -129,6 +129,30 @@ static PyObject *new_arc(PyObject *cls, PyObject *center, PyObject *plane, PyObj
     return made;
 }
 
+/* machine/geometry.py's center_from_radius: the centre of the arc from (s1, s2) to (e1, e2) with signed
+   radius r (negative: more than half a circle).  1 with the centre, 0 when there is none (the Python
+   function's ArcError), -1 on an error.  cos, sin and asin are the C library's, as math's are. */
+static int centre_from_radius(double s1, double s2, double e1, double e2, double r, int clockwise, double tolerance,
+                              double tiny, double *c1, double *c2)
+{
+    double chord, abs_r = fabs(r), mid1 = (s1 + e1) / 2.0, mid2 = (s2 + e2) / 2.0, half, theta, offset;
+    if (py_hypot(e1 - s1, e2 - s2, &chord) < 0)
+        return -1;
+    if (chord < tiny)
+        return 0;
+    if (py_hypot(mid1 - e1, mid2 - e2, &half) < 0)
+        return -1;
+    if (half - abs_r > tolerance || abs_r == 0.0)
+        return 0;
+    if (half / abs_r > 1.0 - tiny)
+        half = abs_r;
+    theta = py_atan2(e2 - s2, e1 - s1) + (clockwise == (r > 0) ? -M_PI / 2 : M_PI / 2);
+    offset = abs_r * cos(asin(half / abs_r));
+    *c1 = mid1 + offset * cos(theta);
+    *c2 = mid2 + offset * sin(theta);
+    return 1;
+}
+
 #define G2 20
 #define G3 30
 #define SEEN(letter) seen[(letter) - 'A']
@@ -144,7 +168,7 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     Py_ssize_t len;
     double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, rel, tiny;
     double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, limit, length;
-    int seen[26] = {0}, incremental, motion, plane, reverse, clockwise, full, k, axes = 0;
+    int seen[26] = {0}, incremental, motion, plane, reverse, clockwise, full, k, axes = 0, centre_words;
     (void)self;
     if (!PyArg_ParseTuple(args, "UOOdpidipddddO!U", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
                           &feed, &plane, &reverse, &tolerance, &epsilon, &rel, &tiny, &PyType_Type, &arc_class,
@@ -161,8 +185,6 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
         return NULL;
     if (!scan_words(s, len, value, seen))
         Py_RETURN_FALSE;
-    if (SEEN('R'))
-        Py_RETURN_FALSE;  /* an R arc: the Python function takes it */
     if (SEEN('G')) {
         double g = VALUE('G');
         motion = g == 2.0 ? G2 : g == 3.0 ? G3 : NO_MOTION;
@@ -173,7 +195,7 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
             continue;
         if (strchr("XYZABC", letter) != NULL)
             axes = 1;
-        else if (letter != first_word[plane] && letter != second_word[plane])
+        else if (letter != 'R' && letter != first_word[plane] && letter != second_word[plane])
             Py_RETURN_NONE;
     }
     if ((motion != G2 && motion != G3) || !axes)
@@ -183,7 +205,8 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
             Py_RETURN_NONE;
         feed = VALUE('F') * scale;
     }
-    if (feed <= 0 || (!SEEN(first_word[plane]) && !SEEN(second_word[plane])))
+    centre_words = SEEN(first_word[plane]) || SEEN(second_word[plane]);
+    if (feed <= 0 || (SEEN('R') ? centre_words : !centre_words))
         Py_RETURN_NONE;
     memcpy(target, start, sizeof target);
     for (k = 0; k < 6; k++) {
@@ -197,19 +220,29 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     s2 = start[second_axis[plane]];
     e1 = target[first_axis[plane]];
     e2 = target[second_axis[plane]];
-    c1 = s1 + (SEEN(first_word[plane]) ? VALUE(first_word[plane]) : 0.0) * scale;
-    c2 = s2 + (SEEN(second_word[plane]) ? VALUE(second_word[plane]) : 0.0) * scale;
-    if (py_hypot(s1 - c1, s2 - c2, &r1) < 0 || py_hypot(e1 - c1, e2 - c2, &r2) < 0)
-        return NULL;
-    limit = rel * r1 > tolerance ? rel * r1 : tolerance;
-    if (r1 < tiny || fabs(r1 - r2) > limit)
-        Py_RETURN_NONE;  /* the general path reports it */
     clockwise = (motion == G2) != reverse;
+    if (SEEN('R')) {
+        int found = centre_from_radius(s1, s2, e1, e2, VALUE('R') * scale, clockwise, tolerance, tiny, &c1, &c2);
+        if (found < 0)
+            return NULL;
+        if (found == 0)
+            Py_RETURN_NONE;  /* no circle: the general path reports it */
+        if (py_hypot(s1 - c1, s2 - c2, &r1) < 0)
+            return NULL;
+    } else {
+        c1 = s1 + (SEEN(first_word[plane]) ? VALUE(first_word[plane]) : 0.0) * scale;
+        c2 = s2 + (SEEN(second_word[plane]) ? VALUE(second_word[plane]) : 0.0) * scale;
+        if (py_hypot(s1 - c1, s2 - c2, &r1) < 0 || py_hypot(e1 - c1, e2 - c2, &r2) < 0)
+            return NULL;
+        limit = rel * r1 > tolerance ? rel * r1 : tolerance;
+        if (r1 < tiny || fabs(r1 - r2) > limit)
+            Py_RETURN_NONE;  /* the general path reports it */
+    }
     a0 = py_atan2(s2 - c2, s1 - c1);
     a1 = py_atan2(e2 - c2, e1 - c1);
     delta = py_mod(clockwise ? a0 - a1 : a1 - a0, 2 * M_PI);
     full = delta == 0.0;
-    if (!full && delta < epsilon) {  /* the chord only matters for an arc this close to a full circle */
+    if (!full && !SEEN('R') && delta < epsilon) {  /* the chord only matters for an arc this close to a full circle */
         if (py_hypot(s1 - e1, s2 - e2, &dist) < 0)
             return NULL;
         full = dist <= tolerance;

@@ -252,8 +252,8 @@ class BulkPath(MachineState):
 
     def _arc_reader(self) -> Callable[[str, Pose, int, float], ArcLine | None]:
         """``_arc_of_words`` on the core that runs, for the lines of one run (the state it reads cannot change
-        within a run): the compiled one takes arcs with centre words (CAM output's), and leaves R arcs to the
-        Python reference, which reads absolute centres and diameter programs too."""
+        within a run): the compiled one takes arcs with centre words or R, and leaves absolute centres and
+        diameter programs to the Python reference (and a line it cannot scan, which the reference reads)."""
         if _COMPILED_ARC is None or self.config.absolute_center_coords or self.diameter_mode:
             return self._arc_of_words
         plane = PLANE_OF[self.modal["plane"]]
