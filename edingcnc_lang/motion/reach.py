@@ -44,6 +44,14 @@ def beyond(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float],
     return first_outside(reach_points(start, end, arc, lower, upper), lower, upper)
 
 
+def arcs_beyond(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None], lower: Sequence[float],
+                upper: Sequence[float]) -> bool:
+    """Whether an arc of a batch (moves from ``start`` through ``ends``) reaches outside ``lower``..``upper``,
+    found arc by arc with ``beyond``."""
+    return any(arc is not None and beyond(begin, end, arc, lower, upper) is not None
+               for begin, end, arc in zip((start, *ends), ends, arcs))
+
+
 def table_beyond(arcs: ArcTable, ends: Sequence[Pose], lower: Sequence[float], upper: Sequence[float]) -> bool:
     """Whether an arc of a batch's table (its moves ending at ``ends``) reaches outside ``lower``..``upper``,
     as ``beyond`` finds it arc by arc: only an arc whose circle leaves them can, at its extremes."""

@@ -36,7 +36,7 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
-from edingcnc_lang.motion.reach import beyond, table_beyond
+from edingcnc_lang.motion.reach import arcs_beyond, beyond, table_beyond
 
 _T = TypeVar("_T")
 
@@ -179,12 +179,9 @@ class MotionStage:
             from edingcnc_lang.motion.arc_table import ArcTable
 
             arcs = ArcTable.of(batch.start, batch.ends, batch.arcs)
-            if table_beyond(arcs, batch.ends, lower, upper):
-                self._first_limit_violation(batch)
-        elif batch.arcs is not None:  # one by one: an untimed run never loads numpy
-            for index, (start, arc) in enumerate(zip((batch.start, *batch.ends), batch.arcs)):
-                if arc is not None and beyond(start, batch.ends[index], arc, lower, upper) is not None:
-                    self._first_limit_violation(batch)
+        if batch.arcs is not None and (table_beyond(arcs, batch.ends, lower, upper) if arcs is not None else
+                                       arcs_beyond(batch.start, batch.ends, batch.arcs, lower, upper)):
+            self._first_limit_violation(batch)  # (an untimed run checks them one by one: it never loads numpy)
         self._write_batch(batch, arcs)
 
     def _first_limit_violation(self, batch: Batch) -> None:

@@ -171,6 +171,10 @@ def test_an_arc_in_a_batch_is_refused_where_it_bulges_past_a_limit(tmp_path: Pat
     assert results[0] == results[1]
     assert ":3:" in results[0][1] and "joint Y would reach 10.0000" in results[0][1]
     assert results[0][0].count("\n") == 3  # the header and the two moves before the arc
+    for plan in (False, True):  # checked from the arcs' table when planned, one by one when not
+        with pytest.raises(EcncError) as caught:
+            run_file(job, RunOptions(ini=tmp_path / "cnc.ini", plan=plan))
+        assert caught.value.format() == results[0][1]
     # the other way round the same circle stays below the limit: many such arcs in a batch all run
     # arcs whose circles cross Y 5 but that sweep their lower halves (down to Y -0.5): all run
     job.write_text("G0 X0 Y2.5\nG1 X1 F200\n" + "G3 X7 Y2.5 I3 J0\nG2 X1 Y2.5 I-3 J0\n" * 50)
