@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import math
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field, replace
 from typing import Any, Mapping, Protocol, Sequence
+
+from edingcnc_lang.errors import EcncError
 
 
 Pose = tuple[float, ...]  # six values: x y z a b c (or the joints jx .. jc)
@@ -134,6 +136,17 @@ class Batch:
         return Move(self.kinds[index], self.path, self.lines[index], start, end, self.feeds[index],
                     None if self.arcs is None else self.arcs[index],
                     css.rpm(end[0]) if css is not None else self.spindle, css, self.sync, self.caller)
+
+    def each(self, take: Callable[[Move], None]) -> None:
+        """Hand the moves to ``take`` one at a time (a stage that has no batch form for what it does); a move
+        refused says how many of the batch were made before it (``EcncError.done``)."""
+        count = 0
+        try:
+            for count, move in enumerate(self.moves()):
+                take(move)
+        except EcncError as err:
+            err.done = count
+            raise
 
     def moves(self) -> Iterator[Move]:
         """The batch as single moves, each starting where the one before ended."""

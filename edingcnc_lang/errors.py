@@ -67,6 +67,9 @@ class EcncError(Exception):
 
     exit_code = EXIT_RUNTIME
     kind = "error"  # the ``kind`` of the ``--json`` error object (docs/cli.md)
+    # A move of a batch refused: how many moves of the batch were made before it (set where it is refused;
+    # None when not known), so the machine's state can be that after them, as moving one at a time leaves it.
+    done: int | None = None
 
     def __init__(self, message: str, location: Location | None = None,
                  notes: tuple[str, ...] = ()) -> None:

@@ -232,18 +232,14 @@ class BulkPath(MachineState):
             rpm, _css = self.spindle_along()
             self.path, self.line = path, numbers[-1]
             try:
-                self.canon.move_batch(Batch(path, start, kinds, numbers, ends, feeds, rpm, None, 0.0, self.caller(),
-                                            arcs))
+                self.make_batch(Batch(path, start, kinds, numbers, ends, feeds, rpm, None, 0.0, self.caller(), arcs),
+                                lengths, by_line=True)
             except EcncError as err:  # a move was refused: the state is that of the move before it
-                failed = next((k for k, number in enumerate(numbers)
-                               if err.location is not None and number == err.location.line), 0)
-                self.travelled(start, ends[:failed], {k: length for k, length in lengths.items() if k < failed})
-                self.pos = list(ends[failed - 1] if failed else start)
+                failed = err.done or 0
                 self.feed = in_force[failed]
                 self.modal["motion"] = self._motion_of(kinds[failed], None if arcs is None else arcs[failed])
                 self.line = numbers[failed]
                 raise
-            self.travelled(start, ends, lengths)
         self.pos = list(pos)
         self.feed = feed
         if motion != NO_MOTION:

@@ -7,7 +7,8 @@ from typing import TYPE_CHECKING
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Event
-from edingcnc_lang.machine.state import CENTER_WORDS, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
+from edingcnc_lang.machine.state import (CENTER_WORDS, G_91, G_93, G_99, MachineState, PendingMoves, PLANE_OF,
+                                         format_value)
 
 G_74 = t.code_key(74)
 G_87 = t.code_key(87)
@@ -23,6 +24,22 @@ class CannedCycles(MachineState):
     cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
 
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
+        """A cycle line's holes; their straight moves go to the canon as one batch where the bulk path's would
+        (``batchable``), handed on before any other move or event of the cycle and before an error it meets."""
+        if not self.batchable():
+            self._holes(motion, words, span, new_sequence)
+            return
+        self.pending = PendingMoves(tuple(self.pos))
+        try:
+            self._holes(motion, words, span, new_sequence)
+            self.flush_pending()
+        except BaseException:
+            self.flush_pending()  # the moves before it were made (one refused among them is reported instead)
+            raise
+        finally:
+            self.pending = None
+
+    def _holes(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         from edingcnc_lang.machine.cycles import CYCLES, NEEDS_Q, NEEDS_SPINDLE, TAPPING, CycleError
 
         plane = PLANE_OF[self.modal["plane"]]
@@ -123,10 +140,13 @@ class CannedCycles(MachineState):
                     at[axis] = hole[axis] + (offset if step.kind == "shift" else 0.0)
                 self._move("rapid", self.to_machine(at))
             elif step.kind == "dwell":
+                self.flush_pending()
                 self.canon.event(Event("dwell", self.path, self.line, {"seconds": step.level}))
             elif step.kind == "pause":  # G88: the operator retracts by hand, then presses Start
+                self.flush_pending()
                 self.canon.event(Event("pause", self.path, self.line, {"m": 0, "cycle": "G88"}))
             else:  # the spindle stops, starts or reverses: the moves after it carry its new speed
+                self.flush_pending()
                 self.spindle = switched[step.kind]
                 on = self.spindle != 5
                 self.canon.event(Event("spindle", self.path, self.line, {

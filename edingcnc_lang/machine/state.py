@@ -16,9 +16,9 @@ from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Arc, Canon, Css, Event, Move, Pose
+from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.errors import Location, MachineError
+from edingcnc_lang.errors import EcncError, Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
@@ -171,6 +171,25 @@ def fmt_point(point: tuple[float, float]) -> str:
     return ", ".join(f"{v:.4f}" for v in point)
 
 
+class PendingMoves:
+    """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
+
+    __slots__ = ("start", "kinds", "lines", "ends", "feeds")
+
+    def __init__(self, start: Pose) -> None:
+        self.start = start
+        self.kinds: list[str] = []
+        self.lines: list[int] = []
+        self.ends: list[Pose] = []
+        self.feeds: list[float] = []
+
+    def append(self, kind: str, line: int, end: Pose, feed: float) -> None:
+        self.kinds.append(kind)
+        self.lines.append(line)
+        self.ends.append(end)
+        self.feeds.append(feed)
+
+
 class MachineState:
     """What one virtual machine knows; create one Interpreter per job run."""
 
@@ -200,6 +219,7 @@ class MachineState:
         if not self.config.g64_active:  # [INTERPRETER] g64Active = 0: the machine starts in exact stop
             self.modal["path_control"] = t.code_key(61)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
+        self.pending: PendingMoves | None = None  # a canned cycle's straight moves, held back as one batch
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
         self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
         self.rpm = 0.0                     # G97: the speed the spindle turns at, S within the machine's range
@@ -330,11 +350,49 @@ class MachineState:
             raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
                             f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
                             "cnc.ini [KINEMATICS] ...TCA): switch it off with TCAGuard off first")
+        pending = self.pending
+        if pending is not None:
+            if arc is None and not sync and kind != "home":  # a straight move of a canned cycle: into its batch
+                pending.append(kind, self.line, tuple(end), feed)
+                self.pos = list(end)
+                return
+            self.flush_pending()  # the moves before this one go first
         rpm, css = self.spindle_along()
         self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
                              css.rpm(end[0]) if css is not None else rpm, css, sync, self.caller()))
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
+
+    def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None:
+        """Hand ``batch`` to the canon and count it into GetJobDistance, as ``_move`` does one move (the bulk
+        path's runs of lines, a canned cycle's holes).  When a move of it is refused, the position and the
+        distance are those after the moves before it, and the error says how many those were (``done``).
+
+        ``by_line``: the refused move is found by its line (a plain line makes one move, and compensation
+        may hand on more moves than it was given); else by the count the stages give (a cycle's moves share
+        one line; compensation refuses cycles, and stages that split moves count the moves they were given)."""
+        try:
+            self.canon.move_batch(batch)
+        except EcncError as err:
+            if by_line or err.done is None:
+                err.done = next((k for k, number in enumerate(batch.lines)
+                                 if err.location is not None and number == err.location.line), 0)
+            failed = err.done
+            self.travelled(batch.start, batch.ends[:failed], {k: v for k, v in arc_lengths.items() if k < failed})
+            self.pos = list(batch.ends[failed - 1] if failed else batch.start)
+            raise
+        self.travelled(batch.start, batch.ends, arc_lengths)
+        self.pos = list(batch.end)
+
+    def flush_pending(self) -> None:
+        """Hand on the straight moves a canned cycle has collected so far (before an event, another kind of
+        move, or at the end of its line) as one batch; the cycle goes on collecting after them."""
+        pending = self.pending
+        if pending is not None and pending.lines:
+            self.pending = PendingMoves(pending.ends[-1])
+            rpm, _css = self.spindle_along()  # (not under G96: the cycle collects only when batchable)
+            self.make_batch(Batch(self.path, pending.start, pending.kinds, pending.lines, pending.ends, pending.feeds,
+                                  rpm, None, 0.0, self.caller()), {}, by_line=False)
 
     def travelled(self, start: Pose | list[float], ends: Sequence[Pose], arc_lengths: Mapping[int, float]) -> None:
         """Count moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does: straight,
@@ -401,6 +459,7 @@ class MachineState:
         def call_sub(self, name: str, span: n.Span | None = None) -> None: ...              # flow.py
         def _exec_plain_run(self, run: n.PlainRun) -> None: ...                              # bulk.py
         def _exec_plain_lines(self, run: n.PlainRun) -> None: ...                            # bulk.py
+        def batchable(self) -> bool: ...                                                     # bulk.py
         def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None: ...  # messages.py
         def offset(self) -> list[float]: ...                                                 # offsets.py
         def _live_param(self, index: int) -> float: ...                                      # offsets.py

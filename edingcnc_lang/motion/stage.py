@@ -165,8 +165,7 @@ class MotionStage:
     def move_batch(self, batch: Batch) -> None:
         """Moves in bulk; joints = position and no samples make this the cheap case."""
         if not (self._identity() and not self.sample_always and self.active is None):
-            for move in batch.moves():
-                self.move(move)
+            batch.each(self.move)
             return
         lower, upper = self._lower, self._upper
         if not batch.lines:
@@ -189,8 +188,9 @@ class MotionStage:
         for count, move in enumerate(batch.moves()):
             try:
                 self._check_exact(move)
-            except MachineError:
+            except MachineError as err:
                 self._write_batch(batch.head(count))
+                err.done = count
                 raise
 
     def _write_batch(self, batch: Batch, arcs: ArcTable | None = None) -> None:

@@ -79,8 +79,7 @@ class LookaheadStage(Stage):
         if not self.active and self.held is None:
             self.next.move_batch(batch)
             return
-        for move in batch.moves():
-            self.move(move)
+        batch.each(self.move)
 
     def event(self, event: Event) -> None:
         if self.held is None:

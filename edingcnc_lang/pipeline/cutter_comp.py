@@ -106,8 +106,7 @@ class CutterCompensation(Stage):
 
                 take_batch(self, batch)
             else:
-                for move in batch.moves():
-                    self._take(move)
+                batch.each(self._take)
         finally:
             self._send()
 

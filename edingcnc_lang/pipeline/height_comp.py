@@ -68,5 +68,4 @@ class HeightCompensation(Stage):
         if self.surface is None and self.applied == 0.0:
             self.next.move_batch(batch)
             return
-        for move in batch.moves():
-            self.move(move)
+        batch.each(self.move)

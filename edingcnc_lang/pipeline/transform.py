@@ -58,8 +58,7 @@ class PoseTransform(Stage):
         if not batch.lines:
             return
         if batch.css is not None and self.on:  # the spindle speed follows the programmed X: move by move
-            for move in batch.moves():
-                self.move(move)
+            batch.each(self.move)
             return
         if self.on or (self.at is not None and self.at != batch.start):
             start = self.at if self.at is not None else self.forward(batch.start)

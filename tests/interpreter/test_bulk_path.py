@@ -180,3 +180,52 @@ def test_an_arc_in_a_batch_is_refused_where_it_bulges_past_a_limit(tmp_path: Pat
     job.write_text("G0 X0 Y2.5\nG1 X1 F200\n" + "G3 X7 Y2.5 I3 J0\nG2 X1 Y2.5 I-3 J0\n" * 50)
     limits = run_file(job, RunOptions(ini=tmp_path / "cnc.ini")).limits["joints"]["y"]
     assert (limits["min"], limits["max"]) == (pytest.approx(-0.5), pytest.approx(2.5))
+
+
+CYCLE_JOB = """G21 G90 G94 G17
+S1200 M3
+G0 X0 Y0 Z10
+G98 G81 X10 Y10 Z-2 R2 F300
+X20 Y15 L2
+G99 G82 X30 P0.5
+G83 X40 Y20 Z-5 Q1.5 R1
+G86 X50
+G73 X60 Q2
+G80
+#100 = #5001
+G0 X0 Y0
+M30
+"""
+
+
+@pytest.mark.parametrize("z_limit", [-10, -4])
+def test_a_canned_cycles_moves_in_one_batch_are_its_moves_one_by_one(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                                      z_limit: int) -> None:
+    """A cycle line's straight moves go to the canon as one batch, handed on before its dwells, spindle stops
+    and the next statement: the same moves, events, times, GetJobDistance and state as one move at a time,
+    also when a peck deep in the G83 hole is refused below a limit (the state is that after the peck before it)."""
+    from edingcnc_lang.machine.interpreter import Interpreter
+
+    (tmp_path / "cnc.ini").write_text(f"[JOINT_2]\nnegativeLimit = {z_limit}\n")
+    job = tmp_path / "drill.nc"
+    job.write_text(CYCLE_JOB)
+
+    def run() -> tuple[str, str, list[object]]:
+        seen: list[object] = []
+        trace = tmp_path / "trace.csv"
+        options = RunOptions(ini=tmp_path / "cnc.ini", trace=trace, on_move=lambda m, j: seen.append(m),
+                             on_event=seen.append)
+        try:
+            outcome = str(run_file(job, options).to_json())
+        except EcncError as err:
+            outcome = err.format() + str(err.result.to_json())  # type: ignore[attr-defined]
+        return trace.read_text(), outcome, seen
+
+    batched = run()
+    monkeypatch.setattr(Interpreter, "batchable", lambda self: False)
+    assert run() == batched
+    moves = [m for m in batched[2] if isinstance(m, Move)]
+    if z_limit == -4:
+        assert "drill.nc:7:1: error: joint Z would reach -5.0000" in batched[1] and -4 < moves[-1].end[2] < -2
+    else:
+        assert "error" not in batched[1] and len(moves) > 40
