@@ -5,7 +5,8 @@ and put its class in ``STAGES`` at the place it belongs; it is built with the ne
 machine configuration.  A stage may import ``canon``, ``config``, ``geometry``, ``heightmap`` and
 ``errors``, never the interpreter or the motion stage.  Moves come one at a time (``move``) or in
 bulk (``move_batch``): a batch may hold arcs (``Batch.arcs``), and a stage with no batch form for
-what it changes hands ``batch.moves()`` to its own ``move`` one at a time.
+what it changes hands the moves to its own ``move`` one at a time with ``batch.each(self.move)``, so a
+move refused among them says how many of the batch were made before it (``EcncError.done``).
 """
 from __future__ import annotations
 
