@@ -206,9 +206,12 @@ class BulkPath(MachineState):
                     pos = ends[-1]
                 if index >= len(lines) or room <= 0:
                     break
+            text = lines[index][1]
+            if motion not in (G_2, G_3) and "G" not in text and "g" not in text:
+                break  # no arc in force and no G word: not an arc (a canned cycle's next hole, say)
             if read_arc is None:
                 read_arc = self._arc_reader()
-            taken = read_arc(lines[index][1], pos, motion, feed)
+            taken = read_arc(text, pos, motion, feed)
             if taken is None:
                 if not arc_next:
                     break
