@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -18,6 +18,7 @@ from edingcnc_lang.codes import CODES, RETIRED
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.source import iter_file_lines
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.lint import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
 from edingcnc_lang.lint.model import SourceFile, stream_source
 from edingcnc_lang.lint.project import Project
@@ -38,7 +39,7 @@ class UnknownCode(ValueError):
     """A code or prefix in --select/--ignore/noqa that matches no registered code."""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class LintOptions:
     """What ``ecnc lint`` was asked for besides the paths: macro files, ini, selected codes."""
 

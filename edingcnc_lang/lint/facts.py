@@ -12,11 +12,11 @@ functions it calls are its reference, and the tests compare the two.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from functools import cached_property, partial
 from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.syntax.fastparse import COMPILED_READER
 from edingcnc_lang.machine.tables import SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import params_in
@@ -38,7 +38,7 @@ class BlockCodes(NamedTuple):
     m: tuple[Code, ...]
 
 
-@dataclass(frozen=True, eq=False)  # one per file: compared by identity
+@record(frozen=True, eq=False)  # one per file: compared by identity
 class FileFacts:
     """A file's statements sorted by what the rules ask about them."""
 

@@ -11,10 +11,11 @@ import re
 from array import array
 from bisect import bisect_left
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from itertools import islice
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang import speedups
 from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
@@ -91,15 +92,18 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
 
 # --------------------------------------------------------------------------- structure
 
-@dataclass
 class _Frame:
-    """An open block while its body is being collected."""
+    """An open block while its body is being collected (a plain class: one per block, and a
+    dataclass would cost start-up time for nothing)."""
 
-    opener: Open
-    source: str
-    body: list[n.Stmt] = field(default_factory=list)
-    orelse: list[n.Stmt] = field(default_factory=list)
-    in_else: bool = False
+    __slots__ = ("opener", "source", "body", "orelse", "in_else")
+
+    def __init__(self, opener: Open, source: str) -> None:
+        self.opener = opener
+        self.source = source
+        self.body: list[n.Stmt] = []
+        self.orelse: list[n.Stmt] = []
+        self.in_else = False
 
     def add(self, stmt: n.Stmt) -> None:
         (self.orelse if self.in_else else self.body).append(stmt)
@@ -416,7 +420,7 @@ def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
                            blocks=iter_file_blocks(path))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class CheckedFile:
     """What checking a file found out: its subs, which lines are not plain (for the run's reader), how many lines."""
 
