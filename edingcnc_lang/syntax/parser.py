@@ -25,7 +25,7 @@ from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_l
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
-from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_statements, new_node
+from edingcnc_lang.syntax.fastparse import COMPILED_ASSEMBLE, COMPILED_READER, GIVE_UP, compiled_statements, new_node
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
 
@@ -159,7 +159,8 @@ class StatementReader:
         # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute;
         # "lint" as PlainRun chunks at the top level (the linter keeps the few it needs) and nodes inside.
         self.mode = mode
-        # Line numbers of the lines that are not plain: recorded by a "check" read, reused by a "run" read.
+        # Line numbers of the lines that are not plain: recorded by a "check" read (not by a "lint" read),
+        # reused by a "run" read.
         self.non_plain: Sequence[int] = non_plain if non_plain is not None else array("I")
         self._known = non_plain is not None
         self.unit: str | None = None
@@ -200,36 +201,21 @@ class StatementReader:
                 lineno = base + i
                 if stack and read_ahead and not self._skipped:
                     # Inside a block every line is parsed: the compiled reader reads the next lines in
-                    # one call, and the reader adds most of them to the block without more ado.
+                    # one call, and its assembler adds them to the blocks as _fit would, up to a line
+                    # it leaves to _fit (a dlgmsg, a Sub, an end line that does not fit) or _line.
                     if not ahead <= i < ahead + len(parsed):
                         ahead, parsed = i, compiled_statements(chunk[i:i + READ_AHEAD], path, lineno) or []
+                    stop, done = COMPILED_ASSEMBLE(parsed, i - ahead, chunk, ahead, stack, _Frame,  # type: ignore[misc]
+                                                   MAX_BLOCK_DEPTH)
+                    if stop > i - ahead:
+                        i = ahead + stop
+                        lineno = base + i - 1
+                        if done is not None:
+                            yield done
+                        continue
                     result = parsed[i - ahead]
                     if result is not GIVE_UP:
-                        kind = type(result)
-                        if kind is Close:  # what _fit does, inlined: a block is open and none is skipped
-                            done = self._close(stack, result, chunk[i])  # type: ignore[arg-type]
-                            if done is not None:
-                                yield done
-                        elif kind is Open and result.kind != "Sub":  # type: ignore[union-attr]
-                            self._push(stack, result, chunk[i])  # type: ignore[arg-type]
-                        elif kind is Open or kind is n.Dialog:
-                            yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
-                        else:  # a statement or a blank line, and most likely more of them: add them all
-                            frame = stack[-1]
-                            add = (frame.orelse if frame.in_else else frame.body).append
-                            stop = ahead + len(parsed)
-                            while True:
-                                if result is not None:
-                                    add(result)  # type: ignore[arg-type]
-                                i += 1
-                                if i == stop:
-                                    break
-                                result = parsed[i - ahead]
-                                kind = type(result)
-                                if kind is Open or kind is Close or kind is n.Dialog or result is GIVE_UP:
-                                    break
-                            lineno = base + i - 1
-                            continue
+                        yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
                         i += 1
                         continue
                 yield from self._line(stack, chunk[i], lineno, bulk)
@@ -250,7 +236,8 @@ class StatementReader:
             last = bisect_left(self.non_plain, base + len(chunk))
             return [number - base for number in self.non_plain[first:last]]
         others = speedups.non_plain_lines(chunk)
-        self.non_plain.extend(base + i for i in others)  # type: ignore[attr-defined]
+        if self.mode != "lint":  # (a lint reads each file once: nobody asks for them)
+            self.non_plain.extend([base + i for i in others])  # type: ignore[attr-defined]
         return others
 
     def _line(self, stack: list[_Frame], text: str, lineno: int, bulk: bool) -> Iterator[n.Stmt]:
