@@ -12,6 +12,7 @@ from array import array
 from bisect import bisect_left
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import replace
+from functools import cache
 from itertools import islice
 
 from edingcnc_lang.syntax import nodes as n
@@ -39,12 +40,6 @@ _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 READ_AHEAD = 128  # lines inside a block the compiled reader reads in one call (tree and lint reads)
 CHUNK_LINES = 8192
-# Runs of plain lines, each with its line end, at most RUN_LENGTH at a time (the regular-expression
-# engine keeps a little memory for each line of a run it matches).  Most plain lines are words with
-# at most one blank after each (CAM output): _SIMPLE_LINES takes a run of those about a third
-# faster, and _PLAIN_LINES goes on from where it stops.
-_PLAIN_LINES = re.compile(rf"(?:{PLAIN_LINE}\n){{0,{RUN_LENGTH}}}")
-_SIMPLE_LINES = re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n){{0,{RUN_LENGTH}}}")
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
@@ -67,6 +62,17 @@ def _chunks(blocks: Iterable[list[str]]) -> Iterator[tuple[int, list[str]]]:
             base += len(chunk)
 
 
+@cache
+def _run_patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """Runs of plain lines, each with its line end, at most RUN_LENGTH at a time (the regular-expression
+    engine keeps a little memory for each line of a run it matches).  Most plain lines are words with
+    at most one blank after each (CAM output): the first pattern takes a run of those about a third
+    faster, and the second goes on from where it stops.  Compiled when first used: the compiled core
+    scans in C and never does (they took ~1.5 ms of every start-up)."""
+    return (re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n){{0,{RUN_LENGTH}}}"),
+            re.compile(rf"(?:{PLAIN_LINE}\n){{0,{RUN_LENGTH}}}"))
+
+
 def non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``): each run of
     plain lines is taken by regular-expression matches, a line they cannot take is an other line.
@@ -75,12 +81,13 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     """
     if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
         return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
+    simple_lines, plain_lines = _run_patterns()
     joined = "\n".join(chunk) + "\n"
     found: list[int] = []
     index, position = 0, 0
     while position < len(joined):
-        simple = _SIMPLE_LINES.match(joined, position).end()  # type: ignore[union-attr]  # (they may take no line)
-        stop = _PLAIN_LINES.match(joined, simple).end()  # type: ignore[union-attr]
+        simple = simple_lines.match(joined, position).end()  # type: ignore[union-attr]  # (they may take no line)
+        stop = plain_lines.match(joined, simple).end()  # type: ignore[union-attr]
         index += joined.count("\n", position, stop)
         if stop == position:  # neither takes this line: it is not plain
             found.append(index)
