@@ -51,6 +51,7 @@ def test_a_record_behaves_as_the_dataclass(options: dict[str, bool]) -> None:
             with pytest.raises(dataclasses.FrozenInstanceError):
                 change()
     assert dataclasses.astuple(fast(flag=True, args=(), op="-")) == dataclasses.astuple(stock(flag=True, args=(), op="-"))
+    assert str(inspect.signature(stock)) == str(inspect.signature(fast))  # (its __init__ compiled by now)
     with pytest.raises(TypeError):
         fast("+")  # a missing field, as the decorator's __init__ says
 
@@ -70,3 +71,9 @@ def test_node_classes_are_frozen_slotted_dataclasses() -> None:
     tree = n.If(n.Compare("<", n.Param(number, SPAN), number), (n.GoSub("a", SPAN),), span=SPAN, end_span=SPAN)
     for again in (pickle.loads(pickle.dumps(tree)), copy.deepcopy(tree)):
         assert again == tree and again.span == SPAN and again.then[0].span == SPAN
+
+
+def test_a_record_takes_plain_fields_only() -> None:
+    with pytest.raises(TypeError, match="plain fields"):
+        record(frozen=True)(type("Bad", (), {"__annotations__": {"items": "list"}, "__module__": __name__,
+                                             "items": field(default_factory=list)}))
