@@ -22,6 +22,7 @@
 #include "csrc/lexer_nodes.c"
 #include "csrc/lexer_expr.c"
 #include "csrc/lexer_statements.c"
+#include "csrc/lexer_blocks.c"
 #include "csrc/lexer_facts.c"
 #include "csrc/lexer_survey.c"
 
@@ -43,6 +44,9 @@ static PyMethodDef methods[] = {
     {"statements", statements, METH_VARARGS,
      "statements(lines, path, first_line, shortest_problem, integer_digits, fraction_digits): statement() of "
      "each short line without '(', the give-up marker for the others."},
+    {"assemble", assemble, METH_VARARGS,
+     "assemble(results, k, lines, offset, stack, frame_class, max_depth): statements()'s results from k on "
+     "added to the open blocks as StatementReader._fit adds them; (where it stopped, a finished block or None)."},
     {"survey", survey, METH_VARARGS,
      "survey(code_key, literal_index, scope_class, simulation_branches, other_reads, codes_class, end_keys, "
      "simulation, into, body, scope): lint.facts._Survey.visit(body, scope) on into."},

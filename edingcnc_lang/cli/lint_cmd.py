@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import os
 import sys
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
@@ -55,7 +54,6 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
     from edingcnc_lang.lint import LintOptions, lint_paths_parallel
     from edingcnc_lang.lint.driver import expand
     from edingcnc_lang.lint.formats import FORMATS, list_codes
-    from edingcnc_lang.lint.model import SourceFile, stream_source
 
     if show_codes:
         print(list_codes())
@@ -68,18 +66,12 @@ def lint(paths: tuple[str, ...], macro: str | None, user_macro: str | None, ini:
     if not paths and not ini:
         raise usage_error("give at least one file or folder to lint")
     options = LintOptions(macro, user_macro, ini, select, ignore, target)
-    kept = until_exit()
-
-    def kept_reader(path: Path, is_macro: bool) -> SourceFile:  # the trees are not freed one by one at the end
-        source = stream_source(path, is_macro)
-        if kept is not None:
-            kept.append(source)
-        return source
+    kept = until_exit()  # the trees and the facts about them are not freed one by one at the end
     show = progress.wanted(quiet or fmt != "text")  # json, sarif, github: output for programs, kept clean
     count = len(expand(p for p in paths if p != STDIN)) if show else 0
     with whole_trees(kept is not None), progress.Progress(lambda: (0, 0, f"checking {count:,} files"), show):
         findings = (_lint_with_stdin(paths, options) if STDIN in paths
-                    else lint_paths_parallel(paths, options, jobs or os.cpu_count() or 1, kept_reader))
+                    else lint_paths_parallel(paths, options, jobs or os.cpu_count() or 1, kept=kept))
     output = FORMATS[fmt](findings, not no_source)
     if output or fmt != "text":
         print(styled(output, sys.stdout) if fmt == "text" else output)

@@ -241,14 +241,62 @@ static PyObject *statements(PyObject *self, PyObject *args)
 
 /* new(cls, values): a node of a frozen dataclass ``cls`` with ``values`` for its fields in the order of
  * its __match_args__, made as its __init__ makes it (object.__new__, then object.__setattr__ for each
- * field) without the Python-level call of that __init__. */
+ * field) without the Python-level call of that __init__. The slot descriptors of a node class of
+ * setup() are looked up once (new_slots), those of another class on each call. */
+#define NEW_MAX_FIELDS 8
+static PyObject *new_descriptors[N_ALL_CLASSES][NEW_MAX_FIELDS];
+static descrsetfunc new_setters[N_ALL_CLASSES][NEW_MAX_FIELDS];
+static Py_ssize_t new_counts[N_ALL_CLASSES];  /* 0: not looked up yet (every node class has a field) */
+
+/* The slot descriptors of class ``k``'s __match_args__, in order; 0 if one is not a slot (then new()
+ * sets the fields by name). */
+static int new_slots(int k)
+{
+    PyObject *names = PyObject_GetAttrString(classes[k], "__match_args__"), *found;
+    Py_ssize_t count = names != NULL && PyTuple_Check(names) ? PyTuple_Size(names) : -1, f;
+    descrsetfunc set;
+    for (f = 0; f < count && f < NEW_MAX_FIELDS; f++) {
+        if ((found = PyObject_GetAttr(classes[k], PyTuple_GetItem(names, f))) == NULL)
+            break;
+        set = PyObject_HasAttrString(found, "__objclass__") && !PyType_Check(found)
+              ? (descrsetfunc)PyType_GetSlot(Py_TYPE(found), Py_tp_descr_set) : NULL;
+        if (set == NULL) {
+            Py_DECREF(found);
+            break;
+        }
+        Py_XDECREF(new_descriptors[k][f]);
+        new_descriptors[k][f] = found;
+        new_setters[k][f] = set;
+    }
+    Py_XDECREF(names);
+    PyErr_Clear();
+    if (count < 1 || f < count)
+        return 0;
+    new_counts[k] = count;
+    return 1;
+}
+
 static PyObject *new_node(PyObject *self, PyObject *args)
 {
     PyObject *cls, *values, *names, *made;
     Py_ssize_t k, count;
+    int which;
     (void)self;
     if (!PyArg_ParseTuple(args, "O!O!", &PyType_Type, &cls, &PyTuple_Type, &values))
         return NULL;
+    for (which = 0; which < N_ALL_CLASSES && classes[which] != cls; which++)
+        ;
+    if (which < N_ALL_CLASSES && (new_counts[which] > 0 || new_slots(which))) {
+        if ((count = new_counts[which]) != PyTuple_Size(values)) {
+            PyErr_SetString(PyExc_TypeError, "new(): one value for each field expected");
+            return NULL;
+        }
+        made = PyType_GenericAlloc((PyTypeObject *)cls, 0);
+        for (k = 0; made != NULL && k < count; k++)
+            if (new_setters[which][k](new_descriptors[which][k], made, PyTuple_GetItem(values, k)) < 0)
+                Py_CLEAR(made);
+        return made;
+    }
     if ((names = PyObject_GetAttrString(cls, "__match_args__")) == NULL)
         return NULL;
     count = PyTuple_Check(names) ? PyTuple_Size(names) : -1;
@@ -287,6 +335,7 @@ static PyObject *setup(PyObject *self, PyObject *args)
         Py_XDECREF(classes[k]);
         classes[k] = found;
         find_setters(k);
+        new_counts[k] = 0;  /* new() looks its slots up again */
     }
     if (marker != NULL && names != NULL) {
         Py_INCREF(marker);

@@ -53,34 +53,36 @@ def unknown(_index: int) -> float | None:
 
 def evaluate(expr: n.Expr, lookup: Lookup = unknown) -> float | None:
     """The value of ``expr``, or None when it depends on something unknown."""
-    if isinstance(expr, n.Number):
+    # exact type tests: node classes are final, and this runs for most words
+    if type(expr) is n.Number:
         return expr.value
-    if isinstance(expr, n.Param):
+    if type(expr) is n.Param:
         index = evaluate(expr.index, lookup)
         return lookup(int(index)) if index is not None and index.is_integer() else None
-    if isinstance(expr, n.Unary):
-        value = evaluate(expr.operand, lookup)
-        return None if value is None else (-value if expr.op == "-" else value)
-    if isinstance(expr, n.Binary):
+    if type(expr) is n.Binary:
         return _binary(expr, lookup)
-    if isinstance(expr, n.Compare):
+    if type(expr) is n.Compare:
         left, right = evaluate(expr.left, lookup), evaluate(expr.right, lookup)
         if left is None or right is None:
             return None
         return float(_COMPARE[expr.op](left, right))
+    if type(expr) is n.Unary:
+        value = evaluate(expr.operand, lookup)
+        return None if value is None else (-value if expr.op == "-" else value)
     return None  # function calls: not needed for indices and guards
 
 
 def _binary(expr: n.Binary, lookup: Lookup) -> float | None:
     left, right = evaluate(expr.left, lookup), evaluate(expr.right, lookup)
-    if expr.op in ("AND", "OR"):
-        decisive = 0.0 if expr.op == "AND" else 1.0  # the value that settles the result alone
-        if any(v is not None and float(bool(v)) == decisive for v in (left, right)):
+    op = expr.op
+    if op == "AND" or op == "OR":
+        decisive = 0.0 if op == "AND" else 1.0  # the value that settles the result alone
+        if (left is not None and float(bool(left)) == decisive) or (right is not None and float(bool(right)) == decisive):
             return decisive
         return None if left is None or right is None else 1.0 - decisive
     if left is None or right is None:
         return None
-    return _ARITHMETIC[expr.op](left, right)
+    return _ARITHMETIC[op](left, right)
 
 
 def constant_index(param: n.Param) -> float | None:

@@ -12,11 +12,12 @@ functions it calls are its reference, and the tests compare the two.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from functools import cached_property, partial
+from operator import itemgetter
 from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.syntax.fastparse import COMPILED_READER
 from edingcnc_lang.machine.tables import SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import params_in
@@ -26,6 +27,7 @@ Use = tuple[n.Param, "int | None", Scope]  # a parameter read or assigned, its l
 Walked = tuple[tuple[n.Stmt, Scope], ...]
 
 
+_INDEX = itemgetter(1)  # a Use's literal index
 _new_codes = tuple.__new__  # BlockCodes(...) without the named tuple's Python-level __new__: one per coded block
 
 
@@ -38,7 +40,7 @@ class BlockCodes(NamedTuple):
     m: tuple[Code, ...]
 
 
-@dataclass(frozen=True, eq=False)  # one per file: compared by identity
+@record(frozen=True, eq=False)  # one per file: compared by identity
 class FileFacts:
     """A file's statements sorted by what the rules ask about them."""
 
@@ -62,12 +64,12 @@ class FileFacts:
     def read_indices(self) -> frozenset[int | None]:
         """The literal indices of every parameter read (None for a computed one): the few rules about
         indices look at each index once, and at the single reads only when one may be reported."""
-        return frozenset([index for _param, index, _scope in self.reads])
+        return frozenset(map(_INDEX, self.reads))
 
     @cached_property
     def target_indices(self) -> frozenset[int | None]:
         """The literal indices of every assignment target (None for a computed one)."""
-        return frozenset([index for _param, index, _scope in self.targets])
+        return frozenset(map(_INDEX, self.targets))
 
 
 def indexed_reads(stmt: n.Stmt) -> tuple[tuple[n.Param, int | None], ...]:

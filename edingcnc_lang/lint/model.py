@@ -4,10 +4,10 @@ from __future__ import annotations
 import os
 from itertools import chain
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
 from types import MappingProxyType
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import UnreadableFile
 from edingcnc_lang.syntax.line_parser import parse_line
@@ -17,7 +17,7 @@ from edingcnc_lang.syntax.plain_words import plain_words
 from edingcnc_lang.lint.walk import ends_program
 
 
-@dataclass(frozen=True, eq=False)  # one object per file: compared and hashed by identity
+@record(frozen=True, eq=False)  # one object per file: compared and hashed by identity
 class SourceFile:
     """One parsed file as the rules see it: its lines, statements, subs and syntax findings."""
 

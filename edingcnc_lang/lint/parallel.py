@@ -23,16 +23,17 @@ GROUPS_PER_JOB = 4  # more groups than workers, so a slow group does not leave t
 
 
 def lint_paths_parallel(paths: Iterable[str | os.PathLike[str]], options: LintOptions = LintOptions(),
-                        jobs: int = 1, reader: Reader = stream_source) -> list[Diagnostic]:
+                        jobs: int = 1, reader: Reader = stream_source,
+                        kept: list[object] | None = None) -> list[Diagnostic]:
     """``lint_paths`` on ``jobs`` processes; the same findings for files that do not share facts.
 
-    ``reader`` parses the files when they are checked in this process (see ``lint_paths``)."""
+    ``reader`` and ``kept`` as ``lint_paths`` when the files are checked in this process."""
     given = list(paths)
     files = expand(given)
     configs = [str(p) for p in files if p.suffix.lower() == CONFIG_SUFFIX]
     sources = sorted(str(p) for p in files if p.suffix.lower() != CONFIG_SUFFIX)
     if jobs <= 1 or len(sources) < 2 or not all(os.access(p, os.R_OK) for p in sources):
-        return lint_paths(given, options, reader)  # (an unreadable file is reported from here, with its path)
+        return lint_paths(given, options, reader, kept)  # (an unreadable file is reported from here, with its path)
     # imported here: multiprocessing costs a one-process lint ~40 ms of start-up
     from concurrent.futures import ProcessPoolExecutor
     from multiprocessing import get_context

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
 from functools import cached_property
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.machine.tables import ARG_PARAMS, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
 from edingcnc_lang.lint.facts import Code, FileFacts, indexed_reads, survey
 from edingcnc_lang.lint.model import SourceFile
@@ -32,7 +32,7 @@ def command_writes(command: n.Command) -> Iterator[int]:
         yield from (int(m.group(1)) for word in command.args.split() if (m := _MODBUS_TARGET.fullmatch(word)))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Call:
     """A statement that runs a sub: GoSub, an M code with a ``Sub mNNN``, or M6."""
 

@@ -7,9 +7,9 @@ driver can skip rules whose codes are all deselected.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.codes import CODES
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.lint.model import SourceFile
@@ -18,7 +18,7 @@ from edingcnc_lang.lint.project import Project
 Check = Callable[[SourceFile, Project], Iterable[Diagnostic]]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Rule:
     """A check and the codes it reports (the driver skips it when all of them are deselected)."""
 

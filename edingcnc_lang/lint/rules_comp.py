@@ -75,6 +75,12 @@ def arc_too_small_for_the_tool(file: SourceFile, project: Project) -> Iterator[D
     for codes in project.facts(file).coded:  # a block without G codes changes nothing here
         if not codes.g:
             continue
+        if not (comp.side and comp.radius):  # off: only a code update() follows can matter (most lines)
+            for key, _word in codes.g:
+                if key in _UPDATING:
+                    break
+            else:
+                continue
         keys = {key for key, _ in codes.g}
         # the words' values matter to a G10 or a G41/G42 line, and to an arc under compensation
         words = comp.words(codes) if keys & _READ_WORDS else {}

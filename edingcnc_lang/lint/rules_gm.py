@@ -6,9 +6,8 @@ a check of #5067 after G38.2 (the retired G505): a probe that does not touch is 
 """
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 
-from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.machine.tables import (
     G_GROUPS,
@@ -76,21 +75,12 @@ def word_combinations(file: SourceFile, project: Project) -> list[Diagnostic]:
 
 def _line_words(codes: BlockCodes, found: list[Diagnostic]) -> None:
     """G501..G503, G506, G507 of one line; a code's word is the last one with that number, and the
-    last F and T words count, as the controller reads a line (one loop each: this runs for most lines)."""
+    last F and T words count, as the controller reads a line (one pass each: this runs for most lines)."""
     block = codes.block
-    feed = tool = None
-    axes = centre = False
-    for word in block.words:
-        letter = word.letter
-        if letter == "F":
-            feed = word
-        elif letter == "T":
-            tool = word
-        elif letter in AXES:
-            axes = True
-        elif letter in CENTRE:
-            centre = True
+    last = {word.letter: word for word in block.words}  # each letter's last word
+    feed, tool = last.get("F"), last.get("T")
     if codes.g:  # G501..G503 are about G codes
+        axes, centre = not AXES.isdisjoint(last), not CENTRE.isdisjoint(last)
         g53 = arc = arc_word = move = None
         g53_motion = False
         for key, word in codes.g:
@@ -150,18 +140,13 @@ def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagn
                      word.span)
 
 
-def _probe_word(g: Iterable[Code]) -> n.Word | None:
-    for key, word in g:
-        if key == PROBE:
-            return word
-    return None
-
-
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
     for block in project.facts(file).coded:
-        word = _probe_word(block.g)
-        if word is not None and not project.is_guarded(file, block.scope):
-            yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
-                     "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
+        for key, word in block.g:  # (a loop here, not a call: this runs for every coded block)
+            if key == PROBE:
+                if not project.is_guarded(file, block.scope):
+                    yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
+                             "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
+                break

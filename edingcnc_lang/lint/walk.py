@@ -7,9 +7,9 @@ parameters a statement reads and writes and whether it ends the program.
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang.machine.tables import SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import constant_index, evaluate, params_in
 
@@ -17,7 +17,7 @@ END_OF_PROGRAM = frozenset(code_key(c) for c in (2, 30))
 Code = tuple[int, n.Word]  # a literal G or M number as integer tenths (G38.2 -> 382) and its word
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Scope:
     """Where a statement sits: its sub (None at top level) and whether the simulation guard covers it."""
 

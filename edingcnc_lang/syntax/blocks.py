@@ -6,12 +6,12 @@ closer into an If/While/Sub node.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Open:
     """A line that opens a block: Sub, If or While (kept until its end line)."""
 
@@ -22,7 +22,7 @@ class Open:
     extra: int = 0  # stray ']' after the condition
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Close:
     """A line that ends a block (EndSub, EndIf, EndWhile) or switches an If to its Else part."""
 

@@ -8,9 +8,9 @@ are decided, once for every stage.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 
 MAX_FIELDS = 15
 MAX_LABEL = 31
@@ -20,7 +20,7 @@ SHAPE = 'write dlgmsg "title" "label" 27 "label" 28 ... (EdingCNC G1167)'
 SYNTAX_CODES = frozenset({"D402", "D403"})
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Field:
     """One field of a dialog: its label and the literal parameter number it edits."""
 
@@ -28,7 +28,7 @@ class Field:
     index: n.Number
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Problem:
     """A shape mistake: its code, message, and the item it is about (None: the whole dialog)."""
 

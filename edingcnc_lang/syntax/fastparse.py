@@ -90,23 +90,24 @@ _Compiled = Callable[..., object] | None
 _N = TypeVar("_N")
 
 
-def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
-    """The compiled tokenizer, block, condition, statement and lines readers (``_lexer.c``), unless
-    they are not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
+def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
+    """The compiled tokenizer, block, condition, statement and lines readers and the block assembler
+    (``_lexer.c``), unless they are not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
     from edingcnc_lang.speedups import PURE_ENV
     from edingcnc_lang.syntax import blocks
 
     if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None, None, None, None
+        return None, None, None, None, None, None
     try:
         from edingcnc_lang import _lexer  # type: ignore[attr-defined]
     except ImportError:
-        return None, None, None, None, None
+        return None, None, None, None, None, None
     _lexer.setup(n, blocks, GIVE_UP, _KEYWORDS - _HANDLED)
-    return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement, _lexer.statements
+    return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement, _lexer.statements, _lexer.assemble
 
 
-_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT, _COMPILED_STATEMENTS = _compiled()
+(_COMPILED, _COMPILED_BLOCK, _COMPILED_CONDITION, _COMPILED_STATEMENT, _COMPILED_STATEMENTS,
+ COMPILED_ASSEMBLE) = _compiled()
 COMPILED_READER = _COMPILED_BLOCK is not None
 
 

@@ -1,12 +1,17 @@
 """The abstract syntax tree: frozen dataclasses with a source span on every node.
 
+Built by ``records.record``, which makes the same classes as ``dataclass(frozen=True, slots=True)``
+in a fraction of the start-up time.
+
 Nothing here knows about Lark; the parser converts its trees into these nodes
 and every later stage (checker, interpreter, linter, printer) works on them.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import NamedTuple, Union
+
+from edingcnc_lang.syntax.records import record
 
 
 class Span(NamedTuple):
@@ -28,7 +33,7 @@ NO_SPAN = Span("<none>", 0, 0, 0, 0)
 
 # --------------------------------------------------------------------------- expressions
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Number:
     """A numeric literal; a leading sign is folded into the value."""
 
@@ -36,7 +41,7 @@ class Number:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Param:
     """``#n`` (index is a Number), ``#[e]`` or ``##n`` (index is another Param)."""
 
@@ -44,7 +49,7 @@ class Param:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Unary:
     """A sign in front of a non-literal operand: ``-#1``, ``+[#2 * 3]``."""
 
@@ -53,7 +58,7 @@ class Unary:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Binary:
     """Arithmetic and logic: ``** * / MOD + - OR XOR AND`` (op upper-cased)."""
 
@@ -63,7 +68,7 @@ class Binary:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Compare:
     """Comparison; op is normalised to one of ``== <> < > <= >=``."""
 
@@ -73,7 +78,7 @@ class Compare:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Call:
     """Function call; ``ATAN[y]/[x]`` has two arguments, the others one."""
 
@@ -87,7 +92,7 @@ Expr = Union[Number, Param, Unary, Binary, Compare, Call]
 
 # --------------------------------------------------------------------------- block items
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Word:
     """A letter word such as ``G1``, ``X[#1+2]`` or ``T[#5011]`` (letter upper-case)."""
 
@@ -96,7 +101,7 @@ class Word:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Assign:
     """``#n = expr``; takes effect after every expression of its line is evaluated."""
 
@@ -107,7 +112,7 @@ class Assign:
 
 # --------------------------------------------------------------------------- statements
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Block:
     """One line of words and assignments (the ordinary G-code line).
 
@@ -123,7 +128,7 @@ class Block:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class PlainBlock:
     """A line of literal words only, as the run's fast path reads it (most CAM output).
 
@@ -137,7 +142,7 @@ class PlainBlock:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class PlainRun:
     """Consecutive top-level plain word lines, as (line number, text), for a run's fast path.
 
@@ -154,7 +159,7 @@ class PlainRun:
         return Span(self.path, first, 1, last, len(self.lines[-1][1]) + 1)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Stamp:
     """``%d`` in a message: the date and time when the message is shown."""
 
@@ -164,7 +169,7 @@ class Stamp:
 MessageItem = Union[str, Expr, Stamp]
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Message:
     """``msg``, ``warnmsg``, ``errmsg`` or ``logmsg`` with concatenated items."""
 
@@ -173,7 +178,7 @@ class Message:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Dialog:
     """``dlgmsg "title" "label" 27 ...``; items kept as written so the linter sees mistakes."""
 
@@ -181,7 +186,7 @@ class Dialog:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class LogFile:
     """``logfile NAME [mode]``: where logmsg writes (mode 0 starts the file afresh, 1 appends)."""
 
@@ -190,7 +195,7 @@ class LogFile:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Home:
     """``home x`` / ``homeTandem x`` (axis upper-case)."""
 
@@ -199,7 +204,7 @@ class Home:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Switch:
     """On/off commands: tanknife, homeIsEstop, TCAGuard, ZHC, LaserEngrave (name lower-case)."""
 
@@ -208,7 +213,7 @@ class Switch:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Kin:
     """``KIN ON|OFF|CTRL id p1..p6|<mapping>``; mode upper-case, args only for CTRL."""
 
@@ -217,7 +222,7 @@ class Kin:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class PrepareLinDeltaHome:
     """``PrepareLinDeltaHome [velocity]``: moves the three delta joints home together, before ``home x`` etc."""
 
@@ -225,7 +230,7 @@ class PrepareLinDeltaHome:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Command:
     """Commands accepted but not modelled in detail (ZHC*, GetToolInfo, modbus, Exec, ...)."""
 
@@ -237,7 +242,7 @@ class Command:
     values: tuple[Expr, ...] | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class GoSub:
     """``GoSub name``: calls a Sub of the file or its macro files."""
 
@@ -245,7 +250,7 @@ class GoSub:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class If:
     """``If [cond] ... [Else ...] EndIf``; ``end_span`` is the EndIf line."""
 
@@ -258,7 +263,7 @@ class If:
     end_span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class While:
     """``While [cond] ... EndWhile``; ``end_span`` is the EndWhile line."""
 
@@ -269,7 +274,7 @@ class While:
     end_span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Sub:
     """``Sub name ... EndSub``: a subroutine, also the way M codes and controller events are defined."""
 
@@ -279,7 +284,7 @@ class Sub:
     end_span: Span = field(default=NO_SPAN, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class BadLine:
     """A macro-file line that does not parse, kept in place: an error only if a run reaches it.
 
@@ -298,7 +303,7 @@ Stmt = Union[Block, PlainBlock, PlainRun, Message, Dialog, LogFile, Home, Switch
              Command, GoSub, If, While, Sub, BadLine]
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Program:
     """A whole file: its statements and the ``@unit`` directive, if any."""
 

@@ -11,10 +11,12 @@ import re
 from array import array
 from bisect import bisect_left
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
+from functools import cache
 from itertools import islice
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.records import record
 from edingcnc_lang import speedups
 from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
@@ -24,7 +26,7 @@ from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_l
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
-from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_statements, new_node
+from edingcnc_lang.syntax.fastparse import COMPILED_ASSEMBLE, COMPILED_READER, GIVE_UP, compiled_statements, new_node
 from edingcnc_lang.syntax.source import iter_file_blocks, iter_text_lines
 from edingcnc_lang.syntax.tree_builder import LineError as _LineError
 
@@ -38,12 +40,6 @@ _UNIT_RE = re.compile(r"^\s*(?:;\s*\*?\s*)?@unit\b\s*(\S*)", re.IGNORECASE)
 RUN_LENGTH = 512  # plain lines per PlainRun chunk: large enough to amortise, small enough to stream
 READ_AHEAD = 128  # lines inside a block the compiled reader reads in one call (tree and lint reads)
 CHUNK_LINES = 8192
-# Runs of plain lines, each with its line end, at most RUN_LENGTH at a time (the regular-expression
-# engine keeps a little memory for each line of a run it matches).  Most plain lines are words with
-# at most one blank after each (CAM output): _SIMPLE_LINES takes a run of those about a third
-# faster, and _PLAIN_LINES goes on from where it stops.
-_PLAIN_LINES = re.compile(rf"(?:{PLAIN_LINE}\n){{0,{RUN_LENGTH}}}")
-_SIMPLE_LINES = re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n){{0,{RUN_LENGTH}}}")
 # In a tolerant read only a line that goes on with '[' is taken for a broken If/While head: prose
 # such as "If the probe does not trip, ..." must not open a block.
 _TOLERANT_CONDITION = re.compile(r"^\s*(if|while)(?![a-z0-9_])\s*\[", re.IGNORECASE)
@@ -66,6 +62,17 @@ def _chunks(blocks: Iterable[list[str]]) -> Iterator[tuple[int, list[str]]]:
             base += len(chunk)
 
 
+@cache
+def _run_patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """Runs of plain lines, each with its line end, at most RUN_LENGTH at a time (the regular-expression
+    engine keeps a little memory for each line of a run it matches).  Most plain lines are words with
+    at most one blank after each (CAM output): the first pattern takes a run of those about a third
+    faster, and the second goes on from where it stops.  Compiled when first used: the compiled core
+    scans in C and never does (they took ~1.5 ms of every start-up)."""
+    return (re.compile(rf"(?:(?:[A-Za-z][+-]?{FAST_NUMBER} ?)+\n){{0,{RUN_LENGTH}}}"),
+            re.compile(rf"(?:{PLAIN_LINE}\n){{0,{RUN_LENGTH}}}"))
+
+
 def non_plain_lines(chunk: list[str]) -> list[int]:
     """Indices of the lines of a chunk that are not plain word lines (``FAST_LINE``): each run of
     plain lines is taken by regular-expression matches, a line they cannot take is an other line.
@@ -74,12 +81,13 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     """
     if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
         return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
+    simple_lines, plain_lines = _run_patterns()
     joined = "\n".join(chunk) + "\n"
     found: list[int] = []
     index, position = 0, 0
     while position < len(joined):
-        simple = _SIMPLE_LINES.match(joined, position).end()  # type: ignore[union-attr]  # (they may take no line)
-        stop = _PLAIN_LINES.match(joined, simple).end()  # type: ignore[union-attr]
+        simple = simple_lines.match(joined, position).end()  # type: ignore[union-attr]  # (they may take no line)
+        stop = plain_lines.match(joined, simple).end()  # type: ignore[union-attr]
         index += joined.count("\n", position, stop)
         if stop == position:  # neither takes this line: it is not plain
             found.append(index)
@@ -91,15 +99,18 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
 
 # --------------------------------------------------------------------------- structure
 
-@dataclass
 class _Frame:
-    """An open block while its body is being collected."""
+    """An open block while its body is being collected (a plain class: one per block, and a
+    dataclass would cost start-up time for nothing)."""
 
-    opener: Open
-    source: str
-    body: list[n.Stmt] = field(default_factory=list)
-    orelse: list[n.Stmt] = field(default_factory=list)
-    in_else: bool = False
+    __slots__ = ("opener", "source", "body", "orelse", "in_else")
+
+    def __init__(self, opener: Open, source: str) -> None:
+        self.opener = opener
+        self.source = source
+        self.body: list[n.Stmt] = []
+        self.orelse: list[n.Stmt] = []
+        self.in_else = False
 
     def add(self, stmt: n.Stmt) -> None:
         (self.orelse if self.in_else else self.body).append(stmt)
@@ -155,7 +166,8 @@ class StatementReader:
         # chunks at the top level and PlainBlock nodes inside blocks, the cheapest forms to execute;
         # "lint" as PlainRun chunks at the top level (the linter keeps the few it needs) and nodes inside.
         self.mode = mode
-        # Line numbers of the lines that are not plain: recorded by a "check" read, reused by a "run" read.
+        # Line numbers of the lines that are not plain: recorded by a "check" read (not by a "lint" read),
+        # reused by a "run" read.
         self.non_plain: Sequence[int] = non_plain if non_plain is not None else array("I")
         self._known = non_plain is not None
         self.unit: str | None = None
@@ -196,36 +208,21 @@ class StatementReader:
                 lineno = base + i
                 if stack and read_ahead and not self._skipped:
                     # Inside a block every line is parsed: the compiled reader reads the next lines in
-                    # one call, and the reader adds most of them to the block without more ado.
+                    # one call, and its assembler adds them to the blocks as _fit would, up to a line
+                    # it leaves to _fit (a dlgmsg, a Sub, an end line that does not fit) or _line.
                     if not ahead <= i < ahead + len(parsed):
                         ahead, parsed = i, compiled_statements(chunk[i:i + READ_AHEAD], path, lineno) or []
+                    stop, done = COMPILED_ASSEMBLE(parsed, i - ahead, chunk, ahead, stack, _Frame,  # type: ignore[misc]
+                                                   MAX_BLOCK_DEPTH)
+                    if stop > i - ahead:
+                        i = ahead + stop
+                        lineno = base + i - 1
+                        if done is not None:
+                            yield done
+                        continue
                     result = parsed[i - ahead]
                     if result is not GIVE_UP:
-                        kind = type(result)
-                        if kind is Close:  # what _fit does, inlined: a block is open and none is skipped
-                            done = self._close(stack, result, chunk[i])  # type: ignore[arg-type]
-                            if done is not None:
-                                yield done
-                        elif kind is Open and result.kind != "Sub":  # type: ignore[union-attr]
-                            self._push(stack, result, chunk[i])  # type: ignore[arg-type]
-                        elif kind is Open or kind is n.Dialog:
-                            yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
-                        else:  # a statement or a blank line, and most likely more of them: add them all
-                            frame = stack[-1]
-                            add = (frame.orelse if frame.in_else else frame.body).append
-                            stop = ahead + len(parsed)
-                            while True:
-                                if result is not None:
-                                    add(result)  # type: ignore[arg-type]
-                                i += 1
-                                if i == stop:
-                                    break
-                                result = parsed[i - ahead]
-                                kind = type(result)
-                                if kind is Open or kind is Close or kind is n.Dialog or result is GIVE_UP:
-                                    break
-                            lineno = base + i - 1
-                            continue
+                        yield from self._fit(stack, result, chunk[i], lineno)  # type: ignore[arg-type]
                         i += 1
                         continue
                 yield from self._line(stack, chunk[i], lineno, bulk)
@@ -246,7 +243,8 @@ class StatementReader:
             last = bisect_left(self.non_plain, base + len(chunk))
             return [number - base for number in self.non_plain[first:last]]
         others = speedups.non_plain_lines(chunk)
-        self.non_plain.extend(base + i for i in others)  # type: ignore[attr-defined]
+        if self.mode != "lint":  # (a lint reads each file once: nobody asks for them)
+            self.non_plain.extend([base + i for i in others])  # type: ignore[attr-defined]
         return others
 
     def _line(self, stack: list[_Frame], text: str, lineno: int, bulk: bool) -> Iterator[n.Stmt]:
@@ -416,7 +414,7 @@ def read_statements(path: str | os.PathLike[str], *, mode: str = "tree",
                            blocks=iter_file_blocks(path))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class CheckedFile:
     """What checking a file found out: its subs, which lines are not plain (for the run's reader), how many lines."""
 
