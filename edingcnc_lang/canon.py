@@ -10,10 +10,11 @@ from __future__ import annotations
 import math
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from typing import Any, Mapping, Protocol, Sequence
 
 from edingcnc_lang.errors import EcncError
+from edingcnc_lang.records import record
 
 
 Pose = tuple[float, ...]  # six values: x y z a b c (or the joints jx .. jc)
@@ -33,7 +34,7 @@ def format_pose(values: Sequence[float] | None, names: Sequence[str] = AXES, spe
 PLANES: Mapping[str, tuple[int, int, int]] = {"XY": (0, 1, 2), "XZ": (2, 0, 1), "YZ": (1, 2, 0)}
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Arc:
     """Circle data of an arc move: centre (machine, in-plane pair), plane, direction and turns."""
 
@@ -43,7 +44,7 @@ class Arc:
     full_turns: int = 0          # extra full revolutions (a full circle has one)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Css:
     """Constant surface speed in force (a lathe's G96): the spindle turns so the edge cuts at ``surface`` mm/min.
 
@@ -70,7 +71,7 @@ class Css:
         return 0.0 if math.isinf(rpm) else 1.0 / rpm
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Move:
     """One executed move; ``feed`` in mm/min (0 for rapids and homing).
 
@@ -95,7 +96,7 @@ class Move:
     caller: int = 0  # a move made inside a sub: the line of the outermost call (GoSub, M code, T M6)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Batch:
     """Moves in bulk: the array form of ``Move`` (a single move is a batch of one).
 
@@ -180,7 +181,7 @@ class Batch:
                    spindle, move.css, move.sync, move.caller, None if move.arc is None else (move.arc,))
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Event:
     """Anything else the machine does: dwell, tool change, spindle, messages, dialogs, I/O, ..."""
 

@@ -7,8 +7,9 @@ kinematics plug-in (``KINS_CODES``, not lint codes).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+
 from enum import Enum
+from edingcnc_lang.records import record
 
 
 class Severity(str, Enum):
@@ -16,7 +17,7 @@ class Severity(str, Enum):
     WARNING = "warning"
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Code:
     """One diagnostic code of the registry: the stable code, its severity and a one-line summary."""
 

@@ -5,13 +5,14 @@ every front end (CLI text, JSON, SARIF, the API) renders them the same way.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+
 
 from edingcnc_lang.codes import Severity, lookup
 from edingcnc_lang.errors import EXIT_SYNTAX, EcncError, Location, printable, shortened
+from edingcnc_lang.records import record
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Diagnostic:
     """One finding at a place in a file: a plain record, so any output format can show it."""
 

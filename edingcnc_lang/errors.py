@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import importlib
 import re
-from dataclasses import dataclass
+
 from types import ModuleType
+from edingcnc_lang.records import record
 
 EXIT_OK = 0
 EXIT_FINDINGS = 1
@@ -45,7 +46,7 @@ def shortened(text: str) -> str:
     return _LONG_WORD.sub(lambda m: f"{m[0][:60]}…{m[0][-20:]} ({len(m[0]):,} characters)", text)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Location:
     """Where something happened; line and col are 1-based, 0 means unknown."""
 

@@ -13,10 +13,11 @@ from datetime import datetime
 
 from edingcnc_lang.canon import Pose
 from edingcnc_lang.syntax.source import plain_float, plain_int
+from edingcnc_lang.records import record
 
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class DialogField:
     """One input field of a dlgmsg dialog, as a host callback is shown it."""
 
@@ -25,7 +26,7 @@ class DialogField:
     value: float  # its current value
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class DialogAnswer:
     """OK with new values for some fields (by parameter number), or Cancel."""
 

@@ -19,6 +19,7 @@ from edingcnc_lang.canon import Pose
 from edingcnc_lang.errors import EcncError, Location, shortened
 from edingcnc_lang.syntax.input_limits import MAX_HEIGHT_MAP_VALUE, MAX_ZHC_POINTS
 from edingcnc_lang.syntax.source import plain_float
+from edingcnc_lang.records import record
 
 TABLE_HEADER = "; ecnc ZHC height table"
 _TABLE_KEYS = ("nx", "ny", "x0", "y0", "dx", "dy")
@@ -28,7 +29,7 @@ class HeightMapError(EcncError):
     """A height map file that cannot be read (names the file and line)."""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class HeightMap:
     """Heights ``z[j][i]`` at the nodes (xs[i], ys[j]); xs and ys strictly increase."""
 
@@ -242,7 +243,7 @@ def _is_number(text: str) -> bool:
     return True
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ProbeAt:
     """Trips a G38.2 move (machine coordinates) where Z first drops to the surface below it."""
 

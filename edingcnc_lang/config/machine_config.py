@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import ConfigError
 from edingcnc_lang.syntax.input_limits import MAX_AXIS_RATE, MIN_AXIS_RATE
+from edingcnc_lang.records import record
 
 if TYPE_CHECKING:
     from edingcnc_lang.config.ini import IniFile
@@ -50,7 +51,7 @@ def is_persisted(n: int) -> bool:
 
 # --------------------------------------------------------------------------- machine model
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class JointConfig:
     """One motor (``[JOINT_n]``): limits in mm or degrees, velocities in units per second."""
 
@@ -66,7 +67,7 @@ class JointConfig:
     visible: bool
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ToolConfig:
     """One tool table entry (``[TOOL_n]``).
 
@@ -84,7 +85,7 @@ class ToolConfig:
     description: str
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class TanKnifeConfig:
     """Tangential knife settings from ``[INTERPRETER]`` (angles in degrees, distances in mm)."""
 
@@ -110,7 +111,7 @@ LATHES = frozenset({TURNING, TURNING_BACK_X})
 SPINDLE_CONFIGS = 5  # [SPINDLE_0]..[SPINDLE_4] (manual 3.7.2)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class MachineConfig:
     """Everything the interpreter, kinematics and simulator need from ``cnc.ini``."""
 

@@ -17,7 +17,7 @@ from operator import itemgetter
 from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 from edingcnc_lang.syntax.fastparse import COMPILED_READER
 from edingcnc_lang.machine.tables import SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import params_in

@@ -7,7 +7,7 @@ from collections.abc import Iterator, Mapping
 from types import MappingProxyType
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import UnreadableFile
 from edingcnc_lang.syntax.line_parser import parse_line

@@ -11,7 +11,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from functools import cached_property
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 from edingcnc_lang.machine.tables import ARG_PARAMS, TOOL_CHANGE, TOOL_CHANGE_SUB, m_code_sub
 from edingcnc_lang.lint.facts import Code, FileFacts, indexed_reads, survey
 from edingcnc_lang.lint.model import SourceFile

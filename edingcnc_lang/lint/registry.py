@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 from edingcnc_lang.codes import CODES
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.lint.model import SourceFile

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 from edingcnc_lang.machine.tables import SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import constant_index, evaluate, params_in
 

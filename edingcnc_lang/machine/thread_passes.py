@@ -16,15 +16,16 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+
 
 from edingcnc_lang.syntax.input_limits import MAX_THREAD_PASSES
+from edingcnc_lang.records import record
 
 class ThreadError(ValueError):
     """G76 words that describe no thread; the message is for the user."""
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class ThreadMove:
     """One move of the cycle: a rapid, or a spindle-synchronised cut advancing ``pitch`` per rev.
 
@@ -38,7 +39,7 @@ class ThreadMove:
     pitch: float = 0.0
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class G76Words:
     """The cycle's words in mm, X distances already radii; ``None`` = not on the line."""
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 
 
 @record(frozen=True)

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 
 MAX_FIELDS = 15
 MAX_LABEL = 31

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import field
 from typing import NamedTuple, Union
 
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 
 
 class Span(NamedTuple):

@@ -16,7 +16,7 @@ from functools import cache
 from itertools import islice
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 from edingcnc_lang import speedups
 from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors

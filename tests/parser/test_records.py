@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.records import record
+from edingcnc_lang.records import record
 
 SPAN = n.Span("a.cnc", 3, 1, 3, 9)
 
@@ -73,7 +73,20 @@ def test_node_classes_are_frozen_slotted_dataclasses() -> None:
         assert again == tree and again.span == SPAN and again.then[0].span == SPAN
 
 
+def test_a_field_made_by_a_factory_is_made_for_each_record() -> None:
+    """As canon.Event's data: the factory is called for every record that does not give the field."""
+    def body() -> dict[str, object]:
+        return {"__annotations__": {"kind": "str", "data": "dict"}, "__module__": __name__,
+                "data": field(default_factory=dict)}
+    stock: Any = dataclass(frozen=True, slots=True)(type("Event", (), body()))
+    fast: Any = record(frozen=True, slots=True)(type("Event", (), body()))
+    assert str(inspect.signature(stock)) == str(inspect.signature(fast)) == "(kind: 'str', data: 'dict' = <factory>) -> None"
+    one, two = fast("dwell"), fast("dwell")
+    assert one.data == {} and one.data is not two.data and one == two and repr(one) == repr(stock("dwell"))
+    assert fast("dwell", {"s": 1}).data == {"s": 1} != one.data
+
+
 def test_a_record_takes_plain_fields_only() -> None:
     with pytest.raises(TypeError, match="plain fields"):
         record(frozen=True)(type("Bad", (), {"__annotations__": {"items": "list"}, "__module__": __name__,
-                                             "items": field(default_factory=list)}))
+                                             "items": field(default=1, init=False)}))

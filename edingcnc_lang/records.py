@@ -35,8 +35,8 @@ def _build(cls: type[T], eq: bool, slots: bool) -> type[T]:
             setattr(cls, name, method)
     made: Any = dataclass(cls, init=False, repr=False, eq=False, slots=slots)  # type: ignore[call-overload]
     for f in fields(made):
-        if f.default_factory is not MISSING or not f.init or f.hash is not None:
-            raise TypeError(f"{cls.__name__}.{f.name}: records.record takes plain fields and defaults only")
+        if not f.init or f.hash is not None:
+            raise TypeError(f"{cls.__name__}.{f.name}: records.record takes plain fields, defaults and factories only")
     if eq:
         made._record_key = staticmethod(_key(tuple(f.name for f in fields(made) if f.compare)))
     made.__init__ = _first_init(made)
@@ -68,22 +68,44 @@ def _first_init(cls: Any) -> Callable[..., None]:
     __init__.__signature__ = Signature(  # type: ignore[attr-defined]
         [Parameter("self", Parameter.POSITIONAL_OR_KEYWORD),
          *(Parameter(f.name, Parameter.POSITIONAL_OR_KEYWORD, annotation=f.type,
-                     default=Parameter.empty if f.default is MISSING else f.default) for f in fields(cls))],
+                     default=_default(f)) for f in fields(cls))],
         return_annotation=None)
     return __init__
 
 
+class _Factory:
+    """The default of a field made by its ``default_factory`` (shown as the decorator shows it)."""
+
+    def __repr__(self) -> str:
+        return "<factory>"
+
+
+_FACTORY = _Factory()
+
+
+def _default(f: Any) -> Any:
+    """A field's default in the signature."""
+    if f.default is not MISSING:
+        return f.default
+    return Parameter.empty if f.default_factory is MISSING else _FACTORY
+
+
 def _init(cls: Any) -> Callable[..., None]:
-    """The ``__init__`` the decorator writes: one parameter per field, defaults kept, each field set
-    past the frozen ``__setattr__``."""
-    params, body, namespace = [], [], {"_set": object.__setattr__}
+    """The ``__init__`` the decorator writes: one parameter per field, defaults kept (a factory called for
+    each record that does not give the field), each field set past the frozen ``__setattr__``."""
+    params, body, namespace = [], [], {"_set": object.__setattr__, "_FACTORY": _FACTORY}
     for f in fields(cls):
-        if f.default is MISSING:
-            params.append(f.name)
-        else:
+        value = f.name
+        if f.default is not MISSING:
             namespace[f"_default_{f.name}"] = f.default
             params.append(f"{f.name}=_default_{f.name}")
-        body.append(f" _set(self, {f.name!r}, {f.name})")
+        elif f.default_factory is not MISSING:
+            namespace[f"_factory_{f.name}"] = f.default_factory
+            params.append(f"{f.name}=_FACTORY")
+            value = f"_factory_{f.name}() if {f.name} is _FACTORY else {f.name}"
+        else:
+            params.append(f.name)
+        body.append(f" _set(self, {f.name!r}, {value})")
     if hasattr(cls, "__post_init__"):
         body.append(" self.__post_init__()")
     exec(f"def __init__(self, {', '.join(params)}):\n" + "\n".join(body or [" pass"]), namespace)
