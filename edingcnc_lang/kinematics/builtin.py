@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import VectorisedKinematics
+from edingcnc_lang.records import record
 
 if TYPE_CHECKING:
     import numpy as np
@@ -54,7 +54,7 @@ class CoreXYKinematics(VectorisedKinematics):
         return pos
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class MappingSpec:
     """One ``KIN`` mode: an axis wrapped onto the A cylinder and/or motors that copy another axis.
 

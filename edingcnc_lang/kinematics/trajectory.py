@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 from edingcnc_lang import speedups
 from edingcnc_lang.canon import PLANES, Arc, Move, Pose
+from edingcnc_lang.records import record
 
 if TYPE_CHECKING:
     import numpy as np
@@ -46,8 +47,8 @@ def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsi
 
 class ArcFrame(NamedTuple):
     """An arc's circle in its plane: in-plane axes ``u``, ``v``, centre, start and end radius,
-    start angle, signed sweep, and its XYZ length (helix included).  A named tuple: the planner makes
-    one per arc of a job, and a frozen dataclass takes five times as long to build."""
+    start angle, signed sweep, and its XYZ length (helix included).  A named tuple: a batch's arcs are
+    read as rows of numbers (``motion.arc_table``), and a frozen dataclass took five times as long to build."""
 
     u: int
     v: int
@@ -100,8 +101,8 @@ def arc_frame_rows(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]
 class Geometry:
     """The path of a move in machine coordinates; ``center`` is None for a straight move.
 
-    Not a frozen dataclass, though nothing changes one once made: the planner makes one per arc of
-    a job, and a frozen one takes several times as long to build."""
+    Not a frozen dataclass, though nothing changes one once made: the motion stage makes one for
+    every move it samples, and a frozen one took several times as long to build."""
 
     start: tuple[float, ...]
     end: tuple[float, ...]
@@ -186,7 +187,7 @@ def arc_geometry(start: Pose, end: Pose, arc: Arc) -> Geometry:
     return Geometry(start, end, (center[0], center[1], center[2]), normal, turns, full)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Dynamics:
     """Peak absolute velocity and acceleration of each axis along a sampled move."""
 

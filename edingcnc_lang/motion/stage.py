@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import operator
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from edingcnc_lang.records import record
 from functools import cached_property
 from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
@@ -73,7 +73,7 @@ class PlannerStage(Protocol):
     def overrides(self) -> Any: ...
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Samples:
     """One move sampled at the interpolation rate: times from the job start, Cartesian poses, joints;
     the planner's time-true samples also carry the path speed (units/s) and acceleration (units/s^2)."""
@@ -85,7 +85,7 @@ class Samples:
     accel: np.ndarray | None = None
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class AxisLimits:
     """Velocity (units/s) and acceleration (units/s^2) limits of the six axes a move is timed against."""
 

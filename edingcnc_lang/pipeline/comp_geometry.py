@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from edingcnc_lang.canon import PLANES, Arc, Move, Pose
+from edingcnc_lang.records import record
 
 if TYPE_CHECKING:
     import numpy as np
@@ -35,7 +36,7 @@ Point = tuple[float, float]
 R = TypeVar("R", float, "np.ndarray")  # one corner (float) or a run of corners (array)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Ops(Generic[R]):
     """The elementary functions for one kind of number (``SCALAR``: floats; ``comp_runs.ARRAYS``: arrays)."""
 
