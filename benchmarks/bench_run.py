@@ -6,7 +6,7 @@ prints medians of CPU and wall time, ratios and peak memory (max RSS of the chil
 table.  rs274 is optional: without it the reference column stays empty.
 
     python benchmarks/bench_run.py               # all benchmarks
-    python benchmarks/bench_run.py --only parse  # one of: parse run run1m macro startup comp cam arcs
+    python benchmarks/bench_run.py --only parse  # one of: parse run run1m macro startup comp cam arcs ijarcs rarcs drill
 """
 from __future__ import annotations
 
@@ -193,6 +193,50 @@ def bench_arcs(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     return _versus_cam(tmp, repeat, 0.6)
 
 
+def write_arc_job(path: Path, count: int, r_form: bool) -> None:
+    """Arcs only, as a contour of small circles writes them: ``count`` half circles along X, with centre words
+    or (``r_form``) R words, a third of those over half a circle (R negative) (the same text for rs274)."""
+    lines = ["G21 G17 G90 G94", "G0 X0 Y0 Z5", "G1 Z-1 F600"]
+    x = 0.0
+    for i in range(count):
+        if r_form:
+            lines.append(f"G{2 if i % 2 else 3} X{x + 2:.4f} Y0 R{1.0 if i % 3 else -1.5}")
+        else:
+            lines.append(f"G{2 if i % 2 else 3} X{x + 2:.4f} Y0 I1.0 J0")
+        x += 2.0
+    path.write_text("\n".join([*lines, "M30"]) + "\n")
+
+
+def write_drill_job(path: Path, holes: int) -> None:
+    """A drilling job as CAM writes one: a G81 cycle, then one line of X Y per hole (seeded, deterministic)."""
+    rng = random.Random(3)
+    lines = ["G21 G17 G90 G94", "G0 X0 Y0 Z5", "S1000 M3", "G98 G81 X1 Y1 Z-2 R1 F300",
+             *(f"X{rng.uniform(0, 200):.3f} Y{rng.uniform(0, 200):.3f}" for _ in range(holes)), "G80", "G0 Z5", "M30"]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def _versus_written(tmp: Path, repeat: int, name: str, label: str, write: Callable[[Path], None]) -> list[tuple[str, str, str, str]]:
+    """A job ``write`` makes (the same text for both programs), with --trace, beside rs274 -g."""
+    job, ngc = tmp / f"{name}.nc", tmp / f"{name}.ngc"
+    write(job)
+    write(ngc)
+    rs274 = shutil.which("rs274")
+    return _versus(f"run {label} (--trace CSV) vs rs274 -g", ECNC_SCRIPT + ["run", str(job), "--trace", str(tmp / "trace.csv")],
+                   [rs274, "-g", str(ngc)] if rs274 else None, repeat)
+
+
+def bench_ijarcs(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    return _versus_written(tmp, repeat, "ij_arcs", "100,000 arcs with centre words", lambda p: write_arc_job(p, 100_000, False))
+
+
+def bench_rarcs(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    return _versus_written(tmp, repeat, "r_arcs", "100,000 R arcs", lambda p: write_arc_job(p, 100_000, True))
+
+
+def bench_drill(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
+    return _versus_written(tmp, repeat, "drill", "20,000 G81 holes", lambda p: write_drill_job(p, 20_000))
+
+
 def bench_run1m(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
     job = tmp / "g1_1m.nc"
     write_g1_job(job, 1_000_000)
@@ -229,7 +273,8 @@ def bench_startup(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
 
 BENCHES: dict[str, Callable[[Path, int], list[tuple[str, str, str, str]]]] = {
     "parse": bench_parse, "run": bench_run, "run1m": bench_run1m, "macro": bench_macro, "startup": bench_startup,
-    "comp": bench_comp, "cam": bench_cam, "arcs": bench_arcs,
+    "comp": bench_comp, "cam": bench_cam, "arcs": bench_arcs, "ijarcs": bench_ijarcs, "rarcs": bench_rarcs,
+    "drill": bench_drill,
 }
 
 
