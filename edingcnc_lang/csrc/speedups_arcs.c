@@ -76,7 +76,12 @@ static PyObject *math_hypot;
 
 static int py_hypot(double a, double b, double *out)
 {
-    PyObject *result = PyObject_CallFunction(math_hypot, "dd", a, b);
+    /* the arguments as objects, no format to read and no tuple: the call goes the vector way */
+    PyObject *first = PyFloat_FromDouble(a), *second = PyFloat_FromDouble(b), *result = NULL;
+    if (first != NULL && second != NULL)
+        result = PyObject_CallFunctionObjArgs(math_hypot, first, second, NULL);
+    Py_XDECREF(first);
+    Py_XDECREF(second);
     if (result == NULL)
         return -1;
     *out = PyFloat_AsDouble(result);
