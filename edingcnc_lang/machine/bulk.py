@@ -17,11 +17,13 @@ the general path's.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
-from edingcnc_lang.canon import Arc, Batch, Pose
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, plain_block, plain_words
 from edingcnc_lang.machine.geometry import RADIUS_TOLERANCE_REL, TINY, ArcError, radius_tolerance
@@ -137,6 +139,25 @@ def _words_row(text: str) -> list[str] | None:
     return row
 
 
+class PendingMoves:
+    """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
+
+    __slots__ = ("start", "kinds", "lines", "ends", "feeds")
+
+    def __init__(self, start: Pose) -> None:
+        self.start = start
+        self.kinds: list[str] = []
+        self.lines: list[int] = []
+        self.ends: list[Pose] = []
+        self.feeds: list[float] = []
+
+    def append(self, kind: str, line: int, end: Pose, feed: float) -> None:
+        self.kinds.append(kind)
+        self.lines.append(line)
+        self.ends.append(end)
+        self.feeds.append(feed)
+
+
 class BulkPath(MachineState):
     """Runs of plain lines: moves in bulk while they are simple, any other line on its own."""
 
@@ -149,8 +170,82 @@ class BulkPath(MachineState):
                 done = self._simple_moves(run.path, lines, done)
             if done < len(lines):
                 lineno, text = lines[done]
-                self.execute(plain_block(text, run.path, lineno))
-                done += 1
+                block = plain_block(text, run.path, lineno)
+                if self._a_hole(block):
+                    done = self._holes_in_bulk(run.path, lines, done, block)
+                else:
+                    self.execute(block)
+                    done += 1
+
+    def _a_hole(self, block: n.PlainBlock) -> bool:
+        """Whether a plain line only drills the next hole of the canned cycle in force (its words are the two
+        axes of the cycle's plane): nothing it does can emit an event or be read before the next line runs."""
+        if self.modal["motion"] not in t.CANNED_CYCLES or self.observer is not None or not self.batchable():
+            return False
+        first, second, _ = PLANES[PLANE_OF[self.modal["plane"]]]
+        return all(letter in (AXES[first], AXES[second]) for letter, _value, _col in block.words)
+
+    def _holes_in_bulk(self, path: str, lines: tuple[tuple[int, str], ...], first: int, block: n.PlainBlock) -> int:
+        """Lines of holes from ``first`` on (``block`` is its own): their straight moves go to the canon as one
+        batch, handed on before the first other line, or an error, as the canned cycles of one line are."""
+        index = first
+        with self.moves_held():
+            while True:
+                self.execute(block)
+                index += 1
+                if index == len(lines):
+                    break
+                block = plain_block(lines[index][1], path, lines[index][0])
+                if not self._a_hole(block):
+                    break
+        return index
+
+    def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None:
+        """Hand ``batch`` to the canon and count it into GetJobDistance, as ``_move`` does one move (the bulk
+        path's runs of lines, a canned cycle's holes).  When a move of it is refused, the position and the
+        distance are those after the moves before it, and the error says how many those were (``done``).
+
+        ``by_line``: the refused move is found by its line (a plain line makes one move, and compensation
+        may hand on more moves than it was given); else by the count the stages give (a cycle's moves share
+        one line; compensation refuses cycles, and stages that split moves count the moves they were given)."""
+        try:
+            self.canon.move_batch(batch)
+        except EcncError as err:
+            if by_line or err.done is None:
+                err.done = next((k for k, number in enumerate(batch.lines)
+                                 if err.location is not None and number == err.location.line), 0)
+            failed = err.done
+            self.travelled(batch.start, batch.ends[:failed], {k: v for k, v in arc_lengths.items() if k < failed})
+            self.pos = list(batch.ends[failed - 1] if failed else batch.start)
+            self.line = batch.lines[failed]  # (a run of holes is handed on after the lines that made it)
+            raise
+        self.travelled(batch.start, batch.ends, arc_lengths)
+        self.pos = list(batch.end)
+
+    @contextmanager
+    def moves_held(self) -> Iterator[None]:
+        """The straight moves made inside go to the canon as one batch (``pending``), handed on before any other
+        move or event (``flush_pending``) and at the end, also when an error ends it: the moves before it were
+        made (one of them refused is the error reported then)."""
+        self.pending = PendingMoves(tuple(self.pos))  # type: ignore[arg-type]
+        try:
+            yield
+            self.flush_pending()
+        except BaseException:
+            self.flush_pending()
+            raise
+        finally:
+            self.pending = None
+
+    def flush_pending(self) -> None:
+        """Hand on the straight moves a canned cycle has collected so far (before an event, another kind of
+        move, or at the end of its line) as one batch; the cycle goes on collecting after them."""
+        pending = self.pending
+        if pending is not None and pending.lines:
+            self.pending = PendingMoves(pending.ends[-1])
+            rpm, _css = self.spindle_along()  # (not under G96: the cycle collects only when batchable)
+            self.make_batch(Batch(self.path, pending.start, pending.kinds, pending.lines, pending.ends, pending.feeds,
+                                  rpm, None, 0.0, self.caller()), {}, by_line=False)
 
     def _exec_plain_lines(self, run: n.PlainRun) -> None:
         """Plain lines one statement at a time, for an observer that watches every line."""
@@ -241,7 +336,6 @@ class BulkPath(MachineState):
                 failed = err.done or 0
                 self.feed = in_force[failed]
                 self.modal["motion"] = self._motion_of(kinds[failed], None if arcs is None else arcs[failed])
-                self.line = numbers[failed]
                 raise
         self.pos = list(pos)
         self.feed = feed

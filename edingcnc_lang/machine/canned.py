@@ -7,8 +7,7 @@ from typing import TYPE_CHECKING
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Event
-from edingcnc_lang.machine.state import (CENTER_WORDS, G_91, G_93, G_99, MachineState, PendingMoves, PLANE_OF,
-                                         format_value)
+from edingcnc_lang.machine.state import CENTER_WORDS, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
 
 G_74 = t.code_key(74)
 G_87 = t.code_key(87)
@@ -26,18 +25,11 @@ class CannedCycles(MachineState):
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         """A cycle line's holes; their straight moves go to the canon as one batch where the bulk path's would
         (``batchable``), handed on before any other move or event of the cycle and before an error it meets."""
-        if not self.batchable():
+        if self.pending is not None or not self.batchable():  # held already (the bulk path's run of holes)
             self._holes(motion, words, span, new_sequence)
             return
-        self.pending = PendingMoves(tuple(self.pos))
-        try:
+        with self.moves_held():
             self._holes(motion, words, span, new_sequence)
-            self.flush_pending()
-        except BaseException:
-            self.flush_pending()  # the moves before it were made (one refused among them is reported instead)
-            raise
-        finally:
-            self.pending = None
 
     def _holes(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         from edingcnc_lang.machine.cycles import CYCLES, NEEDS_Q, NEEDS_SPINDLE, TAPPING, CycleError

@@ -18,7 +18,7 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.errors import EcncError, Location, MachineError
+from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
@@ -26,6 +26,7 @@ from edingcnc_lang.machine.spindle import SpindleError, mean_rpm_points
 from edingcnc_lang.machine.observe import Observer
 
 if TYPE_CHECKING:
+    from edingcnc_lang.machine.bulk import PendingMoves
     from edingcnc_lang.machine.geometry import ArcPlan
 
 INCH = t.MM_PER_INCH
@@ -169,25 +170,6 @@ def xyz_distance(a: list[float] | Pose, b: list[float] | Pose) -> float:
 
 def fmt_point(point: tuple[float, float]) -> str:
     return ", ".join(f"{v:.4f}" for v in point)
-
-
-class PendingMoves:
-    """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
-
-    __slots__ = ("start", "kinds", "lines", "ends", "feeds")
-
-    def __init__(self, start: Pose) -> None:
-        self.start = start
-        self.kinds: list[str] = []
-        self.lines: list[int] = []
-        self.ends: list[Pose] = []
-        self.feeds: list[float] = []
-
-    def append(self, kind: str, line: int, end: Pose, feed: float) -> None:
-        self.kinds.append(kind)
-        self.lines.append(line)
-        self.ends.append(end)
-        self.feeds.append(feed)
 
 
 class MachineState:
@@ -363,37 +345,6 @@ class MachineState:
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position
 
-    def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None:
-        """Hand ``batch`` to the canon and count it into GetJobDistance, as ``_move`` does one move (the bulk
-        path's runs of lines, a canned cycle's holes).  When a move of it is refused, the position and the
-        distance are those after the moves before it, and the error says how many those were (``done``).
-
-        ``by_line``: the refused move is found by its line (a plain line makes one move, and compensation
-        may hand on more moves than it was given); else by the count the stages give (a cycle's moves share
-        one line; compensation refuses cycles, and stages that split moves count the moves they were given)."""
-        try:
-            self.canon.move_batch(batch)
-        except EcncError as err:
-            if by_line or err.done is None:
-                err.done = next((k for k, number in enumerate(batch.lines)
-                                 if err.location is not None and number == err.location.line), 0)
-            failed = err.done
-            self.travelled(batch.start, batch.ends[:failed], {k: v for k, v in arc_lengths.items() if k < failed})
-            self.pos = list(batch.ends[failed - 1] if failed else batch.start)
-            raise
-        self.travelled(batch.start, batch.ends, arc_lengths)
-        self.pos = list(batch.end)
-
-    def flush_pending(self) -> None:
-        """Hand on the straight moves a canned cycle has collected so far (before an event, another kind of
-        move, or at the end of its line) as one batch; the cycle goes on collecting after them."""
-        pending = self.pending
-        if pending is not None and pending.lines:
-            self.pending = PendingMoves(pending.ends[-1])
-            rpm, _css = self.spindle_along()  # (not under G96: the cycle collects only when batchable)
-            self.make_batch(Batch(self.path, pending.start, pending.kinds, pending.lines, pending.ends, pending.feeds,
-                                  rpm, None, 0.0, self.caller()), {}, by_line=False)
-
     def travelled(self, start: Pose | list[float], ends: Sequence[Pose], arc_lengths: Mapping[int, float]) -> None:
         """Count moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does: straight,
         or arcs, whose ``path_length`` the bulk path found as it read them (``arc_lengths``, by index)."""
@@ -460,6 +411,9 @@ class MachineState:
         def _exec_plain_run(self, run: n.PlainRun) -> None: ...                              # bulk.py
         def _exec_plain_lines(self, run: n.PlainRun) -> None: ...                            # bulk.py
         def batchable(self) -> bool: ...                                                     # bulk.py
+        def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None: ...  # bulk.py
+        def moves_held(self) -> AbstractContextManager[None]: ...                            # bulk.py
+        def flush_pending(self) -> None: ...                                                 # bulk.py
         def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None: ...  # messages.py
         def offset(self) -> list[float]: ...                                                 # offsets.py
         def _live_param(self, index: int) -> float: ...                                      # offsets.py

@@ -229,3 +229,37 @@ def test_a_canned_cycles_moves_in_one_batch_are_its_moves_one_by_one(tmp_path: P
         assert "drill.nc:7:1: error: joint Z would reach -5.0000" in batched[1] and -4 < moves[-1].end[2] < -2
     else:
         assert "error" not in batched[1] and len(moves) > 40
+
+
+@pytest.mark.parametrize("x_limit", [300, 150])
+def test_lines_of_holes_in_one_batch_are_their_cycles_one_by_one(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                                 x_limit: int) -> None:
+    """A run of lines that only name the next hole (X Y under G81) goes to the canon as one batch, handed on before
+    the first other line: the same moves, times, state and GetJobDistance as one cycle at a time, also when a hole
+    in the middle of the run is beyond a limit (the error names its line, the state is that before its move)."""
+    from edingcnc_lang.machine.interpreter import Interpreter
+
+    (tmp_path / "cnc.ini").write_text(f"[JOINT_0]\nnegativeLimit = -1\npositiveLimit = {x_limit}\n")
+    holes = "\n".join(f"X{10 + 7 * k} Y{(k * 13) % 50}" for k in range(30))
+    job = tmp_path / "holes.nc"
+    job.write_text(f"G21 G90 G17\nS800 M3\nG0 X0 Y0 Z10\nG98 G81 X5 Y5 Z-3 R2 F250\n{holes}\nM8\nX3 Y3\n"
+                   "G80\n#100 = #5001\nG0 X0 Y0\nM30\n")
+
+    def run() -> tuple[str, str, list[object]]:
+        seen: list[object] = []
+        trace = tmp_path / "trace.csv"
+        options = RunOptions(ini=tmp_path / "cnc.ini", trace=trace, on_move=lambda m, j: seen.append(m),
+                             on_event=seen.append)
+        try:
+            outcome = str(run_file(job, options).to_json())
+        except EcncError as err:
+            outcome = err.format() + str(err.result.to_json())  # type: ignore[attr-defined]
+        return trace.read_text(), outcome, seen
+
+    batched = run()
+    monkeypatch.setattr(Interpreter, "batchable", lambda self: False)
+    assert run() == batched
+    if x_limit == 150:
+        assert "holes.nc:26:1: error: joint X would reach 157.0000" in batched[1]
+    else:
+        assert "error" not in batched[1] and sum(isinstance(m, Move) for m in batched[2]) > 120
