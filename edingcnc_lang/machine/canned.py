@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import cache
+from types import ModuleType
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
@@ -14,6 +16,14 @@ G_87 = t.code_key(87)
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.cycles import Step
+
+
+@cache
+def _cycles() -> ModuleType:
+    """cycles.py, loaded when a job first drills (not at start-up), and then at the cost of a call."""
+    from edingcnc_lang.machine import cycles
+
+    return cycles
 
 
 class CannedCycles(MachineState):
@@ -32,8 +42,7 @@ class CannedCycles(MachineState):
             self._holes(motion, words, span, new_sequence)
 
     def _holes(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
-        from edingcnc_lang.machine.cycles import CYCLES, NEEDS_Q, NEEDS_SPINDLE, TAPPING, CycleError
-
+        cycles = _cycles()
         plane = PLANE_OF[self.modal["plane"]]
         first, second, normal = PLANES[plane]
         drill = AXES[normal]
@@ -54,9 +63,9 @@ class CannedCycles(MachineState):
                 raise self.fail(f"{t.code_name('G', motion)} needs {needed if needed == 'R' else drill}", span)
         if back_boring and "K" not in sticky:
             raise self.fail("G87 needs K, the level the back bore ends at (between the bottom and R)", span)
-        if motion in NEEDS_Q and sticky.get("Q", 0) <= 0:
+        if motion in cycles.NEEDS_Q and sticky.get("Q", 0) <= 0:
             raise self.fail(f"{t.code_name('G', motion)} needs a peck depth Q greater than 0", span)
-        if motion in NEEDS_SPINDLE and (self.spindle == 5 or self.rpm_at(self.pos[0]) <= 0):
+        if motion in cycles.NEEDS_SPINDLE and (self.spindle == 5 or self.rpm_at(self.pos[0]) <= 0):
             raise self.fail(f"{t.code_name('G', motion)} needs the spindle turning: program "
                             f"{'M4' if motion == G_74 else 'M3'} with an S word first", span)
         repeats = words.get("L", 1)
@@ -75,7 +84,7 @@ class CannedCycles(MachineState):
                             f"{drill} ({format_value(bottom / scale)})", span)
         feed = self._feed_for(1.0, words, span)
         # G84/G74 (3.6.20.6/7): F is the pitch, mm per spindle revolution, in G94 as in G95
-        self.cycle_pitch = self.feed if motion in TAPPING else 0.0
+        self.cycle_pitch = self.feed if motion in cycles.TAPPING else 0.0
         if old < r_level:  # start below R: climb to R first
             self._cycle_move("rapid", work, normal, r_level, feed)
             old = self.cycle_initial = r_level
@@ -89,8 +98,8 @@ class CannedCycles(MachineState):
                                 f"{drill} ({format_value(bottom / scale)}) and R ({format_value(r_level / scale)})", span)
             self.cycle_shift = {first: sticky.get("I", 0.0) * scale, second: sticky.get("J", 0.0) * scale}
         try:
-            steps = CYCLES[motion](r_level, bottom, clear, dwell, extra)
-        except CycleError as err:
+            steps = cycles.CYCLES[motion](r_level, bottom, clear, dwell, extra)
+        except cycles.CycleError as err:
             raise self.fail(str(err), span) from None
         hole = list(work)
         cost = int(repeats) * (1 + len(steps))
