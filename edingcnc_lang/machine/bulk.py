@@ -17,7 +17,10 @@ the general path's.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Sequence
+import string
+from collections.abc import Callable, Iterable, Sequence
+from itertools import accumulate, islice, repeat, takewhile
+from operator import add, mul
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
@@ -54,10 +57,19 @@ _USUAL = (rf"[ \t]*(?:[Nn][ \t]*[+-]?{FAST_NUMBER}[ \t]*|)"
           + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE}|)" for a in "GXYZABCF") + r"(?:;.*|)")
 USUAL_ORDER = re.compile(_USUAL + "$")
 _WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
+# A run of lines of one shape (the same letters in the same order, the same G text, no comment), as
+# CAM output and surfacing jobs write them, is read as columns with string methods instead of a match
+# and a loop step per line: the lines are plain (the check pass's FAST_LINE), so deleting the numbers
+# and blanks leaves a line's letters, and blanking the letters leaves its number texts.
+_LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
+_NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
+SHAPE_LEAST = 16  # lines of one shape that make a run worth reading in bulk
+SHAPE_BLOCK = 32  # lines read for the first block of a run of one shape; each further block is four times larger
 
 # What plain_moves returns: the index of the first line it left, the steps it took (lines it
 # consumed), the motion and feed in force after them, and the moves as columns: kinds, line
 # numbers, end points, feeds (0 for rapids) and the feed in force at each move.
+Columns = tuple[list[str], list[int], list[tuple[float, ...]], list[float], list[float]]
 Scanned = tuple[int, int, int, float, list[str], list[int], list[tuple[float, ...]], list[float], list[float]]
 
 
@@ -77,7 +89,11 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
     in_force: list[float] = []
     position = tuple(pos)
     done = 0
-    for lineno, text in lines[first:first + max(room, 0)]:
+    stop = min(len(lines), first + max(room, 0))
+    bulk = True  # whether to look for a run of lines of the shape of this one (_same_shape)
+    index = first
+    while index < stop:
+        lineno, text = lines[index]
         usual = USUAL_ORDER.match(text)
         row = usual.groups() if usual is not None else _words_row(text)
         if row is None:
@@ -115,9 +131,89 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
             numbers.append(lineno)
             ends.append(position)
             in_force.append(new_feed)
+            if bulk and usual is not None and stop - index > SHAPE_LEAST and ";" not in text:
+                # a run of this line's shape ahead (its SHAPE_LEAST-th line, then all of them, checked)?
+                bulk = False  # tried again after a run of one shape, not after a line that starts none
+                shape = text.translate(_LETTERS_OF)
+                if lines[index + SHAPE_LEAST][1].translate(_LETTERS_OF) == shape:
+                    taken = _same_shape(lines, index + 1, stop, shape, g, line_motion, new_feed, position, offset,
+                                        scale, incremental, (kinds, numbers, ends, feeds, in_force))
+                    if taken:
+                        bulk = True
+                        index += taken
+                        done += taken
+                        position = ends[-1]
+                        new_feed = in_force[-1]
         motion, feed = line_motion, new_feed
         done += 1
+        index += 1
     return first + done, done, motion, feed, kinds, numbers, ends, feeds, in_force
+
+
+def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str, g: str | None, motion: int,
+                feed: float, position: tuple[float, ...], offset: Sequence[float], scale: float, incremental: bool,
+                columns: Columns) -> int:
+    """The lines from ``first`` on whose letters are ``shape`` (a line's words in the usual order, no
+    comment) and whose G text is ``g``, taken as the loop of ``plain_moves`` would take them once it has
+    read a line of that shape and appended to ``columns``; returns how many (0 for fewer than SHAPE_LEAST)."""
+    if "\n".join([line for _, line in lines[first:first + SHAPE_LEAST]]).translate(_LETTERS_OF) \
+            != "\n".join([shape] * SHAPE_LEAST):
+        return 0  # too short a run to be worth it (CAM output changes shape every few lines)
+    values: list[str] = []
+    block, start = SHAPE_BLOCK, first
+    while start < stop:
+        texts = [line for _, line in lines[start:min(start + block, stop)]]
+        joined = "\n".join(texts)
+        letters = joined.translate(_LETTERS_OF)
+        if letters != "\n".join([shape] * len(texts)):
+            taken = sum(1 for _ in takewhile(shape.__eq__, letters.split("\n")))
+            values += "\n".join(texts[:taken]).translate(_NUMBERS_OF).split()
+            start += taken
+            break
+        values += joined.translate(_NUMBERS_OF).split()
+        start += len(texts)
+        block *= 4
+    count = start - first
+    if not count:
+        return 0
+    width = len(shape)
+    if g is not None:  # the G word's text, the same on every line
+        at = shape.index("G")
+        codes = values[at::width]
+        if codes.count(g) != count:
+            count = sum(1 for _ in takewhile(g.__eq__, codes))
+    if "F" in shape:
+        given = list(map(float, islice(values, shape.index("F"), width * count, width)))
+        in_force = list(map(mul, given, repeat(scale)))
+        if count and (min(given) < 0 or (motion == G_1 and min(in_force) <= 0)):
+            # stop at the line the loop would stop at (it reports nothing: the general path does)
+            count = next(i for i, (v, f) in enumerate(zip(given, in_force)) if v < 0 or (motion == G_1 and f <= 0))
+            del in_force[count:]
+    elif motion == G_1 and feed <= 0:
+        return 0
+    else:
+        in_force = [feed] * count
+    if not count:
+        return 0
+    axes: list[Iterable[float]] = []
+    for axis, letter in enumerate("XYZABC"):
+        if letter not in shape:
+            axes.append(repeat(position[axis]))
+            continue
+        column: Iterable[float] = map(float, islice(values, shape.index(letter), width * count, width))
+        if axis < 3:
+            column = map(mul, column, repeat(scale))
+        if incremental:
+            axes.append(islice(accumulate(column, add, initial=position[axis]), 1, None))
+        else:
+            axes.append(map(add, repeat(offset[axis]), column))
+    kinds, numbers, ends, feeds, forces = columns
+    ends.extend(zip(*axes))
+    numbers.extend([number for number, _ in lines[first:first + count]])
+    kinds.extend(["linear" if motion == G_1 else "rapid"] * count)
+    feeds.extend(in_force if motion == G_1 else [0.0] * count)
+    forces.extend(in_force)
+    return count
 
 
 def _words_row(text: str) -> list[str] | None:
