@@ -207,6 +207,19 @@ def test_trace_rows_are_the_same_bytes() -> None:
     assert compiled.trace_rows(*args) == trace_rows(*args)
 
 
+@pytest.mark.parametrize("column", [[0.0] * 5, [-0.0] * 5, [0.0, 0.0, -0.0, 0.0, 0.0], [-0.0, 0.0, 0.0, 0.0, 0.0],
+                                    [5.0] * 5, [5.0, 5.0, 5.0, 5.0, 5.000000000000001], [math.nan] * 5,
+                                    [math.inf] * 5, [1e22] * 5, [0.1 + 0.2] * 4 + [0.3]])
+def test_trace_rows_of_constant_columns(column: list[float]) -> None:
+    """A column that is the same in every row is written once (the Python core): to the bit, -0.0 is not 0.0."""
+    for axis in range(6):
+        ends = [tuple(column[row] if k == axis else float(row * k) for k in range(6)) for row in range(5)]
+        for same in (ends, [tuple(column[row] for _ in range(6)) for row in range(5)]):
+            args = (list(range(5)), ["rapid"] * 5, same, "job.nc", [0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+            assert compiled.trace_rows(*args) == trace_rows(*args)
+    assert compiled.trace_rows([], [], [], "job.nc", [0.0]) == trace_rows([], [], [], "job.nc", [0.0]) == ""
+
+
 @settings(max_examples=200, deadline=None)
 @given(st.lists(st.tuples(*[st.floats(allow_nan=False, width=64)] * 7), min_size=1, max_size=20))
 def test_any_double_is_written_as_repr_writes_it(rows: list[tuple[float, ...]]) -> None:
