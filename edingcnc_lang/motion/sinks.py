@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import io
 import math
-from array import array
 import os
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from operator import neg
 from pathlib import Path
 from typing import IO, TYPE_CHECKING
 
@@ -200,9 +200,10 @@ def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose],
     return "".join(map(row.__mod__, zip(lines, kinds, coords, coords, map(repr, times[1:]))))
 
 
-def _same_bits(column: Sequence[float], value: float) -> bool:
-    """Whether every number of ``column`` is ``value`` to the bit: 0.0 == -0.0, but their reprs differ."""
-    return array("d", column).tobytes() == array("d", (value,)).tobytes() * len(column)
+def _same_bits(zeros: Sequence[float], value: float) -> bool:
+    """Whether a column of zeros (0.0 == -0.0, but their reprs differ) are all ``value``'s zero: a sum
+    from -0.0 stays -0.0 only while it adds -0.0."""
+    return math.copysign(1.0, sum(zeros if math.copysign(1.0, value) < 0 else map(neg, zeros), -0.0)) < 0
 
 
 class SamplesWriter:
