@@ -170,7 +170,7 @@ def test_the_targets_of_runs_of_one_shape_are_the_same(runs: list[tuple[str, int
     start = data.draw(st.integers(0, min(3, len(numbered))))
     args = (numbered, start, [1.5, -2.0, 0.25, -0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, -0.0, 45.0],
             scale, incremental, motion, feed, room)
-    assert repr(compiled.plain_moves(*args)) == repr(plain_moves(*args))  # -0.0 too
+    assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args))  # -0.0 too
 
 
 @pytest.mark.parametrize("shape", SHAPES)
@@ -183,7 +183,7 @@ def test_every_ending_of_a_run_of_one_shape(shape: str) -> None:
         for scale, incremental, motion in [(1.0, False, 10), (25.4, True, 0), (1.0, False, NO_MOTION)]:
             args = (tuple(enumerate(texts, 2)), 0, [1.5, -2.0, 0.25, -0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, -0.0, 45.0],
                     scale, incremental, motion, 250.0, 100)
-            assert repr(compiled.plain_moves(*args)) == repr(plain_moves(*args)), (shape, ending)
+            assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args)), (shape, ending)
 
 
 def test_a_run_of_one_shape_is_read_in_bulk(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -193,8 +193,14 @@ def test_a_run_of_one_shape_is_read_in_bulk(monkeypatch: pytest.MonkeyPatch) -> 
     monkeypatch.setattr(bulk, "_same_shape", lambda *args: taken.append(real(*args)) or taken[-1])
     numbered = tuple((number, f"G1 X{number * 0.001:.3f} Y-{number}.5 Z-0") for number in range(3, 204))
     args = (numbered, 0, [0.0] * 6, [0.0, 0.0, 0.0, 0.0, -0.0, 0.0], 1.0, False, 10, 100.0, 500)
-    assert repr(compiled.plain_moves(*args)) == repr(plain_moves(*args))
+    assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args))
     assert taken == [200]
+
+
+def _looking_plain_moves(*args: object) -> object:
+    """``plain_moves`` looking for runs of one shape at every chance (as after a look that found one)."""
+    bulk._looks.found(True)
+    return plain_moves(*args)  # type: ignore[arg-type]
 
 
 def test_trace_rows_are_the_same_bytes() -> None:
@@ -284,3 +290,18 @@ def test_both_cores_write_the_same_trace(tmp_path: Path) -> None:
     in_process = tmp_path / "api.csv"
     run_file(job, RunOptions(trace=in_process))
     assert in_process.read_bytes() == pure.read_bytes()
+
+
+def test_looks_for_runs_of_one_shape_let_more_chances_pass_after_misses() -> None:
+    """The guess of how often to look: 1, 3, 7 ... chances let pass after misses, every chance after a find."""
+    looks = bulk._Looks()
+    passed = []
+    for _ in range(4):
+        looks.found(False)
+        passed.append(looks.skip)
+    assert passed == [1, 3, 7, 15]
+    for _ in range(10):
+        looks.found(False)
+    assert looks.skip == bulk.MAX_SKIP
+    looks.found(True)
+    assert looks.skip == 0

@@ -63,8 +63,26 @@ _WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
 # and blanks leaves a line's letters, and blanking the letters leaves its number texts.
 _LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
 _NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
+_OTHER_LETTERS = str.maketrans(dict.fromkeys("0123456789.+- \tNGXYZABCFngxyzabcf"))  # what is left: other letters
 SHAPE_LEAST = 16  # lines of one shape that make a run worth reading in bulk
 SHAPE_BLOCK = 32  # lines read for the first block of a run of one shape; each further block is four times larger
+
+class _Looks:
+    """How often ``plain_moves`` looks for a run of one shape ahead: a guess for speed alone (the
+    moves are the same either way).  After looks that found none it lets more and more chances pass
+    (1, 3, 7, ... at most MAX_SKIP), so CAM output, whose shape changes every few lines, costs few
+    looks; a look that finds a run looks at every chance again."""
+
+    skip = 0  # chances still to let pass
+    misses = 0  # how many to let pass after the next look that finds none
+
+    def found(self, found: bool) -> None:
+        self.misses = 0 if found else min(2 * self.misses + 1, MAX_SKIP)
+        self.skip = self.misses
+
+
+MAX_SKIP = 63
+_looks = _Looks()
 
 # What plain_moves returns: the index of the first line it left, the steps it took (lines it
 # consumed), the motion and feed in force after them, and the moves as columns: kinds, line
@@ -134,10 +152,15 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
             if bulk and usual is not None and stop - index > SHAPE_LEAST and ";" not in text:
                 # a run of this line's shape ahead (its SHAPE_LEAST-th line, then all of them, checked)?
                 bulk = False  # tried again after a run of one shape, not after a line that starts none
-                shape = text.translate(_LETTERS_OF)
-                if lines[index + SHAPE_LEAST][1].translate(_LETTERS_OF) == shape:
-                    taken = _same_shape(lines, index + 1, stop, shape, g, line_motion, new_feed, position, offset,
-                                        scale, incremental, (kinds, numbers, ends, feeds, in_force))
+                if _looks.skip:
+                    _looks.skip -= 1
+                else:
+                    shape = text.translate(_LETTERS_OF)
+                    taken = 0
+                    if lines[index + SHAPE_LEAST][1].translate(_LETTERS_OF) == shape:
+                        taken = _same_shape(lines, index + 1, stop, shape, g, line_motion, new_feed, position,
+                                            offset, scale, incremental, (kinds, numbers, ends, feeds, in_force))
+                    _looks.found(taken > 0)
                     if taken:
                         bulk = True
                         index += taken
@@ -219,6 +242,8 @@ def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: 
 def _words_row(text: str) -> list[str] | None:
     """The G X Y Z A B C F number texts of a line whose words are in another order ('' where it
     has no such word); None when it has another word (but N) or one twice."""
+    if "(" not in text and ";" not in text and text.translate(_OTHER_LETTERS):
+        return None  # a word of another letter (an arc's centre, M, S, T): told without reading the words
     row = [""] * 8
     seen = ""
     for letter, number in plain_words(text):
