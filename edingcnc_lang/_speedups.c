@@ -1,7 +1,7 @@
 /* The optional compiled core: the hot loops of a big job, byte for byte as the Python reference.
  *
  * non_plain_lines: syntax/parser.py's non_plain_lines (the check pass's scan for lines that are not plain).
- * plain_moves:     machine/bulk.py's plain_moves (runs of plain G0/G1 lines into targets).
+ * plain_moves:     machine/plain_runs.py's plain_moves (runs of plain G0/G1 lines into targets).
  * plain_arc:       machine/bulk.py's BulkPath._arc_of_words (an arc line with centre words or R).
  * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
  * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
@@ -37,7 +37,7 @@ static PyObject *rapid_kind;
 
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
-    {"plain_moves", plain_moves, METH_VARARGS, "interpreter.bulk.plain_moves, compiled."},
+    {"plain_moves", plain_moves, METH_VARARGS, "machine.plain_runs.plain_moves, compiled."},
     {"trace_rows", trace_rows, METH_VARARGS, "outputs.trace_rows, compiled."},
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},

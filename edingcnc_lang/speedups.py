@@ -4,7 +4,7 @@ The compiled core is optional: ``pip install`` builds it when a C compiler is th
 without it when not.  It does exactly what the Python functions do (the equivalence tests run
 both): finding the lines that are not plain word lines in the check pass
 (``syntax.parser.non_plain_lines``), turning runs of plain ``G0``/``G1`` lines into targets
-(``machine.bulk.plain_moves``), formatting trace rows (``motion.sinks.trace_rows``), byte for byte,
+(``machine.plain_runs.plain_moves``), formatting trace rows (``motion.sinks.trace_rows``), byte for byte,
 the bounds of a batch's end points for the limit check (``motion.reach.column_bounds``), the arcs with
 centre words or R of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of a batch's arcs
 (``kinematics.trajectory.arc_frame_rows``).  ``ECNC_PURE_PYTHON=1``
@@ -68,9 +68,9 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
 
 
 def plain_moves(*args: Any) -> Any:
-    """``interpreter.bulk.plain_moves`` on the core that runs (see there)."""
+    """``machine.plain_runs.plain_moves`` on the core that runs (see there)."""
     global plain_moves
-    plain_moves = _pick("plain_moves", ".machine.bulk")
+    plain_moves = _pick("plain_moves", ".machine.plain_runs")
     return plain_moves(*args)
 
 

@@ -24,7 +24,7 @@ from edingcnc_lang.canon import Arc
 from edingcnc_lang.kinematics.trajectory import arc_frame, arc_frame_rows
 from edingcnc_lang.runner import Run
 from edingcnc_lang.machine import bulk
-from edingcnc_lang.machine.bulk import NO_MOTION, plain_moves
+from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
 from edingcnc_lang.motion.reach import column_bounds
 from edingcnc_lang.motion.sinks import trace_rows
@@ -164,6 +164,69 @@ def test_the_targets_of_edge_lines_are_the_same(texts: list[str]) -> None:
         assert compiled.plain_moves(*args) == plain_moves(*args)
 
 
+# Runs of lines of one shape, long enough for plain_moves to read them in bulk (bulk.SHAPE_LEAST), and
+# the lines that end such a run: another shape, another G text, an F that stops the run, a comment.
+SHAPES = ["G1 X{} Y{} Z{}", "N{} G1 X{} Y{}", "n{} g0 x{} y{} z{} a{} b{} c{}", "X{} Y{}", "G01 X {} Z{} F{}",
+          "G1 X{}\tY{} F{}", " G0 Z{} ", "G91 G1 X{} Y{}"]
+ENDINGS = ["G1 X1.0 Y2", "G1.0 X1 Y1 Z1", "G0 X1 Y2 Z3", "G1 X1 Y2 Z3 F0", "G1 X1 Y2 F-1", "G1 X1 Y2 (c)",
+           "G1 X1 Y2 ; c", "G2 X1 Y1 I1 J0", "M5", "X1 Y2 Z3 A4"]
+shape_numbers = st.one_of(st.integers(-99, 999).map(str), st.floats(-500, 500).map(lambda v: f"{v:.3f}"),
+                          st.sampled_from(["-0", "0", ".5", "7.", "+2", "0.000"]))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(SHAPES), st.integers(1, 90), st.sampled_from(ENDINGS + [""])),
+                min_size=1, max_size=4),
+       st.lists(shape_numbers, min_size=7, max_size=7), st.data(), st.sampled_from([1.0, 25.4]), st.booleans(),
+       st.sampled_from([NO_MOTION, 0, 10]), st.sampled_from([0.0, 500.0]), st.integers(0, 400))
+def test_the_targets_of_runs_of_one_shape_are_the_same(runs: list[tuple[str, int, str]], first: list[str],
+                                                       data: st.DataObject, scale: float, incremental: bool,
+                                                       motion: int, feed: float, room: int) -> None:
+    """Long runs of lines of one shape (read in bulk by the Python core), cut by the budget or by another line."""
+    texts: list[str] = []
+    for shape, count, ending in runs:
+        for k in range(count):
+            values = first if k % 7 else data.draw(st.lists(shape_numbers, min_size=7, max_size=7))
+            texts.append(shape.format(*values))
+        if ending:
+            texts.append(ending)
+    numbered = tuple((number, text) for number, text in enumerate(texts, 5) if not non_plain_lines([text]))
+    start = data.draw(st.integers(0, min(3, len(numbered))))
+    args = (numbered, start, [1.5, -2.0, 0.25, -0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, -0.0, 45.0],
+            scale, incremental, motion, feed, room)
+    assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args))  # -0.0 too
+
+
+@pytest.mark.parametrize("shape", SHAPES)
+def test_every_ending_of_a_run_of_one_shape(shape: str) -> None:
+    """Each line that ends a run, after 40 lines of each shape and before 20 more, both ways of counting."""
+    rng = random.Random(shape)
+    for ending in ENDINGS:
+        texts = [shape.format(*(f"{rng.uniform(-50, 50):.{rng.randint(0, 4)}f}" for _ in range(7))) for _ in range(60)]
+        texts.insert(40, ending)
+        for scale, incremental, motion in [(1.0, False, 10), (25.4, True, 0), (1.0, False, NO_MOTION)]:
+            args = (tuple(enumerate(texts, 2)), 0, [1.5, -2.0, 0.25, -0.0, 90.0, 0.0], [10.0, 0.1, -3.0, 0.0, -0.0, 45.0],
+                    scale, incremental, motion, 250.0, 100)
+            assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args)), (shape, ending)
+
+
+def test_a_run_of_one_shape_is_read_in_bulk(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The case above does reach the bulk reader: the 200 lines after the first in one go."""
+    taken: list[int] = []
+    real = bulk._same_shape
+    monkeypatch.setattr(bulk, "_same_shape", lambda *args: taken.append(real(*args)) or taken[-1])
+    numbered = tuple((number, f"G1 X{number * 0.001:.3f} Y-{number}.5 Z-0") for number in range(3, 204))
+    args = (numbered, 0, [0.0] * 6, [0.0, 0.0, 0.0, 0.0, -0.0, 0.0], 1.0, False, 10, 100.0, 500)
+    assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args))
+    assert taken == [200]
+
+
+def _looking_plain_moves(*args: object) -> object:
+    """``plain_moves`` looking for runs of one shape at every chance (as after a look that found one)."""
+    bulk._looks.found(True)
+    return plain_moves(*args)  # type: ignore[arg-type]
+
+
 def test_trace_rows_are_the_same_bytes() -> None:
     values = [0.0, -0.0, 1e-4, 9.99e-5, 0.1 + 0.2, 1 / 3, 40.309, -1000.001, 999999999.999999, 1e9, 2.5e-7,
               123456.789012, 1e22, 5e-324, math.inf, -math.inf, math.nan, 25.4 * 12.345, 7.0, 1]
@@ -172,6 +235,19 @@ def test_trace_rows_are_the_same_bytes() -> None:
     count = len(ends)
     args = (list(range(count)), ["linear", "rapid"] * (count // 2), ends, '"a,b"', times)
     assert compiled.trace_rows(*args) == trace_rows(*args)
+
+
+@pytest.mark.parametrize("column", [[0.0] * 5, [-0.0] * 5, [0.0, 0.0, -0.0, 0.0, 0.0], [-0.0, 0.0, 0.0, 0.0, 0.0],
+                                    [5.0] * 5, [5.0, 5.0, 5.0, 5.0, 5.000000000000001], [math.nan] * 5,
+                                    [math.inf] * 5, [1e22] * 5, [0.1 + 0.2] * 4 + [0.3]])
+def test_trace_rows_of_constant_columns(column: list[float]) -> None:
+    """A column that is the same in every row is written once (the Python core): to the bit, -0.0 is not 0.0."""
+    for axis in range(6):
+        ends = [tuple(column[row] if k == axis else float(row * k) for k in range(6)) for row in range(5)]
+        for same in (ends, [tuple(column[row] for _ in range(6)) for row in range(5)]):
+            args = (list(range(5)), ["rapid"] * 5, same, "job.nc", [0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+            assert compiled.trace_rows(*args) == trace_rows(*args)
+    assert compiled.trace_rows([], [], [], "job.nc", [0.0]) == trace_rows([], [], [], "job.nc", [0.0]) == ""
 
 
 @settings(max_examples=200, deadline=None)
@@ -238,3 +314,18 @@ def test_both_cores_write_the_same_trace(tmp_path: Path) -> None:
     in_process = tmp_path / "api.csv"
     run_file(job, RunOptions(trace=in_process))
     assert in_process.read_bytes() == pure.read_bytes()
+
+
+def test_looks_for_runs_of_one_shape_let_more_chances_pass_after_misses() -> None:
+    """The guess of how often to look: 1, 3, 7 ... chances let pass after misses, every chance after a find."""
+    looks = bulk._Looks()
+    passed = []
+    for _ in range(4):
+        looks.found(False)
+        passed.append(looks.skip)
+    assert passed == [1, 3, 7, 15]
+    for _ in range(10):
+        looks.found(False)
+    assert looks.skip == bulk.MAX_SKIP
+    looks.found(True)
+    assert looks.skip == 0

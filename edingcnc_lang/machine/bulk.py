@@ -3,7 +3,7 @@
 CAM output is mostly lines such as ``G1 X.. Y.. Z..`` and ``G2 X.. Y.. I.. J..``.  While the
 machine is in a state where such a line can only be a straight move or an arc (``batchable``, the
 one place that decides it), a run of them is turned into targets by ``plain_moves`` (straight
-lines) and ``BulkPath._arc_of_words`` (an arc line: the general path's own target and
+lines, ``plain_runs.py``) and ``BulkPath._arc_of_words`` (an arc line: the general path's own target and
 ``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
 general path would have made, with the same spindle and caller.  The step budget and
 GetJobDistance are counted by the general path's own helpers (``MachineState.travelled``); any
@@ -16,8 +16,7 @@ the general path's.
 """
 from __future__ import annotations
 
-import re
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 
 from edingcnc_lang.syntax import nodes as n
@@ -25,8 +24,9 @@ from edingcnc_lang import speedups
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
-from edingcnc_lang.syntax.plain_words import FAST_NUMBER, plain_block, plain_words
+from edingcnc_lang.syntax.plain_words import plain_block, plain_words
 from edingcnc_lang.machine.geometry import RADIUS_TOLERANCE_REL, TINY, ArcError, radius_tolerance
+from edingcnc_lang.machine.plain_runs import NO_MOTION
 from edingcnc_lang.machine.state import (
     AXIS_SET,
     CENTER_WORDS,
@@ -42,7 +42,6 @@ from edingcnc_lang.machine.state import (
     StatementTable,
 )
 
-NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
@@ -50,95 +49,6 @@ _COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
 # length (``path_length``, what GetJobDistance counts).
 ArcLine = tuple[int, float, Pose, Arc, float]
-# The usual order of a CAM line's words, [N] [G] [X] [Y] [Z] [A] [B] [C] [F]; the words are
-# line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.  Each
-# optional word is "(?:...|)", which Python's engine runs faster than "(?:...)?".
-_VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
-_USUAL = (rf"[ \t]*(?:[Nn][ \t]*[+-]?{FAST_NUMBER}[ \t]*|)"
-          + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE}|)" for a in "GXYZABCF") + r"(?:;.*|)")
-USUAL_ORDER = re.compile(_USUAL + "$")
-_WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
-
-# What plain_moves returns: the index of the first line it left, the steps it took (lines it
-# consumed), the motion and feed in force after them, and the moves as columns: kinds, line
-# numbers, end points, feeds (0 for rapids) and the feed in force at each move.
-Scanned = tuple[int, int, int, float, list[str], list[int], list[tuple[float, ...]], list[float], list[float]]
-
-
-def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[float], offset: Sequence[float],
-                scale: float, incremental: bool, motion: int, feed: float, room: int) -> Scanned:
-    """Targets of lines[first:] while each is a plain straight move: the batch form of a line's steps.
-
-    A line may hold G0/G1, X Y Z A B C, F and N words, each once, and nothing else; F >= 0; a G1
-    needs a feed.  Axis values are scaled by ``scale`` (inch) on X Y Z; a target is the position
-    plus the value under G91, the work offset plus it under G90, as the general path's
-    ``_target``.  It stops at the first other line, or after ``room`` lines (the step budget).
-    """
-    kinds: list[str] = []
-    numbers: list[int] = []
-    ends: list[tuple[float, ...]] = []
-    feeds: list[float] = []
-    in_force: list[float] = []
-    position = tuple(pos)
-    done = 0
-    for lineno, text in lines[first:first + max(room, 0)]:
-        usual = USUAL_ORDER.match(text)
-        row = usual.groups() if usual is not None else _words_row(text)
-        if row is None:
-            break
-        g, x, y, z, a, b, c, f = row  # the number texts, empty or None where the line has no such word
-        line_motion, new_feed = motion, feed
-        if g:
-            value = float(g)
-            if value != 0.0 and value != 1.0:
-                break
-            line_motion = G_0 if value == 0.0 else G_1
-        if f:
-            value = float(f)
-            if value < 0:
-                break
-            new_feed = value * scale
-        if line_motion == NO_MOTION:
-            break
-        if x or y or z or a or b or c:
-            if line_motion == G_1:
-                if new_feed <= 0:
-                    break
-                kinds.append("linear")
-                feeds.append(new_feed)
-            else:
-                kinds.append("rapid")
-                feeds.append(0.0)
-            base = position if incremental else offset
-            position = (base[0] + float(x) * scale if x else position[0],
-                        base[1] + float(y) * scale if y else position[1],
-                        base[2] + float(z) * scale if z else position[2],
-                        base[3] + float(a) if a else position[3],
-                        base[4] + float(b) if b else position[4],
-                        base[5] + float(c) if c else position[5])
-            numbers.append(lineno)
-            ends.append(position)
-            in_force.append(new_feed)
-        motion, feed = line_motion, new_feed
-        done += 1
-    return first + done, done, motion, feed, kinds, numbers, ends, feeds, in_force
-
-
-def _words_row(text: str) -> list[str] | None:
-    """The G X Y Z A B C F number texts of a line whose words are in another order ('' where it
-    has no such word); None when it has another word (but N) or one twice."""
-    row = [""] * 8
-    seen = ""
-    for letter, number in plain_words(text):
-        letter = letter.upper()
-        if letter in seen or (letter not in _WORD_COLUMN and letter != "N"):
-            return None
-        seen += letter
-        if letter != "N":
-            row[_WORD_COLUMN[letter]] = number
-    return row
-
-
 class PendingMoves:
     """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
 

@@ -13,6 +13,7 @@ import math
 import os
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from operator import neg
 from pathlib import Path
 from typing import IO, TYPE_CHECKING
 
@@ -177,11 +178,32 @@ def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose],
                times: Sequence[float]) -> str:
     """The trace rows of straight moves whose joints are their end points (``times[i + 1]``: when move i ends).
 
+    A coordinate that is the same in every row (A B C mostly, Z on a pass at one depth) is written
+    once into the format instead of once a row: ``repr`` is most of the cost.
     The reference for ``speedups.trace_rows``, which must give the same text byte for byte.
     """
-    coords = list(map(SIX_REPR.__mod__, ends))
-    row = "%s,%s,%s,%s," + name.replace("%", "%%") + ",%r\n"  # one format per row, applied in C
-    return "".join(map(row.__mod__, zip(lines, kinds, coords, coords, times[1:])))
+    count = len(ends)
+    if not count:
+        return ""
+    fields = []
+    varying = []
+    for column in zip(*ends):
+        value = column[0]
+        if column.count(value) == count and (value != 0.0 or _same_bits(column, value)):
+            fields.append(repr(value))
+        else:
+            fields.append("%r")
+            varying.append(column)
+    coordinate = ",".join(fields)
+    coords = list(map(coordinate.__mod__, zip(*varying))) if varying else [coordinate] * count
+    row = "%s,%s,%s,%s," + name.replace("%", "%%") + ",%s\n"  # one format per row, applied in C
+    return "".join(map(row.__mod__, zip(lines, kinds, coords, coords, map(repr, times[1:]))))
+
+
+def _same_bits(zeros: Sequence[float], value: float) -> bool:
+    """Whether a column of zeros (0.0 == -0.0, but their reprs differ) are all ``value``'s zero: a sum
+    from -0.0 stays -0.0 only while it adds -0.0."""
+    return math.copysign(1.0, sum(zeros if math.copysign(1.0, value) < 0 else map(neg, zeros), -0.0)) < 0
 
 
 class SamplesWriter:

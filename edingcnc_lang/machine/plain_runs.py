@@ -1,0 +1,221 @@
+"""Runs of plain G0/G1 lines turned into targets: ``plain_moves``, the Python reference of the compiled
+``speedups.plain_moves`` (``csrc/speedups_plain.c``), which the bulk path (``bulk.py``) calls for the
+straight lines of a run.  Both give the same columns for the same lines, to the bit (tests/test_speedups.py).
+"""
+from __future__ import annotations
+
+import re
+import string
+from collections.abc import Iterable, Sequence
+from itertools import accumulate, islice, repeat, takewhile
+from operator import add, mul
+
+from edingcnc_lang.syntax.plain_words import FAST_NUMBER, plain_words
+from edingcnc_lang.machine.state import G_0, G_1
+
+NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
+# The usual order of a CAM line's words, [N] [G] [X] [Y] [Z] [A] [B] [C] [F]; the words are
+# line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.  Each
+# optional word is "(?:...|)", which Python's engine runs faster than "(?:...)?".
+_VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
+_USUAL = (rf"[ \t]*(?:[Nn][ \t]*[+-]?{FAST_NUMBER}[ \t]*|)"
+          + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE}|)" for a in "GXYZABCF") + r"(?:;.*|)")
+USUAL_ORDER = re.compile(_USUAL + "$")
+_WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
+# A run of lines of one shape (the same letters in the same order, the same G text, no comment), as
+# CAM output and surfacing jobs write them, is read as columns with string methods instead of a match
+# and a loop step per line: the lines are plain (the check pass's FAST_LINE), so deleting the numbers
+# and blanks leaves a line's letters, and blanking the letters leaves its number texts.
+_LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
+_NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
+_OTHER_LETTERS = str.maketrans(dict.fromkeys("0123456789.+- \tNGXYZABCFngxyzabcf"))  # what is left: other letters
+SHAPE_LEAST = 16  # lines of one shape that make a run worth reading in bulk
+SHAPE_BLOCK = 32  # lines read for the first block of a run of one shape; each further block is four times larger
+
+class _Looks:
+    """How often ``plain_moves`` looks for a run of one shape ahead: a guess for speed alone (the
+    moves are the same either way).  After looks that found none it lets more and more chances pass
+    (1, 3, 7, ... at most MAX_SKIP), so CAM output, whose shape changes every few lines, costs few
+    looks; a look that finds a run looks at every chance again."""
+
+    skip = 0  # chances still to let pass
+    misses = 0  # how many to let pass after the next look that finds none
+
+    def found(self, found: bool) -> None:
+        self.misses = 0 if found else min(2 * self.misses + 1, MAX_SKIP)
+        self.skip = self.misses
+
+
+MAX_SKIP = 63
+_looks = _Looks()
+
+# What plain_moves returns: the index of the first line it left, the steps it took (lines it
+# consumed), the motion and feed in force after them, and the moves as columns: kinds, line
+# numbers, end points, feeds (0 for rapids) and the feed in force at each move.
+Columns = tuple[list[str], list[int], list[tuple[float, ...]], list[float], list[float]]
+Scanned = tuple[int, int, int, float, list[str], list[int], list[tuple[float, ...]], list[float], list[float]]
+
+
+def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[float], offset: Sequence[float],
+                scale: float, incremental: bool, motion: int, feed: float, room: int) -> Scanned:
+    """Targets of lines[first:] while each is a plain straight move: the batch form of a line's steps.
+
+    A line may hold G0/G1, X Y Z A B C, F and N words, each once, and nothing else; F >= 0; a G1
+    needs a feed.  Axis values are scaled by ``scale`` (inch) on X Y Z; a target is the position
+    plus the value under G91, the work offset plus it under G90, as the general path's
+    ``_target``.  It stops at the first other line, or after ``room`` lines (the step budget).
+    """
+    kinds: list[str] = []
+    numbers: list[int] = []
+    ends: list[tuple[float, ...]] = []
+    feeds: list[float] = []
+    in_force: list[float] = []
+    position = tuple(pos)
+    done = 0
+    stop = min(len(lines), first + max(room, 0))
+    bulk = True  # whether to look for a run of lines of the shape of this one (_same_shape)
+    index = first
+    while index < stop:
+        lineno, text = lines[index]
+        usual = USUAL_ORDER.match(text)
+        row = usual.groups() if usual is not None else _words_row(text)
+        if row is None:
+            break
+        g, x, y, z, a, b, c, f = row  # the number texts, empty or None where the line has no such word
+        line_motion, new_feed = motion, feed
+        if g:
+            value = float(g)
+            if value != 0.0 and value != 1.0:
+                break
+            line_motion = G_0 if value == 0.0 else G_1
+        if f:
+            value = float(f)
+            if value < 0:
+                break
+            new_feed = value * scale
+        if line_motion == NO_MOTION:
+            break
+        if x or y or z or a or b or c:
+            if line_motion == G_1:
+                if new_feed <= 0:
+                    break
+                kinds.append("linear")
+                feeds.append(new_feed)
+            else:
+                kinds.append("rapid")
+                feeds.append(0.0)
+            base = position if incremental else offset
+            position = (base[0] + float(x) * scale if x else position[0],
+                        base[1] + float(y) * scale if y else position[1],
+                        base[2] + float(z) * scale if z else position[2],
+                        base[3] + float(a) if a else position[3],
+                        base[4] + float(b) if b else position[4],
+                        base[5] + float(c) if c else position[5])
+            numbers.append(lineno)
+            ends.append(position)
+            in_force.append(new_feed)
+            if bulk and usual is not None and stop - index > SHAPE_LEAST and ";" not in text:
+                # a run of this line's shape ahead (its SHAPE_LEAST-th line, then all of them, checked)?
+                bulk = False  # tried again after a run of one shape, not after a line that starts none
+                if _looks.skip:
+                    _looks.skip -= 1
+                else:
+                    shape = text.translate(_LETTERS_OF)
+                    taken = 0
+                    if lines[index + SHAPE_LEAST][1].translate(_LETTERS_OF) == shape:
+                        taken = _same_shape(lines, index + 1, stop, shape, g, line_motion, new_feed, position,
+                                            offset, scale, incremental, (kinds, numbers, ends, feeds, in_force))
+                    _looks.found(taken > 0)
+                    if taken:
+                        bulk = True
+                        index += taken
+                        done += taken
+                        position = ends[-1]
+                        new_feed = in_force[-1]
+        motion, feed = line_motion, new_feed
+        done += 1
+        index += 1
+    return first + done, done, motion, feed, kinds, numbers, ends, feeds, in_force
+
+
+def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str, g: str | None, motion: int,
+                feed: float, position: tuple[float, ...], offset: Sequence[float], scale: float, incremental: bool,
+                columns: Columns) -> int:
+    """The lines from ``first`` on whose letters are ``shape`` (a line's words in the usual order, no
+    comment) and whose G text is ``g``, taken as the loop of ``plain_moves`` would take them once it has
+    read a line of that shape and appended to ``columns``; returns how many (0 for fewer than SHAPE_LEAST)."""
+    if "\n".join([line for _, line in lines[first:first + SHAPE_LEAST]]).translate(_LETTERS_OF) \
+            != "\n".join([shape] * SHAPE_LEAST):
+        return 0  # too short a run to be worth it (CAM output changes shape every few lines)
+    values: list[str] = []
+    block, start = SHAPE_BLOCK, first
+    while start < stop:
+        texts = [line for _, line in lines[start:min(start + block, stop)]]
+        joined = "\n".join(texts)
+        letters = joined.translate(_LETTERS_OF)
+        if letters != "\n".join([shape] * len(texts)):
+            taken = sum(1 for _ in takewhile(shape.__eq__, letters.split("\n")))
+            values += "\n".join(texts[:taken]).translate(_NUMBERS_OF).split()
+            start += taken
+            break
+        values += joined.translate(_NUMBERS_OF).split()
+        start += len(texts)
+        block *= 4
+    count = start - first
+    if not count:
+        return 0
+    width = len(shape)
+    if g is not None:  # the G word's text, the same on every line
+        at = shape.index("G")
+        codes = values[at::width]
+        if codes.count(g) != count:
+            count = sum(1 for _ in takewhile(g.__eq__, codes))
+    if "F" in shape:
+        given = list(map(float, islice(values, shape.index("F"), width * count, width)))
+        in_force = list(map(mul, given, repeat(scale)))
+        if count and (min(given) < 0 or (motion == G_1 and min(in_force) <= 0)):
+            # stop at the line the loop would stop at (it reports nothing: the general path does)
+            count = next(i for i, (v, f) in enumerate(zip(given, in_force)) if v < 0 or (motion == G_1 and f <= 0))
+            del in_force[count:]
+    elif motion == G_1 and feed <= 0:
+        return 0
+    else:
+        in_force = [feed] * count
+    if not count:
+        return 0
+    axes: list[Iterable[float]] = []
+    for axis, letter in enumerate("XYZABC"):
+        if letter not in shape:
+            axes.append(repeat(position[axis]))
+            continue
+        column: Iterable[float] = map(float, islice(values, shape.index(letter), width * count, width))
+        if axis < 3:
+            column = map(mul, column, repeat(scale))
+        if incremental:
+            axes.append(islice(accumulate(column, add, initial=position[axis]), 1, None))
+        else:
+            axes.append(map(add, repeat(offset[axis]), column))
+    kinds, numbers, ends, feeds, forces = columns
+    ends.extend(zip(*axes))
+    numbers.extend([number for number, _ in lines[first:first + count]])
+    kinds.extend(["linear" if motion == G_1 else "rapid"] * count)
+    feeds.extend(in_force if motion == G_1 else [0.0] * count)
+    forces.extend(in_force)
+    return count
+
+
+def _words_row(text: str) -> list[str] | None:
+    """The G X Y Z A B C F number texts of a line whose words are in another order ('' where it
+    has no such word); None when it has another word (but N) or one twice."""
+    if "(" not in text and ";" not in text and text.translate(_OTHER_LETTERS):
+        return None  # a word of another letter (an arc's centre, M, S, T): told without reading the words
+    row = [""] * 8
+    seen = ""
+    for letter, number in plain_words(text):
+        letter = letter.upper()
+        if letter in seen or (letter not in _WORD_COLUMN and letter != "N"):
+            return None
+        seen += letter
+        if letter != "N":
+            row[_WORD_COLUMN[letter]] = number
+    return row
