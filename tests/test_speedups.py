@@ -23,7 +23,7 @@ from edingcnc_lang import RunOptions, run_file
 from edingcnc_lang.canon import Arc
 from edingcnc_lang.kinematics.trajectory import arc_frame, arc_frame_rows
 from edingcnc_lang.runner import Run
-from edingcnc_lang.machine import bulk
+from edingcnc_lang.machine import bulk, plain_runs
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
 from edingcnc_lang.motion.reach import column_bounds
@@ -164,7 +164,7 @@ def test_the_targets_of_edge_lines_are_the_same(texts: list[str]) -> None:
         assert compiled.plain_moves(*args) == plain_moves(*args)
 
 
-# Runs of lines of one shape, long enough for plain_moves to read them in bulk (bulk.SHAPE_LEAST), and
+# Runs of lines of one shape, long enough for plain_moves to read them in bulk (plain_runs.SHAPE_LEAST), and
 # the lines that end such a run: another shape, another G text, an F that stops the run, a comment.
 SHAPES = ["G1 X{} Y{} Z{}", "N{} G1 X{} Y{}", "n{} g0 x{} y{} z{} a{} b{} c{}", "X{} Y{}", "G01 X {} Z{} F{}",
           "G1 X{}\tY{} F{}", " G0 Z{} ", "G91 G1 X{} Y{}"]
@@ -213,8 +213,8 @@ def test_every_ending_of_a_run_of_one_shape(shape: str) -> None:
 def test_a_run_of_one_shape_is_read_in_bulk(monkeypatch: pytest.MonkeyPatch) -> None:
     """The case above does reach the bulk reader: the 200 lines after the first in one go."""
     taken: list[int] = []
-    real = bulk._same_shape
-    monkeypatch.setattr(bulk, "_same_shape", lambda *args: taken.append(real(*args)) or taken[-1])
+    real = plain_runs._same_shape
+    monkeypatch.setattr(plain_runs, "_same_shape", lambda *args: taken.append(real(*args)) or taken[-1])
     numbered = tuple((number, f"G1 X{number * 0.001:.3f} Y-{number}.5 Z-0") for number in range(3, 204))
     args = (numbered, 0, [0.0] * 6, [0.0, 0.0, 0.0, 0.0, -0.0, 0.0], 1.0, False, 10, 100.0, 500)
     assert repr(compiled.plain_moves(*args)) == repr(_looking_plain_moves(*args))
@@ -223,7 +223,7 @@ def test_a_run_of_one_shape_is_read_in_bulk(monkeypatch: pytest.MonkeyPatch) -> 
 
 def _looking_plain_moves(*args: object) -> object:
     """``plain_moves`` looking for runs of one shape at every chance (as after a look that found one)."""
-    bulk._looks.found(True)
+    plain_runs._looks.found(True)
     return plain_moves(*args)  # type: ignore[arg-type]
 
 
@@ -318,7 +318,7 @@ def test_both_cores_write_the_same_trace(tmp_path: Path) -> None:
 
 def test_looks_for_runs_of_one_shape_let_more_chances_pass_after_misses() -> None:
     """The guess of how often to look: 1, 3, 7 ... chances let pass after misses, every chance after a find."""
-    looks = bulk._Looks()
+    looks = plain_runs._Looks()
     passed = []
     for _ in range(4):
         looks.found(False)
@@ -326,6 +326,6 @@ def test_looks_for_runs_of_one_shape_let_more_chances_pass_after_misses() -> Non
     assert passed == [1, 3, 7, 15]
     for _ in range(10):
         looks.found(False)
-    assert looks.skip == bulk.MAX_SKIP
+    assert looks.skip == plain_runs.MAX_SKIP
     looks.found(True)
     assert looks.skip == 0
