@@ -31,6 +31,7 @@ _NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
 _OTHER_LETTERS = str.maketrans(dict.fromkeys("0123456789.+- \tNGXYZABCFngxyzabcf"))  # what is left: other letters
 SHAPE_LEAST = 16  # lines of one shape that make a run worth reading in bulk
 SHAPE_BLOCK = 32  # lines read for the first block of a run of one shape; each further block is four times larger
+MAX_SKIP = 63  # chances let pass at most after looks for a run of one shape that found none
 
 class _Looks:
     """How often ``plain_moves`` looks for a run of one shape ahead: a guess for speed alone (the
@@ -46,7 +47,6 @@ class _Looks:
         self.skip = self.misses
 
 
-MAX_SKIP = 63
 _looks = _Looks()
 
 # What plain_moves returns: the index of the first line it left, the steps it took (lines it
@@ -64,6 +64,7 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
     needs a feed.  Axis values are scaled by ``scale`` (inch) on X Y Z; a target is the position
     plus the value under G91, the work offset plus it under G90, as the general path's
     ``_target``.  It stops at the first other line, or after ``room`` lines (the step budget).
+    ``lines`` are plain lines (the check pass's ``FAST_LINE``), which a run of one shape relies on.
     """
     kinds: list[str] = []
     numbers: list[int] = []
