@@ -198,23 +198,15 @@ M30
 """
 
 
-@pytest.mark.parametrize("z_limit", [-10, -4])
-def test_a_canned_cycles_moves_in_one_batch_are_its_moves_one_by_one(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
-                                                                      z_limit: int) -> None:
-    """A cycle line's straight moves go to the canon as one batch, handed on before its dwells, spindle stops
-    and the next statement: the same moves, events, times, GetJobDistance and state as one move at a time,
-    also when a peck deep in the G83 hole is refused below a limit (the state is that after the peck before it)."""
+def _batched_and_one_by_one(job: Path, ini: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[str, str, list[object]]:
+    """The trace, the result (or the error and the state it left) and the moves and events of ``job``, run with
+    batches and then with ``batchable()`` off (one move at a time): they must be the same; the first is returned."""
     from edingcnc_lang.machine.interpreter import Interpreter
-
-    (tmp_path / "cnc.ini").write_text(f"[JOINT_2]\nnegativeLimit = {z_limit}\n")
-    job = tmp_path / "drill.nc"
-    job.write_text(CYCLE_JOB)
 
     def run() -> tuple[str, str, list[object]]:
         seen: list[object] = []
-        trace = tmp_path / "trace.csv"
-        options = RunOptions(ini=tmp_path / "cnc.ini", trace=trace, on_move=lambda m, j: seen.append(m),
-                             on_event=seen.append)
+        trace = job.with_suffix(".csv")
+        options = RunOptions(ini=ini, trace=trace, on_move=lambda m, j: seen.append(m), on_event=seen.append)
         try:
             outcome = str(run_file(job, options).to_json())
         except EcncError as err:
@@ -224,6 +216,20 @@ def test_a_canned_cycles_moves_in_one_batch_are_its_moves_one_by_one(tmp_path: P
     batched = run()
     monkeypatch.setattr(Interpreter, "batchable", lambda self: False)
     assert run() == batched
+    return batched
+
+
+@pytest.mark.parametrize("z_limit", [-10, -4])
+def test_a_canned_cycles_moves_in_one_batch_are_its_moves_one_by_one(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                                      z_limit: int) -> None:
+    """A cycle line's straight moves go to the canon as one batch, handed on before its dwells, spindle stops
+    and the next statement: the same moves, events, times, GetJobDistance and state as one move at a time,
+    also when a peck deep in the G83 hole is refused below a limit (the state is that after the peck before it)."""
+    (tmp_path / "cnc.ini").write_text(f"[JOINT_2]\nnegativeLimit = {z_limit}\n")
+    job = tmp_path / "drill.nc"
+    job.write_text(CYCLE_JOB)
+
+    batched = _batched_and_one_by_one(job, tmp_path / "cnc.ini", monkeypatch)
     moves = [m for m in batched[2] if isinstance(m, Move)]
     if z_limit == -4:
         assert "drill.nc:7:1: error: joint Z would reach -5.0000" in batched[1] and -4 < moves[-1].end[2] < -2
@@ -237,28 +243,13 @@ def test_lines_of_holes_in_one_batch_are_their_cycles_one_by_one(tmp_path: Path,
     """A run of lines that only name the next hole (X Y under G81) goes to the canon as one batch, handed on before
     the first other line: the same moves, times, state and GetJobDistance as one cycle at a time, also when a hole
     in the middle of the run is beyond a limit (the error names its line, the state is that before its move)."""
-    from edingcnc_lang.machine.interpreter import Interpreter
-
     (tmp_path / "cnc.ini").write_text(f"[JOINT_0]\nnegativeLimit = -1\npositiveLimit = {x_limit}\n")
     holes = "\n".join(f"X{10 + 7 * k} Y{(k * 13) % 50}" for k in range(30))
     job = tmp_path / "holes.nc"
     job.write_text(f"G21 G90 G17\nS800 M3\nG0 X0 Y0 Z10\nG98 G81 X5 Y5 Z-3 R2 F250\n{holes}\nM8\nX3 Y3\n"
                    "G80\n#100 = #5001\nG0 X0 Y0\nM30\n")
 
-    def run() -> tuple[str, str, list[object]]:
-        seen: list[object] = []
-        trace = tmp_path / "trace.csv"
-        options = RunOptions(ini=tmp_path / "cnc.ini", trace=trace, on_move=lambda m, j: seen.append(m),
-                             on_event=seen.append)
-        try:
-            outcome = str(run_file(job, options).to_json())
-        except EcncError as err:
-            outcome = err.format() + str(err.result.to_json())  # type: ignore[attr-defined]
-        return trace.read_text(), outcome, seen
-
-    batched = run()
-    monkeypatch.setattr(Interpreter, "batchable", lambda self: False)
-    assert run() == batched
+    batched = _batched_and_one_by_one(job, tmp_path / "cnc.ini", monkeypatch)
     if x_limit == 150:
         assert "holes.nc:26:1: error: joint X would reach 157.0000" in batched[1]
     else:
