@@ -5,8 +5,8 @@ Python 3.10-3.12 (``__init__``, ``__repr__``, ``__eq__``, ``__hash__``, ``__seta
 ``__delattr__``: one ``exec`` each); for the syntax tree's 26 classes that was about 30 ms of
 every command's start-up. ``record`` still lets ``dataclasses.dataclass`` read the fields (so
 ``fields``, ``replace``, ``is_dataclass``, ``__match_args__`` and the slots are the standard
-ones) but compiles only ``__init__``, when it is first called, and shares one function per other
-method among all classes, each driven by the class's tuple of compared fields. Equality (spans with
+ones) but compiles nothing: ``__init__`` is a closure over the class's fields, and every other
+method is one function shared by all classes, driven by the class's tuple of compared fields. Equality (spans with
 ``compare=False`` left out), hashing, repr, copying and immutability behave as the decorator's.
 Type checkers see the decorator itself.
 """
@@ -39,7 +39,7 @@ def _build(cls: type[T], eq: bool, slots: bool) -> type[T]:
             raise TypeError(f"{cls.__name__}.{f.name}: records.record takes plain fields, defaults and factories only")
     if eq:
         made._record_key = staticmethod(_key(tuple(f.name for f in fields(made) if f.compare)))
-    made.__init__ = _first_init(made)
+    made.__init__ = _init(made)
     if slots:  # as dataclass(frozen=True, slots=True): copy and pickle set the fields past __setattr__
         made.__getstate__, made.__setstate__ = _getstate, _setstate
     return made  # type: ignore[no-any-return]
@@ -55,24 +55,6 @@ def _key(names: tuple[str, ...]) -> Callable[[Any], tuple[Any, ...]]:
     return lambda record: ()
 
 
-def _first_init(cls: Any) -> Callable[..., None]:
-    """An ``__init__`` that compiles the class's own on its first call and hands over to it: most
-    records of the syntax tree are made by the compiled reader without their ``__init__``, so a
-    command compiles only those it calls (each compile took ~0.2 ms of the start-up). It has the
-    signature of the one it stands for."""
-    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
-        cls.__init__ = init = _init(cls)
-        init(self, *args, **kwargs)
-
-    __init__.__qualname__ = f"{cls.__qualname__}.__init__"
-    __init__.__signature__ = Signature(  # type: ignore[attr-defined]
-        [Parameter("self", Parameter.POSITIONAL_OR_KEYWORD),
-         *(Parameter(f.name, Parameter.POSITIONAL_OR_KEYWORD, annotation=f.type,
-                     default=_default(f)) for f in fields(cls))],
-        return_annotation=None)
-    return __init__
-
-
 class _Factory:
     """The default of a field made by its ``default_factory`` (shown as the decorator shows it)."""
 
@@ -83,36 +65,57 @@ class _Factory:
 _FACTORY = _Factory()
 
 
-def _default(f: Any) -> Any:
-    """A field's default in the signature."""
-    if f.default is not MISSING:
-        return f.default
-    return Parameter.empty if f.default_factory is MISSING else _FACTORY
-
-
 def _init(cls: Any) -> Callable[..., None]:
-    """The ``__init__`` the decorator writes: one parameter per field, defaults kept (a factory called for
-    each record that does not give the field), each field set past the frozen ``__setattr__``."""
-    params, body, namespace = [], [], {"_set": object.__setattr__, "_FACTORY": _FACTORY}
-    for f in fields(cls):
-        value = f.name
-        if f.default is not MISSING:
-            namespace[f"_default_{f.name}"] = f.default
-            params.append(f"{f.name}=_default_{f.name}")
-        elif f.default_factory is not MISSING:
-            namespace[f"_factory_{f.name}"] = f.default_factory
-            params.append(f"{f.name}=_FACTORY")
-            value = f"_factory_{f.name}() if {f.name} is _FACTORY else {f.name}"
+    """The ``__init__`` the decorator writes, built without compiling one: one parameter per field, defaults
+    kept (a factory called for each record that does not give the field), each field set past the frozen
+    ``__setattr__``, then ``__post_init__``.  All fields given in order (the usual call) or the leading ones
+    with the defaults after them take the short way; keywords are bound by the signature, whose errors
+    are the decorator's."""
+    names = tuple(f.name for f in fields(cls))
+    defaults = [f.default if f.default is not MISSING else _FACTORY if f.default_factory is not MISSING else
+                Parameter.empty for f in fields(cls)]
+    factories = {f.name: f.default_factory for f in fields(cls) if f.default_factory is not MISSING}
+    signature = Signature([Parameter("self", Parameter.POSITIONAL_OR_KEYWORD),
+                           *(Parameter(f.name, Parameter.POSITIONAL_OR_KEYWORD, annotation=f.type, default=default)
+                             for f, default in zip(fields(cls), defaults))], return_annotation=None)
+    count, post_init = len(names), hasattr(cls, "__post_init__")
+    # for the first k fields given: the defaults of the rest (None when one has none: bound instead) and
+    # the fields among them a factory makes
+    tails = [tuple(defaults[k:]) if Parameter.empty not in defaults[k:] else None for k in range(count + 1)]
+    fresh = [[(i, factories[names[i]]) for i in range(k, count) if defaults[i] is _FACTORY] for k in range(count + 1)]
+    slotted = "__slots__" in vars(cls)
+    # each field's slot descriptor sets it, as object.__setattr__ would once it has found it
+    setters = tuple(getattr(cls, name).__set__ for name in names) if slotted else ()
+
+    def values(self: Any, args: tuple[Any, ...], kwargs: dict[str, Any]) -> tuple[Any, ...]:
+        """All fields' values of a call that does not give them all in order."""
+        tail = None if kwargs or len(args) > count else tails[len(args)]
+        if tail is None:
+            bound = signature.bind(self, *args, **kwargs).arguments
+            return tuple(factories[name]() if name in factories and name not in bound else bound.get(name, default)
+                         for name, default in zip(names, defaults))
+        made = fresh[len(args)]
+        if not made:
+            return args + tail
+        whole = [*args, *tail]
+        for index, factory in made:
+            whole[index] = factory()
+        return tuple(whole)
+
+    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+        if kwargs or len(args) != count:
+            args = values(self, args, kwargs)
+        if slotted:
+            for setter, value in zip(setters, args):
+                setter(self, value)
         else:
-            params.append(f.name)
-        body.append(f" _set(self, {f.name!r}, {value})")
-    if hasattr(cls, "__post_init__"):
-        body.append(" self.__post_init__()")
-    exec(f"def __init__(self, {', '.join(params)}):\n" + "\n".join(body or [" pass"]), namespace)
-    init: Any = namespace["__init__"]
-    init.__qualname__ = f"{cls.__qualname__}.__init__"
-    init.__annotations__ = {**{f.name: f.type for f in fields(cls)}, "return": None}
-    return init  # type: ignore[no-any-return]
+            vars(self).update(zip(names, args))
+        if post_init:
+            self.__post_init__()
+
+    __init__.__qualname__ = f"{cls.__qualname__}.__init__"
+    __init__.__signature__ = signature  # type: ignore[attr-defined]
+    return __init__
 
 
 def _eq(self: Any, other: Any) -> Any:
