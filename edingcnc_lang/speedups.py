@@ -13,6 +13,7 @@ selects the Python core at run time; ``ecnc --version`` says which one runs.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from typing import Any
 
 PURE_ENV = "ECNC_PURE_PYTHON"
@@ -67,32 +68,22 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     return non_plain_lines(chunk)
 
 
-def plain_moves(*args: Any) -> Any:
-    """``machine.plain_runs.plain_moves`` on the core that runs (see there)."""
-    global plain_moves
-    plain_moves = _pick("plain_moves", ".machine.plain_runs")
-    return plain_moves(*args)
+def _on_first_call(name: str, module: str) -> Callable[..., Any]:
+    """A stand-in for ``name`` that picks it on its first call (``_pick``) and puts it in its place here, so
+    ``speedups.<name>`` is then the chosen function itself and a Python reference loads only when used."""
+    def first_call(*args: Any) -> Any:
+        chosen = globals()[name] = _pick(name, module)
+        return chosen(*args)
+
+    first_call.__name__ = first_call.__qualname__ = name
+    first_call.__doc__ = f"``{module.lstrip('.')}.{name}`` on the core that runs (see there)."
+    return first_call
 
 
-def trace_rows(*args: Any) -> Any:
-    """``motion.sinks.trace_rows`` on the core that runs (see there)."""
-    global trace_rows
-    trace_rows = _pick("trace_rows", ".motion.sinks")
-    return trace_rows(*args)
-
-
-def column_bounds(*args: Any) -> Any:
-    """``motion.reach.column_bounds`` on the core that runs (see there)."""
-    global column_bounds
-    column_bounds = _pick("column_bounds", ".motion.reach")
-    return column_bounds(*args)
-
-
-def arc_frame_rows(*args: Any) -> Any:
-    """``kinematics.trajectory.arc_frame_rows`` on the core that runs (see there)."""
-    global arc_frame_rows
-    arc_frame_rows = _pick("arc_frame_rows", ".kinematics.trajectory")
-    return arc_frame_rows(*args)
+plain_moves = _on_first_call("plain_moves", ".machine.plain_runs")
+trace_rows = _on_first_call("trace_rows", ".motion.sinks")
+column_bounds = _on_first_call("column_bounds", ".motion.reach")
+arc_frame_rows = _on_first_call("arc_frame_rows", ".kinematics.trajectory")
 
 
 def compiled(name: str) -> Any:
