@@ -300,17 +300,21 @@ def _run(job: Path, trace: Path, pure: bool) -> str:
 
 def test_both_cores_write_the_same_trace(tmp_path: Path) -> None:
     job = tmp_path / "job.nc"
-    # straight moves, then a CAM pass's arcs (N words, CRLF, I/J and R arcs among G1 moves, G18 arcs), then inch G91
+    # straight moves, then a CAM pass's arcs (N words, CRLF, I/J and R arcs among G1 moves, G18 arcs), holes drilled
+    # by G81 and G83 (lines of holes in batches, pecks), then inch G91
     arcs = "".join(f"N{i} G{2 + i % 2} X{2 + 5 * i + 2} Y0 I1 J0\r\nN{i} G1 X{2 + 5 * i + 3}\r\n"
                    f"G2 X{2 + 5 * i + 5} R1 F800\r\n" for i in range(300))
     job.write_text("G21 G90 F1000\nM3 S800\n" + "".join(f"G1 X{i * 0.37:.3f} Y{-i * 1.1:.2f} Z{i % 7 * -0.5}\n"
                                                           for i in range(3000))
                    + "G0 X0 Y0 Z0\nG1 X2 F600\n" + arcs + "G18 G2 X1506 Z0 I2 K0\nG17 G1\n"
+                   + "G0 Z5\nG98 G81 X10 Y10 Z-2.25 R1 F300\n" + "".join(f"X{10 + i * 1.5} Y{i % 9}\n" for i in range(40))
+                   + "G83 X5 Y5 Z-6.5 Q1.2 R1\nG80\nG0 Z5\n"
                    + "G20 G91\n" + "".join(f"X0.01 Y{i % 3}.5\n" for i in range(500)) + "G0 Z1\nM30\n")
     pure, fast = tmp_path / "pure.csv", tmp_path / "fast.csv"
     assert (_run(job, pure, pure=True), _run(job, fast, pure=False)) == ("python", "compiled")
     assert pure.read_bytes() == fast.read_bytes()
     assert fast.read_text().count(",arc,") == 601
+    assert fast.read_text().count(",-2.25,") == 2 * 41  # every G81 hole's bottom, in both columns (z, jz)
     in_process = tmp_path / "api.csv"
     run_file(job, RunOptions(trace=in_process))
     assert in_process.read_bytes() == pure.read_bytes()
