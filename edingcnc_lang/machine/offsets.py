@@ -260,7 +260,7 @@ class CoordinateSystems(MachineState):
         """G10 L10/L11: the tool length (and lathe X offset) with which the current position reads the
         programmed Z (X): in the active coordinate system with G92 (L10), or in G59.3 without it (L11).
         G43 adds the tool's wear (zDelta, xDelta) to what is set here, so it is left out of it; in
-        diameter mode X is a diameter, as in a move."""
+        diameter mode X is a diameter, as in a move, and the table's X offset a diameter value."""
         offsets = self.offset()
         if level == 10:
             base_x, base_z = offsets[0] - self.tool_x, offsets[2] - self.tool_z
@@ -269,7 +269,8 @@ class CoordinateSystems(MachineState):
         wear_x, wear_z = (self.params.read(base + tool) for base in (t.TOOL_X_WEAR, t.TOOL_Z_WEAR))
         wanted = self._axis_values(words)  # X a radius also in diameter mode
         length = self.pos[2] - base_z - wanted[2] - wear_z if 2 in wanted else None
-        x_offset = self.pos[0] - base_x - wanted[0] - wear_x if 0 in wanted else None
+        x_part = 0.5 if self.diameter_mode else 1.0  # G43 applies half the table's X on a diameter lathe
+        x_offset = (self.pos[0] - base_x - wanted[0]) / x_part - wear_x if 0 in wanted else None
         return length, x_offset
 
     def _g28_g30(self, code: int, words: Mapping[str, float], span: n.Span) -> None:

@@ -147,7 +147,7 @@ class LineSteps(MachineState):
         self.params.set(t.TOOL_CURRENT, float(self.selected_tool))
         tool = self.selected_tool
         self.params.set(t.TOOL_RADIUS, self.params.read(t.TOOL_DIAMETER + tool) / 2.0 if tool else 0.0)
-        self.params.set(t.TOOL_Z_OFFSET, self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0)
+        self._tool_offsets_read()
         self.canon.event(Event("tool_change", self.path, self.line, {"tool": tool, "previous": old}))
 
     def _io(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
@@ -194,8 +194,23 @@ class LineSteps(MachineState):
         self.length_follows_tool = code == G_43 and "H" not in words
         self._apply_length(code, words, span)
 
+    def _tool_offsets_read(self) -> None:
+        """#5010 and #5012 (manual p. 2): the current tool's Z offset (length + zDelta) and X offset
+        (width + xDelta) as the tool table stores them, so a diameter value on a diameter lathe;
+        set at M6 and at G43, so a macro that wrote #54xx/#56xx reads its new value after G43."""
+        tool = int(self.params.read(t.TOOL_CURRENT))
+        read = self.params.read
+        valid = 1 <= tool <= t.MAX_TOOL
+        self.params.set(t.TOOL_Z_OFFSET, read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool) if valid else 0.0)
+        if self.config.lathe:
+            self.params.set(t.TOOL_X_TOTAL, read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool) if valid else 0.0)
+
     def _apply_length(self, code: int, words: Mapping[str, float], span: n.Span | None = None) -> None:
-        """Set the length offset of G43 [H]/G43.1/G49 (a plain G43: the tool in the spindle, #5008)."""
+        """Set the length offset of G43 [H]/G43.1/G49 (a plain G43: the tool in the spindle, #5008).
+
+        On a lathe the X offset too: the tool table's width + xDelta (G43.1: I) is a diameter
+        value on a diameter lathe, so X moves by half of it (the real lathe's saved state: width
+        -35.248, #5014 = -17.624)."""
         self.tool_x = 0.0
         if code == G_49:
             self.tool_z = 0.0
@@ -204,17 +219,23 @@ class LineSteps(MachineState):
             if not 0 <= tool <= t.MAX_TOOL:
                 raise self.fail(f"G43 H{tool}: no such tool", span)
             lathe = self.config.lathe
+            x_part = 0.5 if self.diameter_mode else 1.0
             if code == G_43_1:  # dynamic offset: K is the tool length, I the X offset on a lathe
                 self.tool_z = words.get("K", 0.0) * self.scale
-                self.tool_x = words.get("I", 0.0) * self.scale if lathe else 0.0
+                self.tool_x = words.get("I", 0.0) * self.scale * x_part if lathe else 0.0
             elif tool:
                 read = self.params.read
                 self.tool_z = read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool)  # zDelta: wear, mill and lathe
-                self.tool_x = read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool) if lathe else 0.0
+                if lathe:
+                    self.tool_x = (read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool)) * x_part
             else:
                 self.tool_z = 0.0
+            if code == G_43 and "H" not in words:
+                self._tool_offsets_read()
         self.modal["length_offset"] = code
         self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
+        if self.config.lathe:
+            self.params.set(t.TOOL_G43_X_OFFSET, self.tool_x)
         self._offsets_changed()
 
     def _stop(self, code: int, span: n.Span) -> None:

@@ -7,7 +7,7 @@
 ; the radius.
 ;
 ; The turret indexes without measuring: tool offsets come from the tool table
-; (length = Z offset, width = X offset, zDelta/xDelta = wear) and are applied
+; (length = Z offset, width = X offset as a diameter, zDelta/xDelta = wear) and are applied
 ; with G43 after every change.
 ; ============================================================================
 
@@ -70,6 +70,30 @@ EndSub
 
 Sub user_3
     GoSub thread_dialog
+EndSub
+
+Sub user_5
+    GoSub tool_x_from_diameter
+EndSub
+
+; Set the X offset of the tool in the turret from a diameter it has just turned
+; (a skim cut, then measure). The tool table keeps width and xDelta as
+; DIAMETER values (#5600 + tool, #5800 + tool), as every X here; G43 moves the
+; cross slide by half of them. #5012 is the tool's width + xDelta after G43.
+Sub tool_x_from_diameter
+    dlgmsg "X offset of the turret tool: the diameter just turned" "Measured diameter" 1490
+    If [#5398 == -1]
+        msg "X offset left as it was"
+    Else
+        If [#1490 <= 0]
+            errmsg "A turned diameter is greater than 0"
+        EndIf
+        G43                                 ; the tool's own offsets in force
+        #1491 = [#5001 - #1490]             ; how far the reading is off (diameter)
+        #[5600 + #5008] = [#5012 - #[5800 + #5008] + #1491]
+        G43                                 ; apply the corrected width
+        msg "T"#5008" width = "#[5600 + #5008]" mm (diameter), X reads "#5001
+    EndIf
 EndSub
 
 Sub user_4

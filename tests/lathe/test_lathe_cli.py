@@ -25,7 +25,7 @@ def test_example_shaft_runs_with_its_own_ini(tmp_path: Path) -> None:
     events = tmp_path / "events.jsonl"
     doc = run_json("--ini", EXAMPLE / "cnc.ini", EXAMPLE / "shaft.nc", "--events", events)
     assert doc["ended_by"] == "M30" and doc["tool"] == 4
-    assert doc["machine"]["x"] == 150.0 and doc["position"]["x"] == pytest.approx(2 * (150.0 - 1.5))
+    assert doc["machine"]["x"] == 150.0 and doc["position"]["x"] == pytest.approx(2 * (150.0 - 1.5 / 2))  # width: a diameter value
     assert doc["spindle"] == {"m": 5, "mode": "G97", "s": 700.0, "rpm": 0.0, "max_rpm": 3000.0}
     records = [json.loads(line) for line in events.read_text().splitlines()]
     moves = [r for r in records if r["type"] == "move"]

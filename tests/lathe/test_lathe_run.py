@@ -80,8 +80,9 @@ def test_g28_moves_x_first_on_a_lathe(tmp_path: Path) -> None:
 
 
 def test_g43_applies_x_and_z_offsets_with_wear(tmp_path: Path) -> None:
+    """On a diameter lathe the table's width + xDelta is a diameter value: G43 moves X by half of it."""
     moves, _, result = run(tmp_path, "G43 H2\nG0 X20 Z5\n#100 = #5001\n#101 = #5003\nG49\nG0 X20 Z5\n")
-    assert moves[0].end[0] == pytest.approx(10 - 1.5 + 0.1) and moves[0].end[2] == pytest.approx(5 + 4 + 0.25)
+    assert moves[0].end[0] == pytest.approx(10 + (-1.5 + 0.1) / 2) and moves[0].end[2] == pytest.approx(5 + 4 + 0.25)
     assert result.variables[100] == pytest.approx(20.0)  # type: ignore[attr-defined]
     assert result.variables[101] == pytest.approx(5.0)  # type: ignore[attr-defined]
     assert (moves[1].end[0], moves[1].end[2]) == (10.0, 5.0)
@@ -205,7 +206,7 @@ def test_offsets_read_x_as_a_diameter(tmp_path: Path) -> None:
 def test_css_centre_is_work_x0_with_the_tool_offset(tmp_path: Path) -> None:
     moves, _, _ = run(tmp_path, "G10 L2 P1 X7\nG43 H2\nG96 S100 D3000 M3\nG0 X40 Z5\n")
     css = moves[0].css
-    assert css is not None and css.axis_x == pytest.approx(7 / 2 - 1.5 + 0.1)  # G10 L2 X is a diameter too
+    assert css is not None and css.axis_x == pytest.approx(7 / 2 + (-1.5 + 0.1) / 2)  # G10 L2 X is a diameter too
     assert moves[0].spindle == pytest.approx(100_000 / (2 * math.pi * 20))
 
 
