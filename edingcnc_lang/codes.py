@@ -85,6 +85,8 @@ CODES: dict[str, Code] = _table(
     ("G508", W, "arc with the compensated tool inside it that is not larger than the tool radius"),
     ("G509", E, "a G code the controller does not know (G7/G8: see diameterProgramming)"),
     ("G510", W, "an M code with no built-in meaning and no Sub mNNN in the file or its macro files"),
+    ("G520", E, "G76 I zero or negative: LinuxCNC's offset form; EdingCNC reads I as the crest diameter"),
+    ("G521", W, "spindle speed outside the ini's spindleNmin..spindleNmax: the controller clamps it"),
     ("F600", E, "macro file without an @unit directive on its first line (EdingCNC G1290)"),
     ("F601", W, "line longer than 256 characters"),
     ("F602", E, "line longer than 1055 characters"),

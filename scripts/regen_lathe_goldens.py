@@ -12,7 +12,10 @@ into machine-coordinate moves in mm), plus what turning adds:
 - feed moves carry ``feed`` (mm/min, or mm per revolution with ``per_rev``);
 - ``spindle`` lists every speed setting: constant surface speed (``css``, S and the D maximum)
   or a fixed rpm;
-- the tool table holds tool 1 with X 0.1 in and Z 0.2 in for ``G43 H1``.
+- the tool table holds tool 1 with X 0.1 in and Z 0.2 in for ``G43 H1``;
+- a line ending in ``(linuxcnc: ...)`` reaches rs274 as that comment's text: the G76 lines are
+  written as EdingCNC reads them (I the crest diameter, J and K radial) and LinuxCNC gets the same
+  thread in its own words (I an offset from the drive line, halved with J and K in G7).
 
 Run with the rs274 lock held: ``flock /tmp/rs274.lock python3 scripts/regen_lathe_goldens.py``.
 """
@@ -20,6 +23,7 @@ Run with the rs274 lock held: ``flock /tmp/rs274.lock python3 scripts/regen_lath
 from __future__ import annotations
 
 import importlib.util
+import re
 import sys
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -148,9 +152,12 @@ def fold(calls: list[base.Canon]) -> LatheGolden:
     return golden
 
 
+LINUXCNC_FORM = re.compile(r"^.*\(linuxcnc:\s*(?P<line>[^)]*)\)\s*$", re.M)
+
+
 def lathe_source(program: Path) -> str:
     """The numbered copy with the lathe set-up our side gets from cnc.ini put on line 1."""
-    lines = base.rs274_source(program.read_text()).splitlines()
+    lines = base.rs274_source(LINUXCNC_FORM.sub(r"\g<line>", program.read_text())).splitlines()
     setup = "G18 G7" if program.stem.startswith("dia_") else "G18"
     number, _, rest = lines[0].partition(" ")
     lines[0] = f"{number} {setup} {rest}"

@@ -20,6 +20,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.source import iter_file_lines
 from edingcnc_lang.records import record
 from edingcnc_lang.lint import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
+from edingcnc_lang.lint import rules_lathe  # noqa: F401  (register)
 from edingcnc_lang.lint.model import SourceFile, stream_source
 from edingcnc_lang.lint.project import Project
 from edingcnc_lang.lint.registry import RULES
@@ -145,6 +146,7 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
             targets.append(loader.load(path, is_macro_name(path) or path.resolve() in given_resolved))
     tool_diameters: dict[int, float] = {}
     mill = False
+    spindle_range = (0.0, 0.0)
     for config in dict.fromkeys(configs):
         from edingcnc_lang.lint.rules_config import check_config  # the ini reader: only with an ini
 
@@ -155,11 +157,12 @@ def lint_paths(paths: Iterable[str | os.PathLike[str]], options: LintOptions = L
         if machine is not None:
             tool_diameters.update({number: tool.diameter for number, tool in machine.tools.items() if tool.diameter})
             mill = mill or not machine.lathe
+            spindle_range = (machine.spindle_min_rpm, machine.spindle_max_rpm)
     for file in list(loader.files.values()):  # also loads the macro files of every file
         loader.macros_for(Path(file.path))
     macros = {file.path: loader.macros_for(Path(file.path)) for file in loader.files.values()}
     active = [r for r in RULES if any(wanted(c, options) for c in r.codes)]
-    project = Project(list(loader.files.values()), macros, written, tool_diameters, mill)
+    project = Project(list(loader.files.values()), macros, written, tool_diameters, mill, spindle_range)
     if kept is not None:
         kept += [*loader.files.values(), project]
     for file in dict.fromkeys(targets):

@@ -62,13 +62,13 @@ def stream_source(path: str | os.PathLike[str], is_macro: bool) -> SourceFile:
     return load_source(path, is_macro, stream=True)
 
 
-_MOTION_LETTERS = frozenset("GXYZABCFS")
+_MOTION_LETTERS = frozenset("GXYZABCF")  # not S: G521 checks a constant S against the ini
 
 
 def _kept(reader: StatementReader, path: str) -> Iterator[n.Stmt]:
     """The statements of a "lint" read, each top-level plain line a Block unless it is plain motion.
 
-    Plain motion (at most one G, which is G0 or G1, axis words, a non-zero F, S) gives no rule
+    Plain motion (at most one G, which is G0 or G1, axis words, a non-zero F) gives no rule
     anything to report, calls nothing and ends nothing; the statement after a program end is
     always kept, since S209 reports it.
     """
@@ -88,7 +88,7 @@ def _kept(reader: StatementReader, path: str) -> Iterator[n.Stmt]:
 
 
 def _plain_motion(words: list[tuple[str, str]]) -> bool:
-    """At most one G, which is G0 or G1, then axis words, a non-zero F and S; a leading N word is
+    """At most one G, which is G0 or G1, then axis words and a non-zero F; a leading N word is
     the line number (``make_block`` takes it out of the words)."""
     if words and words[0][0] in "Nn":
         words = words[1:]

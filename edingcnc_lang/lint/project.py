@@ -66,8 +66,10 @@ class Project:
 
     def __init__(self, files: Sequence[SourceFile], macros: Mapping[str, Sequence[SourceFile]],
                  extra_written: frozenset[int] = frozenset(),
-                 tool_diameters: Mapping[int, float] | None = None, mill: bool = False) -> None:
+                 tool_diameters: Mapping[int, float] | None = None, mill: bool = False,
+                 spindle_range: tuple[float, float] = (0.0, 0.0)) -> None:
         self.files = tuple(files)
+        self.spindle_range = spindle_range  # the --ini's spindleNmin, spindleNmax (0: no limit), for G521
         self.tool_diameters = dict(tool_diameters or {})  # [TOOL_n] diameter (mm) of the --ini, for G41/G42 D
         self.mill = mill  # the --ini is a mill's (machineType = 0): lathe codes stop the job there
         self._macros = macros

@@ -36,6 +36,13 @@ def clamp_rpm(rpm: float, max_rpm: float, min_rpm: float) -> float:
     return max(rpm, min_rpm)
 
 
+def speed_clamp_message(asked: float, rpm: float, max_rpm: float) -> str:
+    """What a G97 S outside the machine's range turns at (the run's and lint's G521)."""
+    limit = "spindleNmax" if rpm == max_rpm and asked > rpm else "spindleNmin"
+    return (f"S{asked:g}: the spindle turns at {rpm:g} rpm, the machine's {limit} (cnc.ini), "
+            f"not the {asked:g} rpm written")
+
+
 def css_limits(d_word: float | None, machine_max: float, machine_min: float) -> tuple[float, float]:
     """The G96 clamp: the lower of D and the machine's maximum, and the machine's minimum."""
     if d_word is not None and d_word < 0:

@@ -11,7 +11,8 @@ from collections.abc import Mapping
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import Event
-from edingcnc_lang.machine.spindle import FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits
+from edingcnc_lang.machine.spindle import (FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits,
+                                          speed_clamp_message)
 from edingcnc_lang.machine.state import G_96, MachineState, format_value, StepTable
 
 
@@ -26,6 +27,10 @@ class SpindleModes(MachineState):
                     raise self.fail(f"G96 D{format_value(words['D'])}: the maximum spindle speed must not be "
                                     "negative", span)
                 self.css_max = words["D"]
+                if self.css_max > self.config.spindle_max_rpm > 0:
+                    self.warn("G521", f"G96 D{format_value(self.css_max)}: the spindle turns at most "
+                              f"{format_value(self.config.spindle_max_rpm)} rpm, the machine's spindleNmax "
+                              "(cnc.ini)", span)
             self.css_setting = self.css_setting or (0.0, 0.0, 0.0)
         else:
             if self.css_setting is not None:  # keep turning at the speed CSS asked for here
@@ -55,6 +60,8 @@ class SpindleModes(MachineState):
             data = {"mode": "css", "speed": self.speed, "max_rpm": max_rpm}
         else:
             self.rpm = clamp_rpm(self.speed, config.spindle_max_rpm, config.spindle_min_rpm)
+            if self.rpm != self.speed and self.speed > 0:
+                self.warn("G521", speed_clamp_message(self.speed, self.rpm, config.spindle_max_rpm), span)
             data = {"mode": "rpm", "speed": self.speed, "max_rpm": config.spindle_max_rpm}
         rpm = self.rpm_at(self.pos[0])
         self.canon.event(Event("spindle_speed", self.path, self.line, {**data, "rpm": rpm}))

@@ -18,6 +18,7 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
@@ -235,6 +236,10 @@ class MachineState:
         self.job_tools: Callable[[], Sequence[int]] = tuple
         self.ended_by = "end of file"
         self.messages: list[Event] = []
+        # told of each warning a line earns (a limit of the machine changed what it asked for); the
+        # runner reports them as it reports load warnings; once per file and line
+        self.on_warning: Callable[[Diagnostic], None] | None = None
+        self._warned: set[tuple[str, int, str]] = set()
         self.path = "<string>"
         self.line = 0
         self._offset: list[float] | None = None
@@ -287,6 +292,14 @@ class MachineState:
     def log_folder(self) -> Path:
         """Where the files a job names (logfile, ZHCS, ZHCL) live: --log-dir, else the job's folder."""
         return self.log_dir or Path(self.path).resolve().parent
+
+    def warn(self, code: str, message: str, span: n.Span | None = None) -> None:
+        """A warning at the line (``code`` from codes.py), once per file, line and code."""
+        where = self.where(span)
+        key = (where.path, where.line or 0, code)
+        if self.on_warning is not None and key not in self._warned:
+            self._warned.add(key)
+            self.on_warning(Diagnostic.make(code, message, where.path, where.line or 0, where.col or 1))
 
     def fail(self, message: str, span: n.Span | None = None) -> MachineError:
         return MachineError(message, self.where(span))

@@ -1,13 +1,15 @@
 """Lathe threading: the passes of the G76 cycle, as plain moves in the XZ plane.
 
 Data in, moves out, like ``cycles.py``: the interpreter checks the words it owns (plane, axis
-words), converts lengths to mm and radius, and turns each ``ThreadMove`` into a machine move.
-The passes are the ones LinuxCNC's interpreter makes for the same words (docs/lathe.md):
+words, I's sign), converts lengths to mm and X positions to radii, and turns each ``ThreadMove``
+into a machine move.  The words are read as the EdingCNC manual (3.6.18) defines them; the pass
+pattern is the one LinuxCNC's G76 makes (the manual's text is LinuxCNC's), see docs/lathe.md:
 
 - the drive line is the current X, from the current Z to the Z word;
-- I is the thread crest relative to the drive line (negative: an outside thread);
-- J is the first cut's depth below the crest, K the full thread depth;
-- pass n cuts to J * n**(1/R) below the crest until K is reached, then K once more and H
+- I is the thread's crest, an X position (the manual: the thread's diameter, always positive);
+  the drive line outside it (or on it) makes an outside thread, inside it an inside thread;
+- J is the first cut's depth beyond the crest, K the full thread depth, both radial;
+- pass n cuts to J * n**(1/R) beyond the crest until K is reached, then K once more and H
   spring passes;
 - Q is the compound angle: each pass starts (depth - crest) * tan(Q) further back along Z;
 - E and L add a taper of length E at the entry (L1), the exit (L2) or both (L3).
@@ -41,7 +43,8 @@ class ThreadMove:
 
 @record(frozen=True, slots=True)
 class G76Words:
-    """The cycle's words in mm, X distances already radii; ``None`` = not on the line."""
+    """The cycle's words in mm; ``i`` the crest's X position (a radius, machine coordinates), ``j``
+    and ``k`` radial depths; ``None`` = not on the line."""
 
     p: float | None
     z: float | None
@@ -64,12 +67,10 @@ def _check(w: G76Words, start_z: float, written: Mapping[str, float]) -> None:
 
     for letter in "PZIJK":
         if getattr(w, letter.lower()) is None:
-            raise ThreadError(f"G76 needs {letter} (P pitch, Z end, I crest offset, J first cut, K depth)")
+            raise ThreadError(f"G76 needs {letter} (P pitch, Z end, I crest diameter, J first cut, K depth)")
     assert w.p is not None and w.z is not None and w.i is not None and w.j is not None and w.k is not None
     if w.p <= 0:
         raise ThreadError(f"G76 {shown('P')}: the pitch must be greater than 0")
-    if w.i == 0:
-        raise ThreadError("G76 I must not be 0 (negative: outside thread, positive: inside thread)")
     if w.j <= 0:
         raise ThreadError(f"G76 {shown('J')}: the first cut depth must be greater than 0")
     if w.k <= 0:
@@ -121,8 +122,8 @@ def g76(w: G76Words, start_x: float, start_z: float,
     """
     _check(w, start_z, written or {})
     assert w.p is not None and w.z is not None and w.i is not None and w.k is not None
-    inward = -1.0 if w.i < 0 else 1.0      # outside threads cut towards the centre (-X)
-    crest = start_x + w.i                  # the thread's crest line
+    crest = w.i                            # the thread's crest line
+    inward = -1.0 if start_x >= crest else 1.0  # from outside the crest: an outside thread, cut towards -X
     forward = -1.0 if w.z < start_z else 1.0  # direction of the cut along Z
     tan_q = math.tan(math.radians(w.q or 0.0))
     taper = w.e or 0.0

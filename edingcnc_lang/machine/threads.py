@@ -18,8 +18,7 @@ G_33 = G(33)
 G_33_1 = G(33.1)
 G_76 = G(76)
 G76_LETTERS = "PZIJKRQHEL"
-G76_SCALED = frozenset("PZIJKE")     # lengths: converted from inch in G20
-G76_DIAMETERS = frozenset("IJK")     # halved in diameter mode, as LinuxCNC does in G7
+G76_SCALED = frozenset("PZJKE")      # lengths: converted from inch in G20 (I and Z are positions)
 
 
 class Threading(MachineState):
@@ -83,10 +82,12 @@ class Threading(MachineState):
             value = words.get(letter)
             if value is not None:
                 value *= self.scale if letter in G76_SCALED else 1.0
-                value /= 2.0 if letter in G76_DIAMETERS and self.diameter_mode else 1.0
             values[letter.lower()] = value
         if values["z"] is not None:
             values["z"] = self._target({"Z": words["Z"]})[2]
+        if values["i"] is not None:
+            self._g76_crest(words["I"], span)
+            values["i"] = self._axis_values({"X": words["I"]})[0] + self.offset()[0]  # always absolute
         start = list(self.pos)
         try:
             passes = g76(G76Words(**values), start[0], start[2], words)
@@ -100,6 +101,20 @@ class Threading(MachineState):
                 self._move("rapid", end)
             else:
                 self._sync_move(end, move.pitch, span)
+
+
+    def _g76_crest(self, crest: float, span: n.Span) -> None:
+        """I is the thread's crest diameter, always positive (manual 3.6.18); LinuxCNC's negative I
+        (an offset from the drive line to an outside thread) is refused with what EdingCNC reads."""
+        if crest > 0:
+            return
+        here = self.reported_position()[0]
+        x_name = "diameter" if self.diameter_mode else "X"
+        hint = (f"; for LinuxCNC's outside thread from X{format_value(here)} write the crest {x_name} "
+                f"I{format_value(here + crest)}" if crest < 0 and here + crest > 0 else "")
+        raise self.fail(f"G76 I{format_value(crest)}: EdingCNC reads I as the thread's crest {x_name} (an X "
+                        f"position, always positive, manual 3.6.18), not as LinuxCNC's offset from the drive "
+                        f"line; J and K are radial depths beyond the crest{hint}", span)
 
 
 # The synchronised motion codes and what runs each.

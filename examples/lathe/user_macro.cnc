@@ -8,7 +8,8 @@
 ;
 ;   face_dialog   -> cycle_face      #1400..#1419
 ;   turn_dialog   -> cycle_turn      #1420..#1449
-;   thread_dialog -> cycle_thread    #1450..#1479
+;   thread_dialog -> cycle_thread    #1450..#1469
+;   (a job sets them) cycle_thread_inside #1470..#1479
 ;   #1499 = 1 once the defaults are filled in
 ;
 ; Cancel in any dialog ends the job (M30) before anything moves.
@@ -45,10 +46,19 @@ Sub lathe_defaults
         #1452 = 1.5      ; pitch
         #1453 = 0        ; Z start (thread starts here)
         #1454 = -20      ; Z end
-        #1455 = 0.25     ; first cut depth (diameter)
+        #1455 = 0.12     ; first cut depth (radial)
         #1456 = 600      ; spindle speed, rpm (threads at a fixed speed)
         #1457 = 2        ; spring passes
         #1458 = 29.5     ; infeed angle
+        ; inside threading
+        #1470 = 6        ; tool
+        #1471 = 20       ; major diameter
+        #1472 = 1.5      ; pitch
+        #1473 = 0        ; Z start
+        #1474 = -15      ; Z end
+        #1475 = 0.1      ; first cut depth (radial)
+        #1476 = 500      ; spindle speed, rpm
+        #1477 = 1        ; spring passes
         #1499 = 1
     EndIf
 EndSub
@@ -153,7 +163,7 @@ EndSub
 
 Sub thread_dialog
     GoSub lathe_defaults
-    dlgmsg "Thread (external)" "Tool" 1450 "Major diameter" 1451 "Pitch" 1452 "Z start" 1453 "Z end" 1454 "First cut (dia)" 1455 "Spindle rpm" 1456 "Spring passes" 1457 "Infeed angle" 1458
+    dlgmsg "Thread (external)" "Tool" 1450 "Major diameter" 1451 "Pitch" 1452 "Z start" 1453 "Z end" 1454 "First cut (radial)" 1455 "Spindle rpm" 1456 "Spring passes" 1457 "Infeed angle" 1458
     If [#5398 == -1]
         msg "Threading cancelled"
         M30
@@ -168,16 +178,41 @@ Sub cycle_thread
     If [[#1453 - #1454] < [2 * #1452]]
         errmsg "Threading: a thread shorter than two pitches?"
     EndIf
-    #1460 = [1.2268 * #1452]            ; ISO thread depth on the diameter (2 x 0.6134 P)
+    #1460 = [0.6134 * #1452]            ; ISO external thread depth, radial (K)
+    #1461 = [#1451 - 2 * #1460]         ; root (minor) diameter, for the message
     If [#1455 >= #1460]
         errmsg "Threading: the first cut is deeper than the thread"
     EndIf
+    msg "Thread "#1451" x "#1452": root diameter "#1461
     M6 T[#1450]
     G18 G90
     G97 S[#1456] M3                     ; never thread under G96
     G4 P1
+    ; start outside the crest, 3 pitches before the thread: an outside thread
     G0 X[#1451 + 2] Z[#1453 + 3 * #1452]
-    G76 P[#1452] Z[#1454] I-2 J[#1455] K[#1460] R1.5 Q[#1458] H[#1457] E[#1452] L2
+    ; I the crest diameter, J and K radial depths beyond it (manual 3.6.18)
+    G76 P[#1452] Z[#1454] I[#1451] J[#1455] K[#1460] R1.5 Q[#1458] H[#1457] E[#1452] L2
     G0 X[#1451 + 4]
+    M5
+EndSub
+
+; Inside thread in a bore of the minor diameter: the tool starts inside the
+; bore (X below I) and cuts outwards to the major diameter.
+;   #1470 tool  #1471 major diameter  #1472 pitch  #1473 Z start  #1474 Z end
+;   #1475 first cut (radial)  #1476 rpm  #1477 spring passes
+Sub cycle_thread_inside
+    If [#1472 <= 0]
+        errmsg "Inside thread: the pitch must be greater than 0"
+    EndIf
+    #1478 = [0.5413 * #1472]            ; ISO internal thread depth, radial (K)
+    #1479 = [#1471 - 2 * #1478]         ; the bore: the thread's crest (I)
+    M6 T[#1470]
+    G18 G90
+    G97 S[#1476] M3
+    G4 P1
+    G0 Z[#1473 + 3 * #1472]
+    G0 X[#1479 - 2]                     ; inside the bore
+    G76 P[#1472] Z[#1474] I[#1479] J[#1475] K[#1478] Q29.5 H[#1477]
+    G0 Z[#1473 + 5]
     M5
 EndSub

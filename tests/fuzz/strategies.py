@@ -46,7 +46,7 @@ strings = st.text(st.characters(blacklist_characters='"\n\r'), max_size=20).map(
 # ASCII, command arguments, arcs that sweep almost nothing, files of the run as job targets.
 _ODD_DIGITS = ["²", "⁵", "١٠", "𝟏", "１", "1_0", "٣.٥"]
 hostile_lines = st.one_of(
-    st.sampled_from(["G18 G76 P1 Z-10 I-1 J0.1 K0.6 H1000000000", "G76 P1 Z-10 I-1 J0.1 K0.6 H5",
+    st.sampled_from(["G18 G76 P1 Z-10 I19 J0.1 K0.6 H1000000000", "G76 P1 Z-10 I19 J0.1 K0.6 H5",
                      "G2 X0.000001 Y0 R5 F100", "G2 X10 Y0 R10000000 F100", "G2 X0 Y0 I5 J0 F100",
                      "G83 X0 Y0 Z-10 R1 Q0.00001 F100", "Exec", "ZHCINIT 10 2 2", "ZHCcheck", 'logfile "job.nc" 0',
                      'logfile "a\u202eb.txt" 0', "ZHCS job.nc", f"G1 X{'9' * 309} F100", "M56 P1", "G38.2 Z-1 F10"]),

@@ -27,7 +27,7 @@ def test_spring_passes_count_against_the_pass_cap_before_allocating(h: str, lath
     tracemalloc.start()
     try:
         with pytest.raises(MachineError, match="passes"):
-            run_string(LATHE + f"G76 P1 Z-10 I-1 J0.1 K0.6 H{h}\n", lathe)
+            run_string(LATHE + f"G76 P1 Z-10 I18 J0.1 K0.6 H{h}\n", lathe)
         peak = tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
@@ -35,21 +35,21 @@ def test_spring_passes_count_against_the_pass_cap_before_allocating(h: str, lath
 
 
 def test_the_cap_counts_cut_and_spring_passes_together() -> None:
-    cuts = len(g76(G76Words(p=1, z=-10, i=-1, j=0.1, k=0.6), 20, 0)) // 4  # 4 moves a pass (+1 at the end)
-    words = G76Words(p=1, z=-10, i=-1, j=0.1, k=0.6, h=MAX_THREAD_PASSES - cuts + 1)
+    cuts = len(g76(G76Words(p=1, z=-10, i=19, j=0.1, k=0.6), 20, 0)) // 4  # 4 moves a pass (+1 at the end)
+    words = G76Words(p=1, z=-10, i=19, j=0.1, k=0.6, h=MAX_THREAD_PASSES - cuts + 1)
     with pytest.raises(ThreadError, match=f"more than {MAX_THREAD_PASSES:,} passes"):
         g76(words, 20, 0)
-    assert len(g76(G76Words(p=1, z=-10, i=-1, j=0.1, k=0.6, h=MAX_THREAD_PASSES - cuts), 20, 0)) > MAX_THREAD_PASSES
+    assert len(g76(G76Words(p=1, z=-10, i=19, j=0.1, k=0.6, h=MAX_THREAD_PASSES - cuts), 20, 0)) > MAX_THREAD_PASSES
 
 
 def test_spring_passes_spend_the_step_budget_before_they_move(lathe: RunOptions) -> None:
     moves: list[object] = []
     with pytest.raises(MachineError, match="step budget"):
-        run_string(LATHE + "G76 P1 Z-10 I-1 J0.1 K0.6 H5000\n",
+        run_string(LATHE + "G76 P1 Z-10 I18 J0.1 K0.6 H5000\n",
                    RunOptions(ini=lathe.ini, max_steps=1000, on_move=lambda m, j: moves.append(m)))
     assert len(moves) <= 2  # only the set-up rapid ran
 
 
 def test_a_few_spring_passes_still_run(lathe: RunOptions) -> None:
-    result = run_string(LATHE + "G76 P1 Z-10 I-1 J0.1 K0.6 H2\nM30\n", lathe)
+    result = run_string(LATHE + "G76 P1 Z-10 I18 J0.1 K0.6 H2\nM30\n", lathe)
     assert result.error is None

@@ -25,8 +25,9 @@ def test_example_shaft_runs_with_its_own_ini(tmp_path: Path) -> None:
     events = tmp_path / "events.jsonl"
     doc = run_json("--ini", EXAMPLE / "cnc.ini", EXAMPLE / "shaft.nc", "--events", events)
     assert doc["ended_by"] == "M30" and doc["tool"] == 4
-    assert doc["machine"]["x"] == 150.0 and doc["position"]["x"] == pytest.approx(2 * (150.0 - 1.5 / 2))  # width: a diameter value
-    assert doc["spindle"] == {"m": 5, "mode": "G97", "s": 700.0, "rpm": 0.0, "max_rpm": 3000.0}
+    assert doc["machine"]["x"] == 78.0   # G28 at X 78 (radius), machine coordinates
+    assert doc["position"]["x"] == pytest.approx(2 * (78.0 - 24.0 + 26.02 / 2))  # G54 X 24, T4 width -26.02: a diameter value
+    assert doc["spindle"] == {"m": 5, "mode": "G97", "s": 700.0, "rpm": 0.0, "max_rpm": 3200.0}
     records = [json.loads(line) for line in events.read_text().splitlines()]
     moves = [r for r in records if r["type"] == "move"]
     assert len(moves) == doc["moves"]

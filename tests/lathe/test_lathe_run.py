@@ -159,29 +159,52 @@ def test_g33_1_taps_in_reverses_and_comes_back(tmp_path: Path) -> None:
     ("G0 X20\nG33 Z-10 K1\n", "G33 needs the spindle turning"),
     ("G97 S100 M3\nG33 Z-10\n", "G33 needs K"),
     ("G97 S100 M3\nG33.1 Z-10 K-1\n", "G33.1 K-1: the pitch"),
-    ("G97 S100 M3\nG17\nG76 P1 Z-10 I-1 J0.1 K0.6\n", "G76 threads in the XZ plane"),
-    ("G97 S100 M3\nG76 X10 P1 Z-10 I-1 J0.1 K0.6\n", "G76 takes no X word"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 R0.5\n", "R0.5: the depth degression must be at least 1"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 E6\n", "longer than half the drive line"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K0.6 H-2\n", "spring passes"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P-1 Z-10 I-1 J0.1 K0.6\n", "P-1: the pitch must be greater than 0"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J-0.1 K0.6\n", "J-0.1: the first cut depth must be greater than 0"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.1 K-0.6\n", "K-0.6: the thread depth must be greater than 0"),
-    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I-1 J0.8 K0.6\n", "K0.6 must be greater than J0.8"),
-    ("G20\nG97 S100 M3\nG0 X1 Z0\nG76 P0.05 Z-1 I-0.04 J0.004 K0.03 E0.6\n", "E0.6 is longer than half the drive line (0.5)"),
+    ("G97 S100 M3\nG17\nG76 P1 Z-10 I18 J0.1 K0.6\n", "G76 threads in the XZ plane"),
+    ("G97 S100 M3\nG76 X10 P1 Z-10 I18 J0.1 K0.6\n", "G76 takes no X word"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I18 J0.1 K0.6 R0.5\n", "R0.5: the depth degression must be at least 1"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I18 J0.1 K0.6 E6\n", "longer than half the drive line"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I18 J0.1 K0.6 H-2\n", "spring passes"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P-1 Z-10 I18 J0.1 K0.6\n", "P-1: the pitch must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I18 J-0.1 K0.6\n", "J-0.1: the first cut depth must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I18 J0.1 K-0.6\n", "K-0.6: the thread depth must be greater than 0"),
+    ("G97 S100 M3\nG0 X20 Z0\nG76 P1 Z-10 I18 J0.8 K0.6\n", "K0.6 must be greater than J0.8"),
+    ("G20\nG97 S100 M3\nG0 X1 Z0\nG76 P0.05 Z-1 I0.96 J0.004 K0.03 E0.6\n", "E0.6 is longer than half the drive line (0.5)"),
+    ("G97 S100 M3\nG0 X14 Z3\nG76 P1.5 Z-20 I-2 J0.4 K1.84\n",
+     "G76 I-2: EdingCNC reads I as the thread's crest diameter (an X position, always positive, manual 3.6.18)"),
+    ("G97 S100 M3\nG0 X14 Z3\nG76 P1.5 Z-20 I-2 J0.4 K1.84\n", "write the crest diameter I12"),
+    ("G97 S100 M3\nG0 X14 Z3\nG76 P1.5 Z-20 I0 J0.2 K0.92\n", "G76 I0: EdingCNC reads I as the thread's crest"),
 ])
 def test_threading_errors_name_the_line(tmp_path: Path, job: str, message: str) -> None:
-    """The words are quoted as written: in the program's units, I J K as diameters here."""
+    """The words are quoted as written, in the program's units."""
     text = failure(tmp_path, job)
     assert message in text and f"<string>:{job.count(chr(10))}:" in text
 
 
-def test_g76_in_diameter_mode_halves_i_j_k_and_ends_on_the_drive_line(tmp_path: Path) -> None:
-    moves, _, _ = run(tmp_path, "G97 S500 M3\nG0 X14 Z3\nG76 P1.5 Z-20 I-2 J0.4 K1.84\n")
+def test_g76_i_is_the_crest_diameter_and_j_k_radial_depths(tmp_path: Path) -> None:
+    """Manual 3.6.18: I the thread's diameter, J and K depths beyond it. An M12x1.5 from X14:
+    crest radius 6, the first cut 0.2 and the last 0.92 below it (root diameter 10.16)."""
+    moves, _, _ = run(tmp_path, "G97 S500 M3\nG0 X14 Z3\nG76 P1.5 Z-20 I12 J0.2 K0.92\n")
     cuts = [m for m in moves if m.sync]
-    assert cuts[0].end[0] == pytest.approx(7 - 1 - 0.2) and cuts[-1].end[0] == pytest.approx(7 - 1 - 0.92)
+    assert cuts[0].end[0] == pytest.approx(6 - 0.2) and cuts[-1].end[0] == pytest.approx(6 - 0.92)
     assert all(m.feed == pytest.approx(750.0) for m in cuts)
     assert (moves[-1].end[0], moves[-1].end[2]) == (7.0, -20.0)
+
+
+def test_g76_manual_example_cuts_an_outer_thread_of_15_in_10_passes(tmp_path: Path) -> None:
+    """The manual's example (3.6.18): G0 X20 Z20, G76 P1.0 Z10 I15 J0.1 K1.0."""
+    moves, _, _ = run(tmp_path, "G97 S400 M3\nG0 X20 Z20\nG76 P1.0 Z10 I15 J0.1 K1.0\n")
+    cuts = [m for m in moves if m.sync]
+    assert len(cuts) == 10
+    assert [round(2 * c.end[0], 6) for c in cuts] == [round(15 - 0.2 * n, 6) for n in range(1, 11)]
+    assert all(c.start[2] == 20.0 and c.end[2] == 10.0 for c in cuts)
+    assert all(m.end[0] >= 7.5 for m in moves if not m.sync and m.start[0] == m.end[0])  # the returns: outside
+
+
+def test_g76_i_is_absolute_in_g91_and_follows_the_work_offset(tmp_path: Path) -> None:
+    moves, _, _ = run(tmp_path, "G10 L2 P1 X4\nG97 S400 M3\nG0 X20 Z2\nG91\nG76 P1 Z-10 I16 J0.1 K0.5\n")
+    cuts = [m for m in moves if m.sync]
+    assert cuts[-1].end[0] == pytest.approx(2 + 8 - 0.5)       # G54 X4 (a diameter): radius 2, crest radius 8
+    assert cuts[-1].end[2] == pytest.approx(-8.0)              # Z incremental, as any Z word in G91
 
 
 def test_spindle_speed_variable_follows_x_under_css(tmp_path: Path) -> None:
@@ -252,3 +275,23 @@ def test_g10_l10_x_on_a_lathe_reads_the_programmed_x_with_the_wear(tmp_path: Pat
     assert result.variables[5602] == pytest.approx(-0.1)  # radius 15 - 15 - wear 0.1
     assert result.variables[5402] == pytest.approx(-0.25)
     assert (result.variables[100], result.variables[101]) == pytest.approx((x, 5.0))
+
+
+def test_g76_in_the_turning_macros_external_form(tmp_path: Path) -> None:
+    """A turning-macro set's external cycle: start on the crest (X = I = diameter A), K = (A - B) / 2
+    for the minor diameter B of M12x1 (10.773); 7 degressive passes, K once, one spring pass."""
+    moves, _, _ = run(tmp_path, "G97 S800 M4\nG0 X12 Z0\nG76 P1 Z-10 I12 J0.08 K0.6135 H1\n")
+    cuts = [m for m in moves if m.sync]
+    assert len(cuts) == 9
+    assert 2 * cuts[0].end[0] == pytest.approx(12 - 0.16) and 2 * cuts[-1].end[0] == pytest.approx(10.773)
+    assert all(m.end[0] >= 6.0 for m in moves if not m.sync and m.start[2] != m.end[2])  # travel: never in the bar
+
+
+def test_g76_in_the_turning_macros_internal_form(tmp_path: Path) -> None:
+    """Their internal cycle: start in the bore at X[B - pitch], I[A - 2K] (= B, the crest), K = (A - B) / 2:
+    an inside thread cut outwards from 10.917 to 12."""
+    moves, _, _ = run(tmp_path, "G97 S800 M4\nG0 X[10.917 - 1] Z0\nG76 P1 Z-10 I[12 - [2 * 0.5415]] J0.08 K0.5415 H1\n")
+    cuts = [m for m in moves if m.sync]
+    assert len(cuts) == 8
+    assert 2 * cuts[0].end[0] == pytest.approx(10.917 + 0.16) and 2 * cuts[-1].end[0] == pytest.approx(12.0)
+    assert all(m.end[0] <= 10.917 / 2 for m in moves if not m.sync and m.start[2] != m.end[2])  # travel: in the bore

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.codes import CODES
-from edingcnc_lang.lint import lint_paths
+from edingcnc_lang.lint import LintOptions, lint_paths
 
 HERE = Path(__file__).parent
 ROOT = HERE.parent.parent
@@ -32,8 +32,14 @@ def expected(path: Path) -> Counter[tuple[int, str]]:
     return found
 
 
+_INI = re.compile(r"^;\s*lint-ini:\s*(\S+)")  # first line: lint with that cnc.ini of the cases (--ini)
+
+
 def actual(path: Path) -> Counter[tuple[int, str]]:
-    return Counter((d.line, d.code) for d in lint_paths([path]))
+    first = path.read_text(encoding="utf-8").split("\n", 1)[0] if path.suffix == ".nc" else ""
+    ini = _INI.match(first)
+    options = LintOptions(ini=path.parent / ini.group(1)) if ini else LintOptions()
+    return Counter((d.line, d.code) for d in lint_paths([path], options) if not ini or d.path == str(path))
 
 
 @pytest.mark.parametrize("case", CASES, ids=[str(p.relative_to(HERE / "cases")) for p in CASES])

@@ -29,7 +29,7 @@ def test_without_the_ini_the_radius_is_unknown(tmp_path: Path) -> None:
     assert g508_lines(tmp_path, None) == []
 
 
-LATHE_JOB = "G21 G18\nG96 S200 D2000\nM3\nG1 X10 Z-5 F100\nG76 P1.5 Z-20 I-1 J0.1 K1\nG97 S800\nM30\n"
+LATHE_JOB = "G21 G18\nG96 S200 D2000\nM3\nG1 X10 Z-5 F100\nG76 P1.5 Z-20 I9 J0.1 K1\nG97 S800\nM30\n"
 
 
 def test_lathe_codes_are_g509_with_a_mills_ini_only(tmp_path: Path) -> None:
