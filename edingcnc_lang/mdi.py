@@ -43,7 +43,7 @@ class MdiOutcome:
 
     value: float | None
     moved: bool
-    position: Pose  # work coordinates (mm, degrees)
+    position: Pose  # work coordinates (mm, degrees) as #5001.. read them: X a diameter in diameter mode
     machine: Pose   # machine coordinates
     ended: bool     # M2 or M30 ended "the program"; the machine stays as it is
 
@@ -105,7 +105,7 @@ class MdiSession:
         return self._interp.evaluator.value(block.assigns[0].value)
 
     def _outcome(self, value: float | None, moved: bool, ended: bool) -> MdiOutcome:
-        position = tuple(self._interp.work_position())
+        position = tuple(self._interp.reported_position())  # X a diameter on a diameter lathe, as #5001
         return MdiOutcome(value, moved, position, self._run.machine_position(), ended)  # type: ignore[arg-type]
 
     def _flush(self) -> None:

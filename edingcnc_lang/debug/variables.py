@@ -99,6 +99,7 @@ def _modal(run: Run) -> list[dict[str, Any]]:
               _plain("tool selected (T)", interp.selected_tool),
               _plain("coolant", " ".join(f"M{c}" for c in sorted(interp.coolant)) or "off"),
               _plain("G43 length", format_value(interp.tool_z)),
+              *([_plain("G43 X offset (radius)", format_value(interp.tool_x))] if interp.config.lathe else []),
               _plain("G92 active", "yes" if interp.g92_active else "no"),
               _plain("work offset", _pose(interp.offset()))]
     return found

@@ -434,6 +434,7 @@ class MachineState:
         def _target(self, words: Mapping[str, float], machine: bool = False,
                     start: Sequence[float] | None = None) -> list[float]: ...                 # offsets.py
         def machine_kept(self) -> AbstractContextManager[None]: ...                          # offsets.py
+        def _axis_values(self, words: Mapping[str, float]) -> dict[int, float]: ...          # offsets.py
         def work_position(self, machine: list[float] | None = None) -> list[float]: ...      # offsets.py
         def to_machine(self, work: list[float]) -> list[float]: ...                          # offsets.py
         def machine_frame(self, pose: list[float] | tuple[float, ...]) -> tuple[float, ...]: ...  # offsets.py

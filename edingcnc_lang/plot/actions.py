@@ -13,6 +13,7 @@ from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.motion.sinks import check_outputs, ensure_parent
 from edingcnc_lang.runner import RunOptions
 from edingcnc_lang.picture_formats import picture_target
+from edingcnc_lang.plot.lathe import in_work
 from edingcnc_lang.plot.toolpath import Toolpath, record_job
 
 
@@ -62,7 +63,7 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
 
         plot_joints(path, target, fmt)
     else:
-        plot_toolpath(path, target, view=view, color=color, fit=fit, fmt=fmt)
+        plot_toolpath(in_work(path), target, view=view, color=color, fit=fit, fmt=fmt)
     return Written(target, path)
 
 
@@ -79,14 +80,14 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
 
     target = ensure_parent(out or default_output(job, ".html"))
     _refuse_an_input(target, job, options)
-    path = record_job(job, options, name=name)
+    path = in_work(record_job(job, options, name=name))
     if lines is not None:
         path = path.select_lines(*lines)
         if not len(path):
             raise EcncError(f"lines {lines[0]} to {lines[1]} make no moves", Location(name or str(job)))
     if view == "auto":
         view = "lathe" if auto_view(path) == "lathe" else "iso"
-    before = record_job(old, options) if old is not None else None
+    before = in_work(record_job(old, options)) if old is not None else None
     if before is not None and lines is not None:
         before = before.select_lines(*lines)
     write_view(path, target, max_moves or MAX_MOVES, view=view, old=before)

@@ -71,6 +71,8 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     else:
         fitted += [boxes[name] for name in ("zero", "part", "limits" if fit == "machine" else "") if name in boxes]
     _frame(ax, fitted, view)
+    if view == "lathe" and path.part:
+        _label_lathe_axes(ax, path.x_diameter)
     label = _label_part(fig, ax, path, view, boxes.get("part"))
     fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
@@ -243,7 +245,8 @@ def _label_part(fig: Figure, ax: Axes, path: Toolpath, view: str, corners: np.nd
                                (_vertex(corners, top=False, left=False), "right", "top", -4)):
         if label is not None:
             label.remove()
-        label = ax.annotate(f"part {v.size_text(*bounds, view=view)}", (x, y), xytext=(0, dy),
+        label = ax.annotate(f"part {v.size_text(*bounds, view=view, diameter=path.part and path.x_diameter)}",
+                            (x, y), xytext=(0, dy),
                             textcoords="offset points", ha=ha, va=va, fontsize=8, color="#444444", zorder=5,
                             bbox={"boxstyle": "square,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8})
         extent = label.get_window_extent(renderer)
@@ -284,3 +287,16 @@ def _frame(ax: Axes, fitted: list[np.ndarray], view: str) -> None:
         ax.set_title("isometric view", fontsize=9, loc="left")
     ax.grid(True, color="#e0e0e0", lw=0.5)
     ax.set_axisbelow(True)
+
+
+def _label_lathe_axes(ax: Axes, diameter: bool) -> None:
+    """A turning job in work coordinates: Z from the work zero across, X up, its ticks read as
+    diameters on a diameter lathe (the drawing stays true to scale: a half section in radius)."""
+    from matplotlib.ticker import FuncFormatter
+
+    ax.set_xlabel("Z (mm, work)")
+    if diameter:
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda value, _pos: f"{2.0 * value:g}"))
+        ax.set_ylabel("X (mm, diameter)")
+    else:
+        ax.set_ylabel("X (mm, radius)")

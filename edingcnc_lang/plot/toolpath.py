@@ -23,6 +23,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
 from edingcnc_lang.kinematics.trajectory import arc_geometry
 from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.plot.lathe import WORK_OFFSET, watch_offsets
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.syntax.source import iter_file_lines
 
@@ -76,6 +77,10 @@ class Toolpath:
     #                                               row, at most SAMPLE_ROWS)
     sample_spread: dict[str, float] | None = None  # each of those columns' max - min over every row
     copies: dict[str, str] = field(default_factory=dict)  # a name in ``paths`` -> the file to read its text from
+    # a lathe's run: the work offset (machine - work, XYZ) each move ran with (plot/lathe.py); None elsewhere
+    offsets: np.ndarray | None = None
+    part: bool = False          # in work coordinates (plot/lathe.part_view), not the machine's
+    x_diameter: bool = False    # the machine programs X as a diameter: the lathe view labels X so
 
     def __len__(self) -> int:
         return len(self.kinds)
@@ -212,6 +217,8 @@ class Recorder:
         self.paths: dict[str, int] = {}
         self.tool = 0
         self._kind = {kind: i for i, kind in enumerate(KINDS)}
+        self.offset = (0.0, 0.0, 0.0)  # a lathe's run: the work offset in force (plot/lathe.py)
+        self.offsets = array("d")      # ... and each move's
 
     def move(self, move: Move, joints: Pose, timing: Timing) -> None:
         file_index = self.paths.setdefault(move.path, len(self.paths))
@@ -222,10 +229,13 @@ class Recorder:
         self.poses.extend(move.start)
         self.poses.extend(move.end)
         self.poses.extend(joints)
+        self.offsets.extend(self.offset)
 
     def event(self, event: Event) -> None:
         if event.kind == "tool_change":
             self.tool = int(event.data.get("tool", self.tool))
+        elif event.kind == WORK_OFFSET:
+            self.offset = event.data["offset"]
 
     def toolpath(self, job: str, config: MachineConfig, result: RunResult | None,
                  error: EcncError | None) -> Toolpath:
@@ -241,7 +251,9 @@ class Recorder:
             speeds=table[:, 7] * 60.0, seconds=final.estimate.seconds if final is not None and final.estimate is not None else 0.0,
             starts=poses[:, 0].copy(), ends=poses[:, 1].copy(), joints=poses[:, 2].copy(), arcs=self.arcs,
             work_zero=zero, limits=machine_limits(config), result=final, error=error,
-            joint_names=tuple(j.name for j in config.joints), kinematics=config.kinematics_name or "trivial")
+            joint_names=tuple(j.name for j in config.joints), kinematics=config.kinematics_name or "trivial",
+            offsets=np.frombuffer(self.offsets, dtype=float).reshape(-1, 3).copy() if config.lathe else None,
+            x_diameter=config.diameter_mode)
 
 
 def machine_limits(config: MachineConfig) -> tuple[np.ndarray, np.ndarray] | None:
@@ -292,6 +304,8 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     result: RunResult | None = None
     error: EcncError | None = None
     run = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event))
+    if config.lathe:
+        watch_offsets(run)
     try:
         result = run.execute_file(Path(job), name)
     except EcncError as err:

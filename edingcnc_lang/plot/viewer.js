@@ -377,7 +377,9 @@
     row("feed", isRapid(i) ? "rapid" : feed[i].toFixed(0) + " mm/min", true);
     row("planned speed", speed[i].toFixed(0) + " mm/min", true);
     row("time", clock(time[i]) + " of " + clock(D.seconds || 0), true);
-    ["X", "Y", "Z"].forEach((a, k) => row(a, fmt(points[3 * p + k])));
+    ["X", "Y", "Z"].forEach((a, k) => D.xDiameter && k === 0
+      ? row("X (diameter)", fmt(2 * points[3 * p]))
+      : row(a, fmt(points[3 * p + k])));
     if (abc) ["A", "B", "C"].forEach((a, k) => row(a, fmt(abc[3 * i + k])));
     if (joints) {
       D.jointRows.forEach(([k, name]) => row("joint " + k + " (" + name + ")", fmt(joints[6 * i + k])));

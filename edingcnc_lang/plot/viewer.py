@@ -89,6 +89,8 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "maxMoves": max_moves, "view": view, "kinds": list(KINDS), "rapidKinds": sorted(RAPID_KINDS),
         "files": list(path.paths), "toolColors": list(v.TOOL_COLORS), "kindColors": v.KIND_COLORS,
         "tools": v.feed_tools(path),
+        # a lathe's part in work coordinates: the readout shows X as the program does (a diameter)
+        "xDiameter": path.part and path.x_diameter,
         "points": _b64(np.vstack(points) if points else np.zeros((0, 3)), "f4"),
         "first": _b64(first, "i4"), "last": _b64(last, "i4"),
         "kind": _b64(path.kinds[keep], "u1"), "tool": _b64(path.tools[keep], "i4"),

@@ -40,7 +40,10 @@ def projection(view: str) -> np.ndarray:
 
 
 def auto_view(path: Toolpath) -> str:
-    """``top`` for mills; ``lathe`` (Z across, X up) for a job that never moves Y but moves X and Z."""
+    """``top`` for mills; ``lathe`` (Z across, X up) for a lathe's job in work coordinates and for a
+    job that never moves Y but moves X and Z."""
+    if path.part:
+        return "lathe"
     if not len(path):
         return "top"
     points = np.vstack((path.starts[:, :3], path.ends[:, :3]))
@@ -76,9 +79,13 @@ def is_rapid(kind: int) -> bool:
     return kind in RAPID_KINDS
 
 
-def size_text(lower: np.ndarray, upper: np.ndarray, view: str = "top") -> str:
+def size_text(lower: np.ndarray, upper: np.ndarray, view: str = "top", diameter: bool = False) -> str:
     """The part's size, ``X 84.00 x Y 44.00 x Z 14.00 mm``; in the lathe view the turning plane's
-    two, in the order the picture shows them (``Z 120.00 x X 4.00 mm``, X a radius): a lathe has no Y."""
+    two, in the order the picture shows them (``Z 120.00 x X 4.00 mm``, X a radius): a lathe has no Y.
+    ``diameter``: a part in work coordinates on a diameter lathe, whose X is its largest diameter
+    (``Z 52.00 x diameter 62.00 mm``)."""
+    if view == "lathe" and diameter:
+        return f"Z {upper[2] - lower[2]:.2f} x diameter {2.0 * max(abs(upper[0]), abs(lower[0])):.2f} mm"
     size = dict(zip("XYZ", upper - lower))
     axes = "ZX" if view == "lathe" else "XYZ"
     return " x ".join(f"{axis} {size[axis]:.2f}" for axis in axes) + " mm"
