@@ -46,9 +46,18 @@ class CompensationSteps(MachineState):
         radius = self._comp_radius(code, words, span)
         self.modal["cutter_comp"] = code
         side = "left" if code in (G_41, G_41_1) else "right"
-        self.canon.event(Event("cutter_comp", self.path, self.line,
-                               {"side": side, "radius": radius, "plane": PLANE_OF[self.modal["plane"]],
-                                "inch": self.inch}))
+        plane = PLANE_OF[self.modal["plane"]]
+        data: dict[str, object] = {"side": side, "radius": radius, "plane": plane, "inch": self.inch}
+        if self.config.lathe and plane == "XZ":  # the nose's controlled point (manual pp. 5-6)
+            data["orientation"] = self._comp_orientation(code, words)
+        self.canon.event(Event("cutter_comp", self.path, self.line, data))
+
+    def _comp_orientation(self, code: int, words: Mapping[str, float]) -> int:
+        """The lathe tool's orientation (#5700 + n): of tool D for G41/G42 (default the tool in the
+        turret), of the tool in the turret for G41.1/G42.1 (whose D is a diameter)."""
+        tool = int(self.params.read(t.TOOL_CURRENT)) if code in DIAMETER_CODES else \
+            int(words.get("D", self.params.read(t.TOOL_CURRENT)))
+        return int(self.params.read(t.TOOL_ORIENTATION + tool)) if tool else 0
 
     def _comp_radius(self, code: int, words: Mapping[str, float], span: n.Span) -> float:
         """The tool radius in mm; negative swaps the side (a tool smaller than the nominal one)."""

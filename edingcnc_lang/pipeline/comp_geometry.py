@@ -170,6 +170,20 @@ class Frame:
         return [(x, a, b, u, v, w) for a, b, (x, _, _, u, v, w) in pairs]
 
 
+# A lathe tool's controlled point (the imaginary tip its offsets were measured to) seen from the
+# nose's centre, by its orientation 1..8 (the tool table's, #5700 + n), in tool radii along machine
+# X and Z: the manual's figure (pp. 5-6: orientation 2 is X -r, Z -r; 9 has none) and LinuxCNC's
+# latheorigin_x/z (interp_queue.cc), which agree.  Compensation moves the nose centre; the machine
+# is sent the controlled point.
+TIP_X = {1: -1, 2: -1, 6: -1, 3: 1, 4: 1, 8: 1}
+TIP_Z = {2: -1, 3: -1, 7: -1, 1: 1, 4: 1, 5: 1}
+
+
+def tip_shift(orientation: int, radius: float) -> tuple[float, float]:
+    """(X, Z) from the nose centre to the controlled point; (0, 0) for 0 (a mill's tool), 9 and others."""
+    return TIP_X.get(orientation, 0) * radius, TIP_Z.get(orientation, 0) * radius
+
+
 @dataclass
 class Queued:
     """A compensated move not yet handed on: its end may still move back into a concave corner."""

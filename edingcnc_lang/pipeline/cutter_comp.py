@@ -13,7 +13,9 @@ the path sideways by the tool radius in the selected plane:
   sides (line-line, line-arc, arc-line and arc-arc intersections); a corner the tool cannot fit
   into without cutting into the part is refused, naming the line;
 - after G40 the last move ends at its compensated end point and the next move (the exit move,
-  straight) goes from there to its programmed end.
+  straight) goes from there to its programmed end;
+- on a lathe (the event's ``orientation``, XZ plane) the path computed is the nose centre's, and
+  every compensated point is handed on moved to the tool's controlled point (``tip_shift``).
 
 A compensated move is held back until the next move shows which kind of corner follows; events
 programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wait with it.
@@ -52,6 +54,7 @@ from edingcnc_lang.pipeline.comp_geometry import (
     line_corner,
     outside_corner,
     reverses,
+    tip_shift,
     tool_inside_arc,
 )
 
@@ -83,6 +86,7 @@ class CutterCompensation(Stage):
         self.endpoint: Point | None = None  # where the queued moves start (LinuxCNC's endpoint)
         self.emitted: Pose | None = None   # where the machine is after the moves handed on
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
+        self.tip = (0.0, 0.0)              # a lathe tool: X, Z from the nose centre to its controlled point
         # compensated straight moves released during one call, handed on together as one Batch
         self.out: Batch | None = None
         self.alone = 0  # moves of long batches taken one at a time because numpy was not loaded
@@ -101,7 +105,7 @@ class CutterCompensation(Stage):
             return
         try:
             if (self.side and batch.css is None and batch.arcs is None and len(batch) >= self.long_run
-                    and self._arrays_pay(len(batch))):
+                    and self.tip == (0.0, 0.0) and self._arrays_pay(len(batch))):
                 from edingcnc_lang.pipeline.comp_runs import take_batch
 
                 take_batch(self, batch)
@@ -156,6 +160,8 @@ class CutterCompensation(Stage):
         """Hand a released move on: a straight one joins the batch being collected while it shares the
         batch's spindle, caller and file; returns where it ends."""
         origin = item.origin
+        if self.tip != (0.0, 0.0):
+            self._at_tip(item)
         if item.center is not None or origin.css is not None:
             self._send()
             move = item.to_move(start, self.frame)
@@ -168,6 +174,15 @@ class CutterCompensation(Stage):
         out.ends.append(end)  # type: ignore[attr-defined]
         out.feeds.append(item.feed)  # type: ignore[attr-defined]
         return end  # type: ignore[return-value]
+
+    def _at_tip(self, item: Queued) -> None:
+        """A lathe tool's move, computed for the nose centre, moved to the tool's controlled point."""
+        dx, dz = self.tip
+        item.end = list(item.end)
+        item.end[0] += dx
+        item.end[2] += dz
+        if item.center is not None:  # XZ frame points are (z, x)
+            item.center = (item.center[0] + dz, item.center[1] + dx)
 
     def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose]) -> None:
         """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``."""
@@ -207,13 +222,19 @@ class CutterCompensation(Stage):
             self.radius = radius
             self.frame = Frame(str(event.data.get("plane", "XY")))
             self.sweep_slack = ARC_SWEEP_SLACK_INCH if event.data.get("inch") else ARC_SWEEP_SLACK_MM
+            orientation = int(event.data.get("orientation", 0)) if self.frame.plane == "XZ" else 0
+            self.tip = tip_shift(orientation, radius)
             self.first = True
             return
         if self.side and not self.first:  # G40: the last move ends at its compensated end (checked as any corner)
             self._move_endpoint_and_flush(self.frame.point(self.current), event)
-            self.exit_from = tuple(self.current)  # type: ignore[assignment]
+            end = list(self.current)
+            end[0] += self.tip[0]
+            end[2] += self.tip[1]
+            self.exit_from = tuple(end)  # type: ignore[assignment]
         self.side = 0
         self.first = True
+        self.tip = (0.0, 0.0)
 
     def _uncompensated(self, move: Move) -> None:
         if self.exit_from is not None:  # the exit move starts where compensation left the tool

@@ -28,7 +28,7 @@ def test_example_lathe_ini() -> None:
     assert config.machine_type == TURNING and config.lathe and config.diameter_mode
     assert (config.spindle_max_rpm, config.spindle_min_rpm) == (3200.0, 120.0)   # [SPINDLE_0], as V4.03 writes it
     tool = config.tools[3]
-    assert (tool.length, tool.width, tool.z_delta, tool.x_delta, tool.orientation) == (18.905, -30.512, -0.02, 0.0, 8)
+    assert (tool.length, tool.width, tool.z_delta, tool.x_delta, tool.orientation) == (18.905, -30.512, -0.02, 0.0, 6)
     assert config.variables[5008] == 3 and config.variables[5014] == -15.256
     assert config.macro_file is not None and config.macro_file.name == "macro.cnc"
 
