@@ -80,3 +80,35 @@ def test_g7_in_a_job_names_the_ini_key(tmp_path: Path) -> None:
     assert result.exit_code == 70
     assert f"{job}:2:1: error: unknown G code G7:" in result.stderr and "diameterProgramming = 1" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def _sync_cuts(events: Path) -> list[dict]:
+    records = [json.loads(line) for line in events.read_text().splitlines()]
+    return [r for r in records if r["type"] == "move" and r["synchronised"]]
+
+
+def test_example_threading_cuts_the_diameters_of_its_threads(tmp_path: Path) -> None:
+    """examples/lathe/threading.nc: M12x1.5 outside (T3, width -30.512: X -15.256) and M20x1.5 inside
+    (T6, width 14.3: X +7.15), G54 X 24 (a radius): crest and root diameters and the pass counts."""
+    events = tmp_path / "events.jsonl"
+    doc = run_json("--ini", EXAMPLE / "cnc.ini", EXAMPLE / "threading.nc", "--events", events)
+    assert doc["ended_by"] == "M30"
+    cuts = _sync_cuts(events)
+    outside = [c for c in cuts if c["line"] == 194]
+    inside = [c for c in cuts if c["line"] == 215]
+    assert len(outside) == 2 * 24 and len(inside) == 10   # 21 + K + H2 passes with an exit taper; 8 + K + H1
+    diameter = {"outside": lambda c: 2 * (c["end"][0] - 24 + 15.256), "inside": lambda c: 2 * (c["end"][0] - 24 - 7.15)}
+    outer = [diameter["outside"](c) for c in outside if c["pitch"] == 1.5]  # the cuts, not the exit tapers
+    assert min(outer) == pytest.approx(12 - 2 * 0.6134 * 1.5) and max(outer) <= 12 + 1e-9
+    inner = [diameter["inside"](c) for c in inside]
+    assert max(inner) == pytest.approx(20.0) and min(inner) == pytest.approx(20 - 2 * 0.5413 * 1.5 + 2 * 0.1)
+
+
+def test_example_facing_takes_the_face_to_work_z0(tmp_path: Path) -> None:
+    events = tmp_path / "events.jsonl"
+    doc = run_json("--ini", EXAMPLE / "cnc.ini", EXAMPLE / "facing.nc", "--events", events)
+    records = [json.loads(line) for line in events.read_text().splitlines()]
+    faces = [r for r in records if r["type"] == "move" and r["kind"] == "linear"]
+    assert doc["ended_by"] == "M30" and len(faces) == 3
+    assert [round(f["end"][2] + 118.25, 6) for f in faces] == [1.0, 0.5, 0.0]   # G54 Z -118.25, T1 length 0
+    assert all(f["end"][0] == pytest.approx(24.0 + 0.03 / 2) for f in faces)     # to the centre: T1 xDelta 0.03
