@@ -42,7 +42,7 @@ def projection(view: str) -> np.ndarray:
 def auto_view(path: Toolpath) -> str:
     """``top`` for mills; ``lathe`` (Z across, X up) for a lathe's job in work coordinates and for a
     job that never moves Y but moves X and Z."""
-    if path.part:
+    if getattr(path, "part", False):  # (``ecnc diff`` passes its Recording, which has no part view)
         return "lathe"
     if not len(path):
         return "top"
