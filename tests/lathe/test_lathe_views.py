@@ -63,3 +63,16 @@ def test_a_mills_path_keeps_machine_coordinates(tmp_path: Path) -> None:
     job.write_text("G0 X10 Y5\nG1 Z-1 F100\n")
     path = record_job(job, RunOptions())
     assert path.offsets is None and in_work(path) is path
+
+
+def test_the_debugger_shows_work_x_as_a_diameter_and_the_g43_x_offset(tmp_path: Path) -> None:
+    from edingcnc_lang.debug.variables import _modal, _position
+    from edingcnc_lang.runner import Run
+
+    job = tmp_path / "job.nc"
+    job.write_text("T2 M6\nG0 X30 Z5\n")
+    run = Run(RunOptions(ini=INI, macro=EXAMPLE / "macro.cnc"))
+    run.execute_file(job)
+    position = {v["name"]: v["value"] for v in _position(run)}
+    modal = {v["name"]: v["value"] for v in _modal(run)}
+    assert position["work X"] == "30" and modal["G43 X offset (radius)"] == "-10.72"
