@@ -81,9 +81,10 @@ G_ROWS: tuple[Row, ...] = (
      "Rigid tapping: F is the pitch per spindle revolution (M4 S600 F1: 600 mm/min), synchronised; the spindle "
      "reverses at the bottom to feed out to the clear level, then turns back. Needs the spindle turning."),
     (76, "threading cycle", "P Z I J K R Q H E L",
-     "Multi-pass thread from the current position to Z: P pitch, I crest offset (negative outside), J first cut, "
-     "K thread depth, R degression, Q compound angle, H spring passes, E/L taper. XZ plane (G18); "
-     "I J K are diameters in diameter mode. Lathe only (machineType = 1)."),
+     "Multi-pass thread from the current position to Z: P pitch, I the crest diameter (absolute, always "
+     "positive; a start outside it cuts an outside thread, inside it an inside thread), J first cut and "
+     "K thread depth beyond the crest (radial), R degression, Q compound angle, H spring passes, E/L taper. "
+     "XZ plane (G18). Lathe only (machineType = 1 or 2)."),
     (80, "cancel canned cycle", "", "Ends the active canned cycle; axis words alone no longer drill."),
     (81, "drilling cycle", "X Y Z R L F", "Rapid to R, feed to Z, rapid out (to the start Z with G98, to R with G99). L repeats."),
     (82, "drilling cycle with dwell", "X Y Z R P L F", "As G81 with a dwell of P seconds at the bottom."),
