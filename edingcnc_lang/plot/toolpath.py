@@ -23,6 +23,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
 from edingcnc_lang.kinematics.trajectory import arc_geometry
 from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.machine.tables import TOOL_CURRENT
 from edingcnc_lang.plot.lathe import WORK_OFFSET, watch_offsets
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.syntax.source import iter_file_lines
@@ -304,6 +305,7 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
     result: RunResult | None = None
     error: EcncError | None = None
     run = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event))
+    recorder.tool = int(run.interpreter.params.read(TOOL_CURRENT))  # the tool the ini's [VARIABLES] left in
     if config.lathe:
         watch_offsets(run)
     try:

@@ -76,3 +76,10 @@ def test_the_debugger_shows_work_x_as_a_diameter_and_the_g43_x_offset(tmp_path: 
     position = {v["name"]: v["value"] for v in _position(run)}
     modal = {v["name"]: v["value"] for v in _modal(run)}
     assert position["work X"] == "30" and modal["G43 X offset (radius)"] == "-10.72"
+
+
+def test_the_picture_knows_the_tool_the_ini_left_in_the_turret(tmp_path: Path) -> None:
+    job = tmp_path / "job.nc"
+    job.write_text("G0 X20 Z2\nG1 Z-5 F100\n")
+    path = record_job(job, RunOptions(ini=INI, macro=EXAMPLE / "macro.cnc"))
+    assert set(path.tools.tolist()) == {3}   # [VARIABLES] #5008 = 3
