@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from edingcnc_lang.canon import Arc, Batch, Event, Move
+from edingcnc_lang.canon import Arc, Batch, Canon, Event, Move
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.machine.state import MachineState
 from edingcnc_lang.pipeline.base import Stage
@@ -32,8 +32,8 @@ class OffsetWatch(Stage):
     moves).  The stages in front hold no move across an offset change: G43, G92 and G10 are refused
     under cutter compensation."""
 
-    def __init__(self, next_canon: Stage | object, config: MachineConfig, machine: MachineState) -> None:
-        super().__init__(next_canon, config)  # type: ignore[arg-type]
+    def __init__(self, next_canon: Canon, config: MachineConfig, machine: MachineState) -> None:
+        super().__init__(next_canon, config)
         self.machine = machine
         self.sent: tuple[float, ...] | None = None
 
