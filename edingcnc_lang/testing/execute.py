@@ -203,9 +203,10 @@ class _Watch:
             self._add("feed_with_spindle_off", f"the {move.kind} move at {where} feeds with the spindle off")
 
     def _work(self, machine: Pose) -> list[float]:
+        """Work coordinates as the program reads them (#5001..: X a diameter on a diameter lathe)."""
         interp = self.interpreter
         assert interp is not None
-        return interp.work_position(interp.program_frame(machine))
+        return interp.reported_position(interp.program_frame(machine))
 
     @staticmethod
     def _points(move: Move) -> list[Pose]:

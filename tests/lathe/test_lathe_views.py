@@ -83,3 +83,15 @@ def test_the_picture_knows_the_tool_the_ini_left_in_the_turret(tmp_path: Path) -
     job.write_text("G0 X20 Z2\nG1 Z-5 F100\n")
     path = record_job(job, RunOptions(ini=INI, macro=EXAMPLE / "macro.cnc"))
     assert set(path.tools.tolist()) == {3}   # [VARIABLES] #5008 = 3
+
+
+def test_ecnc_test_boxes_read_x_as_the_program_does(tmp_path: Path) -> None:
+    """A turning test's forbid.outside box is written in the program's coordinates: X a diameter."""
+    from edingcnc_lang.testing.checks import failures
+    from edingcnc_lang.testing.execute import run_case
+    from edingcnc_lang.testing.spec import from_mapping
+
+    keys = {"ini": str(INI), "macro": str(EXAMPLE / "macro.cnc"), "job": "G0 X40 Z2\nG0 X64 Z2\nM30\n",
+            "forbid": {"outside": [0, -1, -50, 62, 1, 5]}}
+    assert failures(run_case(from_mapping(keys, tmp_path))) == [
+        "forbid.outside: the rapid move at <job>:2 reaches work X64 Y0 Z2, outside the box"]
