@@ -15,6 +15,8 @@ from edingcnc_lang.records import record
 
 
 class Severity(str, Enum):
+    """How bad a finding is: an error (the controller refuses it) or a warning (it runs, likely wrongly)."""
+
     ERROR = "error"
     WARNING = "warning"
 
@@ -170,7 +172,7 @@ RUNTIME_CODES: dict[str, RuntimeCode] = _runtime(
      (r"division by zero", r"fractional power", r"has no finite value", r"is not a finite number",
       r"^\S+\[.*\]: ")),
     ("R814", "a parameter number that does not exist or is not whole",
-     (r"^parameter (number|#)", r"is not a parameter", r"not a field of this dialog")),
+     (r"^parameter (number|#)", r"is not a parameter", r"^the answer sets #")),
     ("R815", "a write to a read-only system variable", (r"read-only system variable",)),
     ("R816", "outside the machine's limits (joints, Cartesian limits, velocity, the tool-change area)",
      (r"outside its limits", r"outside the Cartesian limits", r"above its maxVelocity", r"would make joint .* jump",
@@ -181,7 +183,8 @@ RUNTIME_CODES: dict[str, RuntimeCode] = _runtime(
     ("R818", "a word a code needs is missing or out of range",
      (r"needs ", r"must be ", r"must lie ", r"must not be", r"is below the hole", r"is negative",
       r"write .*1 to turn", r"expects ", r"is less than", r"at least .* mm", r"^negative feed rate",
-      r"^spindle speed", r"^L \(repeat", r"without a motion mode", r"^G53 moves", r"^G38\.2 needs")),
+      r"^spindle speed", r"^L \(repeat", r"without a motion mode", r"^G53 moves", r"^G38\.2 needs",
+      r"would flatten")),
     ("R819", "feed rate missing or zero on a feed move", (r"^feed rate is 0", r"^feed per revolution")),
     ("R820", "the spindle must turn for this move", (r"needs the spindle turning",)),
     ("R821", "a tool that does not exist", (r"^tool T.* does not exist", r"no such tool", r"is a tool number")),
@@ -194,13 +197,15 @@ RUNTIME_CODES: dict[str, RuntimeCode] = _runtime(
       r"clamped \(M26\)")),
     ("R826", "threading (G33, G33.1, G76) cannot run as written", (r"^G76 ", r"^G33", r"the pitch")),
     ("R827", "a file the run writes or reads cannot be used (log file, trace, Exec)",
-     (r"^cannot (write|read|run)", r"log file", r"^logmsg: ", r"^Exec ", r"another run is writing")),
+     (r"^cannot (write|read|run)", r"log file", r"^logmsg: ", r"^logfile ", r"^Exec ", r"another run is writing")),
     ("R828", "a named command or device given wrong arguments (modbus, GetToolInfo, M54, M22)",
-     (r"^modbus", r"^a modbus", r"^GetToolInfo", r"^M\d+ [A-Z]", r"^M\{", r"^PrepareLinDeltaHome")),
-    ("R829", "a kinematics mode or control call failed", (r"^unknown (KIN|kinematics) mode", r"^KIN ",
-                                                          r"^kinematics ")),
+     (r"^modbus", r"^a modbus", r"^GetToolInfo", r"^M\d+ [A-Z]", r"^M\{", r"^PrepareLinDeltaHome", r"\(got ")),
+    ("R829", "a kinematics mode or control call failed, or a pose the kinematics cannot reach",
+     (r"^unknown (KIN|kinematics) mode", r"^KIN ", r"^kinematics ", r"\(kinematics [^)]*\)$")),
     ("R830", "something this simulator does not support", (r"not supported by this simulator",
                                                            r"out of memory")),
+    ("R831", "an arc that cannot be made as written (radius, centre and end do not agree)",
+     (r" in the \S+ plane$",)),
     ("R899", "any other run-time error", ()),
 )
 
