@@ -233,7 +233,8 @@ class Run:
         """Run ``job`` in a thread of its own and hand its moves over as they are made:
         ``for move in run.moves("job.nc")``.  At most ``buffer`` moves wait in memory; leaving the loop
         early (``break``, or ``close()``) cancels the run.  ``stream.result`` is the result afterwards;
-        an error that stopped the run is raised from the loop after the moves made before it."""
+        an error that stopped the run is raised from the loop after the moves made before it, except
+        ``Cancelled`` (``Run.cancel()``, a stop button): the loop just ends and ``stream.error`` holds it."""
         return MoveStream(self, Path(job), buffer)
 
     def _where(self) -> Location:
@@ -514,10 +515,10 @@ class MoveStream(Iterator[Move]):
         if item is _END:
             self._queue.put(_END)  # a second next() ends again
             self._thread.join()
-            if self.error is not None and not (self._closed and isinstance(self.error, Cancelled)):
+            if self.error is not None and not isinstance(self.error, Cancelled):
                 error, self.error = self.error, None
                 raise error
-            raise StopIteration
+            raise StopIteration  # a cancelled run (a stop button) ends the loop quietly: ``error`` says so
         assert isinstance(item, Move)
         return item
 

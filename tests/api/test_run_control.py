@@ -54,7 +54,13 @@ def test_a_callback_that_raises_stops_the_run_where_it_raised_with_the_partial_r
 
 def test_cancel_from_a_callback_ends_with_cancelled_and_what_the_callbacks_saw(job: Path) -> None:
     seen: list[Move] = []
-    run = Run(RunOptions(on_move=lambda move, joints: (seen.append(move), len(seen) == 500 and run.cancel())))
+
+    def on_move(move: Move, joints: Pose) -> None:
+        seen.append(move)
+        if len(seen) == 500:
+            run.cancel()
+
+    run = Run(RunOptions(on_move=on_move))
     with pytest.raises(Cancelled) as info:
         run.execute_file(job)
     assert info.value.code == "R802" and info.value.exit_code == 130
@@ -67,7 +73,11 @@ def test_cancel_from_another_thread_stops_a_run_without_callbacks() -> None:
     run = Run(RunOptions(max_steps=None, plan=False, host=Host(message=lambda *args: started.set())))
     # an endless loop with no moves: only the statement check can stop it
     job = 'msg "go"\nWhile [1]\n#1 = [#1 + 1]\nEndWhile\n'
-    timer = threading.Thread(target=lambda: (started.wait(60), run.cancel()))
+    def press_stop() -> None:
+        started.wait(60)
+        run.cancel()
+
+    timer = threading.Thread(target=press_stop)
     timer.start()
     with pytest.raises(Cancelled) as info:
         run.execute_text(job)
