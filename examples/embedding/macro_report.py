@@ -7,13 +7,11 @@ from __future__ import annotations
 
 import sys
 from collections import Counter
+from importlib import resources
 from pathlib import Path
 
 from edingcnc_lang import LintOptions, Visitor, lint_paths, parse_file, walk
 from edingcnc_lang.syntax import nodes as n
-
-HERE = Path(__file__).resolve().parent
-
 
 class SubFacts(Visitor):
     """Per sub: the subs it calls and the parameter numbers it writes (constant ones)."""
@@ -55,7 +53,7 @@ def report(path: Path) -> str:
 
 
 def main(argv: list[str]) -> int:
-    path = Path(argv[0]) if argv else HERE.parents[1] / "stdlib" / "macro.cnc"
+    path = Path(argv[0]) if argv else Path(str(resources.files("edingcnc_lang") / "stdlib" / "macro.cnc"))
     print(report(path))
     return 0
 
