@@ -53,6 +53,21 @@ from edingcnc_lang.pipeline.height_comp import HeightCompensation
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
 
+@dataclass(frozen=True)
+class Assumption:
+    """Something a run assumed because nobody said otherwise: ``what`` names it (``machine``, ``macro``,
+    ``probe``), ``text`` says it to a person; ``location`` is where it first mattered (None: the whole run)."""
+
+    what: str
+    text: str
+    location: Location | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        where = self.location
+        return {"what": self.what, "text": self.text, "file": where.path if where else None,
+                "line": where.line if where else None}
+
+
 @dataclass
 class RunResult:
     """The machine after a run: what ``ecnc run --json`` prints."""
@@ -79,6 +94,8 @@ class RunResult:
     # every parameter #1..#5999 as the run left it, written or not (``variables`` holds only the
     # written ones): a read-only mapping, ``result.parameters[4050]``
     parameters: Mapping[int, float] = field(default_factory=dict)
+    # what the run assumed because nobody said (no ini, the packaged macro, a simulated probe)
+    assumptions: list[Assumption] = field(default_factory=list)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -99,6 +116,7 @@ class RunResult:
             "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
             **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
+            "assumptions": [a.to_json() for a in self.assumptions],
         }
 
 
@@ -145,6 +163,11 @@ class RunOptions:
     simulation: bool = True
     block_delete: bool = False
     save_vars: bool = False
+    # False: the run only looks (ecnc plot, view, sim, diff): the files the job writes (logfile, logmsg,
+    # ZHCS) are kept in memory (the job reads back what it wrote), nothing on disk changes
+    write_job_files: bool = True
+    # told of each thing the run assumes because nobody said (the CLI prints them on stderr)
+    on_assumption: Callable[[Assumption], None] | None = None
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
     strict: bool = False  # macro lines that do not parse are errors at load, not warnings
@@ -177,6 +200,7 @@ class Run:
         self._reader: StatementReader | None = None  # the run pass over a job file: an error's line text
         self.job_lines = 0  # lines of the job file, counted by the check pass (for a progress line)
         self.warnings: list[Diagnostic] = []
+        self.assumptions: list[Assumption] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         for warning in self.config.warnings:
             self._warn(warning)
@@ -211,11 +235,16 @@ class Run:
         if self.planner is not None:
             self.planner.joints_of = self.motion.joints_at
         self.pipeline = Pipeline(STAGES, self.motion, self.config)
-        self.interpreter = Interpreter(self.pipeline.head, self.config, _guarded(options.host, self._where),
+        host = options.host
+        if host.probe is None:  # the simulated probe: trips at its target, and the run says so once
+            host = replace(host, probe=self._simulated_probe)
+        self.interpreter = Interpreter(self.pipeline.head, self.config, _guarded(host, self._where),
                                        max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete,
                                        observer=options.observer)
+        if not options.write_job_files:
+            self.interpreter.kept_files = {}
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
         if self.planner is not None:
@@ -236,6 +265,27 @@ class Run:
         an error that stopped the run is raised from the loop after the moves made before it, except
         ``Cancelled`` (``Run.cancel()``, a stop button): the loop just ends and ``stream.error`` holds it."""
         return MoveStream(self, Path(job), buffer)
+
+    def _assume(self, what: str, text: str, location: Location | None = None) -> None:
+        assumption = Assumption(what, text, location)
+        self.assumptions.append(assumption)
+        if self.options.on_assumption is not None:
+            self.options.on_assumption(assumption)
+
+    def _simulated_probe(self, start: Pose, target: Pose) -> Pose:
+        if not any(a.what == "probe" for a in self.assumptions):
+            self._assume("probe", "the probe is simulated: G38.2 trips at its target, so a measured length "
+                         "is the target's (give --probe-at Z or --probe-surface FILE)", self._where())
+        return target
+
+    def _assume_setup(self) -> None:
+        """Say what the machine is when the user did not: no ini, no macro file of theirs."""
+        if self.config.path is None:
+            self._assume("machine", "no cnc.ini given: a built-in 6-axis mill (EdingCNC 4.03), machine zero = work "
+                         "zero, travel +-1,000,000 mm at 1000 mm/s, an empty tool table (give --ini FILE)")
+        if not (self.options.macro or self.config.macro_file):
+            self._assume("macro", f"no macro file given or named by the ini: the packaged {packaged_macro().name} "
+                         "(M6's change_tool, homing, tool measurement) (give --macro FILE)")
 
     def _where(self) -> Location:
         return Location(self.interpreter.path, self.interpreter.line)
@@ -296,7 +346,8 @@ class Run:
     def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
         """What happens before a job's first line (and before an MDI session's): the outputs are
         opened, the macro files' subs are defined and their top-level lines run, then the ini's
-        initialString."""
+        initialString; then ``RunOptions.variables`` are set."""
+        self._assume_setup()
         self.open_outputs()
         interp = self.interpreter
         for _path, program in macros:
@@ -306,6 +357,7 @@ class Run:
             interp.run(stmt for stmt in program.body if not isinstance(stmt, n.BadLine))
         if self.config.initial_string:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+        self._set_variables()
 
     def execute_file(self, job: Path, name: str | None = None) -> RunResult:
         """Check the job, then run it as it streams in; ``name`` is what messages call it (default its path)."""
@@ -349,7 +401,6 @@ class Run:
         error: EcncError | None = None
         try:
             self.start(macros)
-            self._set_variables()
             if "start" in interp.subs:
                 interp.call_sub("start")
             interp.run(statements())
@@ -438,6 +489,7 @@ class Run:
             limits=self.planner.limits.to_json() if self.planner else None,
             work_zero=tuple(interp.offset()),  # type: ignore[arg-type]
             parameters=interp.params.frozen(),
+            assumptions=list(self.assumptions),
         )
 
 

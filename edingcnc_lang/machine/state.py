@@ -191,6 +191,8 @@ class MachineState:
         self.log_dir = log_dir
         # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
         self.own_files: frozenset[tuple[int, int]] = frozenset()
+        # a run that only looks (plot, view, sim, diff): the files the job writes are kept here, not on disk
+        self.kept_files: dict[Path, str] | None = None
         self.allow_exec = allow_exec
         self.block_delete = block_delete
         self.steps = 0
