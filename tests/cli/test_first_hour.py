@@ -122,7 +122,8 @@ def test_a_run_writes_the_jobs_log_and_log_dir_makes_its_folder(tmp_path: Path) 
 
 def test_test_takes_q(tmp_path: Path) -> None:
     write(tmp_path, "macro.cnc", "Sub two\n#1 = 2\nEndSub\n")
-    write(tmp_path, "test_two.toml", 'macro = "macro.cnc"\n[[test]]\nname = "two"\njob = "GoSub two"\nexpect.vars = { 1 = 2 }\n'
+    write(tmp_path, "test_two.toml", '[defaults]\nmacro = "macro.cnc"\n'
+                                     '[[test]]\nname = "two"\njob = "GoSub two"\nexpect.vars = { 1 = 2 }\n'
                                      '[[test]]\nname = "three"\njob = "GoSub two"\nexpect.vars = { 1 = 3 }\n')
     result = invoke("test", "-q", tmp_path)
     assert "PASS" not in result.stdout and "FAIL" in result.stdout and "1 passed, 1 failed" in result.stdout
