@@ -36,12 +36,19 @@ PLANES: Mapping[str, tuple[int, int, int]] = {"XY": (0, 1, 2), "XZ": (2, 0, 1), 
 
 @record(frozen=True, slots=True)
 class Arc:
-    """Circle data of an arc move: centre (machine, in-plane pair), plane, direction and turns."""
+    """Circle data of an arc move: centre (machine, in-plane pair), plane, direction and turns.
+
+    ``full_turns`` says whether the arc closes on itself.  0: the arc goes from its start to its end
+    point the short way round in its direction (less than one turn).  N >= 1: start and end are the
+    same point of the plane (a full circle, or a helix that comes back above its start) and the arc
+    makes N whole turns: add no partial angle to them.  ``kinematics.trajectory.move_length(move)``
+    gives the length as the planner counts it, ``move_points(move)`` points along the path.
+    """
 
     center: tuple[float, float]  # in-plane coordinates in the plane's name order (XZ -> x, z)
     plane: str                   # "XY" | "XZ" | "YZ"
     turn: int                    # +1 counter-clockwise seen from the normal's positive end, -1 clockwise
-    full_turns: int = 0          # extra full revolutions (a full circle has one)
+    full_turns: int = 0          # 0: less than a turn, start to end; N >= 1: N whole turns (start = end)
 
 
 @record(frozen=True, slots=True)

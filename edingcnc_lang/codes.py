@@ -8,11 +8,15 @@ kinematics plug-in (``KINS_CODES``, not lint codes).
 from __future__ import annotations
 
 
+import re
 from enum import Enum
+from functools import cache
 from edingcnc_lang.records import record
 
 
 class Severity(str, Enum):
+    """How bad a finding is: an error (the controller refuses it) or a warning (it runs, likely wrongly)."""
+
     ERROR = "error"
     WARNING = "warning"
 
@@ -133,3 +137,96 @@ KINS_CODES: dict[str, tuple[str, str]] = {
 def lookup(code: str) -> Code:
     """The registered code; an unknown code is a programming error."""
     return CODES[code]
+
+
+# R: errors that stop a run (``ecnc run``, the embedding API, ``ecnc debug``'s exception info).  An
+# error's code comes from its kind (errmsg, Ctrl-C, cancel, a callback, the ini, a plug-in) or, for the
+# machine's own refusals, from the first row whose pattern is found in its message: the messages are
+# written once, where the error is raised, and tests/test_runtime_codes.py proves every message the
+# package can raise has a row other than R899.  ``ecnc help R812`` explains a code from docs/errors.md.
+@record(frozen=True)
+class RuntimeCode:
+    """One runtime error code: the stable code, a one-line summary and the message patterns it covers."""
+
+    code: str
+    summary: str
+    patterns: tuple[str, ...] = ()  # regular expressions searched in the message (case-sensitive)
+
+
+def _runtime(*rows: tuple[str, str, tuple[str, ...]]) -> dict[str, RuntimeCode]:
+    return {code: RuntimeCode(code, summary, patterns) for code, summary, patterns in rows}
+
+
+RUNTIME_CODES: dict[str, RuntimeCode] = _runtime(
+    # by kind (errors.py's classes): no pattern
+    ("R800", "errmsg: the job stopped itself with a message", ()),
+    ("R801", "interrupted (Ctrl-C)", ()),
+    ("R802", "cancelled by the embedding program (Run.cancel)", ()),
+    ("R803", "a callback of the embedding program raised", ()),
+    ("R804", "the machine configuration (cnc.ini) cannot be used", ()),
+    ("R805", "a kinematics plug-in failed", ()),
+    ("R806", "a command line, option or input that cannot be used (exit 2)", ()),
+    # the machine's refusals, by message (first match wins: the more specific rows first)
+    ("R810", "step budget exhausted (an endless loop?)", (r"^step budget of",)),
+    ("R811", "blocks or sub calls nested too deeply", (r"nested (too deeply|deeper than)", r"defined inside a block")),
+    ("R812", "GoSub to a sub that does not exist", (r"^GoSub .*: no Sub",)),
+    ("R813", "arithmetic without a finite result (division by zero, a power, a function's domain)",
+     (r"division by zero", r"fractional power", r"has no finite value", r"is not a finite number",
+      r"^\S+\[.*\]: ")),
+    ("R814", "a parameter number that does not exist or is not whole",
+     (r"^parameter (number|#)", r"is not a parameter", r"^the answer sets #")),
+    ("R815", "a write to a read-only system variable", (r"read-only system variable",)),
+    ("R816", "outside the machine's limits (joints, Cartesian limits, velocity, the tool-change area)",
+     (r"outside its limits", r"outside the Cartesian limits", r"above its maxVelocity", r"would make joint .* jump",
+      r"tool-change area", r"no move could start")),
+    ("R817", "words that cannot go together on one line (modal groups, repeated words, too many M words)",
+     (r"same modal group", r"appears twice on this line", r"M words on one line", r"may hold only its letter",
+      r"takes either .* not both", r"not .* together", r"takes no .* word", r"^G80 cancels", r"is already running")),
+    ("R818", "a word a code needs is missing or out of range",
+     (r"needs ", r"must be ", r"must lie ", r"must not be", r"is below the hole", r"is negative",
+      r"write .*1 to turn", r"expects ", r"is less than", r"at least .* mm", r"^negative feed rate",
+      r"^spindle speed", r"^L \(repeat", r"without a motion mode", r"^G53 moves", r"^G38\.2 needs",
+      r"would flatten")),
+    ("R819", "feed rate missing or zero on a feed move", (r"^feed rate is 0", r"^feed per revolution")),
+    ("R820", "the spindle must turn for this move", (r"needs the spindle turning",)),
+    ("R821", "a tool that does not exist", (r"^tool T.* does not exist", r"no such tool", r"is a tool number")),
+    ("R822", "cutter compensation cannot do this (gouge, on already, not allowed while on)",
+     (r"cutter compensation",)),
+    ("R823", "probing failed (no contact, target too close)", (r"probe tripping", r"^G38\.2 ")),
+    ("R824", "a canned cycle cannot run as written", (r"^canned cycles ", r"^G87 ")),
+    ("R825", "G68 rotation, G51 scaling or Z height compensation cannot follow this arc or move",
+     (r"cannot be turned by G68", r"cannot be scaled", r"height compensation", r"^ZHC", r"height table",
+      r"clamped \(M26\)")),
+    ("R826", "threading (G33, G33.1, G76) cannot run as written", (r"^G76 ", r"^G33", r"the pitch")),
+    ("R827", "a file the run writes or reads cannot be used (log file, trace, Exec)",
+     (r"^cannot (write|read|run)", r"log file", r"^logmsg: ", r"^logfile ", r"^Exec ", r"another run is writing")),
+    ("R828", "a named command or device given wrong arguments (modbus, GetToolInfo, M54, M22)",
+     (r"^modbus", r"^a modbus", r"^GetToolInfo", r"^M\d+ [A-Z]", r"^M\{", r"^PrepareLinDeltaHome", r"\(got ")),
+    ("R829", "a kinematics mode or control call failed, or a pose the kinematics cannot reach",
+     (r"^unknown (KIN|kinematics) mode", r"^KIN ", r"^kinematics ", r"\(kinematics [^)]*\)$")),
+    ("R830", "something this simulator does not support", (r"not supported by this simulator",
+                                                           r"out of memory")),
+    ("R831", "an arc that cannot be made as written (radius, centre and end do not agree)",
+     (r" in the \S+ plane$",)),
+    ("R899", "any other run-time error", ()),
+)
+
+RUNTIME_BY_KIND: dict[str, str] = {"errmsg": "R800", "interrupted": "R801", "cancelled": "R802",
+                                   "callback": "R803", "configuration": "R804", "plugin": "R805",
+                                   "usage": "R806"}
+
+
+@cache
+def _runtime_patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
+    return tuple((row.code, re.compile(pattern)) for row in RUNTIME_CODES.values() for pattern in row.patterns)
+
+
+def runtime_code(kind: str, message: str) -> str:
+    """The stable code of an error that stopped a run: by its kind, else by its message's row."""
+    code = RUNTIME_BY_KIND.get(kind)
+    if code is not None:
+        return code
+    for code, pattern in _runtime_patterns():
+        if pattern.search(message):
+            return code
+    return "R899"

@@ -10,6 +10,9 @@ import importlib
 import re
 
 from types import ModuleType
+from typing import Any
+
+from edingcnc_lang.codes import runtime_code
 from edingcnc_lang.records import record
 
 EXIT_OK = 0
@@ -63,22 +66,47 @@ class Location:
         return ":".join(parts)
 
 
+@record(frozen=True)
+class Frame:
+    """One sub call on the way to an error, innermost first: the sub as its ``Sub`` line names it, and
+    the file and line of the ``GoSub`` (or M-code line) that called it."""
+
+    sub: str
+    path: str
+    line: int
+
+
 class EcncError(Exception):
-    """Base of all errors reported to the user; ``exit_code`` picks the CLI exit status."""
+    """Base of all errors reported to the user; ``exit_code`` picks the CLI exit status.
+
+    ``code`` is the stable code of the error (``R8xx`` for an error that stopped a run, docs/errors.md;
+    ``ecnc help CODE`` explains it), ``frames`` the sub calls that led to it, innermost first, and
+    ``result`` (set by a run that failed) the machine as the error left it: a ``runner.RunResult``.
+    """
 
     exit_code = EXIT_RUNTIME
     kind = "error"  # the ``kind`` of the ``--json`` error object (docs/cli.md)
     # A move of a batch refused: how many moves of the batch were made before it (set where it is refused;
     # None when not known), so the machine's state can be that after them, as moving one at a time leaves it.
     done: int | None = None
+    # the partial result of the run the error stopped (runner.RunResult; typed loosely here because
+    # this foundation module is below the runner: ``runner.result_of(err)`` gives it typed)
+    result: Any = None
 
     def __init__(self, message: str, location: Location | None = None,
-                 notes: tuple[str, ...] = ()) -> None:
+                 notes: tuple[str, ...] = (), *, code: str | None = None) -> None:
         message = shortened(message)
         super().__init__(message)
         self.message = message
         self.location = location
         self.notes = notes
+        self.frames: tuple[Frame, ...] = ()
+        self._code = code
+
+    @property
+    def code(self) -> str:
+        """The stable code: given where the error is raised, else by its kind and message (codes.py)."""
+        return self._code or runtime_code(self.kind, self.message)
 
     def format(self) -> str:
         """Render as ``PATH:LINE:COL: error: MESSAGE`` plus indented notes."""
@@ -88,8 +116,9 @@ class EcncError(Exception):
     def to_json(self) -> dict[str, object]:
         """The ``error`` object of a ``--json`` document: kind, message, where, and the text as printed."""
         where = self.location or Location("")
-        return {"kind": self.kind, "message": self.message, "file": where.path or None,
-                "line": where.line or None, "column": where.col or None, "text": self.format()}
+        return {"kind": self.kind, "code": self.code, "message": self.message, "file": where.path or None,
+                "line": where.line or None, "column": where.col or None, "text": self.format(),
+                "frames": [{"sub": f.sub, "file": f.path, "line": f.line} for f in self.frames]}
 
 
 class UnreadableFile(EcncError):
@@ -151,6 +180,19 @@ class Interrupted(EcncError):
 
     exit_code = EXIT_INTERRUPTED
     kind = "interrupted"
+
+
+class Cancelled(Interrupted):
+    """``Run.cancel()`` (or breaking out of ``Run.moves()``) stopped the run; ``result`` is the state so far."""
+
+    kind = "cancelled"
+
+
+class CallbackError(MachineError):
+    """A callback of the embedding program (``on_move``, ``on_event``, a ``Host`` function) raised; the
+    callback's exception is ``__cause__``, the location is the line whose move or event it was handed."""
+
+    kind = "callback"
 
 
 class UsageFailure(EcncError):

@@ -7,19 +7,22 @@ collect its subs, then to execute it statement by statement as it streams in.
 from __future__ import annotations
 
 import os
+import queue
+import threading
 from itertools import islice
-from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field, fields, replace
 from functools import cache
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar, overload
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig, load_config, save_variables
-from edingcnc_lang.errors import EcncError, Interrupted, Location, MachineError
+from edingcnc_lang.errors import CallbackError, Cancelled, EcncError, Interrupted, Location, MachineError
 from edingcnc_lang.host import Host
+from edingcnc_lang.motion.callback_tap import CallbackTap
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.machine.named_commands import tools_used
 from edingcnc_lang.machine.observe import Observer
@@ -50,6 +53,21 @@ from edingcnc_lang.pipeline.height_comp import HeightCompensation
 PLAIN_MOTION = {t.code_key(c) for c in (0, 1, 2, 3, 33, 33.1, 38.2, 76)}
 
 
+@dataclass(frozen=True)
+class Assumption:
+    """Something a run assumed because nobody said otherwise: ``what`` names it (``machine``, ``macro``,
+    ``probe``), ``text`` says it to a person; ``location`` is where it first mattered (None: the whole run)."""
+
+    what: str
+    text: str
+    location: Location | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        where = self.location
+        return {"what": self.what, "text": self.text, "file": where.path if where else None,
+                "line": where.line if where else None}
+
+
 @dataclass
 class RunResult:
     """The machine after a run: what ``ecnc run --json`` prints."""
@@ -73,6 +91,11 @@ class RunResult:
     limits: dict[str, Any] | None = field(default_factory=dict)
     # where the work zero is in machine coordinates: G5x + G92 + tool offsets, not turned by G68 or G51
     work_zero: Pose = (0.0,) * 6
+    # every parameter #1..#5999 as the run left it, written or not (``variables`` holds only the
+    # written ones): a read-only mapping, ``result.parameters[4050]``
+    parameters: Mapping[int, float] = field(default_factory=dict)
+    # what the run assumed because nobody said (no ini, the packaged macro, a simulated probe)
+    assumptions: list[Assumption] = field(default_factory=list)
 
     def to_json(self) -> dict[str, Any]:
         axes = [a.lower() for a in AXES]
@@ -93,26 +116,58 @@ class RunResult:
             "limits": self.limits,
             **({"error": self.error_record or {"text": self.error}} if self.error else {}),
             **({"warnings": [d.format(with_source=False) for d in self.warnings]} if self.warnings else {}),
+            "assumptions": [a.to_json() for a in self.assumptions],
         }
+
+
+class PathOption:
+    """A file name of ``RunOptions``: set as a ``str`` or any path-like, read as a ``Path`` (or None).
+
+    (A descriptor, so ``RunOptions(ini="cnc.ini")`` type-checks and every reader still gets a ``Path``.)
+    """
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._name = "_" + name
+
+    @overload
+    def __get__(self, obj: None, objtype: Any = None) -> None: ...
+
+    @overload
+    def __get__(self, obj: object, objtype: Any = None) -> Path | None: ...
+
+    def __get__(self, obj: object | None, objtype: Any = None) -> Path | None:
+        if obj is None:  # the dataclass asks the class for the default
+            return None
+        value: Path | None = getattr(obj, self._name)
+        return value
+
+    def __set__(self, obj: object, value: str | os.PathLike[str] | None) -> None:
+        setattr(obj, self._name, None if value is None else Path(value))
 
 
 @dataclass
 class RunOptions:
     """Everything a run can be told; the CLI and the API both fill one of these."""
 
-    ini: Path | None = None
-    macro: Path | None = None
-    user_macro: Path | None = None
+    # file names may be given as ``str`` or any path-like; read back, they are ``Path`` (or None)
+    ini: PathOption = PathOption()
+    macro: PathOption = PathOption()
+    user_macro: PathOption = PathOption()
     host: Host = field(default_factory=Host)
     max_steps: int | None = DEFAULT_MAX_STEPS  # None: no budget at all
-    trace: Path | None = None
-    samples: Path | None = None
-    events: Path | None = None
-    log_dir: Path | None = None
+    trace: PathOption = PathOption()
+    samples: PathOption = PathOption()
+    events: PathOption = PathOption()
+    log_dir: PathOption = PathOption()
     allow_exec: bool = False
     simulation: bool = True
     block_delete: bool = False
     save_vars: bool = False
+    # False: the run only looks (ecnc plot, view, sim, diff): the files the job writes (logfile, logmsg,
+    # ZHCS) are kept in memory (the job reads back what it wrote), nothing on disk changes
+    write_job_files: bool = True
+    # told of each thing the run assumes because nobody said (the CLI prints them on stderr)
+    on_assumption: Callable[[Assumption], None] | None = None
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
     strict: bool = False  # macro lines that do not parse are errors at load, not warnings
@@ -145,6 +200,7 @@ class Run:
         self._reader: StatementReader | None = None  # the run pass over a job file: an error's line text
         self.job_lines = 0  # lines of the job file, counted by the check pass (for a progress line)
         self.warnings: list[Diagnostic] = []
+        self.assumptions: list[Assumption] = []
         self.config = load_config(options.ini) if options.ini else MachineConfig.default()
         for warning in self.config.warnings:
             self._warn(warning)
@@ -159,28 +215,81 @@ class Run:
         if options.events:
             self._writers.append(EventsWriter(ensure_parent(options.events)))
         sinks: list[TimedSink] = list(self._writers)
-        if options.on_move or options.on_event or options.on_timed_move:
+        timed = options.on_timed_move is not None
+        if timed:  # all the callbacks in program order, as the planner hands each window on
             sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
         self.planner: Planner | None = None
         stage: PlannerStage
         if options.plan or _reads_time(options):
             stage = self.planner = Planner(self.config, sinks, overrides, want_samples=options.samples is not None)
         else:
-            stage = Untimed(overrides, options.on_move, options.on_event)
+            stage = Untimed(overrides)
+        # without on_timed_move, on_move and on_event hear each move and event as the machine makes it;
+        # with it, the tap only stops the run at once when it is cancelled (motion/callback_tap.py)
+        self._tap: CallbackTap | None = None
+        if options.on_move or options.on_event or timed:
+            stage = self._tap = CallbackTap(stage, None if timed else options.on_move,
+                                            None if timed else options.on_event)
         self.motion = MotionStage(self.config, self.kinematics, stage, self._write_param,
                                   sample_always=options.samples is not None)
         if self.planner is not None:
             self.planner.joints_of = self.motion.joints_at
         self.pipeline = Pipeline(STAGES, self.motion, self.config)
-        self.interpreter = Interpreter(self.pipeline.head, self.config, options.host, max_steps=options.max_steps,
+        host = options.host
+        if host.probe is None:  # the simulated probe: trips at its target, and the run says so once
+            host = replace(host, probe=self._simulated_probe)
+        self.interpreter = Interpreter(self.pipeline.head, self.config, _guarded(host, self._where),
+                                       max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
                                        simulation=options.simulation, block_delete=options.block_delete,
                                        observer=options.observer)
         self.interpreter.on_warning = self._warn
+        if not options.write_job_files:
+            self.interpreter.kept_files = {}
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
         if self.planner is not None:
             self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
+
+    def cancel(self) -> None:
+        """Stop the run at its next move, statement, loop turn or hole, or before its next callback
+        or dialog; safe to call from another thread or from a callback.  The run then ends with
+        ``Cancelled`` (exit 130 on the command line), whose ``result`` is the state so far."""
+        self.interpreter.cancel()
+        if self._tap is not None:
+            self._tap.cancelled = True
+
+    def moves(self, job: str | os.PathLike[str], *, buffer: int = 1024) -> MoveStream:
+        """Run ``job`` in a thread of its own and hand its moves over as they are made:
+        ``for move in run.moves("job.nc")``.  At most ``buffer`` moves wait in memory; leaving the loop
+        early (``break``, or ``close()``) cancels the run.  ``stream.result`` is the result afterwards;
+        an error that stopped the run is raised from the loop after the moves made before it, except
+        ``Cancelled`` (``Run.cancel()``, a stop button): the loop just ends and ``stream.error`` holds it."""
+        return MoveStream(self, Path(job), buffer)
+
+    def _assume(self, what: str, text: str, location: Location | None = None) -> None:
+        assumption = Assumption(what, text, location)
+        self.assumptions.append(assumption)
+        if self.options.on_assumption is not None:
+            self.options.on_assumption(assumption)
+
+    def _simulated_probe(self, start: Pose, target: Pose) -> Pose:
+        if not any(a.what == "probe" for a in self.assumptions):
+            self._assume("probe", "the probe is simulated: G38.2 trips at its target, so a measured length "
+                         "is the target's (give --probe-at Z or --probe-surface FILE)", self._where())
+        return target
+
+    def _assume_setup(self) -> None:
+        """Say what the machine is when the user did not: no ini, no macro file of theirs."""
+        if self.config.path is None:
+            self._assume("machine", "no cnc.ini given: a built-in 6-axis mill (EdingCNC 4.03), machine zero = work "
+                         "zero, travel +-1,000,000 mm at 1000 mm/s, an empty tool table (give --ini FILE)")
+        if not (self.options.macro or self.config.macro_file):
+            self._assume("macro", f"no macro file given or named by the ini: the packaged {packaged_macro().name} "
+                         "(M6's change_tool, homing, tool measurement) (give --macro FILE)")
+
+    def _where(self) -> Location:
+        return Location(self.interpreter.path, self.interpreter.line)
 
     def _write_param(self, index: int, value: float) -> None:
         self.interpreter.params.set(index, value)
@@ -238,7 +347,8 @@ class Run:
     def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
         """What happens before a job's first line (and before an MDI session's): the outputs are
         opened, the macro files' subs are defined and their top-level lines run, then the ini's
-        initialString."""
+        initialString; then ``RunOptions.variables`` are set."""
+        self._assume_setup()
         self.open_outputs()
         interp = self.interpreter
         for _path, program in macros:
@@ -248,6 +358,7 @@ class Run:
             interp.run(stmt for stmt in program.body if not isinstance(stmt, n.BadLine))
         if self.config.initial_string:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
+        self._set_variables()
 
     def execute_file(self, job: Path, name: str | None = None) -> RunResult:
         """Check the job, then run it as it streams in; ``name`` is what messages call it (default its path)."""
@@ -291,7 +402,6 @@ class Run:
         error: EcncError | None = None
         try:
             self.start(macros)
-            self._set_variables()
             if "start" in interp.subs:
                 interp.call_sub("start")
             interp.run(statements())
@@ -314,7 +424,7 @@ class Run:
             _add_column(error, self._texts, self._files, self._reader)
         result = self.result(error)
         if error is not None:
-            error.result = result  # type: ignore[attr-defined]
+            error.result = result
             raise error
         if self.options.save_vars and self.config.path:
             save_variables(self.config.path, interp.params.snapshot_changed())
@@ -379,7 +489,114 @@ class Run:
             estimate=self.planner.estimate if self.planner else None,
             limits=self.planner.limits.to_json() if self.planner else None,
             work_zero=tuple(interp.offset()),  # type: ignore[arg-type]
+            parameters=interp.params.frozen(),
+            assumptions=list(self.assumptions),
         )
+
+
+def result_of(error: EcncError) -> RunResult | None:
+    """The machine as the error left it, typed: a run sets ``error.result`` on the error that stopped it."""
+    result = error.result
+    return result if isinstance(result, RunResult) else None
+
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+def _guarded(host: Host, where: Callable[[], Location]) -> Host:
+    """``host`` with each callback's exception turned into a ``CallbackError`` at the line being run
+    (the run then ends as after any error, with its partial result)."""
+    def guard(name: str, callback: _F | None) -> _F | None:
+        if callback is None or name == "clock":
+            return callback
+        function: Callable[..., Any] = callback
+
+        def guarded(*args: Any) -> Any:
+            try:
+                return function(*args)
+            except EcncError:  # the embedding program's own error, raised on purpose: as it is
+                raise
+            except Exception as exc:
+                text = str(exc)
+                raise CallbackError(f"the host's {name} callback raised {type(exc).__name__}"
+                                    f"{': ' + text if text else ''}", where()) from exc
+        return guarded  # type: ignore[return-value]
+
+    return replace(host, **{f.name: guard(f.name, getattr(host, f.name)) for f in fields(host)})
+
+
+_END = object()  # MoveStream's queue: the run is over
+
+
+class MoveStream(Iterator[Move]):
+    """The moves of one job as the machine makes them (``Run.moves``), from a worker thread through a
+    bounded queue: memory stays at ``buffer`` moves whatever the job's length."""
+
+    def __init__(self, run: Run, job: Path, buffer: int) -> None:
+        if run._tap is None:  # a tap of its own: the moves come from it as they are made
+            run._tap = CallbackTap(run.motion.planner, None, None)
+            run.motion.planner = run._tap
+        self._run = run
+        self._queue: queue.Queue[object] = queue.Queue(maxsize=max(1, buffer))
+        self._closed = False
+        self.result: RunResult | None = None
+        self.error: EcncError | None = None
+        outer = run._tap.on_move
+
+        def put(move: Move, joints: Pose) -> None:
+            if outer is not None:
+                outer(move, joints)
+            self._queue.put(move)
+        run._tap.on_move = put
+        self._thread = threading.Thread(target=self._work, args=(job,), name="ecnc-run", daemon=True)
+        self._thread.start()
+
+    def _work(self, job: Path) -> None:
+        try:
+            self.result = self._run.execute_file(job)
+        except EcncError as err:
+            self.error = err
+            self.result = result_of(err)
+        except BaseException as err:  # never lost in the thread: raised again from the loop
+            self.error = EcncError(f"the run failed: {type(err).__name__}: {err}")
+            self.error.__cause__ = err
+        finally:
+            self._queue.put(_END)
+
+    def __next__(self) -> Move:
+        item = self._queue.get()
+        if item is _END:
+            self._queue.put(_END)  # a second next() ends again
+            self._thread.join()
+            if self.error is not None and not isinstance(self.error, Cancelled):
+                error, self.error = self.error, None
+                raise error
+            raise StopIteration  # a cancelled run (a stop button) ends the loop quietly: ``error`` says so
+        assert isinstance(item, Move)
+        return item
+
+    def close(self) -> None:
+        """Stop the run (if it is still going) and wait for its thread; ``result`` is the state it reached."""
+        if not self._thread.is_alive():
+            return
+        self._closed = True
+        self._run.cancel()
+        while self._thread.is_alive():  # empty the queue so the worker is not left waiting to put
+            try:
+                self._queue.get(timeout=0.05)
+            except queue.Empty:
+                pass
+        self._thread.join()
+
+    def __enter__(self) -> MoveStream:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def __del__(self) -> None:
+        if not self._closed and getattr(self, "_thread", None) is not None and self._thread.is_alive():
+            self.close()
 
 
 def _write_error(err: OSError, outputs: Sequence[Path | None] = ()) -> EcncError:

@@ -1,4 +1,4 @@
-"""Regenerate edingcnc_lang/lint/explanations.json from docs/lint.md and docs/kinematics.md (``ecnc help CODE``).
+"""Regenerate edingcnc_lang/lint/explanations.json from docs/lint.md, docs/kinematics.md and docs/errors.md (``ecnc help CODE``).
 
 docs/lint.md is where each lint code is explained for people, docs/kinematics.md each ``ecnc kins
 check`` finding code (K101 ...); this script copies, per code, its
@@ -17,6 +17,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs" / "lint.md"
 KINS_DOCS = ROOT / "docs" / "kinematics.md"
+ERRORS_DOCS = ROOT / "docs" / "errors.md"  # the R codes of errors that stop a run
 OUT = ROOT / "edingcnc_lang" / "lint" / "explanations.json"
 
 CODE = r"[A-Z]\d{3}"
@@ -64,9 +65,11 @@ def explanations(markdown: str, row: re.Pattern[str] = ROW,
 
 
 def all_explanations() -> dict[str, str]:
-    """The lint codes from docs/lint.md and the kins check codes from docs/kinematics.md."""
+    """The lint codes from docs/lint.md, the kins check codes from docs/kinematics.md and the run
+    error codes from docs/errors.md."""
     kins = explanations(KINS_DOCS.read_text(encoding="utf-8"), KINS_ROW, STARTS_WITH_KINS_CODE)
-    return dict(sorted({**explanations(DOCS.read_text(encoding="utf-8")), **kins}.items()))
+    runtime = explanations(ERRORS_DOCS.read_text(encoding="utf-8"))
+    return dict(sorted({**explanations(DOCS.read_text(encoding="utf-8")), **kins, **runtime}.items()))
 
 
 def main() -> None:

@@ -63,8 +63,8 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
                                       user_macro=user_macro_new or machine.user_macro,
                                       answers=answers_new or machine.answers,
                                       probe_surface=probe_surface_new or machine.probe_surface)
-    before = record(Path(old), machine.run_options(show_messages=False))
-    after = record(Path(new), new_machine.run_options(show_messages=False))
+    before = record(Path(old), machine.run_options(show_messages=False, write_job_files=False))
+    after = record(Path(new), new_machine.run_options(show_messages=False, write_job_files=False))
     comparison = compare(before, after, tolerance, limit)
     if output:
         from edingcnc_lang.diff.picture import draw_diff

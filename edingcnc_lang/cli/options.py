@@ -2,8 +2,10 @@
 
 ``@machine_options`` gives a command the virtual machine a job runs on (``--ini``, ``--macro``,
 ``--user-macro``, ``--answer``, ``--max-steps``, ``--log-dir``, ``--allow-exec``,
-``--no-simulation``, ``--block-delete``, ``--strict``, ``--probe-surface``) and hands the command one ``machine: MachineOptions``
-argument, which builds the ``RunOptions`` of the Python API.  See docs/cli.md, "Adding a command".
+``--no-simulation``, ``--block-delete``, ``--strict``, ``--probe-surface``, ``--probe-at``,
+``--modbus``), its set-up without an ini (``--var``, ``--offset``, ``--tool``) and ``-q``, and hands
+the command one ``machine: MachineOptions`` argument, which builds the ``RunOptions`` of the Python
+API.  Every command that runs a job takes the same set.  See docs/cli.md, "Adding a command".
 """
 from __future__ import annotations
 
@@ -20,20 +22,23 @@ from edingcnc_lang.errors import printable
 from edingcnc_lang.cli.value_types import (
     ANSWER,
     EXISTING_FILE,
-    EXISTING_FOLDER,
+    FLOAT,
     INI_FILE,
     INPUT_FILE,
+    LOG_FOLDER,
     MODBUS_VALUES,
     POSITIVE_INT,
     PlainFloat,
 )
+from edingcnc_lang.cli.setup_values import OFFSET, TOOL, VARIABLE, Settings
+from edingcnc_lang.machine.tables import TOOL_CURRENT
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
     from edingcnc_lang.diagnostics import Diagnostic
     from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField
-    from edingcnc_lang.runner import RunOptions
+    from edingcnc_lang.runner import Assumption, RunOptions
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -95,21 +100,39 @@ class MachineOptions:
     strict: bool = False
     probe_surface: str | None = None
     modbus: tuple[tuple[float, ...], ...] = ()
+    variables: tuple[Settings, ...] = ()  # --var, --offset and --tool, each the parameters it sets
+    offsets: tuple[Settings, ...] = ()
+    tools: tuple[Settings, ...] = ()
+    probe_at: float | None = None
+    quiet: bool = False
+
+    @property
+    def spindle_tool(self) -> int | None:
+        """The tool ``--tool N`` put in the spindle (#5008) at the start, if any."""
+        chosen = [value for given in self.tools for index, value in given if index == TOOL_CURRENT]
+        return int(chosen[-1]) if chosen else None
 
     def run_options(self, show_messages: bool = True, **extra: Any) -> RunOptions:
         """``RunOptions`` for these options; ``extra`` sets the rest (``trace=Path(...)``, ...).
 
-        With ``show_messages`` the job's ``msg``/``warnmsg``/``errmsg`` print on stderr as they happen.
+        With ``show_messages`` the job's ``msg``/``warnmsg``/``errmsg`` print on stderr as they happen;
+        what the run assumes (no ini, the packaged macro, a simulated probe) prints there unless ``-q``.
         """
         from edingcnc_lang.host import Host, scripted_dialogs, scripted_modbus
         from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
         from edingcnc_lang.runner import RunOptions
 
-        probe = None
+        probe: Any = None
         if self.probe_surface:
             from edingcnc_lang.config.heightmap import ProbeAt, read_surface
 
             probe = ProbeAt(read_surface(self.probe_surface))
+        elif self.probe_at is not None:
+            from edingcnc_lang.config.heightmap import ProbePlane
+
+            probe = ProbePlane(self.probe_at)
+        if self.log_dir and extra.get("write_job_files", True):
+            Path(self.log_dir).mkdir(parents=True, exist_ok=True)  # --log-dir makes its folder
 
         def path(value: str | None) -> Path | None:
             return Path(value) if value else None
@@ -121,7 +144,18 @@ class MachineOptions:
                                     modbus=scripted_modbus(self.modbus) if self.modbus else None),
                           max_steps=self.max_steps or DEFAULT_MAX_STEPS, log_dir=path(self.log_dir),
                           allow_exec=self.allow_exec, simulation=not self.no_simulation,
-                          block_delete=self.block_delete, strict=self.strict, on_warning=print_warning, **extra)
+                          block_delete=self.block_delete, strict=self.strict, on_warning=print_warning,
+                          variables=dict(pair for given in (*self.variables, *self.offsets, *self.tools)
+                                         for pair in given),
+                          on_assumption=None if self.quiet else print_assumption, **extra)
+
+
+def print_assumption(assumption: Assumption) -> None:
+    """What the run assumed, on stderr (never stdout): ``ecnc: assuming ...`` or, where it first
+    mattered, ``PATH:LINE: note: ...``."""
+    where = assumption.location
+    head = f"{where.path}:{where.line}: note: " if where is not None and where.line else "ecnc: assuming "
+    print(printable(head + assumption.text), file=sys.stderr)
 
 
 def print_message(kind: str, text: str, path: str, line: int) -> None:
@@ -178,8 +212,8 @@ _MACHINE_OPTIONS = (
     click.option("--max-steps", metavar="N", type=POSITIVE_INT,
                  help="Stop with an error after this many statements, loop turns and drilled holes "
                       "(default 100,000,000)."),
-    click.option("--log-dir", metavar="DIRECTORY", type=EXISTING_FOLDER,
-                 help="Folder for logfile/logmsg (default: the job's)."),
+    click.option("--log-dir", metavar="DIRECTORY", type=LOG_FOLDER,
+                 help="Folder for logfile/logmsg, made if missing (default: the job's)."),
     click.option("--allow-exec", is_flag=True, help="Let Exec start external programs."),
     click.option("--no-simulation", is_flag=True, help="Run with #5380 = 0 (as if on the real machine)."),
     click.option("--block-delete", is_flag=True, help="Skip lines that start with '/'."),
@@ -189,6 +223,17 @@ _MACHINE_OPTIONS = (
                  help="CSV height map x,y,z (machine coordinates): G38.2 trips where the probe meets it."),
     click.option("--modbus", "modbus", metavar="VALUES", type=MODBUS_VALUES, multiple=True,
                  help="Values the next modbus read gets, e.g. 7,8 (repeatable; later reads get 0)."),
+    click.option("--probe-at", metavar="Z", type=FLOAT,
+                 help="G38.2 trips where the tool reaches machine Z (a tool setter's height); default: at its target."),
+    click.option("--var", "variables", metavar="N=VALUE", type=VARIABLE, multiple=True,
+                 help="Parameter #N starts at VALUE, as if the machine had it (repeatable; not read-only ones)."),
+    click.option("--offset", "offsets", metavar="G5x=X,Y,Z", type=OFFSET, multiple=True,
+                 help="A work offset in machine coordinates, e.g. G54=100,50,-20 (repeatable)."),
+    click.option("--tool", "tools", metavar="N=LENGTH[,DIA]", type=TOOL, multiple=True,
+                 help="Tool N's length and diameter in the tool table, e.g. 3=42.5,6 (repeatable); "
+                      "N alone: tool N is in the spindle at the start."),
+    click.option("-q", "--quiet", is_flag=True,
+                 help="Nothing on stderr but errors and the job's messages: no assumptions, progress or summary."),
 )
 _MACHINE_NAMES = tuple(MachineOptions.__dataclass_fields__)
 

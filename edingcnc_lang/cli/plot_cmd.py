@@ -33,7 +33,7 @@ def plot(job: str, machine: MachineOptions, feed_override: float, rapid_override
     part's bounding box and the machine limits. Prints the file written."""
     from edingcnc_lang.plot.actions import plot_job
 
-    options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
+    options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override, write_job_files=False)
     with job_to_draw(job, output) as (path, name):
         written = plot_job(path, options, Path(output) if output else None,
                            view=view, color=color, fit=fit, joints=joints, name=name)

@@ -34,16 +34,15 @@ if TYPE_CHECKING:
               help="Write every move (with its spindle speed) and event as JSON Lines (-: standard output).")
 @click.option("--save-vars", is_flag=True, help="Write persistent variables back to the ini.")
 @override_options
-@click.option("-q", "--quiet", is_flag=True,
-              help="No progress line or summary on stderr (shown on a terminal).")
 def run(job: str, machine: MachineOptions, as_json: bool, trace: str | None, samples: str | None,
-        events: str | None, save_vars: bool, feed_override: float, rapid_override: float, quiet: bool) -> int:
+        events: str | None, save_vars: bool, feed_override: float, rapid_override: float) -> int:
     """Run JOB as the controller would (in simulation) and report what the machine does.
 
     JOB - reads the job from standard input.
     """
     from edingcnc_lang.runner import Run
 
+    quiet = machine.quiet
     if save_vars and not machine.ini:
         raise usage_error("--save-vars needs --ini (the file to write the variables to)")
     to_stdout = [name for name, value in (("--json", as_json), ("--trace -", trace), ("--samples -", samples),

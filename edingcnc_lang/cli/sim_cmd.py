@@ -47,8 +47,6 @@ class StockBox(click.ParamType):
               show_default=True, help="Cell size of the height field.")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
               help="Tool shapes as TOML, [tool.N] tables (default: the ini's diameters as flat end mills).")
-@click.option("--tool", "first_tool", metavar="N", type=click.IntRange(0),
-              help="The tool in the spindle when the job starts (default: the machine's current tool, #5008).")
 @machine_options
 @json_option("Print the stock's volumes and the collisions as JSON on stdout.")
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
@@ -57,7 +55,7 @@ class StockBox(click.ParamType):
 @click.option("--compare-stl", metavar="FILE", type=EXISTING_FILE,
               help="The intended part as STL: report (and draw) over- and under-cut against it.")
 def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resolution: float, tools_file: str | None,
-        first_tool: int | None, machine: MachineOptions, as_json: bool, output: str | None, stl: str | None,
+        machine: MachineOptions, as_json: bool, output: str | None, stl: str | None,
         compare_stl: str | None) -> int:
     """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
     stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
@@ -79,9 +77,9 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
         stock = Stock.box(box[:3], box[3:], resolution)  # type: ignore[arg-type]
     else:
         stock = stock_from_stl(str(stock_stl), resolution)
-    options = machine.run_options(show_messages=not as_json)
+    options = machine.run_options(show_messages=not as_json, write_job_files=False)
     with job_to_read_twice(job) as (path, name):
-        result = simulate(path, stock, options, tools, first_tool, name=name)
+        result = simulate(path, stock, options, tools, machine.spindle_tool, name=name)
     deviation = None
     if compare_stl:
         from edingcnc_lang.sim.compare import compare

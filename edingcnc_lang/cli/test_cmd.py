@@ -29,8 +29,9 @@ if TYPE_CHECKING:
 @click.option("--cov", "cov", is_flag=True, help="Report the coverage of the macro files the tests ran.")
 @click.option("--cov-report", "cov_reports", metavar="term|json:FILE|html:DIR", multiple=True,
               help="Coverage report (repeatable; implies --cov; default term).")
+@click.option("-q", "--quiet", is_flag=True, help="Only the failing tests and the summary line.")
 def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: str | None, jobs: int,
-         cov: bool, cov_reports: tuple[str, ...]) -> int:
+         cov: bool, cov_reports: tuple[str, ...], quiet: bool) -> int:
     """Run the tests in PATHs (test_*.toml files, or folders searched for them; default: here).
 
     One line per test (PASS or FAIL, and what differs), then "N passed, M failed".
@@ -64,6 +65,8 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
     colour = wants_colour(sys.stdout)
 
     def show(result: TestResult) -> None:
+        if quiet and result.passed:
+            return
         text = printable(result.text)  # a test's name or a job's msg text must not drive the terminal
         if colour:
             word, rest = text[:4], text[4:]

@@ -133,6 +133,13 @@ class ExistingFolder(_PathType):
         return None
 
 
+class LogFolder(ExistingFolder):
+    """A folder for the job's files (``--log-dir``): made if it does not exist yet, but not a file."""
+
+    def check(self, value: str) -> str | None:
+        return f"{value!r} is a file, not a folder" if os.path.exists(value) and not os.path.isdir(value) else None
+
+
 class OutputFile(_PathType):
     """A file to write: it need not exist, but a folder there is a mistake to report up front."""
 
@@ -291,6 +298,7 @@ EXISTING_FILE = ExistingFile()
 INPUT_PATH = ExistingPath(stdin=True)  # a path to lint, or - for standard input
 INPUT_FILE = ExistingFile(stdin=True)  # a job or file to parse, or - for standard input
 EXISTING_FOLDER = ExistingFolder()
+LOG_FOLDER = LogFolder()
 INI_FILE = ExistingFile(suffix=".ini")
 OUTPUT_FILE = OutputFile()
 POSITIVE_INT = PositiveInt()

@@ -75,7 +75,7 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
         from edingcnc_lang.sim.tools import load_tools
 
         tools = load_tools(tools_file)
-    options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override)
+    options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override, write_job_files=False)
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
                            max_moves=max_moves, lines=lines, view=view, name=name,
@@ -85,8 +85,8 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
             from edingcnc_lang.sim.stock import Stock
 
             stock = Stock.box(stock_box[:3], stock_box[3:], STOCK_RESOLUTION)  # type: ignore[arg-type]
-            quiet = machine.run_options(show_messages=False)
-            add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, None, name))
+            quiet = machine.run_options(show_messages=False, write_job_files=False)
+            add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, machine.spindle_tool, name))
     return report(written)
 
 

@@ -268,5 +268,20 @@ class ProbeAt:
         return None  # the move ends above the surface: no contact
 
 
+@dataclass(frozen=True)
+class ProbePlane:
+    """Trips a G38.2 move (machine coordinates) where its Z first reaches ``z``: a tool setter's
+    height, a surface known to be flat (``--probe-at Z``).  A move that stays above it makes no contact."""
+
+    z: float
+
+    def __call__(self, start: Pose, target: Pose) -> Pose | None:
+        if start[2] <= self.z:
+            return start  # already touching
+        if target[2] > self.z:
+            return None
+        return _lerp(start, target, (start[2] - self.z) / (start[2] - target[2]))
+
+
 def _lerp(a: Pose, b: Pose, t: float) -> Pose:
     return tuple(p + (q - p) * t for p, q in zip(a, b))

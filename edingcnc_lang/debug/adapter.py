@@ -226,8 +226,8 @@ class Adapter:
         err = self._session().error
         if err is None:
             raise RequestError("the machine did not stop at an error")
-        return {"exceptionId": "runError", "description": err.message, "breakMode": "always",
-                "details": {"message": err.format(), "typeName": type(err).__name__}}
+        return {"exceptionId": err.code, "description": err.message, "breakMode": "always",
+                "details": {"message": err.format(), "typeName": type(err).__name__, "code": err.code}}
 
     # ------------------------------------------------------------------ running
 

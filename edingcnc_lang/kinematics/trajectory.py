@@ -231,3 +231,22 @@ def dynamics(start_time: float, start: np.ndarray, t: np.ndarray, points: np.nda
     between = (long_steps[:-1] + long_steps[1:])[usable, None] / 2.0
     acceleration = np.diff(velocity, axis=0)[usable] / between
     return Dynamics(peak_velocity, np.abs(acceleration).max(axis=0))
+
+
+def move_length(move: Move) -> float:
+    """How far the tool travels along ``move`` in X, Y and Z (mm), as the planner and GetJobDistance
+    count it: the helix of an arc with all its turns (``Arc.full_turns``), else the straight line."""
+    if move.arc is None:
+        return math.dist(move.start[:3], move.end[:3])
+    return geometry_of(move).frame.linear
+
+
+def move_points(move: Move, max_step: float = 0.1) -> np.ndarray:
+    """Poses along ``move`` (an N x 6 array, start and end included) at most ``max_step`` mm apart
+    along its path, as the machine moves: arcs on their circle, the other axes in proportion."""
+    import numpy as np
+
+    if not max_step > 0.0:
+        raise ValueError(f"max_step must be greater than 0, not {max_step!r}")
+    count = max(1, math.ceil(move_length(move) / max_step))
+    return geometry_of(move).points_at(np.linspace(0.0, 1.0, count + 1))

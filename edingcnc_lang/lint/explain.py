@@ -1,7 +1,7 @@
 """The long explanation of a lint code (``ecnc help CODE``, ``ecnc lint --explain CODE``), and of a
 ``ecnc kins check`` finding code (``ecnc help K101``).
 
-The texts are docs/lint.md's and docs/kinematics.md's, copied into package data by scripts/regen_code_explanations.py so
+The texts are docs/lint.md's, docs/kinematics.md's and (for the R codes of errors that stop a run) docs/errors.md's, copied into package data by scripts/regen_code_explanations.py so
 an installed ``ecnc`` has them; the registry (codes.py) gives the severity and summary.
 """
 from __future__ import annotations
@@ -10,7 +10,7 @@ import json
 from functools import cache
 from importlib import resources
 
-from edingcnc_lang.codes import CODES, KINS_CODES, RETIRED
+from edingcnc_lang.codes import CODES, KINS_CODES, RETIRED, RUNTIME_CODES
 from edingcnc_lang.lint.driver import UnknownCode
 
 
@@ -26,6 +26,9 @@ def explain(code: str) -> str:
     key = code.strip().upper()
     if key in RETIRED:
         return f"{key}: {RETIRED[key]}"
+    runtime = RUNTIME_CODES.get(key)
+    if runtime is not None:
+        return _with_text(key, f"{key} (runtime): {runtime.summary}")
     entry = CODES.get(key)
     if entry is None:
         raise UnknownCode(code)

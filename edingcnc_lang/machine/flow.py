@@ -5,7 +5,7 @@ from collections.abc import Iterable
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
-from edingcnc_lang.errors import EcncError
+from edingcnc_lang.errors import EcncError, Frame
 from edingcnc_lang.machine.state import CallFrame, MAX_CALL_DEPTH, MachineState, ProgramEnd, StatementTable
 
 
@@ -49,6 +49,7 @@ class ControlFlow(MachineState):
             self.execute_body(sub.body)
         except EcncError as err:
             err.notes = (*err.notes, f"in Sub {sub.name}, called from {frame.path}:{frame.line}")
+            err.frames = (*err.frames, Frame(sub.name, frame.path, frame.line))
             raise
         finally:
             if observer is not None:

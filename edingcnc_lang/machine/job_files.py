@@ -6,6 +6,7 @@ everywhere a job touches a file.
 """
 from __future__ import annotations
 
+import io
 import os
 import stat
 from pathlib import Path, PureWindowsPath
@@ -35,11 +36,37 @@ def job_file(folder: Path, raw: str) -> Path:
     return folder / name
 
 
-def open_job_file(path: Path, mode: OpenMode, own: Collection[tuple[int, int]] = ()) -> TextIO:
+class KeptFile(io.StringIO):
+    """A job file written by a run that only looks (``ecnc plot``, ``view``, ``sim``, ``diff``): kept in
+    memory under its name when closed, so the job reads back what it wrote and no file changes."""
+
+    def __init__(self, kept: dict[Path, str], path: Path, text: str) -> None:
+        super().__init__(text)
+        self.seek(0, io.SEEK_END)
+        self._kept, self._path = kept, path
+
+    def close(self) -> None:
+        if not self.closed:
+            self._kept[self._path] = self.getvalue()
+        super().close()
+
+
+def open_job_file(path: Path, mode: OpenMode, own: Collection[tuple[int, int]] = (),
+                  kept: dict[Path, str] | None = None) -> TextIO:
     """Open ``path`` (``write`` truncates), refusing what would reach another file: a symbolic link,
     a hard link, a device or a FIFO, and for writing one of ``own``, the files the run itself reads
     or writes (job, macro files, ini, outputs) as (device, inode).  Raises OSError with a reason
-    fit for the user."""
+    fit for the user.  ``kept``: the run only looks; what it writes goes there, not to disk, and a
+    file it wrote is read back from there."""
+    if kept is not None:
+        if mode == "read":
+            return io.StringIO(kept[path]) if path in kept else open_job_file(path, mode, own)
+        if mode == "write":
+            return KeptFile(kept, path, "")
+        if path not in kept and path.exists():
+            with open_job_file(path, "read", own) as existing:
+                return KeptFile(kept, path, existing.read())
+        return KeptFile(kept, path, kept.get(path, ""))
     if not hasattr(os, "O_NOFOLLOW") and path.is_symlink():  # Windows: no O_NOFOLLOW
         raise OSError(0, f"it is a symbolic link; {_ELSEWHERE}")
     try:

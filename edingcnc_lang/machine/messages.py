@@ -103,7 +103,7 @@ class Messages(MachineState):
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
         assert self._log_file is not None
         try:
-            return open_job_file(self._log_file, "write" if truncate else "append", self.own_files)
+            return open_job_file(self._log_file, "write" if truncate else "append", self.own_files, self.kept_files)
         except OSError as exc:
             raise self.fail(f"cannot write the log file {self._log_file}: {exc.strerror or exc}", span) from None
 

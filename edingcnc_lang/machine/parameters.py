@@ -7,7 +7,7 @@ for writing the persistent ones back to cnc.ini.
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.errors import Location, MachineError
@@ -63,3 +63,34 @@ class Parameters:
     def snapshot_changed(self) -> dict[int, float]:
         """Written parameters whose value is not the one the run started with (what --save-vars stores)."""
         return {i: v for i, v in self.snapshot_written().items() if v != self._start.get(i, 0.0)}
+
+    def frozen(self) -> ParameterView:
+        """Every parameter as it is now, written or not, as a read-only mapping (``RunResult.parameters``)."""
+        values = list(self.values)
+        for index in self._live_set:
+            values[index] = self._live(index)
+        return ParameterView(values)
+
+
+class ParameterView(Mapping[int, float]):
+    """Parameters #1..#5999 at one moment, read-only: ``view[4050]``; a number outside raises KeyError."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: list[float]) -> None:
+        self._values = values
+
+    def __getitem__(self, index: int) -> float:
+        if not isinstance(index, int) or not t.FIRST_PARAM <= index <= t.LAST_PARAM:
+            raise KeyError(index)
+        return self._values[index]
+
+    def __iter__(self) -> Iterator[int]:
+        return iter(range(t.FIRST_PARAM, t.LAST_PARAM + 1))
+
+    def __len__(self) -> int:
+        return t.LAST_PARAM - t.FIRST_PARAM + 1
+
+    def __repr__(self) -> str:
+        nonzero = {i: v for i, v in enumerate(self._values) if v and i}
+        return f"ParameterView({len(self)} parameters, non-zero: {nonzero})"

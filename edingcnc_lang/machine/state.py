@@ -19,7 +19,7 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.diagnostics import Diagnostic
-from edingcnc_lang.errors import Location, MachineError
+from edingcnc_lang.errors import Cancelled, Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
@@ -188,9 +188,12 @@ class MachineState:
         self.config = config or MachineConfig.default()
         self.host = host or Host()
         self.max_steps = max_steps
+        self.cancelled = False  # Run.cancel(): the next step check stops the run
         self.log_dir = log_dir
         # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
         self.own_files: frozenset[tuple[int, int]] = frozenset()
+        # a run that only looks (plot, view, sim, diff): the files the job writes are kept here, not on disk
+        self.kept_files: dict[Path, str] | None = None
         self.allow_exec = allow_exec
         self.block_delete = block_delete
         self.steps = 0
@@ -310,10 +313,18 @@ class MachineState:
             raise self.fail(f"{what} is not allowed while cutter compensation (G41/G42) is on; "
                             "turn it off with G40 first", span)
 
+    def cancel(self) -> None:
+        """Stop the run at its next statement, loop turn or hole (``Run.cancel``; safe from another
+        thread): the step budget runs out at once, so the hot path checks nothing new."""
+        self.cancelled = True
+        self.max_steps = -1
+
     def spend(self, steps: int, span: n.Span | None = None) -> None:
         """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""
         self.steps += steps
         if self.max_steps is not None and self.steps > self.max_steps:
+            if self.cancelled:
+                raise Cancelled("cancelled by the embedding program", self.where(span))
             raise self.fail(f"step budget of {self.max_steps:,} steps exhausted (an endless loop?): statements, "
                             "loop turns and drilled holes count; raise it with --max-steps N "
                             "(RunOptions.max_steps in Python)", span)

@@ -80,7 +80,7 @@ class HeightComp(MachineState):
 
     def _zhc_open(self, path: Path, mode: OpenMode, span: n.Span) -> TextIO:
         try:
-            return open_job_file(path, mode, self.own_files)
+            return open_job_file(path, mode, self.own_files, self.kept_files)
         except OSError as exc:
             verb = "read" if mode == "read" else "write"
             raise self.fail(f"cannot {verb} the height table {path}: {exc.strerror or exc}", span) from None

@@ -19,7 +19,7 @@ from typing import IO, TYPE_CHECKING
 
 from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
-from edingcnc_lang.errors import EcncError, UsageFailure
+from edingcnc_lang.errors import CallbackError, EcncError, Location, UsageFailure
 from edingcnc_lang.motion.stage import Samples
 from edingcnc_lang.motion.planner.estimate import Timing
 
@@ -357,10 +357,11 @@ class EventsWriter:
 
 
 class CallbackSink:
-    """Forwards moves and events to callables (the embedding API's streaming interface).
-
-    ``on_timed_move(move, joints, timing)`` also gets the move's ``Timing``: planned start and end
-    times and top speed.
+    """The embedding program's callbacks when it asks for planned times (``on_timed_move``): every
+    move with its ``Timing`` (planned start and end times, top speed), and with it ``on_move`` and
+    ``on_event``, all in program order, a look-ahead window after the machine made the move.  (Without
+    ``on_timed_move``, ``on_move``/``on_event`` come at once from motion/callback_tap.py.)  A callback
+    that raises ends the run with a ``CallbackError`` at its line; the callbacks hear nothing after it.
     """
 
     def __init__(self, on_move: Callable[[Move, Pose], None] | None = None,
@@ -369,12 +370,13 @@ class CallbackSink:
         self.on_move = on_move
         self.on_event = on_event
         self.on_timed_move = on_timed_move
+        self.failed = False
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
         if self.on_move:
-            self.on_move(move, joints)
+            self._call(self.on_move, "on_move", move, move, joints)
         if self.on_timed_move:
-            self.on_timed_move(move, joints, timing)
+            self._call(self.on_timed_move, "on_timed_move", move, move, joints, timing)
 
     def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
         """Straight moves in bulk, each a ``Move`` again for the callables."""
@@ -385,10 +387,24 @@ class CallbackSink:
 
     def event(self, event: Event) -> None:
         if self.on_event:
-            self.on_event(event)
+            self._call(self.on_event, "on_event", event, event)
 
     def close(self) -> None:
         pass
+
+    def _call(self, callback: Callable[..., None], name: str, at: Move | Event, *args: object) -> None:
+        if self.failed:
+            return
+        try:
+            callback(*args)
+        except EcncError:  # the embedding program's own error, raised on purpose: as it is
+            self.failed = True
+            raise
+        except Exception as exc:
+            self.failed = True
+            text = str(exc)
+            raise CallbackError(f"{name} raised {type(exc).__name__}{': ' + text if text else ''}",
+                                Location(at.path, at.line)) from exc
 
 
 def ensure_parent(path: str | os.PathLike[str]) -> Path:

@@ -155,12 +155,12 @@ class MotionStage:
                 self._check_exact(move)
             elif checked:
                 self._check_samples(move, samples, start_time)
-        self.joints = joints
-        self.moves += 1
         if self.active is not None:
             self._user_output(self.active, _located(move))
         self.planner.move(move, joints, samples, self._limits_for(move) if self.planner.needs_limits else None,
                           cap, accel)
+        self.joints = joints  # counted once the next stage took it (an embedder's callback may stop the run)
+        self.moves += 1
 
     def move_batch(self, batch: Batch) -> None:
         """Moves in bulk; joints = position and no samples make this the cheap case."""
@@ -195,9 +195,15 @@ class MotionStage:
 
     def _write_batch(self, batch: Batch, arcs: ArcTable | None = None) -> None:
         if batch.lines:
+            try:
+                self.planner.move_batch(batch, self._straight_limits if self.planner.needs_limits else None, arcs)
+            except EcncError as err:  # a callback stopped the batch: the moves before it were made
+                if err.done:
+                    self.moves += err.done
+                    self.joints = batch.ends[err.done - 1]
+                raise
             self.moves += len(batch)
             self.joints = batch.end
-            self.planner.move_batch(batch, self._straight_limits if self.planner.needs_limits else None, arcs)
 
     @cached_property
     def _straight_limits(self) -> dict[str, AxisLimits]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, overload
 
 import numpy as np
 
@@ -51,18 +51,53 @@ class Picture:
         return np.column_stack((display[:, 0], self.height - display[:, 1]))
 
 
+@overload
 def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "tool",
-                  fit: str = "job", fmt: str | None = None) -> Picture:
-    """Draw ``path`` into ``out``; ``fit`` is ``job`` (the path and the work zero), ``part`` (the
-    part's bounding box: rapids to a tool changer far away are cut off) or ``machine`` (the whole
-    travel from cnc.ini).  ``fmt``: the format its command already checked (see ``picture_target``)."""
+                  fit: str = "job", fmt: str | None = None) -> Picture: ...
+
+
+@overload
+def plot_toolpath(path: Toolpath, out: None = None, view: str = "auto", color: str = "tool",
+                  fit: str = "job", fmt: str | None = None, *, ax: Axes) -> None: ...
+
+
+def plot_toolpath(path: Toolpath, out: Path | None = None, view: str = "auto", color: str = "tool",
+                  fit: str = "job", fmt: str | None = None, *, ax: Axes | None = None) -> Picture | None:
+    """Draw ``path`` into the file ``out``, or onto the matplotlib axes ``ax`` of the caller's own
+    figure (a notebook, a GUI; nothing is written and None is returned).  ``fit`` is ``job`` (the
+    path and the work zero), ``part`` (the part's bounding box: rapids to a tool changer far away are
+    cut off) or ``machine`` (the whole travel from cnc.ini).  ``fmt``: the format its command already
+    checked (see ``picture_target``)."""
+    if ax is not None:
+        draw_toolpath(ax.figure, ax, path, view, color, fit)  # type: ignore[arg-type]
+        return None
+    if out is None:
+        raise ValueError("plot_toolpath needs a file to write (out) or axes to draw on (ax=)")
     fmt = fmt or picture_target(out)
     from matplotlib.figure import Figure
 
-    view = v.auto_view(path) if view == "auto" else view
-    project = v.projection(view)
     fig = Figure(figsize=SIZE_INCHES, dpi=DPI)
     ax = fig.add_axes((0.07, 0.08, 0.68, 0.82))
+    view, label = draw_toolpath(fig, ax, path, view, color, fit)
+    matrix = ax.transData.get_affine().get_matrix().copy()  # final: the axes sit where add_axes put them
+    extent = ax.get_window_extent()
+    try:
+        fig.savefig(out, format=fmt, dpi=DPI)
+    except OSError as err:
+        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    width, height = (int(round(s * DPI)) for s in SIZE_INCHES)
+    axes = (int(extent.x0), int(height - extent.y1), int(extent.x1), int(height - extent.y0))
+    where = None if label is None else (int(label.x0), int(height - label.y1), int(label.x1), int(height - label.y0))
+    return Picture(out, view, width, height, matrix, axes, where)
+
+
+def draw_toolpath(fig: Figure, ax: Axes, path: Toolpath, view: str = "auto", color: str = "tool",
+                  fit: str = "job") -> tuple[str, Bbox | None]:
+    """Everything ``plot_toolpath`` draws, onto ``ax`` of ``fig``: the path, the work zero, the part
+    and limit boxes, the part's size, the title and the legend; returns the view drawn and where the
+    part's size was written."""
+    view = v.auto_view(path) if view == "auto" else view
+    project = v.projection(view)
     fitted = _draw_path(fig, ax, path, view, color)
     _draw_work_zero(ax, path, project)
     boxes = _draw_boxes(ax, path, project)
@@ -76,16 +111,7 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     label = _label_part(fig, ax, path, view, boxes.get("part"))
     fig.suptitle(v.title_text(path), x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
-    matrix = ax.transData.get_affine().get_matrix().copy()  # final: the axes sit where add_axes put them
-    extent = ax.get_window_extent()
-    try:
-        fig.savefig(out, format=fmt, dpi=DPI)
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
-    width, height = (int(round(s * DPI)) for s in SIZE_INCHES)
-    axes = (int(extent.x0), int(height - extent.y1), int(extent.x1), int(height - extent.y0))
-    where = None if label is None else (int(label.x0), int(height - label.y1), int(label.x1), int(height - label.y0))
-    return Picture(out, view, width, height, matrix, axes, where)
+    return view, label
 
 
 def thinned(path: Toolpath, max_moves: int | None = None) -> Toolpath:

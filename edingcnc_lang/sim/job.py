@@ -110,6 +110,9 @@ class Simulator:
             note = ""
             if self.table is not None and number in self.table:
                 tool = self.table[number]
+                if tool.flute_length is None:
+                    note = (f"T{number} has no flute_length in the tools file: its shank and holder "
+                            "collisions are not checked")
             else:
                 tool = ini_tool(self.config, number)
                 if self.table is not None:

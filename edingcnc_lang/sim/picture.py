@@ -76,8 +76,8 @@ def _mark(ax, findings: list[Finding]) -> None:  # type: ignore[no-untyped-def]
         for (x, y), lines in places.items():
             ax.annotate(", ".join(lines), (x, y), xytext=(5, 5), textcoords="offset points", fontsize=7,
                         color="#111111", zorder=4)
-    if findings:
-        ax.legend(loc="upper right", fontsize=7, framealpha=0.85)
+    if findings:  # below the picture, where it covers no finding's label
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=len(MARKERS), fontsize=7, frameon=False)
 
 
 def _draw_deviation(fig, ax, deviation: Deviation, step: int, extent: tuple[float, ...]) -> None:  # type: ignore[no-untyped-def]

@@ -125,7 +125,7 @@ def test_a_full_stderr_keeps_the_exit_code(tmp_path: Path, command: str, code: i
     assert result.returncode == code  # as with 2>&-: there is no one left to tell
 
 
-@pytest.mark.parametrize("command", ["ecnc run --json job.nc >&-", "ecnc lsp < /dev/null >&-"])
+@pytest.mark.parametrize("command", ["ecnc run -q --json job.nc >&-", "ecnc lsp < /dev/null >&-"])
 def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path, command: str) -> None:
     write(tmp_path, "job.nc", "G0 X1\n")
     result = _shell(command, tmp_path)
@@ -136,21 +136,21 @@ def test_closed_stdout_is_a_write_error_not_a_traceback(tmp_path: Path, command:
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
 def test_a_full_stdout_is_a_write_error_not_a_traceback(tmp_path: Path) -> None:
     write(tmp_path, "job.nc", "G0 X1\n")
-    result = _shell("ecnc run --json job.nc > /dev/full", tmp_path)
+    result = _shell("ecnc run -q --json job.nc > /dev/full", tmp_path)
     assert result.returncode == 70
     assert result.stderr == "error: cannot write standard output: No space left on device\n"
 
 
 def test_a_trace_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
     write(tmp_path, "job.nc", "G0 X1\n")
-    result = _shell("ecnc run job.nc --trace /dev/full", tmp_path)
+    result = _shell("ecnc run -q job.nc --trace /dev/full", tmp_path)
     assert result.returncode == 70 and "/dev/full" in result.stderr and "Traceback" not in result.stderr
 
 
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
 def test_an_events_file_that_cannot_be_written_names_the_file(tmp_path: Path) -> None:
     write(tmp_path, "job.nc", "G0 X1\nM3 S1000\nG1 X2 F100\n")
-    result = _shell("ecnc run job.nc --events /dev/full", tmp_path)
+    result = _shell("ecnc run -q job.nc --events /dev/full", tmp_path)
     assert result.returncode == 70
     assert result.stderr == "error: cannot write /dev/full: No space left on device\n"
 
@@ -182,7 +182,7 @@ def test_trace_to_standard_output(tmp_path: Path) -> None:
     rows = result.stdout.splitlines()
     assert rows[0].startswith("line,kind,x,y,z") and [r.split(",")[:2] for r in rows[1:]] == [["1", "rapid"],
                                                                                               ["2", "linear"]]
-    assert _shell("ecnc run job.nc --trace - > /dev/full", tmp_path).stderr == (
+    assert _shell("ecnc run -q job.nc --trace - > /dev/full", tmp_path).stderr == (
         "error: cannot write standard output: No space left on device\n")
 
 
@@ -197,7 +197,7 @@ def test_a_closed_pipe_on_standard_output_ends_quietly_with_exit_1(tmp_path: Pat
     # far more rows than a pipe buffers, so the writes go on after the reader is gone (`ecnc ... | head -1`)
     job = write(tmp_path, "big.nc", "#1 = 0\nWhile [#1 < 20000]\n  G1 X[#1 MOD 100] Y[#1 MOD 7] F3000\n"
                                      "  #1 = [#1 + 1]\nEndWhile\n")
-    process = subprocess.Popen([*ECNC, "run", str(job), option, "-"], stdout=subprocess.PIPE,
+    process = subprocess.Popen([*ECNC, "run", "-q", str(job), option, "-"], stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, cwd=tmp_path,
                                env={**os.environ, "PYTHONPATH": str(Path.cwd())})
     assert process.stdout is not None and process.stderr is not None

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.codes import CODES, KINS_CODES
+from edingcnc_lang.codes import CODES, KINS_CODES, RUNTIME_CODES
 from tests.cli_runner import invoke
 
 ROOT = Path(__file__).resolve().parent.parent.parent
@@ -25,7 +25,7 @@ def test_help_code_prints_the_long_explanation() -> None:
 
 def test_every_registered_code_has_an_explanation() -> None:
     texts = json.loads((ROOT / "edingcnc_lang" / "lint" / "explanations.json").read_text(encoding="utf-8"))
-    assert sorted(texts) == sorted([*CODES, *KINS_CODES])
+    assert sorted(texts) == sorted([*CODES, *KINS_CODES, *RUNTIME_CODES])
 
 
 def test_the_explanations_are_those_of_the_docs() -> None:

@@ -99,7 +99,7 @@ def test_strict_makes_a_macro_syntax_error_stop_the_run_before_anything_moves(tm
 
 @pytest.mark.parametrize("args", [
     ["missing.nc"], ["{job}", "--answer", "maybe"], ["{job}", "--max-steps", "0"], ["{job}", "--save-vars"],
-    ["{job}", "--log-dir", "/nonexistent/logs"], ["{job}", "--macro", "missing.cnc"], ["{job}", "--bogus"],
+    ["{job}", "--log-dir", "{job}"], ["{job}", "--macro", "missing.cnc"], ["{job}", "--bogus"],
     ["{dir}"],
 ])
 def test_usage_errors_exit_2(tmp_path: Path, args: list[str]) -> None:
@@ -115,7 +115,7 @@ def test_subprocess_exit_codes_and_streams(tmp_path: Path) -> None:
     stop = write(tmp_path, "stop.nc", 'errmsg "no"\n')
 
     def run(job: Path) -> subprocess.CompletedProcess[str]:
-        return subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", str(job), "--macro", str(EMPTY_MACRO)],
+        return subprocess.run([sys.executable, "-m", "edingcnc_lang", "run", "-q", str(job), "--macro", str(EMPTY_MACRO)],
                               check=False, capture_output=True, text=True, cwd=tmp_path)
 
     results = [run(job) for job in (ok, bad, stop)]

@@ -202,7 +202,7 @@ def test_a_run_error_stops_with_its_text_and_can_be_stepped_back_from(tmp_path, 
     stop = client.wait("stopped")
     assert stop["reason"] == "exception" and "division by zero" in stop["text"]
     info = client.request("exceptionInfo", threadId=1)
-    assert info["exceptionId"] == "runError" and f"{job}:2:" in info["details"]["message"]
+    assert info["exceptionId"] == "R813" == info["details"]["code"] and f"{job}:2:" in info["details"]["message"]
     assert client.stack()[0] == ("job", 2)
     client.step("stepBack")  # to the failing statement, before it ran: fix #1 and go on
     assert client.stack() == [("job", 2)]

@@ -4,13 +4,12 @@ A run whose outputs never read a move's time (no ``--json``, trace, samples, eve
 line or ``on_timed_move``; ``RunOptions(plan=False)``) has nothing to plan for, so it does not
 load numpy and the planner's model at all: a three-line job starts as fast as one that only
 computes.  The machine-side behaviour is unchanged: override events still set the knobs the
-motion stage reads, and moves and events reach ``on_move``/``on_event`` in program order.
+motion stage reads; ``on_move``/``on_event`` are called before this stage (motion/callback_tap.py).
 See docs/planner.md ("When the planner runs").
 """
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
@@ -26,28 +25,19 @@ class Untimed:
 
     needs_limits = False  # the motion stage need not work out what a move is timed against
 
-    def __init__(self, overrides: Overrides, on_move: Callable[[Move, Pose], None] | None = None,
-                 on_event: Callable[[Event], None] | None = None) -> None:
+    def __init__(self, overrides: Overrides) -> None:
         self.overrides = overrides
-        self.on_move = on_move
-        self.on_event = on_event
 
     def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
-        if self.on_move:
-            self.on_move(move, joints)
+        """Nothing to time: the embedding program's callbacks heard the move already (motion/callback_tap.py)."""
 
     def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
-        if not self.on_move:
-            return
-        for move in batch.moves():
-            self.on_move(move, move.end)
+        """As ``move``, for a batch."""
 
     def event(self, event: Event) -> None:
         if event.kind == "override":
             self.overrides.apply(event)
-        if self.on_event:
-            self.on_event(event)
 
     def flush(self) -> None:
         """Nothing is held back."""
