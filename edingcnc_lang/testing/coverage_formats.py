@@ -91,7 +91,6 @@ def _class(parent: ET.Element, cov: FileCoverage) -> None:
     for number in sorted({*cov.lines_hit, *cov.missed}):
         attributes = {"number": str(number), "hits": str(int(number in cov.lines_hit)), "branch": "false"}
         if number in per_line:
-            taken = sum(per_line[number])
-            attributes |= {"branch": "true",
-                           "condition-coverage": f"{100 * taken // len(per_line[number])}% ({taken}/{len(per_line[number])})"}
+            done, ways = sum(per_line[number]), len(per_line[number])
+            attributes |= {"branch": "true", "condition-coverage": f"{100 * done // ways}% ({done}/{ways})"}
         ET.SubElement(lines, "line", attributes)
