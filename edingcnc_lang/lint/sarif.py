@@ -50,7 +50,7 @@ def _rule(code: Code) -> dict[str, Any]:
     text = explain(code.code)
     long = text.partition("\n\n")[2] or code.summary
     return {
-        "id": code.code, "name": code.code,
+        "id": code.code,
         "shortDescription": {"text": code.summary},
         "fullDescription": {"text": long},
         "help": {"text": text, "markdown": f"**{code.code}** ({code.severity.value}): {code.summary}\n\n{long}"},
