@@ -117,10 +117,11 @@ def stock_mesh(stock: Stock, band: int = 256) -> Iterator[np.ndarray]:
     bottom = float(stock.bottom)
 
     def rows(first: int, last: int) -> tuple[np.ndarray, np.ndarray]:
-        """The top's points of rows first..last-1, (rows, nx, 3) float64, and which hold material."""
+        """The top's points of rows first..last-1, (rows, nx, 3) float32 as written, and which hold material."""
         gx, gy = np.meshgrid(xs, ys[first:last])
-        heights = stock.top[first:last].astype(np.float64)
-        return np.stack((gx, gy, heights), axis=-1), heights - bottom > OPENING
+        heights = stock.top[first:last]
+        return (np.stack((gx, gy, heights), axis=-1).astype(np.float32),
+                heights.astype(np.float64) - bottom > OPENING)
 
     for first in range(0, ny - 1, band):
         last = min(first + band + 1, ny)
@@ -141,8 +142,9 @@ def stock_mesh(stock: Stock, band: int = 256) -> Iterator[np.ndarray]:
 
 
 def _mid(p: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """Where a cut crosses the edge p-q: its midpoint (the same bits from either triangle of the edge)."""
-    return (p + q) / 2.0
+    """Where a cut crosses the edge p-q: its midpoint (the same bits from either triangle of the edge:
+    float32 addition is commutative, and halving exact)."""
+    return (p + q) * np.float32(0.5)
 
 
 def _clip(triangles: np.ndarray, inside: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -184,7 +186,7 @@ def _solid(top: np.ndarray, edges: np.ndarray, bottom: float) -> np.ndarray:
     pb, qb = p.copy(), q.copy()
     pb[:, 2] = qb[:, 2] = bottom
     walls = np.concatenate((np.stack((pb, qb, q), axis=1), np.stack((pb, q, p), axis=1)))
-    return np.concatenate((top, floor, walls)).astype(np.float32)
+    return np.concatenate((top, floor, walls))
 
 
 def write_stl(path: str | Path, chunks: Iterable[np.ndarray], name: str = "ecnc sim") -> None:
