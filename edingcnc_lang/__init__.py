@@ -45,6 +45,8 @@ if TYPE_CHECKING:
     from edingcnc_lang.runner import MoveStream, Run, RunOptions, RunResult, result_of, run_file, run_string
 
 __version__ = "0.1.0"
+# where the project lives: SARIF rules' helpUri, the tool's informationUri, the editor extension's links
+HOMEPAGE = "https://github.com/edingcnc-lang/edingcnc-lang"
 
 # public name -> the module (relative to this package) that defines it
 _EXPORTS: dict[str, str] = {

@@ -62,6 +62,27 @@ ecnc = click.version_option(__version__, "--version", prog_name="ecnc",
                             message=f"%(prog)s, version %(version)s ({CORE} core)")(ecnc)
 
 
+def _join_bash_equals(env: Any) -> None:
+    """Bash splits ``--select=V30`` into ``--select``, ``=``, ``V30`` (``=`` is in COMP_WORDBREAKS) and
+    completes only the text after the ``=``: join them back into the one word click reads as an
+    option and its value, so ``ecnc lint --select=V30<Tab>`` offers V300..V309."""
+    import shlex
+
+    from click.shell_completion import split_arg_string  # as click reads COMP_WORDS
+
+    words, current = split_arg_string(env.get("COMP_WORDS", "")), int(env.get("COMP_CWORD", "0") or 0)
+    cword = current
+    joined: list[str] = []
+    for index, word in enumerate(words):
+        after_equals = index > 1 and words[index - 1] == "=" and joined and joined[-1].endswith("=")
+        if (word == "=" and joined and joined[-1].startswith("--")) or after_equals:
+            joined[-1] += word
+            cword -= index <= current
+        else:
+            joined.append(word)
+    env["COMP_WORDS"], env["COMP_CWORD"] = shlex.join(joined), str(max(cword, 0))
+
+
 def run_command_line(argv: list[str], until_exit: list[object] | None = None) -> int:
     """Run ``ecnc ARGV`` and return its exit code; every failure is reported here, never raised.
 
@@ -73,6 +94,8 @@ def run_command_line(argv: list[str], until_exit: list[object] | None = None) ->
     if os.environ.get(COMPLETE_VAR):
         from click.shell_completion import shell_complete
 
+        if os.environ[COMPLETE_VAR] == "bash_complete":
+            _join_bash_equals(os.environ)
         return shell_complete(ecnc, {}, "ecnc", COMPLETE_VAR, os.environ[COMPLETE_VAR])
     make_streams_usable()
     # numpy's overflow and invalid-value warnings name a source line of ours, which tells a user

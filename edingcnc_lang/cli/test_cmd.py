@@ -27,8 +27,8 @@ if TYPE_CHECKING:
 @click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
               help="Run the test files on N processes (0: one per CPU).")
 @click.option("--cov", "cov", is_flag=True, help="Report the coverage of the macro files the tests ran.")
-@click.option("--cov-report", "cov_reports", metavar="term|json:FILE|html:DIR", multiple=True,
-              help="Coverage report (repeatable; implies --cov; default term).")
+@click.option("--cov-report", "cov_reports", metavar="term|json:FILE|html:DIR|lcov:FILE|cobertura:FILE", multiple=True,
+              help="Coverage report (repeatable; implies --cov; default term); lcov and cobertura for CI services.")
 @click.option("-q", "--quiet", is_flag=True, help="Only the failing tests and the summary line.")
 def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: str | None, jobs: int,
          cov: bool, cov_reports: tuple[str, ...], quiet: bool) -> int:
@@ -86,28 +86,30 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
 
 
 def _coverage_reports(given: tuple[str, ...]) -> list[tuple[str, str]]:
-    """``term``, ``json:FILE``, ``html:DIR`` as (kind, target); a bad one is a usage error."""
+    """``term``, ``json:FILE``, ``html:DIR``, ``lcov:FILE``, ``cobertura:FILE`` as (kind, target);
+    a bad one is a usage error."""
     reports = []
     for item in given or ("term",):
         kind, colon, target = item.partition(":")
-        if kind not in ("term", "json", "html") or (kind == "term") == bool(colon):
-            raise usage_error(f"--cov-report {item!r}: write term, json:FILE or html:DIR")
+        if kind not in ("term", "json", "html", "lcov", "cobertura") or (kind == "term") == bool(colon):
+            raise usage_error(f"--cov-report {item!r}: write term, json:FILE, html:DIR, lcov:FILE or cobertura:FILE")
         if kind != "term" and not target:
-            raise usage_error(f"--cov-report {item!r}: name the {'file' if kind == 'json' else 'folder'}")
+            raise usage_error(f"--cov-report {item!r}: name the {'folder' if kind == 'html' else 'file'}")
         reports.append((kind, target))
     return reports
 
 
 def _coverage(reports: list[tuple[str, str]], data: CoverageData) -> None:
     from edingcnc_lang.testing.coverage import summarise
+    from edingcnc_lang.testing.coverage_formats import cobertura, lcov
     from edingcnc_lang.testing.reports import coverage_json, coverage_term, write_coverage_html
 
     files = summarise(data)
     for kind, target in reports:
         if kind == "term":
             print(coverage_term(files))
-        elif kind == "json":
-            _write(target, coverage_json(files))
+        elif kind in ("json", "lcov", "cobertura"):
+            _write(target, {"json": coverage_json, "lcov": lcov, "cobertura": cobertura}[kind](files))
         else:
             print(f"coverage pages: {write_coverage_html(files, Path(target))}")
 

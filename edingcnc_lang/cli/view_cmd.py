@@ -58,9 +58,13 @@ class LineRange(click.ParamType):
               help="With --stock: tool shapes as TOML, as ecnc sim reads them.")
 @click.option("--diff", "old", metavar="OLD", type=EXISTING_FILE,
               help="Also run OLD: the page shows OLD and JOB (NEW), a button (D) switches (ecnc view --diff OLD NEW).")
+@click.option("--embed-sources", is_flag=True,
+              help="Put full file paths and the text of ecnc's own macro.cnc into the page (left out by "
+                   "default, as the page gets shared).")
 def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
          view: str, max_moves: int | None, lines: tuple[int, int] | None,
-         stock_box: tuple[float, ...] | None = None, tools_file: str | None = None, old: str | None = None) -> int:
+         stock_box: tuple[float, ...] | None = None, tools_file: str | None = None, old: str | None = None,
+         embed_sources: bool = False) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
@@ -79,7 +83,7 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
     with job_to_draw(job, output) as (path, name):
         written = view_job(path, options, Path(output) if output else None,
                            max_moves=max_moves, lines=lines, view=view, name=name,
-                           old=Path(old) if old else None)
+                           old=Path(old) if old else None, embed_sources=embed_sources)
         if stock_box is not None:
             from edingcnc_lang.sim.frames import add_to_page, stock_frames
             from edingcnc_lang.sim.stock import Stock

@@ -5,15 +5,11 @@ json is imported by the two formats that write it: the text format of a lint doe
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from pathlib import Path
 
-from edingcnc_lang import __version__
-from edingcnc_lang.codes import CODES, Severity
+from edingcnc_lang.codes import CODES
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import printable
 
-SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
-_SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning"}
 
 
 def text(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
@@ -48,31 +44,11 @@ def github(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
         f"title={_escape_property(d.code)}::{_escape_data(d.message)}" for d in findings)
 
 
-def _uri(path: str) -> str:
-    """SARIF wants URIs: relative paths as POSIX references, absolute ones as file: URIs."""
-    p = Path(path)
-    return p.as_uri() if p.is_absolute() else p.as_posix()
-
-
 def sarif(findings: Sequence[Diagnostic], with_source: bool = True) -> str:
-    """One SARIF run whose rules are the whole code table (so every result's ruleIndex resolves)."""
-    codes = list(CODES.values())
-    index = {c.code: i for i, c in enumerate(codes)}
-    rules = [{"id": c.code, "shortDescription": {"text": c.summary},
-              "defaultConfiguration": {"level": _SARIF_LEVEL[c.severity]}} for c in codes]
-    results = [{
-        "ruleId": d.code, "ruleIndex": index[d.code], "level": _SARIF_LEVEL[d.severity],
-        "message": {"text": d.message},
-        "locations": [{"physicalLocation": {
-            "artifactLocation": {"uri": _uri(d.path)},
-            "region": {"startLine": d.line, "startColumn": d.col}}}],
-    } for d in findings]
-    log = {"$schema": SARIF_SCHEMA, "version": "2.1.0", "runs": [{
-        "tool": {"driver": {"name": "ecnc lint", "version": __version__, "rules": rules}},
-        "results": results}]}
-    import json
+    """SARIF 2.1.0 for code-scanning services (lint/sarif.py)."""
+    from edingcnc_lang.lint.sarif import sarif as render
 
-    return json.dumps(log, indent=1)
+    return render(findings, with_source)
 
 
 FORMATS: dict[str, Callable[[Sequence[Diagnostic], bool], str]] = {

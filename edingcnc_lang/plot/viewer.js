@@ -49,6 +49,8 @@
   const VIEWS = { top: [0, 0, 0], front: [0, -90, 0], side: [-90, -90, 0], iso: [45, -54.7356, 0],
                   lathe: [180, -90, -90] };
   const cam = { yaw: 0, pitch: 0, roll: 0, scale: 1, u: 0, v: 0 };
+  // what a drag turns about: the centre of the part's box (of the work zero for a job with no moves)
+  const pivot = D.part ? [0, 1, 2].map((a) => (D.part[0][a] + D.part[1][a]) / 2) : D.workZero.slice(0, 3);
   const canvas = document.getElementById("view");
   const ctx = canvas.getContext("2d");
   let projected = new Float32Array(points.length / 3 * 2);
@@ -468,9 +470,13 @@
     if (drag.pan) {
       cam.u -= dx / cam.scale;
       cam.v += dy / cam.scale;
-    } else {
+    } else {  // turn about the part's centre: it stays where it is on the screen
+      const [pu, pv] = project(...pivot);
       cam.yaw -= dx * 0.01;
       cam.pitch = Math.max(-Math.PI, Math.min(0, cam.pitch - dy * 0.01));
+      const [qu, qv] = project(...pivot);
+      cam.u += qu - pu;
+      cam.v += qv - pv;
       document.querySelectorAll("[data-view]").forEach((b) => b.classList.remove("active"));
     }
     draw();

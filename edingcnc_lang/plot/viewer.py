@@ -13,6 +13,8 @@ import base64
 import html
 import json
 import math
+import os
+from collections.abc import Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -58,8 +60,12 @@ def _b64(array: np.ndarray, dtype: str) -> str:
     return base64.b64encode(np.ascontiguousarray(array, dtype=np.dtype(dtype).newbyteorder("<")).tobytes()).decode()
 
 
-def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> dict[str, Any]:
-    """Everything the page shows, as JSON-ready values; ``view`` is the one the page opens with."""
+def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso",
+              embed_sources: bool = False) -> dict[str, Any]:
+    """Everything the page shows, as JSON-ready values; ``view`` is the one the page opens with.
+
+    A page gets shared: unless ``embed_sources``, files are named as ``_shown_names`` says (no
+    absolute path of this computer) and the text of ecnc's own macro files is left out."""
     thinned = decimate(path, max_moves)
     points: list[np.ndarray] = []
     first = np.zeros(len(thinned.keep), dtype=np.int64)
@@ -82,12 +88,20 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         last[row] = size - 1
         previous_end = move[-1]
     keep = thinned.keep
+    names = {p: p for p in path.paths} if embed_sources else _shown_names(path.paths)
+
+    def hidden(text: str) -> str:
+        for real in sorted(names, key=len, reverse=True):
+            text = text.replace(real, names[real])
+        return text
+
+    sources = path.source_lines(keep, context=3 if len(keep) == len(path) else 0)
     bounds = path.bounds()
     abc = path.ends[keep, 3:]
     data: dict[str, Any] = {
-        "job": path.job, "title": v.title_text(path), "moves": len(path), "shown": len(keep),
+        "job": names.get(path.job) or hidden(path.job), "title": hidden(v.title_text(path)), "moves": len(path), "shown": len(keep),
         "maxMoves": max_moves, "view": view, "kinds": list(KINDS), "rapidKinds": sorted(RAPID_KINDS),
-        "files": list(path.paths), "toolColors": list(v.TOOL_COLORS), "kindColors": v.KIND_COLORS,
+        "files": [names[p] for p in path.paths], "toolColors": list(v.TOOL_COLORS), "kindColors": v.KIND_COLORS,
         "tools": v.feed_tools(path),
         # a lathe's part in work coordinates: the readout shows X as the program does (a diameter)
         "xDiameter": path.part and path.x_diameter,
@@ -103,12 +117,47 @@ def view_data(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso") -> 
         "workZero": list(path.work_zero),
         "part": [bounds[0].tolist(), bounds[1].tolist()] if bounds is not None else None,
         "limits": [path.limits[0].tolist(), path.limits[1].tolist()] if path.limits is not None else None,
-        "source": {name: {str(k): text for k, text in lines.items()}
-                   for name, lines in path.source_lines(keep, context=3 if len(keep) == len(path) else 0).items()},
-        "error": path.error.format() if path.error is not None else None,
+        "source": {names[name]: {str(k): text for k, text in lines.items()}
+                   for name, lines in sources.items() if embed_sources or not _packaged(name)},
+        "error": hidden(path.error.format()) if path.error is not None else None,
         "seconds": path.seconds,
     }
     return data
+
+
+def _packaged(name: str) -> bool:
+    """A file that comes with ecnc (its stock macro.cnc): the same for everyone, so not put in a page."""
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    try:
+        return os.path.isabs(name) and os.path.commonpath([os.path.abspath(name), package]) == package
+    except ValueError:  # another drive
+        return False
+
+
+def _shown_names(paths: Sequence[str]) -> dict[str, str]:
+    """Each file as a shared page names it: ecnc's own as ``ecnc/stdlib/...``, one below the current
+    folder relative to it, any other absolute path by its name alone (a second file of that name
+    gets `` (2)``); names that were not absolute stay as given."""
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    names: dict[str, str] = {}
+    for real in paths:
+        name = real
+        if os.path.isabs(real):
+            if _packaged(real):
+                name = "ecnc/" + os.path.relpath(real, package).replace(os.sep, "/")
+            else:
+                try:
+                    relative = os.path.relpath(real)
+                except ValueError:
+                    relative = ".."
+                name = relative.replace(os.sep, "/") if not relative.startswith("..") else os.path.basename(real)
+        taken, count = set(names.values()), 1
+        base = name
+        while name in taken:
+            count += 1
+            name = f"{base} ({count})"
+        names[real] = name
+    return names
 
 
 def _moving_joints(path: Toolpath) -> list[tuple[int, str]]:
@@ -119,31 +168,32 @@ def _moving_joints(path: Toolpath) -> list[tuple[int, str]]:
     return [(k, name) for k, name in enumerate(path.joint_names[:6]) if moving[k]]
 
 
-def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Toolpath | None = None) -> str:
+def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Toolpath | None = None,
+         embed_sources: bool = False) -> str:
     """The whole HTML page for ``path``; with ``old`` (``ecnc view --diff OLD NEW``) the page holds
-    both jobs and a button switches between them."""
+    both jobs and a button switches between them; ``embed_sources`` as view_data."""
     folder = resources.files(__package__)
     template, css, script = (folder.joinpath(name).read_text(encoding="utf-8") for name in ASSETS)
-    payload = _payload(path, max_moves, view)
+    payload = _payload(path, max_moves, view, embed_sources)
     other = "" if old is None else \
-        f'<script type="application/json" id="job-data-old">{_payload(old, max_moves, view)}</script>'
+        f'<script type="application/json" id="job-data-old">{_payload(old, max_moves, view, embed_sources)}</script>'
     name = path.job.replace("\\", "/").rsplit("/", 1)[-1]
     return (template.replace("{{title}}", html.escape(f"{name} \u2014 ecnc view"))
             .replace("{{css}}", css).replace("{{script}}", script).replace("{{other}}", other)
             .replace("{{data}}", payload))
 
 
-def _payload(path: Toolpath, max_moves: int, view: str) -> str:
-    payload = json.dumps(view_data(path, max_moves, view), separators=(",", ":"), allow_nan=False)
+def _payload(path: Toolpath, max_moves: int, view: str, embed_sources: bool) -> str:
+    payload = json.dumps(view_data(path, max_moves, view, embed_sources), separators=(",", ":"), allow_nan=False)
     # a job line with "</script>" must not end the block, nor one with "{{data}}" take the page's place
     return payload.replace("</", "<\\/").replace("{{", "{\\u007b")
 
 
 def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str = "iso",
-               old: Toolpath | None = None) -> Path:
+               old: Toolpath | None = None, embed_sources: bool = False) -> Path:
     """Write the viewer page for ``path`` (and ``old``, to compare with) to ``out``."""
     try:
-        out.write_text(page(path, max_moves, view, old), encoding="utf-8")
+        out.write_text(page(path, max_moves, view, old, embed_sources), encoding="utf-8")
     except OSError as err:
         raise EcncError(f"cannot write {out}: {err.strerror}") from None
     return out

@@ -1,8 +1,9 @@
 """STL in and out: the cut stock as a closed mesh, and a mesh's top surface as a height field.
 
-Written as binary STL with numpy (two triangles per cell on the top, the four walls and a fanned
-bottom, so the mesh is closed), a band of rows at a time; 50 bytes a triangle, so about 100 bytes
-per cell on disk (1.6 GB for a 1 m x 1 m table at 0.25 mm: mesh a coarser --resolution).  Read: binary or
+Written as binary STL with numpy (two triangles per cell on the top, two under it on the bottom, and
+walls on the box's edge and around every opening, so the mesh is closed and manifold), a band of rows
+at a time; 50 bytes a triangle, so about 200 bytes per cell on disk (3.2 GB for a 1 m x 1 m table at
+0.25 mm: mesh a coarser --resolution).  Read: binary or
 ASCII; only the surface seen from above is kept (a height field holds no undercuts).
 """
 from __future__ import annotations
@@ -93,38 +94,99 @@ def raster_top(stock: Stock, triangles: np.ndarray) -> tuple[np.ndarray, np.ndar
     return top.reshape(ny, nx), covered.reshape(ny, nx)
 
 
+OPENING = 1e-3  # mm: a cell centre with less material than this over the bottom is an opening
+
+
 def stock_mesh(stock: Stock, band: int = 256) -> Iterator[np.ndarray]:
-    """The cut stock as closed triangles, (N, 3, 3) float32 arrays a band of rows at a time (so a
-    large field is never a mesh in memory at once): the top through the cell centres (the outer
-    row moved out to the box's edge), four walls down to the bottom, a bottom fanned from its centre."""
+    """The cut stock as a closed, manifold solid: (N, 3, 3) float32 triangle arrays, a band of rows
+    at a time (so a large field is never a mesh in memory at once).
+
+    The top runs through the cell centres (the outer row moved out to the box's edge), two triangles
+    a cell; the material is where a centre has more than ``OPENING`` over the bottom.  A triangle
+    with a centre of no material is cut at its edges' midpoints (marching triangles: one way to cut
+    each, so no ambiguous case), and a wall stands on every cut and on the box's edge down to a
+    bottom that mirrors the top: a cut through the stock's edge or a through-hole is a real opening,
+    every edge belongs to two triangles, and no face has zero thickness behind it.
+    """
     ny, nx = stock.shape
     if nx < 2 or ny < 2:
         raise EcncError("the stock needs at least 2 x 2 cells for a mesh: use a finer --resolution")
     x0, y0, _z0, x1, y1, _z1 = stock.box_bounds
     xs, ys = stock.xs(), stock.ys()
     xs[0], xs[-1], ys[0], ys[-1] = x0, x1, y0, y1
+    bottom = float(stock.bottom)
 
-    def rows(first: int, last: int) -> np.ndarray:
+    def rows(first: int, last: int) -> tuple[np.ndarray, np.ndarray]:
+        """The top's points of rows first..last-1, (rows, nx, 3) float32 as written, and which hold material."""
         gx, gy = np.meshgrid(xs, ys[first:last])
-        return np.stack((gx, gy, stock.top[first:last]), axis=-1).astype(np.float32)  # (rows, nx, 3)
+        heights = stock.top[first:last]
+        return (np.stack((gx, gy, heights), axis=-1).astype(np.float32),
+                heights.astype(np.float64) - bottom > OPENING)
 
     for first in range(0, ny - 1, band):
-        top = rows(first, min(first + band + 1, ny))
-        a, b, c, d = top[:-1, :-1], top[:-1, 1:], top[1:, 1:], top[1:, :-1]
-        yield np.concatenate((np.stack((a, b, c), axis=-2).reshape(-1, 3, 3),
-                              np.stack((a, c, d), axis=-2).reshape(-1, 3, 3)))
-    front, back = rows(0, 1)[0], rows(ny - 1, ny)[0]
-    left = np.stack((np.full(ny, x0), ys, stock.top[:, 0]), axis=-1).astype(np.float32)
-    right = np.stack((np.full(ny, x1), ys, stock.top[:, -1]), axis=-1).astype(np.float32)
-    ring = np.concatenate((front, right[1:], back[-2::-1], left[-2:0:-1]))  # counter-clockwise from above
-    ring = np.vstack((ring, ring[:1]))
-    floor = ring.copy()
-    floor[:, 2] = stock.bottom
-    upper, lower = ring[:-1], ring[1:]
-    centre = np.array([(x0 + x1) / 2.0, (y0 + y1) / 2.0, stock.bottom], dtype=np.float32)
-    yield np.concatenate((np.stack((upper, floor[:-1], floor[1:]), axis=1),
-                          np.stack((upper, floor[1:], lower), axis=1),
-                          np.stack((np.broadcast_to(centre, floor[:-1].shape), floor[1:], floor[:-1]), axis=1)))
+        last = min(first + band + 1, ny)
+        points, solid = rows(first, last)
+        a, b, c, d = (points[:-1, :-1], points[:-1, 1:], points[1:, 1:], points[1:, :-1])
+        fa, fb, fc, fd = (solid[:-1, :-1], solid[:-1, 1:], solid[1:, 1:], solid[1:, :-1])
+        triangles = np.concatenate((np.stack((a, b, c), axis=-2).reshape(-1, 3, 3),
+                                    np.stack((a, c, d), axis=-2).reshape(-1, 3, 3)))
+        inside = np.concatenate((np.stack((fa, fb, fc), axis=-1).reshape(-1, 3),
+                                 np.stack((fa, fc, fd), axis=-1).reshape(-1, 3)))
+        top, cuts = _clip(triangles, inside)
+        edges = [cuts, *(_rim(points[:, k], solid[:, k], forward) for k, forward in ((-1, True), (0, False)))]
+        if first == 0:
+            edges.append(_rim(points[0], solid[0], True))
+        if last == ny:
+            edges.append(_rim(points[-1], solid[-1], False))
+        yield _solid(top, np.concatenate(edges), bottom)
+
+
+def _mid(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """Where a cut crosses the edge p-q: its midpoint (the same bits from either triangle of the edge:
+    float32 addition is commutative, and halving exact)."""
+    return (p + q) * np.float32(0.5)
+
+
+def _clip(triangles: np.ndarray, inside: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The parts of counter-clockwise triangles over material, and the cuts as edges (N, 2, 3)
+    directed with the material on their left."""
+    count = inside.sum(axis=1)
+    kept = [triangles[count == 3]]
+    cuts = []
+    for alone, pick in ((1, np.argmax), (2, np.argmin)):  # the one vertex inside / the one outside
+        chosen = count == alone
+        turn = (pick(inside[chosen], axis=1)[:, None] + np.arange(3)) % 3
+        p0, p1, p2 = np.moveaxis(np.take_along_axis(triangles[chosen], turn[:, :, None], axis=1), 1, 0)
+        m01, m20 = _mid(p0, p1), _mid(p2, p0)
+        if alone == 1:
+            kept.append(np.stack((p0, m01, m20), axis=1))
+            cuts.append(np.stack((m01, m20), axis=1))
+        else:
+            kept += [np.stack((m01, p1, p2), axis=1), np.stack((m01, p2, m20), axis=1)]
+            cuts.append(np.stack((m20, m01), axis=1))
+    return np.concatenate(kept), np.concatenate(cuts)
+
+
+def _rim(line: np.ndarray, solid: np.ndarray, forward: bool) -> np.ndarray:
+    """The parts over material of a run of points on the box's edge, as edges (N, 2, 3) directed
+    counter-clockwise around the box (``forward``: in the run's order)."""
+    if not forward:
+        line, solid = line[::-1], solid[::-1]
+    p, q, fp, fq = line[:-1], line[1:], solid[:-1], solid[1:]
+    half = _mid(p, q)
+    return np.concatenate((np.stack((p, q), axis=1)[fp & fq], np.stack((p, half), axis=1)[fp & ~fq],
+                           np.stack((half, q), axis=1)[~fp & fq]))
+
+
+def _solid(top: np.ndarray, edges: np.ndarray, bottom: float) -> np.ndarray:
+    """The top triangles, the bottom under them facing down, and a wall down from each edge."""
+    floor = top[:, ::-1].copy()
+    floor[..., 2] = bottom
+    p, q = edges[:, 0], edges[:, 1]
+    pb, qb = p.copy(), q.copy()
+    pb[:, 2] = qb[:, 2] = bottom
+    walls = np.concatenate((np.stack((pb, qb, q), axis=1), np.stack((pb, q, p), axis=1)))
+    return np.concatenate((top, floor, walls))
 
 
 def write_stl(path: str | Path, chunks: Iterable[np.ndarray], name: str = "ecnc sim") -> None:

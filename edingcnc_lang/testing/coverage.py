@@ -130,6 +130,8 @@ class FileCoverage:
     branches_hit: int
     branches_missed: tuple[tuple[int, str], ...]  # (line, "then"/"else"/"enter"/"leave")
     subs_never_run: tuple[str, ...]
+    branches: tuple[tuple[int, str, bool], ...] = ()  # every branch: (line, name, taken), for LCOV and Cobertura
+    subs: tuple[tuple[str, int, bool], ...] = ()       # every sub: (name as written, line, run)
 
     def to_json(self) -> dict[str, object]:
         return {"lines": {"total": self.lines_total, "hit": len(self.lines_hit), "missed": list(self.missed)},
@@ -154,7 +156,10 @@ def summarise(data: CoverageData) -> list[FileCoverage]:
             branches_hit=sum((line, way) in taken for line, way, _ in shape.branches),
             branches_missed=tuple((line, name) for line, way, name in shape.branches if (line, way) not in taken),
             subs_never_run=tuple(written for key, (written, _line) in sorted(shape.subs.items(), key=lambda i: i[1][1])
-                                 if key not in called)))
+                                 if key not in called),
+            branches=tuple((line, name, (line, way) in taken) for line, way, name in shape.branches),
+            subs=tuple((written, line, key in called)
+                       for key, (written, line) in sorted(shape.subs.items(), key=lambda i: i[1][1]))))
     return report
 
 

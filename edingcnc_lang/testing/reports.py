@@ -9,11 +9,12 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
+from edingcnc_lang.errors import printable
 from edingcnc_lang.syntax.source import iter_file_lines
 from edingcnc_lang.testing.coverage import FileCoverage
 from edingcnc_lang.testing.session import Summary
 
-COVERAGE_FORMATS = ("term", "json", "html")
+COVERAGE_FORMATS = ("term", "json", "html", "lcov", "cobertura")
 
 
 def percent(hit: int, total: int) -> str:
@@ -97,23 +98,62 @@ def _page(title: str, body: str) -> str:
 
 
 def junit_xml(summary: Summary) -> str:
-    """JUnit XML: a testsuite per test file, a testcase per test with its failure text."""
-    root = ET.Element("testsuites", tests=str(len(summary.results)), failures=str(summary.failed),
-                      time=f"{summary.seconds:.3f}")
-    suites: dict[str, ET.Element] = {}
+    """JUnit XML as CI services read it: a testsuite per test file, a testcase per test with
+    ``<failure>`` (a check that did not hold), ``<error>`` (the run stopped with an error the test did
+    not expect) or ``<skipped>`` (not run after -x), and the job's messages as ``<system-out>``."""
+    import socket
+    from datetime import datetime, timezone
+
+    stamp = datetime.fromtimestamp(summary.started or 0, timezone.utc).strftime("%Y-%m-%dT%H:%M:%S")
+    counts = {"tests": 0, "failures": 0, "errors": 0, "skipped": 0}
+    root = ET.Element("testsuites", name="ecnc test")
+    suites: dict[str, tuple[ET.Element, dict[str, int], list[float]]] = {}
+
+    def case(file: str, name: str, line: int, seconds: float, kind: str) -> ET.Element:
+        if file not in suites:
+            suites[file] = (ET.SubElement(root, "testsuite", name=_xml(file), timestamp=stamp,
+                                          hostname=_xml(socket.gethostname())), dict.fromkeys(counts, 0), [0.0])
+        suite, tally, spent = suites[file]
+        for key in ("tests", kind):
+            if key in tally:
+                tally[key] += 1
+                counts[key] += 1
+        spent[0] += seconds
+        return ET.SubElement(suite, "testcase", classname=_xml(_classname(file)), name=_xml(name),
+                             file=_xml(file), line=str(line), time=f"{seconds:.3f}")
+
     for result in summary.results:
-        suite = suites.get(result.file)
-        if suite is None:
-            suite = suites[result.file] = ET.SubElement(root, "testsuite", name=result.file, tests="0", failures="0")
-        suite.set("tests", str(int(suite.get("tests", "0")) + 1))
-        case = ET.SubElement(suite, "testcase", classname=_classname(result.file), name=result.name,
-                             file=result.file, line=str(result.line), time=f"{result.seconds:.3f}")
+        kind = "passed" if result.passed else "errors" if result.errored else "failures"
+        element = case(result.file, result.name, result.line, result.seconds, kind)
         if not result.passed:
-            suite.set("failures", str(int(suite.get("failures", "0")) + 1))
-            failure = ET.SubElement(case, "failure", message=result.failures[0])
-            failure.text = "\n".join(result.failures)
+            problem = ET.SubElement(element, "error" if result.errored else "failure",
+                                    message=_xml(result.failures[0]), type="error" if result.errored else "failure")
+            problem.text = _xml("\n".join(result.failures))
+        if result.messages:
+            ET.SubElement(element, "system-out").text = _xml("\n".join(result.messages))
+    for left in summary.not_run:
+        element = case(left.file, left.name, left.line, 0.0, "skipped")
+        ET.SubElement(element, "skipped", message="not run: -x stopped at the first failing test")
+    for suite, tally, spent in suites.values():
+        for key, value in tally.items():
+            suite.set(key, str(value))
+        suite.set("time", f"{spent[0]:.3f}")
+    for key, value in counts.items():
+        root.set(key, str(value))
+    root.set("time", f"{summary.seconds:.3f}")
+    root.set("timestamp", stamp)
     ET.indent(root)
     return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
+
+
+# What XML 1.0 cannot hold at all, after printable() has made the C0/C1 controls visible.
+_NOT_XML = re.compile("[\ud800-\udfff\ufffe\uffff]")
+
+
+def _xml(text: str) -> str:
+    """``text`` as XML 1.0 allows it: every control character but tab and newline shown as
+    ``\\xNN`` (a test's name or a job's message may hold any), lone surrogates as ``\\uNNNN``."""
+    return _NOT_XML.sub(lambda m: f"\\u{ord(m[0]):04x}", printable(text))
 
 
 def _classname(file: str) -> str:

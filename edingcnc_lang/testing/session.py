@@ -24,6 +24,8 @@ class TestResult:
     line: int
     failures: tuple[str, ...]
     seconds: float = 0.0
+    errored: bool = False  # the run stopped with an error the test did not expect, or the test could not be followed
+    messages: tuple[str, ...] = ()  # what the job said (msg, warnmsg, logmsg ...) as ``kind: text``, for the reports
 
     @property
     def passed(self) -> bool:
@@ -41,6 +43,8 @@ class Summary:
     results: list[TestResult] = field(default_factory=list)
     coverage: CoverageData | None = None
     seconds: float = 0.0
+    not_run: list[TestCase] = field(default_factory=list)  # left out when -x stopped at a failure
+    started: float = 0.0  # when the run began (seconds since the epoch), for the reports' timestamp
 
     @property
     def passed(self) -> int:
@@ -61,7 +65,9 @@ def check(case: TestCase, coverage: CoverageData | None = None) -> TestResult:
     from edingcnc_lang.testing.execute import run_case
 
     outcome = run_case(case, coverage)
-    return TestResult(case.name, case.file, case.line, tuple(failures(outcome)), outcome.seconds)
+    errored = bool(outcome.test_problem) or (outcome.error is not None and case.expect.error is None)
+    return TestResult(case.name, case.file, case.line, tuple(failures(outcome)), outcome.seconds, errored,
+                      tuple(f"{kind}: {text}" for kind, text in outcome.messages))
 
 
 def run_cases(files: Sequence[Sequence[TestCase]], *, stop_first: bool = False, jobs: int = 1,
@@ -69,7 +75,7 @@ def run_cases(files: Sequence[Sequence[TestCase]], *, stop_first: bool = False, 
     """Run the tests of each file in turn (``jobs`` > 1: files on that many processes), calling
     ``report`` with each result in file order as it is known."""
     started = time.perf_counter()
-    summary = Summary(coverage=CoverageData() if coverage else None)
+    summary = Summary(coverage=CoverageData() if coverage else None, started=time.time())
     for results, data in _file_results(files, stop_first, jobs, coverage):
         if summary.coverage is not None and data is not None:
             summary.coverage.update(data)
@@ -78,6 +84,8 @@ def run_cases(files: Sequence[Sequence[TestCase]], *, stop_first: bool = False, 
             report(result)
         if stop_first and any(not r.passed for r in results):
             break
+    ran = {(r.file, r.line, r.name) for r in summary.results}
+    summary.not_run = [case for cases in files for case in cases if (case.file, case.line, case.name) not in ran]
     summary.seconds = time.perf_counter() - started
     return summary
 

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -86,3 +87,24 @@ def test_the_completion_scripts_are_there(shell: str) -> None:
     script = subprocess.run([sys.executable, "-m", "edingcnc_lang"], capture_output=True, text=True, check=True,
                             env={**os.environ, "_ECNC_COMPLETE": f"{shell}_source", "PYTHONPATH": str(ROOT)}).stdout
     assert "_ECNC_COMPLETE" in script
+
+
+@pytest.mark.skipif(shutil.which("bash") is None, reason="needs bash")
+@pytest.mark.parametrize(("words", "offered"), [
+    ("ecnc lint --select = V30", [c for c in CODES if c.startswith("V30")]),  # --select=V30: bash splits at the =
+    ("ecnc lint --ignore = E100,S20", [f"E100,S20{i}" for i in range(10)]),
+    ("ecnc lint --select V30", [c for c in CODES if c.startswith("V30")]),
+    ("ecnc lint --select =", list(CODES)),  # --select=<Tab>
+])
+def test_bash_completes_after_option_equals(tmp_path: Path, words: str, offered: list[str]) -> None:
+    """The bash script ecnc prints, sourced in bash, with COMP_WORDS as bash splits the line
+    (``=`` is one of its COMP_WORDBREAKS): the values for the text after the ``=``."""
+    folder = tmp_path / "bin"
+    folder.mkdir()
+    (folder / "ecnc").write_text(f"#!/bin/sh\nPYTHONPATH={ROOT} exec {sys.executable} -m edingcnc_lang \"$@\"\n")
+    (folder / "ecnc").chmod(0o755)
+    script = (f"source <(_ECNC_COMPLETE=bash_source ecnc)\nCOMP_WORDS=({words})\n"
+              f"COMP_CWORD={len(words.split()) - 1}\n_ecnc_completion ecnc\nprintf '%s\\n' \"${{COMPREPLY[@]}}\"\n")
+    done = subprocess.run(["bash", "-c", script], capture_output=True, text=True, timeout=60,
+                          env={**os.environ, "PATH": f"{folder}{os.pathsep}{os.environ['PATH']}"})
+    assert done.stdout.split() == offered, done.stderr

@@ -94,8 +94,8 @@ def test_a_test_file_that_does_not_load_is_exit_65_without_a_traceback(folder: P
 @pytest.mark.parametrize(("args", "message"), [
     (("-k", "sets and"), "-k 'sets and': the expression ends too early"),
     (("-k", "nothing"), "no test matches -k 'nothing'"),
-    (("--cov-report", "xml"), "--cov-report 'xml': write term, json:FILE or html:DIR"),
-    (("--cov-report", "json"), "--cov-report 'json': write term, json:FILE or html:DIR"),
+    (("--cov-report", "xml"), "--cov-report 'xml': write term, json:FILE, html:DIR, lcov:FILE or cobertura:FILE"),
+    (("--cov-report", "json"), "--cov-report 'json': write term, json:FILE, html:DIR, lcov:FILE or cobertura:FILE"),
     (("missing",), "'missing' does not exist"),
     (("notes.toml", "-j", "-1"), "-1 is not in the range"),
 ])

@@ -213,3 +213,39 @@ def test_the_iso_view_shows_the_whole_part_box(tmp_path: Path) -> None:
     cols = np.nonzero(grey.any(axis=0))[0]
     assert len(cols) > 0, "the part box is not drawn"
     assert cols.min() > 20, f"the part box runs off the left of the canvas (grey from column {cols.min()})"
+
+
+def _ink(browser: Browser, colour: str) -> tuple[int, float, float]:
+    """How many canvas pixels have ``colour`` (#rrggbb), and their centroid."""
+    import base64
+    import io
+
+    imread = pytest.importorskip("matplotlib.image").imread
+    url = _canvas(browser)
+    image = imread(io.BytesIO(base64.b64decode(url.split(",", 1)[1])), format="png")[:, :, :3]
+    target = np.array([int(colour[i:i + 2], 16) / 255 for i in (1, 3, 5)])
+    rows, cols = np.nonzero(np.linalg.norm(image - target, axis=2) < 0.15)
+    return len(rows), float(cols.mean()) if len(cols) else -1.0, float(rows.mean()) if len(rows) else -1.0
+
+
+def test_a_drag_turns_the_view_about_the_parts_centre(tmp_path: Path) -> None:
+    """A part far from zero (X500..600, Y400..480) stays where it is on the canvas while a drag turns
+    the view: the turn is about the part's centre, not about X0 Y0 Z0."""
+    job = tmp_path / "far.nc"
+    job.write_text("G21 G90\nT1 M6\nG0 X500 Y400 Z5\nG1 Z-2 F500\nG1 X600\nY480\nX500\nY400\nG0 Z5\nM30\n")
+    page = write_view(record_job(job), tmp_path / "far.html")
+    colour = views.TOOL_COLORS[0]
+    with Browser(CHROMIUM, page.resolve().as_uri() + "#view=top", tmp_path / "profile", WINDOW) as browser:
+        assert browser.evaluate("document.getElementById('status').dataset.ready") == "1"
+        count, x, y = _ink(browser, colour)
+        assert count > 200, "the part is not drawn"
+        cx, cy, _ = _centre(browser, "view")
+        for step in range(1, 6):  # a long drag: about 1.5 radians of turn and some tilt
+            browser.mouse("mouseMoved" if step > 1 else "mousePressed", cx + 30 * step, cy + 8 * step,
+                          button="left", buttons=1, clickCount=1)
+        browser.mouse("mouseReleased", cx + 150, cy + 40, button="left", clickCount=1)
+        turned, tx, ty = _ink(browser, colour)
+        assert turned > 100, "the part left the canvas when the view turned"
+        width = browser.evaluate("document.getElementById('view').width")
+        assert abs(tx - x) < 0.05 * width and abs(ty - y) < 0.05 * width, ((x, y), (tx, ty))
+        assert browser.logged() == []
