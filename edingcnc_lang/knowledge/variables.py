@@ -6,6 +6,8 @@ number of the tool table).  Which numbers are read-only comes from ``tables.py``
 """
 from __future__ import annotations
 
+from edingcnc_lang.machine.tables import RESERVED_PARAMS
+
 Row = tuple[int, int, str, str]
 
 ROWS: tuple[Row, ...] = (
@@ -18,6 +20,7 @@ ROWS: tuple[Row, ...] = (
     (5009, 5009, "tool radius", "Radius of the current tool."),
     (5010, 5010, "tool Z offset", "Length offset of the current tool."),
     (5011, 5011, "new tool", "During M6 / change_tool: the tool asked for."),
+    (5012, 5012, "tool X offset", "X offset of the current tool (lathe), with its X wear."),
     (5013, 5013, "G43 Z offset", "The length offset applied by G43."),
     (5014, 5014, "tool change scratch", "Kept in cnc.ini; used by the stock macros."),
     (5015, 5015, "tool change succeeded", "change_tool sets it to 1 when the change worked."),
@@ -26,6 +29,7 @@ ROWS: tuple[Row, ...] = (
     (5061, 5066, "probe position {axis}, work", "Where the last G38.2 tripped, work coordinates."),
     (5067, 5067, "probe tripped", "1 if the last G38.2 touched, 0 if it reached its target without contact."),
     (5068, 5068, "probe input", "The live state of the probe input."),
+    (5069, 5069, "handwheel counter", "The count of the handwheel encoder."),
     (5070, 5070, "spindle speed", "The spindle speed in revolutions per second (under G96 it follows X)."),
     (5071, 5076, "machine position {axis}", "Current position in machine coordinates."),
     (5081, 5086, "probe position {axis}, joints", "Where the last G38.2 tripped, joint coordinates."),
@@ -53,6 +57,9 @@ ROWS: tuple[Row, ...] = (
     (5220, 5220, "active coordinate system", "1..9: 1 = G54 ... 9 = G59.3."),
     *((5221 + 20 * k, 5226 + 20 * k, f"{name} offset {{axis}}", f"Work offset of coordinate system {k + 1}.")
       for k, name in enumerate(("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"))),
+    *((r.start, r.start, f"reserved (rotation coordinate system {k + 1})",
+       "The manual reserves it for a rotation coordinate system: a macro must not use it.")
+      for k, r in enumerate(RESERVED_PARAMS)),
     (5380, 5380, "simulation mode", "1 in simulation (ecnc sets it): guard probing with If [#5380 == 0]."),
     (5390, 5393, "persistent system variable", "Kept in cnc.ini."),
     (5397, 5397, "render mode", "1 while the controller renders the job for its preview."),

@@ -1,0 +1,202 @@
+"""Names for numbered variables, found where authors already write them.
+
+Sources, strongest first (``SOURCES``): an explicit annotation or sidecar entry
+(``convention.py``), the label a ``dlgmsg`` shows beside the field (``"pitch" 1554``), the comment
+on an assignment (``#1700 = 0 ;; Z1``), a header comment that lists numbers (``;; #2001 = cutting
+speed``, ``;[5012] actual tool X offset``, ``; #4507 sensor position X``), and the manual for system
+variables (``kinds.manual_name``).  Every candidate is kept with its file, line and sub, so the
+linter can see two subs name one number differently; the map shows the strongest.
+"""
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Iterator, Sequence
+
+from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.records import record
+from edingcnc_lang.machine.tables import FIRST_PARAM, LAST_PARAM
+from edingcnc_lang.varmap import convention
+from edingcnc_lang.varmap.kinds import manual_name
+
+ANNOTATION, DLGMSG, COMMENT, HEADER, MANUAL = "annotation", "dlgmsg", "comment", "header", "manual"
+SOURCES = (ANNOTATION, DLGMSG, COMMENT, HEADER, MANUAL)  # precedence: the first wins
+_RANK = {source: rank for rank, source in enumerate(SOURCES)}
+_LONGEST = 80  # a comment longer than this is prose, not a name
+_LONGEST_RANGE = 100  # ``; #5001-#5006 ...`` names each number of a range this long at most
+
+# A comment line that starts by naming a number: ``; #4507 text``, ``;; #1500 = 1 ;; Z1``,
+# ``;[5012] text``, ``; #5061-#5066 text``.
+_HEADER = re.compile(r"^\s*;+\s*(?:#(?P<a>\d{1,4})(?:\s*(?:-|\.\.)\s*#?(?P<b>\d{1,4}))?|\[(?P<c>\d{1,4})\])"
+                     r"(?![\d.\]])\s*(?P<rest>.*)$")
+_VALUE = re.compile(r"^=\s*[-+]?[\d.]+\s*;+\s*(?P<text>.*)$")  # ``= 12 ;; diameter A``
+_COMMENT = re.compile(r";+\s*(?P<semi>.*)$|\((?P<paren>[^)]*)\)\s*$")
+_LETTER = re.compile(r"[^\W\d_]")
+
+
+@record(frozen=True)
+class Candidate:
+    """One name a source gives ``#number``, and where."""
+
+    number: int
+    name: str
+    source: str  # one of SOURCES
+    path: str
+    line: int
+    col: int
+    sub: str | None  # the sub the name is written in (None: top level or the sidecar)
+    description: str = ""
+
+    @property
+    def rank(self) -> int:
+        return _RANK[self.source]
+
+
+SourceText = tuple[str, Sequence[str], Sequence[n.Stmt]]  # (path, lines, statements) of one file
+
+
+class Names:
+    """Every candidate name of every number in a set of files, and the problems of their annotations."""
+
+    def __init__(self, files: Iterable[SourceText], sidecars: Iterable[str] = ()) -> None:
+        self.candidates: dict[int, list[Candidate]] = {}
+        self.problems: list[convention.Problem] = []
+        for path in dict.fromkeys(sidecars):
+            self._explicit(convention.sidecar(path), None)
+        for path, lines, body in files:
+            self._explicit(convention.annotations(path, lines), _SubLines(body))
+            for candidate in _inferred(path, lines, body):
+                self.candidates.setdefault(candidate.number, []).append(candidate)
+        for found in self.candidates.values():
+            found.sort(key=lambda c: c.rank)  # stable: in file order within a source
+
+    def _explicit(self, found: Iterable[convention.Explicit | convention.Problem], subs: _SubLines | None) -> None:
+        for item in found:
+            if isinstance(item, convention.Problem):
+                self.problems.append(item)
+            elif (other := self._explicit_name(item.number)) is not None and other.name != item.name:
+                self.problems.append(convention.Problem(
+                    item.path, item.line, item.col,
+                    f"#{item.number} is already named {other.name} ({other.path}:{other.line})"))
+            else:
+                sub = subs.at(item.line) if subs is not None else None
+                self.candidates.setdefault(item.number, []).append(Candidate(
+                    item.number, item.name, ANNOTATION, item.path, item.line, item.col, sub, item.description))
+
+    def _explicit_name(self, number: int) -> Candidate | None:
+        return next((c for c in self.candidates.get(number, ()) if c.source == ANNOTATION), None)
+
+    def best(self, number: int) -> Candidate | None:
+        """The name shown for ``#number``: the strongest source's first, else the manual's."""
+        found = self.candidates.get(number)
+        if found:
+            return found[0]
+        title = manual_name(number)
+        return Candidate(number, title, MANUAL, "", 0, 0, None) if title else None
+
+    def name(self, number: int) -> str | None:
+        best = self.best(number)
+        return best.name if best is not None else None
+
+    def labelled(self) -> dict[int, str]:
+        """Every number some file names (not the manual's), with its name: for the debugger and tests."""
+        return {number: found[0].name for number, found in self.candidates.items() if found}
+
+
+class _SubLines:
+    """Which sub a line is in, from the subs' first and last lines."""
+
+    def __init__(self, body: Sequence[n.Stmt]) -> None:
+        self.ranges = [(s.span.line, s.end_span.line or s.span.line, s.name) for s in body if isinstance(s, n.Sub)]
+
+    def at(self, line: int) -> str | None:
+        for first, last, name in self.ranges:
+            if first <= line <= last:
+                return name
+        return None
+
+
+def statements(body: Sequence[n.Stmt], sub: str | None = None) -> Iterator[tuple[n.Stmt, str | None]]:
+    """Every statement with the name of its sub, nested ones included, in source order."""
+    for stmt in body:
+        yield stmt, sub
+        if isinstance(stmt, n.Sub):
+            yield from statements(stmt.body, stmt.name)
+        elif isinstance(stmt, n.If):
+            yield from statements(stmt.then, sub)
+            yield from statements(stmt.orelse, sub)
+        elif isinstance(stmt, n.While):
+            yield from statements(stmt.body, sub)
+
+
+def _inferred(path: str, lines: Sequence[str], body: Sequence[n.Stmt]) -> Iterator[Candidate]:
+    """The dlgmsg labels, assignment comments and header comments of one file."""
+    for stmt, sub in statements(body):
+        if isinstance(stmt, n.Dialog):
+            yield from _labels(path, stmt, sub)
+        elif isinstance(stmt, n.Block) and len(stmt.assigns) == 1:
+            found = _assignment_comment(path, stmt.assigns[0], lines, sub)
+            if found is not None:
+                yield found
+    subs = _SubLines(body)
+    for lineno, text in enumerate(lines, 1):
+        if ";" in text and ("#" in text or "[" in text):
+            yield from _header(path, lineno, text, subs)
+
+
+def _labels(path: str, dialog: n.Dialog, sub: str | None) -> Iterator[Candidate]:
+    """``dlgmsg "title" "label" 27 ...``: each label names the field after it."""
+    items = dialog.items
+    for label, field in zip(items[1:], items[2:]):
+        if isinstance(label, str) and isinstance(field, n.Number) and field.value.is_integer():
+            number = int(field.value)
+            if FIRST_PARAM <= number <= LAST_PARAM and _LETTER.search(label):
+                yield Candidate(number, label.strip(), DLGMSG, path, field.span.line, field.span.col, sub)
+
+
+def _assignment_comment(path: str, assign: n.Assign, lines: Sequence[str], sub: str | None) -> Candidate | None:
+    """``#1700 = 0 ;; Z1``: the comment names the number, unless the line updates it from itself
+    (``#5026 = [#5026 + 1] ; next`` says what the line does, not what the number is)."""
+    index = assign.target.index
+    if type(index) is not n.Number or not index.value.is_integer():
+        return None
+    number, line = int(index.value), assign.span.line
+    text = lines[line - 1] if 0 < line <= len(lines) else ""
+    match = _COMMENT.search(text)
+    if match is None or "noqa" in text.lower():
+        return None
+    code = text[:match.start()]
+    if re.search(rf"#\s*{number}(?!\d)", code[code.find("=") + 1:]):
+        return None
+    comment = _cleaned(match["semi"] if match["semi"] is not None else match["paren"])
+    if comment is None:
+        return None
+    return Candidate(number, comment, COMMENT, path, line, match.start() + 1, sub)
+
+
+def _header(path: str, lineno: int, text: str, subs: _SubLines) -> Iterator[Candidate]:
+    """A comment line that starts with a number (or a range of them) and says what it holds."""
+    match = _HEADER.match(text)
+    if match is None:
+        return
+    rest = match["rest"]
+    if rest.startswith("="):
+        value = _VALUE.match(rest)
+        rest = value["text"] if value else rest[1:]
+    name = _cleaned(rest)
+    if name is None:
+        return
+    first = int(match["a"] or match["c"])
+    last = int(match["b"]) if match["b"] else first
+    if not FIRST_PARAM <= first <= last <= LAST_PARAM or last - first >= _LONGEST_RANGE:
+        return
+    col = match.start("rest") + 1
+    for number in range(first, last + 1):
+        yield Candidate(number, name, HEADER, path, lineno, col, subs.at(lineno))
+
+
+def _cleaned(text: str) -> str | None:
+    """A comment as a name: separators trimmed; None when it is empty, code, or prose."""
+    text = text.strip().lstrip(";-:=").strip()
+    if not text or "#" in text or len(text) > _LONGEST or not _LETTER.search(text):
+        return None
+    return text
