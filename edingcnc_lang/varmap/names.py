@@ -26,7 +26,7 @@ _LONGEST_RANGE = 100  # ``; #5001-#5006 ...`` names each number of a range this 
 
 # A comment line that starts by naming a number: ``; #4507 text``, ``;; #1500 = 1 ;; Z1``,
 # ``;[5012] text``, ``; #5061-#5066 text``.
-_HEADER = re.compile(r"^\s*;+\s*(?:#(?P<a>\d{1,4})(?:\s*(?:-|\.\.)\s*#?(?P<b>\d{1,4}))?|\[(?P<c>\d{1,4})\])"
+_HEADER = re.compile(r"^\s*;+\s*(?:#(?P<a>\d{1,4})(?:\s*-\s*#(?P<b>\d{1,4})|\s*\.\.\s*#?(?P<d>\d{1,4}))?|\[(?P<c>\d{1,4})\])"
                      r"(?![\d.\]])\s*(?P<rest>.*)$")
 _VALUE = re.compile(r"^=\s*[-+]?[\d.]+\s*;+\s*(?P<text>.*)$")  # ``= 12 ;; diameter A``
 _COMMENT = re.compile(r";+\s*(?P<semi>.*)$|\((?P<paren>[^)]*)\)\s*$")
@@ -186,7 +186,7 @@ def _header(path: str, lineno: int, text: str, subs: _SubLines) -> Iterator[Cand
     if name is None:
         return
     first = int(match["a"] or match["c"])
-    last = int(match["b"]) if match["b"] else first
+    last = int(match["b"] or match["d"] or first)
     if not FIRST_PARAM <= first <= last <= LAST_PARAM or last - first >= _LONGEST_RANGE:
         return
     col = match.start("rest") + 1
