@@ -105,11 +105,6 @@ def sidecar_of(source: str) -> str:
 
 def sidecar(path: str) -> list[Explicit | Problem]:
     """The names of a ``variables.toml`` (nothing if there is none)."""
-    if sys.version_info >= (3, 11):  # imported here: only a folder with a sidecar pays for it
-        import tomllib
-    else:  # Python 3.10: the same parser, as a package (a dependency there)
-        import tomli as tomllib
-
     try:
         with open(path, encoding="utf-8") as handle:
             text = handle.read()
@@ -117,6 +112,11 @@ def sidecar(path: str) -> list[Explicit | Problem]:
         return []
     except (OSError, UnicodeDecodeError) as err:
         return [Problem(path, 0, 0, f"cannot read: {getattr(err, 'strerror', None) or err}")]
+    if sys.version_info >= (3, 11):  # imported here: only a folder with a sidecar pays for it
+        import tomllib
+    else:  # Python 3.10: the same parser, as a package (a dependency there)
+        import tomli as tomllib
+
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
