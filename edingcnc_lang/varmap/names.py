@@ -200,3 +200,19 @@ def _cleaned(text: str) -> str | None:
     if not text or "#" in text or len(text) > _LONGEST or not _LETTER.search(text):
         return None
     return text
+
+
+def names_of_paths(paths: Iterable[str]) -> Names:
+    """The names in files read from disk, with the sidecars beside them: what the debugger and
+    ``ecnc test`` show beside numbers.  A file that cannot be read names nothing."""
+    from edingcnc_lang.syntax.parser import StatementReader
+    from edingcnc_lang.syntax.source import iter_file_lines
+
+    files: list[SourceText] = []
+    for path in dict.fromkeys(paths):
+        try:
+            lines = list(iter_file_lines(path))
+        except (OSError, UnicodeError):
+            continue
+        files.append((path, lines, tuple(StatementReader(lines, path, mode="tree", tolerant=True))))
+    return Names(files, (convention.sidecar_of(path) for path, _lines, _body in files))
