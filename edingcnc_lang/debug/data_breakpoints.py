@@ -18,6 +18,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.machine.state import format_value
 from edingcnc_lang.machine.tables import FIRST_PARAM, LAST_PARAM
 from edingcnc_lang.debug.launch import Launch
+from edingcnc_lang.varmap.names import label
 
 FIRST_ID = 1_000_000  # data breakpoint ids, apart from the line and function breakpoints' (counted from 1)
 _NUMBER = re.compile(r"^\s*#\s*(\d+)\b")
@@ -34,12 +35,6 @@ def launch_names(launch: Launch) -> dict[int, str]:
     except EcncError:  # the launch reports it (known_subs)
         return {}
     return names_of_paths(paths).labelled()
-
-
-def shown_name(index: int, names: Mapping[int, str]) -> str:
-    """``#1552 thread_major_diameter``, or ``#1552`` when nothing names it."""
-    name = names.get(index)
-    return f"#{index} {name}" if name else f"#{index}"
 
 
 def number_of(text: str, names: Mapping[int, str]) -> int | None:
@@ -65,7 +60,7 @@ class DataBreakpoints:
         index = number_of(text, names)
         if index is None:
             return {"dataId": None, "description": f"{text.strip()!r} is not a parameter (#1..#5999)"}
-        return {"dataId": str(index), "description": f"when {shown_name(index, names)} is written",
+        return {"dataId": str(index), "description": f"when {label(index, names)} is written",
                 "accessTypes": ["write"], "canPersist": True}
 
     def set(self, specs: list[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -92,7 +87,7 @@ class DataBreakpoints:
 
     def stopped_at(self, index: int, value: float, where: tuple[str, int], names: Mapping[int, str]) -> dict[str, Any]:
         """The ``stopped`` event's details for a hit: the breakpoint, and what was written where."""
-        text = f"{shown_name(index, names)} = {format_value(value)} (written at {os.path.basename(where[0])}:{where[1]})"
+        text = f"{label(index, names)} = {format_value(value)} (written at {os.path.basename(where[0])}:{where[1]})"
         return {"hitBreakpointIds": [self.watched[index]], "description": text, "text": text}
 
     def take(self) -> int | None:

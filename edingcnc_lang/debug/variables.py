@@ -16,7 +16,7 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.machine.state import format_value
 from edingcnc_lang.knowledge import variable
-from edingcnc_lang.debug.data_breakpoints import shown_name
+from edingcnc_lang.varmap.names import label
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.state import MachineState
@@ -70,7 +70,7 @@ def parameter(run: Run, index: int, writers: Writers, names: Mapping[int, str] |
     if index in writers:
         path, line = writers[index]
         what.append(f"written at {os.path.basename(path)}:{line}" if line else f"set in {path}")
-    return {"name": shown_name(index, names or {}), "value": format_value(run.interpreter.params.read(index)),
+    return {"name": label(index, names or {}), "value": format_value(run.interpreter.params.read(index)),
             "type": " · ".join(what), "evaluateName": f"#{index}", "variablesReference": 0}
 
 

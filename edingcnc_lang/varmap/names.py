@@ -10,7 +10,7 @@ linter can see two subs name one number differently; the map shows the strongest
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.records import record
@@ -202,17 +202,24 @@ def _cleaned(text: str) -> str | None:
     return text
 
 
-def names_of_paths(paths: Iterable[str]) -> Names:
-    """The names in files read from disk, with the sidecars beside them: what the debugger and
-    ``ecnc test`` show beside numbers.  A file that cannot be read names nothing."""
+def names_of_paths(paths: Iterable[str], texts: Mapping[str, str] | None = None) -> Names:
+    """The names in files read from disk (and in ``texts``: name -> text, a job given as text), with
+    the sidecars beside the files: what the debugger and ``ecnc test`` show beside numbers.  A file
+    that cannot be read names nothing."""
     from edingcnc_lang.syntax.parser import StatementReader
-    from edingcnc_lang.syntax.source import iter_file_lines
+    from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
 
-    files: list[SourceText] = []
+    sources: list[tuple[str, list[str]]] = [(name, list(iter_text_lines(text))) for name, text in (texts or {}).items()]
     for path in dict.fromkeys(paths):
         try:
-            lines = list(iter_file_lines(path))
+            sources.append((path, list(iter_file_lines(path))))
         except (OSError, UnicodeError):
             continue
-        files.append((path, lines, tuple(StatementReader(lines, path, mode="tree", tolerant=True))))
-    return Names(files, (convention.sidecar_of(path) for path, _lines, _body in files))
+    files = [(path, lines, tuple(StatementReader(lines, path, mode="tree", tolerant=True))) for path, lines in sources]
+    return Names(files, (convention.sidecar_of(path) for path in dict.fromkeys(paths)))
+
+
+def label(number: int, names: Mapping[int, str]) -> str:
+    """``#1552 thread_major_diameter``, or ``#1552`` when nothing names it (messages, the debugger)."""
+    name = names.get(number)
+    return f"#{number} {name}" if name else f"#{number}"

@@ -5,7 +5,8 @@ from pathlib import Path
 
 import pytest
 
-from edingcnc_lang.debug.data_breakpoints import DataBreakpoints, number_of, shown_name
+from edingcnc_lang.debug.data_breakpoints import DataBreakpoints, number_of
+from edingcnc_lang.varmap.names import label
 
 from .dap_client import DapClient
 
@@ -103,4 +104,4 @@ def test_the_watch_set() -> None:
     data.written(5011)
     assert data.take() == 5011 and data.take() is None
     assert number_of("#1552 thread_major_diameter", {}) == 1552 and number_of("Pitch", {1554: "pitch"}) == 1554
-    assert shown_name(5, {}) == "#5" and shown_name(5, {5: "five"}) == "#5 five"
+    assert label(5, {}) == "#5" and label(5, {5: "five"}) == "#5 five"
