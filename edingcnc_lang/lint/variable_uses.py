@@ -7,7 +7,7 @@ writes; every parameter read with a literal index counts as a read.  Computed in
 """
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from functools import cached_property
 
 from edingcnc_lang.syntax import nodes as n
@@ -81,11 +81,3 @@ def key_of(use: Use) -> SubKey:
     """The sub a use is in, as the project keys subs (top level: ``(path, "")``)."""
     return use.path, (use.sub or "").lower()
 
-
-def first_uses(uses: Iterable[Use]) -> Iterator[Use]:
-    """The first use in each sub, in source order."""
-    seen: set[SubKey] = set()
-    for use in sorted(uses, key=lambda u: (u.path, u.line, u.col)):
-        if key_of(use) not in seen:
-            seen.add(key_of(use))
-            yield use

@@ -310,8 +310,8 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
                                 new_text=e.text.replace("\n", eol)) for e in fix.edits]
             found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.QuickFix, diagnostics=[diagnostic],
                                       is_preferred=fix.preferred, edit=t.WorkspaceEdit(changes={uri: edits})))
-    start = ls.codec().position_from_client_units(lines, params.range.start) if params.range.start.line < len(lines) else None
-    for fix in variables.annotation_fixes(ls.model, path, lines, start.line, start.character) if start else ():
+    at = ls.codec().position_from_client_units(lines, params.range.start) if params.range.start.line < len(lines) else None
+    for fix in variables.annotation_fixes(ls.model, path, lines, at.line, at.character) if at else ():
         edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text.replace("\n", eol))
                  for e in fix.edits]
         found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.RefactorRewrite,

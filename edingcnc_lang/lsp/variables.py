@@ -7,7 +7,6 @@ columns are 0-based here, as in the other feature modules.
 """
 from __future__ import annotations
 
-import os
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -18,7 +17,7 @@ from edingcnc_lang.lsp.actions import Fix, Finding, _insert_line
 from edingcnc_lang.lsp.completion import Item
 from edingcnc_lang.lsp.lexer import token_at, tokens
 from edingcnc_lang.lsp.model import LanguageModel, Place, file_name
-from edingcnc_lang.varmap.convention import ANNOTATION, MARKER, NAME, annotation_line, identifier
+from edingcnc_lang.varmap.convention import ANNOTATION, MARKER, NAME, annotation_line, identifier, sidecar_of
 from edingcnc_lang.varmap.kinds import kind_of
 from edingcnc_lang.varmap.names import ANNOTATION as EXPLICIT, MANUAL, Candidate, Names
 from edingcnc_lang.varmap.model import Use
@@ -157,8 +156,7 @@ def definition(model: LanguageModel, path: str, line: int, col: int) -> Place | 
 def workspace_symbols(model: LanguageModel, query: str) -> list[tuple[str, Place]]:
     """Variables whose name contains ``query`` (ignoring case), in the workspace's files."""
     files = model.workspace()
-    names = Names(((f.path, f.lines, f.body) for f in files),
-                  dict.fromkeys(os.path.join(os.path.dirname(f.path), "variables.toml") for f in files))
+    names = Names(((f.path, f.lines, f.body) for f in files), (sidecar_of(f.path) for f in files))
     wanted = query.lower()
     found = []
     for number, candidates in sorted(names.candidates.items()):

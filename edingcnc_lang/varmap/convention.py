@@ -71,7 +71,7 @@ def identifier(text: str) -> str:
     return f"v_{found}" if found[:1].isdigit() else found or "unnamed"
 
 
-def _checked(number: int, name: str, path: str, line: int, col: int) -> str | None:
+def _checked(number: int, name: str) -> str | None:
     """What is wrong with an explicit name, if anything."""
     if not FIRST_PARAM <= number <= LAST_PARAM:
         return f"#{number} does not exist: parameters are numbered {FIRST_PARAM}..{LAST_PARAM}"
@@ -80,7 +80,7 @@ def _checked(number: int, name: str, path: str, line: int, col: int) -> str | No
     return None
 
 
-def annotations(path: str, lines: Sequence[str]) -> Iterator[Explicit | Problem]:
+def annotations_in(path: str, lines: Sequence[str]) -> Iterator[Explicit | Problem]:
     """The ``;@var`` annotations of a file's lines, and the malformed ones as problems."""
     for lineno, text in enumerate(lines, 1):
         if "@" not in text or not MARKER.match(text):
@@ -91,7 +91,7 @@ def annotations(path: str, lines: Sequence[str]) -> Iterator[Explicit | Problem]
                           'an annotation is ;@var #NUMBER name "optional description"')
             continue
         number, name, col = int(match["number"]), match["name"], match.start("name") + 1
-        wrong = _checked(number, name, path, lineno, col)
+        wrong = _checked(number, name)
         if wrong:
             yield Problem(path, lineno, col, wrong)
         else:
@@ -139,8 +139,8 @@ def _entry(path: str, lines: list[str], key: str, value: object) -> Explicit | P
     if not key.isdigit():
         return Problem(path, line, col, f"{key!r} is not a variable number")
     if isinstance(value, dict):
-        line, col = _name_line(lines, line, name)
-    wrong = _checked(int(key), name, path, line, col)
+        line, col = _name_line(lines, line)
+    wrong = _checked(int(key), name)
     return Problem(path, line, col, wrong) if wrong else Explicit(int(key), name, description, path, line, col)
 
 
@@ -154,7 +154,7 @@ def _line_of(lines: list[str], key: str) -> tuple[int, int]:
     return 1, 1
 
 
-def _name_line(lines: list[str], start: int, name: str) -> tuple[int, int]:
+def _name_line(lines: list[str], start: int) -> tuple[int, int]:
     """The ``name = "..."`` line of a table that starts on line ``start``: where rename edits."""
     for lineno in range(start, len(lines) + 1):
         text = lines[lineno - 1]

@@ -23,7 +23,6 @@ INVALID = "invalid"  # outside 1..5999
 KINDS = (ARGUMENT, USER, PERSISTENT_USER, SCRATCH, READ_ONLY, WRITABLE, TOOL_TABLE, RESERVED, INVALID)
 
 SCRATCH_PARAMS = range(5016, 5051)
-USER_KINDS = frozenset({USER, PERSISTENT_USER, SCRATCH})  # numbers a macro author gives a meaning
 
 
 def kind_of(number: int) -> str:

@@ -63,7 +63,7 @@ class Names:
         for path in dict.fromkeys(sidecars):
             self._explicit(convention.sidecar(path), None)
         for path, lines, body in files:
-            self._explicit(convention.annotations(path, lines), _SubLines(body))
+            self._explicit(convention.annotations_in(path, lines), _SubLines(body))
             for candidate in _inferred(path, lines, body):
                 self.candidates.setdefault(candidate.number, []).append(candidate)
         for found in self.candidates.values():

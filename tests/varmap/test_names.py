@@ -8,7 +8,7 @@ import pytest
 from edingcnc_lang.syntax.parser import parse_text
 from edingcnc_lang.varmap import convention
 from edingcnc_lang.varmap.kinds import (
-    ARGUMENT, PERSISTENT_USER, READ_ONLY, RESERVED, SCRATCH, TOOL_TABLE, USER, WRITABLE, kind_of, manual_name,
+    ARGUMENT, KINDS, PERSISTENT_USER, READ_ONLY, RESERVED, SCRATCH, TOOL_TABLE, USER, WRITABLE, kind_of, manual_name,
 )
 from edingcnc_lang.varmap.names import Names
 
@@ -113,7 +113,7 @@ def test_no_sidecar_is_no_names(tmp_path: Path) -> None:
     (5398, WRITABLE), (5401, TOOL_TABLE), (5999, TOOL_TABLE), (5230, RESERVED), (5231, RESERVED), (5500, RESERVED),
 ])
 def test_kinds(number: int, kind: str) -> None:
-    assert kind_of(number) == kind
+    assert kind_of(number) == kind and kind in KINDS
 
 
 def test_manual_names_only_for_system_numbers() -> None:
