@@ -60,8 +60,8 @@ def two_meanings(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
     uses: VariableUses | None = None
     together = {f.path for f in project.searched(file)}  # the file and its macro files: one program
     for number, found in names.candidates.items():
-        if kind_of(number) not in SHARED_KINDS or any(c.source == ANNOTATION for c in found):
-            continue
+        if len(found) < 2 or kind_of(number) not in SHARED_KINDS or found[0].source == ANNOTATION:
+            continue  # one name, a number of the controller's, or named on purpose (annotations sort first)
         if not any(c.path == file.path for c in found):
             continue
         for source in (DLGMSG, COMMENT):
@@ -100,10 +100,10 @@ def writes_never_run(file: SourceFile, project: Project) -> Iterator[Diagnostic]
     """A volatile variable read here whose every write is in a job's sub that nothing calls."""
     facts = project.facts(file)
     candidates = {i for i in facts.read_indices if i is not None and i in VOLATILE_PARAMS}
-    if not candidates:
+    dead = _dead_subs(project) if candidates else frozenset()
+    if not dead:  # most files: every sub may run
         return
     uses = uses_of(project)
-    dead = _dead_subs(project)
     seen: set[int] = set()
     for param, index, scope in facts.reads:
         if index not in candidates or index in seen:

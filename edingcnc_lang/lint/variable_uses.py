@@ -29,29 +29,36 @@ class VariableUses:
     def __init__(self, project: Project, files: Iterable[SourceFile] | None = None) -> None:
         self.project = project
         self.files = tuple(project.files if files is None else files)
-        self.writers: Uses = {}
-        self.readers: Uses = {}
-        for file in self.files:
-            self._collect(file)
 
-    def _collect(self, file: SourceFile) -> None:
-        facts = self.project.facts(file)
-        for param, index, scope in facts.targets:
-            if index is not None:
-                self.writers.setdefault(index, []).append(_use(param.span, scope))
-        for param, index, scope in facts.reads:
-            if index is not None:
-                self.readers.setdefault(index, []).append(_use(param.span, scope))
-        for dialog, scope in facts.dialogs:
-            for index, node in dialog_fields(dialog):
-                self.writers.setdefault(index, []).append(_use(node.span, scope))
-        commands = {id(c) for c in facts.commands}
-        if commands:
-            for stmt, scope in facts.walked:
+    @cached_property
+    def writers(self) -> Uses:
+        """Every write by number: assignments, dlgmsg fields, commands that store a result."""
+        found: Uses = {}
+        for file in self.files:
+            facts = self.project.facts(file)
+            for param, index, scope in facts.targets:
+                if index is not None:
+                    found.setdefault(index, []).append(_use(param.span, scope))
+            for dialog, scope in facts.dialogs:
+                for index, node in dialog_fields(dialog):
+                    found.setdefault(index, []).append(_use(node.span, scope))
+            commands = {id(c) for c in facts.commands}
+            for stmt, scope in facts.walked if commands else ():
                 if id(stmt) in commands:
                     assert isinstance(stmt, n.Command)
                     for index in command_writes(stmt):
-                        self.writers.setdefault(index, []).append(_use(stmt.span, scope))
+                        found.setdefault(index, []).append(_use(stmt.span, scope))
+        return found
+
+    @cached_property
+    def readers(self) -> Uses:
+        """Every read of a number known without running."""
+        found: Uses = {}
+        for file in self.files:
+            for param, index, scope in self.project.facts(file).reads:
+                if index is not None:
+                    found.setdefault(index, []).append(_use(param.span, scope))
+        return found
 
     @cached_property
     def reach(self) -> dict[SubKey, frozenset[SubKey]]:

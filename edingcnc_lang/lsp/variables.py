@@ -19,7 +19,7 @@ from edingcnc_lang.lsp.lexer import token_at, tokens
 from edingcnc_lang.lsp.model import LanguageModel, Place, file_name
 from edingcnc_lang.varmap.convention import ANNOTATION, MARKER, NAME, annotation_line, identifier, sidecar_of
 from edingcnc_lang.varmap.kinds import kind_of
-from edingcnc_lang.varmap.names import ANNOTATION as EXPLICIT, MANUAL, Candidate, Names
+from edingcnc_lang.varmap.names import ANNOTATION as EXPLICIT, MANUAL, Candidate, Names, source_of
 from edingcnc_lang.varmap.model import Use
 
 MAX_WRITERS_SHOWN = 8
@@ -156,7 +156,7 @@ def definition(model: LanguageModel, path: str, line: int, col: int) -> Place | 
 def workspace_symbols(model: LanguageModel, query: str) -> list[tuple[str, Place]]:
     """Variables whose name contains ``query`` (ignoring case), in the workspace's files."""
     files = model.workspace()
-    names = Names(((f.path, f.lines, f.body) for f in files), (sidecar_of(f.path) for f in files))
+    names = Names((source_of(f.path, f.lines, f.body) for f in files), (sidecar_of(f.path) for f in files))
     wanted = query.lower()
     found = []
     for number, candidates in sorted(names.candidates.items()):

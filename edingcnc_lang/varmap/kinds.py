@@ -6,6 +6,8 @@ module only names the kinds, so the map, the linter and the editor agree on them
 """
 from __future__ import annotations
 
+from functools import lru_cache
+
 from edingcnc_lang.knowledge import PERSISTENT, variable
 from edingcnc_lang.machine.tables import (
     ARG_PARAMS, FIRST_PARAM, LAST_PARAM, RESERVED_PARAMS, TOOL_LENGTH, VOLATILE_PARAMS, is_read_only,
@@ -25,6 +27,7 @@ KINDS = (ARGUMENT, USER, PERSISTENT_USER, SCRATCH, READ_ONLY, WRITABLE, TOOL_TAB
 SCRATCH_PARAMS = range(5016, 5051)
 
 
+@lru_cache(maxsize=None)  # a few thousand numbers at most; asked for again and again
 def kind_of(number: int) -> str:
     """The kind of ``#number`` (one of ``KINDS``)."""
     if not FIRST_PARAM <= number <= LAST_PARAM:

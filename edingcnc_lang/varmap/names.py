@@ -10,6 +10,7 @@ linter can see two subs name one number differently; the map shows the strongest
 from __future__ import annotations
 
 import re
+from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 from edingcnc_lang.syntax import nodes as n
@@ -31,6 +32,9 @@ _HEADER = re.compile(r"^\s*;+\s*(?:#(?P<a>\d{1,4})(?:\s*-\s*#(?P<b>\d{1,4})|\s*\
 _VALUE = re.compile(r"^=\s*[-+]?[\d.]+\s*;+\s*(?P<text>.*)$")  # ``= 12 ;; diameter A``
 _COMMENT = re.compile(r";+\s*(?P<semi>.*)$|\((?P<paren>[^)]*)\)\s*$")
 _LETTER = re.compile(r"[^\W\d_]")
+_NUMBERS = re.compile(r"#\s*(\d+)")  # the numbers an assignment's value reads
+_ASSIGNMENT = re.compile(r"\s*(?:/\s*)?(?:N\d+\s+)?#(\d+)\s*=(?!=)", re.IGNORECASE)  # a line that starts by assigning a number
+_TARGETS = re.compile(r"#\s*\[?\s*[\d#]+\s*\]?\s*=(?!=)")  # every assignment on a line
 
 
 @record(frozen=True)
@@ -51,20 +55,40 @@ class Candidate:
         return _RANK[self.source]
 
 
-SourceText = tuple[str, Sequence[str], Sequence[n.Stmt]]  # (path, lines, statements) of one file
+@record(frozen=True, eq=False)
+class Source:
+    """What one file's names are read from: its lines, its dialogs with the sub each is in, and its
+    subs' lines.  ``source_of`` walks a syntax tree for them; the linter hands over the dialogs its
+    own walk already found (``lint.project``)."""
+
+    path: str
+    lines: Sequence[str]
+    dialogs: Sequence[tuple[n.Dialog, str | None]]
+    subs: Sequence[tuple[int, int, str]]  # (first line, last line, name) of each Sub, in line order
+
+
+def source_of(path: str, lines: Sequence[str], body: Sequence[n.Stmt]) -> Source:
+    """The dialogs and subs of a syntax tree."""
+    dialogs = [(stmt, sub) for stmt, sub in statements(body) if isinstance(stmt, n.Dialog)]
+    return Source(path, lines, dialogs, sub_lines(body))
+
+
+def sub_lines(body: Sequence[n.Stmt]) -> list[tuple[int, int, str]]:
+    """(first line, last line, name) of each Sub of a file."""
+    return [(s.span.line, s.end_span.line or s.span.line, s.name) for s in body if isinstance(s, n.Sub)]
 
 
 class Names:
     """Every candidate name of every number in a set of files, and the problems of their annotations."""
 
-    def __init__(self, files: Iterable[SourceText], sidecars: Iterable[str] = ()) -> None:
+    def __init__(self, files: Iterable[Source], sidecars: Iterable[str] = ()) -> None:
         self.candidates: dict[int, list[Candidate]] = {}
         self.problems: list[convention.Problem] = []
         for path in dict.fromkeys(sidecars):
             self._explicit(convention.sidecar(path), None)
-        for path, lines, body in files:
-            self._explicit(convention.annotations_in(path, lines), _SubLines(body))
-            for candidate in _inferred(path, lines, body):
+        for source in files:
+            self._explicit(convention.annotations_in(source.path, source.lines), _SubLines(source.subs))
+            for candidate in _inferred(source):
                 self.candidates.setdefault(candidate.number, []).append(candidate)
         for found in self.candidates.values():
             found.sort(key=lambda c: c.rank)  # stable: in file order within a source
@@ -105,13 +129,14 @@ class Names:
 class _SubLines:
     """Which sub a line is in, from the subs' first and last lines."""
 
-    def __init__(self, body: Sequence[n.Stmt]) -> None:
-        self.ranges = [(s.span.line, s.end_span.line or s.span.line, s.name) for s in body if isinstance(s, n.Sub)]
+    def __init__(self, ranges: Sequence[tuple[int, int, str]]) -> None:
+        self.ranges = ranges
+        self.firsts = [first for first, _last, _name in ranges]
 
     def at(self, line: int) -> str | None:
-        for first, last, name in self.ranges:
-            if first <= line <= last:
-                return name
+        i = bisect_right(self.firsts, line) - 1
+        if i >= 0 and line <= self.ranges[i][1]:
+            return self.ranges[i][2]
         return None
 
 
@@ -128,19 +153,20 @@ def statements(body: Sequence[n.Stmt], sub: str | None = None) -> Iterator[tuple
             yield from statements(stmt.body, sub)
 
 
-def _inferred(path: str, lines: Sequence[str], body: Sequence[n.Stmt]) -> Iterator[Candidate]:
+def _inferred(source: Source) -> Iterator[Candidate]:
     """The dlgmsg labels, assignment comments and header comments of one file."""
-    for stmt, sub in statements(body):
-        if isinstance(stmt, n.Dialog):
-            yield from _labels(path, stmt, sub)
-        elif isinstance(stmt, n.Block) and len(stmt.assigns) == 1:
-            found = _assignment_comment(path, stmt.assigns[0], lines, sub)
-            if found is not None:
-                yield found
-    subs = _SubLines(body)
+    path, lines = source.path, source.lines
+    for dialog, sub in source.dialogs:
+        yield from _labels(path, dialog, sub)
+    subs = _SubLines(source.subs)
     for lineno, text in enumerate(lines, 1):
-        if ";" in text and ("#" in text or "[" in text):
-            yield from _header(path, lineno, text, subs)
+        if ";" in text or "(" in text:
+            if "=" in text and _ASSIGNMENT.match(text):
+                found = _assignment_comment(path, lineno, text, subs)
+                if found is not None:
+                    yield found
+            elif "#" in text or "[" in text:
+                yield from _header(path, lineno, text, subs)
 
 
 def _labels(path: str, dialog: n.Dialog, sub: str | None) -> Iterator[Candidate]:
@@ -150,27 +176,26 @@ def _labels(path: str, dialog: n.Dialog, sub: str | None) -> Iterator[Candidate]
         if isinstance(label, str) and isinstance(field, n.Number) and field.value.is_integer():
             number = int(field.value)
             if FIRST_PARAM <= number <= LAST_PARAM and _LETTER.search(label):
-                yield Candidate(number, label.strip(), DLGMSG, path, field.span.line, field.span.col, sub)
+                span = field.span
+                yield Candidate(number, label.strip(), DLGMSG, path, span.line, span.col, sub)
 
 
-def _assignment_comment(path: str, assign: n.Assign, lines: Sequence[str], sub: str | None) -> Candidate | None:
-    """``#1700 = 0 ;; Z1``: the comment names the number, unless the line updates it from itself
-    (``#5026 = [#5026 + 1] ; next`` says what the line does, not what the number is)."""
-    index = assign.target.index
-    if type(index) is not n.Number or not index.value.is_integer():
-        return None
-    number, line = int(index.value), assign.span.line
-    text = lines[line - 1] if 0 < line <= len(lines) else ""
+def _assignment_comment(path: str, line: int, text: str, subs: _SubLines) -> Candidate | None:
+    """``#1700 = 0 ;; Z1``: on a line that assigns one number, the comment names it, unless the line
+    updates it from itself (``#5026 = [#5026 + 1] ; next`` says what the line does)."""
     match = _COMMENT.search(text)
     if match is None or "noqa" in text.lower():
         return None
     code = text[:match.start()]
-    if re.search(rf"#\s*{number}(?!\d)", code[code.find("=") + 1:]):
+    if len(_TARGETS.findall(code)) != 1:
+        return None
+    number = int(_ASSIGNMENT.match(text)[1])  # type: ignore[index]
+    if not FIRST_PARAM <= number <= LAST_PARAM or any(int(found) == number for found in _NUMBERS.findall(code, code.find("=") + 1)):
         return None
     comment = _cleaned(match["semi"] if match["semi"] is not None else match["paren"])
     if comment is None:
         return None
-    return Candidate(number, comment, COMMENT, path, line, match.start() + 1, sub)
+    return Candidate(number, comment, COMMENT, path, line, match.start() + 1, subs.at(line))
 
 
 def _header(path: str, lineno: int, text: str, subs: _SubLines) -> Iterator[Candidate]:
@@ -215,7 +240,8 @@ def names_of_paths(paths: Iterable[str], texts: Mapping[str, str] | None = None)
             sources.append((path, list(iter_file_lines(path))))
         except (OSError, UnicodeError):
             continue
-    files = [(path, lines, tuple(StatementReader(lines, path, mode="tree", tolerant=True))) for path, lines in sources]
+    files = [source_of(path, lines, tuple(StatementReader(lines, path, mode="tree", tolerant=True)))
+             for path, lines in sources]
     return Names(files, (convention.sidecar_of(path) for path in dict.fromkeys(paths)))
 
 

@@ -10,11 +10,11 @@ from edingcnc_lang.varmap import convention
 from edingcnc_lang.varmap.kinds import (
     ARGUMENT, KINDS, PERSISTENT_USER, READ_ONLY, RESERVED, SCRATCH, TOOL_TABLE, USER, WRITABLE, kind_of, manual_name,
 )
-from edingcnc_lang.varmap.names import Names
+from edingcnc_lang.varmap.names import Names, source_of
 
 
 def names_of(text: str, sidecars: tuple[str, ...] = ()) -> Names:
-    return Names([("m.cnc", text.splitlines(), parse_text(text, "m.cnc").body)], sidecars)
+    return Names([source_of("m.cnc", text.splitlines(), parse_text(text, "m.cnc").body)], sidecars)
 
 
 def test_precedence_annotation_dlgmsg_comment_header_manual() -> None:
