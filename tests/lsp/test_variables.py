@@ -131,3 +131,31 @@ def test_quick_fix_names_a_number_with_an_annotation(client: LspClient, uri: str
     assert refactor == ["Name #1553: add ;@var #1553 minor_diameter"]
     assert [a for a in _actions(client, uri, 4, 15, []) if a["kind"] == "refactor.rewrite"] == []  # named already
     client.change(uri, MACRO, 5)
+
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.mark.parametrize("name", ["stdlib/macro.cnc", "examples/variables/macro.cnc", "examples/lathe/user_macro.cnc"])
+def test_every_token_of_a_real_file(name: str) -> None:
+    """Each variable feature at every token, in process: no exceptions, a hint for every named #n."""
+    from edingcnc_lang.lsp import variables
+    from edingcnc_lang.lsp.lexer import tokens
+    from edingcnc_lang.lsp.model import LanguageModel
+
+    model = LanguageModel()
+    path = str(ROOT / name)
+    file = model.source(path)
+    assert file is not None
+    hinted = {(h.line, h.col) for h in variables.inlay_hints(model, path, 0, len(file.lines))}
+    for number, line in enumerate(file.lines):
+        for token in tokens(line):
+            text = variables.hover_text(model, path, number, token.start)
+            variables.definition(model, path, number, token.start)
+            variables.complete_names(model, path, number, token.end)
+            variables.annotation_fixes(model, path, file.lines, number, token.start)
+            if token.kind == "param":
+                assert text and "Kind:" in text, (number + 1, token)
+                if (number, token.end) not in hinted:
+                    assert "(no name" in text or "**" not in text.split("\n")[0], (number + 1, token)
+    assert variables.workspace_symbols(model, "") == []  # nothing open, no workspace folder
