@@ -38,11 +38,6 @@ class Variable:
         key = sub.lower()
         return any(use.sub is not None and use.sub.lower() == key for use in (*self.writers, *self.readers))
 
-    @property
-    def label(self) -> str:
-        """``#1552 thread_major_diameter`` (or just ``#1552``), as messages show it."""
-        return f"#{self.number} {self.name}" if self.name else f"#{self.number}"
-
 
 @record(frozen=True)
 class VarMap:
@@ -51,12 +46,6 @@ class VarMap:
     variables: tuple[Variable, ...]
     findings: tuple[Diagnostic, ...] = ()
     problems: tuple[Problem, ...] = ()  # malformed annotations and sidecars
-
-    def get(self, number: int) -> Variable | None:
-        for variable in self.variables:
-            if variable.number == number:
-                return variable
-        return None
 
     def unnamed(self) -> VarMap:
         return VarMap(tuple(v for v in self.variables if v.name is None), self.findings, self.problems)

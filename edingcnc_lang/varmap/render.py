@@ -46,6 +46,7 @@ def as_json(varmap: VarMap) -> str:
     return json.dumps({
         "variables": [{"number": v.number, "name": v.name, "source": v.source, "kind": v.kind,
                        "description": v.description,
+                       "named_at": {"file": v.named_at.path, "line": v.named_at.line} if v.named_at else None,
                        "writers": [_use(u) for u in v.writers], "readers": [_use(u) for u in v.readers]}
                       for v in varmap.variables],
         "findings": [{"path": d.path, "line": d.line, "col": d.col, "code": d.code,

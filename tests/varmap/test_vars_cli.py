@@ -32,7 +32,9 @@ def test_json_shape() -> None:
         "name": "thread_major_diameter", "source": "annotation", "kind": "user"}
     assert diameter["writers"] == [{"file": str(EXAMPLE), "line": 12, "sub": "user_1"}]
     assert {r["line"] for r in diameter["readers"]} == {16, 17, 21, 23}
+    assert diameter["named_at"] == {"file": str(EXAMPLE), "line": 8}
     assert by_number[1554]["name"] == "thread_pitch"  # the sidecar wins over the dlgmsg label "pitch"
+    assert by_number[1554]["named_at"]["file"].endswith("variables.toml") and by_number[5071]["named_at"] is None
     assert by_number[4200]["kind"] == "persistent" and by_number[4200]["writers"] == []
     assert (by_number[5071]["source"], by_number[5071]["kind"]) == ("manual", "system read-only")
     assert [v["number"] for v in doc["variables"]] == sorted(by_number)
