@@ -106,3 +106,13 @@ def test_a_long_macro_maps_in_under_a_second(tmp_path: Path) -> None:
     elapsed = time.perf_counter() - start
     assert len(varmap.variables) == 402  # 400 of the subs, #5071, #5398
     assert elapsed < 1.0 * 3  # 0.3 s on the reference machine; slack for a loaded CI runner
+
+
+def test_lint_reports_a_bad_sidecar_once_at_its_line(tmp_path: Path) -> None:
+    from edingcnc_lang.lint import lint_paths
+
+    (tmp_path / "macro.cnc").write_text(";@unit mm\n", encoding="utf-8")
+    (tmp_path / "user_macro.cnc").write_text(";@unit mm\n", encoding="utf-8")
+    (tmp_path / "variables.toml").write_text('[27]\nname = "ok"\n\n[28]\nname = "not ok"\n', encoding="utf-8")
+    found = [(Path(d.path).name, d.line, d.col, d.code) for d in lint_paths([tmp_path])]
+    assert found == [("variables.toml", 5, 9, "V308")]
