@@ -72,7 +72,7 @@ CODES: dict[str, Code] = _table(
     ("V303", W, "#1..#26 read in an M-code sub after a call that may have overwritten them"),
     ("V304", W, "extra ']' after an If/While condition"),
     ("V305", W, "one number named for two different things by subs that do not run each other"),
-    ("V306", W, "variable read whose every write is in a sub that nothing calls"),
+    ("V306", W, "variable read where no write can have run (writes in an uncalled sub, or later in the job)"),
     ("V307", W, "a number from #5000 up that the manual reserves or gives no meaning"),
     ("V308", E, "malformed ;@var annotation or variables.toml entry"),
     ("D400", E, "dlgmsg with more than 15 fields"),

@@ -7,17 +7,18 @@ reads each number from ``variable_uses``; a write to a read-only number is V301 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from weakref import WeakKeyDictionary
 
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.machine.tables import VOLATILE_PARAMS
 from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point
-from edingcnc_lang.lint.project import Project, SubKey
+from edingcnc_lang.lint.project import Project, SubKey, command_writes, sub_key
 from edingcnc_lang.lint.registry import at_line, rule
 from edingcnc_lang.lint.variable_uses import VariableUses, key_of
-from edingcnc_lang.lint.walk import dialog_fields
+from edingcnc_lang.lint.walk import Scope, assigned, dialog_fields, literal_index
+from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.varmap.convention import sidecar_of
 from edingcnc_lang.varmap.kinds import RESERVED, SCRATCH, USER, kind_of
 from edingcnc_lang.varmap.names import ANNOTATION, COMMENT, DLGMSG, Candidate
@@ -97,12 +98,23 @@ def _short(path: str) -> str:
 
 @rule("V306")
 def writes_never_run(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    """A volatile variable read here whose every write is in a job's sub that nothing calls."""
+    """A volatile variable read where no write can have run: every write is in a job's sub that
+    nothing calls, or (a job's own numbers) every write comes after the read on every path."""
     facts = project.facts(file)
     candidates = {i for i in facts.read_indices if i is not None and i in VOLATILE_PARAMS}
-    dead = _dead_subs(project) if candidates else frozenset()
+    if not candidates:
+        return
+    yield from _dead_writes(file, project, candidates)
+    if not file.is_macro and any(i in facts.target_indices for i in candidates):  # read and written in a job
+        yield from _JobFlow(file, project, candidates).run()
+
+
+def _dead_writes(file: SourceFile, project: Project, candidates: set[int]) -> Iterator[Diagnostic]:
+    """Reads of numbers whose every write is in a sub that nothing calls."""
+    dead = _dead_subs(project)
     if not dead:  # most files: every sub may run
         return
+    facts = project.facts(file)
     uses = uses_of(project)
     seen: set[int] = set()
     for param, index, scope in facts.reads:
@@ -117,6 +129,86 @@ def writes_never_run(file: SourceFile, project: Project) -> Iterator[Diagnostic]
         subs = sorted({w.sub or "" for w in writers})
         yield at_line("V306", f"#{index} is read here but only written in {', '.join(subs)}, which nothing "
                       "calls: it never holds what those writes store", file, param.span.line, param.span.col)
+
+
+class _JobFlow:
+    """A job's top level in order, with the numbers some path may have written so far: a read of a
+    number only the job's top level writes, before any such write, sees 0 or an earlier run's value.
+
+    Conservative: a write on any path counts (an If's branches are joined), a loop's body counts as
+    written before it runs (its next round reads them), a call counts every number its sub (and the
+    subs it runs) may write.
+    """
+
+    def __init__(self, file: SourceFile, project: Project, candidates: set[int]) -> None:
+        self.file, self.project = file, project
+        uses = uses_of(project)
+        top = (file.path, "")
+        # the job's own numbers: read here, and written only by this job's top level
+        self.watched = {i for i in candidates
+                        if uses.writers.get(i) and all(key_of(w) == top for w in uses.writers[i])}
+        self.sub_writes: dict[SubKey, set[int]] = {}
+        for index, writers in uses.writers.items():
+            for writer in writers:
+                self.sub_writes.setdefault(key_of(writer), set()).add(index)
+        self.reach = uses.reach
+        self.found: list[Diagnostic] = []
+        self.reported: set[int] = set()
+
+    def run(self) -> list[Diagnostic]:
+        if self.watched:
+            self.flow(self.file.body, set())
+        return self.found
+
+    def flow(self, body: Sequence[n.Stmt], written: set[int]) -> None:
+        for stmt in body:
+            if isinstance(stmt, n.Sub):
+                continue
+            if isinstance(stmt, n.While):
+                written |= self.writes_in(stmt.body)
+            self.check(stmt, written)
+            if isinstance(stmt, n.If):
+                then, orelse = set(written), set(written)
+                self.flow(stmt.then, then)
+                self.flow(stmt.orelse, orelse)
+                written |= then | orelse
+            elif isinstance(stmt, n.While):
+                self.flow(stmt.body, written)
+            else:
+                written |= self.writes(stmt)
+
+    def check(self, stmt: n.Stmt, written: set[int]) -> None:
+        for param, index in self.project.reads(self.file, stmt):
+            if index in self.watched and index not in written and index not in self.reported:
+                self.reported.add(index)
+                first = min(w.line for w in uses_of(self.project).writers[index])
+                self.found.append(at_line(
+                    "V306", f"#{index} is read before this job writes it (first on line {first}): it holds 0 "
+                    "or what an earlier run left; assign it first", self.file, param.span.line, param.span.col))
+
+    def writes(self, stmt: n.Stmt) -> set[int]:
+        """What one statement (not its nested ones) may write, with the subs it runs."""
+        found = {i for i in map(literal_index, assigned(stmt)) if i is not None}
+        if isinstance(stmt, n.Dialog):
+            found |= {i for i, _node in dialog_fields(stmt)}
+        elif isinstance(stmt, n.Command):
+            found |= set(command_writes(stmt))
+        for callee, sub in self.project.callees(self.file, stmt, Scope()):
+            key = sub_key(callee, sub)
+            for reached in (key, *self.reach.get(key, ())):
+                found |= self.sub_writes.get(reached, set())
+        return found
+
+    def writes_in(self, body: Sequence[n.Stmt]) -> set[int]:
+        """What a block of statements may write, nested ones included."""
+        found: set[int] = set()
+        for stmt in body:
+            found |= self.writes(stmt)
+            if isinstance(stmt, n.If):
+                found |= self.writes_in(stmt.then) | self.writes_in(stmt.orelse)
+            elif isinstance(stmt, n.While):
+                found |= self.writes_in(stmt.body)
+        return found
 
 
 def _dead_subs(project: Project) -> frozenset[SubKey]:
