@@ -231,7 +231,8 @@ def _did_close(ls: EcncServer, params: t.DidCloseTextDocumentParams) -> None:
 @server.feature(t.TEXT_DOCUMENT_HOVER)
 def _hover(ls: EcncServer, params: t.HoverParams) -> t.Hover | None:
     where = ls.server_position(params.text_document.uri, params.position)
-    text = "\n\n---\n\n".join(filter(None, (variables.hover_text(ls.model, *where), hover.hover_text(ls.model, *where))))
+    parts = (variables.hover_text(ls.model, *where), hover.hover_text(ls.model, *where))
+    text = "\n\n---\n\n".join(filter(None, parts))
     return t.Hover(contents=_markdown(text)) if text else None
 
 
@@ -289,11 +290,13 @@ def _completion(ls: EcncServer, params: t.CompletionParams) -> t.CompletionList:
         items.append(t.CompletionItem(
             label=item.label, kind=_KINDS[item.kind], detail=item.detail, sort_text=f"{rank:05d}",
             documentation=_markdown(item.documentation) if item.documentation else None,
-            text_edit=t.TextEdit(range=ls.client_range(path, line, item.start, col), new_text=item.insert or item.label)))
+            text_edit=t.TextEdit(range=ls.client_range(path, line, item.start, col),
+                                 new_text=item.insert or item.label)))
     return t.CompletionList(is_incomplete=False, items=items)
 
 
-@server.feature(t.TEXT_DOCUMENT_CODE_ACTION, t.CodeActionOptions(code_action_kinds=[t.CodeActionKind.QuickFix, t.CodeActionKind.RefactorRewrite]))
+@server.feature(t.TEXT_DOCUMENT_CODE_ACTION,
+                t.CodeActionOptions(code_action_kinds=[t.CodeActionKind.QuickFix, t.CodeActionKind.RefactorRewrite]))
 def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeAction]:
     uri = params.text_document.uri
     path = ls.path(uri)
@@ -310,7 +313,8 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
                                 new_text=e.text.replace("\n", eol)) for e in fix.edits]
             found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.QuickFix, diagnostics=[diagnostic],
                                       is_preferred=fix.preferred, edit=t.WorkspaceEdit(changes={uri: edits})))
-    at = ls.codec().position_from_client_units(lines, params.range.start) if params.range.start.line < len(lines) else None
+    cursor = params.range.start
+    at = ls.codec().position_from_client_units(lines, cursor) if cursor.line < len(lines) else None
     for fix in variables.annotation_fixes(ls.model, path, lines, at.line, at.character) if at else ():
         edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text.replace("\n", eol))
                  for e in fix.edits]

@@ -178,7 +178,9 @@ def annotation_name_at(model: LanguageModel, path: str, line: int, col: int) -> 
 
 def check_new_name(name: str) -> str | None:
     """Why ``name`` cannot name a variable, or None."""
-    return None if NAME.match(name) else f"{name!r} is not a name: use letters, digits and _ (not starting with a digit)"
+    if NAME.match(name):
+        return None
+    return f"{name!r} is not a name: use letters, digits and _ (not starting with a digit)"
 
 
 def annotation_fixes(model: LanguageModel, path: str, lines: Sequence[str], line: int, col: int,

@@ -27,13 +27,15 @@ _LONGEST_RANGE = 100  # ``; #5001-#5006 ...`` names each number of a range this 
 
 # A comment line that starts by naming a number: ``; #4507 text``, ``;; #1500 = 1 ;; Z1``,
 # ``;[5012] text``, ``; #5061-#5066 text``.
-_HEADER = re.compile(r"^\s*;+\s*(?:#(?P<a>\d{1,4})(?:\s*-\s*#(?P<b>\d{1,4})|\s*\.\.\s*#?(?P<d>\d{1,4}))?|\[(?P<c>\d{1,4})\])"
+_HEADER = re.compile(r"^\s*;+\s*(?:#(?P<a>\d{1,4})(?:\s*-\s*#(?P<b>\d{1,4})|\s*\.\.\s*#?(?P<d>\d{1,4}))?"
+                     r"|\[(?P<c>\d{1,4})\])"
                      r"(?![\d.\]])\s*(?P<rest>.*)$")
 _VALUE = re.compile(r"^=\s*[-+]?[\d.]+\s*;+\s*(?P<text>.*)$")  # ``= 12 ;; diameter A``
 _COMMENT = re.compile(r";+\s*(?P<semi>.*)$|\((?P<paren>[^)]*)\)\s*$")
 _LETTER = re.compile(r"[^\W\d_]")
 _NUMBERS = re.compile(r"#\s*(\d+)")  # the numbers an assignment's value reads
-_ASSIGNMENT = re.compile(r"\s*(?:/\s*)?(?:N\d+\s+)?#(\d+)\s*=(?!=)", re.IGNORECASE)  # a line that starts by assigning a number
+# a line that starts by assigning a number
+_ASSIGNMENT = re.compile(r"\s*(?:/\s*)?(?:N\d+\s+)?#(\d+)\s*=(?!=)", re.IGNORECASE)
 _TARGETS = re.compile(r"#\s*\[?\s*[\d#]+\s*\]?\s*=(?!=)")  # every assignment on a line
 
 
@@ -190,7 +192,8 @@ def _assignment_comment(path: str, line: int, text: str, subs: _SubLines) -> Can
     if len(_TARGETS.findall(code)) != 1:
         return None
     number = int(_ASSIGNMENT.match(text)[1])  # type: ignore[index]
-    if not FIRST_PARAM <= number <= LAST_PARAM or any(int(found) == number for found in _NUMBERS.findall(code, code.find("=") + 1)):
+    reads = _NUMBERS.findall(code, code.find("=") + 1)
+    if not FIRST_PARAM <= number <= LAST_PARAM or any(int(found) == number for found in reads):
         return None
     comment = _cleaned(match["semi"] if match["semi"] is not None else match["paren"])
     if comment is None:
