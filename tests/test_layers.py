@@ -45,6 +45,8 @@ FORBIDDEN: dict[str, set[str]] = {
     "sim": {"cli", "lsp", "debug", "testing", "diff", "lint"},
     "debug": {"cli", "lsp", "testing", "diff", "sim", "lint", "plot"},
     "testing": {"cli", "lsp", "debug", "diff", "sim", "lint", "plot"},
+    # the variable map's names and kinds: read by the linter, the debugger and ecnc test, so below them all
+    "varmap": {"runner", "pipeline", "motion", "kinematics", *FRONT_ENDS},
 }
 
 

@@ -40,6 +40,7 @@ COMMANDS = {
     "sim": "sim_cmd:sim",
     "test": "test_cmd:test",
     "view": "view_cmd:view",
+    "vars": "vars_cmd:vars_command",
 }
 
 COMPLETE_VAR = "_ECNC_COMPLETE"

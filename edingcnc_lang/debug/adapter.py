@@ -23,6 +23,7 @@ from edingcnc_lang.debug.expressions import (
 from edingcnc_lang.debug.protocol import Channel, Message, ProtocolError, read_message
 from edingcnc_lang.debug.launch import Launch, LaunchError, launch_of
 from edingcnc_lang.debug.session import Session
+from edingcnc_lang.debug.data_breakpoints import launch_names
 from edingcnc_lang.debug.variables import PERSISTENT, SYSTEM, USER, parameter, scopes, variables
 
 CAPABILITIES = {
@@ -36,6 +37,7 @@ CAPABILITIES = {
     "supportsSetVariable": True,
     "supportsExceptionInfoRequest": True,
     "supportsTerminateRequest": True,
+    "supportsDataBreakpoints": True,
     "exceptionBreakpointFilters": [{"filter": "runError", "label": "Run errors", "default": True,
                                     "description": "Stop where the run fails (the error's text), before it ends"}],
 }
@@ -103,6 +105,7 @@ class Adapter:
             except EcncError as err:
                 raise RequestError(err.format()) from None
         self.session = Session(self.channel, launch)
+        self.session.names = launch_names(launch)
 
     def on_setBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         path = (args.get("source") or {}).get("path")
@@ -118,6 +121,13 @@ class Adapter:
         placed = self._session().breakpoints.set_functions(args.get("breakpoints", []), self.subs)
         return {"breakpoints": [bp.to_json(self.subs.get(sub_of(str(spec.get("name", ""))))) for bp, spec
                                 in zip(placed, args.get("breakpoints", []))]}
+
+    def on_dataBreakpointInfo(self, args: dict[str, Any]) -> dict[str, Any]:
+        session = self._session()
+        return session.data.info(str(args.get("name", "")), session.names)
+
+    def on_setDataBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
+        return {"breakpoints": self._session().data.set(list(args.get("breakpoints", [])))}
 
     def on_setExceptionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         self._session().stop_on_errors = "runError" in args.get("filters", [])
@@ -147,7 +157,8 @@ class Adapter:
     def on_variables(self, args: dict[str, Any]) -> dict[str, Any]:
         session = self._stopped()
         assert session.run is not None
-        return {"variables": variables(session.run, int(args.get("variablesReference", 0)), session.writers)}
+        return {"variables": variables(session.run, int(args.get("variablesReference", 0)), session.writers,
+                                       session.names)}
 
     def on_setVariable(self, args: dict[str, Any]) -> dict[str, Any]:
         session = self._stopped()
@@ -155,8 +166,8 @@ class Adapter:
             raise RequestError("only parameters (#n) can be set")
         name = str(args.get("name", ""))
         try:
-            index = int(name.lstrip("#"))
-        except ValueError:
+            index = int(name.lstrip("#").split()[0])  # "#1552 thread_major_diameter": the number
+        except (ValueError, IndexError):
             raise RequestError(f"{name!r} is not a parameter") from None
         return self._assign(session, index, str(args.get("value", "")))
 
@@ -167,7 +178,7 @@ class Adapter:
             session.edit(index, value)
         except (ExpressionError, EcncError) as err:
             raise RequestError(getattr(err, "message", None) or str(err)) from None
-        shown = parameter(session.run, index, session.writers)
+        shown = parameter(session.run, index, session.writers, session.names)
         return {"value": shown["value"], "type": shown["type"], "variablesReference": 0}
 
     def on_evaluate(self, args: dict[str, Any]) -> dict[str, Any]:

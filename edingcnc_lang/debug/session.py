@@ -22,6 +22,7 @@ from edingcnc_lang.machine.observe import Observer
 from edingcnc_lang.machine.state import CallFrame, MachineState
 from edingcnc_lang.runner import Run, RunOptions
 from edingcnc_lang.debug.breakpoints import Breakpoints, reached
+from edingcnc_lang.debug.data_breakpoints import DataBreakpoints
 from edingcnc_lang.debug.expressions import evaluate
 from edingcnc_lang.debug.history import History, Input, Replay, Rewind
 from edingcnc_lang.debug.launch import Launch
@@ -55,6 +56,8 @@ class Session(Observer):
         self.stopped = False
         self.frames: list[Frame] = []
         self.writers: dict[int, tuple[str, int]] = {}
+        self.names: dict[int, str] = {}  # the names the files give their numbers (data_breakpoints.launch_names)
+        self.data = DataBreakpoints()
         self.waiting: str | None = None  # "dialog" | "probe" while the machine asks the operator
         self.fields: list[int] = []  # the parameters the waiting dialog edits
         self.error: EcncError | None = None  # the run error the machine stopped at
@@ -174,7 +177,7 @@ class Session(Observer):
         run = Run(options)
         self.writers = {}
         interp = run.interpreter
-        run.interpreter.params.on_write = lambda index: self.writers.__setitem__(index, (interp.path, interp.line))
+        run.interpreter.params.on_write = lambda index: self._written(index, interp.path, interp.line)
         self.run = run
         self._trail, self._before, self._chunk, self._open_bulk = [], None, None, None
         self.error = None
@@ -182,6 +185,12 @@ class Session(Observer):
         result = run.execute_file(launch.program)
         if self._phase == LIVE:
             self.channel.output(f"the job ended ({result.ended_by}) after {result.moves:,} moves")
+
+    def _written(self, index: int, path: str, line: int) -> None:
+        """A parameter was written: where (the variables view), and a data breakpoint's hit (live runs only)."""
+        self.writers[index] = (path, line)
+        if self._phase == LIVE:
+            self.data.written(index)
 
     def _log_dir(self) -> Path:
         return self.launch.log_dir or self.launch.program.resolve().parent
@@ -309,6 +318,11 @@ class Session(Observer):
             self._function_stop = False
             self._stop(machine, "function breakpoint")
             return
+        written = self.data.take()
+        if written is not None:
+            self._stop(machine, "data breakpoint", self.data.stopped_at(
+                written, machine.params.read(written), self.writers.get(written, ("", 0)), self.names))
+            return
         lines = self.breakpoints.watched(machine.path)
         if lines:
             bp = lines.get(machine.line)
@@ -333,7 +347,7 @@ class Session(Observer):
         elif self._phase == REPLAY:
             seen = key == self._target_chunk
         else:
-            seen = (self._pause or self._terminate or self._mode is not None
+            seen = (self._pause or self._terminate or self._mode is not None or self.data.hit is not None
                     or self.breakpoints.any_between(run.path, first, last))
         self._open_bulk = None if seen else key
         if not seen:

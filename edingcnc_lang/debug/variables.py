@@ -8,6 +8,7 @@ last wrote it (``written at macro.cnc:67``).
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -15,6 +16,7 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.machine.state import format_value
 from edingcnc_lang.knowledge import variable
+from edingcnc_lang.varmap.names import label
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.state import MachineState
@@ -44,14 +46,14 @@ def scopes(run: Run) -> list[dict[str, Any]]:
     return found
 
 
-def variables(run: Run, ref: int, writers: Writers) -> list[dict[str, Any]]:
-    """The variables of scope ``ref``."""
+def variables(run: Run, ref: int, writers: Writers, names: Mapping[int, str] | None = None) -> list[dict[str, Any]]:
+    """The variables of scope ``ref``; ``names``: what the files call the numbers (shown beside them)."""
     for number, _name, numbers in SCOPES:
         if ref == number:
             params = run.interpreter.params
             shown = (i for i in numbers
                      if i in params.written or params.values[i] != 0.0 or (ref == SYSTEM and i in ALWAYS))
-            return [parameter(run, i, writers) for i in shown]
+            return [parameter(run, i, writers, names) for i in shown]
     if ref == KINEMATICS:
         return _kinematics(run, writers)
     if ref == MODAL:
@@ -61,14 +63,14 @@ def variables(run: Run, ref: int, writers: Writers) -> list[dict[str, Any]]:
     return []
 
 
-def parameter(run: Run, index: int, writers: Writers) -> dict[str, Any]:
+def parameter(run: Run, index: int, writers: Writers, names: Mapping[int, str] | None = None) -> dict[str, Any]:
     """``#index`` as a DAP Variable: its value, its meaning and where it was last written."""
     entry = variable(index)
     what = [entry.title] if entry is not None else []
     if index in writers:
         path, line = writers[index]
         what.append(f"written at {os.path.basename(path)}:{line}" if line else f"set in {path}")
-    return {"name": f"#{index}", "value": format_value(run.interpreter.params.read(index)),
+    return {"name": label(index, names or {}), "value": format_value(run.interpreter.params.read(index)),
             "type": " · ".join(what), "evaluateName": f"#{index}", "variablesReference": 0}
 
 

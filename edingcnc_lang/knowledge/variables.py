@@ -6,6 +6,8 @@ number of the tool table).  Which numbers are read-only comes from ``tables.py``
 """
 from __future__ import annotations
 
+from edingcnc_lang.machine.tables import RESERVED_PARAMS
+
 Row = tuple[int, int, str, str]
 
 ROWS: tuple[Row, ...] = (
@@ -28,6 +30,7 @@ ROWS: tuple[Row, ...] = (
     (5061, 5066, "probe position {axis}, work", "Where the last G38.2 tripped, work coordinates."),
     (5067, 5067, "probe tripped", "1 if the last G38.2 touched, 0 if it reached its target without contact."),
     (5068, 5068, "probe input", "The live state of the probe input."),
+    (5069, 5069, "handwheel counter", "The count of the handwheel encoder."),
     (5070, 5070, "spindle speed", "The spindle speed in revolutions per second (under G96 it follows X)."),
     (5071, 5076, "machine position {axis}", "Current position in machine coordinates."),
     (5081, 5086, "probe position {axis}, joints", "Where the last G38.2 tripped, joint coordinates."),
@@ -55,6 +58,9 @@ ROWS: tuple[Row, ...] = (
     (5220, 5220, "active coordinate system", "1..9: 1 = G54 ... 9 = G59.3."),
     *((5221 + 20 * k, 5226 + 20 * k, f"{name} offset {{axis}}", f"Work offset of coordinate system {k + 1}.")
       for k, name in enumerate(("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"))),
+    *((r.start, r.start, f"reserved (rotation coordinate system {k + 1})",
+       "The manual reserves it for a rotation coordinate system: a macro must not use it.")
+      for k, r in enumerate(RESERVED_PARAMS)),
     (5380, 5380, "simulation mode", "1 in simulation (ecnc sets it): guard probing with If [#5380 == 0]."),
     (5390, 5393, "persistent system variable", "Kept in cnc.ini."),
     (5397, 5397, "render mode", "1 while the controller renders the job for its preview."),

@@ -21,6 +21,7 @@ from edingcnc_lang.syntax.source import iter_file_lines
 from edingcnc_lang.records import record
 from edingcnc_lang.lint import rules_comp, rules_dialog, rules_files, rules_gm, rules_structure, rules_vars  # noqa: F401  (register)
 from edingcnc_lang.lint import rules_lathe  # noqa: F401  (register)
+from edingcnc_lang.lint import rules_names  # noqa: F401  (register)
 from edingcnc_lang.lint.model import SourceFile, stream_source
 from edingcnc_lang.lint.project import Project
 from edingcnc_lang.lint.registry import RULES

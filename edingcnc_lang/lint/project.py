@@ -17,6 +17,8 @@ from edingcnc_lang.lint.facts import Code, FileFacts, indexed_reads, survey
 from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point, m_sub_number
 from edingcnc_lang.lint.walk import Scope, dialog_fields
+from edingcnc_lang.varmap.convention import sidecar_of
+from edingcnc_lang.varmap.names import Names, Source, sub_lines
 
 SubKey = tuple[str, str]  # (path, lower-case name)
 # Commands that store a result in the variable whose number they are given.
@@ -201,3 +203,14 @@ class Project:
             for command in facts.commands:
                 found.update(command_writes(command))
         return frozenset(found)
+
+    @cached_property
+    def names(self) -> Names:
+        """The names the files give their variables (annotations, sidecars, dlgmsg labels, comments)."""
+        return Names(map(self._named, self.files), (sidecar_of(f.path) for f in self.files))
+
+    def _named(self, file: SourceFile) -> Source:
+        """What the names of ``file`` are read from: its lines, and the dialogs of its walk."""
+        dialogs = [(dialog, scope.sub.name if scope.sub is not None else None)
+                   for dialog, scope in self.facts(file).dialogs]
+        return Source(file.path, file.lines, dialogs, sub_lines(file.body))

@@ -31,6 +31,7 @@ class Item:
     detail: str
     documentation: str
     start: int  # the column the inserted text replaces from (0-based, up to the cursor)
+    insert: str = ""  # the text inserted, when not the label (a variable's name inserts its number)
 
 
 def complete(model: LanguageModel, path: str, line: int, col: int) -> list[Item]:

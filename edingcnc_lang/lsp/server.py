@@ -25,6 +25,7 @@ from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.lint.driver import LintOptions, UnknownCode, is_macro_name, parse_codes
 from edingcnc_lang.lsp import actions, completion, formatting, hover, navigation, rename
+from edingcnc_lang.lsp import variables
 from edingcnc_lang.lsp.lexer import token_at
 from edingcnc_lang.lsp.model import LanguageModel, Place, file_name
 
@@ -229,13 +230,16 @@ def _did_close(ls: EcncServer, params: t.DidCloseTextDocumentParams) -> None:
 
 @server.feature(t.TEXT_DOCUMENT_HOVER)
 def _hover(ls: EcncServer, params: t.HoverParams) -> t.Hover | None:
-    text = hover.hover_text(ls.model, *ls.server_position(params.text_document.uri, params.position))
+    where = ls.server_position(params.text_document.uri, params.position)
+    parts = (variables.hover_text(ls.model, *where), hover.hover_text(ls.model, *where))
+    text = "\n\n---\n\n".join(filter(None, parts))
     return t.Hover(contents=_markdown(text)) if text else None
 
 
 @server.feature(t.TEXT_DOCUMENT_DEFINITION)
 def _definition(ls: EcncServer, params: t.DefinitionParams) -> t.Location | None:
-    place = navigation.definition(ls.model, *ls.server_position(params.text_document.uri, params.position))
+    where = ls.server_position(params.text_document.uri, params.position)
+    place = navigation.definition(ls.model, *where) or variables.definition(ls.model, *where)
     return ls.location(place) if place else None
 
 
@@ -271,24 +275,28 @@ def _watched_files(ls: EcncServer, params: t.DidChangeWatchedFilesParams) -> Non
 
 @server.feature(t.WORKSPACE_SYMBOL)
 def _workspace_symbols(ls: EcncServer, params: t.WorkspaceSymbolParams) -> list[t.SymbolInformation]:
-    return [t.SymbolInformation(name=name, kind=t.SymbolKind.Function, location=ls.location(place),
-                                container_name=file_name(place.path))
-            for name, place in navigation.workspace_symbols(ls.model, params.query)]
+    return [t.SymbolInformation(name=name, kind=kind, location=ls.location(place), container_name=file_name(place.path))
+            for found, kind in ((navigation.workspace_symbols(ls.model, params.query), t.SymbolKind.Function),
+                                (variables.workspace_symbols(ls.model, params.query), t.SymbolKind.Variable))
+            for name, place in found]
 
 
 @server.feature(t.TEXT_DOCUMENT_COMPLETION, t.CompletionOptions(trigger_characters=["#", " "]))
 def _completion(ls: EcncServer, params: t.CompletionParams) -> t.CompletionList:
     path, line, col = ls.server_position(params.text_document.uri, params.position)
     items = []
-    for rank, item in enumerate(completion.complete(ls.model, path, line, col)):
+    offered = completion.complete(ls.model, path, line, col) + variables.complete_names(ls.model, path, line, col)
+    for rank, item in enumerate(offered):
         items.append(t.CompletionItem(
             label=item.label, kind=_KINDS[item.kind], detail=item.detail, sort_text=f"{rank:05d}",
             documentation=_markdown(item.documentation) if item.documentation else None,
-            text_edit=t.TextEdit(range=ls.client_range(path, line, item.start, col), new_text=item.label)))
+            text_edit=t.TextEdit(range=ls.client_range(path, line, item.start, col),
+                                 new_text=item.insert or item.label)))
     return t.CompletionList(is_incomplete=False, items=items)
 
 
-@server.feature(t.TEXT_DOCUMENT_CODE_ACTION, t.CodeActionOptions(code_action_kinds=[t.CodeActionKind.QuickFix]))
+@server.feature(t.TEXT_DOCUMENT_CODE_ACTION,
+                t.CodeActionOptions(code_action_kinds=[t.CodeActionKind.QuickFix, t.CodeActionKind.RefactorRewrite]))
 def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeAction]:
     uri = params.text_document.uri
     path = ls.path(uri)
@@ -300,12 +308,29 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
             continue
         start = ls.codec().position_from_client_units(lines, diagnostic.range.start)
         finding = actions.Finding(str(diagnostic.code or ""), start.line, start.character, diagnostic.message)
-        for fix in actions.fixes(finding, lines):
+        for fix in actions.fixes(finding, lines) + variables.annotation_fixes(ls.model, path, lines, 0, 0, finding):
             edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end),
                                 new_text=e.text.replace("\n", eol)) for e in fix.edits]
             found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.QuickFix, diagnostics=[diagnostic],
                                       is_preferred=fix.preferred, edit=t.WorkspaceEdit(changes={uri: edits})))
+    cursor = params.range.start
+    at = ls.codec().position_from_client_units(lines, cursor) if cursor.line < len(lines) else None
+    for fix in variables.annotation_fixes(ls.model, path, lines, at.line, at.character) if at else ():
+        edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end), new_text=e.text.replace("\n", eol))
+                 for e in fix.edits]
+        found.append(t.CodeAction(title=fix.title, kind=t.CodeActionKind.RefactorRewrite,
+                                  edit=t.WorkspaceEdit(changes={uri: edits})))
     return found
+
+
+@server.feature(t.TEXT_DOCUMENT_INLAY_HINT)
+def _inlay_hints(ls: EcncServer, params: t.InlayHintParams) -> list[t.InlayHint]:
+    """The name beside every ``#n`` that has one (lsp/variables.py)."""
+    path = ls.path(params.text_document.uri)
+    lines = ls.lines(path)
+    hints = variables.inlay_hints(ls.model, path, params.range.start.line, params.range.end.line)
+    return [t.InlayHint(position=ls.client_range(path, h.line, h.col, h.col).start, label=h.label,
+                        kind=t.InlayHintKind.Parameter, padding_left=True) for h in hints if h.line < len(lines)]
 
 
 @server.feature(t.TEXT_DOCUMENT_FORMATTING)
@@ -329,6 +354,10 @@ def _formatting(ls: EcncServer, params: t.DocumentFormattingParams) -> list[t.Te
 @server.feature(t.TEXT_DOCUMENT_PREPARE_RENAME)
 def _prepare_rename(ls: EcncServer, params: t.PrepareRenameParams) -> t.PrepareRenamePlaceholder | None:
     path, line, col = ls.server_position(params.text_document.uri, params.position)
+    named = variables.annotation_name_at(ls.model, path, line, col)
+    if named is not None:  # the name of a ;@var annotation: rename edits it there
+        return t.PrepareRenamePlaceholder(range=ls.location(named).range,
+                                          placeholder=ls.lines(path)[named.line][named.start:named.end])
     try:
         target = rename.target_at(ls.model, path, line, col)
     except rename.RenameRefused as err:
@@ -343,6 +372,13 @@ def _prepare_rename(ls: EcncServer, params: t.PrepareRenameParams) -> t.PrepareR
 @server.feature(t.TEXT_DOCUMENT_RENAME)
 def _rename(ls: EcncServer, params: t.RenameParams) -> t.WorkspaceEdit | None:
     path, line, col = ls.server_position(params.text_document.uri, params.position)
+    named = variables.annotation_name_at(ls.model, path, line, col)
+    if named is not None:
+        wrong = variables.check_new_name(params.new_name)
+        if wrong:
+            raise JsonRpcException(wrong, code=REQUEST_FAILED)
+        return t.WorkspaceEdit(changes={ls.uri(path): [t.TextEdit(range=ls.location(named).range,
+                                                                  new_text=params.new_name)]})
     try:
         found = rename.rename(ls.model, path, line, col, params.new_name)
     except rename.RenameRefused as err:

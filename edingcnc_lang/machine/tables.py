@@ -143,6 +143,8 @@ READ_ONLY_PARAMS: tuple[range, ...] = (
     range(5001, 5007), range(5051, 5077), range(5081, 5087), range(5101, 5127), range(5131, 5134), range(5141, 5144),
     range(5150, 5153), range(5380, 5381), range(5397, 5398),
 )
+# Numbers the manual reserves (for the rotation coordinate systems 1..8): a macro must not use them.
+RESERVED_PARAMS: tuple[range, ...] = tuple(range(5230 + 20 * k, 5231 + 20 * k) for k in range(8))
 
 # Named system parameters (dialect reference, section 10).
 POS_WORK = 5001            # ..5006 work position X..C

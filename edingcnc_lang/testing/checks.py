@@ -1,7 +1,8 @@
 """What a test expected against what its run did: one line of text per difference."""
 from __future__ import annotations
 
-from edingcnc_lang.testing.execute import MESSAGE_KINDS, Outcome
+from edingcnc_lang.testing.execute import JOB_NAME, MESSAGE_KINDS, Outcome
+from edingcnc_lang.varmap.names import label, names_of_paths
 from edingcnc_lang.testing.spec import shown
 
 MAX_SHOWN_MESSAGES = 5
@@ -22,11 +23,12 @@ def failures(outcome: Outcome) -> list[str]:
     elif expect.error not in (outcome.error or ""):
         found.append(f"error: expected one containing {expect.error!r}, got {error}")
     started = bool(outcome.params)
-    for index, want in expect.vars.items():
-        if not started:
-            found.append(f"#{index}: expected {want}, got nothing (the run did not start)")
-        elif not want.matches(outcome.var(index)):
-            found.append(f"#{index}: expected {want}, got {shown(outcome.var(index))}")
+    wrong = [index for index in expect.vars if not started or not expect.vars[index].matches(outcome.var(index))]
+    names = _names(outcome) if wrong else {}
+    for index in wrong:
+        want = expect.vars[index]
+        got = shown(outcome.var(index)) if started else "nothing (the run did not start)"
+        found.append(f"{label(index, names)}: expected {want}, got {got}")
     for axis, want in expect.position.items():
         if not started:
             found.append(f"position {axis}: expected {want}, got nothing (the run did not start)")
@@ -43,6 +45,13 @@ def failures(outcome: Outcome) -> list[str]:
         hint = "; probing behind the simulation guard needs simulation = false" if case.simulation else ""
         found.append(f"probe: {len(case.probe)} given, the run probed {_times(outcome.probes, 'time')}{hint}")
     return found
+
+
+def _names(outcome: Outcome) -> dict[int, str]:
+    """What the job and its macro files call their numbers (``#1552 thread_major_diameter``)."""
+    case = outcome.case
+    texts = {JOB_NAME: case.job} if case.job_file is None and case.job else {}
+    return names_of_paths(outcome.files, texts).labelled()
 
 
 def _one_line(text: str) -> str:

@@ -51,6 +51,7 @@ class Outcome:
     probes: int = 0
     seconds: float = 0.0
     ended_by: str = ""
+    files: tuple[str, ...] = ()  # the job file and the macro files the run read (names for messages)
 
     def var(self, index: int) -> float:
         """The value of parameter ``index`` at the end of the run."""
@@ -81,6 +82,7 @@ def run_case(case: TestCase, coverage: CoverageData | None = None, keep_moves: b
             if observer is not None:
                 observer.watch(run.macro_files())
             watch.interpreter = run.interpreter
+            outcome.files = tuple(str(p) for p in ([case.job_file] if case.job_file else []) + run.macro_files())
             if case.job_file is not None:
                 run.execute_file(case.job_file, display_path(str(case.job_file)))
             else:

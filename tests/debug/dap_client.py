@@ -112,7 +112,8 @@ class DapClient:
     def scope(self, name: str) -> dict[str, dict[str, Any]]:
         scopes = self.request("scopes", frameId=1)["scopes"]
         ref = next(s["variablesReference"] for s in scopes if s["name"].startswith(name))
-        return {v["name"]: v for v in self.request("variables", variablesReference=ref)["variables"]}
+        # keyed by the expression (#4006), which stays when the view shows a name (#4006 change_y)
+        return {v.get("evaluateName") or v["name"]: v for v in self.request("variables", variablesReference=ref)["variables"]}
 
     def step(self, command: str) -> dict[str, Any]:
         self.request(command, threadId=1)

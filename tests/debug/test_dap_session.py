@@ -32,7 +32,7 @@ def client():
 def everything(dap: DapClient) -> dict[str, dict[str, str]]:
     """Every scope's variables, name -> value (what "restored exactly" is measured on)."""
     scopes = dap.request("scopes", frameId=1)["scopes"]
-    return {s["name"]: {v["name"]: v["value"] for v in dap.request("variables", variablesReference=s["variablesReference"])["variables"]}
+    return {s["name"]: {v.get("evaluateName") or v["name"]: v["value"] for v in dap.request("variables", variablesReference=s["variablesReference"])["variables"]}
             for s in scopes}
 
 

@@ -101,3 +101,14 @@ def test_forbid_rules_see_the_moves_of_a_job_files_bulk_path(tmp_path: Path) -> 
     assert judge(tmp_path, job_file="job.nc", forbid={"rapid_below_z": 0, "feed_with_spindle_off": True}) == [
         f"forbid.rapid_below_z: the rapid at {tmp_path / 'job.nc'}:2 ends at work Z-1, below Z0 (and 1 more)",
         f"forbid.feed_with_spindle_off: the linear move at {tmp_path / 'job.nc'}:3 feeds with the spindle off"]
+
+
+def test_a_failed_variable_shows_its_name(tmp_path: Path) -> None:
+    """The names of the variable map: an annotation in the macro file, a comment in the job, a sidecar."""
+    (tmp_path / "macro.cnc").write_text(';@unit mm\n;@var #1552 thread_major_diameter\nSub thread\n'
+                                        '  #1552 = 0\nEndSub\n', encoding="utf-8")
+    (tmp_path / "variables.toml").write_text('1554 = "thread_pitch"\n', encoding="utf-8")
+    found = judge(tmp_path, job="#100 = 1 ;; pass counter\nGoSub thread\nM30\n", macro="macro.cnc",
+                  expect={"vars": {"1552": 12, "100": 2, "1554": 1, "27": 1}})
+    assert found == ["#1552 thread_major_diameter: expected 12, got 0", "#100 pass counter: expected 2, got 1",
+                     "#1554 thread_pitch: expected 1, got 0", "#27: expected 1, got 0"]
