@@ -18,6 +18,7 @@ from edingcnc_lang.debug.expressions import (
     evaluate,
     parse_assignment,
     parse_expression,
+    parse_parameter,
     probe_answer,
 )
 from edingcnc_lang.debug.arguments import arguments_problem
@@ -179,13 +180,9 @@ class Adapter:
         assert session.run is not None
         if args["variablesReference"] not in (USER, PERSISTENT, SYSTEM):
             raise RequestError("only parameters (#n) can be set")
-        name = args["name"]
-        assignment = parse_assignment(f"{name} = 0") if "=" not in name else None
-        if assignment is None:
-            raise RequestError(f"{name[:40]!r} is not a parameter (#n)")
         evaluator = session.run.interpreter.evaluator
         try:
-            index = evaluator.index(assignment[0])
+            index = evaluator.index(parse_parameter(args["name"]))
             value = evaluate(evaluator, parse_expression(args["value"]))
             session.edit(index, value)
         except (ExpressionError, EcncError) as err:
