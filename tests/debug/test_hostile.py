@@ -235,3 +235,29 @@ def test_step_back_over_a_logmsg_writes_its_line_once(tmp_path, client) -> None:
     client.request("continue", threadId=1)
     assert client.wait("exited") == {"exitCode": 0}
     assert (logs / "log.txt").read_text() == "first\nsecond\nthird\n"
+
+
+def _testsupport() -> str | None:
+    """node, when it finds @vscode/debugadapter-testsupport (npm install it, or set NODE_PATH)."""
+    import shutil
+    import subprocess
+
+    node = shutil.which("node")
+    if node is None:
+        return None
+    found = subprocess.run([node, "-e", "require.resolve('@vscode/debugadapter-testsupport')"],
+                           cwd=Path(__file__).parent, capture_output=True)
+    return node if found.returncode == 0 else None
+
+
+@pytest.mark.skipif(_testsupport() is None, reason="needs node and @vscode/debugadapter-testsupport")
+def test_vscodes_own_debug_client_drives_a_session(tmp_path) -> None:
+    import subprocess
+    import sys
+
+    node = _testsupport()
+    assert node is not None
+    script = Path(__file__).with_name("vscode_client.js")
+    done = subprocess.run([node, str(script), sys.executable, str(tmp_path)], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0 and done.stdout.strip() == "ok", done.stderr
