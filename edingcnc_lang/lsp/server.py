@@ -64,6 +64,7 @@ class _Refused:
     id: int | str
     method: str
     why: str
+    code: int = t.ErrorCodes.InvalidParams
 
 
 class EcncProtocol(LanguageServerProtocol):
@@ -78,13 +79,16 @@ class EcncProtocol(LanguageServerProtocol):
         except JsonRpcException as err:
             ident = data.get("id")
             if "method" in data and isinstance(ident, (int, str)) and not isinstance(ident, bool):
-                return _Refused(ident, str(data["method"])[:100], _reason(err))
+                method = str(data["method"])[:100]
+                if self.get_message_type(method) is None:  # and its params could not be read as JSON-RPC's
+                    return _Refused(ident, method, "not a method of ecnc lsp", t.ErrorCodes.MethodNotFound)
+                return _Refused(ident, method, "invalid params: " + _reason(err))
             raise
 
     def handle_message(self, message: Any) -> None:
         if isinstance(message, _Refused):
-            self._send_response(message.id, None, t.ResponseError(
-                code=t.ErrorCodes.InvalidParams, message=f"{message.method}: invalid params: {message.why}"))
+            self._send_response(message.id, None, t.ResponseError(code=message.code,
+                                                                  message=f"{message.method}: {message.why}"))
             return
         super().handle_message(message)
 

@@ -60,6 +60,18 @@ def test_a_request_with_bad_params_is_answered_with_an_error(client: LspClient, 
     assert client.request("workspace/symbol", {"query": "zzz"}) == []
 
 
+def test_an_unknown_method_is_answered_method_not_found(client: LspClient) -> None:
+    assert client._reply("ecnc/nothing", {"a": 1})["error"]["code"] == -32601
+    client._next += 1
+    client._send({"id": client._next, "method": "ecnc/nothing"})  # no params at all: pygls could not read it
+    while True:
+        message = client._take()
+        if message.get("id") == client._next:
+            break
+        client._keep(message)
+    assert message["error"]["code"] == -32601 and "not a method" in message["error"]["message"]
+
+
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs are POSIX")
 def test_a_fifo_or_device_not_open_in_the_editor_is_never_opened(client: LspClient, tmp_path: Path) -> None:
     fifo = tmp_path / "macro.cnc"
