@@ -9,6 +9,7 @@ from __future__ import annotations
 import io
 import json
 import tempfile
+import threading
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -97,6 +98,16 @@ _METHODS = st.sampled_from(["textDocument/hover", "textDocument/definition", "te
                             "textDocument/codeAction", "workspace/symbol"])
 
 
+def _drain(stream: Any) -> None:
+    """Read the server's stderr as an editor does: each refused request logs a line there, and a
+    full pipe would block the server (a long hunt refuses thousands)."""
+    try:
+        while stream.read(65536):
+            pass
+    except (OSError, ValueError):  # closed when the test ends
+        pass
+
+
 @pytest.fixture(scope="module")
 def lsp(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[Any, str]]:
     pytest.importorskip("pygls")
@@ -105,6 +116,7 @@ def lsp(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[Any, str]]:
     root = tmp_path_factory.mktemp("fuzz")
     (root / "macro.cnc").write_text("Sub drill\n  G81 Z-5 R2 F100\nEndSub\n")
     client = LspClient()
+    threading.Thread(target=_drain, args=(client.proc.stderr,), daemon=True).start()
     client.initialize(root)
     uri = client.open(root / "job.nc", "GoSub drill\n#27 = [#27 + 1]\nG" + "9" * 310 + " M100\n"
                       'dlgmsg "w" 28\nM30\n')
