@@ -10,13 +10,13 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 from collections.abc import Callable, Iterable, Sequence
-from typing import Any, TypeVar
+from typing import Any
 
 from cattrs import ClassValidationError, transform_error
 from lsprotocol import types as t
 from pygls.exceptions import JsonRpcException
 from pygls.lsp.server import LanguageServer
-from pygls.protocol import LanguageServerProtocol
+from pygls.protocol import LanguageServerProtocol, default_converter
 from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
@@ -34,7 +34,7 @@ DEBOUNCE_SECONDS = 0.3  # lint once typing pauses, not on every keystroke
 REQUEST_FAILED = -32803  # LSP's RequestFailed: a rename refused, with the reason for the user
 CONTENT_MODIFIED = -32801  # LSP's ContentModified: the answer is out of date, the client asks again
 SOURCE = "ecnc"
-_T = TypeVar("_T")
+_CONVERTER = default_converter()  # the one pygls answers with, for results turned into JSON in a worker
 _KINDS = {"code": t.CompletionItemKind.Keyword, "sub": t.CompletionItemKind.Function,
           "variable": t.CompletionItemKind.Variable, "keyword": t.CompletionItemKind.Keyword,
           "command": t.CompletionItemKind.Method, "function": t.CompletionItemKind.Function}
@@ -303,7 +303,7 @@ async def in_worker(ls: EcncServer, work: Callable[[], Any], result_type: type) 
     JSON's lists and dicts there too.  ContentModified if a document changed meanwhile."""
     def unstructured() -> Any:
         with whole_trees():
-            return ls.protocol._converter.unstructure(work(), result_type)
+            return _CONVERTER.unstructure(work(), result_type)
 
     before = dict(ls.model.texts)
     result = await asyncio.to_thread(unstructured)
