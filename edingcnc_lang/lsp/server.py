@@ -72,13 +72,13 @@ class EcncProtocol(LanguageServerProtocol):
     request answered, with an error when its params cannot be read."""
 
     def structure_message(self, data: dict[str, Any]) -> Any:
-        if isinstance(data, dict) and "params" in data:
-            data = {**data, "params": _clamped_positions(data["params"])}
         try:
+            if isinstance(data, dict) and "params" in data:
+                data = {**data, "params": _clamped_positions(data["params"])}
             return super().structure_message(data)
-        except JsonRpcException as err:
+        except (JsonRpcException, RecursionError) as err:
             ident = data.get("id")
-            if "method" in data and isinstance(ident, (int, str)) and not isinstance(ident, bool):
+            if "jsonrpc" in data and "method" in data and isinstance(ident, (int, str)) and not isinstance(ident, bool):
                 method = str(data["method"])[:100]
                 if self.get_message_type(method) is None:  # and its params could not be read as JSON-RPC's
                     return _Refused(ident, method, "not a method of ecnc lsp", t.ErrorCodes.MethodNotFound)
@@ -93,8 +93,10 @@ class EcncProtocol(LanguageServerProtocol):
         super().handle_message(message)
 
 
-def _reason(err: JsonRpcException) -> str:
+def _reason(err: Exception) -> str:
     """What cattrs found wrong (``invalid value @ $.params.options``), or the exception's message."""
+    if isinstance(err, RecursionError):
+        return "nested too deeply"
     cause = err.__cause__
     if isinstance(cause, ClassValidationError):
         return "; ".join(transform_error(cause))[:500]
@@ -313,12 +315,12 @@ async def in_worker(ls: EcncServer, work: Callable[[], Any], result_type: type) 
 
 
 @server.feature(t.TEXT_DOCUMENT_REFERENCES)
-async def _references(ls: EcncServer, params: t.ReferenceParams) -> list[t.Location]:
+async def _references(ls: EcncServer, params: t.ReferenceParams) -> Any:  # list[t.Location], as JSON
     path, line, col = ls.server_position(params.text_document.uri, params.position)
 
     def work() -> list[t.Location]:
         return ls.locations(navigation.references(ls.model, path, line, col, params.context.include_declaration))
-    return await in_worker(ls, work, list[t.Location])  # type: ignore[no-any-return]
+    return await in_worker(ls, work, list[t.Location])
 
 
 @server.feature(t.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
@@ -416,7 +418,7 @@ def _prepare_rename(ls: EcncServer, params: t.PrepareRenameParams) -> t.PrepareR
 
 
 @server.feature(t.TEXT_DOCUMENT_RENAME)
-async def _rename(ls: EcncServer, params: t.RenameParams) -> t.WorkspaceEdit | None:
+async def _rename(ls: EcncServer, params: t.RenameParams) -> Any:  # t.WorkspaceEdit, as JSON
     path, line, col = ls.server_position(params.text_document.uri, params.position)
     text = rename.new_text(params.new_name)
 
@@ -428,4 +430,4 @@ async def _rename(ls: EcncServer, params: t.RenameParams) -> t.WorkspaceEdit | N
         return t.WorkspaceEdit(changes={ls.uri(file): [t.TextEdit(range=place.range, new_text=text)
                                                        for place in ls.locations(places)]
                                         for file, places in found.items()})
-    return await in_worker(ls, work, t.WorkspaceEdit)  # type: ignore[no-any-return]
+    return await in_worker(ls, work, t.WorkspaceEdit)

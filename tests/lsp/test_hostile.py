@@ -60,6 +60,21 @@ def test_a_request_with_bad_params_is_answered_with_an_error(client: LspClient, 
     assert client.request("workspace/symbol", {"query": "zzz"}) == []
 
 
+def test_params_nested_past_pythons_recursion_are_refused(client: LspClient) -> None:
+    """900 levels: JSON reads them, clamping positions recursed past Python's limit (no answer)."""
+    body = ('{"jsonrpc": "2.0", "id": 900, "method": "textDocument/hover", "params": ' + "[" * 900 + "]" * 900
+            + "}").encode()
+    assert client.proc.stdin is not None
+    client.proc.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+    client.proc.stdin.flush()
+    while True:
+        message = client._take()
+        if message.get("id") == 900:
+            break
+        client._keep(message)
+    assert message["error"] == {"code": INVALID_PARAMS, "message": "textDocument/hover: invalid params: nested too deeply"}
+
+
 def test_an_unknown_method_is_answered_method_not_found(client: LspClient) -> None:
     assert client._reply("ecnc/nothing", {"a": 1})["error"]["code"] == -32601
     client._next += 1
