@@ -84,7 +84,7 @@ class Adapter:
         except RequestError as err:
             self.channel.fail(request, str(err))
             return
-        except (Exception, RecursionError) as err:  # a bug of ours: the request fails, the session goes on
+        except Exception as err:  # a bug of ours (a RecursionError too): this request fails, the session goes on
             self.channel.fail(request, f"internal error of the debugger: {type(err).__name__}: {err}")
             return
         self.channel.respond(request, body)

@@ -73,8 +73,8 @@ def _object(fields: Mapping[str, Check], required: tuple[str, ...] = ()) -> Chec
     return check
 
 
-BOOLEAN, WHOLE, PATH, NAME, TEXT = _boolean, _whole(), _string(MAX_PATH_CHARS), _string(MAX_NAME_CHARS), _string(
-    MAX_TEXT_CHARS)
+BOOLEAN, WHOLE = _boolean, _whole()
+PATH, NAME, TEXT = _string(MAX_PATH_CHARS), _string(MAX_NAME_CHARS), _string(MAX_TEXT_CHARS)
 _SOURCE_BREAKPOINT = _object({"line": _whole(), "column": _whole(), "condition": TEXT, "hitCondition": NAME,
                               "logMessage": TEXT}, required=("line",))
 _FUNCTION_BREAKPOINT = _object({"name": NAME, "condition": TEXT, "hitCondition": NAME}, required=("name",))
@@ -88,7 +88,8 @@ REQUESTS: dict[str, Check] = {
     "launch": _object({"program": PATH, "cwd": PATH, "ini": PATH, "macro": PATH, "userMacro": PATH,
                        "probeSurface": PATH, "logDir": PATH, "answers": _list(NAME), "stopOnEntry": BOOLEAN,
                        "noDebug": BOOLEAN, "maxSteps": _whole(1, MAX_STEPS)}),
-    "setBreakpoints": _object({"source": _object({"path": PATH, "name": PATH}), "breakpoints": _list(_SOURCE_BREAKPOINT),
+    "setBreakpoints": _object({"source": _object({"path": PATH, "name": PATH}),
+                               "breakpoints": _list(_SOURCE_BREAKPOINT),
                                "lines": _list(_whole()), "sourceModified": BOOLEAN}, required=("source",)),
     "setFunctionBreakpoints": _object({"breakpoints": _list(_FUNCTION_BREAKPOINT)}, required=("breakpoints",)),
     "setExceptionBreakpoints": _object({"filters": _list(NAME)}, required=("filters",)),

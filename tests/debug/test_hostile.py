@@ -145,7 +145,8 @@ def test_breakpoint_arguments_are_checked(tmp_path, client) -> None:
                            ({"source": {"path": str(job)}, "breakpoints": [{"line": 1}] * 10_001}, "more than")]:
         response = client.raw("setBreakpoints", **arguments)
         assert not response["success"] and why in response["message"], response
-    huge = client.raw("setBreakpoints", source={"path": str(job)}, breakpoints=[{"line": 1, "hitCondition": "9" * 5000}])
+    huge = client.raw("setBreakpoints", source={"path": str(job)},
+                      breakpoints=[{"line": 1, "hitCondition": "9" * 5000}])
     assert not huge["success"] and "hitCondition has 5,000 characters" in huge["message"]
     placed = client.request("setBreakpoints", source={"path": str(job)},
                             breakpoints=[{"line": 1, "hitCondition": "9" * 20}, {"line": 2, "hitCondition": "% 3"}])
@@ -192,7 +193,8 @@ def test_a_continue_before_the_entry_stop_is_not_dropped(tmp_path, client) -> No
 
 @pytest.mark.parametrize(("name", "why"), [
     ("#-620", "is not a parameter"), ("#[0 - 620]", "does not exist"), ("#0", "does not exist"),
-    ("#6000", "does not exist"), ("#5380", "read-only"), ("#5001", "read-only"), ("#" + "9" * 1000, "more than 400 digits"),
+    ("#6000", "does not exist"), ("#5380", "read-only"), ("#5001", "read-only"),
+    ("#" + "9" * 1000, "more than 400 digits"),
     ("#" + "9" * 5000, "more than the 1,024"),
     ("5380", "is not a parameter"), ("#1 = 2", "is not a parameter"), ("G0", "is not a parameter"),
 ])

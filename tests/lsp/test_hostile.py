@@ -72,7 +72,8 @@ def test_params_nested_past_pythons_recursion_are_refused(client: LspClient) -> 
         if message.get("id") == 900:
             break
         client._keep(message)
-    assert message["error"] == {"code": INVALID_PARAMS, "message": "textDocument/hover: invalid params: nested too deeply"}
+    assert message["error"] == {"code": INVALID_PARAMS,
+                                "message": "textDocument/hover: invalid params: nested too deeply"}
 
 
 def test_an_unknown_method_is_answered_method_not_found(client: LspClient) -> None:
