@@ -43,5 +43,6 @@ def explain_or_fail(code: str) -> str:
 
         text = explain_kins(code) or describe(code)
         if text is None:
-            raise usage_error(f"no command or lint code {code!r} (see ecnc --help and ecnc lint --list-codes)") from None
+            shown = code if len(code) <= 40 else code[:40] + "..."
+            raise usage_error(f"no command or lint code {shown!r} (see ecnc --help and ecnc lint --list-codes)") from None
         return text

@@ -4,7 +4,8 @@ A thin protocol layer (``adapter``) over the run's own stepping (``session``), a
 pydevd.  The interpreter runs in a worker thread; the ``Observer`` seam (machine/observe.py)
 blocks it while the user looks around.  Modules, one job each:
 
-- ``protocol``: Content-Length framing of DAP messages on a byte stream
+- ``protocol``: Content-Length framing of DAP messages on a byte stream, and its limits
+- ``arguments``: every request's arguments checked (types, ranges, lengths) before it acts
 - ``launch``: the launch request's arguments
 - ``breakpoints``: source and function breakpoints, verification, conditions, hit counts, log points
 - ``expressions``: the dialect's expressions for conditions, evaluate, setVariable and console answers

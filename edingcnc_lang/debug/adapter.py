@@ -5,6 +5,8 @@ ever changes in the worker thread (session.py).  One thread is shown to the clie
 """
 from __future__ import annotations
 
+import re
+
 import os
 from collections.abc import Callable
 from typing import Any, BinaryIO
@@ -18,9 +20,11 @@ from edingcnc_lang.debug.expressions import (
     evaluate,
     parse_assignment,
     parse_expression,
+    parse_parameter,
     probe_answer,
 )
-from edingcnc_lang.debug.protocol import Channel, Message, ProtocolError, read_message
+from edingcnc_lang.debug.arguments import arguments_problem
+from edingcnc_lang.debug.protocol import Channel, Message, ProtocolError, Reader
 from edingcnc_lang.debug.launch import Launch, LaunchError, launch_of
 from edingcnc_lang.debug.session import Session
 from edingcnc_lang.debug.data_breakpoints import launch_names
@@ -44,6 +48,9 @@ CAPABILITIES = {
 RESUMES = {"continue": "continue", "next": "next", "stepIn": "stepIn", "stepOut": "stepOut",
            "stepBack": "stepBack", "reverseContinue": "reverseContinue"}
 
+# a parameter as the variables view names it: its number, then the name the variable map gives it
+_SHOWN_NAME = re.compile(r"\s*(#\d+)\s+[^\s\[\]+\-*/=<>].*")
+
 
 class RequestError(Exception):
     """A request that cannot be done; its text is the failed response's message."""
@@ -55,21 +62,37 @@ class Adapter:
     def __init__(self, channel: Channel) -> None:
         self.channel = channel
         self.session: Session | None = None
-        self.subs: dict[str, str] = {}  # sub name -> file, for function breakpoints
+        self.subs: dict[str, tuple[str, int]] = {}  # sub name -> its file and line, for function breakpoints
         self.done = False
 
     def handle(self, request: Message) -> None:
-        command = request.get("command", "")
-        handler: Callable[[dict[str, Any]], dict[str, Any] | None] | None = getattr(self, f"on_{command}", None)
-        if command in RESUMES:
-            handler = self._resume_request(RESUMES[command])
+        """Answer one request: a malformed one, or one whose arguments fail their check
+        (arguments.py), gets ``success: false`` before any handler sees it."""
+        command, seq = request.get("command"), request.get("seq")
+        if not isinstance(command, str) or not command:
+            self.channel.fail(request, "a request needs a command (a string)")
+            return
+        if type(seq) is not int or seq < 0:
+            self.channel.fail(request, f"{command[:100]}: a request needs a seq (a whole number)")
+            return
+        handler: Callable[[dict[str, Any]], dict[str, Any] | None] | None = (
+            self._resume_request(RESUMES[command]) if command in RESUMES
+            else getattr(self, f"on_{command}", None) if command.isidentifier() else None)
         if handler is None:
-            self.channel.fail(request, f"{command} is not supported by ecnc debug")
+            self.channel.fail(request, f"{command[:100]} is not supported by ecnc debug")
+            return
+        arguments = request.get("arguments")
+        problem = arguments_problem(command, {} if arguments is None else arguments)
+        if problem is not None:
+            self.channel.fail(request, problem)
             return
         try:
-            body = handler(request.get("arguments") or {})
+            body = handler(arguments or {})
         except RequestError as err:
             self.channel.fail(request, str(err))
+            return
+        except Exception as err:  # a bug of ours (a RecursionError too): this request fails, the session goes on
+            self.channel.fail(request, f"internal error of the debugger: {type(err).__name__}: {err}")
             return
         self.channel.respond(request, body)
         if command == "launch":
@@ -92,6 +115,8 @@ class Adapter:
         return CAPABILITIES
 
     def on_launch(self, args: dict[str, Any]) -> None:
+        if self.session is not None and self.session.started and not self.session.ended:
+            raise RequestError("launch: a run is going on in this session (terminate it first)")
         try:
             launch = launch_of(args)
         except LaunchError as err:
@@ -118,9 +143,10 @@ class Adapter:
         return {"breakpoints": [bp.to_json(path) for bp in placed]}
 
     def on_setFunctionBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
-        placed = self._session().breakpoints.set_functions(args.get("breakpoints", []), self.subs)
-        return {"breakpoints": [bp.to_json(self.subs.get(sub_of(str(spec.get("name", ""))))) for bp, spec
-                                in zip(placed, args.get("breakpoints", []))]}
+        specs = args["breakpoints"]
+        placed = self._session().breakpoints.set_functions(specs, self.subs)
+        return {"breakpoints": [bp.to_json(self.subs.get(sub_of(spec["name"]), ("", 0))[0])
+                                for bp, spec in zip(placed, specs)]}
 
     def on_dataBreakpointInfo(self, args: dict[str, Any]) -> dict[str, Any]:
         session = self._session()
@@ -134,7 +160,10 @@ class Adapter:
         return {"breakpoints": [{"verified": True} for _f in args.get("filters", [])]}
 
     def on_configurationDone(self, _args: dict[str, Any]) -> None:
-        self._session().start()
+        session = self._session()
+        if session.started:
+            raise RequestError("configurationDone was sent already: the run has started")
+        session.start()
 
     def on_threads(self, _args: dict[str, Any]) -> dict[str, Any]:
         return {"threads": [{"id": 1, "name": "machine"}]}
@@ -157,24 +186,20 @@ class Adapter:
     def on_variables(self, args: dict[str, Any]) -> dict[str, Any]:
         session = self._stopped()
         assert session.run is not None
-        return {"variables": variables(session.run, int(args.get("variablesReference", 0)), session.writers,
-                                       session.names)}
+        return {"variables": variables(session.run, args["variablesReference"], session.writers, session.names)}
 
     def on_setVariable(self, args: dict[str, Any]) -> dict[str, Any]:
+        """The name is read as the dialect reads ``NAME = 0`` (``#4005``, ``#[4000 + 5]``): a number
+        outside #1..#5999 or a read-only system variable is refused as a job's assignment is."""
         session = self._stopped()
-        if int(args.get("variablesReference", 0)) not in (USER, PERSISTENT, SYSTEM):
-            raise RequestError("only parameters (#n) can be set")
-        name = str(args.get("name", ""))
-        try:
-            index = int(name.lstrip("#").split()[0])  # "#1552 thread_major_diameter": the number
-        except (ValueError, IndexError):
-            raise RequestError(f"{name!r} is not a parameter") from None
-        return self._assign(session, index, str(args.get("value", "")))
-
-    def _assign(self, session: Session, index: int, text: str) -> dict[str, Any]:
         assert session.run is not None
+        if args["variablesReference"] not in (USER, PERSISTENT, SYSTEM):
+            raise RequestError("only parameters (#n) can be set")
+        evaluator = session.run.interpreter.evaluator
+        named = _SHOWN_NAME.fullmatch(args["name"])  # the view shows "#1552 thread_major_diameter"
         try:
-            value = evaluate(session.run.interpreter.evaluator, parse_expression(text))
+            index = evaluator.index(parse_parameter(named[1] if named else args["name"]))
+            value = evaluate(evaluator, parse_expression(args["value"]))
             session.edit(index, value)
         except (ExpressionError, EcncError) as err:
             raise RequestError(getattr(err, "message", None) or str(err)) from None
@@ -183,7 +208,7 @@ class Adapter:
 
     def on_evaluate(self, args: dict[str, Any]) -> dict[str, Any]:
         session = self._session()
-        text = str(args.get("expression", "")).strip()
+        text = args["expression"].strip()
         if args.get("context") == "repl":
             answered = self._console_answer(session, text)
             if answered is not None:
@@ -244,7 +269,8 @@ class Adapter:
 
     def _resume_request(self, command: str) -> Callable[[dict[str, Any]], dict[str, Any]]:
         def resume(_args: dict[str, Any]) -> dict[str, Any]:
-            self._session().resume(command)
+            if not self._session().resume(command):
+                raise RequestError(f"{command}: the machine is not stopped (it is running or has ended)")
             return {"allThreadsContinued": True}
         return resume
 
@@ -265,41 +291,47 @@ def _shown(answer: DialogAnswer) -> str:
     return ("ok" if answer.ok else "cancel") + (f" {values}" if values else "")
 
 
-def known_subs(launch: Launch) -> dict[str, str]:
-    """Every sub the run can call, by lower-case name, with its file; a job or macro file that
-    does not load is the launch's error."""
+def known_subs(launch: Launch) -> dict[str, tuple[str, int]]:
+    """Every sub the run can call, by lower-case name, with its file and the line of its ``Sub``;
+    a job or macro file that does not load is the launch's error."""
     from edingcnc_lang.runner import Run, RunOptions
     from edingcnc_lang.debug.breakpoints import facts
 
     try:
         run = Run(RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro, plan=False))
-        found: dict[str, str] = {}
+        found: dict[str, tuple[str, int]] = {}
         for path, program in run.load_macros():
-            for name in program.subs:
-                found.setdefault(name.lower(), str(path))
+            for name, sub in program.subs.items():
+                found.setdefault(name.lower(), (str(path), sub.span.line))
         job = facts(str(launch.program))
         if job.error is not None:
             raise job.error
-        for name in job.subs:
-            found[name] = str(launch.program)
+        for name, line in job.subs:
+            found[name] = (str(launch.program), line)
         return found
     except EcncError as err:
         raise RequestError(err.format()) from None
 
 
 def serve(stdin: BinaryIO, stdout: BinaryIO) -> int:
-    """Speak DAP on these streams until the client disconnects or closes them."""
+    """Speak DAP on these streams until the client disconnects or closes them.  A message that
+    cannot be read is refused with an output event and the next one is read: nothing the client
+    sends ends the session but ``disconnect`` or the end of the stream."""
     channel = Channel(stdout)
     adapter = Adapter(channel)
-    try:
-        while not adapter.done:
-            message = read_message(stdin)
-            if message is None:
-                break
-            if message.get("type") == "request":
-                adapter.handle(message)
-    except ProtocolError as err:
-        channel.output(f"ecnc debug: {err}", "stderr")
+    reader = Reader(stdin)
+    while not adapter.done:
+        try:
+            message = reader.read()
+        except ProtocolError as err:
+            channel.output(f"ecnc debug: {err} (the message is skipped)", "stderr")
+            continue
+        if message is None:
+            break
+        if message.get("type") == "request":
+            adapter.handle(message)
+        elif message.get("type") not in ("response", "event"):
+            channel.fail(message, "a message's type must be \"request\"")
     session = adapter.session
     if session is not None:
         session.terminate()

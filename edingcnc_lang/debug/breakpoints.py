@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 from bisect import bisect_left
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
@@ -22,7 +23,7 @@ from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.syntax.parser import read_statements
 from edingcnc_lang.debug.expressions import ExpressionError, evaluate, interpolate, parse_expression
 
-HIT = re.compile(r"\s*(==|>=|>|%)?\s*(\d+)\s*$")
+HIT = re.compile(r"\s*(==|>=|>|%)?\s*([0-9]{1,9})\s*$")  # a count past 999,999,999 is never reached
 
 
 def file_key(path: str) -> str:
@@ -102,8 +103,10 @@ class Breakpoints:
             self.by_file.pop(key, None)
         return answer
 
-    def set_functions(self, specs: Iterable[dict[str, object]], subs: dict[str, str]) -> list[Breakpoint]:
-        """Replace the function breakpoints; ``subs`` maps each known sub name to where it is defined."""
+    def set_functions(self, specs: Iterable[dict[str, object]],
+                      subs: dict[str, tuple[str, int]]) -> list[Breakpoint]:
+        """Replace the function breakpoints; ``subs`` maps each known sub name to where it is defined
+        (its file and the line of its ``Sub``, which the breakpoint reports)."""
         self.functions = {}
         answer = []
         for spec in specs:
@@ -112,8 +115,10 @@ class Breakpoints:
             if name not in subs:
                 bp.verified = False
                 bp.message = f"no Sub {name} in the job or the macro files"
-            elif bp.verified:
-                self.functions[name] = bp
+            else:
+                bp.line = subs[name][1]
+                if bp.verified:
+                    self.functions[name] = bp
             answer.append(bp)
         return answer
 
@@ -125,7 +130,10 @@ class Breakpoints:
             if spec.get("hitCondition"):
                 match = HIT.match(str(spec["hitCondition"]))
                 if match is None:
-                    raise ExpressionError(f"hit condition {spec['hitCondition']!r}: write N, >= N, > N or % N")
+                    shown = str(spec["hitCondition"])
+                    shown = shown if len(shown) <= 40 else shown[:40] + "..."
+                    raise ExpressionError(f"hit condition {shown!r}: write N, >= N, > N or % N "
+                                          "(N up to 999,999,999)")
                 bp.hit = (match.group(1) or "==", int(match.group(2)))
         except ExpressionError as err:
             bp.verified, bp.message = False, str(err)
@@ -181,7 +189,7 @@ class Facts:
     syntax error that keeps it from running (None if it parses)."""
 
     lines: tuple[int, ...]
-    subs: tuple[str, ...]
+    subs: tuple[tuple[str, int], ...]  # (lower-case name, line of its Sub)
     error: EcncError | None = None
 
 
@@ -199,7 +207,7 @@ def _facts(key: str, stamp: float) -> Facts:
         reader = read_statements(key, tolerant=True)
         statements = list(reader)
         reader.raise_errors()
-    subs = tuple(stmt.name.lower() for stmt in statements if isinstance(stmt, n.Sub))
+    subs = tuple((stmt.name.lower(), stmt.span.line) for stmt in statements if isinstance(stmt, n.Sub))
     return Facts(tuple(sorted(set(_starts(statements)))), subs, error)
 
 
@@ -208,10 +216,12 @@ def facts(path: str) -> Facts:
     raises the EcncError of a file that cannot be read or whose blocks do not close."""
     key = file_key(path)
     try:
-        stamp = os.stat(key).st_mtime
+        info = os.stat(key)
     except OSError as err:
         raise EcncError(f"cannot read {path}: {err.strerror}") from None
-    return _facts(key, stamp)
+    if not stat.S_ISREG(info.st_mode):  # a FIFO would block the adapter, a device never end
+        raise EcncError(f"cannot read {path}: not a regular file")
+    return _facts(key, info.st_mtime)
 
 
 def executable_lines(key: str) -> tuple[int, ...] | str:

@@ -69,7 +69,8 @@ class DataBreakpoints:
         answers = []
         for spec in specs:
             data_id = str(spec.get("dataId", ""))
-            if not data_id.isdigit() or not FIRST_PARAM <= int(data_id) <= LAST_PARAM:
+            if not (data_id.isascii() and data_id.isdigit() and len(data_id) <= 4) \
+                    or not FIRST_PARAM <= int(data_id) <= LAST_PARAM:
                 answers.append({"verified": False, "message": f"{data_id!r} is not a parameter number"})
                 continue
             if spec.get("accessType", "write") != "write":

@@ -49,6 +49,22 @@ def parse_assignment(text: str) -> tuple[n.Param, n.Expr] | None:
     return None
 
 
+def parse_parameter(text: str) -> n.Param:
+    """``#4005``, ``#[4000 + 5]``: a parameter, read as the dialect reads the target of an assignment;
+    an ExpressionError with the parser's reason for anything else (``#-620``, ``5380``)."""
+    shown = text.strip() if len(text) <= 40 else text.strip()[:40] + "..."
+    refused = f"{shown!r} is not a parameter (#n)"
+    if "=" in text:
+        raise ExpressionError(refused)
+    try:
+        block = parse_line(f"{text} = 0")
+    except (LineError, EcncError) as err:
+        raise ExpressionError(f"{refused}: {err.message}") from None
+    if not isinstance(block, n.Block) or len(block.assigns) != 1 or block.words or block.message:
+        raise ExpressionError(refused)
+    return block.assigns[0].target
+
+
 def _parse(line: str, shown: str) -> object:
     try:
         return parse_line(line)

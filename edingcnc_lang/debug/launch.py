@@ -40,9 +40,13 @@ def launch_of(args: dict[str, Any]) -> Launch:
             if must:
                 raise LaunchError(f"launch needs {key!r} (the job to run)")
             return None
-        found = (base / str(value)).resolve()
-        if not found.is_file():
-            raise LaunchError(f"{key}: {value} is not a file")
+        try:
+            found = (base / str(value)).resolve()
+            regular = found.is_file()
+        except OSError as err:  # a name too long for the file system, a loop of links
+            raise LaunchError(f"{key}: cannot read {_shown(value)}: {err.strerror or err}") from None
+        if not regular:
+            raise LaunchError(f"{key}: {_shown(value)} is not a file")
         return found
 
     try:
@@ -52,8 +56,21 @@ def launch_of(args: dict[str, Any]) -> Launch:
     program = path("program", must=True)
     assert program is not None
     log_dir = args.get("logDir")
+    try:
+        log_folder = (base / str(log_dir)).resolve() if log_dir else None
+        not_folder = log_folder is not None and log_folder.exists() and not log_folder.is_dir()
+    except OSError as err:
+        raise LaunchError(f"logDir: cannot use {_shown(log_dir)}: {err.strerror or err}") from None
+    if not_folder:
+        raise LaunchError(f"logDir: {_shown(log_dir)} is not a folder")
     max_steps = args.get("maxSteps")
     return Launch(program, ini=path("ini"), macro=path("macro"), user_macro=path("userMacro"), answers=answers,
                   probe_surface=path("probeSurface"), stop_on_entry=bool(args.get("stopOnEntry")),
-                  no_debug=bool(args.get("noDebug")), log_dir=(base / str(log_dir)).resolve() if log_dir else None,
+                  no_debug=bool(args.get("noDebug")), log_dir=log_folder,
                   max_steps=int(max_steps) if max_steps else None)
+
+
+def _shown(value: object) -> str:
+    """A path as the message shows it: at most 80 characters."""
+    text = str(value)
+    return text if len(text) <= 80 else text[:80] + "..."

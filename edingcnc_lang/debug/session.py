@@ -62,6 +62,10 @@ class Session(Observer):
         self.fields: list[int] = []  # the parameters the waiting dialog edits
         self.error: EcncError | None = None  # the run error the machine stopped at
         self._resume: str | None = None
+        self._early: str | None = None  # a resume sent before the entry stop: it acts there
+        self._stops = 0
+        self.started = False
+        self.ended = False  # the run is over (exited is sent): a new launch may follow
         self._answer: object = None
         self._pause = False
         self._terminate = False
@@ -89,22 +93,32 @@ class Session(Observer):
         self._trail: list[tuple[int, tuple[str, int] | None] | None] = []
         self._before: tuple[int, tuple[str, int] | None] | None = None
         self._scratch = Path()  # the folder re-runs write their log files to (made when the run starts)
+        # the last statement the live run executed: a statement re-run after a step back up to it
+        # writes its files (logmsg, logfile, ZHCS) to the scratch folder, as they were written once
+        self._done_step = 0
+        self._files_scratch = False
         self._probe_surface: ProbeCallback | None = None
         self.thread = threading.Thread(target=self._work, name="machine", daemon=True)
 
     # ------------------------------------------------------------------ the adapter's side
 
     def start(self) -> None:
+        self.started = True
         self.thread.start()
 
     def resume(self, command: str) -> bool:
-        """Continue, step or step back from a stop; False if the machine is not stopped."""
+        """Continue, step or step back from a stop; False if the machine is not stopped.  Before
+        the entry stop of ``stopOnEntry`` the command is kept and acts there (not dropped)."""
         with self.cv:
-            if not self.stopped:
-                return False
-            self._resume = command
-            self.cv.notify_all()
-            return True
+            if self.stopped:
+                self._resume = command
+                self.cv.notify_all()
+                return True
+            if (self.launch.stop_on_entry and self._stops == 0 and self._phase == LIVE
+                    and command not in BACK_COMMANDS and not self._terminate):
+                self._early = command
+                return True
+            return False
 
     def answer(self, value: object) -> None:
         """The operator's answer to the dialog or probe the machine waits at; the run goes on."""
@@ -158,6 +172,7 @@ class Session(Observer):
                 code = 70
                 break
         shutil.rmtree(self._scratch, ignore_errors=True)
+        self.ended = True
         self.channel.event("exited", {"exitCode": code})
         self.channel.event("terminated")
 
@@ -271,9 +286,12 @@ class Session(Observer):
     def _wait(self, reason: str, extra: dict[str, Any] | None = None) -> str:
         with self.cv:
             self.stopped = True
-            self._resume = None
+            self._stops += 1
+            self._resume, self._early = self._early, None
             self.channel.event("stopped", {"reason": reason, "threadId": 1, "allThreadsStopped": True,
                                            **(extra or {})})
+            if self._resume is not None:  # sent before this stop: the client knows it goes on
+                self.channel.event("continued", {"threadId": 1, "allThreadsContinued": True})
             while self._resume is None:
                 self.cv.wait()
             command = self._resume
@@ -301,6 +319,10 @@ class Session(Observer):
         if self._phase != LIVE:
             self._rerun_statement(machine, stmt, step)
             return
+        if self._files_scratch and step > self._done_step:  # past what the run had done: files again
+            self._files_scratch = False
+            self._relocate_log(machine)
+        self._done_step = max(self._done_step, step - 1)
         self._follow(step, depth)
         if self._terminate:
             raise Terminate()
@@ -397,7 +419,10 @@ class Session(Observer):
         self._follow(step, len(machine.stack))
         if step >= self._target:
             self._phase = LIVE
-            self._relocate_log(machine)
+            self._files_scratch = True
+            if step > self._done_step:
+                self._files_scratch = False
+                self._relocate_log(machine)
             self._stop(machine, self._reason)
 
     def _searching(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:

@@ -7,6 +7,7 @@ give the explanation as plain text.
 """
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
@@ -75,9 +76,31 @@ def _codes() -> dict[tuple[str, int], Entry]:
     return found
 
 
+# A code or parameter number with more digits than this names nothing the tables know (they stop
+# at #5999 and G/M 999), so it is never converted: "G" and 310 nines is infinity as a float, and
+# int() refuses 5,000 digits.  Help, hover, completion and rename all look numbers up through here.
+MAX_LOOKUP_DIGITS = 9
+
+
+def code_key_of(number: float) -> int | None:
+    """``code_key`` of a G or M number, None for one no code has (infinite, NaN, or more than
+    MAX_LOOKUP_DIGITS digits)."""
+    return code_key(number) if math.isfinite(number) and abs(number) < 10**MAX_LOOKUP_DIGITS else None
+
+
+def parameter_number(digits: str) -> int | None:
+    """The number of ``#digits`` (``5067``), None for digits no parameter has: more than
+    MAX_LOOKUP_DIGITS of them (leading zeros aside) or any that is not an ASCII digit."""
+    if not (digits.isascii() and digits.isdigit()):
+        return None
+    significant = digits.lstrip("0")
+    return int(significant or "0") if len(significant) <= MAX_LOOKUP_DIGITS else None
+
+
 def code(letter: str, number: float) -> Entry | None:
     """The G or M code ``letter number`` (G38.2, M6); M codes without a row of their own are None."""
-    return _codes().get((letter.upper(), code_key(number)))
+    key = code_key_of(number)
+    return _codes().get((letter.upper(), key)) if key is not None else None
 
 
 def codes() -> Iterator[Entry]:
@@ -129,8 +152,8 @@ def words(kind: str) -> Iterator[Entry]:
     return (entry for entry in _words().values() if entry.kind == kind)
 
 
-_CODE = re.compile(r"([GM])\s*(\d+(?:\.\d)?)", re.IGNORECASE)
-_VARIABLE = re.compile(r"#?\s*(\d+)")
+_CODE = re.compile(r"([GM])\s*([0-9]+(?:\.[0-9])?)", re.IGNORECASE)
+_VARIABLE = re.compile(r"#?\s*([0-9]+)")
 
 
 def lookup(topic: str) -> Entry | None:
@@ -141,7 +164,8 @@ def lookup(topic: str) -> Entry | None:
         return code(match.group(1), float(match.group(2)))
     match = _VARIABLE.fullmatch(text)
     if match:
-        return variable(int(match.group(1)))
+        number = parameter_number(match.group(1))
+        return variable(number) if number is not None else None
     return word(text)
 
 
@@ -151,4 +175,5 @@ def describe(topic: str) -> str | None:
     return entry.text() if entry else None
 
 
-__all__ = ["Entry", "code", "codes", "describe", "lookup", "named_variables", "variable", "word", "words"]
+__all__ = ["Entry", "code", "code_key_of", "codes", "describe", "lookup", "named_variables", "parameter_number",
+           "variable", "word", "words"]

@@ -19,7 +19,7 @@ _PARAM = re.compile(r"#(\d*)$")
 _CODE = re.compile(r"(?<![A-Za-z0-9_])([GM])(\d*(?:\.\d*)?)$", re.IGNORECASE)
 _WORD = re.compile(r"(?<![A-Za-z0-9_#])([A-Za-z_][A-Za-z0-9_]*)?$")
 _LINE_START = re.compile(r"\s*(?:/\s*)?(?:N\d+\s*)?[A-Za-z_]*$", re.IGNORECASE)
-_USED_PARAM = re.compile(r"#(\d+)")
+_USED_PARAM = re.compile(r"#([0-9]+)")
 
 
 @dataclass(frozen=True)
@@ -79,7 +79,8 @@ def _subs(model: LanguageModel, path: str, start: int) -> list[Item]:
 
 def _params(lines: tuple[str, ...], start: int) -> list[Item]:
     """The numbers the file uses first, then every system variable with its name."""
-    used = sorted({int(m) for text in lines for m in _USED_PARAM.findall(text)})
+    used = sorted({number for text in lines for m in _USED_PARAM.findall(text)
+                   if (number := knowledge.parameter_number(m)) is not None})
     items = [_variable(number, start) for number in used]
     return items + [Item(entry.name, "variable", entry.title, entry.markdown(), start)
                     for entry in knowledge.named_variables() if int(entry.name[1:]) not in used]

@@ -15,7 +15,7 @@ from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.machine.tables import m_code_sub
 from edingcnc_lang.lint.walk import dialog_fields, literal_index
 from edingcnc_lang.syntax.printer import format_number
-from edingcnc_lang.machine.tables import ARG_PARAMS, code_key, is_read_only
+from edingcnc_lang.machine.tables import ARG_PARAMS, is_read_only
 from edingcnc_lang.lsp.lexer import Token, code_number, token_at, tokens
 from edingcnc_lang.lsp.model import LanguageModel, file_name
 
@@ -36,9 +36,9 @@ def hover_text(model: LanguageModel, path: str, line: int, col: int) -> str | No
     if token.kind == "code":
         return _code(model, path, token)
     if token.kind == "param":
-        return _param(model, path, int(token.text[1:]))
+        return _param(model, path, token.text[1:])
     if token.kind == "number" and token.text.isdigit() and _names_variables(file.line(line + 1)):
-        return _param(model, path, int(token.text))
+        return _param(model, path, token.text)
     if token.kind in ("function", "keyword", "command"):
         entry = knowledge.word(token.text)
         return entry.markdown() if entry else None
@@ -58,17 +58,22 @@ def _code(model: LanguageModel, path: str, token: Token) -> str | None:
     letter, number = code_number(token)
     entry = knowledge.code(letter, number)
     parts = [entry.markdown()] if entry else []
-    if letter == "M":
-        name = m_code_sub(code_key(number))
+    key = knowledge.code_key_of(number)
+    if letter == "M" and key is not None:
+        name = m_code_sub(key)
         found = model.resolve(path, name) if name else None
         if found:
             parts.append(("Runs " if entry is None else "Redefined by ") + sub_markdown(*found))
     return "\n\n---\n\n".join(parts) or None
 
 
-def _param(model: LanguageModel, path: str, number: int) -> str | None:
-    entry = knowledge.variable(number)
-    parts = [entry.markdown()] if entry else [f"**#{number}**: not a valid parameter (1..5999)"]
+def _param(model: LanguageModel, path: str, digits: str) -> str | None:
+    number = knowledge.parameter_number(digits)
+    entry = knowledge.variable(number) if number is not None else None
+    shown = digits if len(digits) <= knowledge.MAX_LOOKUP_DIGITS else digits[:knowledge.MAX_LOOKUP_DIGITS] + "…"
+    parts = [entry.markdown()] if entry else [f"**#{shown}**: not a valid parameter (1..5999)"]
+    if number is None:
+        return parts[0]
     value = constant_value(model, path, number)
     if value is not None:
         parts.append(f"Always set to `{format_number(value)}` in this file and its macro files.")

@@ -17,10 +17,10 @@ SUB_NAME = re.compile(r"\s*(?:/\s*)?(?:sub|gosub)\s+([A-Za-z0-9_]+)", re.IGNOREC
 _PIECES = re.compile(rf"""
     (?P<string>"[^"]*"?)
   | (?P<comment>;.*|\([^)]*\)?)
-  | (?P<param>\#\d+)
+  | (?P<param>\#[0-9]+)
   | (?P<function>(?:{_FUNCTION_NAMES})(?=\s*\[))
-  | (?P<code>[GM]\s*\d+(?:\.\d+)?)
-  | (?P<number>\d+(?:\.\d*)?|\.\d+)
+  | (?P<code>[GM]\s*[0-9]+(?:\.[0-9]+)?)
+  | (?P<number>[0-9]+(?:\.[0-9]*)?|\.[0-9]+)
   | (?P<other>[A-Za-z_]{{2,}}[A-Za-z0-9_]*|[A-Za-z][-+]?[\d.]*|.)
 """, re.IGNORECASE | re.VERBOSE)
 

@@ -7,7 +7,9 @@ editor jumps exactly where ``ecnc lint`` looks (the file, then ``macro.cnc`` and
 """
 from __future__ import annotations
 
+import errno
 import os
+import stat
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -39,7 +41,12 @@ class Place:
 
 
 class LanguageModel:
-    """Open documents plus the files on disk around them, parsed on demand and cached."""
+    """Open documents plus the files on disk around them, parsed on demand and cached.
+
+    Rename and references read the model in a worker thread while the server's thread opens and
+    changes documents: the open documents are iterated over a snapshot (``list(self.texts)``), and
+    a parsed file is replaced in the cache, never changed.
+    """
 
     def __init__(self) -> None:
         self.texts: dict[str, str] = {}  # unsaved editor contents by absolute path
@@ -89,7 +96,7 @@ class LanguageModel:
     def folder(self, path: str) -> list[SourceFile]:
         """Every source file of the folder of ``path`` (small enough to be macro code) and ``path`` itself."""
         folder = Path(path).parent
-        paths = {path} | {p for p in self.texts if Path(p).parent == folder}
+        paths = {path} | {p for p in list(self.texts) if Path(p).parent == folder}
         try:
             paths |= {os.fspath(p) for p in folder.iterdir() if _indexable(p)}
         except OSError:
@@ -99,8 +106,8 @@ class LanguageModel:
     def workspace(self) -> list[SourceFile]:
         """Macro files (``*.cnc``) under the workspace folders, and every open document.  An editor
         that opened single files, with no workspace folder, gets the macro files beside them."""
-        paths = dict.fromkeys(self.texts)
-        beside = {Path(p).parent: "*.[cC][nN][cC]" for p in self.texts if os.path.isabs(p)}
+        paths = dict.fromkeys(list(self.texts))
+        beside = {Path(p).parent: "*.[cC][nN][cC]" for p in paths if os.path.isabs(p)}
         folders = {Path(root): "**/*.[cC][nN][cC]" for root in self.roots} or beside
         for folder, pattern in folders.items():
             for found in folder.glob(pattern):
@@ -175,7 +182,11 @@ def sub_name_place(file: SourceFile, line: int) -> Place:
 
 
 def _stamp(path: str) -> tuple[int, int]:
+    """The version of a file on disk; OSError for anything but a regular file: opening a FIFO
+    would block the whole server until something writes to it, a device never ends."""
     info = os.stat(path)
+    if not stat.S_ISREG(info.st_mode):
+        raise OSError(errno.EINVAL, "not a regular file", path)
     return info.st_mtime_ns, info.st_size
 
 

@@ -13,7 +13,7 @@ from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.machine.tables import m_code_sub
 from edingcnc_lang.lint.project import sub_key
 from edingcnc_lang.lint.walk import walk
-from edingcnc_lang.machine.tables import code_key
+from edingcnc_lang.knowledge import code_key_of
 from edingcnc_lang.lsp.lexer import code_number, token_at
 from edingcnc_lang.lsp.model import LanguageModel, Place, definition_place
 
@@ -39,7 +39,8 @@ def sub_at(model: LanguageModel, path: str, line: int, col: int) -> tuple[Source
         return model.resolve(path, token.text)
     if token.kind == "code":
         letter, number = code_number(token)
-        name = m_code_sub(code_key(number)) if letter == "M" else None
+        key = code_key_of(number)
+        name = m_code_sub(key) if letter == "M" and key is not None else None
         return model.resolve(path, name) if name else None
     return None
 

@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.knowledge import parameter_number
 from edingcnc_lang.lint.model import SourceFile
 from edingcnc_lang.lint.names import is_entry_point
 from edingcnc_lang.lint.project import command_writes, sub_key
@@ -24,7 +25,7 @@ from edingcnc_lang.lsp.model import LanguageModel, Place, definition_place
 
 USER_VARIABLES = range(27, 5000)  # #1..#26 are the M-code subs' arguments, #5000 up the controller's
 _NEW_SUB = re.compile(r"[A-Za-z0-9_]+")
-_NEW_VARIABLE = re.compile(r"#?\s*(\d+)")
+_NEW_VARIABLE = re.compile(r"#?\s*([0-9]+)")
 
 
 class RenameRefused(ValueError):
@@ -51,9 +52,9 @@ def target_at(model: LanguageModel, path: str, line: int, col: int) -> Target | 
     if token is None:
         return None
     if token.kind == "param":
-        number = int(token.text[1:])
-        if number not in USER_VARIABLES:
-            raise RenameRefused(f"#{number} is not a user variable (#27..#4999): its number means something "
+        number = parameter_number(token.text[1:])
+        if number is None or number not in USER_VARIABLES:
+            raise RenameRefused(f"{token.text[:12]} is not a user variable (#27..#4999): its number means something "
                                 "to the controller or to an M-code sub")
         return Target(Place(path, line, token.start + 1, token.end), variable=number)
     if token.kind != "sub":
@@ -83,7 +84,8 @@ def rename(model: LanguageModel, path: str, line: int, col: int, new_name: str) 
 def new_text(new_name: str) -> str:
     """What replaces each place: the sub name as typed, a variable's number without its ``#``."""
     match = _NEW_VARIABLE.fullmatch(new_name.strip())
-    return str(int(match.group(1))) if match else new_name.strip()
+    number = parameter_number(match.group(1)) if match else None
+    return str(number) if number is not None else new_name.strip()
 
 
 def _sub_places(model: LanguageModel, path: str, target: Target, new_name: str) -> list[Place]:
@@ -105,10 +107,10 @@ def _variable_places(model: LanguageModel, path: str, target: Target, new_name: 
     assert target.variable is not None
     match = _NEW_VARIABLE.fullmatch(new_name.strip())
     if not match:
-        raise RenameRefused(f"{new_name!r} is not a variable: write #NUMBER")
-    new = int(match.group(1))
-    if new not in USER_VARIABLES:
-        raise RenameRefused(f"#{new} is not a user variable (#27..#4999)")
+        raise RenameRefused(f"{new_name[:40]!r} is not a variable: write #NUMBER")
+    new = parameter_number(match.group(1))
+    if new is None or new not in USER_VARIABLES:
+        raise RenameRefused(f"#{match.group(1)[:12]} is not a user variable (#27..#4999)")
     files = model.folder(path)
     if new != target.variable:
         for file in files:
@@ -123,7 +125,7 @@ def _variable_places_in(file: SourceFile, number: int) -> Iterator[Place]:
     """Where ``file`` names variable ``number``: the digits of each ``#n``, dlgmsg field and command target."""
     for index, text in enumerate(file.lines):
         for token in tokens(text):
-            if token.kind == "param" and int(token.text[1:]) == number:
+            if token.kind == "param" and parameter_number(token.text[1:]) == number:
                 yield Place(file.path, index, token.start + 1, token.end)
     digits = re.compile(rf"(?<![\w.#]){number}(?![\w.])|(?<=[uU]){number}(?![\w.])")
     for stmt, _scope in walk(file.body):

@@ -7,14 +7,16 @@ from __future__ import annotations
 
 import asyncio
 import os
+from dataclasses import dataclass
 from pathlib import Path
-from collections.abc import Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
+from cattrs import ClassValidationError, transform_error
 from lsprotocol import types as t
 from pygls.exceptions import JsonRpcException
 from pygls.lsp.server import LanguageServer
-from pygls.protocol import LanguageServerProtocol
+from pygls.protocol import LanguageServerProtocol, default_converter
 from pygls.uris import from_fs_path, to_fs_path
 from pygls.workspace.position_codec import PositionCodec, ServerTextPosition, ServerTextRange
 
@@ -31,7 +33,9 @@ from edingcnc_lang.lsp.model import LanguageModel, Place, file_name
 
 DEBOUNCE_SECONDS = 0.3  # lint once typing pauses, not on every keystroke
 REQUEST_FAILED = -32803  # LSP's RequestFailed: a rename refused, with the reason for the user
+CONTENT_MODIFIED = -32801  # LSP's ContentModified: the answer is out of date, the client asks again
 SOURCE = "ecnc"
+_CONVERTER = default_converter()  # the one pygls answers with, for results turned into JSON in a worker
 _KINDS = {"code": t.CompletionItemKind.Keyword, "sub": t.CompletionItemKind.Function,
           "variable": t.CompletionItemKind.Variable, "keyword": t.CompletionItemKind.Keyword,
           "command": t.CompletionItemKind.Method, "function": t.CompletionItemKind.Function}
@@ -53,13 +57,51 @@ def _clamped_positions(data: Any) -> Any:
     return data
 
 
+@dataclass(frozen=True)
+class _Refused:
+    """A request whose params do not fit its method: pygls would drop it unanswered (the client
+    waited for ever, as for ``formatting`` with ``tabSize`` -5); it is answered InvalidParams."""
+
+    id: int | str
+    method: str
+    why: str
+    code: int = t.ErrorCodes.InvalidParams
+
+
 class EcncProtocol(LanguageServerProtocol):
-    """pygls's protocol, with out-of-range positions clamped before a request is read."""
+    """pygls's protocol, with out-of-range positions clamped before a request is read and every
+    request answered, with an error when its params cannot be read."""
 
     def structure_message(self, data: dict[str, Any]) -> Any:
-        if isinstance(data, dict) and "params" in data:
-            data = {**data, "params": _clamped_positions(data["params"])}
-        return super().structure_message(data)
+        try:
+            if isinstance(data, dict) and "params" in data:
+                data = {**data, "params": _clamped_positions(data["params"])}
+            return super().structure_message(data)
+        except (JsonRpcException, RecursionError) as err:
+            ident = data.get("id")
+            if "jsonrpc" in data and "method" in data and isinstance(ident, (int, str)) and not isinstance(ident, bool):
+                method = str(data["method"])[:100]
+                if self.get_message_type(method) is None:  # and its params could not be read as JSON-RPC's
+                    return _Refused(ident, method, "not a method of ecnc lsp", t.ErrorCodes.MethodNotFound)
+                return _Refused(ident, method, "invalid params: " + _reason(err))
+            raise
+
+    def handle_message(self, message: Any) -> None:
+        if isinstance(message, _Refused):
+            self._send_response(message.id, None, t.ResponseError(code=message.code,
+                                                                  message=f"{message.method}: {message.why}"))
+            return
+        super().handle_message(message)
+
+
+def _reason(err: Exception) -> str:
+    """What cattrs found wrong (``invalid value @ $.params.options``), or the exception's message."""
+    if isinstance(err, RecursionError):
+        return "nested too deeply"
+    cause = err.__cause__
+    if isinstance(cause, ClassValidationError):
+        return "; ".join(transform_error(cause))[:500]
+    return str(err)[:500]
 
 
 class EcncServer(LanguageServer):
@@ -105,6 +147,23 @@ class EcncServer(LanguageServer):
             return path, position.line, position.character
         found = self.codec().position_from_client_units(lines, position)
         return path, found.line, found.character
+
+    def locations(self, places: Iterable[Place]) -> list[t.Location]:
+        """``location`` of many places: each file's URI and lines looked up once, and a line of
+        ASCII (nearly every line of a job) in the same units for the client, so no conversion."""
+        files: dict[str, tuple[str, Sequence[str]]] = {}
+        found = []
+        for place in places:
+            known = files.get(place.path)
+            if known is None:
+                known = files[place.path] = (self.uri(place.path), self.lines(place.path))
+            uri, lines = known
+            if place.line < len(lines) and lines[place.line].isascii():
+                found.append(t.Location(uri, t.Range(t.Position(place.line, place.start),
+                                                     t.Position(place.line, place.end))))
+            else:
+                found.append(self.location(place))
+        return found
 
     def location(self, place: Place) -> t.Location:
         server = ServerTextRange(ServerTextPosition(place.line, place.start), ServerTextPosition(place.line, place.end))
@@ -243,11 +302,29 @@ def _definition(ls: EcncServer, params: t.DefinitionParams) -> t.Location | None
     return ls.location(place) if place else None
 
 
+async def in_worker(ls: EcncServer, work: Callable[[], Any], result_type: type) -> Any:
+    """``work()`` in a worker thread, so that the server answers other requests meanwhile (a rename
+    of a sub with 260,000 calls takes seconds), with the collector paused as while parsing (it
+    would walk the parsed files again and again as the places pile up); its result turned into
+    JSON's lists and dicts there too.  ContentModified if a document changed meanwhile."""
+    def unstructured() -> Any:
+        with whole_trees():
+            return _CONVERTER.unstructure(work(), result_type)
+
+    before = dict(ls.model.texts)
+    result = await asyncio.to_thread(unstructured)
+    if any(ls.model.texts.get(path) is not text for path, text in before.items()):
+        raise JsonRpcException("a document changed while this was worked out: ask again", code=CONTENT_MODIFIED)
+    return result
+
+
 @server.feature(t.TEXT_DOCUMENT_REFERENCES)
-def _references(ls: EcncServer, params: t.ReferenceParams) -> list[t.Location]:
+async def _references(ls: EcncServer, params: t.ReferenceParams) -> Any:  # list[t.Location], as JSON
     path, line, col = ls.server_position(params.text_document.uri, params.position)
-    places = navigation.references(ls.model, path, line, col, params.context.include_declaration)
-    return [ls.location(place) for place in places]
+
+    def work() -> list[t.Location]:
+        return ls.locations(navigation.references(ls.model, path, line, col, params.context.include_declaration))
+    return await in_worker(ls, work, list[t.Location])
 
 
 @server.feature(t.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
@@ -370,19 +447,23 @@ def _prepare_rename(ls: EcncServer, params: t.PrepareRenameParams) -> t.PrepareR
 
 
 @server.feature(t.TEXT_DOCUMENT_RENAME)
-def _rename(ls: EcncServer, params: t.RenameParams) -> t.WorkspaceEdit | None:
+async def _rename(ls: EcncServer, params: t.RenameParams) -> Any:  # t.WorkspaceEdit, as JSON
     path, line, col = ls.server_position(params.text_document.uri, params.position)
     named = variables.annotation_name_at(ls.model, path, line, col)
-    if named is not None:
+    if named is not None:  # the name of a ;@var annotation: rename edits it there
         wrong = variables.check_new_name(params.new_name)
         if wrong:
             raise JsonRpcException(wrong, code=REQUEST_FAILED)
         return t.WorkspaceEdit(changes={ls.uri(path): [t.TextEdit(range=ls.location(named).range,
                                                                   new_text=params.new_name)]})
-    try:
-        found = rename.rename(ls.model, path, line, col, params.new_name)
-    except rename.RenameRefused as err:
-        raise JsonRpcException(str(err), code=REQUEST_FAILED) from None
     text = rename.new_text(params.new_name)
-    return t.WorkspaceEdit(changes={ls.uri(file): [t.TextEdit(range=ls.location(place).range, new_text=text)
-                                                   for place in places] for file, places in found.items()})
+
+    def work() -> t.WorkspaceEdit:
+        try:
+            found = rename.rename(ls.model, path, line, col, params.new_name)
+        except rename.RenameRefused as err:
+            raise JsonRpcException(str(err), code=REQUEST_FAILED) from None
+        return t.WorkspaceEdit(changes={ls.uri(file): [t.TextEdit(range=place.range, new_text=text)
+                                                       for place in ls.locations(places)]
+                                        for file, places in found.items()})
+    return await in_worker(ls, work, t.WorkspaceEdit)

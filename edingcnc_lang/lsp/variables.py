@@ -11,6 +11,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from edingcnc_lang.knowledge import parameter_number
 from edingcnc_lang.lint.project import Project
 from edingcnc_lang.lint.variable_uses import VariableUses
 from edingcnc_lang.lsp.actions import Fix, Finding, _insert_line
@@ -61,7 +62,7 @@ def _number_at(model: LanguageModel, path: str, line: int, col: int) -> int | No
     """The variable number of a ``#n`` under the cursor."""
     file = model.source(path)
     token = token_at(file.line(line + 1), col) if file else None
-    return int(token.text[1:]) if token is not None and token.kind == "param" else None
+    return parameter_number(token.text[1:]) if token is not None and token.kind == "param" else None
 
 
 def _where(use: Use | Candidate) -> str:
@@ -106,7 +107,9 @@ def inlay_hints(model: LanguageModel, path: str, first: int, last: int) -> list[
         for token in tokens(text):
             if token.kind != "param":
                 continue
-            number = int(token.text[1:])
+            number = parameter_number(token.text[1:])
+            if number is None:  # digits no parameter has (a 5,000-digit #...)
+                continue
             if number not in names:
                 names[number] = varmap.names.name(number)
             name = names[number]

@@ -91,3 +91,25 @@ def test_ecnc_help_explains_language_words_from_the_table() -> None:
     assert invoke("lint", "--explain", "G1").stdout.startswith("G1: straight feed move")
     assert invoke("help", "G503").stdout.startswith("G503 (error)")  # the lint code wins
     assert invoke("help", "G999").exit_code == 2
+
+
+@pytest.mark.parametrize("topic", ["G" + "9" * 310, "M" + "9" * 400, "G 1" + "0" * 20, "#" + "9" * 5000, "9" * 5000,
+                                   "G\u0663", "#\u0665\u0660\u0660\u0668"])
+def test_a_number_past_every_table_names_nothing(topic: str) -> None:
+    """``ecnc help`` and the LSP's hover share this lookup: G and 310 nines was an OverflowError,
+    5,000 digits a ValueError; digits other than ASCII ones name nothing (the parser's rule)."""
+    assert knowledge.lookup(topic) is None and knowledge.describe(topic) is None
+
+
+def test_leading_zeros_and_the_largest_numbers_still_look_up() -> None:
+    assert knowledge.lookup("#" + "0" * 30 + "5008").name == "#5008"
+    assert knowledge.code("G", 1e308) is None and knowledge.code("G", float("nan")) is None
+    assert knowledge.code_key_of(38.2) == 382 and knowledge.parameter_number("0" * 5000) == 0
+
+
+@pytest.mark.parametrize("topic", ["G" + "9" * 310, "#" + "9" * 5000])
+def test_ecnc_help_refuses_it_with_a_usage_error(topic: str) -> None:
+    from tests.cli_runner import invoke
+
+    result = invoke("help", topic)
+    assert result.exit_code == 2 and "no command or lint code" in result.output and len(result.output) < 500
