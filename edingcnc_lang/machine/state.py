@@ -22,7 +22,7 @@ from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
-from edingcnc_lang.machine.spindle import SpindleError, mean_rpm_points
+from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import Observer
 
 if TYPE_CHECKING:
@@ -209,6 +209,8 @@ class MachineState:
         self.css_max = 0.0                 # the D word of G96 (0: none)
         self.sync_pitch = 0.0              # K of G33, mm per revolution
         self.spindle = 5                   # M3, M4 or M5
+        self.spindle_override = 100.0      # M51 P..: percent (manual p. 61)
+        self.spindle_override_on = True    # M48 on, M49 off, M51 P<0 off
         self.coolant: set[int] = set()
         self.selected_tool = 0
         self.tool_z = 0.0                  # active G43 length
@@ -310,17 +312,39 @@ class MachineState:
         """X words and the work X position are diameters (a lathe with diameterProgramming = 1)."""
         return self.config.diameter_mode
 
-    def css(self) -> Css | None:
-        """Constant surface speed in force (G96), centred on the current work X0; None under G97."""
+    @property
+    def spindle_factor(self) -> float:
+        """The spindle speed override in force (M48/M49/M51, manual p. 61) as a factor."""
+        return self.spindle_override / 100.0 if self.spindle_override_on else 1.0
+
+    def _spindle_override(self, m: int, p: float | None) -> None:
+        """M48 switches the spindle override on at 100 % (there is no spindle knob in a simulation), M49
+        off; M51 P.. on at P percent (P0: the knob's 100 %), M51 without P on at the value it had."""
+        self.spindle_override_on = m != 49
+        if m == 48 or (m == 51 and p == 0):
+            self.spindle_override = 100.0
+        elif m == 51 and p is not None:
+            self.spindle_override = p
+
+    def css(self, overridden: bool = True) -> Css | None:
+        """Constant surface speed in force (G96), centred on the current work X0; None under G97.
+        The spindle override scales the surface speed the spindle keeps (``overridden``)."""
         if self.css_setting is None:
             return None
         surface, max_rpm, min_rpm = self.css_setting
-        return Css(surface, max_rpm, min_rpm, self.offset()[0])
+        return Css(surface * (self.spindle_factor if overridden else 1.0), max_rpm, min_rpm, self.offset()[0])
 
-    def rpm_at(self, x: float) -> float:
-        """The programmed spindle speed with the tool at machine X ``x`` (also while it is stopped)."""
-        css = self.css()
-        return css.rpm(x) if css is not None else self.rpm
+    def rpm_at(self, x: float, overridden: bool = True) -> float:
+        """The spindle speed with the tool at machine X ``x`` (also while it is stopped): the programmed
+        one, times the spindle override unless ``overridden`` is False, within the machine's range."""
+        css = self.css(overridden)
+        return css.rpm(x) if css is not None else self._overridden_rpm() if overridden else self.rpm
+
+    def _overridden_rpm(self) -> float:
+        """The G97 speed the spindle turns at under the spindle override, within the machine's range."""
+        if self.spindle_factor == 1.0:
+            return self.rpm
+        return clamp_rpm(self.rpm * self.spindle_factor, self.config.spindle_max_rpm, self.config.spindle_min_rpm)
 
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
               sync: float = 0.0) -> None:
@@ -363,7 +387,7 @@ class MachineState:
         if self.spindle == 5:
             return 0.0, None
         css = self.css()
-        return (0.0, css) if css is not None else (self.rpm, None)
+        return (0.0, css) if css is not None else (self._overridden_rpm(), None)
 
     def caller(self) -> int:
         """``Move.caller`` of a move made now: the line of the outermost sub call, 0 at the top level."""
@@ -373,7 +397,7 @@ class MachineState:
         """The spindle speed that gives a per-revolution move through machine X ``xs`` its true time."""
         css = self.css()
         if css is None:
-            return self.rpm
+            return self._overridden_rpm()
         try:
             return mean_rpm_points(css, xs)
         except SpindleError as err:

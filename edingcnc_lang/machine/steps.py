@@ -30,6 +30,7 @@ from edingcnc_lang.machine.state import (
 
 
 M_60 = t.code_key(60)
+MAX_OVERRIDE = 1000.0  # percent: M50/M51 P above it is a typo (the --feed-override knob's range)
 
 
 class LineSteps(MachineState):
@@ -68,8 +69,20 @@ class LineSteps(MachineState):
         self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
 
     def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        """M48..M51; the planner follows them (``M50 P0`` switches the feed override off)."""
-        data = {"m": code // 10, **({"p": words["P"]} if "P" in words else {})}
+        """M48..M53 (manual 3.7.5, p. 61): the planner follows the feed override (M48..M50), the spindle's
+        (M51) changes the speed the spindle turns at; ``M50 P0``/``M51 P0`` wait for the operator's knob."""
+        m = code // 10
+        p = words.get("P")
+        if m in (50, 51) and p is not None and p > MAX_OVERRIDE:
+            raise self.fail(f"M{m} P{format_value(p)}: an override is at most {MAX_OVERRIDE:g} percent", span)
+        if m in (48, 49) or (m == 51 and (p is None or p >= 0)):
+            self._spindle_override(m, p)
+        if m in (50, 51) and p == 0:
+            self.canon.event(Event("operator_wait", self.path, self.line,
+                                   {"m": m, "override": "feed" if m == 50 else "spindle"}))
+        elif m == 51 and p is not None and p < 0:
+            self.spindle_override_on = False  # off; the value stays (p. 61)
+        data = {"m": m, **({"p": p} if p is not None else {})}
         self.canon.event(Event("override", self.path, self.line, data))
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
@@ -227,6 +240,7 @@ class LineSteps(MachineState):
                              ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
         self.canon.event(Event("override", self.path, self.line, {"m": 48}))
+        self._spindle_override(48, None)
         if code != M_60:
             self.spindle = 5
             self.coolant = set()
