@@ -328,7 +328,9 @@ def test_feed_move_without_feed_is_g1516() -> None:
 # ------------------------------------------------------------------ M30 resets and word rules
 
 def test_m30_resets_modes_but_not_the_coordinate_system() -> None:
-    result, _ = run("G18 G91 G93 G1 X1 F100\nG10 L2 P2 X5\nG55 M3 S100 M8\nG41 D1\n#100 = #5152\nM30\n")
+    # G41 in G17: a mill compensates in XY only (manual 3.6.13, p. 27); G18 is reset by the second run
+    result, _ = run("G91 G93 G1 X1 F100\nG10 L2 P2 X5\nG55 M3 S100 M8\nG41 D1\n#100 = #5152\nM30\n")
+    assert "G17" in run("G18\nM30\n")[0].modal
     assert result.variables[100] == 1.0 and result.variables[5152] == 0.0
     for code in ("G1", "G17", "G90", "G94", "G40", "G55"):  # G1: manual 3.7.1 (LinuxCNC's M2 leaves G1 too)
         assert code in result.modal
