@@ -16,9 +16,6 @@ from edingcnc_lang.canon import Event
 from edingcnc_lang.machine.evaluator import param_index
 from edingcnc_lang.machine.state import CommandTable, MachineState, StepTable, format_value
 
-# M90..M97 -> the [SPINDLE_n] section whose offsets apply (manual 3.7.2: M91..M93 the 2nd..4th spindle;
-# the ini's comments name [SPINDLE_3] "Mounted Probe M95" and [SPINDLE_4] "Mounted camera M97").
-SPINDLE_SECTION = {90: 0, 91: 1, 92: 2, 93: 3, 95: 3, 97: 4}
 # 3D printing (3.7.12): what S means for each code, and its unit.
 PRINTER = {104: ("extruder", "degC"), 109: ("extruder", "degC"), 140: ("bed", "degC"), 190: ("bed", "degC"),
            143: ("extruder_max", "degC"), 106: ("fan", "percent"), 107: ("fan", "percent")}
@@ -66,10 +63,9 @@ class Devices(MachineState):
     def _select_spindle(self, m: int) -> None:
         """M90..M97: #5390, and the selected spindle's offsets move the controlled point (3.7.2)."""
         self.params.set(t.SPINDLE_SELECTED, float(m - 90))
-        section = SPINDLE_SECTION.get(m)
-        offsets = self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
-        if tuple(self.spindle_offset) != offsets:
-            self.spindle_offset = offsets
+        before = self.spindle_offset
+        self.spindle_selected = m
+        if self.spindle_offset != before:
             self._offsets_changed()
 
     def _modbus(self, stmt: n.Command) -> None:

@@ -13,7 +13,8 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.errors import Location, MachineError
 
 LIVE_RANGES = (range(t.POS_WORK, t.POS_WORK + 6), range(t.SPINDLE_SPEED, t.POS_MACHINE + 6))
-OFFSET_RANGES = (range(t.G92_OFFSET, t.G92_OFFSET + 6), range(t.COORD_SYSTEM, t.COORD_OFFSETS + 9 * t.COORD_STRIDE))
+OFFSET_RANGES = (range(t.G92_OFFSET, t.G92_OFFSET + 6), range(t.COORD_SYSTEM, t.COORD_OFFSETS + 9 * t.COORD_STRIDE),
+                 range(t.ALT_SPINDLE_OFFSET, t.ALT_SPINDLE_OFFSET + 3))
 
 
 class Parameters:

@@ -32,6 +32,7 @@ if TYPE_CHECKING:
 INCH = t.MM_PER_INCH
 MAX_CALL_DEPTH = 64
 MIN_PROBE_DISTANCE = 0.254
+PROBE_BACK_OFF = 0.254  # mm the probe backs off after it trips (manual 3.6.10.1; the RS274/NGC canon's)
 G = t.code_key  # G(38.2) -> 382
 
 AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
@@ -40,6 +41,10 @@ LINEAR_AXES = frozenset("XYZ")
 UNSUPPORTED_MOTION: frozenset[int] = frozenset()  # every motion code of the tables runs
 PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1))  # M0, M1 (M60 ends the program like M30)
 SPINDLE_SELECT = tuple(range(90, 98))  # M90 standard spindle, M91..M97 alternate spindles (#5390 = 0..7)
+# M92..M97 -> the [SPINDLE_n] section whose offsets apply (manual 3.7.2: M91..M93 the 2nd..4th spindle;
+# the ini's comments name [SPINDLE_3] "Mounted Probe M95" and [SPINDLE_4] "Mounted camera M97");
+# M91's offsets are #5391..#5393 (MachineState.spindle_offset).
+SPINDLE_SECTION = {92: 2, 93: 3, 95: 3, 97: 4}
 ROTARY = (3, 4, 5)
 
 # G codes as integer tenths, computed once (they are compared on every line).
@@ -229,7 +234,8 @@ class MachineState:
         self.clamped = False               # M26: the rotary axes are clamped until M27
         self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
         self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
-        self.spindle_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the selected spindle's (M91..M97)
+        self.spindle_selected = 90         # M90 (the standard spindle) .. M97
+        self.resolution_factor = 1.0       # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
@@ -260,6 +266,10 @@ class MachineState:
             initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
             initial[t.SOFT_LIMIT_POS + axis] = joint.positive_limit
             initial[t.HOME_POSITION + axis] = joint.home_position
+        alternate = self.config.spindle_offsets[1]  # [SPINDLE_1], the 2nd spindle (M91), else the saved #5391..#5393
+        if any(alternate):
+            for axis in range(3):
+                initial[t.ALT_SPINDLE_OFFSET + axis] = alternate[axis]
         for axis in range(3):  # the tool-change area (manual 3.1: #5131..#5133, #5141..#5143)
             initial[t.TCA_NEGATIVE + axis] = self.config.tca_negative[axis]
             initial[t.TCA_POSITIVE + axis] = self.config.tca_positive[axis]
@@ -311,6 +321,17 @@ class MachineState:
     def diameter_mode(self) -> bool:
         """X words and the work X position are diameters (a lathe with diameterProgramming = 1)."""
         return self.config.diameter_mode
+
+    @property
+    def spindle_offset(self) -> tuple[float, float, float]:
+        """The selected spindle's offsets (manual 3.7.2): M91's are #5391..#5393 (the ini's [SPINDLE_1] at the
+        start; a program may write them), M92..M97 their [SPINDLE_n] sections', M90 none."""
+        m = self.spindle_selected
+        if m == 91:
+            values = self.params.values
+            return (values[t.ALT_SPINDLE_OFFSET], values[t.ALT_SPINDLE_OFFSET + 1], values[t.ALT_SPINDLE_OFFSET + 2])
+        section = SPINDLE_SECTION.get(m)
+        return self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
 
     @property
     def spindle_factor(self) -> float:
