@@ -208,7 +208,7 @@ class Moves(MachineState):
         self.params.set(t.PROBE_TRIPPED, 1.0)
         self._probe_back_off(start, feed)
 
-    def _probe_back_off(self, start: Sequence[float], feed: float) -> None:
+    def _probe_back_off(self, start: tuple[float, ...], feed: float) -> None:
         """Manual 3.6.10.1 (p. 25): "Wenn die Sonde auslöst, wird die Sonde am Ende der Befehlsausführung leicht
         vom Auslösepunkt zurückgezogen": back towards the start by the RS274/NGC reference canon's 0.254 mm
         (0.01 inch: the same length; the shortest probe move the manual allows), never past the start."""
