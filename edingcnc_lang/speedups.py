@@ -62,9 +62,9 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     else:
         from functools import partial
 
-        from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+        from edingcnc_lang.syntax.input_limits import MAX_GCODE_LINE, MAX_NUMBER_DIGITS
 
-        non_plain_lines = partial(_CORE.non_plain_lines, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS)
+        non_plain_lines = partial(_CORE.non_plain_lines, MAX_GCODE_LINE, MAX_NUMBER_DIGITS)
     return non_plain_lines(chunk)
 
 

@@ -56,16 +56,18 @@ def test_input_past_a_limit_is_a_clear_error_in_every_command(tmp_path: Path, so
 
 
 def _at_the_limits() -> list[str]:
-    k = MAX_LINE_OPERATORS - 2  # "#1 =" holds two
+    k = MAX_LINE_OPERATORS - 1  # "If [" holds one (and one bracket)
+    brackets = MAX_BRACKET_DEPTH - 1
     return ["+".join(["1"] * (k + 1)), "-" * k + "1", "#" * k + "1", "SQRT[" * k + "1" + "]" * k,
-            "[1+" * k + "1" + "]" * k, "[" * MAX_BRACKET_DEPTH + "1" + "]" * MAX_BRACKET_DEPTH,
+            "[1+" * k + "1" + "]" * k, "[" * brackets + "1" + "]" * brackets,
             " EQ ".join(["1"] * (k + 1)), " and ".join(["1"] * (k + 1)), "**".join(["1"] * (k + 1))]
 
 
 @pytest.mark.parametrize("expression", _at_the_limits(), ids=lambda e: e[:12])
 def test_input_at_every_limit_goes_through_every_stage(tmp_path: Path, expression: str) -> None:
+    # in an If condition: a G-code line holds at most 256 characters (manual 3.4, E114), a macro statement more
     depth = MAX_BLOCK_DEPTH - 1
-    text = "If [1]\n" * depth + "While [0]\n#1 = " + expression + "\nEndWhile\n" + "EndIf\n" * depth + "M30\n"
+    text = "If [0]\n" + "If [1]\n" * (depth - 1) + "If [" + expression + "]\nEndIf\n" + "EndIf\n" * depth + "M30\n"
     program = parse_text(text)
     printed = program_text(program)
     assert program_text(parse_text(printed)) == printed
@@ -76,8 +78,9 @@ def test_input_at_every_limit_goes_through_every_stage(tmp_path: Path, expressio
     assert {d.code for d in lint_paths([job])} <= {"F601"}  # long lines: the only finding
 
 
-def test_a_word_with_calls_at_the_limit_prints_back_within_it() -> None:
-    text = "G1 A " + "SIN[" * MAX_LINE_OPERATORS + "0" + "]" * MAX_LINE_OPERATORS + "\n"
+def test_a_word_with_calls_prints_back_within_the_limits() -> None:
+    calls = 49  # as many as a G-code line of 256 characters holds with the printer's bracket (manual 3.4)
+    text = "G1 A " + "SIN[" * calls + "0" + "]" * calls + "\n"
     printed = program_text(parse_text(text))
     assert printed.startswith("G1 A[SIN[")  # the printer's bracket is not an operator
     assert program_text(parse_text(printed)) == printed
@@ -93,9 +96,11 @@ def test_a_huge_line_is_read_only_up_to_the_limit(tmp_path: Path) -> None:
 
 
 def test_the_limits_leave_long_real_lines_alone(tmp_path: Path) -> None:
-    plain = "G1 " + " ".join(f"X{i}.125" for i in range(3000))  # 30,000 characters of plain words
-    assert len(plain) < MAX_LINE_LENGTH
-    parse_text(plain + "\n" + "#1 = [[#2 + 1] * [#3 - 2]] / SQRT[#4 + 16] ; " + "-" * 500 + "\n")
+    # a macro statement of 30,000 characters, a G-code line of the manual's 256 (3.4) with a long expression
+    message = 'msg "' + " ".join(f"X{i}.125" for i in range(3000)) + '"'
+    assert len(message) < MAX_LINE_LENGTH
+    code = "#1 = [[#2 + 1] * [#3 - 2]] / SQRT[#4 + 16] ; "
+    parse_text(message + "\n" + code + "-" * (256 - len(code)) + "\n")
 
 
 

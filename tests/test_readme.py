@@ -24,8 +24,8 @@ def test_the_embedding_example_runs(tmp_path: Path) -> None:
     result = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     machine, tripped, moves = result.stdout.rsplit(" ", 2)
-    assert tripped == "1.0" and moves.strip() == "2"   # the probe tripped, one rapid and one probe move
-    assert "-9.0" in machine                         # where the host said it touched: 1 mm above the target
+    assert tripped == "1.0" and moves.strip() == "3"   # the probe tripped: a rapid, the probe move, its back-off
+    assert "-8.746" in machine  # 1 mm above the target, where the host said it touched, then 0.254 mm back (p. 25)
 
 
 def test_errmsg_stops_a_run_with_its_own_error_type() -> None:

@@ -339,6 +339,9 @@ def _read_spindle_offset(ini: IniFile, number: int) -> tuple[float, float, float
     return (x, y, z)
 
 
+START_COORD_SYSTEM = 5220  # the work offset selected when the machine starts (manual 3.3)
+
+
 def _read_variables(ini: IniFile) -> Mapping[int, float]:
     """Persisted parameters from ``#n = value`` lines; other numbers are ignored like unknown keys."""
     from edingcnc_lang.config.ini import VARIABLE_KEY
@@ -348,6 +351,12 @@ def _read_variables(ini: IniFile) -> Mapping[int, float]:
         match = VARIABLE_KEY.fullmatch(key)
         if match and is_persisted(int(match.group(1))):
             values[int(match.group(1))] = ini.get_float("VARIABLES", key, 0.0)
+            if int(match.group(1)) == START_COORD_SYSTEM and values[START_COORD_SYSTEM] not in range(1, 10):
+                # manual 3.3 (p. 7): "Es ist ein Fehler, dass der Wert von Parameter 5220 alles andere als eine
+                # ganze Zahl zwischen eins und neun ist"
+                raise ConfigError(f"#5220 = {ini.get_str('VARIABLES', key, '')} in [VARIABLES]: the coordinate system "
+                                  "the machine starts in must be a whole number 1..9 (1 = G54 .. 9 = G59.3)",
+                                  ini.location("VARIABLES", key))
     return MappingProxyType(values)
 
 

@@ -21,6 +21,7 @@ static Py_ssize_t expect(Parser *p, int kind)
 #define OP_MINUS 6
 #define OP_PLUS 7
 #define OP_SLASH 9
+#define LINE_NUMBER_DIGITS 5  /* input_limits.LINE_NUMBER_DIGITS (manual 3.4.1) */
 
 static PyObject *param(Parser *p, Py_ssize_t *start, Py_ssize_t *end)
 {
@@ -302,6 +303,11 @@ static PyObject *read_block(const char *s, Py_ssize_t size, PyObject *path, PyOb
             value = operand(&p, &start, &end);
             if (value == NULL)
                 goto done;
+            if (letter == 'N' && PyList_Size(words) == 0 && end - start > LINE_NUMBER_DIGITS) {
+                Py_DECREF(value);  /* a line number of more than five digits: the grammar's */
+                p.gave_up = 1;
+                goto done;
+            }
             values[0] = letters[letter - 'A'];
             Py_INCREF(values[0]);
             values[1] = value;

@@ -102,7 +102,7 @@ done:
     return failed;
 }
 
-/* An If or a While: its condition's reads, then its branches or body (an If that reads #5380 with
+/* An If or a While: its condition's reads, then its branches or body (an If that reads #5380 or #5397 with
  * the scopes walk.simulation_branches gives); ``*here`` becomes the guarded scope after an If that
  * ends the program in simulation. */
 static int survey_head(Survey *sv, PyObject *stmt, PyObject *scope, PyObject **here, int is_while)
@@ -121,7 +121,7 @@ static int survey_head(Survey *sv, PyObject *stmt, PyObject *scope, PyObject **h
         goto done;
     }
     for (i = 0; i < PyList_Size(pairs) && !reads_simulation; i++) {
-        reads_simulation = PyObject_RichCompareBool(PyTuple_GetItem(PyList_GetItem(pairs, i), 1), sv->simulation, Py_EQ);
+        reads_simulation = PySequence_Contains(sv->simulation, PyTuple_GetItem(PyList_GetItem(pairs, i), 1));
         if (reads_simulation < 0)
             goto done;
     }

@@ -171,12 +171,12 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     PyObject *text, *start_obj, *offset_obj, *arc_class, *plane_name, *end = NULL, *arc;
     const char *s;
     Py_ssize_t len;
-    double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, rel, tiny;
-    double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, limit, length;
+    double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, tiny;
+    double s1, s2, e1, e2, c1, c2, r1, r2, a0, a1, delta, dist, length;
     int seen[26] = {0}, incremental, motion, plane, reverse, clockwise, full, k, axes = 0, centre_words;
     (void)self;
-    if (!PyArg_ParseTuple(args, "UOOdpidipddddO!U", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
-                          &feed, &plane, &reverse, &tolerance, &epsilon, &rel, &tiny, &PyType_Type, &arc_class,
+    if (!PyArg_ParseTuple(args, "UOOdpidipdddO!U", &text, &start_obj, &offset_obj, &scale, &incremental, &motion,
+                          &feed, &plane, &reverse, &tolerance, &epsilon, &tiny, &PyType_Type, &arc_class,
                           &plane_name))
         return NULL;
     if (plane < 0 || plane > 2) {
@@ -239,8 +239,7 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
         c2 = s2 + (SEEN(second_word[plane]) ? VALUE(second_word[plane]) : 0.0) * scale;
         if (py_hypot(s1 - c1, s2 - c2, &r1) < 0 || py_hypot(e1 - c1, e2 - c2, &r2) < 0)
             return NULL;
-        limit = rel * r1 > tolerance ? rel * r1 : tolerance;
-        if (r1 < tiny || fabs(r1 - r2) > limit)
+        if (r1 < tiny || fabs(r1 - r2) > tolerance)  /* manual p. 20: 0.002 mm, whatever the radius */
             Py_RETURN_NONE;  /* the general path reports it */
     }
     a0 = py_atan2(s2 - c2, s1 - c1);

@@ -267,6 +267,7 @@ static Py_ssize_t skip_gap(const char *s, Py_ssize_t len, Py_ssize_t i)
 static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
 {
     Py_ssize_t i = skip_gap(s, len, 0), words = 0, run;
+    int line_number;
     if (i < 0)
         return 0;
     for (;;) {
@@ -274,6 +275,7 @@ static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
             return words > 0;
         if (!((s[i] >= 'A' && s[i] <= 'Z') || (s[i] >= 'a' && s[i] <= 'z')))
             return 0;
+        line_number = s[i] == 'N' || s[i] == 'n';
         i++;
         while (i < len && is_blank(s[i]))
             i++;
@@ -282,7 +284,7 @@ static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
         if (i < len && is_digit(s[i])) {
             for (run = 0; i < len && is_digit(s[i]); i++)
                 run++;
-            if (run > 300)
+            if (run > 300 || (line_number && run > 5))  /* N: five digits at most (manual 3.4.1) */
                 return 0;
             if (i < len && s[i] == '.') {
                 for (i++, run = 0; i < len && is_digit(s[i]); i++)

@@ -19,9 +19,9 @@ from typing import NamedTuple
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.records import record
 from edingcnc_lang.syntax.fastparse import COMPILED_READER
-from edingcnc_lang.machine.tables import SIMULATION, code_key
+from edingcnc_lang.machine.tables import code_key
 from edingcnc_lang.lint.evaluate import params_in
-from edingcnc_lang.lint.walk import END_OF_PROGRAM, Code, Scope, literal_index, reads, simulation_branches
+from edingcnc_lang.lint.walk import END_OF_PROGRAM, GUARD_PARAMS, Code, Scope, literal_index, reads, simulation_branches
 
 Use = tuple[n.Param, "int | None", Scope]  # a parameter read or assigned, its literal index, where
 Walked = tuple[tuple[n.Stmt, Scope], ...]
@@ -156,7 +156,7 @@ def _compiled() -> Callable[[_Survey, Sequence[n.Stmt], Scope], None] | None:
     from edingcnc_lang import _lexer  # type: ignore[attr-defined]
 
     return partial(_lexer.survey, code_key, literal_index, Scope, simulation_branches, _other_reads, BlockCodes,
-                   END_OF_PROGRAM, SIMULATION)
+                   END_OF_PROGRAM, GUARD_PARAMS)
 
 
 def survey(body: Sequence[n.Stmt]) -> FileFacts:
@@ -222,7 +222,7 @@ class _Survey:
                     all_reads.extend([(param, index, here) for param, index in pairs])
                 if isinstance(stmt, n.While):
                     visit(stmt.body, here)
-                elif any(index == SIMULATION for _param, index in pairs):  # most conditions do not read #5380
+                elif any(index in GUARD_PARAMS for _param, index in pairs):  # most conditions read neither guard
                     then_guard, else_guard, exits = simulation_branches(stmt)
                     guarded = Scope(scope.sub, True)
                     visit(stmt.then, guarded if then_guard else here)

@@ -142,11 +142,13 @@ def m_code_without_meaning(file: SourceFile, project: Project) -> Iterator[Diagn
 
 @rule("G504")
 def probe_guard(file: SourceFile, project: Project) -> Iterator[Diagnostic]:
-    """A probe move only makes sense on a real machine, so it belongs under the simulation guard."""
+    """A probe move only makes sense on a real machine, so it belongs under a guard that keeps it out of the
+    job's rendering (``If [#5397 == 0]``) or out of simulation and rendering (``#5380`` too)."""
     for block in project.facts(file).coded:
         for key, word in block.g:  # (a loop here, not a call: this runs for every coded block)
             if key == PROBE:
                 if not project.is_guarded(file, block.scope):
-                    yield at("G504", "G38.2 runs in simulation and rendering too: wrap it in "
-                             "If [[#5380 == 0] and [#5397 == 0]] ... EndIf", word.span)
+                    yield at("G504", "G38.2 runs while the job is rendered too: wrap it in If [#5397 == 0] ... EndIf "
+                             "(not while rendering), or If [[#5380 == 0] and [#5397 == 0]] (nor in simulation)",
+                             word.span)
                 break

@@ -10,7 +10,7 @@ from collections.abc import Iterator, Sequence
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.records import record
-from edingcnc_lang.machine.tables import SIMULATION, code_key
+from edingcnc_lang.machine.tables import RENDERING, SIMULATION, code_key
 from edingcnc_lang.lint.evaluate import constant_index, evaluate, params_in
 
 END_OF_PROGRAM = frozenset(code_key(c) for c in (2, 30))
@@ -33,13 +33,18 @@ def walk(body: Sequence[n.Stmt]) -> list[tuple[n.Stmt, Scope]]:
     return list(survey(body).walked)
 
 
+# What a guard reads: #5380 (simulation) and #5397 (rendering, the job's preview); real macros guard their
+# probes with either (the Sorotec macro with If [#5397 == 0] alone: its simulation may probe, for testing).
+GUARD_PARAMS = frozenset({SIMULATION, RENDERING})
+
+
 def simulation_value(index: int) -> float | None:
-    """Parameter lookup for a simulated run: #5380 is 1, nothing else is known."""
-    return 1.0 if index == SIMULATION else None
+    """Parameter lookup for a run that simulates and renders: #5380 and #5397 are 1, nothing else is known."""
+    return 1.0 if index in GUARD_PARAMS else None
 
 
 def simulation_branches(stmt: n.If) -> tuple[bool, bool, bool]:
-    """For an If whose condition reads #5380: which branches never run in simulation (then, else),
+    """For an If whose condition reads #5380 or #5397: which branches never run in simulation or rendering (then, else),
     and whether the If ends the program or aborts whenever it runs in simulation.
 
     A condition that cannot be decided counts as guarding both branches (the author checked

@@ -25,7 +25,7 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import plain_block, plain_words
-from edingcnc_lang.machine.geometry import RADIUS_TOLERANCE_REL, TINY, ArcError, radius_tolerance
+from edingcnc_lang.machine.geometry import TINY, ArcError, radius_tolerance
 from edingcnc_lang.machine.plain_runs import NO_MOTION
 from edingcnc_lang.machine.state import (
     AXIS_SET,
@@ -262,7 +262,7 @@ class BulkPath(MachineState):
         plane = PLANE_OF[self.modal["plane"]]
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
         fixed = (_PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
-                 self.config.full_circle_theta_epsilon, RADIUS_TOLERANCE_REL, TINY, Arc, plane)
+                 self.config.full_circle_theta_epsilon, TINY, Arc, plane)
 
         def read(text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
             found = _COMPILED_ARC(text, start, offset, scale, incremental, motion, feed, *fixed)

@@ -43,10 +43,16 @@ class CompensationSteps(MachineState):
         if self.modal["cutter_comp"] != G_40:
             raise self.fail(f"{t.code_name('G', code)}: cutter compensation is already on; turn it off with G40 "
                             "first", span)
+        plane = PLANE_OF[self.modal["plane"]]
+        allowed = "XZ" if self.config.lathe else "XY"
+        if plane != allowed:  # manual 3.6.13 (p. 27): "die XY-Ebene ist nicht aktiv oder zum Drehen ist die ZX-Ebene
+            #                   nicht aktiv" is an error
+            raise self.fail(f"{t.code_name('G', code)}: cutter compensation works in the "
+                            f"{'ZX plane (G18) on a lathe' if self.config.lathe else 'XY plane (G17) on a mill'}, "
+                            f"not in {plane}", span)
         radius = self._comp_radius(code, words, span)
         self.modal["cutter_comp"] = code
         side = "left" if code in (G_41, G_41_1) else "right"
-        plane = PLANE_OF[self.modal["plane"]]
         data: dict[str, object] = {"side": side, "radius": radius, "plane": plane, "inch": self.inch}
         if self.config.lathe and plane == "XZ":  # the nose's controlled point (manual pp. 5-6)
             data["orientation"] = self._comp_orientation(code, words)

@@ -16,12 +16,10 @@ from edingcnc_lang.canon import Event
 from edingcnc_lang.machine.evaluator import param_index
 from edingcnc_lang.machine.state import CommandTable, MachineState, StepTable, format_value
 
-# M90..M97 -> the [SPINDLE_n] section whose offsets apply (manual 3.7.2: M91..M93 the 2nd..4th spindle;
-# the ini's comments name [SPINDLE_3] "Mounted Probe M95" and [SPINDLE_4] "Mounted camera M97").
-SPINDLE_SECTION = {90: 0, 91: 1, 92: 2, 93: 3, 95: 3, 97: 4}
 # 3D printing (3.7.12): what S means for each code, and its unit.
 PRINTER = {104: ("extruder", "degC"), 109: ("extruder", "degC"), 140: ("bed", "degC"), 190: ("bed", "degC"),
-           143: ("extruder_max", "degC"), 106: ("fan", "percent"), 107: ("fan", "percent")}
+           143: ("extruder_max", "degC"), 106: ("fan", "0..255"), 107: ("fan", "0..255")}
+FAN_FULL = 255.0  # M106 S: the table's scale (p. 55, "S = 0-255, für 0-100% PWM"), as slicers write it (docs/dialect.md)
 WAITS = frozenset({109, 190})  # set the temperature and wait until it is reached
 MODBUS_READS = frozenset({1, 2, 3, 4})  # read coils, discrete inputs, holding and input registers
 _MODBUS_WORD = re.compile(r"([a-z])\s*(-?\d+(?:\.\d*)?)", re.IGNORECASE)
@@ -47,15 +45,19 @@ class Devices(MachineState):
         self.canon.event(Event("thc", self.path, self.line, data))
 
     def _step_printer(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        """3D printing (3.7.12): S is a temperature (degrees C) or the fan's 0..100 %, never a spindle speed."""
+        """3D printing (3.7.12): S is a temperature (degrees C) or the fan's PWM on the 0..255 scale (the event
+        adds its percentage), never a spindle speed."""
         m = code // 10
         target, unit = PRINTER[m]
-        value = 0.0 if m == 107 else words.get("S", 100.0 if m == 106 else 0.0)
-        if value < 0 or (unit == "percent" and value > 100):
-            raise self.fail(f"M{m} S{format_value(value)}: the {'fan value must lie in 0..100' if unit == 'percent' else 'temperature must not be negative'}", span)
+        fan = target == "fan"
+        value = 0.0 if m == 107 else words.get("S", FAN_FULL if fan else 0.0)
+        if value < 0 or (fan and value > FAN_FULL):
+            raise self.fail(f"M{m} S{format_value(value)}: the {'fan value must lie in 0..255 (255 = 100 %)' if fan else 'temperature must not be negative'}", span)
         self.heaters[target] = value
-        self.canon.event(Event("printer", self.path, self.line,
-                               {"m": m, target: value, "unit": unit, "wait": m in WAITS}))
+        data: dict[str, object] = {"m": m, target: value, "unit": unit}
+        if fan:
+            data["percent"] = value * 100.0 / FAN_FULL
+        self.canon.event(Event("printer", self.path, self.line, {**data, "wait": m in WAITS}))
 
     def _heaters_off(self) -> None:
         """M30 (3.7.1: "Alle 3D-Drucker heizen AUS")."""
@@ -66,10 +68,9 @@ class Devices(MachineState):
     def _select_spindle(self, m: int) -> None:
         """M90..M97: #5390, and the selected spindle's offsets move the controlled point (3.7.2)."""
         self.params.set(t.SPINDLE_SELECTED, float(m - 90))
-        section = SPINDLE_SECTION.get(m)
-        offsets = self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
-        if tuple(self.spindle_offset) != offsets:
-            self.spindle_offset = offsets
+        before = self.spindle_offset
+        self.spindle_selected = m
+        if self.spindle_offset != before:
             self._offsets_changed()
 
     def _modbus(self, stmt: n.Command) -> None:

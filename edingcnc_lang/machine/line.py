@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.errors import Location, MachineError
-from edingcnc_lang.machine.state import MachineState, StatementTable
+from edingcnc_lang.machine.state import G_80, MachineState, StatementTable
 
 
 class LineWords(MachineState):
@@ -113,6 +113,12 @@ class LineWords(MachineState):
     def _execute_line(self, words: dict[str, float], g: Mapping[str, int], m: Mapping[str, int],
                       span: n.Span) -> None:
         """One line's actions in the controller's order of execution (tables.ORDER_OF_EXECUTION)."""
+        motion, non_modal = g.get("motion"), g.get("non_modal")
+        if motion is not None and motion != G_80 and non_modal in t.AXIS_WORD_USERS:
+            # manual p. 14: "Es ist ein Fehler, einen G-Code aus Gruppe 1 und einen G-Code aus Gruppe 0 in
+            # dieselbe Zeile zu setzen, wenn beide Achsenwörter verwenden" (rs274 refuses it too)
+            raise self.fail(f"{t.code_name('G', motion)} and {t.code_name('G', non_modal)} both use the axis words: "
+                            "a motion code and G10, G28, G30 or G92 cannot share a line", span)
         own: dict[str, dict[str, float]] = {}  # a group whose code owns words of the line (G64 P Q R S D F)
         for codes, table in ((g, t.OWN_G_WORDS), (m, t.OWN_M_WORDS)):
             for group, code in codes.items():

@@ -23,6 +23,7 @@ from edingcnc_lang.machine.state import (
     G_80,
     G_93,
     MIN_PROBE_DISTANCE,
+    PROBE_BACK_OFF,
     MachineState,
     PLANE_OF,
     UNSUPPORTED_MOTION,
@@ -205,3 +206,16 @@ class Moves(MachineState):
             self.params.set(t.PROBE_WORK + axis, work[axis])
             self.params.set(t.PROBE_JOINTS + axis, trip[axis])
         self.params.set(t.PROBE_TRIPPED, 1.0)
+        self._probe_back_off(start, feed)
+
+    def _probe_back_off(self, start: tuple[float, ...], feed: float) -> None:
+        """Manual 3.6.10.1 (p. 25): "Wenn die Sonde auslöst, wird die Sonde am Ende der Befehlsausführung leicht
+        vom Auslösepunkt zurückgezogen": back towards the start by the RS274/NGC reference canon's 0.254 mm
+        (0.01 inch: the same length; the shortest probe move the manual allows), never past the start."""
+        here = self.machine_frame(self.pos)
+        travelled = xyz_distance(start, here)
+        if travelled <= 1e-12:
+            return
+        step = min(PROBE_BACK_OFF, travelled) / travelled
+        back = [h + (s - h) * step if axis < 3 else h for axis, (h, s) in enumerate(zip(here, start))]
+        self._move("probe", self.program_frame(back), feed)  # part of the probe command

@@ -13,7 +13,8 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.errors import Location, MachineError
 
 LIVE_RANGES = (range(t.POS_WORK, t.POS_WORK + 6), range(t.SPINDLE_SPEED, t.POS_MACHINE + 6))
-OFFSET_RANGES = (range(t.G92_OFFSET, t.G92_OFFSET + 6), range(t.COORD_SYSTEM, t.COORD_OFFSETS + 9 * t.COORD_STRIDE))
+OFFSET_RANGES = (range(t.G92_OFFSET, t.G92_OFFSET + 6), range(t.COORD_SYSTEM, t.COORD_OFFSETS + 9 * t.COORD_STRIDE),
+                 range(t.ALT_SPINDLE_OFFSET, t.ALT_SPINDLE_OFFSET + 3))
 
 
 class Parameters:
@@ -39,6 +40,9 @@ class Parameters:
         """A program's assignment: read-only system variables are refused."""
         if t.is_read_only(index):
             raise MachineError(f"#{index} is a read-only system variable (the machine sets it)", where)
+        if index == t.COORD_SYSTEM and value not in range(1, 10):  # manual 3.3 (p. 7): anything else is an error
+            raise MachineError(f"#5220 = {value:g}: the coordinate system is a whole number 1..9 (1 = G54 .. "
+                               "9 = G59.3)", where)
         self.set(index, value)
 
     def set(self, index: int, value: float) -> None:

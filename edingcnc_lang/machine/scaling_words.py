@@ -1,7 +1,8 @@
 """G51/G50 scaling, the interpreter's part: factors, centre, parameters; the stage scales the moves.
 
 ``G51 P2 I10 J5`` scales X and Y by 2 about the work point (10, 5) (default: the work zero);
-``G51 X2 Y0.5`` scales each axis by its own factor (a missing one is 1).  Z is never scaled.
+``G51 X2 Y0.5`` scales each axis by its own factor (a missing one is 1).  Z is never scaled.  Under G68
+the centre is the rotation's pivot (manual p. 33); #5191/#5192 hold the centre as G68's pivot does.
 """
 from __future__ import annotations
 
@@ -30,12 +31,16 @@ class Scaling(MachineState):
             if factor == 0:
                 raise self.fail(f"G51 factor {format_value(factor)}: a factor of 0 would flatten the job", span)
         work = (words.get("I", 0.0) * self.scale, words.get("J", 0.0) * self.scale)
+        if self.rotation is not None:  # manual 3.6.13 (p. 33): "In Kombination mit G68 sind der Drehpunkt und
+            work = self.rotation.pivot[:2]  # der Skalierungspunkt die gleich"
         offset = self.offset()
         with self.machine_kept():
             self.scaling = (*factors, 1.0)
             self.scaling_center = (work[0] + offset[0], work[1] + offset[1])
         for index, value in enumerate((1.0, work[0], work[1], 0.0, *self.scaling)):
             self.params.set(t.SCALING_ACTIVE + index, value)
+        self.params.set(t.G68_ACTIVE + 1, work[0])  # #5191/#5192: the G68/G51 point (manual 3.1, p. 3)
+        self.params.set(t.G68_ACTIVE + 2, work[1])
         self.canon.event(Event("scaling", self.path, self.line,
                                {"on": True, "factors": self.scaling, "center": self.scaling_center}))
 

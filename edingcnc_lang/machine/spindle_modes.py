@@ -34,7 +34,7 @@ class SpindleModes(MachineState):
             self.css_setting = self.css_setting or (0.0, 0.0, 0.0)
         else:
             if self.css_setting is not None:  # keep turning at the speed CSS asked for here
-                self.rpm = self.rpm_at(self.pos[0])
+                self.rpm = self.rpm_at(self.pos[0], overridden=False)
                 self.speed = self.rpm
             self.css_setting = None
         if "S" not in words:

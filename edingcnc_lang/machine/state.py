@@ -23,7 +23,7 @@ from edingcnc_lang.errors import Cancelled, Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
-from edingcnc_lang.machine.spindle import SpindleError, mean_rpm_points
+from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import Observer
 
 if TYPE_CHECKING:
@@ -33,6 +33,7 @@ if TYPE_CHECKING:
 INCH = t.MM_PER_INCH
 MAX_CALL_DEPTH = 64
 MIN_PROBE_DISTANCE = 0.254
+PROBE_BACK_OFF = 0.254  # mm the probe backs off after it trips (manual 3.6.10.1; the RS274/NGC canon's)
 G = t.code_key  # G(38.2) -> 382
 
 AXIS_INDEX = {a: i for i, a in enumerate(AXES)}
@@ -41,6 +42,10 @@ LINEAR_AXES = frozenset("XYZ")
 UNSUPPORTED_MOTION: frozenset[int] = frozenset()  # every motion code of the tables runs
 PAUSE_CODES = frozenset(t.code_key(c) for c in (0, 1))  # M0, M1 (M60 ends the program like M30)
 SPINDLE_SELECT = tuple(range(90, 98))  # M90 standard spindle, M91..M97 alternate spindles (#5390 = 0..7)
+# M92..M97 -> the [SPINDLE_n] section whose offsets apply (manual 3.7.2: M91..M93 the 2nd..4th spindle;
+# the ini's comments name [SPINDLE_3] "Mounted Probe M95" and [SPINDLE_4] "Mounted camera M97");
+# M91's offsets are #5391..#5393 (MachineState.spindle_offset).
+SPINDLE_SECTION = {92: 2, 93: 3, 95: 3, 97: 4}
 ROTARY = (3, 4, 5)
 
 # G codes as integer tenths, computed once (they are compared on every line).
@@ -213,6 +218,8 @@ class MachineState:
         self.css_max = 0.0                 # the D word of G96 (0: none)
         self.sync_pitch = 0.0              # K of G33, mm per revolution
         self.spindle = 5                   # M3, M4 or M5
+        self.spindle_override = 100.0      # M51 P..: percent (manual p. 61)
+        self.spindle_override_on = True    # M48 on, M49 off, M51 P<0 off
         self.coolant: set[int] = set()
         self.selected_tool = 0
         self.tool_z = 0.0                  # active G43 length
@@ -231,7 +238,8 @@ class MachineState:
         self.clamped = False               # M26: the rotary axes are clamped until M27
         self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
         self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
-        self.spindle_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the selected spindle's (M91..M97)
+        self.spindle_selected = 90         # M90 (the standard spindle) .. M97
+        self.resolution_factor = 1.0       # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
@@ -266,6 +274,10 @@ class MachineState:
             initial[t.SOFT_LIMIT_NEG + axis] = joint.negative_limit
             initial[t.SOFT_LIMIT_POS + axis] = joint.positive_limit
             initial[t.HOME_POSITION + axis] = joint.home_position
+        alternate = self.config.spindle_offsets[1]  # [SPINDLE_1], the 2nd spindle (M91), else the saved #5391..#5393
+        if any(alternate):
+            for axis in range(3):
+                initial[t.ALT_SPINDLE_OFFSET + axis] = alternate[axis]
         for axis in range(3):  # the tool-change area (manual 3.1: #5131..#5133, #5141..#5143)
             initial[t.TCA_NEGATIVE + axis] = self.config.tca_negative[axis]
             initial[t.TCA_POSITIVE + axis] = self.config.tca_positive[axis]
@@ -334,17 +346,50 @@ class MachineState:
         """X words and the work X position are diameters (a lathe with diameterProgramming = 1)."""
         return self.config.diameter_mode
 
-    def css(self) -> Css | None:
-        """Constant surface speed in force (G96), centred on the current work X0; None under G97."""
+    @property
+    def spindle_offset(self) -> tuple[float, float, float]:
+        """The selected spindle's offsets (manual 3.7.2): M91's are #5391..#5393 (the ini's [SPINDLE_1] at the
+        start; a program may write them), M92..M97 their [SPINDLE_n] sections', M90 none."""
+        m = self.spindle_selected
+        if m == 91:
+            values = self.params.values
+            return (values[t.ALT_SPINDLE_OFFSET], values[t.ALT_SPINDLE_OFFSET + 1], values[t.ALT_SPINDLE_OFFSET + 2])
+        section = SPINDLE_SECTION.get(m)
+        return self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
+
+    @property
+    def spindle_factor(self) -> float:
+        """The spindle speed override in force (M48/M49/M51, manual p. 61) as a factor."""
+        return self.spindle_override / 100.0 if self.spindle_override_on else 1.0
+
+    def _spindle_override(self, m: int, p: float | None) -> None:
+        """M48 switches the spindle override on at 100 % (there is no spindle knob in a simulation), M49
+        off; M51 P.. on at P percent (P0: the knob's 100 %), M51 without P on at the value it had."""
+        self.spindle_override_on = m != 49
+        if m == 48 or (m == 51 and p == 0):
+            self.spindle_override = 100.0
+        elif m == 51 and p is not None:
+            self.spindle_override = p
+
+    def css(self, overridden: bool = True) -> Css | None:
+        """Constant surface speed in force (G96), centred on the current work X0; None under G97.
+        The spindle override scales the surface speed the spindle keeps (``overridden``)."""
         if self.css_setting is None:
             return None
         surface, max_rpm, min_rpm = self.css_setting
-        return Css(surface, max_rpm, min_rpm, self.offset()[0])
+        return Css(surface * (self.spindle_factor if overridden else 1.0), max_rpm, min_rpm, self.offset()[0])
 
-    def rpm_at(self, x: float) -> float:
-        """The programmed spindle speed with the tool at machine X ``x`` (also while it is stopped)."""
-        css = self.css()
-        return css.rpm(x) if css is not None else self.rpm
+    def rpm_at(self, x: float, overridden: bool = True) -> float:
+        """The spindle speed with the tool at machine X ``x`` (also while it is stopped): the programmed
+        one, times the spindle override unless ``overridden`` is False, within the machine's range."""
+        css = self.css(overridden)
+        return css.rpm(x) if css is not None else self._overridden_rpm() if overridden else self.rpm
+
+    def _overridden_rpm(self) -> float:
+        """The G97 speed the spindle turns at under the spindle override, within the machine's range."""
+        if self.spindle_factor == 1.0:
+            return self.rpm
+        return clamp_rpm(self.rpm * self.spindle_factor, self.config.spindle_max_rpm, self.config.spindle_min_rpm)
 
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
               sync: float = 0.0) -> None:
@@ -387,7 +432,7 @@ class MachineState:
         if self.spindle == 5:
             return 0.0, None
         css = self.css()
-        return (0.0, css) if css is not None else (self.rpm, None)
+        return (0.0, css) if css is not None else (self._overridden_rpm(), None)
 
     def caller(self) -> int:
         """``Move.caller`` of a move made now: the line of the outermost sub call, 0 at the top level."""
@@ -397,7 +442,7 @@ class MachineState:
         """The spindle speed that gives a per-revolution move through machine X ``xs`` its true time."""
         css = self.css()
         if css is None:
-            return self.rpm
+            return self._overridden_rpm()
         try:
             return mean_rpm_points(css, xs)
         except SpindleError as err:

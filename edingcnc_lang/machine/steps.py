@@ -30,6 +30,7 @@ from edingcnc_lang.machine.state import (
 
 
 M_60 = t.code_key(60)
+MAX_OVERRIDE = 1000.0  # percent: M50/M51 P above it is a typo (the --feed-override knob's range)
 
 
 class LineSteps(MachineState):
@@ -68,8 +69,20 @@ class LineSteps(MachineState):
         self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
 
     def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        """M48..M51; the planner follows them (``M50 P0`` switches the feed override off)."""
-        data = {"m": code // 10, **({"p": words["P"]} if "P" in words else {})}
+        """M48..M53 (manual 3.7.5, p. 61): the planner follows the feed override (M48..M50), the spindle's
+        (M51) changes the speed the spindle turns at; ``M50 P0``/``M51 P0`` wait for the operator's knob."""
+        m = code // 10
+        p = words.get("P")
+        if m in (50, 51) and p is not None and p > MAX_OVERRIDE:
+            raise self.fail(f"M{m} P{format_value(p)}: an override is at most {MAX_OVERRIDE:g} percent", span)
+        if m in (48, 49) or (m == 51 and (p is None or p >= 0)):
+            self._spindle_override(m, p)
+        if m in (50, 51) and p == 0:
+            self.canon.event(Event("operator_wait", self.path, self.line,
+                                   {"m": m, "override": "feed" if m == 50 else "spindle"}))
+        elif m == 51 and p is not None and p < 0:
+            self.spindle_override_on = False  # off; the value stays (p. 61)
+        data = {"m": m, **({"p": p} if p is not None else {})}
         self.canon.event(Event("override", self.path, self.line, data))
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
@@ -99,6 +112,16 @@ class LineSteps(MachineState):
         m = code // 10
         if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
             self.clamped = m == 26
+            if "P" in words:  # manual 3.7.9 (p. 65): "P1 bedeutet AUX 1": the output that drives the brake
+                port = int(words["P"])
+                self.outputs[port] = m == 26
+                self.canon.event(Event("output", self.path, self.line, {"port": port, "on": m == 26, "pwm": None}))
+        elif m == 100:  # manual 3.7.12: the axis resolution by a factor ("1,01 ist 1% mehr")
+            factor = words.get("P", 1.0)
+            if factor <= 0:
+                raise self.fail(f"M100 P{format_value(factor)}: the resolution factor must be more than 0 (1 is "
+                                "the standard)", span)
+            self.resolution_factor = factor
         elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
             self._select_spindle(m)
         data = {"m": m, **({"p": words["P"]} if "P" in words else {})}  # M100 P: the axis resolution factor
@@ -169,7 +192,15 @@ class LineSteps(MachineState):
                 level = -1.0  # the wait for high (L1) / low (L2) timed out
             self.params.set(t.IO_RESULT, level)
         else:
-            self.params.set(t.IO_RESULT, 1.0 if self.outputs.get(port) else 0.0)
+            self.params.set(t.IO_RESULT, 1.0 if self._output_on(port) else 0.0)
+
+    def _output_on(self, port: int) -> bool:
+        """What ``M57 P<port>`` reads (manual 3.7.8, pp. 64-65): AUX1..n as M54/M55 (and M26/M27 P) set them,
+        51 machine on and 52 drive enable (on while a job runs), 61 flood (M8), 62 mist (M7), 63 the spindle
+        (tool) on, 64 its direction output (on under M3: "M3 ... TOOLDIR = ein", p. 62)."""
+        machine = {51: True, 52: True, 61: 8 in self.coolant, 62: 7 in self.coolant, 63: self.spindle != 5,
+                   64: self.spindle == 3}
+        return machine[port] if port in machine else bool(self.outputs.get(port))
 
     def _pwm(self, code: int, port: int, words: Mapping[str, float], span: n.Span) -> None:
         """PWM outputs: M54 E Q sets the duty (0..1000 per mille), M55 E sets 0, M57 E reads it into #5399."""
@@ -248,8 +279,11 @@ class LineSteps(MachineState):
                              ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
         self.canon.event(Event("override", self.path, self.line, {"m": 48}))
+        self._spindle_override(48, None)
         if code != M_60:
             self.spindle = 5
+            if self.coolant:  # M9 (3.7.1), as an event like the program's own M9
+                self.canon.event(Event("coolant", self.path, self.line, {"m": 9}))
             self.coolant = set()
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()

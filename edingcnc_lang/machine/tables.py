@@ -181,6 +181,7 @@ COORD_OFFSETS = 5221       # system k (1..9) axis i (0..5) at 5221 + 20*(k-1) + 
 COORD_STRIDE = 20
 SIMULATION = 5380
 SPINDLE_SELECTED = 5390    # 0 standard spindle (M90), 1..7 alternate spindles (M91..M97)
+ALT_SPINDLE_OFFSET = 5391  # 5391..5393: the alternate spindle's (M91's) offsets X Y Z (manual 3.1, p. 4)
 RENDERING = 5397
 DIALOG_RESULT = 5398
 IO_RESULT = 5399

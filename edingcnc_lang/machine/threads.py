@@ -37,7 +37,23 @@ class Threading(MachineState):
         if xyz_distance(self.pos, end) <= 1e-12:
             return
         feed = pitch * self.mean_rpm([self.pos[0], end[0]], span)
+        self._sync_speed_check(end, feed, span)
         self._move("linear", end, feed, sync=pitch)
+
+    def _sync_speed_check(self, end: list[float], feed: float, span: n.Span | None) -> None:
+        """Manual 3.6.9 (p. 24): an error "wenn die angeforderte Linearbewegung aufgrund der Spindeldrehzahl
+        die Maschinengeschwindigkeitsgrenzen überschreitet": a synchronised move cannot slow down, so an axis
+        that would have to go faster than its maxVelocity stops the run."""
+        length = xyz_distance(self.pos, end)
+        config = self.config
+        for axis in range(3):
+            limit = (config.cartesian_max_velocity[axis] if self.kinematics_active
+                     else config.joints[axis].max_velocity if axis < len(config.joints) else 0.0)
+            speed = feed * abs(end[axis] - self.pos[axis]) / length / 60.0  # mm/s along this axis
+            if limit > 0.0 and speed > limit * (1.0 + 1e-9):
+                raise self.fail(f"the spindle speed asks {'XYZ'[axis]} for {speed * 60.0:.0f} mm/min (pitch x rpm), "
+                                f"more than its maximum velocity of {limit * 60.0:.0f} mm/min: lower the spindle speed",
+                                span)
 
     def _pitch(self, words: Mapping[str, float], code: str, span: n.Span) -> float | None:
         if "K" not in words:

@@ -19,7 +19,7 @@ from collections.abc import Callable
 from typing import TypeVar
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
+from edingcnc_lang.syntax.input_limits import LINE_NUMBER_DIGITS, MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
 
@@ -261,7 +261,9 @@ class _Line:
                     tokens[self.i] = ("i", text[1:], col + 1, _end)  # XSIN[1]: the word X, then SIN
                 else:  # ASIN[ (the function wins), MOD, GX: the grammar's
                     raise _GiveUp
-                value, _s, end = self.operand()
+                value, value_start, end = self.operand()
+                if not words and text[0] in "Nn" and end - value_start > LINE_NUMBER_DIGITS:
+                    raise _GiveUp  # a line number of more than five digits: the grammar's (the limit is checked there)
                 words.append(n.Word(text[0].upper(), value, self.span(col, end)))
             elif kind:
                 raise _GiveUp

@@ -14,6 +14,13 @@ from itertools import islice
 # lines are still parsed up to this limit so that generated files can be checked and run.
 MAX_LINE_LENGTH = 65_536
 
+# The RS274/NGC limits the manual states (3.4, p. 7) and rs274 enforces: a G-code line (words and
+# assignments) of at most 256 characters, and a line number N of at most five digits ("000009 ist
+# nicht in Ordnung").  Macro statements (dlgmsg, msg) may be longer: real 4.03 macros hold dialogs
+# of 258..318 characters, which the controller runs (docs/dialect.md).
+MAX_GCODE_LINE = 256
+LINE_NUMBER_DIGITS = 5
+
 # Operators in the code of one line: signs, '#', arithmetic, comparisons, logic, and function
 # calls ('SQRT['), each counted once.  Every level of an
 # expression tree needs one of them, so this bounds how deeply expressions nest, and printing a

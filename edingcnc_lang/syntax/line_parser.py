@@ -15,7 +15,13 @@ from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_block, compiled_statement, parse_fast
-from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, SHORTEST_PROBLEM, line_problem
+from edingcnc_lang.syntax.input_limits import (
+    LINE_NUMBER_DIGITS,
+    MAX_GCODE_LINE,
+    MAX_LINE_LENGTH,
+    SHORTEST_PROBLEM,
+    line_problem,
+)
 from edingcnc_lang.syntax.blocks import LineResult
 from edingcnc_lang.syntax.plain_words import FAST_LINE, word_matches
 from edingcnc_lang.syntax.prose import PROSE_MESSAGE, looks_like_prose
@@ -87,6 +93,10 @@ def _scan_delimiters(text: str) -> _LineError | None:
             close = text.find(end, i + 1)
             if close < 0:
                 return _LineError(code, message.format(col=i + 1), i + 1)
+            inner = text.find("(", i + 1, close) if ch == "(" else -1
+            if inner >= 0:  # manual 3.4.4: comments do not nest (Vectric's "( T1: End Mill (6 mm) )")
+                return _LineError("E116", f"nested comment: the '(' at column {inner + 1} is inside the comment "
+                                  f"opened at column {i + 1}; comments do not nest: leave out the inner parentheses", inner + 1)
             i = close + 1
             continue
         if ch == ";":
@@ -167,8 +177,26 @@ _NAME_AT = re.compile(r"[A-Za-z0-9_]+")
 
 # --------------------------------------------------------------------------- one line
 
+# The line number's digits, where the first word of a block is N (after a '/', blanks and ( ) comments)
+_LINE_NUMBER = re.compile(r"[ \t]*(?:/[ \t]*)?(?:\([^)\n]*\)[ \t]*)*[Nn][ \t]*[+-]?((?:[ \t]*[0-9])+)")
+
+
 def parse_line(text: str, path: str = "<string>", line: int = 1) -> LineResult:
     """Parse one source line; raises _LineError on a syntax error or a line past the limits."""
+    result = _parse_line(text, path, line)
+    if isinstance(result, (n.Block, n.PlainBlock)):
+        if len(text) > MAX_GCODE_LINE:
+            raise _LineError("E114", f"a G-code line holds at most {MAX_GCODE_LINE} characters, this one "
+                             f"{len(text)} (manual 3.4; rs274 refuses it too): split it", MAX_GCODE_LINE + 1)
+        if result.line_number is not None:
+            digits = _LINE_NUMBER.match(text)
+            if digits is not None and sum(c.isdigit() for c in digits.group(1)) > LINE_NUMBER_DIGITS:
+                raise _LineError("E115", f"a line number has at most {LINE_NUMBER_DIGITS} digits (manual 3.4.1: "
+                                 "N0..N99999; rs274 refuses more too)", digits.start(1) + 1)
+    return result
+
+
+def _parse_line(text: str, path: str, line: int) -> LineResult:
     if len(text) > MAX_LINE_LENGTH:
         raise _LineError("E110", f"line is longer than {MAX_LINE_LENGTH} characters, the limit for one line "
                          "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)

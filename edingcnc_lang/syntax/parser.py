@@ -20,7 +20,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
 from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
-from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH
+from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_GCODE_LINE
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
@@ -70,8 +70,8 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
 
     The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
     """
-    if max(map(len, chunk)) > MAX_LINE_LENGTH:  # rare: parse_line refuses the long ones
-        return [i for i, text in enumerate(chunk) if len(text) > MAX_LINE_LENGTH or not FAST_LINE.match(text)]
+    if max(map(len, chunk)) > MAX_GCODE_LINE:  # rare: parse_line refuses the long ones
+        return [i for i, text in enumerate(chunk) if len(text) > MAX_GCODE_LINE or not FAST_LINE.match(text)]
     shapes = "\n".join(chunk).translate(_DIGITS_AS_NINE).split("\n")
     others = {shape for shape in set(shapes) if not FAST_LINE.match(shape)}
     return [i for i, shape in enumerate(shapes) if shape in others] if others else []
@@ -232,7 +232,7 @@ class StatementReader:
         path = self.path
         if lineno == 1 and self._read_unit(text):
             return
-        if bulk and stack and self.mode == "run" and not self._skipped and len(text) <= MAX_LINE_LENGTH \
+        if bulk and stack and self.mode == "run" and not self._skipped and len(text) <= MAX_GCODE_LINE \
                 and FAST_LINE.match(text):
             stack[-1].add(plain_block(text, path, lineno))
             return

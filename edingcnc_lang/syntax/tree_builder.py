@@ -59,7 +59,7 @@ class Builder:
         return n.Number(self._finite(_token(tree.children[0])), self.span(tree))
 
     def _finite(self, token: Token) -> float:
-        value = float(token)
+        value = float(token.replace(" ", "").replace("\t", "") if " " in token or "\t" in token else token)
         if math.isinf(value):
             raise LineError("E100", f"the number {str(token)[:12]}... is too large", token.column or 0)
         return value

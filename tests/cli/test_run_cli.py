@@ -207,7 +207,8 @@ def test_trace_kinds_for_arcs_probes_and_g28(tmp_path: Path) -> None:
     trace = tmp_path / "t.csv"
     source = "G0 X10 Z5\nG2 X0 Y10 I-10 F100\nG38.2 Z-5 F50\n#5161 = 1\nG28\n"
     assert run_job(tmp_path, source, "--trace", trace).exit_code == 0
-    assert [r[1] for r in trace_rows(trace)] == ["rapid", "arc", "probe", "rapid", "rapid"]
+    # the probe, then its back-off (manual p. 25)
+    assert [r[1] for r in trace_rows(trace)] == ["rapid", "arc", "probe", "probe", "rapid", "rapid"]
 
 
 def test_trace_numbers_are_repr_exact(tmp_path: Path) -> None:

@@ -27,7 +27,8 @@ def test_moves_and_events_stream_in_program_order() -> None:
                       ("event", "dwell", 3), ("event", "msg", 4),
                       ("move", "linear", 5), ("event", "coolant", 6), ("event", "tool_change", 7),
                       ("event", "spindle", 7),  # M6 leaves the spindle stopped (manual 3.7.3)
-                      ("event", "override", 8), ("event", "end", 8)]  # M30 switches the overrides on (3.7.1)
+                      ("event", "override", 8),  # M30 switches the overrides on (3.7.1)
+                      ("event", "coolant", 8), ("event", "end", 8)]  # and the coolant off, visibly (M9)
 
 
 def test_dwell_seconds_follow_the_ini(tmp_path: Path) -> None:

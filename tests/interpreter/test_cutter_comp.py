@@ -76,12 +76,24 @@ def test_m30_ends_compensation_and_the_next_run_starts_without_it(tmp_path: Path
     assert moves[-1] == (3, 0.0, 2.0)
 
 
-def test_g19_compensates_in_y_and_z() -> None:
+@pytest.mark.parametrize("plane", ["G18", "G19"])
+def test_a_mill_compensates_in_xy_only(plane: str) -> None:
+    # manual 3.6.13 (p. 27): "Die Kompensation des Fräserradius darf nur durchgeführt werden, wenn die
+    # XY-Ebene aktiv ist"; an error "die XY-Ebene ist nicht aktiv oder zum Drehen ist die ZX-Ebene nicht aktiv"
+    with pytest.raises(MachineError, match="XY plane \\(G17\\) on a mill") as err:
+        run_string(f"{plane}\nG0 Y-10 Z0\nG41.1 D4\nG1 Y0 Z0 F100\nM30\n", RunOptions(macro=EMPTY_MACRO), path="job.nc")
+    assert err.value.location is not None and err.value.location.line == 3
+
+
+def test_a_lathe_compensates_in_zx_only(tmp_path: Path) -> None:
+    ini = tmp_path / "cnc.ini"
+    ini.write_text("[SYSTEM]\r\nmachineType = 1\r\n[INTERPRETER]\r\ndiameterProgramming = 0\r\n")
     moves: list[Move] = []
-    run_string("G19\nG0 Y-10 Z0\nG41.1 D4\nG1 Y0 Z0 F100\nG1 Y20\nG40\nG1 Y30\nM30\n",
-               RunOptions(macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m)), path="job.nc")
-    along = next(m for m in moves if m.line == 5)
-    assert along.end[1:3] == pytest.approx((20.0, 2.0))  # left of +Y, seen from +X, is +Z
+    run_string("G18\nG0 X10 Z10\nG41.1 D4\nG1 X10 Z0 F100\nG1 Z-20\nG40\nM30\n",
+               RunOptions(ini=ini, macro=EMPTY_MACRO, on_move=lambda m, _j: moves.append(m)), path="job.nc")
+    assert any(m.line == 5 for m in moves)
+    with pytest.raises(MachineError, match="ZX plane \\(G18\\) on a lathe"):
+        run_string("G17\nG41.1 D4\nM30\n", RunOptions(ini=ini, macro=EMPTY_MACRO), path="job.nc")
 
 
 GOLDEN_TOOLS = Path(__file__).resolve().parent.parent / "golden" / "linuxcnc" / "tools.ini"

@@ -84,10 +84,11 @@ def test_an_unwritable_trace_is_an_error_not_a_traceback(tmp_path: Path) -> None
 
 def test_brackets_up_to_the_limit_parse_and_deeper_ones_are_refused(tmp_path: Path) -> None:
     job = tmp_path / "deep.nc"
-    job.write_text("#1000=" + "[" * 200 + "1" + "]" * 200 + "\n")
+    # (in an If condition: a G-code line holds at most 256 characters, manual 3.4, E114)
+    job.write_text("If [" + "[" * 199 + "1" + "]" * 199 + "]\nEndIf\n")
     result = invoke("parse", job)
     assert result.exit_code == 0, result.output
-    job.write_text("#1000=" + "[" * 201 + "1" + "]" * 201 + "\n")
+    job.write_text("If [" + "[" * 200 + "1" + "]" * 200 + "]\nEndIf\n")
     result = invoke("parse", job)
     assert result.exit_code == 65
-    assert result.output.startswith(f"{job}:1:207: error: brackets nested more than 200 deep")
+    assert result.output.startswith(f"{job}:1:204: error: brackets nested more than 200 deep")

@@ -25,6 +25,8 @@ from edingcnc_lang.runner import RunOptions, run_file
 GOLDENS = Path(__file__).resolve().parent.parent / "golden" / "linuxcnc"
 PROGRAMS = sorted((GOLDENS / "programs").glob("*.ngc"))
 TOOLS = GOLDENS / "tools.ini"  # the tool table rs274 got (in inches) for the compensation goldens
+# the same on a turning machine: compensation in ZX is for turning (manual 3.6.13, p. 27), rs274 allows it anywhere
+LATHE_TOOLS = GOLDENS / "tools_lathe.ini"
 TOLERANCE = 0.002  # rs274 prints 4 decimals (inch programs convert them to mm)
 HOME_LINE = re.compile(r"\bG(28|30)(?![.\d])", re.IGNORECASE)
 
@@ -36,7 +38,7 @@ def _our_moves(program: Path) -> list[Move]:
         if math.dist(move.start, move.end) > 1e-9 or move.arc is not None:
             moves.append(move)
 
-    run_file(program, RunOptions(ini=TOOLS, on_move=keep))
+    run_file(program, RunOptions(ini=LATHE_TOOLS if program.name.startswith("comp_g18") else TOOLS, on_move=keep))
     return moves
 
 

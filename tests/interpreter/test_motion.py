@@ -223,7 +223,9 @@ def test_g30_uses_its_own_positions_from_the_ini() -> None:
 
 def test_probe_trips_at_the_target_in_simulation() -> None:
     result, moves = run("G10 L2 P1 X100\nG0 X5 Z10\nG38.2 Z-20 F100\n")
-    assert (moves[-1].kind, moves[-1].end[:3], moves[-1].feed) == ("probe", (105.0, 0.0, -20.0), 100.0)
+    assert (moves[-2].kind, moves[-2].end[:3], moves[-2].feed) == ("probe", (105.0, 0.0, -20.0), 100.0)
+    # manual 3.6.10.1 (p. 25): "wird die Sonde am Ende der Befehlsausführung leicht vom Auslösepunkt zurückgezogen"
+    assert (moves[-1].kind, moves[-1].end[:3]) == ("probe", (105.0, 0.0, pytest.approx(-19.746)))
     v = result.variables
     assert (v[5061], v[5063], v[5051], v[5053], v[5067]) == (5.0, -20.0, 105.0, -20.0, 1.0)
 
@@ -237,7 +239,7 @@ def test_probe_callback_decides_where_it_trips() -> None:
 
     result, moves = run("G0 Z10\nG38.2 G91 Z-20 F100\nG90\n#100 = #5063\n", host=Host(probe=probe))
     assert seen == [((0.0, 0.0, 10.0, 0.0, 0.0, 0.0), (0.0, 0.0, -10.0, 0.0, 0.0, 0.0))]
-    assert moves[-1].end[2] == -7.5 and result.position[2] == -7.5
+    assert moves[-2].end[2] == -7.5 and result.position[2] == pytest.approx(-7.5 + 0.254)  # backed off (p. 25)
     assert (result.variables[100], result.variables[5067]) == (-7.5, 1.0)
 
 
@@ -328,7 +330,9 @@ def test_feed_move_without_feed_is_g1516() -> None:
 # ------------------------------------------------------------------ M30 resets and word rules
 
 def test_m30_resets_modes_but_not_the_coordinate_system() -> None:
-    result, _ = run("G18 G91 G93 G1 X1 F100\nG10 L2 P2 X5\nG55 M3 S100 M8\nG41 D1\n#100 = #5152\nM30\n")
+    # G41 in G17: a mill compensates in XY only (manual 3.6.13, p. 27); G18 is reset by the second run
+    result, _ = run("G91 G93 G1 X1 F100\nG10 L2 P2 X5\nG55 M3 S100 M8\nG41 D1\n#100 = #5152\nM30\n")
+    assert "G17" in run("G18\nM30\n")[0].modal
     assert result.variables[100] == 1.0 and result.variables[5152] == 0.0
     for code in ("G1", "G17", "G90", "G94", "G40", "G55"):  # G1: manual 3.7.1 (LinuxCNC's M2 leaves G1 too)
         assert code in result.modal

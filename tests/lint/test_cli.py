@@ -35,8 +35,8 @@ def test_no_source_prints_one_line_per_finding(job: Path) -> None:
     result = run(job, "--no-source")
     assert result.output.splitlines() == [
         f"{job}:2:7: G503 F0 on a G1 move: give a feed rate above 0 (EdingCNC G1516: incorrect feed rate)",
-        (f"{job}:3:1: G504 G38.2 runs in simulation and rendering too: wrap it in "
-         "If [[#5380 == 0] and [#5397 == 0]] ... EndIf"),
+        (f"{job}:3:1: G504 G38.2 runs while the job is rendered too: wrap it in If [#5397 == 0] ... EndIf "
+         "(not while rendering), or If [[#5380 == 0] and [#5397 == 0]] (nor in simulation)"),
     ]
 
 

@@ -100,7 +100,7 @@ def _python_survey(body: tuple[n.Stmt, ...]) -> facts.FileFacts:
 def _compiled_survey(body: tuple[n.Stmt, ...]) -> facts.FileFacts:
     found = facts._Survey()
     lexer.survey(code_key, literal_index, Scope, facts.simulation_branches, facts._other_reads, facts.BlockCodes,
-                 facts.END_OF_PROGRAM, facts.SIMULATION, found, body, Scope())
+                 facts.END_OF_PROGRAM, facts.GUARD_PARAMS, found, body, Scope())
     return found.facts()
 
 

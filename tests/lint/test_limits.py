@@ -12,7 +12,7 @@ def _codes(found: list, path: Path) -> list[tuple[int, str]]:  # type: ignore[ty
 
 def test_a_file_nested_too_deeply_is_reported_and_the_others_keep_their_findings(tmp_path: Path) -> None:
     deep = tmp_path / "deep.nc"
-    deep.write_text("If [1]\n" * 3000 + "G0 G1 X1\n" + "EndIf\n" * 3000 + "G0 X1 ; " + "x" * 300 + "\n")
+    deep.write_text("If [1]\n" * 3000 + "G0 G1 X1\n" + "EndIf\n" * 3000 + 'msg "' + "x" * 300 + '"\n')
     plain = tmp_path / "plain.nc"
     plain.write_text("G0 G1 X1\nM30\n")
     found = lint_paths([tmp_path])

@@ -35,7 +35,7 @@ def test_a_probe_entry_is_in_work_coordinates_and_the_other_axes_are_the_targets
     assert outcome.error is None
     assert outcome.var(5067) == 1 and outcome.var(5063) == pytest.approx(-3) and outcome.var(5053) == pytest.approx(-53)
     assert outcome.var(5061) == pytest.approx(15)  # X not named: the target's
-    assert outcome.position["z"] == pytest.approx(-3)
+    assert outcome.position["z"] > -3  # backed off towards the start (manual p. 25)
 
 
 def test_a_miss_stops_the_run_at_its_probe_and_past_the_list_the_probe_trips_at_the_target(tmp_path: Path) -> None:

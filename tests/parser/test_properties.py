@@ -1,11 +1,14 @@
 """Property tests: print/parse round trips and the fast path's equivalence with the grammar."""
 from __future__ import annotations
 
+import re
+
 import pytest
-from hypothesis import example, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.syntax.input_limits import MAX_GCODE_LINE
 from edingcnc_lang.syntax.parser import is_fast_line, parse_line, parse_line_grammar, parse_text
 from edingcnc_lang.syntax.printer import program_text
 from edingcnc_lang.syntax.serialize import to_data
@@ -63,7 +66,10 @@ programs = st.builds(lambda body: n.Program("<gen>", tuple(body)),
 @given(programs)
 @example(parse_text("A0 A SIN[0] X ATAN[1]/[2]\n", "<gen>"))  # a call glued to its word letter read as ASIN
 def test_print_parse_print_is_stable(program: n.Program) -> None:
-    first = parse_text(program_text(program), "<gen>")  # the printed text always parses
+    printed = program_text(program)
+    # a tiny number written out in full can make a G-code line longer than the manual's 256 (E114)
+    assume(all(len(line) <= MAX_GCODE_LINE for line in printed.splitlines()))
+    first = parse_text(printed, "<gen>")  # the printed text always parses
     text = program_text(first)
     again = parse_text(text, "<gen>")
     assert again == first
@@ -78,11 +84,13 @@ def test_round_trip_keeps_a_known_program() -> None:
 
 spaces = st.sampled_from(["", " ", "  ", "\t"])
 plain_numbers = st.from_regex(r"[+-]?([0-9]{1,5}(\.[0-9]{0,5})?|\.[0-9]{1,5})", fullmatch=True)  # ASCII: "٠" is no digit
+# an N of six digits or more is no plain word: the parser refuses it as a line number (manual 3.4.1)
+LONG_LINE_NUMBER = re.compile(r"[Nn][ \t]*[+-]?[0-9]{6}")
 plain_words = st.tuples(st.sampled_from("GMXYZABCIJKFSTPQRNgmxyz"), spaces, plain_numbers, spaces).map("".join)
 gaps = st.sampled_from(["", "", "(note)", "(T1 D=6 ;x) ", "(msg1)", "( msg_2)", "(a(b)"])  # comments the grammar drops
 plain_lines = st.tuples(gaps, spaces, st.lists(st.tuples(plain_words, gaps).map("".join), min_size=1, max_size=7)
                         .map("".join), st.sampled_from(["", ";", "; comment", " ;x", "; ring 8 mm G1 X2", "(end)"])
-                        ).map("".join)
+                        ).map("".join).filter(lambda line: not LONG_LINE_NUMBER.search(line))
 
 
 @settings(max_examples=400, deadline=None)

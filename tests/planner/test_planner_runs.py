@@ -118,8 +118,9 @@ def test_feed_override_and_m50(tmp_path: Path) -> None:
     base = rest_to_rest(100.0, 50.0)
     assert run(tmp_path, "G1 X100 F3000\n", feed_override=50.0).estimate.seconds == pytest.approx(
         rest_to_rest(100.0, 25.0))
-    # M50 P0: the knob has no effect; M49 neither; M48 gives it back
-    assert run(tmp_path, "M50 P0\nG1 X100 F3000\n", feed_override=50.0).estimate.seconds == pytest.approx(base)
+    # M50 P-1 switches the knob off (manual p. 61: "wenn der P-Wert kleiner als Null ist, ist die
+    # Vorschubüberschreibung deaktiviert"); M49 too; M48 gives it back
+    assert run(tmp_path, "M50 P-1\nG1 X100 F3000\n", feed_override=50.0).estimate.seconds == pytest.approx(base)
     assert run(tmp_path, "M49\nG1 X100 F3000\n", feed_override=50.0).estimate.seconds == pytest.approx(base)
     assert run(tmp_path, "M49\nM48\nG1 X100 F3000\n", feed_override=50.0).estimate.seconds == pytest.approx(
         rest_to_rest(100.0, 25.0))

@@ -50,6 +50,7 @@ class Estimate:
     feed_distance: float = 0.0
     moves: int = 0
     per_tool: dict[int, ToolTime] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)  # what the time leaves out (waits for the operator)
 
     def add_moves(self, tool: int, rapid_seconds: float, feed_seconds: float, rapid_distance: float,
                   feed_distance: float, count: int) -> None:
@@ -72,6 +73,10 @@ class Estimate:
         self.seconds += seconds
         self.per_tool.setdefault(tool, ToolTime()).seconds += seconds
 
+    def add_note(self, note: str) -> None:
+        """Something the planned time cannot hold, as a line for people (``notes`` in ``--json``)."""
+        self.notes.append(note)
+
     def to_json(self) -> dict[str, Any]:
         return {
             "seconds": self.seconds,
@@ -80,12 +85,16 @@ class Estimate:
             "dwell_seconds": self.dwell_seconds,
             "distance": {"rapid": self.rapid_distance, "feed": self.feed_distance},
             "per_tool": {str(tool): share.to_json() for tool, share in sorted(self.per_tool.items())},
+            **({"notes": list(self.notes)} if self.notes else {}),
         }
 
     def summary(self) -> str:
         """One line for people: ``2,431 moves, 1 h 12 min 5 s, 84.2 m``."""
         moves = f"{self.moves:,} move{'' if self.moves == 1 else 's'}"
-        return f"{moves}, {format_duration(self.seconds)}, {format_distance(self.rapid_distance + self.feed_distance)}"
+        waits = f", {len(self.notes)} wait{'' if len(self.notes) == 1 else 's'} for the operator not counted" \
+            if self.notes else ""
+        return f"{moves}, {format_duration(self.seconds)}, {format_distance(self.rapid_distance + self.feed_distance)}" \
+            + waits
 
 
 def format_duration(seconds: float) -> str:

@@ -7,6 +7,12 @@ direction phi.  The corner is passed at the speed whose centripetal acceleration
 is the path acceleration: v^2 = a R.  Collinear moves (phi = 0) do not slow down at all.  A
 corner sharper than ``lafAngle`` (the angle between the two moves, 180 degrees being straight)
 is a full stop, as EdingCNC's look-ahead does.
+
+Once the job programs ``G64 R..`` the manual's own rules apply (pp. 38-40; R, S, D are the
+change of direction ``phi`` in degrees and a length): ``phi`` up to R passes at full speed (the
+blend above), with no S a larger ``phi`` stops the machine (the standard algorithm), with S the
+new algorithm limits the corners between R and S by a virtual circle that deviates D from the
+corner and blends the larger ones within P; ``R0`` switches the look-ahead off: every corner stops.
 """
 from __future__ import annotations
 
@@ -16,16 +22,25 @@ import numpy as np
 
 
 def corner_speeds2(tangent_out: np.ndarray, tangent_in: np.ndarray, length_before: np.ndarray,
-                   length_after: np.ndarray, accel: np.ndarray, tolerance: np.ndarray, laf_angle: float) -> np.ndarray:
+                   length_after: np.ndarray, accel: np.ndarray, tolerance: np.ndarray, laf_angle: float,
+                   programmed: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """Squared corner speeds for k corners: the direction leaving the move before and entering the one after
     (unit vectors as columns, (6, k)).
 
     ``tolerance`` is the G64 P in force for the move after the corner (0 = no tolerance: only the
-    room on both moves limits the blend); ``laf_angle`` in degrees.
+    room on both moves limits the blend); ``laf_angle`` in degrees.  ``programmed`` are the G64 R, S
+    (degrees) and D (mm) in force for each corner (R NaN: none programmed, ``laf_angle`` applies; S
+    NaN: the standard algorithm; D 0: the tolerance P instead).
     """
     cos_phi = np.clip((tangent_out * tangent_in).sum(axis=0), -1.0, 1.0)
     half = np.arccos(cos_phi) / 2.0
     cos_half = np.cos(half)
+    phi = np.degrees(2.0 * half)
+    if programmed is not None:
+        angle, second, deviation = programmed
+        on = ~np.isnan(angle)
+        circle = on & ~np.isnan(second) & (phi > angle) & (phi <= second) & (deviation > 0.0)
+        tolerance = np.where(circle, deviation, tolerance)  # the new algorithm's virtual circle (p. 39)
     with np.errstate(divide="ignore", invalid="ignore"):
         fit = np.minimum(length_before, length_after) / 2.0 / np.tan(half)
         within = np.where(tolerance > 0.0, tolerance * cos_half / (1.0 - cos_half), np.inf)
@@ -33,4 +48,8 @@ def corner_speeds2(tangent_out: np.ndarray, tangent_in: np.ndarray, length_befor
         speed2 = np.where(radius > 0.0, accel * radius, 0.0)
     # the angle between the two moves is pi - phi; below lafAngle the machine stops
     sharp = (math.pi - 2.0 * half) < math.radians(laf_angle)
+    if programmed is not None:
+        standard = np.isnan(second) | (angle == 0.0)  # R0: no look-ahead at all
+        stops = on & standard & (phi > angle) & (phi > 1e-9)
+        sharp = np.where(on, stops, sharp)
     return np.where(sharp | np.isnan(speed2), 0.0, speed2)

@@ -1,11 +1,13 @@
-"""Feed and rapid overrides, as the operator's knobs and the job's M48/M49/M50 set them.
+"""Feed and rapid overrides, as the operator's knobs and the job's M48..M51 set them (manual 3.7.5, p. 61).
 
-``ecnc run --feed-override PCT --rapid-override PCT`` turn the knobs.  In the job, ``M49``
-disables the feed and speed overrides and ``M48`` enables them again; ``M50 P0`` disables the
-feed override alone and ``M50`` (or ``M50 P1``) enables it; ``M51`` does the same for the spindle
-speed override, which the estimate does not depend on (except through G95, see docs/planner.md).
-While the feed override is disabled, feed moves run at their programmed feed.  The rapid knob is
-not switched by these codes: on EdingCNC it acts on G0 moves whatever the job says.
+``ecnc run --feed-override PCT --rapid-override PCT`` turn the knobs.  In the job, ``M50 P..``
+sets the feed override to P percent; a negative P switches it off (feed moves run at their
+programmed feed) and keeps the value; ``M50 P0`` ("the macro does not start until the operator
+turns the knob") is a wait for the operator, after which the run goes on at the knob's value;
+``M50`` without P switches it on at the value it had.  ``M48`` switches the overrides on and
+resets the feed override to the knob's value; ``M49`` switches them off (100 %).  ``M51`` is the
+spindle's, which the interpreter applies to the spindle speed.  The rapid knob is not switched by
+these codes: on EdingCNC it acts on G0 moves whatever the job says.
 """
 from __future__ import annotations
 
@@ -19,12 +21,16 @@ MAX_FEED_OVERRIDE = 1000.0  # percent; more is almost certainly a typo
 
 @dataclass
 class Overrides:
-    """The override state of one run; the motion stage and the planner read ``feed_factor``/``rapid_factor``."""
+    """The override state of one run; the motion stage and the planner read ``feed_factor``/``rapid_factor``.
+
+    ``feed_percent`` is the operator's knob; ``feed_set`` the value the job set with ``M50 P..``
+    (None: the knob's).
+    """
 
     feed_percent: float = 100.0
     rapid_percent: float = 100.0
     feed_enabled: bool = True
-    spindle_enabled: bool = True
+    feed_set: float | None = None
 
     def __post_init__(self) -> None:
         if not 0.0 < self.feed_percent <= MAX_FEED_OVERRIDE:
@@ -36,21 +42,26 @@ class Overrides:
     @property
     def feed_factor(self) -> float:
         """What the programmed feed is multiplied by now."""
-        return self.feed_percent / 100.0 if self.feed_enabled else 1.0
+        if not self.feed_enabled:
+            return 1.0
+        return (self.feed_percent if self.feed_set is None else self.feed_set) / 100.0
 
     @property
     def rapid_factor(self) -> float:
         return self.rapid_percent / 100.0
 
     def apply(self, event: Event) -> None:
-        """Follow an ``override`` event (M48..M51; ``p`` is the P word when the line had one)."""
+        """Follow an ``override`` event (M48..M50; ``p`` is the P word when the line had one)."""
         code = event.data.get("m")
-        enable = float(event.data.get("p", 1.0)) != 0.0
         if code == 48:
-            self.feed_enabled = self.spindle_enabled = True
+            self.feed_enabled, self.feed_set = True, None
         elif code == 49:
-            self.feed_enabled = self.spindle_enabled = False
+            self.feed_enabled = False
         elif code == 50:
-            self.feed_enabled = enable
-        elif code == 51:
-            self.spindle_enabled = enable
+            p = event.data.get("p")
+            if p is None:
+                self.feed_enabled = True
+            elif float(p) < 0.0:
+                self.feed_enabled = False
+            else:  # P0 waits for the operator's knob (an operator_wait event), then runs at its value
+                self.feed_enabled, self.feed_set = True, float(p) or None

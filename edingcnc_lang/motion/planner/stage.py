@@ -37,7 +37,11 @@ WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
 # to reach its speed, an external program or an operator's answer.
-STOPPING_EVENTS = frozenset({"dwell", "tool_change", "pause", "end", "spindle", "exec", "dialog"})
+STOPPING_EVENTS = frozenset({"dwell", "tool_change", "pause", "end", "spindle", "exec", "dialog", "operator_wait"})
+
+
+# What a move runs under: exact stop, G64 P, the feed override, the limits of rapids and of the rest, G64 R S D.
+State = tuple[bool, float, float, int, int, tuple[float, float, float]]
 
 
 class TimedSink(Protocol):
@@ -70,10 +74,12 @@ class Planner:
         self.time = 0.0
         self.exact_stop = not config.g64_active
         self.tolerance = config.g64_p
+        # G64 R, S (degrees) and D (mm) as the job programmed them (manual pp. 37-40); NaN R: none yet
+        self.laf: tuple[float, float, float] = (math.nan, math.nan, 0.0)
         self._limit_sets: list[tuple[np.ndarray, np.ndarray]] = []
         self._limit_index: dict[tuple[bytes, bytes], int] = {}
-        self._states: list[tuple[bool, float, float, int, int]] = []
-        self._state_index: dict[tuple[bool, float, float, int, int], int] = {}
+        self._states: list[State] = []
+        self._state_index: dict[State, int] = {}
         self._start2 = 0.0
         self._origin: Pose = (0.0,) * 6  # where the first collected move starts
         self._clear()
@@ -147,6 +153,10 @@ class Planner:
         elif event.kind == "path_control":
             self.exact_stop = event.data.get("mode") != "G64"
             self.tolerance = float(event.data.get("p", self.config.g64_p))
+            data = event.data
+            if "r" in data or (("s" in data or "d" in data) and not math.isnan(self.laf[0])):
+                angle, second, deviation = self.laf
+                self.laf = (float(data.get("r", angle)), float(data.get("s", second)), float(data.get("d", deviation)))
         if event.kind in STOPPING_EVENTS:
             self.flush()
             self._emit_event(event)
@@ -197,11 +207,12 @@ class Planner:
         return index
 
     def _state_id(self, rapid_limits: int, other_limits: int, feed_factor: float) -> int:
-        """The index of the machine state a move runs in: path control, tolerance, feed override, limits.
+        """The index of the machine state a move runs in: path control, tolerance, feed override, limits,
+        the programmed look-ahead angles.
 
-        It changes rarely, so moves keep an index into a small table instead of five values each.
+        It changes rarely, so moves keep an index into a small table instead of six values each.
         """
-        state = (self.exact_stop, self.tolerance, feed_factor, rapid_limits, other_limits)
+        state = (self.exact_stop, self.tolerance, feed_factor, rapid_limits, other_limits, self.laf)
         index = self._state_index.get(state)
         if index is None:
             index = self._state_index[state] = len(self._states)
@@ -239,7 +250,9 @@ class Planner:
         arcs = every_arc.before(n)
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
         kind[arcs.index] = ARC
-        exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in zip(*self._states))
+        exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in
+                                                                     list(zip(*self._states))[:5])
+        laf = np.array([state_row[5] for state_row in self._states]).reshape(-1, 3).T
         limit = np.where(kind == RAPID, rapid_limits[state], other_limits[state])
         exact = exact_mode[state] | (kind == RAPID) | (kind == PROBE) | (kind == HOME)
         fastest = (kind == RAPID) | (kind == HOME)
@@ -258,7 +271,9 @@ class Planner:
         before, after = moving[:-1], moving[1:]
         corner = corner_speeds2(seg.tangent_out[:, before], seg.tangent_in[:, after], seg.length[before],
                                 seg.length[after], np.minimum(all_accel[before], all_accel[after]),
-                                tolerance[state[after]], cfg.laf_angle)
+                                tolerance[state[after]], cfg.laf_angle,
+                                None if np.isnan(laf[0]).all() else (laf[0, state[after]], laf[1, state[after]],
+                                                                     laf[2, state[after]]))
         corner = np.where(exact[:-1] | exact[1:], 0.0, np.minimum(corner, np.minimum(vmax[:-1], vmax[1:]) ** 2))
         first = 0.0 if len(exact) and exact[0] else self._start2
         node2 = plan_nodes(length, accel, np.concatenate(([first], corner, [0.0]))[:len(moving) + 1], first)
@@ -336,5 +351,10 @@ class Planner:
             self.time += seconds
         elif event.kind == "tool_change":
             self.tool = int(event.data.get("tool", self.tool))
+        elif event.kind == "operator_wait":
+            knob = self.overrides.feed_percent if event.data.get("override") == "feed" else 100.0
+            self.estimate.add_note(f"{event.path}:{event.line}: M{event.data.get('m')} P0 waits for the operator to "
+                                   f"turn the {event.data.get('override')} override knob (not timed); the run goes on "
+                                   f"at {knob:g} %")
         for sink in self.sinks:
             sink.event(event)

@@ -66,3 +66,29 @@ Sub check_contact
         errmsg "no contact"
     EndIf
 EndSub
+
+; The render-mode guard (#5397, the job's preview) is enough: the Sorotec macro guards its probes with it
+; alone, as its simulation may probe for testing.
+Sub user_7
+    If [#5397 == 0]          ; not while rendering
+        G38.2 Z-10 F100
+    EndIf
+    If [[#5398 == 1] AND [#5397 == 0]]
+        G38.2 Z-11 F100
+    EndIf
+    If [#5397 <> 0]
+        msg "rendering: skipped"
+    Else
+        G38.2 Z-12 F100
+    EndIf
+    If [#5398 == 1]          ; a dialog's answer guards nothing
+        G38.2 Z-13 F100      ; expect: G504
+    EndIf
+EndSub
+
+Sub user_8
+    If [#5397 == 1]          ; the rendering branch ends the run ...
+        errmsg "not while rendering"
+    EndIf
+    G38.2 Z-10 F100          ; ... so this is guarded
+EndSub

@@ -13,4 +13,6 @@ KIN X2B                  ; expect: E107
 G1 X
 ; expect-next-line: E100
 G0 @
+N123456 G1 X1 ; expect: E115 (manual 3.4.1: five digits at most)
+G0 X1 ( T1: End Mill (6 mm) ) ; expect: E116 (manual 3.4.4: comments do not nest)
 M30
