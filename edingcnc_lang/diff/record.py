@@ -14,21 +14,24 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.canon import PLANES, Event, Move, Pose
+from edingcnc_lang import speedups
+from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.kinematics.trajectory import ARC_ROW
 from edingcnc_lang.motion.planner.estimate import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
 RAPID_KINDS = (0, 4)
-# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc,
-# and for an arc its centre (two values), plane (index into PLANE_NAMES, -1: no arc), turn, full turns
-ROW = 24
-PLANE_NAMES = ("XY", "XZ", "YZ")
+# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc, and for an
+# arc its frame as ``trajectory.arc_frame_rows`` gives it (u, v, centre (2), r0, r1, start angle, sweep,
+# length; u -1: not an arc)
+FRAME = ARC_ROW - 1
+ROW = 19 + FRAME
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
 MAX_CHORDS = 4096      # pieces per arc move at most
 ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
 CHUNK = 65_536         # moves (points) filled at once
-NO_ARC = (0.0, 0.0, -1.0, 0.0, 0.0)
+NO_ARC = (-1.0,) + (0.0,) * (FRAME - 1)
 
 
 @dataclass
@@ -44,7 +47,7 @@ class Recording:
     times: np.ndarray      # (N, 2) planned start and end, seconds
     starts: np.ndarray     # (N, 6)
     ends: np.ndarray       # (N, 6)
-    circles: np.ndarray    # (N, 5) centre, plane, turn, full turns of arc moves (plane -1: not an arc)
+    frames: np.ndarray     # (N, FRAME) the arc moves' frames (column 0, u, is -1 for a straight move)
     # (kind, job line, value, moves before it): tool changes, spindle on/off, coolant, dwell
     events: list[tuple[str, int, float, int]] = field(default_factory=list)
     result: RunResult | None = None
@@ -59,7 +62,7 @@ class Recording:
 
     def arc_moves(self) -> np.ndarray:
         """The indices of the arc moves."""
-        return np.flatnonzero(self.circles[:, 2] >= 0)
+        return np.flatnonzero(self.frames[:, 0] >= 0)
 
     def tool_order(self) -> list[int]:
         """The tools put into the spindle, in order (a tool change to the tool already in is not one)."""
@@ -95,9 +98,9 @@ class Recorder:
         self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))
         self.rows.extend(move.start)
         self.rows.extend(move.end)
-        arc = move.arc
-        self.rows.extend((arc.center[0], arc.center[1], PLANE_NAMES.index(arc.plane), arc.turn, arc.full_turns)
-                         if arc is not None else NO_ARC)
+        # the arc's circle as the planner reads it: one meaning of an arc's frame, not a second derivation
+        self.rows.extend(speedups.arc_frame_rows(move.start, (move.end,), (move.arc,))[1:]
+                         if move.arc is not None else NO_ARC)
 
     def event(self, event: Event) -> None:
         value: float
@@ -127,7 +130,7 @@ class Recorder:
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         return Recording(name=name, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
                          lines=table[:, 2].astype(np.int32), feeds=table[:, 3], spindles=table[:, 4],
-                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19], circles=table[:, 19:24],
+                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19], frames=table[:, 19:ROW],
                          events=self.events, result=result)
 
 
@@ -253,30 +256,15 @@ class _Circles:
         return pts
 
 
-PLANE_AXES = np.array([PLANES[name] for name in PLANE_NAMES])  # first, second, normal axis per plane
-
-
 def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
-    """The circles of the arc moves ``arcs``, each in pieces of at most ``arc_step`` radians and ``LINE_STEP`` mm."""
-    table = rec.circles[arcs]
-    plane = table[:, 2].astype(np.int64)
-    u, v, normal = PLANE_AXES[plane].T
-    c1, c2 = table[:, 0].copy(), table[:, 1].copy()
-    xz = plane == PLANE_NAMES.index("XZ")  # the canon names the XZ centre (x, z); the plane's order is (z, x)
-    c1[xz], c2[xz] = table[xz, 1], table[xz, 0]
-    start, end = rec.starts[arcs, :3], rec.ends[arcs, :3]
+    """The circles of the arc moves ``arcs`` (their recorded frames), each in pieces of at most ``arc_step``
+    radians and ``LINE_STEP`` mm."""
+    table = rec.frames[arcs]
+    u, v = table[:, 0].astype(np.int64), table[:, 1].astype(np.int64)
+    normal = 3 - u - v
     rows = np.arange(len(arcs))
-    center = start.copy()
-    center[rows, u], center[rows, v] = c1, c2
-    du0, dv0 = start[rows, u] - c1, start[rows, v] - c2
-    du1, dv1 = end[rows, u] - c1, end[rows, v] - c2
-    angle = np.arctan2(dv0, du0)
-    turns = table[:, 3] * np.maximum(1.0, table[:, 4])
-    direction = np.where(turns > 0, 1.0, -1.0)
-    sweep = np.mod(direction * (np.arctan2(dv1, du1) - angle), 2.0 * math.pi)  # as trajectory.arc_sweep
-    sweep = np.where(sweep <= 1e-12, 2.0 * math.pi, sweep)
-    sweep = direction * (sweep + 2.0 * math.pi * (np.abs(turns) - 1.0))
-    r0, r1 = np.hypot(du0, dv0), np.hypot(du1, dv1)
-    length = np.hypot(np.abs(sweep) * r0, end[rows, normal] - start[rows, normal])
+    center = rec.starts[arcs, :3].copy()
+    center[rows, u], center[rows, v] = table[:, 2], table[:, 3]
+    r0, r1, angle, sweep, length = table[:, 4], table[:, 5], table[:, 6], table[:, 7], table[:, 8]
     pieces = np.clip(np.maximum(np.ceil(np.abs(sweep) / arc_step), np.ceil(length / LINE_STEP)), 2, MAX_CHORDS)
     return _Circles(u, v, normal, center, r0, r1, angle, sweep, length, pieces.astype(np.int64), arcs)
