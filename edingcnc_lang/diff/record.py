@@ -155,6 +155,7 @@ class Samples:
     centers: np.ndarray  # (N, 3) the centre of each arc move (in its plane; the start's normal coordinate)
     normals: np.ndarray  # (N,) int8 the normal axis of each arc move (0 X, 1 Y, 2 Z), -1 not an arc
     radii: np.ndarray    # (N,)
+    jump: np.ndarray     # (P,) bool: a move's start away from the previous end (the segment to it is no path)
 
 
 def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples:
@@ -171,7 +172,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
     if not count:
         return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
-                       centers, normals, radii)
+                       centers, normals, radii, np.zeros(0, dtype=bool))
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
     # at least the middle and the end: a move between two points of the other path that strays between them shows
@@ -191,7 +192,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     straight[arcs] = 0
     for low in range(0, count, CHUNK):
         high = min(count, low + CHUNK)
-        move_of, slot = _slots(np.arange(low, high), straight[low:high])
+        move_of, slot = slots(np.arange(low, high), straight[low:high])
         at = firsts[move_of] + slot
         fraction = (slot + 1) / pieces[move_of]
         points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
@@ -200,7 +201,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     arc_length = np.zeros(total)  # along the arc, not the chord: the same length however an arc is split
     for low in range(0, len(arcs), CHUNK // 16):
         high = min(len(arcs), low + CHUNK // 16)
-        which, slot = _slots(np.arange(low, high), circle.pieces[low:high])
+        which, slot = slots(np.arange(low, high), circle.pieces[low:high])
         move_of = arcs[which]
         at = firsts[move_of] + slot
         points[at] = circle.points(which, (slot + 1) / circle.pieces[which], starts, ends)
@@ -213,10 +214,12 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     length[1:][arc_of >= 0] = 0.0  # segment k ends at point k + 1
     length += arc_length
     length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
-    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
+    jump = np.zeros(total, dtype=bool)
+    jump[jump_at] = True
+    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii, jump)
 
 
-def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Each item repeated ``counts`` times, and the repeat's number (0, 1, ...)."""
     repeated = np.repeat(items, counts)
     return repeated, np.arange(len(repeated)) - np.repeat(np.cumsum(counts) - counts, counts)

@@ -10,7 +10,7 @@ import numpy as np
 from edingcnc_lang.errors import EcncError, printable
 from edingcnc_lang.motion.planner.estimate import format_duration
 from edingcnc_lang.syntax.source import iter_file_lines
-from edingcnc_lang.diff.compare import LISTS, Change, Comparison
+from edingcnc_lang.diff.compare import LISTS, Change, Comparison, tool_share
 from edingcnc_lang.diff.record import Recording
 
 SHOWN_TEXT = 60  # characters of a source line shown
@@ -55,15 +55,34 @@ def _headline(change: Change, tolerance: float) -> str:
     if what == "tool":
         return f"tool T{change.old} -> T{change.new} in the spindle{moves}: {at}"
     if what == "rapid":
-        return f"rapid down to Z{change.new:g} (machine), below every OLD rapid (lowest Z{change.old:g}){moves}: {at}"
+        return f"rapid down to Z{change.new:g} (machine), lower than OLD's rapids there (Z{change.old:g}){moves}: {at}"
+    if what == "rapid_into_stock":
+        return f"rapid into the stock, {change.distance:.4g} mm deep: {at}"
+    if what == "shifted" and change.by is not None:
+        return f"moved by ({', '.join(f'{v:g}' for v in change.by)}) mm{moves}: {at}"
+    if what == "depth":
+        return f"depth Z{change.old:g} -> Z{change.new:g} (machine){moves}: {at}"
+    if what == "reordered":
+        return f"the same moves at another place in the order{moves}: {at}"
     if what == "offset":
         return f"work zero at the end: OLD {change.old}, NEW {change.new}"
-    old = "-" if change.old is None else change.old
-    new = "-" if change.new is None else change.new
-    unit = " s" if what == "dwell" else ""
-    before = f"{old}{unit if change.old is not None else ''}"
-    after = f"{new}{unit if change.new is not None else ''}"
-    return f"{what} {before} -> {after}: {at}"
+    return f"{_event_name(change)}: {at}"
+
+
+def _event_name(change: Change) -> str:
+    """An event's change in words: "spindle M3 -> M4", "coolant M8 added", "dwell 3 s removed"."""
+    name = {"direction": "spindle", "coolant": "coolant", "dwell": "dwell"}.get(change.what, change.what)
+    unit = " s" if change.what == "dwell" else ""
+
+    def words(value: object) -> str:
+        values = value if isinstance(value, list) else [value]
+        return " ".join(f"{v}{unit}" for v in values)
+
+    if change.old is None:
+        return f"{name} {words(change.new)} added"
+    if change.new is None:
+        return f"{name} {words(change.old)} removed"
+    return f"{name} {words(change.old)} -> {words(change.new)}"
 
 
 def _span(lines: tuple[int, int]) -> str:
@@ -111,6 +130,13 @@ def render(comparison: Comparison) -> str:
     if comparison.tools_differ:
         out.append(f"\ntools: OLD {' '.join(f'T{t}' for t in old.tool_order()) or 'none'}, "
                    f"NEW {' '.join(f'T{t}' for t in new.tool_order()) or 'none'}")
+    for side, mine, other in (("added", new, old), ("removed", old, new)):
+        for share in tool_share(mine, other):
+            where = f"{'NEW' if side == 'added' else 'OLD'} lines {share['lines'][0]}-{share['lines'][1]}, " \
+                if share["lines"] else ""
+            after = f"after T{share['after']}" if share["after"] is not None else "first"
+            out.append(f"T{share['tool']} {side}: {share['moves']} moves, {where}"
+                       f"{format_duration(share['seconds'])}, {after}")
     if comparison.time_differs:
         delta = comparison.time[1] - comparison.time[0]
         out.append(f"time: OLD {format_duration(comparison.time[0])}, NEW {format_duration(comparison.time[1])} "
