@@ -2,7 +2,9 @@
 
 OLD is a zigzag of short cuts with a half circle every tenth move (``bench_plot.write_job``); the
 pairs compared are OLD with a reformatted copy of itself (N words, G01, trailing zeros: the same)
-and OLD with an edited copy (a lead-in inserted half way, one feed changed, one cut moved 0.05 mm).
+and OLD with an edited copy (a lead-in inserted half way, one feed changed, one cut moved 0.05 mm), and
+OLD against itself reversed (the moves' lines in the opposite order: no move identical, so nothing to
+anchor on; ``--reversed-lines`` long, 20,000 by default).
 Prints the wall time and peak memory of ``ecnc run --json`` (planned: the time estimate the diff
 reports too) of each job, of ``ecnc diff`` of each pair, and the ratio diff / (run OLD + run NEW).
 
@@ -51,10 +53,18 @@ def edit(old: Path, new: Path) -> None:
     new.write_text("\n".join(lines) + "\n", encoding="ascii")
 
 
+def reverse(old: Path, new: Path, lines: int) -> None:
+    """The first ``lines`` lines of the job's moves in the opposite order (the header and the tool change kept)."""
+    text = old.read_text(encoding="ascii").splitlines()
+    head, body = text[:4], [line for line in text[4:lines] if line.startswith(("G1 ", "G2 ", "G3 "))]
+    new.write_text("\n".join(head + body[::-1] + ["G0 Z5", "M30"]) + "\n", encoding="ascii")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--lines", type=int, default=300_000)
     parser.add_argument("--repeat", type=int, default=1)
+    parser.add_argument("--reversed-lines", type=int, default=20_000)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
@@ -62,18 +72,21 @@ def main() -> None:
         write_job(old, args.lines)
         reformat(old, same)
         edit(old, edited)
+        forward, backward = tmp / "forward.nc", tmp / "reversed.nc"
+        reverse(old, backward, args.reversed_lines)
+        reverse(backward, forward, args.reversed_lines + 10)
 
         def timed(*command: object) -> tuple[float, float]:
             runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
             return statistics.median(r[0] for r in runs), max(r[1] for r in runs)
 
-        runs = {job.name: timed("run", job, "--json") for job in (old, same, edited)}
+        runs = {job.name: timed("run", job, "--json") for job in (old, same, edited, forward, backward)}
         for name, (wall, peak) in runs.items():
             print(f"ecnc run --json {name:<11} {wall:7.2f} s {peak:6.0f} MB")
-        for job in (same, edited):
-            wall, peak = timed("diff", old, job, "--json")
-            both = runs[old.name][0] + runs[job.name][0]
-            print(f"ecnc diff old.nc {job.name:<11} {wall:7.2f} s {peak:6.0f} MB  = {wall / both:.2f} x running both")
+        for first, job in ((old, same), (old, edited), (forward, backward)):
+            wall, peak = timed("diff", first, job, "--json")
+            both = runs[first.name][0] + runs[job.name][0]
+            print(f"ecnc diff {first.name:<10} {job.name:<11} {wall:7.2f} s {peak:6.0f} MB  = {wall / both:.2f} x running both")
 
 
 if __name__ == "__main__":

@@ -11,12 +11,19 @@ from edingcnc_lang.errors import EXIT_OK
 from edingcnc_lang.plot.names import VIEW_NAMES
 from edingcnc_lang.cli.base import Command
 from edingcnc_lang.cli.options import MachineOptions, json_option, machine_options
-from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
+from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT, PlainFloat
 
 if TYPE_CHECKING:
     from edingcnc_lang.host import DialogAnswer
 
 EXIT_DIFFERS = 1
+
+
+def _finite(param: click.Parameter, value: float) -> float:
+    """--tolerance inf or nan would make every path the same (or none): a finite number only."""
+    if value != value:
+        raise click.BadParameter("must be a finite number, not nan", param=param)
+    return value
 
 
 @click.command("diff", cls=Command, short_help="Compare what the machine does for OLD and NEW.")
@@ -32,8 +39,8 @@ EXIT_DIFFERS = 1
               help="Dialog answers for NEW (default: those of --answer; repeatable).")
 @click.option("--probe-surface-new", metavar="FILE", type=EXISTING_FILE,
               help="Height map for NEW's probing (default: --probe-surface).")
-@click.option("--tolerance", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.001, show_default=True,
-              help="Paths closer than this are the same.")
+@click.option("--tolerance", metavar="MM", type=PlainFloat(0, 1000, min_open=True), default=0.001, show_default=True,
+              callback=lambda _ctx, param, value: _finite(param, value), help="Paths closer than this are the same.")
 @click.option("--limit", metavar="N", type=POSITIVE_INT, default=50, show_default=True,
               help="Changes listed per kind; the rest are counted.")
 @json_option("Print the comparison as JSON on stdout.")
@@ -73,7 +80,7 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     if as_json:
         import json
 
-        print(json.dumps(comparison.to_json(), indent=1))
+        print(json.dumps(comparison.to_json(), indent=1, allow_nan=False))
     else:
         click.echo(render(comparison), nl=False)
         if output:

@@ -3,7 +3,8 @@
 Both runs are dense polylines (``record.sample``).  ``nearest`` measures points against a stretch of
 the other polyline (pieces of arcs to their circle): the segments are filed by the grid cell of pieces
 at most ``2 * reach`` long, a point looks in its own cell and the 26 around it, so every segment within
-``reach`` of it is found and measured exactly; a point farther than ``reach`` from all of them is
+``reach`` of it is found and measured exactly (a fine grid first, ``NEAR``, then the whole reach for the
+points it left); a point farther than ``reach`` from all of them is
 measured against a bounded sample of the stretch's points (``FAR_POINTS``) instead.  Work and memory
 grow with the points and the segments near each, never with their product.
 """
@@ -15,6 +16,7 @@ from edingcnc_lang.diff.record import Samples, slots
 
 BRUTE = 1 << 18      # points x segments measured all against all below this
 CHUNK = 4096         # points looked up at once
+NEAR = 0.25          # mm: the reach of the fine grid
 FAR_POINTS = 4096    # points of the other stretch a far point is measured against
 NEIGHBOURS = np.array([(i, j, k) for i in (-1, 0, 1) for j in (-1, 0, 1) for k in (-1, 0, 1)], dtype=np.int64)
 
@@ -100,13 +102,14 @@ def nearest(points: np.ndarray, stretch: Stretch, reach: float) -> tuple[np.ndar
     if count * size <= BRUTE:
         rows, cols = np.repeat(np.arange(count), size), np.tile(np.arange(size), count)
         _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
-    else:
-        grid = _Grid(stretch, 2.0 * reach)
-        for low in range(0, count, CHUNK):
-            chosen = np.arange(low, min(count, low + CHUNK))
-            rows, cols = grid.candidates(points[chosen, :3])
-            rows = chosen[rows]
-            _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
+    else:  # a fine grid first (most points lie on the other path), a coarse one for the points it leaves
+        for near in sorted({min(reach, NEAR), reach}):
+            grid, todo = _Grid(stretch, 2.0 * near), np.flatnonzero(distance > near)
+            for low in range(0, len(todo), CHUNK):
+                chosen = todo[low:low + CHUNK]
+                rows, cols = grid.candidates(points[chosen, :3])
+                rows = chosen[rows]
+                _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
     far = np.flatnonzero(distance > reach)
     if far.size:  # nothing near: the nearest of up to FAR_POINTS of the stretch's ends is near enough to say so
         pick = np.unique(np.linspace(0, size - 1, min(size, FAR_POINTS)).astype(np.int64))

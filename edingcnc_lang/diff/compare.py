@@ -90,8 +90,9 @@ class Comparison:
         return not (any(self.changes.values()) or self.time_differs or self.tools_differ)
 
     def to_json(self) -> dict[str, Any]:
+        """The comparison as JSON values; a number that is not finite is null (never a bare Infinity/NaN)."""
         lists = {name: [c.to_json() for c in self.changes[name]] for name in LISTS}
-        return {
+        return _finite({
             "same": self.same, "tolerance": self.tolerance, "max_deviation": None if self.max_deviation is None else round(self.max_deviation, 6),
             "deviations": lists["deviations"], "feeds": lists["feeds"], "spindle": lists["spindle"],
             "tools": {"old": self.old.tool_order(), "new": self.new.tool_order(), "moves": lists["tool_moves"],
@@ -101,7 +102,17 @@ class Comparison:
             "offsets": lists["offsets"],
             "moves": {"old": len(self.old), "new": len(self.new)},
             "left_out": {name: count for name, count in self.left_out.items() if count},
-        }
+        })
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(item) for item in value]
+    return value
 
 
 def tool_share(mine: Recording, other: Recording) -> list[dict[str, Any]]:
@@ -216,13 +227,22 @@ def _deviations(old: Recording, new: Recording, tolerance: float, matching: Matc
         runs.append(Change("added" if far[first] else "moved", old_lines, _lines(new, first, last),
                            distance=float(new_distance[first:last + 1].max()), tool=int(new.tools[first]),
                            moves=last - first + 1, new_moves=(first, last), old_moves=old_moves))
+    # which NEW run each NEW move is in, and which NEW run each OLD move lies beside: a join is a lookup
+    run_of_new = np.full(len(new) + 2, -1, dtype=np.int64)
+    run_of_old = np.full(len(old) + 2, -1, dtype=np.int64)
+    for number, change in reversed(list(enumerate(runs))):
+        for table, span in ((run_of_new, change.new_moves), (run_of_old, change.old_moves)):
+            if span is not None:
+                table[span[0] + 1:span[1] + 2] = number  # shifted by one: a run touches the moves beside it
     alone: list[Change] = []
     for first, last in _runs(old_distance > tolerance, old_distance > CAPTURE, old.tools):
         new_lines, new_moves = _matched(new, old_match, first, last)
         distance = float(old_distance[first:last + 1].max())
         tool = int(old.tools[first])
-        beside = next((c for c in runs if c.tool == tool
-                       and (_touch(c.new_moves, new_moves) or _touch(c.old_moves, (first, last)))), None)
+        near = run_of_old[first:last + 3]
+        if new_moves is not None:
+            near = np.concatenate((run_of_new[new_moves[0]:new_moves[1] + 3], near))
+        beside = next((runs[n] for n in np.unique(near[near >= 0]).tolist() if runs[n].tool == tool), None)
         if beside is not None:
             low, high = (first, last) if beside.old_moves is None else (min(first, beside.old_moves[0]),
                                                                         max(last, beside.old_moves[1]))
@@ -251,11 +271,6 @@ def _shift_change(old: Recording, new: Recording, shift: Shift) -> Change:
         return Change("depth", _lines(old, a, b), _lines(new, c, d), old=_number(low), new=_number(low + by[2]),
                       distance=size, by=by, **common)
     return Change("shifted", _lines(old, a, b), _lines(new, c, d), distance=size, by=by, **common)
-
-
-def _touch(one: tuple[int, int] | None, other: tuple[int, int] | None) -> bool:
-    """Do two runs of moves overlap or meet?"""
-    return one is not None and other is not None and one[0] <= other[1] + 1 and other[0] <= one[1] + 1
 
 
 def _value_changes(what: str, old: Recording, new: Recording, near: np.ndarray, match: np.ndarray,
