@@ -11,6 +11,7 @@ from edingcnc_lang.errors import EXIT_OK
 from edingcnc_lang.plot.names import VIEW_NAMES
 from edingcnc_lang.cli.base import Command
 from edingcnc_lang.cli.options import MachineOptions, json_option, machine_options
+from edingcnc_lang.cli.sim_cmd import StockBox
 from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT, PlainFloat
 
 if TYPE_CHECKING:
@@ -43,6 +44,10 @@ def _finite(param: click.Parameter, value: float) -> float:
               callback=lambda _ctx, param, value: _finite(param, value), help="Paths closer than this are the same.")
 @click.option("--limit", metavar="N", type=POSITIVE_INT, default=50, show_default=True,
               help="Changes listed per kind; the rest are counted.")
+@click.option("--stock", "box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
+              help="Cut this stock (work coordinates) with both jobs and compare the parts (as ecnc sim cuts).")
+@click.option("--resolution", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.25,
+              show_default=True, help="Cell size of the height field of --stock.")
 @json_option("Print the comparison as JSON on stdout.")
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="Also draw both toolpaths with the differences highlighted (.png, .svg or .pdf).")
@@ -50,7 +55,8 @@ def _finite(param: click.Parameter, value: float) -> float:
               help="The picture's view (auto: top, or lathe for a job that never moves Y).")
 def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro_new: str | None,
          user_macro_new: str | None, answers_new: tuple[DialogAnswer, ...], probe_surface_new: str | None,
-         tolerance: float, limit: int, as_json: bool, output: str | None, view: str) -> int:
+         tolerance: float, limit: int, box: tuple[float, ...] | None, resolution: float, as_json: bool,
+         output: str | None, view: str) -> int:
     """Run OLD and NEW on the virtual machine and compare what the machine does, per tool and in
     order: the path (within --tolerance), feeds, spindle speeds, tools and their order, offsets,
     dwells, coolant, the planned time and rapids lower than any in OLD. Renumbered lines, G01 for
@@ -73,6 +79,12 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     before = record(Path(old), machine.run_options(show_messages=False))
     after = record(Path(new), new_machine.run_options(show_messages=False))
     comparison = compare(before, after, tolerance, limit)
+    if box is not None:
+        from edingcnc_lang.diff.part import compare_parts
+
+        comparison.add_part(compare_parts(Path(old), Path(new), box, resolution, before, after,
+                                          machine.run_options(show_messages=False),
+                                          new_machine.run_options(show_messages=False), tolerance))
     if output:
         from edingcnc_lang.diff.picture import draw_diff
 

@@ -16,10 +16,19 @@ __all__ = ["Change", "Comparison", "Recording", "compare", "diff_files", "record
 
 
 def diff_files(old: str | Path, new: str | Path, options: RunOptions | None = None,
-               new_options: RunOptions | None = None, tolerance: float = TOLERANCE, limit: int = LIMIT) -> Comparison:
+               new_options: RunOptions | None = None, tolerance: float = TOLERANCE, limit: int = LIMIT,
+               stock: tuple[float, ...] | None = None, resolution: float = 0.25) -> Comparison:
     """Run ``old`` and ``new`` (``new_options``, default ``options``: where the machine itself
-    changed) and compare what the machine does; run errors are raised as ``run_file`` raises them."""
+    changed) and compare what the machine does; with ``stock`` (XMIN, YMIN, ZMIN, XMAX, YMAX, ZMAX in
+    work coordinates) cut it with both and compare the parts too.  Run errors are raised as
+    ``run_file`` raises them."""
     options = options or RunOptions()
     before = record(Path(old), options)
     after = record(Path(new), new_options or options)
-    return compare(before, after, tolerance, limit)
+    comparison = compare(before, after, tolerance, limit)
+    if stock is not None:
+        from edingcnc_lang.diff.part import compare_parts
+
+        comparison.add_part(compare_parts(old, new, stock, resolution, before, after, options, new_options,
+                                          tolerance))
+    return comparison

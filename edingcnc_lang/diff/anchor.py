@@ -22,24 +22,36 @@ BUDGET = 40        # the anchoring's work, in moves looked at, stops at this man
 
 
 def keys(old: Recording, new: Recording, tolerance: float) -> tuple[np.ndarray, np.ndarray]:
-    """One integer per move naming what it does, the same in both jobs for the same move."""
+    """One integer per move naming what it does, the same in both jobs for the same move: the rounded
+    columns hashed to 64 bits (splitmix64 over the columns; two different moves share a key with a
+    chance of about n^2 / 2^64), then numbered."""
     step = max(tolerance, 1e-9)
 
-    def table(rec: Recording) -> np.ndarray:
+    def hashed(rec: Recording) -> np.ndarray:
         kind = np.where(np.isin(rec.kinds, RAPID_KINDS), -1, rec.kinds.astype(np.int64))
         arc = rec.frames[:, [0, 2, 3, 4, 7]].copy()
         arc[:, 1:4] /= step
         arc[:, 4] *= 1e6  # the sweep (radians): its direction and size
-        columns = (kind[:, None], np.round(rec.starts / step),
-                   np.round(rec.ends / step), np.round(arc))
-        return np.hstack([c.astype(np.float64) for c in columns])
+        key = np.full(len(rec), 0x9E3779B97F4A7C15, dtype=np.uint64)
+        for column in (kind.astype(np.float64)[:, None], rec.starts / step, rec.ends / step, arc):
+            whole = np.clip(np.nan_to_num(np.round(column)), -2.0 ** 62, 2.0 ** 62).astype(np.int64)
+            for values in whole.T:
+                key = _mix(key ^ values.view(np.uint64))
+        return key
 
-    both = np.vstack((table(old), table(new)))
-    if not len(both):
-        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    _unique, inverse = np.unique(both, axis=0, return_inverse=True)
-    inverse = inverse.reshape(-1).astype(np.int64)
+    both = np.concatenate((hashed(old), hashed(new)))
+    _unique, inverse = np.unique(both, return_inverse=True)
+    inverse = inverse.astype(np.int64)
     return inverse[:len(old)], inverse[len(old):]
+
+
+def _mix(x: np.ndarray) -> np.ndarray:
+    """splitmix64's finaliser: every bit of the input moves about half the bits of the output."""
+    with np.errstate(over="ignore"):
+        x = x + np.uint64(0x9E3779B97F4A7C15)
+        x = (x ^ (x >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+        x = (x ^ (x >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+        return x ^ (x >> np.uint64(31))
 
 
 def anchors(old_keys: np.ndarray, new_keys: np.ndarray) -> np.ndarray:
@@ -67,14 +79,20 @@ def anchors(old_keys: np.ndarray, new_keys: np.ndarray) -> np.ndarray:
         found = found + (o0, n0)
         pairs.append(found)
         # the stretches between these anchors, searched again with the keys rare there
-        bounds = np.vstack(([o0 - 1, n0 - 1], found, [o1, n1]))
-        for (a, b), (c, d) in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
-            if c > a + 1 or d > b + 1:
-                stretches.append((a + 1, c, b + 1, d))
+        stretches += [(a, b, c, d) for a, b, c, d in between(found - (o0, n0), o1 - o0, n1 - n0) + (o0, o0, n0, n0)]
     if not pairs:
         return np.zeros((0, 2), dtype=np.int64)
     every = np.vstack(pairs)
     return every[np.argsort(every[:, 1], kind="stable")]
+
+
+def between(pairs: np.ndarray, old_count: int, new_count: int) -> np.ndarray:
+    """The stretches between consecutive ``pairs`` (and before the first, after the last) that hold a move
+    of either job, as rows (OLD first, OLD stop, NEW first, NEW stop)."""
+    bounds = np.vstack(([-1, -1], pairs.reshape(-1, 2), [old_count, new_count]))
+    low, high = bounds[:-1] + 1, bounds[1:]
+    gap = (high[:, 0] > low[:, 0]) | (high[:, 1] > low[:, 1])
+    return np.column_stack((low[gap, 0], high[gap, 0], low[gap, 1], high[gap, 1]))
 
 
 def _common(one: np.ndarray, other: np.ndarray) -> int:

@@ -12,12 +12,15 @@ import difflib
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from edingcnc_lang.diff.match import CAPTURE, Matching, Shift, match as match_moves
 from edingcnc_lang.diff.record import RAPID_KINDS, Recording, slots
+
+if TYPE_CHECKING:
+    from edingcnc_lang.diff.part import PartComparison
 
 TOLERANCE = 0.001       # mm, the default of --tolerance
 LIMIT = 50              # changes kept per list (the rest are counted)
@@ -77,9 +80,11 @@ class Comparison:
     left_out: dict[str, int]
     time: tuple[float, float]
     time_differs: bool
+    limit: int
     # per move, how far it is from the other path (for pictures)
     new_distance: np.ndarray = field(default_factory=lambda: np.zeros(0))
     old_distance: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    part: PartComparison | None = None  # with a stock: both parts as cut (``add_part``)
 
     @property
     def tools_differ(self) -> bool:
@@ -87,7 +92,9 @@ class Comparison:
 
     @property
     def same(self) -> bool:
-        return not (any(self.changes.values()) or self.time_differs or self.tools_differ)
+        # a rapid into the stock is a finding on NEW, not a difference: the same job twice is the same
+        differs = any(c.what != "rapid_into_stock" for changes in self.changes.values() for c in changes)
+        return not (differs or self.time_differs or self.tools_differ)
 
     def to_json(self) -> dict[str, Any]:
         """The comparison as JSON values; a number that is not finite is null (never a bare Infinity/NaN)."""
@@ -102,7 +109,15 @@ class Comparison:
             "offsets": lists["offsets"],
             "moves": {"old": len(self.old), "new": len(self.new)},
             "left_out": {name: count for name, count in self.left_out.items() if count},
+            "part": self.part.to_json() if self.part is not None else None,
         })
+
+    def add_part(self, part: PartComparison) -> None:
+        """The parts as cut, and NEW's rapids into the stock with the other rapids found."""
+        self.part = part
+        rapids = self.changes["rapids"] + part.rapids
+        self.changes["rapids"] = rapids[:self.limit]
+        self.left_out["rapids"] = self.left_out.get("rapids", 0) + max(0, len(rapids) - self.limit)
 
 
 def _finite(value: Any) -> Any:
@@ -162,7 +177,7 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
         biggest = None
     time = (old.seconds, new.seconds)
     time_differs = abs(time[1] - time[0]) > max(TIME_SECONDS, TIME_SHARE * time[0])
-    return Comparison(old, new, tolerance, biggest, kept, left_out, time, time_differs, *distances)
+    return Comparison(old, new, tolerance, biggest, kept, left_out, time, time_differs, limit, *distances)
 
 
 def _goes_somewhere(rec: Recording) -> np.ndarray:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from edingcnc_lang.diff.align import Stretch, matched_moves, nearest
-from edingcnc_lang.diff.anchor import anchors, keys
+from edingcnc_lang.diff.anchor import anchors, between, keys
 from edingcnc_lang.diff.record import RAPID_KINDS, Recording, Samples, sample
 
 CAPTURE = 1.0        # mm: a point this close to the other path is on it, moved; farther, it is elsewhere
@@ -52,9 +52,7 @@ def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matchi
     result = Matching(np.zeros(len(new)), np.full(len(new), -1, dtype=np.int64), np.zeros(len(old)),
                       np.full(len(old), -1, dtype=np.int64), np.zeros(len(new), dtype=bool))
     _pair(result, pairs[:, 0], pairs[:, 1], 0.0)
-    bounds = np.vstack(([-1, -1], pairs, [len(old), len(new)]))
-    gaps = [(a + 1, c, b + 1, d) for (a, b), (c, d) in zip(bounds[:-1].tolist(), bounds[1:].tolist())
-            if c > a + 1 or d > b + 1]
+    gaps: list[tuple[int, int, int, int]] = [tuple(g) for g in between(pairs, len(old), len(new)).tolist()]  # type: ignore[misc]
     for o0, o1, n0, n1 in gaps:
         for shift in _shifted(old, new, o0, o1, n0, n1, tolerance):
             result.shifts.append(shift)
@@ -63,6 +61,8 @@ def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matchi
     _reordered(result, old_keys, new_keys, gaps)
     for o0, o1, n0, n1 in gaps:
         _reordered_gap(result, old, new, o0, o1, n0, n1)
+    if not ((result.new_match == -1).any() or (result.old_match == -1).any()):
+        return result  # every move has its counterpart: no path to measure
     old_samples, new_samples = sample(old, dims), sample(new, dims)
     for o0, o1, n0, n1 in gaps:
         _measure(result.new_distance, result.new_match, new_samples, n0, n1, old_samples, o0, o1)

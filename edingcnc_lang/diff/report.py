@@ -106,10 +106,10 @@ def render(comparison: Comparison) -> str:
            f"NEW {new.name}: {len(new):,} moves, {format_duration(comparison.time[1])} planned"]
     if comparison.same:
         out.append(f"same: nothing the machine does differs beyond {comparison.tolerance:g} mm")
-        return "\n".join(out) + "\n"
+        return "\n".join(out + _part(comparison)) + "\n"
     biggest = "no path to compare with" if comparison.max_deviation is None else f"{comparison.max_deviation:.4g} mm"
     out.append(f"differs: largest path deviation {biggest} (tolerance {comparison.tolerance:g} mm)")
-    changes = [c for name in LISTS for c in comparison.changes[name]]
+    changes = [c for name in LISTS for c in comparison.changes[name] if c.what != "rapid_into_stock"]
     old_text = source_text(old.name, (n for c in changes if c.old_lines for n in {c.old_lines[0], c.old_lines[1]}))
     new_text = source_text(new.name, (n for c in changes if c.new_lines for n in {c.new_lines[0], c.new_lines[1]}))
     placed: set[int] = set()
@@ -130,8 +130,8 @@ def render(comparison: Comparison) -> str:
     if comparison.tools_differ:
         out.append(f"\ntools: OLD {' '.join(f'T{t}' for t in old.tool_order()) or 'none'}, "
                    f"NEW {' '.join(f'T{t}' for t in new.tool_order()) or 'none'}")
-    for side, mine, other in (("added", new, old), ("removed", old, new)):
-        for share in tool_share(mine, other):
+    for side, ours, theirs in (("added", new, old), ("removed", old, new)):
+        for share in tool_share(ours, theirs):
             where = f"{'NEW' if side == 'added' else 'OLD'} lines {share['lines'][0]}-{share['lines'][1]}, " \
                 if share["lines"] else ""
             after = f"after T{share['after']}" if share["after"] is not None else "first"
@@ -144,7 +144,31 @@ def render(comparison: Comparison) -> str:
     for name, count in comparison.left_out.items():
         if count:
             out.append(f"({count} more {name} changes left out)")
-    return "\n".join(out) + "\n"
+    return "\n".join(out + _part(comparison)) + "\n"
+
+
+def _part(comparison: Comparison) -> list[str]:
+    """The parts as cut (``--stock``): same or where they differ, and NEW's rapids into the stock."""
+    part = comparison.part
+    if part is None:
+        return []
+    if part.same:
+        out = [f"part: the same part (no cell of {part.old.resolution:g} mm differs by more than "
+               f"{part.tolerance:g} mm)"]
+    else:
+        out = [f"part: differs by up to {part.max_deviation:.4g} mm (mean {part.mean_deviation:.4g} mm) "
+               f"in {len(part.regions)} region{'s' if len(part.regions) != 1 else ''}:"]
+        for region in part.regions:
+            x0, y0, x1, y1 = region.bounds
+            who = {"new": "NEW cuts deeper", "old": "OLD cuts deeper", "both": "each deeper in places"}[region.deeper]
+            lines = ", ".join(f"{side} {_span(span)}" for side, span in (("OLD", region.old_lines),
+                                                                          ("NEW", region.new_lines)) if span)
+            out.append(f"  X{x0:g}..{x1:g} Y{y0:g}..{y1:g}: up to {region.max_deviation:.4g} mm, {who}"
+                       f"{': ' + lines if lines else ''}")
+    for rapid in comparison.changes["rapids"]:
+        if rapid.what == "rapid_into_stock" and rapid.new_lines:
+            out.append(f"  {_headline(rapid, comparison.tolerance)}")
+    return out
 
 
 def _told(changes: list[Change], tolerance: float, old_text: dict[int, str], new_text: dict[int, str]) -> list[str]:
