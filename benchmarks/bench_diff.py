@@ -54,10 +54,20 @@ def edit(old: Path, new: Path) -> None:
 
 
 def reverse(old: Path, new: Path, lines: int) -> None:
-    """The first ``lines`` lines of the job's moves in the opposite order (the header and the tool change kept)."""
+    """The moves of the job's first ``lines`` lines driven backwards, last first (each arc the other way
+    round): the same path, no move the same as OLD's."""
     text = old.read_text(encoding="ascii").splitlines()
-    head, body = text[:4], [line for line in text[4:lines] if line.startswith(("G1 ", "G2 ", "G3 "))]
-    new.write_text("\n".join(head + body[::-1] + ["G0 Z5", "M30"]) + "\n", encoding="ascii")
+    head, points, moves = text[:4], [(0.0, 0.0)], []
+    for line in text[4:lines]:
+        found = re.match(r"G([123]) X(-?[\d.]+) Y(-?[\d.]+)(.*)", line)
+        if found:
+            points.append((float(found.group(2)), float(found.group(3))))
+            moves.append((found.group(1), found.group(4)))
+    out = head + [f"G1 X{points[-1][0]:.3f} Y{points[-1][1]:.3f}"]
+    for (word, rest), (x, y) in zip(moves[::-1], points[-2::-1]):
+        word = {"2": "3", "3": "2"}.get(word, word)
+        out.append(f"G{word} X{x:.3f} Y{y:.3f}{rest}")
+    new.write_text("\n".join(out + ["G0 Z5", "M30"]) + "\n", encoding="ascii")
 
 
 def main() -> None:
@@ -74,7 +84,7 @@ def main() -> None:
         edit(old, edited)
         forward, backward = tmp / "forward.nc", tmp / "reversed.nc"
         reverse(old, backward, args.reversed_lines)
-        reverse(backward, forward, args.reversed_lines + 10)
+        reverse(backward, forward, args.reversed_lines + 10)  # the same moves forwards, as the reversed job starts
 
         def timed(*command: object) -> tuple[float, float]:
             runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]

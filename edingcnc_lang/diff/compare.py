@@ -34,7 +34,7 @@ LISTS = ("deviations", "feeds", "spindle", "tool_moves", "dwell", "coolant", "ra
 class Change:
     """One change: a run of neighbouring moves (or one event) that differs alike."""
 
-    # moved, added, removed, replaced, shifted, depth, reordered, feed, spindle, direction, tool, dwell,
+    # moved, added, removed, replaced, shifted, depth, reordered, reversed, feed, spindle, direction, tool, dwell,
     # coolant, rapid, offset
     what: str
     old_lines: tuple[int, int] | None      # job lines, first and last
@@ -277,6 +277,8 @@ def _shift_change(old: Recording, new: Recording, shift: Shift) -> Change:
     """A shifted feature (``depth`` when it moved in Z only), or moves done at another place in the order."""
     (a, b), (c, d) = shift.old, shift.new
     common: dict[str, Any] = {"tool": int(new.tools[c]), "moves": d - c + 1, "new_moves": (c, d), "old_moves": (a, b)}
+    if shift.backwards:
+        return Change("reversed", _lines(old, a, b), _lines(new, c, d), distance=0.0, **common)
     if shift.by is None:
         return Change("reordered", _lines(old, a, b), _lines(new, c, d), distance=0.0, **common)
     by = shift.by

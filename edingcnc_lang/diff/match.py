@@ -25,11 +25,12 @@ MIN_SHIFTED = 2      # moves moved whole (both ends) that make a shifted feature
 @dataclass
 class Shift:
     """A run of pairs of moves: NEW's are OLD's moved by ``by`` (None: the same moves at another place
-    in the order)."""
+    in the order, or with ``backwards`` the same path driven the other way)."""
 
     old: tuple[int, int]
     new: tuple[int, int]
     by: tuple[float, float, float] | None
+    backwards: bool = False   # NEW drives OLD's moves the other way, last first
 
 
 @dataclass
@@ -47,7 +48,7 @@ class Matching:
 
 def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matching:
     """Pair and measure the moves of ``old`` and ``new``."""
-    old_keys, new_keys = keys(old, new, tolerance)
+    old_keys, new_keys, backwards = keys(old, new, tolerance)
     pairs = anchors(old_keys, new_keys)
     result = Matching(np.zeros(len(new)), np.full(len(new), -1, dtype=np.int64), np.zeros(len(old)),
                       np.full(len(old), -1, dtype=np.int64), np.zeros(len(new), dtype=bool))
@@ -58,6 +59,7 @@ def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matchi
             result.shifts.append(shift)
             (a, b), (c, d) = shift.old, shift.new
             _pair(result, np.arange(a, b + 1), np.arange(c, d + 1), float(np.linalg.norm(shift.by or 0.0)))
+    _reversed(result, old_keys, backwards)
     _reordered(result, old_keys, new_keys, gaps)
     for o0, o1, n0, n1 in gaps:
         _reordered_gap(result, old, new, o0, o1, n0, n1)
@@ -120,6 +122,27 @@ def _shift_run(old: Recording, new: Recording, olds: np.ndarray, news: np.ndarra
 def _true_runs(mask: np.ndarray) -> list[tuple[int, int]]:
     edges = np.flatnonzero(np.diff(np.concatenate(([0], mask.astype(np.int8), [0]))))
     return list(zip(edges[::2].tolist(), (edges[1::2] - 1).tolist()))
+
+
+def _reversed(result: Matching, old_keys: np.ndarray, backwards: np.ndarray) -> None:
+    """Moves left that are OLD's driven the other way (climb milling become conventional): NEW's leftover
+    moves read last first against OLD's; runs of them become ``Shift``s with ``backwards``."""
+    old_left = np.flatnonzero(result.old_match < 0)
+    new_left = np.flatnonzero(result.new_match < 0)[::-1]
+    if not len(old_left) or not len(new_left):
+        return
+    pairs = anchors(old_keys[old_left], backwards[new_left])
+    if not len(pairs):
+        return
+    olds, news = old_left[pairs[:, 0]], new_left[pairs[:, 1]]
+    order = np.argsort(olds)
+    olds, news = olds[order], news[order]
+    _pair(result, olds, news, 0.0)
+    cut = np.r_[True, (np.diff(olds) != 1) | (np.diff(news) != -1)]
+    starts = np.flatnonzero(cut)
+    for first, last in zip(starts.tolist(), (np.r_[starts[1:], len(olds)] - 1).tolist()):
+        result.shifts.append(Shift((int(olds[first]), int(olds[last])), (int(news[last]), int(news[first])),
+                                   None, backwards=True))
 
 
 def _reordered(result: Matching, old_keys: np.ndarray, new_keys: np.ndarray,

@@ -62,6 +62,8 @@ def _headline(change: Change, tolerance: float) -> str:
         return f"moved by ({', '.join(f'{v:g}' for v in change.by)}) mm{moves}: {at}"
     if what == "depth":
         return f"depth Z{change.old:g} -> Z{change.new:g} (machine){moves}: {at}"
+    if what == "reversed":
+        return f"the same path driven the other way (climb and conventional milling swap){moves}: {at}"
     if what == "reordered":
         return f"the same moves at another place in the order{moves}: {at}"
     if what == "offset":
