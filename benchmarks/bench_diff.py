@@ -88,7 +88,7 @@ def main() -> None:
 
         def timed(*command: object) -> tuple[float, float]:
             runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
-            return statistics.median(r[0] for r in runs), max(r[1] for r in runs)
+            return statistics.median(r[0] for r in runs), max(r[2] for r in runs)
 
         runs = {job.name: timed("run", job, "--json") for job in (old, same, edited, forward, backward)}
         for name, (wall, peak) in runs.items():

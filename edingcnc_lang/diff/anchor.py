@@ -21,11 +21,12 @@ MIN_GAP = 2        # a stretch this short on both sides is not searched for anch
 BUDGET = 40        # the anchoring's work, in moves looked at, stops at this many times the moves
 
 
-def keys(old: Recording, new: Recording, tolerance: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def keys(old: Recording, new: Recording, tolerance: float, dims: int = 6) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """One integer per move naming what it does, the same in both jobs for the same move: the rounded
     columns hashed to 64 bits (splitmix64 over the columns; two different moves share a key with a
     chance of about n^2 / 2^64), then numbered.  The third array is NEW's moves driven backwards: the
-    key each would have from its end to its start (an arc the other way round)."""
+    key each would have from its end to its start (an arc the other way round).  ``dims``: the axes
+    that count (3: XYZ, when neither job turns a rotary axis)."""
     step = max(tolerance, 1e-9)
 
     def hashed(rec: Recording, backwards: bool = False) -> np.ndarray:
@@ -33,10 +34,10 @@ def keys(old: Recording, new: Recording, tolerance: float) -> tuple[np.ndarray, 
         arc = rec.frames[:, [0, 2, 3, 5 if backwards else 4, 7]].copy()
         arc[:, 1:4] /= step
         arc[:, 4] *= -1e6 if backwards else 1e6  # the sweep (radians): its direction and size
-        start, end = (rec.ends, rec.starts) if backwards else (rec.starts, rec.ends)
+        start, end = (rec.ends[:, :dims], rec.starts[:, :dims]) if backwards else (rec.starts[:, :dims], rec.ends[:, :dims])
         key = np.full(len(rec), 0x9E3779B97F4A7C15, dtype=np.uint64)
         for column in (kind.astype(np.float64)[:, None], start / step, end / step, arc):
-            whole = np.clip(np.nan_to_num(np.round(column)), -2.0 ** 62, 2.0 ** 62).astype(np.int64)
+            whole = np.clip(np.round(column), -2.0 ** 62, 2.0 ** 62).astype(np.int64)
             for values in whole.T:
                 key = _mix(key ^ values.view(np.uint64))
         return key

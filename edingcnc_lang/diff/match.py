@@ -48,7 +48,7 @@ class Matching:
 
 def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matching:
     """Pair and measure the moves of ``old`` and ``new``."""
-    old_keys, new_keys, backwards = keys(old, new, tolerance)
+    old_keys, new_keys, backwards = keys(old, new, tolerance, dims)
     pairs = anchors(old_keys, new_keys)
     result = Matching(np.zeros(len(new)), np.full(len(new), -1, dtype=np.int64), np.zeros(len(old)),
                       np.full(len(old), -1, dtype=np.int64), np.zeros(len(new), dtype=bool))
@@ -65,7 +65,9 @@ def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matchi
         _reordered_gap(result, old, new, o0, o1, n0, n1)
     if not ((result.new_match == -1).any() or (result.old_match == -1).any()):
         return result  # every move has its counterpart: no path to measure
-    old_samples, new_samples = sample(old, dims), sample(new, dims)
+    # only the moves of the gaps and the anchors beside them have their path sampled
+    old_samples = _sampled(old, [(o0 - 1, o1 + 1) for o0, o1, _n0, _n1 in gaps], dims)
+    new_samples = _sampled(new, [(n0 - 1, n1 + 1) for _o0, _o1, n0, n1 in gaps], dims)
     for o0, o1, n0, n1 in gaps:
         _measure(result.new_distance, result.new_match, new_samples, n0, n1, old_samples, o0, o1)
         _measure(result.old_distance, result.old_match, old_samples, o0, o1, new_samples, n0, n1)
@@ -189,6 +191,23 @@ def _reordered_gap(result: Matching, old: Recording, new: Recording, o0: int, o1
     result.shifts.append(Shift((first, last), (n0, n1 - 1), None))
     result.new_distance[new_left] = result.old_distance[old_left] = 0.0
     result.new_match[new_left], result.old_match[old_left] = -2, -2  # told as the reordering, compared with nothing
+
+
+def _sampled(rec: Recording, spans: list[tuple[int, int]], dims: int) -> Samples:
+    """The path of the moves in ``spans`` (first, stop; clipped to the job), each point owned by its move's
+    index in the whole job (a stretch that does not follow the one before starts with a jump)."""
+    chosen = np.zeros(len(rec), dtype=bool)
+    for first, stop in spans:
+        chosen[max(first, 0):min(stop, len(rec))] = True
+    moves = np.flatnonzero(chosen)
+    samples = sample(rec.take(moves), dims)
+    samples.owner = moves[samples.owner].astype(np.int32) if len(moves) else samples.owner
+    centers, normals, radii = (np.zeros((len(rec), 3)), np.full(len(rec), -1, dtype=np.int8), np.zeros(len(rec)))
+    centers[moves], normals[moves], radii[moves] = samples.centers, samples.normals, samples.radii
+    samples.centers, samples.normals, samples.radii = centers, normals, radii
+    samples.arc_of = np.where(samples.arc_of >= 0, moves[np.maximum(samples.arc_of, 0)], -1).astype(np.int32) \
+        if len(moves) else samples.arc_of
+    return samples
 
 
 def _measure(distance: np.ndarray, match: np.ndarray, mine: Samples, m0: int, m1: int, other: Samples,

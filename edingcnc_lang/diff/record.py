@@ -60,6 +60,12 @@ class Recording:
         estimate = self.result.estimate if self.result is not None else None
         return estimate.seconds if estimate is not None else 0.0
 
+    def take(self, moves: np.ndarray) -> Recording:
+        """The moves ``moves`` (sorted indices) alone, for their path: no events, no result."""
+        return Recording(self.name, self.kinds[moves], self.tools[moves], self.lines[moves], self.feeds[moves],
+                         self.spindles[moves], self.times[moves], self.starts[moves], self.ends[moves],
+                         self.frames[moves])
+
     def arc_moves(self) -> np.ndarray:
         """The indices of the arc moves."""
         return np.flatnonzero(self.frames[:, 0] >= 0)
