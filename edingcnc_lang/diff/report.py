@@ -33,7 +33,7 @@ def source_text(path: str, numbers: Iterable[int]) -> dict[int, str]:
     return found
 
 
-def _headline(change: Change, tolerance: float) -> str:
+def headline(change: Change, tolerance: float) -> str:
     where = []
     if change.old_lines:
         where.append(f"OLD {_span(change.old_lines)}")
@@ -169,7 +169,7 @@ def _part(comparison: Comparison) -> list[str]:
                        f"{': ' + lines if lines else ''}")
     for rapid in comparison.changes["rapids"]:
         if rapid.what == "rapid_into_stock" and rapid.new_lines:
-            out.append(f"  {_headline(rapid, comparison.tolerance)}")
+            out.append(f"  {headline(rapid, comparison.tolerance)}")
     return out
 
 
@@ -178,16 +178,16 @@ def _told(changes: list[Change], tolerance: float, old_text: dict[int, str], new
     out: list[str] = []
     told, times, at = "", 0, 0
     for change in [*changes, None]:
-        headline = _headline(change, tolerance) if change is not None else ""
-        if headline == told:
+        title = headline(change, tolerance) if change is not None else ""
+        if title == told:
             times += 1
             continue
         if times > 1:
             out[at] += f" ({times} times)"
         if change is not None:
             at = len(out)
-            out += _described(change, headline, old_text, new_text)
-        told, times = headline, 1
+            out += _described(change, title, old_text, new_text)
+        told, times = title, 1
     return out
 
 
