@@ -6,7 +6,7 @@ error is returned for the caller to report.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from edingcnc_lang.errors import EcncError, Location
@@ -70,7 +70,8 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
              lines: tuple[int, int] | None = None, view: str = "auto", name: str | None = None,
              old: Path | None = None) -> Written:
     """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given);
-    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too and the page switches between them.
+    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too, drawn under NEW with the changed
+    moves coloured and listed (``ecnc diff``'s changes), and the page switches between them.
 
     ``auto`` opens a lathe job (no Y motion) in the lathe view and everything else in the iso view.
     """
@@ -89,5 +90,12 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     before = record_job(old, options) if old is not None else None
     if before is not None and lines is not None:
         before = before.select_lines(*lines)
-    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before)
+    changes = None
+    if old is not None and lines is None:  # the changes, by move number: of the whole jobs only
+        from edingcnc_lang.diff import diff_files
+        from edingcnc_lang.diff.style import page_data
+
+        quiet = replace(options, host=replace(options.host, message=None))  # the jobs' messages were shown once
+        changes = page_data(diff_files(old, job, quiet))
+    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before, changes=changes)
     return Written(target, path)
