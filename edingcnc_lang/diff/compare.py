@@ -120,6 +120,26 @@ class Comparison:
         self.left_out["rapids"] = self.left_out.get("rapids", 0) + max(0, len(rapids) - self.limit)
 
 
+def _told_as_rapid(found: dict[str, list[Change]]) -> None:
+    """A lowered rapid is one change, the safety finding: the path change of the same NEW moves (and a cut
+    that became that rapid, feed -> 0) is told by it; the OLD lines it replaced join the finding."""
+    def within(change: Change) -> Change | None:
+        span = change.new_moves
+        return next((r for r in found["rapids"] if span and r.new_moves
+                     and r.new_moves[0] <= span[0] and span[1] <= r.new_moves[1]), None)
+
+    for name, kinds in (("deviations", ("moved", "added", "replaced")), ("feeds", ("feed",))):
+        kept = []
+        for change in found[name]:
+            rapid = within(change) if change.what in kinds and (name == "deviations" or change.new == 0) else None
+            if rapid is None:
+                kept.append(change)
+            elif change.old_lines and name == "deviations":
+                lines = [n for span in (rapid.old_lines, change.old_lines) if span for n in span]
+                rapid.old_lines = (min(lines), max(lines))
+        found[name] = kept
+
+
 def _finite(value: Any) -> Any:
     if isinstance(value, float) and not math.isfinite(value):
         return None
@@ -164,9 +184,7 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
     for kind, name in (("dwell", "dwell"), ("coolant", "coolant"), ("spindle", "spindle")):
         found[name] += _event_changes(kind, old, new)
     found["rapids"] = lower_rapids(old, new, tolerance, matching)
-    told = [c.new_moves for c in found["rapids"] if c.new_moves]  # a cut become a lower rapid: told as the rapid
-    found["feeds"] = [c for c in found["feeds"] if not (c.new == 0 and c.new_moves and any(
-        low <= c.new_moves[0] and c.new_moves[1] <= high for low, high in told))]
+    _told_as_rapid(found)
     found["offsets"] = _offsets(old, new, tolerance)
     kept = {name: changes[:limit] for name, changes in found.items()}
     left_out = {name: max(0, len(changes) - limit) for name, changes in found.items()}
