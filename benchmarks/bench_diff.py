@@ -5,8 +5,9 @@ pairs compared are OLD with a reformatted copy of itself (N words, G01, trailing
 and OLD with an edited copy (a lead-in inserted half way, one feed changed, one cut moved 0.05 mm), and
 OLD against itself reversed (the moves' lines in the opposite order: no move identical, so nothing to
 anchor on; ``--reversed-lines`` long, 20,000 by default).
-Prints the wall time and peak memory of ``ecnc run --json`` (planned: the time estimate the diff
-reports too) of each job, of ``ecnc diff`` of each pair, and the ratio diff / (run OLD + run NEW).
+Prints the wall and CPU time and peak memory of ``ecnc run --json`` (planned: the time estimate the diff
+reports too) of each job, of ``ecnc diff`` of each pair, and the ratios diff / (run OLD + run NEW) (CPU
+time too: on a loaded machine the wall time says more about the others).
 
     python benchmarks/bench_diff.py [--lines N] [--repeat N]
 """
@@ -86,17 +87,19 @@ def main() -> None:
         reverse(old, backward, args.reversed_lines)
         reverse(backward, forward, args.reversed_lines + 10)  # the same moves forwards, as the reversed job starts
 
-        def timed(*command: object) -> tuple[float, float]:
+        def timed(*command: object) -> tuple[float, float, float]:
             runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
-            return statistics.median(r[0] for r in runs), max(r[2] for r in runs)
+            return (statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs),
+                    max(r[2] for r in runs))
 
         runs = {job.name: timed("run", job, "--json") for job in (old, same, edited, forward, backward)}
-        for name, (wall, peak) in runs.items():
-            print(f"ecnc run --json {name:<11} {wall:7.2f} s {peak:6.0f} MB")
+        for name, (wall, cpu, peak) in runs.items():
+            print(f"ecnc run --json {name:<11} {wall:7.2f} s wall {cpu:7.2f} s CPU {peak:6.0f} MB")
         for first, job in ((old, same), (old, edited), (forward, backward)):
-            wall, peak = timed("diff", first, job, "--json")
-            both = runs[first.name][0] + runs[job.name][0]
-            print(f"ecnc diff {first.name:<10} {job.name:<11} {wall:7.2f} s {peak:6.0f} MB  = {wall / both:.2f} x running both")
+            wall, cpu, peak = timed("diff", first, job, "--json")
+            both, both_cpu = (runs[first.name][k] + runs[job.name][k] for k in (0, 1))
+            print(f"ecnc diff {first.name:<10} {job.name:<11} {wall:7.2f} s wall {cpu:7.2f} s CPU {peak:6.0f} MB"
+                  f"  = {wall / both:.2f} x running both ({cpu / both_cpu:.2f} x in CPU time)")
 
 
 if __name__ == "__main__":

@@ -14,7 +14,8 @@ import numpy as np
 
 from edingcnc_lang.diff.record import Samples, slots
 
-BRUTE = 1 << 18      # points x segments measured all against all below this
+BRUTE = 1 << 16      # point-segment pairs measured at once, all against all (below 64 times this in all, or
+                     # for fewer points than a 64th of the segments, no grid is built)
 CHUNK = 4096         # points looked up at once
 NEAR = 0.25          # mm: the reach of the fine grid
 FAR_POINTS = 4096    # points of the other stretch a far point is measured against
@@ -99,9 +100,13 @@ def nearest(points: np.ndarray, stretch: Stretch, reach: float) -> tuple[np.ndar
     at = np.zeros(count)
     if not count or not size:
         return distance, segment, at
-    if count * size <= BRUTE:
-        rows, cols = np.repeat(np.arange(count), size), np.tile(np.arange(size), count)
-        _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
+    if count * size <= BRUTE * 64 or count * 64 < size:  # few points (a long stretch): all against all, in pieces
+        for low in range(0, count, max(1, BRUTE // size)):
+            chosen = np.arange(low, min(count, low + max(1, BRUTE // size)))
+            for first in range(0, size, BRUTE):
+                cols = np.arange(first, min(size, first + BRUTE))
+                rows, cols = np.repeat(chosen, len(cols)), np.tile(cols, len(chosen))
+                _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
     else:  # a fine grid first (most points lie on the other path), a coarse one for the points it leaves
         for near in sorted({min(reach, NEAR), reach}):
             grid, todo = _Grid(stretch, 2.0 * near), np.flatnonzero(distance > near)

@@ -151,11 +151,10 @@ def record(job: Path, options: RunOptions, name: str | None = None) -> Recording
 
 @dataclass
 class Samples:
-    """A run's path as one polyline whose pieces of arcs remember their circle: points, path length
-    to each, the move each point ends, and for each segment that is a piece of an arc, its circle."""
+    """A run's path as one polyline whose pieces of arcs remember their circle: points, the move each
+    point ends, and for each segment that is a piece of an arc, its circle."""
 
     points: np.ndarray   # (P, D) machine coordinates (XYZ, and ABC when a run turns them)
-    length: np.ndarray   # (P,) cumulative path length (along the arc for pieces of arcs)
     owner: np.ndarray    # (P,) int32 index of the move whose path reaches this point (sorted)
     arc_of: np.ndarray   # (P - 1,) int32 segment -> its arc move, -1 for a straight segment
     centers: np.ndarray  # (N, 3) the centre of each arc move (in its plane; the start's normal coordinate)
@@ -177,7 +176,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     radii = np.zeros(count)
     centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
     if not count:
-        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
+        return Samples(np.zeros((0, dims)), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
                        centers, normals, radii, np.zeros(0, dtype=bool))
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
@@ -204,7 +203,6 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
         points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
         owner[at] = move_of
     arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
-    arc_length = np.zeros(total)  # along the arc, not the chord: the same length however an arc is split
     for low in range(0, len(arcs), CHUNK // 16):
         high = min(len(arcs), low + CHUNK // 16)
         which, slot = slots(np.arange(low, high), circle.pieces[low:high])
@@ -212,17 +210,9 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
         at = firsts[move_of] + slot
         points[at] = circle.points(which, (slot + 1) / circle.pieces[which], starts, ends)
         owner[at], arc_of[at - 1] = move_of, move_of
-        arc_length[at] = circle.length[which] / circle.pieces[which]
-    length = np.zeros(total)
-    for low in range(0, total - 1, CHUNK):
-        high = min(total - 1, low + CHUNK)
-        length[low + 1:high + 1] = np.linalg.norm(points[low + 1:high + 1] - points[low:high], axis=1)
-    length[1:][arc_of >= 0] = 0.0  # segment k ends at point k + 1
-    length += arc_length
-    length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
     jump = np.zeros(total, dtype=bool)
     jump[jump_at] = True
-    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii, jump)
+    return Samples(points, owner, arc_of, centers, normals, radii, jump)
 
 
 def slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -234,7 +224,7 @@ def slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray
 @dataclass
 class _Circles:
     """The arc moves' circles, as columns: in-plane axes, centre, start and end radius, start angle,
-    signed sweep, path length and pieces (as ``geometry_of`` and ``trajectory.arc_frame`` read an arc)."""
+    signed sweep and pieces (as ``geometry_of`` and ``trajectory.arc_frame`` read an arc)."""
 
     u: np.ndarray
     v: np.ndarray
@@ -244,7 +234,6 @@ class _Circles:
     r1: np.ndarray
     angle: np.ndarray
     sweep: np.ndarray
-    length: np.ndarray
     pieces: np.ndarray
     moves: np.ndarray
 
@@ -276,4 +265,4 @@ def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
     center[rows, u], center[rows, v] = table[:, 2], table[:, 3]
     r0, r1, angle, sweep, length = table[:, 4], table[:, 5], table[:, 6], table[:, 7], table[:, 8]
     pieces = np.clip(np.maximum(np.ceil(np.abs(sweep) / arc_step), np.ceil(length / LINE_STEP)), 2, MAX_CHORDS)
-    return _Circles(u, v, normal, center, r0, r1, angle, sweep, length, pieces.astype(np.int64), arcs)
+    return _Circles(u, v, normal, center, r0, r1, angle, sweep, pieces.astype(np.int64), arcs)
