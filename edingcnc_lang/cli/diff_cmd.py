@@ -15,7 +15,11 @@ from edingcnc_lang.cli.sim_cmd import StockBox
 from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT, PlainFloat
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from edingcnc_lang.host import DialogAnswer
+    from edingcnc_lang.runner import RunOptions
+    from edingcnc_lang.sim import SimResult
 
 EXIT_DIFFERS = 1
 
@@ -25,6 +29,15 @@ def _finite(param: click.Parameter, value: float) -> float:
     if value != value:
         raise click.BadParameter("must be a finite number, not nan", param=param)
     return value
+
+
+def _cutter(box: tuple[float, ...], resolution: float) -> Callable[[Path, RunOptions], SimResult]:
+    """The stock ``box`` cut by a job (``ecnc sim``'s simulation), for the comparison of the parts."""
+    from edingcnc_lang.sim import Stock, simulate
+
+    def cut(job: Path, options: RunOptions) -> SimResult:
+        return simulate(job, Stock.box((box[0], box[1], box[2]), (box[3], box[4], box[5]), resolution), options)
+    return cut
 
 
 @click.command("diff", cls=Command, short_help="Compare what the machine does for OLD and NEW.")
@@ -59,12 +72,11 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
          output: str | None, view: str) -> int:
     """Run OLD and NEW on the virtual machine and compare what the machine does, per tool and in
     order: the path (within --tolerance), feeds, spindle speeds, tools and their order, offsets,
-    dwells, coolant, the planned time and rapids lower than any in OLD. Renumbered lines, G01 for
-    G1, trailing zeros or modal words left out change nothing.
+    dwells, coolant, the planned time and rapids lower than OLD's at that place; with --stock, the
+    cut parts. Renumbered lines, G01 for G1, trailing zeros or modal words left out change nothing.
 
     Exit status 0 when nothing differs, 1 when something does."""
-    from edingcnc_lang.diff.compare import compare
-    from edingcnc_lang.diff.record import record
+    from edingcnc_lang.diff import diff_files
     from edingcnc_lang.diff.report import render
 
     fmt = None
@@ -76,15 +88,9 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
                                       user_macro=user_macro_new or machine.user_macro,
                                       answers=answers_new or machine.answers,
                                       probe_surface=probe_surface_new or machine.probe_surface)
-    before = record(Path(old), machine.run_options(show_messages=False))
-    after = record(Path(new), new_machine.run_options(show_messages=False))
-    comparison = compare(before, after, tolerance, limit)
-    if box is not None:
-        from edingcnc_lang.diff.part import compare_parts
-
-        comparison.add_part(compare_parts(Path(old), Path(new), box, resolution, before, after,
-                                          machine.run_options(show_messages=False),
-                                          new_machine.run_options(show_messages=False), tolerance))
+    comparison = diff_files(old, new, machine.run_options(show_messages=False),
+                            new_machine.run_options(show_messages=False), tolerance, limit,
+                            cut=None if box is None else _cutter(box, resolution))
     if output:
         from edingcnc_lang.diff.picture import draw_diff
 

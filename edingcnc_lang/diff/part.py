@@ -1,25 +1,65 @@
-"""The cut part compared: both jobs cut the same stock (``sim.simulate``), then the two height fields
-are compared cell by cell.  The answer does not depend on the order of the moves: a toolpath done in
-another order that removes the same material is the same part.
+"""The cut part compared: both jobs cut the same stock (by ``ecnc sim``'s ``sim.simulate``, which the
+caller runs: a product does not import another, docs/architecture.md), then the two height fields
+are compared cell by cell.  The answer does not depend on the order of the moves: a toolpath done
+in another order that removes the same material is the same part.
 
 Cells whose heights differ by more than the tolerance form regions (cells that touch on a grid of
-blocks of ``REGION_GAP`` mm, at most ``REGION_GRID`` a side, each block touching the 24 around it); each region names the OLD and NEW lines whose cuts pass over it.
-With the stock, every rapid of NEW into the material is a finding at its line.
+blocks of ``REGION_GAP`` mm, at most ``REGION_GRID`` a side, each block touching the 24 around it);
+each region names the OLD and NEW lines whose cuts pass over it.  With the stock, every rapid of
+NEW into the material is a finding at its line.
 """
 from __future__ import annotations
 
 import math
 from collections import deque
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from edingcnc_lang.diff.compare import Change
 from edingcnc_lang.diff.record import RAPID_KINDS, Recording
-from edingcnc_lang.runner import RunOptions
-from edingcnc_lang.sim import SimResult, Stock, simulate
+
+
+class CutStock(Protocol):
+    """The height field of a cut stock (``sim.Stock``): cell (j, i) at ``x0 + (i + 0.5) r``, ``y0 + (j + 0.5) r``."""
+
+    x0: float
+    y0: float
+    resolution: float
+    top: np.ndarray
+
+
+class CutTool(Protocol):
+    @property
+    def diameter(self) -> float: ...
+
+
+class CutFinding(Protocol):
+    @property
+    def kind(self) -> str: ...
+    @property
+    def line(self) -> int: ...
+    @property
+    def depth(self) -> float: ...
+    @property
+    def tool(self) -> int: ...
+
+
+class Cut(Protocol):
+    """One job's simulation (``sim.SimResult``): the stock as cut, where its origin is in machine
+    coordinates, the tools that cut and what the simulation found."""
+
+    @property
+    def stock(self) -> CutStock: ...
+    @property
+    def frame(self) -> tuple[float, float, float]: ...
+    @property
+    def tools(self) -> Mapping[int, CutTool]: ...
+    @property
+    def findings(self) -> Iterable[CutFinding]: ...
+
 
 REGION_GRID = 256   # blocks a side the regions are found on (a region is cells that touch on this grid)
 REGION_GAP = 1.0    # mm: differing cells closer than about this are one region
@@ -48,8 +88,8 @@ class Region:
 class PartComparison:
     """Both parts as cut, and how they differ."""
 
-    old: Stock
-    new: Stock
+    old: CutStock
+    new: CutStock
     tolerance: float
     max_deviation: float
     mean_deviation: float   # over the cells that differ (0 when none does)
@@ -66,28 +106,20 @@ class PartComparison:
                 "regions": [r.to_json() for r in self.regions]}
 
 
-def compare_parts(old_job: str | Path, new_job: str | Path, box: tuple[float, ...], resolution: float,
-                  old_recording: Recording, new_recording: Recording, options: RunOptions,
-                  new_options: RunOptions | None = None, tolerance: float = 0.001) -> PartComparison:
-    """Cut a stock ``box`` (XMIN..ZMAX, work coordinates) with each job and compare the parts; the
-    recordings give the lines of the moves over each region."""
-    lower, upper = (box[0], box[1], box[2]), (box[3], box[4], box[5])
-    before = simulate(old_job, Stock.box(lower, upper, resolution), options)
-    after = simulate(new_job, Stock.box(lower, upper, resolution), new_options or options)
-    for result in (before, after):
-        if result.error is not None:
-            raise result.error
+def compare_parts(before: Cut, after: Cut, old: Recording, new: Recording, tolerance: float = 0.001) -> PartComparison:
+    """Compare the parts ``before`` (OLD's cut) and ``after`` (NEW's, of the same stock); the recordings
+    give the lines of the moves over each region."""
     difference = after.stock.top.astype(np.float64) - before.stock.top
     differs = np.abs(difference) > tolerance
     size = np.abs(difference[differs])
-    regions = _regions(before, after, difference, differs, old_recording, new_recording)
+    regions = _regions(before, after, difference, differs, old, new)
     rapids = [Change("rapid_into_stock", None, (f.line, f.line), distance=f.depth, tool=f.tool)
               for f in after.findings if f.kind == "rapid_into_stock"]
     return PartComparison(before.stock, after.stock, tolerance, float(size.max()) if size.size else 0.0,
                           float(size.mean()) if size.size else 0.0, regions, rapids)
 
 
-def _regions(before: SimResult, after: SimResult, difference: np.ndarray, differs: np.ndarray,
+def _regions(before: Cut, after: Cut, difference: np.ndarray, differs: np.ndarray,
              old: Recording, new: Recording) -> list[Region]:
     """The regions of cells that differ, largest deviation first (at most ``REGIONS``)."""
     if not differs.any():

@@ -6,8 +6,9 @@ error is returned for the caller to report.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.motion.sinks import check_outputs, ensure_parent
@@ -68,10 +69,11 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
 
 def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves: int | None = None,
              lines: tuple[int, int] | None = None, view: str = "auto", name: str | None = None,
-             old: Path | None = None) -> Written:
+             old: Path | None = None, changes: dict[str, Any] | None = None) -> Written:
     """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given);
-    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too, drawn under NEW with the changed
-    moves coloured and listed (``ecnc diff``'s changes), and the page switches between them.
+    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too, drawn under NEW, and the page
+    switches between them; ``changes`` (``diff.style.page_data``, made by the caller: plot does not
+    import diff) colours the changed moves and lists them.
 
     ``auto`` opens a lathe job (no Y motion) in the lathe view and everything else in the iso view.
     """
@@ -90,12 +92,6 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     before = record_job(old, options) if old is not None else None
     if before is not None and lines is not None:
         before = before.select_lines(*lines)
-    changes = None
-    if old is not None and lines is None:  # the changes, by move number: of the whole jobs only
-        from edingcnc_lang.diff import diff_files
-        from edingcnc_lang.diff.style import page_data
-
-        quiet = replace(options, host=replace(options.host, message=None))  # the jobs' messages were shown once
-        changes = page_data(diff_files(old, job, quiet))
-    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before, changes=changes)
+    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before,
+               changes=changes if lines is None else None)  # the changes number the whole jobs' moves
     return Written(target, path)
