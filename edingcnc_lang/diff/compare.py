@@ -158,7 +158,7 @@ def tool_share(mine: Recording, other: Recording) -> list[dict[str, Any]]:
     for place, tool in enumerate(order):
         if tool in theirs or tool in order[:place]:
             continue
-        moves = np.flatnonzero(mine.tools == tool)
+        moves = np.flatnonzero(operation_tools(mine, other) == tool)
         lines = _lines(mine, int(moves[0]), int(moves[-1])) if len(moves) else None
         seconds = float(np.sum(mine.times[moves, 1] - mine.times[moves, 0])) if len(moves) else 0.0
         shares.append({"tool": tool, "moves": len(moves), "lines": list(lines) if lines else None,
@@ -254,11 +254,12 @@ def _deviations(old: Recording, new: Recording, tolerance: float, matching: Matc
         old_distance[shift.old[0]:shift.old[1] + 1] = 0.0
     new_match, old_match = matching.new_match, matching.old_match
     far = new_distance > CAPTURE
+    tools = operation_tools(new, old)
     runs: list[Change] = []
-    for first, last in _runs(new_distance > tolerance, far, new.tools):
+    for first, last in _runs(new_distance > tolerance, far, tools):
         old_lines, old_moves = _matched(old, new_match, first, last)
         runs.append(Change("added" if far[first] else "moved", old_lines, _lines(new, first, last),
-                           distance=float(new_distance[first:last + 1].max()), tool=int(new.tools[first]),
+                           distance=float(new_distance[first:last + 1].max()), tool=int(tools[first]),
                            moves=last - first + 1, new_moves=(first, last), old_moves=old_moves))
     # which NEW run each NEW move is in, and which NEW run each OLD move lies beside: a join is a lookup
     run_of_new = np.full(len(new) + 2, -1, dtype=np.int64)
@@ -289,6 +290,20 @@ def _deviations(old: Recording, new: Recording, tolerance: float, matching: Matc
                             new_moves=new_moves, old_moves=(first, last)))
     return sorted(changes + runs + alone, key=lambda c: c.new_moves[0] if c.new_moves else
                   (c.old_moves[0] if c.old_moves else 0))
+
+
+def operation_tools(new: Recording, old: Recording) -> np.ndarray:
+    """The tool of each NEW move, the moves of a tool change (the macro's, made on its line) counted with
+    the tool it puts in when OLD never uses that tool: they are part of the tool added."""
+    tools = new.tools.copy()
+    added = set(new.tool_order()) - set(old.tool_order())
+    for kind, line, value, at in new.events:
+        if kind == "tool_change" and int(value) in added:
+            move = at - 1
+            while move >= 0 and new.lines[move] == line:
+                tools[move] = int(value)
+                move -= 1
+    return tools
 
 
 def _shift_change(old: Recording, new: Recording, shift: Shift) -> Change:

@@ -89,6 +89,7 @@ class Recorder:
         self.tool = 0
         self.rpm, self.turning = 0.0, False  # the spindle as the events tell it
         self._unplaced: list[int] = []  # events still waiting for their job line
+        self._caller = 0  # the job line that called the sub the last move was made in (0: none)
         self._kind = {kind: i for i, kind in enumerate(KINDS)}
 
     def _line(self, path: str, line: int, caller: int) -> int:
@@ -96,9 +97,13 @@ class Recorder:
 
     def move(self, move: Move, joints: Pose, timing: Timing) -> None:
         line = self._line(move.path, move.line, move.caller)
-        while self._unplaced:  # events made inside a sub take the job line of the next move
+        # events made inside a sub take the job line of the call: the next move's when it is made in a sub
+        # too, else that of the sub's last move (the tool change macro's events after its moves)
+        placed = line if move.caller or not self._caller else self._caller
+        while self._unplaced:
             kind, _none, value, at = self.events[self._unplaced[-1]]
-            self.events[self._unplaced.pop()] = (kind, line, value, at)
+            self.events[self._unplaced.pop()] = (kind, placed, value, at)
+        self._caller = move.caller
         # straight moves that came in a bulk batch carry no spindle speed: the events tell it
         rpm = move.spindle or (self.rpm if self.turning else 0.0)
         self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))

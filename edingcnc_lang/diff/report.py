@@ -10,7 +10,7 @@ import numpy as np
 from edingcnc_lang.errors import EcncError, printable
 from edingcnc_lang.motion.planner.estimate import format_duration
 from edingcnc_lang.syntax.source import iter_file_lines
-from edingcnc_lang.diff.compare import LISTS, Change, Comparison, tool_share
+from edingcnc_lang.diff.compare import LISTS, Change, Comparison, operation_tools, tool_share
 from edingcnc_lang.diff.record import Recording
 
 SHOWN_TEXT = 60  # characters of a source line shown
@@ -91,14 +91,16 @@ def _span(lines: tuple[int, int]) -> str:
     return f"line {lines[0]}" if lines[0] == lines[1] else f"lines {lines[0]}-{lines[1]}"
 
 
-def _operations(rec: Recording) -> list[tuple[int, int, int]]:
-    """(first move, last move, tool) of each run of NEW moves with one tool in the spindle."""
+def _operations(rec: Recording, other: Recording) -> list[tuple[int, int, int]]:
+    """(first move, last move, tool) of each run of NEW moves with one tool in the spindle (the tool
+    change that puts in a tool OLD never uses counted with that tool)."""
     if not len(rec):
         return []
-    cut = np.flatnonzero(np.diff(rec.tools)) + 1
+    tools = operation_tools(rec, other)
+    cut = np.flatnonzero(np.diff(tools)) + 1
     firsts = np.concatenate(([0], cut))
     lasts = np.append(cut, len(rec)) - 1
-    return [(int(f), int(l), int(rec.tools[f])) for f, l in zip(firsts, lasts)]
+    return [(int(f), int(l), int(tools[f])) for f, l in zip(firsts, lasts)]
 
 
 def render(comparison: Comparison) -> str:
@@ -115,7 +117,7 @@ def render(comparison: Comparison) -> str:
     old_text = source_text(old.name, (n for c in changes if c.old_lines for n in {c.old_lines[0], c.old_lines[1]}))
     new_text = source_text(new.name, (n for c in changes if c.new_lines for n in {c.new_lines[0], c.new_lines[1]}))
     placed: set[int] = set()
-    for first, last, tool in _operations(new):
+    for first, last, tool in _operations(new, old):
         mine = [c for c in changes if c.new_moves and first <= c.new_moves[0] <= last]
         if not mine:
             continue
