@@ -288,8 +288,45 @@ def _deviations(old: Recording, new: Recording, tolerance: float, matching: Matc
         alone.append(Change("removed" if old_distance[first] > CAPTURE else "moved", _lines(old, first, last),
                             new_lines, distance=distance, tool=tool, moves=last - first + 1,
                             new_moves=new_moves, old_moves=(first, last)))
-    return sorted(changes + runs + alone, key=lambda c: c.new_moves[0] if c.new_moves else
-                  (c.old_moves[0] if c.old_moves else 0))
+    return _one_reordering(old, new, matching, sorted(changes + runs + alone, key=lambda c: c.new_moves[0]
+                                                      if c.new_moves else (c.old_moves[0] if c.old_moves else 0)))
+
+
+def _one_reordering(old: Recording, new: Recording, matching: Matching, changes: list[Change]) -> list[Change]:
+    """Work done in another order is one change per operation: reorderings of one tool with nothing
+    between them but the same moves and rapids become one, and so do the rapids that join them in the
+    new order (the way to the next hole, and home from another last one)."""
+    def rapids(rec: Recording, span: tuple[int, int] | None, off: np.ndarray) -> bool:
+        """Are the moves of ``span`` off the other path all rapids?"""
+        if span is None:
+            return True
+        moves = np.arange(span[0], span[1] + 1)
+        return bool(np.isin(rec.kinds[moves[off[moves] > 0.0]], RAPID_KINDS).all())
+
+    def between_is_plain(low: int, high: int) -> bool:  # NEW moves strictly between: identical, or rapids
+        inside = np.arange(low + 1, high)
+        same = matching.new_paired[inside] & (matching.new_distance[inside] == 0.0)
+        return bool((same | np.isin(new.kinds[inside], RAPID_KINDS)).all())
+
+    merged: list[Change] = []
+    for change in changes:
+        last = merged[-1] if merged else None
+        joins = (last is not None and last.new_moves is not None and change.new_moves is not None
+                 and last.tool == change.tool and between_is_plain(last.new_moves[1], change.new_moves[0]))
+        if joins and last is not None and {last.what, change.what} <= {"reordered", "moved", "added", "replaced"} \
+                and "reordered" in (last.what, change.what) \
+                and all(c.what == "reordered" or (rapids(new, c.new_moves, matching.new_distance)
+                                                  and rapids(old, c.old_moves, matching.old_distance))
+                        for c in (last, change)):
+            spans = [s for s in (last.old_moves, change.old_moves) if s]
+            low, high = last.new_moves[0], change.new_moves[1]  # type: ignore[index]
+            olds = (min(a for a, _b in spans), max(b for _a, b in spans)) if spans else None
+            merged[-1] = Change("reordered", _lines(old, *olds) if olds else None, _lines(new, low, high),
+                                distance=0.0, tool=last.tool, moves=high - low + 1, new_moves=(low, high),
+                                old_moves=olds)
+            continue
+        merged.append(change)
+    return merged
 
 
 def operation_tools(new: Recording, old: Recording) -> np.ndarray:
