@@ -180,7 +180,10 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
                                                 ("spindle", "spindle", new.spindles, old.spindles),
                                                 ("tool_moves", "tool", new.tools, old.tools)):
         theirs = old_values[match] if len(old) else np.zeros(len(new))  # no OLD move: nothing is near
-        found[name] = list(_value_changes(what, old, new, near, match, new_values, theirs))
+        compared = near
+        if what == "feed":  # a rapid on a rapid has no feed: the passes on either side of it are one run
+            compared = near & ~(np.isin(new.kinds, RAPID_KINDS) & (new_values == theirs))
+        found[name] = list(_value_changes(what, old, new, compared, match, new_values, theirs))
     for kind, name in (("dwell", "dwell"), ("coolant", "coolant"), ("spindle", "spindle")):
         found[name] += _event_changes(kind, old, new)
     found["rapids"] = lower_rapids(old, new, tolerance, matching)
