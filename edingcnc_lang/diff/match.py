@@ -53,7 +53,7 @@ def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matchi
     result = Matching(np.zeros(len(new)), np.full(len(new), -1, dtype=np.int64), np.zeros(len(old)),
                       np.full(len(old), -1, dtype=np.int64), np.zeros(len(new), dtype=bool))
     _pair(result, pairs[:, 0], pairs[:, 1], 0.0)
-    gaps: list[tuple[int, int, int, int]] = [tuple(g) for g in between(pairs, len(old), len(new)).tolist()]  # type: ignore[misc]
+    gaps = [(a, b, c, d) for a, b, c, d in between(pairs, len(old), len(new)).tolist()]
     for o0, o1, n0, n1 in gaps:
         for shift in _shifted(old, new, o0, o1, n0, n1, tolerance):
             result.shifts.append(shift)
