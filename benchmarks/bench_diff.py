@@ -2,9 +2,12 @@
 
 OLD is a zigzag of short cuts with a half circle every tenth move (``bench_plot.write_job``); the
 pairs compared are OLD with a reformatted copy of itself (N words, G01, trailing zeros: the same)
-and OLD with an edited copy (a lead-in inserted half way, one feed changed, one cut moved 0.05 mm).
-Prints the wall time and peak memory of ``ecnc run --json`` (planned: the time estimate the diff
-reports too) of each job, of ``ecnc diff`` of each pair, and the ratio diff / (run OLD + run NEW).
+and OLD with an edited copy (a lead-in inserted half way, one feed changed, one cut moved 0.05 mm), and
+OLD against itself reversed (the moves' lines in the opposite order: no move identical, so nothing to
+anchor on; ``--reversed-lines`` long, 20,000 by default).
+Prints the wall and CPU time and peak memory of ``ecnc run --json`` (planned: the time estimate the diff
+reports too) of each job, of ``ecnc diff`` of each pair, and the ratios diff / (run OLD + run NEW) (CPU
+time too: on a loaded machine the wall time says more about the others).
 
     python benchmarks/bench_diff.py [--lines N] [--repeat N]
 """
@@ -51,10 +54,28 @@ def edit(old: Path, new: Path) -> None:
     new.write_text("\n".join(lines) + "\n", encoding="ascii")
 
 
+def reverse(old: Path, new: Path, lines: int) -> None:
+    """The moves of the job's first ``lines`` lines driven backwards, last first (each arc the other way
+    round): the same path, no move the same as OLD's."""
+    text = old.read_text(encoding="ascii").splitlines()
+    head, points, moves = text[:4], [(0.0, 0.0)], []
+    for line in text[4:lines]:
+        found = re.match(r"G([123]) X(-?[\d.]+) Y(-?[\d.]+)(.*)", line)
+        if found:
+            points.append((float(found.group(2)), float(found.group(3))))
+            moves.append((found.group(1), found.group(4)))
+    out = head + [f"G1 X{points[-1][0]:.3f} Y{points[-1][1]:.3f}"]
+    for (word, rest), (x, y) in zip(moves[::-1], points[-2::-1]):
+        word = {"2": "3", "3": "2"}.get(word, word)
+        out.append(f"G{word} X{x:.3f} Y{y:.3f}{rest}")
+    new.write_text("\n".join(out + ["G0 Z5", "M30"]) + "\n", encoding="ascii")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--lines", type=int, default=300_000)
     parser.add_argument("--repeat", type=int, default=1)
+    parser.add_argument("--reversed-lines", type=int, default=20_000)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
@@ -62,18 +83,23 @@ def main() -> None:
         write_job(old, args.lines)
         reformat(old, same)
         edit(old, edited)
+        forward, backward = tmp / "forward.nc", tmp / "reversed.nc"
+        reverse(old, backward, args.reversed_lines)
+        reverse(backward, forward, args.reversed_lines + 10)  # the same moves forwards, as the reversed job starts
 
-        def timed(*command: object) -> tuple[float, float]:
+        def timed(*command: object) -> tuple[float, float, float]:
             runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
-            return statistics.median(r[0] for r in runs), max(r[1] for r in runs)
+            return (statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs),
+                    max(r[2] for r in runs))
 
-        runs = {job.name: timed("run", job, "--json") for job in (old, same, edited)}
-        for name, (wall, peak) in runs.items():
-            print(f"ecnc run --json {name:<11} {wall:7.2f} s {peak:6.0f} MB")
-        for job in (same, edited):
-            wall, peak = timed("diff", old, job, "--json")
-            both = runs[old.name][0] + runs[job.name][0]
-            print(f"ecnc diff old.nc {job.name:<11} {wall:7.2f} s {peak:6.0f} MB  = {wall / both:.2f} x running both")
+        runs = {job.name: timed("run", job, "--json") for job in (old, same, edited, forward, backward)}
+        for name, (wall, cpu, peak) in runs.items():
+            print(f"ecnc run --json {name:<11} {wall:7.2f} s wall {cpu:7.2f} s CPU {peak:6.0f} MB")
+        for first, job in ((old, same), (old, edited), (forward, backward)):
+            wall, cpu, peak = timed("diff", first, job, "--json")
+            both, both_cpu = (runs[first.name][k] + runs[job.name][k] for k in (0, 1))
+            print(f"ecnc diff {first.name:<10} {job.name:<11} {wall:7.2f} s wall {cpu:7.2f} s CPU {peak:6.0f} MB"
+                  f"  = {wall / both:.2f} x running both ({cpu / both_cpu:.2f} x in CPU time)")
 
 
 if __name__ == "__main__":

@@ -11,12 +11,33 @@ from edingcnc_lang.errors import EXIT_OK
 from edingcnc_lang.plot.names import VIEW_NAMES
 from edingcnc_lang.cli.base import Command
 from edingcnc_lang.cli.options import MachineOptions, json_option, machine_options
-from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
+from edingcnc_lang.cli.sim_cmd import StockBox
+from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT, PlainFloat
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from edingcnc_lang.host import DialogAnswer
+    from edingcnc_lang.runner import RunOptions
+    from edingcnc_lang.sim import SimResult
 
 EXIT_DIFFERS = 1
+
+
+def _finite(param: click.Parameter, value: float) -> float:
+    """--tolerance inf or nan would make every path the same (or none): a finite number only."""
+    if value != value:
+        raise click.BadParameter("must be a finite number, not nan", param=param)
+    return value
+
+
+def _cutter(box: tuple[float, ...], resolution: float) -> Callable[[Path, RunOptions], SimResult]:
+    """The stock ``box`` cut by a job (``ecnc sim``'s simulation), for the comparison of the parts."""
+    from edingcnc_lang.sim import Stock, simulate
+
+    def cut(job: Path, options: RunOptions) -> SimResult:
+        return simulate(job, Stock.box((box[0], box[1], box[2]), (box[3], box[4], box[5]), resolution), options)
+    return cut
 
 
 @click.command("diff", cls=Command, short_help="Compare what the machine does for OLD and NEW.")
@@ -32,10 +53,14 @@ EXIT_DIFFERS = 1
               help="Dialog answers for NEW (default: those of --answer; repeatable).")
 @click.option("--probe-surface-new", metavar="FILE", type=EXISTING_FILE,
               help="Height map for NEW's probing (default: --probe-surface).")
-@click.option("--tolerance", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.001, show_default=True,
-              help="Paths closer than this are the same.")
+@click.option("--tolerance", metavar="MM", type=PlainFloat(0, 1000, min_open=True), default=0.001, show_default=True,
+              callback=lambda _ctx, param, value: _finite(param, value), help="Paths closer than this are the same.")
 @click.option("--limit", metavar="N", type=POSITIVE_INT, default=50, show_default=True,
               help="Changes listed per kind; the rest are counted.")
+@click.option("--stock", "box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
+              help="Cut this stock (work coordinates) with both jobs and compare the parts (as ecnc sim cuts).")
+@click.option("--resolution", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.25,
+              show_default=True, help="Cell size of the height field of --stock.")
 @json_option("Print the comparison as JSON on stdout.")
 @click.option("-o", "--output", metavar="FILE", type=OUTPUT_FILE,
               help="Also draw both toolpaths with the differences highlighted (.png, .svg or .pdf).")
@@ -43,15 +68,15 @@ EXIT_DIFFERS = 1
               help="The picture's view (auto: top, or lathe for a job that never moves Y).")
 def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro_new: str | None,
          user_macro_new: str | None, answers_new: tuple[DialogAnswer, ...], probe_surface_new: str | None,
-         tolerance: float, limit: int, as_json: bool, output: str | None, view: str) -> int:
+         tolerance: float, limit: int, box: tuple[float, ...] | None, resolution: float, as_json: bool,
+         output: str | None, view: str) -> int:
     """Run OLD and NEW on the virtual machine and compare what the machine does, per tool and in
     order: the path (within --tolerance), feeds, spindle speeds, tools and their order, offsets,
-    dwells, coolant, the planned time and rapids lower than any in OLD. Renumbered lines, G01 for
-    G1, trailing zeros or modal words left out change nothing.
+    dwells, coolant, the planned time and rapids lower than OLD's at that place; with --stock, the
+    cut parts. Renumbered lines, G01 for G1, trailing zeros or modal words left out change nothing.
 
     Exit status 0 when nothing differs, 1 when something does."""
-    from edingcnc_lang.diff.compare import compare
-    from edingcnc_lang.diff.record import record
+    from edingcnc_lang.diff import diff_files
     from edingcnc_lang.diff.report import render
 
     fmt = None
@@ -63,9 +88,9 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
                                       user_macro=user_macro_new or machine.user_macro,
                                       answers=answers_new or machine.answers,
                                       probe_surface=probe_surface_new or machine.probe_surface)
-    before = record(Path(old), machine.run_options(show_messages=False, write_job_files=False))
-    after = record(Path(new), new_machine.run_options(show_messages=False, write_job_files=False))
-    comparison = compare(before, after, tolerance, limit)
+    comparison = diff_files(old, new, machine.run_options(show_messages=False, write_job_files=False),
+                            new_machine.run_options(show_messages=False, write_job_files=False), tolerance, limit,
+                            cut=None if box is None else _cutter(box, resolution))
     if output:
         from edingcnc_lang.diff.picture import draw_diff
 
@@ -73,7 +98,7 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     if as_json:
         import json
 
-        print(json.dumps(comparison.to_json(), indent=1))
+        print(json.dumps(comparison.to_json(), indent=1, allow_nan=False))
     else:
         click.echo(render(comparison), nl=False)
         if output:

@@ -81,9 +81,16 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
         tools = load_tools(tools_file)
     options = machine.run_options(feed_override=feed_override, rapid_override=rapid_override, write_job_files=False)
     with job_to_draw(job, output) as (path, name):
+        changes = None
+        if old and lines is None:  # what ecnc diff finds, coloured and listed on the page
+            from edingcnc_lang.diff import diff_files
+            from edingcnc_lang.diff.style import page_data
+
+            quiet = machine.run_options(show_messages=False, feed_override=feed_override, rapid_override=rapid_override)
+            changes = page_data(diff_files(Path(old), path, quiet))
         written = view_job(path, options, Path(output) if output else None,
                            max_moves=max_moves, lines=lines, view=view, name=name,
-                           old=Path(old) if old else None, embed_sources=embed_sources)
+                           old=Path(old) if old else None, embed_sources=embed_sources, changes=changes)
         if stock_box is not None:
             from edingcnc_lang.sim.frames import add_to_page, stock_frames
             from edingcnc_lang.sim.stock import Stock

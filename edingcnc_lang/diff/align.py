@@ -1,39 +1,25 @@
-"""Which point of one path lies on which part of the other: alignment by geometry, not by index.
+"""How far each point of one path is from the other path: the nearest segment, found through a grid.
 
-Both runs are dense polylines (``record.sample``).  A cursor walks the OLD polyline while the NEW
-points are taken in order: a block of points is first tried where the path lengths say it should be
-(the fast path: a reformatted or re-split job never leaves it); a point that is not within the
-tolerance there is looked for from the last point that was (so a lead-in inserted in NEW, a pass
-split in two or moves removed cost only their own points), and a match far ahead is believed only
-when the points after it follow.  The walk only goes forward, so a retraced path is matched to its
-own pass.  Work and memory grow with the points, never with their square.
+Both runs are dense polylines (``record.sample``).  ``nearest`` measures points against a stretch of
+the other polyline (pieces of arcs to their circle): the segments are filed by the grid cell of pieces
+at most ``2 * reach`` long, a point looks in its own cell and the 26 around it, so every segment within
+``reach`` of it is found and measured exactly (a fine grid first, ``NEAR``, then the whole reach for the
+points it left); a point farther than ``reach`` from all of them is
+measured against a bounded sample of the stretch's points (``FAR_POINTS``) instead.  Work and memory
+grow with the points and the segments near each, never with their product.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-from edingcnc_lang.diff.record import Samples
+from edingcnc_lang.diff.record import Samples, slots
 
-BLOCK = 512          # points tried at once on the fast path
-WINDOW = 256         # segments searched around the cursor for a point off the fast path
-FAR = 65_536         # segments searched ahead for a point after a removed stretch
-FAR_EVERY = 64       # in a long run of unmatched points, the far search is tried every this many
-FAR_MOVES = 4        # ... and at the end of each of the first this many moves of the run
-VERIFY = 6           # points after a far match that must follow it
-CAPTURE = 1.0        # mm: an unmatched point this close to OLD drags the cursor along (a moved contour)
-SLACK = 2.0          # mm of path, plus ...
-SLACK_SHARE = 0.25   # ... this share of the path since the last match: how far from where it should be
-
-
-@dataclass
-class Alignment:
-    """For every point of one path: how far it is from the other path, and where on it."""
-
-    distance: np.ndarray   # (P,) float32 distance to the other path (inf: the other path is empty)
-    segment: np.ndarray    # (P,) int32 index of the nearest segment of the other path (-1: none)
-    at: np.ndarray         # (P,) float32, 0..1 along that segment
+BRUTE = 1 << 16      # point-segment pairs measured at once, all against all (below 64 times this in all, or
+                     # for fewer points than a 64th of the segments, no grid is built)
+CHUNK = 4096         # points looked up at once
+NEAR = 0.25          # mm: the reach of the fine grid
+FAR_POINTS = 4096    # points of the other stretch a far point is measured against
+NEIGHBOURS = np.array([(i, j, k) for i in (-1, 0, 1) for j in (-1, 0, 1) for k in (-1, 0, 1)], dtype=np.int64)
 
 
 def _to_segments(a: np.ndarray, b: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -71,145 +57,129 @@ def _to_arcs(a: np.ndarray, b: np.ndarray, p: np.ndarray, center: np.ndarray, no
             np.where(inside, s, np.where(to_a <= to_b, 0.0, 1.0)))
 
 
-class _Walk:
-    """The cursor over OLD's segments and the NEW points matched so far."""
+class Stretch:
+    """Segments of one path (those of the moves ``first``..``stop`` - 1) to measure points against."""
 
-    def __init__(self, new: Samples, old: Samples, tolerance: float) -> None:
-        self.new, self.tolerance = new, tolerance
-        pts = old.points if len(old.points) != 1 else np.vstack((old.points, old.points))
-        self.a, self.b = pts[:-1], pts[1:]
-        self.arc_of = old.arc_of if len(old.points) != 1 else np.full(1, -1, dtype=np.int32)
-        self.centers, self.normals, self.radii = old.centers, old.normals, old.radii
-        self.length = old.length if len(old.length) != 1 else np.zeros(2)
-        self.segments = len(self.a)
-        self.firm = 0          # segment of the last point within the tolerance
-        self.soft = 0          # segment the cursor follows (a moved contour drags it past firm)
-        self.pos_new = 0.0     # path length of NEW at the cursor
-        self.pos_old = 0.0     # path length of OLD at the cursor
-        self.firm_new = 0.0    # the same at the last point within the tolerance
-        self.firm_old = 0.0
+    def __init__(self, samples: Samples, first: int, stop: int) -> None:
+        low, high = np.searchsorted(samples.owner, (first, stop))
+        ends = np.arange(max(int(low), 1), int(high))
+        ends = ends[~samples.jump[ends]]  # a segment ends at point k + 1; one that ends at a jump is no path
+        self.samples = samples
+        self.index = ends - 1              # segment numbers in ``samples``
+        self.a, self.b = samples.points[ends - 1], samples.points[ends]
+        self.arc = samples.arc_of[ends - 1] if len(ends) else np.zeros(0, dtype=np.int32)
+        if not len(ends) and high > low:   # one point only (a job of one move that goes nowhere)
+            self.index = np.array([int(low)])
+            self.a = self.b = samples.points[int(low):int(low) + 1]
+            self.arc = np.full(1, -1, dtype=np.int32)
 
-    def to_path(self, segments: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Distances of ``p`` (broadcast) to OLD's ``segments``, pieces of arcs measured to their circle."""
+    def __len__(self) -> int:
+        return len(self.a)
+
+    def measure(self, points: np.ndarray, segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Distances of ``points`` to this stretch's ``segments`` (row by row), pieces of arcs to their circle."""
         a, b = self.a[segments], self.b[segments]
-        dist, at = _to_segments(a, b, p)
-        arcs = self.arc_of[segments]
+        dist, at = _to_segments(a, b, points)
+        arcs = self.arc[segments]
         if (arcs >= 0).any():
-            where = np.nonzero(arcs >= 0)
+            where = np.flatnonzero(arcs >= 0)
             moves = arcs[where]
-            dist[where], at[where] = _to_arcs(a[where], b[where], np.broadcast_to(p, a.shape)[where],
-                                              self.centers[moves], self.normals[moves], self.radii[moves])
+            s = self.samples
+            dist[where], at[where] = _to_arcs(a[where], b[where], points[where], s.centers[moves], s.normals[moves],
+                                              s.radii[moves])
         return dist, at
 
-    def follow(self, first: int, stop: int, pos_new: float, pos_old: float,
-               floor: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Points ``first``..``stop`` matched where the path lengths put them (and one segment either side)."""
-        expected = pos_old + (self.new.length[first:stop] - pos_new)
-        index = np.searchsorted(self.length, expected, side="left") - 1  # a vertex: the segment ending there
-        choices = np.clip(index[:, None] + np.array([0, 1, -1]), floor, self.segments - 1)
-        dist, at = self.to_path(choices, self.new.points[first:stop, None, :])
-        best = np.argmin(dist, axis=1)
-        rows = np.arange(len(best))
-        return dist[rows, best], choices[rows, best], at[rows, best]
 
-    def positions(self, segments: np.ndarray, at: np.ndarray) -> np.ndarray:
-        """Path lengths of OLD at ``at`` along ``segments``."""
-        return self.length[segments] + at * (self.length[segments + 1] - self.length[segments])
-
-    def along(self, segment: int, at: float) -> float:
-        return float(self.length[segment] + at * (self.length[segment + 1] - self.length[segment]))
-
-    def moved_to(self, point: int, segment: int, at: float, firm: bool) -> None:
-        self.soft = max(self.soft, segment)
-        self.pos_new, self.pos_old = float(self.new.length[point]), self.along(segment, at)
-        if firm:
-            self.firm = self.soft = segment
-            self.firm_new, self.firm_old = self.pos_new, self.pos_old
-
-    def expected(self, point: int) -> tuple[float, float]:
-        """Where on OLD ``point`` should be, counted from the last firm match, and how far off it may be."""
-        progress = float(self.new.length[point]) - self.firm_new
-        return self.firm_old + progress, SLACK + SLACK_SHARE * progress
-
-    def follows(self, point: int, segment: int, at: float) -> bool:
-        """Do the points after ``point`` lie on OLD after ``segment``?"""
-        stop = min(len(self.new.points), point + 1 + VERIFY)
-        if stop <= point + 1:
-            return True
-        dist, _seg, _at = self.follow(point + 1, stop, float(self.new.length[point]), self.along(segment, at), segment)
-        return bool(np.all(dist <= self.tolerance))
-
-    def search(self, point: int, low: int, high: int) -> tuple[int, float, float] | None:
-        """The segment in ``low``..``high`` within the tolerance of ``point`` nearest where it should be, that
-        the next points follow (a path that passes the same place later is not taken for this one)."""
-        p = self.new.points[point]
-        expected, _slack = self.expected(point)
-        for start in range(low, high, 8192):
-            stop = min(high, start + 8192)
-            dist, at = self.to_path(np.arange(start, stop), p)
-            hits = np.flatnonzero(dist <= self.tolerance)
-            if hits.size > 1:
-                hits = hits[np.argsort(np.abs(self.positions(start + hits, at[hits]) - expected), kind="stable")]
-            for hit in hits[:8]:
-                if self.follows(point, start + int(hit), float(at[hit])):
-                    return start + int(hit), float(dist[hit]), float(at[hit])
-        return None
+def nearest(points: np.ndarray, stretch: Stretch, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For each point: its distance to ``stretch``, the nearest segment (its number in the samples, -1: the
+    stretch is empty) and where on it (0..1).  Exact within ``reach``; beyond it, to the nearest of a
+    bounded sample of the stretch's points."""
+    count, size = len(points), len(stretch)
+    distance = np.full(count, np.inf)
+    segment = np.full(count, -1, dtype=np.int64)
+    at = np.zeros(count)
+    if not count or not size:
+        return distance, segment, at
+    if count * size <= BRUTE * 64 or count * 64 < size:  # few points (a long stretch): all against all, in pieces
+        for low in range(0, count, max(1, BRUTE // size)):
+            chosen = np.arange(low, min(count, low + max(1, BRUTE // size)))
+            for first in range(0, size, BRUTE):
+                cols = np.arange(first, min(size, first + BRUTE))
+                rows, cols = np.repeat(chosen, len(cols)), np.tile(cols, len(chosen))
+                _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
+    else:  # a fine grid first (most points lie on the other path), a coarse one for the points it leaves
+        for near in sorted({min(reach, NEAR), reach}):
+            grid, todo = _Grid(stretch, 2.0 * near), np.flatnonzero(distance > near)
+            for low in range(0, len(todo), CHUNK):
+                chosen = todo[low:low + CHUNK]
+                rows, cols = grid.candidates(points[chosen, :3])
+                rows = chosen[rows]
+                _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
+    far = np.flatnonzero(distance > reach)
+    if far.size:  # nothing near: the nearest of up to FAR_POINTS of the stretch's ends is near enough to say so
+        pick = np.unique(np.linspace(0, size - 1, min(size, FAR_POINTS)).astype(np.int64))
+        for low in range(0, far.size, 256):
+            chosen = far[low:low + 256]
+            gaps = np.linalg.norm(points[chosen, None, :] - stretch.b[None, pick, :], axis=2)
+            best = np.argmin(gaps, axis=1)
+            closer = gaps[np.arange(len(chosen)), best] < distance[chosen]
+            distance[chosen[closer]] = gaps[np.arange(len(chosen)), best][closer]
+            segment[chosen[closer]], at[chosen[closer]] = pick[best[closer]], 1.0
+    known = segment >= 0
+    segment[known] = stretch.index[segment[known]]
+    return distance, segment, at
 
 
-def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
-    """Match every point of ``new`` to the segment of ``old`` it lies on (or is nearest to), in order."""
-    count = len(new.points)
-    # 32-bit: 12 bytes a point (distances far below the tolerance need no more digits)
-    distance = np.full(count, np.inf, dtype=np.float32)
-    segment = np.full(count, -1, dtype=np.int32)
-    at = np.zeros(count, dtype=np.float32)
-    if not count or not len(old.points):
-        return Alignment(distance, segment, at)
-    walk = _Walk(new, old, tolerance)
-    point, lost, lost_moves = 0, 0, 0
-    while point < count:
-        stop = min(count, point + BLOCK)
-        dist, seg, where = walk.follow(point, stop, walk.pos_new, walk.pos_old, walk.firm)
-        bad = np.flatnonzero(dist > tolerance)
-        good = int(bad[0]) if bad.size else stop - point
-        if good:
-            distance[point:point + good], segment[point:point + good] = dist[:good], seg[:good]
-            at[point:point + good] = where[:good]
-            walk.moved_to(point + good - 1, int(seg[good - 1]), float(where[good - 1]), firm=True)
-            point, lost, lost_moves = point + good, 0, 0
-            continue
-        low = max(walk.firm, walk.soft - WINDOW)
-        high = min(walk.segments, walk.soft + WINDOW)
-        found = walk.search(point, low, high)
-        # far ahead: at the first points lost, at the end of each of the first moves lost (one long move
-        # across a removed stretch, then the path goes on where OLD does), then now and then
-        ends_move = point + 1 == count or new.owner[point + 1] != new.owner[point]
-        if found is None and high < walk.segments and (lost % FAR_EVERY == 0 or (ends_move and lost_moves < FAR_MOVES)):
-            found = walk.search(point, high, min(walk.segments, high + FAR))
-        if found is not None:
-            segment[point], distance[point], at[point] = found
-            walk.moved_to(point, found[0], found[2], firm=True)
-            point, lost, lost_moves = point + 1, 0, 0
-            continue
-        dist_all, at_all = walk.to_path(np.arange(low, high), new.points[point])
-        # the nearest part of OLD about where the point should be drags the cursor along (a moved contour);
-        # a part far from there that merely passes close (the same wall, later) does not
-        expected, slack = walk.expected(point)
-        plausible = np.abs(walk.positions(np.arange(low, high), at_all) - expected) <= slack
-        pool = np.where(plausible, dist_all, np.inf)
-        nearest = int(np.argmin(pool)) if plausible.any() else int(np.argmin(dist_all))
-        segment[point], distance[point], at[point] = low + nearest, dist_all[nearest], at_all[nearest]
-        if plausible.any() and dist_all[nearest] <= CAPTURE:
-            walk.moved_to(point, low + nearest, float(at_all[nearest]), firm=False)
-        point, lost, lost_moves = point + 1, lost + 1, lost_moves + ends_move
-    return Alignment(distance, segment, at)
+def _keep(distance: np.ndarray, segment: np.ndarray, at: np.ndarray, rows: np.ndarray, cols: np.ndarray,
+          dist: np.ndarray, where: np.ndarray) -> None:
+    """For each point in ``rows``, keep the nearest of its candidates if nearer than what it has."""
+    if not len(rows):
+        return
+    order = np.lexsort((dist, rows))
+    first = order[np.flatnonzero(np.r_[True, rows[order][1:] != rows[order][:-1]])]
+    better = dist[first] < distance[rows[first]]
+    first = first[better]
+    distance[rows[first]], segment[rows[first]], at[rows[first]] = dist[first], cols[first], where[first]
 
 
-def matched_moves(alignment: Alignment, old: Samples) -> np.ndarray:
-    """The OLD move each point lies on (a point at a vertex counts with the move that ends there)."""
-    seg = np.maximum(alignment.segment, 0)
-    ending = (alignment.at <= 1e-9) & (seg > 0)
-    index = np.where(ending, seg, seg + 1)
-    index = np.minimum(index, len(old.owner) - 1)
-    moves = old.owner[index] if len(old.owner) else np.zeros_like(index)
-    return np.where(alignment.segment >= 0, moves, -1)
+class _Grid:
+    """The stretch's segments filed by the cell of each piece's middle (pieces at most one cell long)."""
+
+    def __init__(self, stretch: Stretch, cell: float) -> None:
+        a, b = stretch.a[:, :3], stretch.b[:, :3]
+        pieces = np.maximum(1, np.ceil(np.linalg.norm(b - a, axis=1) / cell)).astype(np.int64)
+        owner, slot = slots(np.arange(len(a)), pieces)
+        middle = a[owner] + ((slot + 0.5) / pieces[owner])[:, None] * (b[owner] - a[owner])
+        self.cell = cell
+        cells = np.floor(middle / cell).astype(np.int64)
+        self.low = cells.min(axis=0) - 1
+        self.span = cells.max(axis=0) - self.low + 2
+        codes = self._code(cells)
+        order = np.argsort(codes, kind="stable")
+        self.codes, self.owner = codes[order], owner[order]
+
+    def _code(self, cells: np.ndarray) -> np.ndarray:
+        c = np.clip(cells - self.low, 0, self.span - 1)
+        return (c[:, 0] * self.span[1] + c[:, 1]) * self.span[2] + c[:, 2]
+
+    def candidates(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Pairs (point, segment) of every segment filed in the cells around each point."""
+        cells = np.floor(points / self.cell).astype(np.int64)
+        rows, cols = [], []
+        for offset in NEIGHBOURS:
+            code = self._code(cells + offset)
+            low = np.searchsorted(self.codes, code, side="left")
+            high = np.searchsorted(self.codes, code, side="right")
+            which, slot = slots(np.arange(len(points)), high - low)
+            rows.append(which)
+            cols.append(self.owner[low[which] + slot])
+        return np.concatenate(rows), np.concatenate(cols)
+
+
+def matched_moves(segment: np.ndarray, at: np.ndarray, other: Samples) -> np.ndarray:
+    """The move of the other path each point lies on (a point at a vertex counts with the move that ends there)."""
+    seg = np.maximum(segment, 0)
+    index = np.where((at <= 1e-9) & (seg > 0), seg, seg + 1)
+    index = np.minimum(index, len(other.owner) - 1)
+    moves = other.owner[index] if len(other.owner) else np.zeros_like(index)
+    return np.where(segment >= 0, moves, -1)

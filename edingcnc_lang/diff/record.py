@@ -14,21 +14,24 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.canon import PLANES, Event, Move, Pose
+from edingcnc_lang import speedups
+from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.kinematics.trajectory import ARC_ROW
 from edingcnc_lang.motion.planner.estimate import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
 RAPID_KINDS = (0, 4)
-# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc,
-# and for an arc its centre (two values), plane (index into PLANE_NAMES, -1: no arc), turn, full turns
-ROW = 24
-PLANE_NAMES = ("XY", "XZ", "YZ")
+# per move: kind, tool, job line, feed, spindle rpm, start s, end s, start xyzabc, end xyzabc, and for an
+# arc its frame as ``trajectory.arc_frame_rows`` gives it (u, v, centre (2), r0, r1, start angle, sweep,
+# length; u -1: not an arc)
+FRAME = ARC_ROW - 1
+ROW = 19 + FRAME
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
 MAX_CHORDS = 4096      # pieces per arc move at most
 ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
 CHUNK = 65_536         # moves (points) filled at once
-NO_ARC = (0.0, 0.0, -1.0, 0.0, 0.0)
+NO_ARC = (-1.0,) + (0.0,) * (FRAME - 1)
 
 
 @dataclass
@@ -44,7 +47,7 @@ class Recording:
     times: np.ndarray      # (N, 2) planned start and end, seconds
     starts: np.ndarray     # (N, 6)
     ends: np.ndarray       # (N, 6)
-    circles: np.ndarray    # (N, 5) centre, plane, turn, full turns of arc moves (plane -1: not an arc)
+    frames: np.ndarray     # (N, FRAME) the arc moves' frames (column 0, u, is -1 for a straight move)
     # (kind, job line, value, moves before it): tool changes, spindle on/off, coolant, dwell
     events: list[tuple[str, int, float, int]] = field(default_factory=list)
     result: RunResult | None = None
@@ -57,9 +60,15 @@ class Recording:
         estimate = self.result.estimate if self.result is not None else None
         return estimate.seconds if estimate is not None else 0.0
 
+    def take(self, moves: np.ndarray) -> Recording:
+        """The moves ``moves`` (sorted indices) alone, for their path: no events, no result."""
+        return Recording(self.name, self.kinds[moves], self.tools[moves], self.lines[moves], self.feeds[moves],
+                         self.spindles[moves], self.times[moves], self.starts[moves], self.ends[moves],
+                         self.frames[moves])
+
     def arc_moves(self) -> np.ndarray:
         """The indices of the arc moves."""
-        return np.flatnonzero(self.circles[:, 2] >= 0)
+        return np.flatnonzero(self.frames[:, 0] >= 0)
 
     def tool_order(self) -> list[int]:
         """The tools put into the spindle, in order (a tool change to the tool already in is not one)."""
@@ -80,6 +89,7 @@ class Recorder:
         self.tool = 0
         self.rpm, self.turning = 0.0, False  # the spindle as the events tell it
         self._unplaced: list[int] = []  # events still waiting for their job line
+        self._caller = 0  # the job line that called the sub the last move was made in (0: none)
         self._kind = {kind: i for i, kind in enumerate(KINDS)}
 
     def _line(self, path: str, line: int, caller: int) -> int:
@@ -87,17 +97,21 @@ class Recorder:
 
     def move(self, move: Move, joints: Pose, timing: Timing) -> None:
         line = self._line(move.path, move.line, move.caller)
-        while self._unplaced:  # events made inside a sub take the job line of the next move
+        # events made inside a sub take the job line of the call: the next move's when it is made in a sub
+        # too, else that of the sub's last move (the tool change macro's events after its moves)
+        placed = line if move.caller or not self._caller else self._caller
+        while self._unplaced:
             kind, _none, value, at = self.events[self._unplaced[-1]]
-            self.events[self._unplaced.pop()] = (kind, line, value, at)
+            self.events[self._unplaced.pop()] = (kind, placed, value, at)
+        self._caller = move.caller
         # straight moves that came in a bulk batch carry no spindle speed: the events tell it
         rpm = move.spindle or (self.rpm if self.turning else 0.0)
         self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))
         self.rows.extend(move.start)
         self.rows.extend(move.end)
-        arc = move.arc
-        self.rows.extend((arc.center[0], arc.center[1], PLANE_NAMES.index(arc.plane), arc.turn, arc.full_turns)
-                         if arc is not None else NO_ARC)
+        # the arc's circle as the planner reads it: one meaning of an arc's frame, not a second derivation
+        self.rows.extend(speedups.arc_frame_rows(move.start, (move.end,), (move.arc,))[1:]
+                         if move.arc is not None else NO_ARC)
 
     def event(self, event: Event) -> None:
         value: float
@@ -127,7 +141,7 @@ class Recorder:
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
         return Recording(name=name, kinds=table[:, 0].astype(np.int8), tools=table[:, 1].astype(np.int32),
                          lines=table[:, 2].astype(np.int32), feeds=table[:, 3], spindles=table[:, 4],
-                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19], circles=table[:, 19:24],
+                         times=table[:, 5:7], starts=table[:, 7:13], ends=table[:, 13:19], frames=table[:, 19:ROW],
                          events=self.events, result=result)
 
 
@@ -142,16 +156,16 @@ def record(job: Path, options: RunOptions, name: str | None = None) -> Recording
 
 @dataclass
 class Samples:
-    """A run's path as one polyline whose pieces of arcs remember their circle: points, path length
-    to each, the move each point ends, and for each segment that is a piece of an arc, its circle."""
+    """A run's path as one polyline whose pieces of arcs remember their circle: points, the move each
+    point ends, and for each segment that is a piece of an arc, its circle."""
 
     points: np.ndarray   # (P, D) machine coordinates (XYZ, and ABC when a run turns them)
-    length: np.ndarray   # (P,) cumulative path length (along the arc for pieces of arcs)
     owner: np.ndarray    # (P,) int32 index of the move whose path reaches this point (sorted)
     arc_of: np.ndarray   # (P - 1,) int32 segment -> its arc move, -1 for a straight segment
     centers: np.ndarray  # (N, 3) the centre of each arc move (in its plane; the start's normal coordinate)
     normals: np.ndarray  # (N,) int8 the normal axis of each arc move (0 X, 1 Y, 2 Z), -1 not an arc
     radii: np.ndarray    # (N,)
+    jump: np.ndarray     # (P,) bool: a move's start away from the previous end (the segment to it is no path)
 
 
 def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples:
@@ -167,8 +181,8 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     radii = np.zeros(count)
     centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
     if not count:
-        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
-                       centers, normals, radii)
+        return Samples(np.zeros((0, dims)), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
+                       centers, normals, radii, np.zeros(0, dtype=bool))
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
     # at least the middle and the end: a move between two points of the other path that strays between them shows
@@ -188,32 +202,25 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     straight[arcs] = 0
     for low in range(0, count, CHUNK):
         high = min(count, low + CHUNK)
-        move_of, slot = _slots(np.arange(low, high), straight[low:high])
+        move_of, slot = slots(np.arange(low, high), straight[low:high])
         at = firsts[move_of] + slot
         fraction = (slot + 1) / pieces[move_of]
         points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
         owner[at] = move_of
     arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
-    arc_length = np.zeros(total)  # along the arc, not the chord: the same length however an arc is split
     for low in range(0, len(arcs), CHUNK // 16):
         high = min(len(arcs), low + CHUNK // 16)
-        which, slot = _slots(np.arange(low, high), circle.pieces[low:high])
+        which, slot = slots(np.arange(low, high), circle.pieces[low:high])
         move_of = arcs[which]
         at = firsts[move_of] + slot
         points[at] = circle.points(which, (slot + 1) / circle.pieces[which], starts, ends)
         owner[at], arc_of[at - 1] = move_of, move_of
-        arc_length[at] = circle.length[which] / circle.pieces[which]
-    length = np.zeros(total)
-    for low in range(0, total - 1, CHUNK):
-        high = min(total - 1, low + CHUNK)
-        length[low + 1:high + 1] = np.linalg.norm(points[low + 1:high + 1] - points[low:high], axis=1)
-    length[1:][arc_of >= 0] = 0.0  # segment k ends at point k + 1
-    length += arc_length
-    length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
-    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
+    jump = np.zeros(total, dtype=bool)
+    jump[jump_at] = True
+    return Samples(points, owner, arc_of, centers, normals, radii, jump)
 
 
-def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Each item repeated ``counts`` times, and the repeat's number (0, 1, ...)."""
     repeated = np.repeat(items, counts)
     return repeated, np.arange(len(repeated)) - np.repeat(np.cumsum(counts) - counts, counts)
@@ -222,7 +229,7 @@ def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarra
 @dataclass
 class _Circles:
     """The arc moves' circles, as columns: in-plane axes, centre, start and end radius, start angle,
-    signed sweep, path length and pieces (as ``geometry_of`` and ``trajectory.arc_frame`` read an arc)."""
+    signed sweep and pieces (as ``geometry_of`` and ``trajectory.arc_frame`` read an arc)."""
 
     u: np.ndarray
     v: np.ndarray
@@ -232,7 +239,6 @@ class _Circles:
     r1: np.ndarray
     angle: np.ndarray
     sweep: np.ndarray
-    length: np.ndarray
     pieces: np.ndarray
     moves: np.ndarray
 
@@ -253,30 +259,15 @@ class _Circles:
         return pts
 
 
-PLANE_AXES = np.array([PLANES[name] for name in PLANE_NAMES])  # first, second, normal axis per plane
-
-
 def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
-    """The circles of the arc moves ``arcs``, each in pieces of at most ``arc_step`` radians and ``LINE_STEP`` mm."""
-    table = rec.circles[arcs]
-    plane = table[:, 2].astype(np.int64)
-    u, v, normal = PLANE_AXES[plane].T
-    c1, c2 = table[:, 0].copy(), table[:, 1].copy()
-    xz = plane == PLANE_NAMES.index("XZ")  # the canon names the XZ centre (x, z); the plane's order is (z, x)
-    c1[xz], c2[xz] = table[xz, 1], table[xz, 0]
-    start, end = rec.starts[arcs, :3], rec.ends[arcs, :3]
+    """The circles of the arc moves ``arcs`` (their recorded frames), each in pieces of at most ``arc_step``
+    radians and ``LINE_STEP`` mm."""
+    table = rec.frames[arcs]
+    u, v = table[:, 0].astype(np.int64), table[:, 1].astype(np.int64)
+    normal = 3 - u - v
     rows = np.arange(len(arcs))
-    center = start.copy()
-    center[rows, u], center[rows, v] = c1, c2
-    du0, dv0 = start[rows, u] - c1, start[rows, v] - c2
-    du1, dv1 = end[rows, u] - c1, end[rows, v] - c2
-    angle = np.arctan2(dv0, du0)
-    turns = table[:, 3] * np.maximum(1.0, table[:, 4])
-    direction = np.where(turns > 0, 1.0, -1.0)
-    sweep = np.mod(direction * (np.arctan2(dv1, du1) - angle), 2.0 * math.pi)  # as trajectory.arc_sweep
-    sweep = np.where(sweep <= 1e-12, 2.0 * math.pi, sweep)
-    sweep = direction * (sweep + 2.0 * math.pi * (np.abs(turns) - 1.0))
-    r0, r1 = np.hypot(du0, dv0), np.hypot(du1, dv1)
-    length = np.hypot(np.abs(sweep) * r0, end[rows, normal] - start[rows, normal])
+    center = rec.starts[arcs, :3].copy()
+    center[rows, u], center[rows, v] = table[:, 2], table[:, 3]
+    r0, r1, angle, sweep, length = table[:, 4], table[:, 5], table[:, 6], table[:, 7], table[:, 8]
     pieces = np.clip(np.maximum(np.ceil(np.abs(sweep) / arc_step), np.ceil(length / LINE_STEP)), 2, MAX_CHORDS)
-    return _Circles(u, v, normal, center, r0, r1, angle, sweep, length, pieces.astype(np.int64), arcs)
+    return _Circles(u, v, normal, center, r0, r1, angle, sweep, pieces.astype(np.int64), arcs)

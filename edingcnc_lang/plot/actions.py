@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.motion.sinks import check_outputs, ensure_parent
@@ -69,10 +70,12 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
 
 def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves: int | None = None,
              lines: tuple[int, int] | None = None, view: str = "auto", name: str | None = None,
-             old: Path | None = None, embed_sources: bool = False) -> Written:
+             old: Path | None = None, embed_sources: bool = False, changes: dict[str, Any] | None = None) -> Written:
     """Run ``job`` and write the viewer page for it (only the moves of job ``lines`` when given);
-    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too and the page switches between them;
-    ``embed_sources``: full paths and ecnc's own macro text in the page (viewer.view_data).
+    with ``old`` (``ecnc view --diff OLD NEW``) that job is run too, drawn under NEW, and the page
+    switches between them; ``changes`` (``diff.style.page_data``, made by the caller: plot does not
+    import diff) colours the changed moves and lists them; ``embed_sources``: full paths and ecnc's
+    own macro text in the page (viewer.view_data).
 
     ``auto`` opens a lathe job (no Y motion) in the lathe view and everything else in the iso view.
     """
@@ -91,5 +94,6 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     before = in_work(record_job(old, options)) if old is not None else None
     if before is not None and lines is not None:
         before = before.select_lines(*lines)
-    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before, embed_sources=embed_sources)
+    write_view(path, target, max_moves or MAX_MOVES, view=view, old=before, embed_sources=embed_sources,
+               changes=changes if lines is None else None)  # the changes number the whole jobs' moves
     return Written(target, path)

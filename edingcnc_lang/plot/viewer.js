@@ -44,6 +44,24 @@
   const rapidKinds = new Set(D.rapidKinds);
   const isRapid = (i) => rapidKinds.has(kind[i]);
 
+  // `ecnc view --diff`: the other job drawn under this one, and the changes (ecnc diff's) by move number
+  const diffBlock = document.getElementById("diff-data");
+  const C = diffBlock ? JSON.parse(diffBlock.textContent) : null;
+  const O = otherData !== null ? JSON.parse((showOld ? document.getElementById("job-data") : otherData).textContent) : null;
+  const otherPoints = O ? decode(O.points, Float32Array) : null;
+  const otherFirst = O ? decode(O.first, Int32Array) : null;
+  const otherLast = O ? decode(O.last, Int32Array) : null;
+  const changeOf = new Int32Array(count).fill(-1);  // the change each shown move is part of (-1: none)
+  if (C) {
+    C.changes.forEach((change, n) => {
+      const span = showOld ? (change.kind === "removed" || change.kind === "replaced" ? change.old : null) : change.new;
+      if (!span) return;
+      for (let i = 0; i < count; i++) {
+        if (index[i] >= span[0] && index[i] - merged[i] + 1 <= span[1] && changeOf[i] < 0) changeOf[i] = n;
+      }
+    });
+  }
+
   // ---------------------------------------------------------------- camera
   // yaw, pitch, roll (deg); lathe: seen from +Y and turned a quarter, so Z runs across and X up
   const VIEWS = { top: [0, 0, 0], front: [0, -90, 0], side: [-90, -90, 0], iso: [45, -54.7356, 0],
@@ -63,17 +81,24 @@
     return [u * cr - v * sr, u * sr + v * cr];
   }
 
+  let otherProjected = otherPoints ? new Float32Array(otherPoints.length / 3 * 2) : null;
+
+  function projectInto(source, target) {
+    const cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
+    const cr = Math.cos(cam.roll), sr = Math.sin(cam.roll);
+    for (let p = 0, q = 0; p < source.length; p += 3, q += 2) {
+      const x = source[p], y = source[p + 1], z = source[p + 2];
+      const u = x * cy - y * sy, v = (x * sy + y * cy) * cp - z * sp;
+      target[q] = u * cr - v * sr;
+      target[q + 1] = u * sr + v * cr;
+    }
+  }
+
   function projectAll() {
     const key = cam.yaw + "," + cam.pitch + "," + cam.roll;
     if (key === projectedFor) return;
-    const cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
-    const cr = Math.cos(cam.roll), sr = Math.sin(cam.roll);
-    for (let p = 0, q = 0; p < points.length; p += 3, q += 2) {
-      const x = points[p], y = points[p + 1], z = points[p + 2];
-      const u = x * cy - y * sy, v = (x * sy + y * cy) * cp - z * sp;
-      projected[q] = u * cr - v * sr;
-      projected[q + 1] = u * sr + v * cr;
-    }
+    projectInto(points, projected);
+    if (otherPoints) projectInto(otherPoints, otherProjected);
     projectedFor = key;
   }
 
@@ -140,7 +165,16 @@
     const [low, high] = feedBuckets();
     for (let i = 0; i < count; i++) {
       let key, color, label;
-      if (isRapid(i) && mode !== "kind") {
+      if (mode === "changes") {
+        const n = changeOf[i];
+        const change = n >= 0 ? C.changes[n] : null;
+        key = change ? change.kind : isRapid(i) ? "rapid, unchanged" : "unchanged";
+        color = change ? change.color : C.sameColor;
+        label = change ? C.kinds[change.kind][1] : key;
+        if (!byKey.has(key)) byKey.set(key, { key, color, label, rapid: !change && isRapid(i), moves: [] });
+        byKey.get(key).moves.push(i);
+        continue;
+      } else if (isRapid(i) && mode !== "kind") {
         key = "rapid"; color = D.kindColors.rapid; label = "rapid";
       } else if (mode === "kind") {
         const name = D.kinds[kind[i]];
@@ -173,6 +207,7 @@
       item.append(text);
       list.append(item);
     };
+    if (O) entry(C ? C.oldColor : "#cfcfcf", "", (showOld ? "NEW" : "OLD") + " (the other job)");
     groups.forEach((g) => entry(g.color, g.rapid ? "4 3" : "", g.label));
     entry("#444", "1 2", "part bounding box");
     if (D.limits) entry("#b22222", "6 3 1 3", "machine limits (cnc.ini)");
@@ -302,6 +337,18 @@
     box(D.limits, "#b22222", [6, 3, 1, 3], w, h);
     box(D.part, "#777", [1, 2], w, h);
     drawStock(w, h);
+    if (otherPoints) {  // the other job of the comparison, thin and light, under this one
+      ctx.beginPath();
+      for (let i = 0; i < otherFirst.length; i++) {
+        for (let p = otherFirst[i]; p <= otherLast[i]; p++) {
+          const [x, y] = toScreen(otherProjected[2 * p], otherProjected[2 * p + 1], w, h);
+          if (p === otherFirst[i]) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+        }
+      }
+      ctx.strokeStyle = C ? C.oldColor : "#cfcfcf";
+      ctx.lineWidth = 1;
+      ctx.stroke();
+    }
     drawn = 0;
     if (showFuture.checked) {
       ctx.beginPath();
@@ -319,7 +366,7 @@
         drawn++;
       }
       ctx.strokeStyle = g.color;
-      ctx.lineWidth = g.rapid ? 1 : 1.6;
+      ctx.lineWidth = g.rapid ? 1 : C && g.key !== "unchanged" && g.key !== "rapid, unchanged" ? 3 : 1.6;
       ctx.setLineDash(g.rapid ? [4, 3] : []);
       ctx.stroke();
     }
@@ -539,6 +586,37 @@
     document.addEventListener("keydown", (event) => { if (event.key === "d" || event.key === "D") flip(); });
     document.getElementById("toolbar").prepend(toggle);
     document.getElementById("title").textContent = (showOld ? "OLD: " : "NEW: ") + D.title;
+  }
+  if (C) {  // the list of changes: each a link to its first move (in this job, or where OLD's lies in NEW)
+    const mode = document.createElement("option");
+    mode.value = "changes";
+    mode.textContent = "by change";
+    colorMode.prepend(mode);
+    colorMode.value = "changes";
+    const section = document.createElement("section");
+    section.innerHTML = '<h2>Changes</h2><ol id="changes"></ol>';
+    const list = section.querySelector("ol");
+    if (!C.changes.length) list.append(C.same ? "none: the same" : "none with moves (see ecnc diff)");
+    C.changes.forEach((change, n) => {
+      const span = showOld ? change.old : change.new || (change.at !== null ? [change.at, change.at] : null);
+      const item = document.createElement("li");
+      const swatch = document.createElement("span");
+      swatch.className = "swatch";
+      swatch.style.background = change.color;
+      item.append(swatch, change.text);
+      item.dataset.change = String(n);
+      if (span) {
+        item.className = "jump";
+        item.title = "show this change";
+        item.addEventListener("click", () => {
+          let i = 0;
+          while (i < count - 1 && index[i] < span[0]) i++;
+          show(i);
+        });
+      }
+      list.append(item);
+    });
+    document.querySelector("aside").prepend(section);
   }
   const notice = document.getElementById("notice");
   const notes = [];

@@ -169,14 +169,17 @@ def _moving_joints(path: Toolpath) -> list[tuple[int, str]]:
 
 
 def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Toolpath | None = None,
-         embed_sources: bool = False) -> str:
+         embed_sources: bool = False, changes: dict[str, Any] | None = None) -> str:
     """The whole HTML page for ``path``; with ``old`` (``ecnc view --diff OLD NEW``) the page holds
-    both jobs and a button switches between them; ``embed_sources`` as view_data."""
+    both jobs, draws OLD under NEW, and a button switches between them; ``changes`` (``diff.style.page_data``)
+    colours the changed moves and lists the changes, each a link to its place; ``embed_sources`` as view_data."""
     folder = resources.files(__package__)
     template, css, script = (folder.joinpath(name).read_text(encoding="utf-8") for name in ASSETS)
     payload = _payload(path, max_moves, view, embed_sources)
     other = "" if old is None else \
         f'<script type="application/json" id="job-data-old">{_payload(old, max_moves, view, embed_sources)}</script>'
+    if old is not None and changes is not None:
+        other += f'<script type="application/json" id="diff-data">{_safe(changes)}</script>'
     name = path.job.replace("\\", "/").rsplit("/", 1)[-1]
     return (template.replace("{{title}}", html.escape(f"{name} \u2014 ecnc view"))
             .replace("{{css}}", css).replace("{{script}}", script).replace("{{other}}", other)
@@ -184,16 +187,21 @@ def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Too
 
 
 def _payload(path: Toolpath, max_moves: int, view: str, embed_sources: bool) -> str:
-    payload = json.dumps(view_data(path, max_moves, view, embed_sources), separators=(",", ":"), allow_nan=False)
+    return _safe(view_data(path, max_moves, view, embed_sources))
+
+
+def _safe(data: dict[str, Any]) -> str:
+    payload = json.dumps(data, separators=(",", ":"), allow_nan=False)
     # a job line with "</script>" must not end the block, nor one with "{{data}}" take the page's place
     return payload.replace("</", "<\\/").replace("{{", "{\\u007b")
 
 
 def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str = "iso",
-               old: Toolpath | None = None, embed_sources: bool = False) -> Path:
-    """Write the viewer page for ``path`` (and ``old``, to compare with) to ``out``."""
+               old: Toolpath | None = None, embed_sources: bool = False,
+               changes: dict[str, Any] | None = None) -> Path:
+    """Write the viewer page for ``path`` (and ``old``, to compare with, and its ``changes``) to ``out``."""
     try:
-        out.write_text(page(path, max_moves, view, old, embed_sources), encoding="utf-8")
+        out.write_text(page(path, max_moves, view, old, embed_sources, changes), encoding="utf-8")
     except OSError as err:
         raise EcncError(f"cannot write {out}: {err.strerror}") from None
     return out

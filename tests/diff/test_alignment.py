@@ -95,3 +95,16 @@ def test_a_long_stretch_removed_is_found_again_far_ahead(tmp_path: Path) -> None
     [feed] = comparison.changes["feeds"]
     assert feed.new_lines[0] == line_of(new, cuts[2900].rstrip() + " F900")
     assert (feed.old, feed.new) == (800, 900)
+
+
+def test_a_path_driven_the_other_way_is_one_reversed_change(tmp_path: Path) -> None:
+    """The passes driven last first (climb milling become conventional): the same path, one change, found by
+    the moves themselves (no geometry search: a long job reversed costs what any other does)."""
+    old = write(tmp_path, "old.nc", HEAD + PASSES + TAIL)
+    ends = [(0, 0)] + [(40 * (k % 2), y) for k in range(20) for y in (2 * k, 2 * k + 2)]
+    back = f"G1 X{ends[-1][0]} Y{ends[-1][1]} F800\n" + "".join(f"G1 X{x} Y{y}\n" for x, y in ends[-2::-1])
+    new = write(tmp_path, "new.nc", HEAD + back + TAIL)
+    comparison = diff_files(old, new)
+    reversed_ = [c for c in comparison.changes["deviations"] if c.what == "reversed"]
+    assert len(reversed_) == 1 and reversed_[0].moves >= 39  # all but the move to where the passes start
+    assert comparison.changes["feeds"] == []

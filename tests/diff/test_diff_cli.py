@@ -94,7 +94,17 @@ def test_the_picture_is_written(suffix: str, tmp_path: Path) -> None:
     assert result.exit_code == 1 and out.stat().st_size > 10_000
     assert f"picture: {out}" in result.stdout
     if suffix == ".svg":
-        assert "NEW off OLD" in out.read_text(encoding="utf-8")  # the legend names the highlight
+        from edingcnc_lang.diff.style import KINDS
+
+        page = out.read_text(encoding="utf-8")
+        assert KINDS["moved"][1] in page and "NEW, unchanged" in page  # the legend names each kind drawn
+
+
+def test_the_picture_with_the_parts(tmp_path: Path) -> None:
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "parts.svg"
+    result = invoke("diff", OLD, CASES / "rapid.nc", "--stock", "0,0,-20,100,60,0", "-o", out)
+    assert result.exit_code == 1 and "parts differ" in out.read_text(encoding="utf-8")
 
 
 def test_view_diff_holds_both_jobs(tmp_path: Path) -> None:
@@ -102,6 +112,9 @@ def test_view_diff_holds_both_jobs(tmp_path: Path) -> None:
     assert invoke("view", "--diff", OLD, CASES / "moved.nc", "-o", out).exit_code == 0
     page = out.read_text(encoding="utf-8")
     assert page.count('id="job-data"') == 1 and page.count('id="job-data-old"') == 1
+    changes = json.loads(page.split('id="diff-data">')[1].split("</script>")[0])
+    [moved] = changes["changes"]  # the contour moved 0.05 mm, as ecnc diff finds it
+    assert moved["what"] == "moved" and moved["new"] and moved["color"] == changes["kinds"]["moved"][0]
     assert "{{other}}" not in page
     plain = tmp_path / "one.html"
     invoke("view", OLD, "-o", plain)
@@ -117,6 +130,7 @@ def test_view_diff_toggles_in_the_browser(fragment: str, title: str, tmp_path: P
     assert console(log) == [], console(log)
     assert re.search(rf'<h1 id="title">{title}', log)
     assert 'id="diff-toggle"' in log and 'data-ready="1"' in log
+    assert '<ol id="changes">' in log and "path moved by up to 0.3 mm" in log  # the list of changes, each a link
 
 
 def test_a_job_that_makes_no_moves(tmp_path: Path) -> None:
