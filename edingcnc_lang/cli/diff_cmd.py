@@ -11,6 +11,7 @@ from edingcnc_lang.errors import EXIT_OK
 from edingcnc_lang.plot.names import VIEW_NAMES
 from edingcnc_lang.cli.base import Command
 from edingcnc_lang.cli.options import MachineOptions, json_option, machine_options
+from edingcnc_lang.cli.streams import job_to_read_twice
 from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT
 
 if TYPE_CHECKING:
@@ -53,6 +54,7 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     from edingcnc_lang.diff.compare import compare
     from edingcnc_lang.diff.record import record
     from edingcnc_lang.diff.report import render
+    from edingcnc_lang.outputs import check_outputs
 
     fmt = None
     if output:
@@ -63,8 +65,11 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
                                       user_macro=user_macro_new or machine.user_macro,
                                       answers=answers_new or machine.answers,
                                       probe_surface=probe_surface_new or machine.probe_surface)
-    before = record(Path(old), machine.run_options(show_messages=False))
-    after = record(Path(new), new_machine.run_options(show_messages=False))
+    check_outputs({"-o": output}, [old, new, *machine.input_files(), *new_machine.input_files()])
+    with job_to_read_twice(old) as (old_path, old_name), job_to_read_twice(new) as (new_path, new_name):
+        # a pipe (<(cat old.nc)) is copied once: the check pass and the run read the same text
+        before = record(old_path, machine.run_options(show_messages=False), old_name)
+        after = record(new_path, new_machine.run_options(show_messages=False), new_name)
     comparison = compare(before, after, tolerance, limit)
     if output:
         from edingcnc_lang.diff.picture import draw_diff

@@ -124,6 +124,18 @@ class MachineOptions:
                           block_delete=self.block_delete, strict=self.strict, on_warning=print_warning, **extra)
 
 
+    def input_files(self) -> list[Path]:
+        """Every file a run with these options reads besides its job (the ini, the macro files, the
+        ini's own included, the probe surface): what no output of the command may be."""
+        from edingcnc_lang.runner import RunOptions, input_files
+
+        def path(value: str | None) -> Path | None:
+            return Path(value) if value else None
+
+        files = input_files(RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro)))
+        return files + ([Path(self.probe_surface)] if self.probe_surface else [])
+
+
 def print_message(kind: str, text: str, path: str, line: int) -> None:
     """A message of the job on stderr: ``PATH:LINE: msg|warning|error|log: TEXT``."""
     if kind in MESSAGE_LABEL:

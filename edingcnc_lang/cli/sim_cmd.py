@@ -62,7 +62,7 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
     """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
     stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
     stock (hints), with the removed and remaining volumes."""
-    from edingcnc_lang.motion.sinks import ensure_parent
+    from edingcnc_lang.outputs import check_outputs, ensure_parent
     from edingcnc_lang.picture_formats import picture_target
     from edingcnc_lang.sim import report
     from edingcnc_lang.sim.findings import failing
@@ -73,6 +73,8 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
 
     if (box is None) == (stock_stl is None):
         raise usage_error("give the stock as exactly one of --stock XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX and --stock-stl FILE")
+    check_outputs({"-o": output, "--stl": stl},
+                  [job, stock_stl, tools_file, compare_stl, *machine.input_files()])  # before anything runs
     fmt = picture_target(Path(output)) if output else None  # told before the job runs
     tools = load_tools(tools_file) if tools_file else None
     if box is not None:

@@ -16,6 +16,7 @@ from edingcnc_lang.cli.style import styled, wants_colour
 if TYPE_CHECKING:
     from edingcnc_lang.testing.coverage import CoverageData
     from edingcnc_lang.testing.session import TestResult
+    from edingcnc_lang.testing.spec import TestCase
 
 
 @click.command("test", cls=Command, short_help="Run the tests of test_*.toml files; exit 1 if one fails.")
@@ -61,6 +62,7 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
     chosen = [cases for cases in chosen if cases]
     if not chosen:
         raise usage_error(f"no test matches -k {keyword!r}")
+    _refuse_inputs(junit, reports, files, loaded)
     colour = wants_colour(sys.stdout)
 
     def show(result: TestResult) -> None:
@@ -109,8 +111,35 @@ def _coverage(reports: list[tuple[str, str]], data: CoverageData) -> None:
             print(f"coverage pages: {write_coverage_html(files, Path(target))}")
 
 
+def _refuse_inputs(junit: str | None, reports: list[tuple[str, str]], files: list[Path],
+                   loaded: list[list[TestCase]]) -> None:
+    """Usage error (exit 2) before any test runs when a report would be written over a test file, a
+    job, ini or macro file a test reads, or another report."""
+    from edingcnc_lang.outputs import check_outputs
+    from edingcnc_lang.runner import RunOptions, input_files
+
+    outputs: dict[str, str | Path | None] = {"--junit": junit}
+    for kind, target in reports:
+        if kind == "json":
+            outputs[f"--cov-report json:{target}"] = target
+        elif kind == "html":
+            if os.path.exists(target) and not os.path.isdir(target):
+                raise usage_error(f"--cov-report html:{target}: {target} is a file, not a folder")
+            outputs[f"--cov-report html:{target}"] = Path(target, "index.html")
+    inputs: list[Path | None] = list(files)
+    for setup in {(case.ini, case.macro, case.user_macro) for cases in loaded for case in cases}:
+        inputs += input_files(RunOptions(ini=setup[0], macro=setup[1], user_macro=setup[2]))
+    inputs += [case.job_file for cases in loaded for case in cases]
+    check_outputs(outputs, inputs)
+
+
 def _write(target: str, text: str) -> None:
+    """A report written whole (or the old one left as it was), its folder made first."""
+    from edingcnc_lang.outputs import write_error, write_text
+
     path = Path(target)
-    if path.parent != Path(""):
+    try:
         path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
+    except OSError as err:
+        raise write_error(path, err) from None
+    write_text(path, text)

@@ -9,12 +9,12 @@ from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from edingcnc_lang.errors import EcncError
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.render import DPI, FEED_WIDTH, RAPID_WIDTH, SIZE_INCHES, _frame
 from edingcnc_lang.diff.compare import Comparison
 from edingcnc_lang.diff.record import RAPID_KINDS, Recording, sample
+from edingcnc_lang.outputs import save_figure
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -97,10 +97,7 @@ def draw_diff(comparison: Comparison, out: Path, view: str = "auto", fmt: str | 
                else f"differs, largest deviation {comparison.max_deviation:.4g} mm")
     fig.suptitle(f"OLD {Path(old.name).name} vs NEW {Path(new.name).name}: {verdict}", x=0.07, ha="left", fontsize=11)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
-    try:
-        fig.savefig(out, format=fmt, dpi=DPI)
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    save_figure(fig, out, fmt, DPI)
     return out
 
 

@@ -12,7 +12,7 @@ import io
 import math
 import os
 import sys
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from operator import neg
 from pathlib import Path
 from typing import IO, TYPE_CHECKING
@@ -21,6 +21,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.errors import EcncError, UsageFailure
 from edingcnc_lang.motion.stage import Samples
+from edingcnc_lang.outputs import STDOUT
 from edingcnc_lang.motion.planner.estimate import Timing
 
 if TYPE_CHECKING:
@@ -44,7 +45,6 @@ CSV_ROWS_AT_ONCE = 8192  # samples turned into text in one go
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
 
 
-STDOUT = "-"  # as an output path: standard output
 
 
 class _NotOpen(io.StringIO):
@@ -58,44 +58,6 @@ class _NotOpen(io.StringIO):
 
 
 _NOT_OPEN = _NotOpen()
-
-
-def _identity(path: Path) -> tuple[int, int] | None:
-    """The file ``path`` names (device and inode: a hard link or another spelling is the same file), or None."""
-    try:
-        info = os.stat(path)
-    except (OSError, ValueError):
-        return None
-    return (info.st_dev, info.st_ino)
-
-
-def check_outputs(outputs: Mapping[str, Path | None], inputs: Iterable[Path | None]) -> None:
-    """Refuse, before anything is written, an output that is one of the run's inputs (the job, the
-    ini, a macro file: writing would truncate it before it is read) or another output.
-
-    ``outputs`` maps what the user calls each (``--trace``) to its path; ``-`` is standard output.
-    Raises UsageFailure (exit 2).
-    """
-    read = {ident: path for path in inputs if path is not None and (ident := _identity(path)) is not None}
-    written: dict[tuple[int, int], str] = {}
-    for name, path in outputs.items():
-        if path is None or str(path) == STDOUT:
-            continue
-        ident = _identity(path)
-        if ident is None:  # a new file: it can only clash with another new output of the same name
-            ident = (-1, hash(os.path.abspath(path)))
-        if ident in read:
-            raise UsageFailure(f"{name} {path}: that file is also an input of this run ({read[ident]}); "
-                               "writing it would destroy it, so name another file")
-        if ident in written:
-            raise UsageFailure(f"{written[ident]} and {name} name the same file {path}: it cannot be written twice")
-        written[ident] = name
-
-
-def output_identities(paths: Iterable[Path | None]) -> frozenset[tuple[int, int]]:
-    """The files of ``paths`` that exist, as (device, inode): what a job's own files may never be."""
-    return frozenset(ident for path in paths if path is not None and str(path) != STDOUT
-                     and (ident := _identity(path)) is not None)
 
 
 def _open_for_writing(path: Path, binary: bool = False, truncate: bool = True) -> IO:
@@ -391,8 +353,3 @@ class CallbackSink:
         pass
 
 
-def ensure_parent(path: str | os.PathLike[str]) -> Path:
-    result = Path(path)
-    if result.parent and not result.parent.exists():
-        raise EcncError(f"cannot write {result}: folder {result.parent} does not exist")
-    return result

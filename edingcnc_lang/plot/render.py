@@ -15,10 +15,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from edingcnc_lang.errors import EcncError
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.toolpath import KINDS, Toolpath
+from edingcnc_lang.outputs import save_figure
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -76,10 +76,7 @@ def plot_toolpath(path: Toolpath, out: Path, view: str = "auto", color: str = "t
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
     matrix = ax.transData.get_affine().get_matrix().copy()  # final: the axes sit where add_axes put them
     extent = ax.get_window_extent()
-    try:
-        fig.savefig(out, format=fmt, dpi=DPI)
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    save_figure(fig, out, fmt, DPI)
     width, height = (int(round(s * DPI)) for s in SIZE_INCHES)
     axes = (int(extent.x0), int(height - extent.y1), int(extent.x1), int(height - extent.y0))
     where = None if label is None else (int(label.x0), int(height - label.y1), int(label.x1), int(height - label.y0))

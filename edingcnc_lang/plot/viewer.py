@@ -20,9 +20,9 @@ from typing import Any
 
 import numpy as np
 
-from edingcnc_lang.errors import EcncError
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.plot.toolpath import KINDS, RAPID_KINDS, Toolpath
+from edingcnc_lang.outputs import write_text
 
 MAX_MOVES = 25_000                  # moves in the page before it is thinned
 VIEW_ARC_STEP = math.radians(6.0)   # 60 chords a turn: finer than a screen shows at a whole-job zoom
@@ -140,8 +140,5 @@ def _payload(path: Toolpath, max_moves: int, view: str) -> str:
 def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str = "iso",
                old: Toolpath | None = None) -> Path:
     """Write the viewer page for ``path`` (and ``old``, to compare with) to ``out``."""
-    try:
-        out.write_text(page(path, max_moves, view, old), encoding="utf-8")
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    write_text(out, page(path, max_moves, view, old))
     return out

@@ -16,6 +16,7 @@ import numpy as np
 from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
 from edingcnc_lang.sim.stock import Stock, grid_size
 from edingcnc_lang.sim.sweep import MAX_PAIRS, footprint_cells, pair_counts
+from edingcnc_lang.outputs import replacing
 
 TRIANGLE = np.dtype([("normal", "<f4", (3,)), ("vertices", "<f4", (3, 3)), ("attribute", "<u2")])
 _VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")
@@ -131,7 +132,7 @@ def write_stl(path: str | Path, chunks: Iterable[np.ndarray], name: str = "ecnc 
     """Binary STL of (N, 3, 3) triangle arrays, written as they come; normals from the vertex
     order (counter-clockwise seen from outside)."""
     count = 0
-    with open(path, "wb") as handle:
+    with replacing(path, binary=True) as handle:
         handle.write(name.encode("ascii", "replace")[:80].ljust(80, b" "))
         handle.write(b"\0\0\0\0")  # the count, once known
         for triangles in chunks:
