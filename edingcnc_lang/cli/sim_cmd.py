@@ -11,7 +11,7 @@ import click
 from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, JobAborted
 from edingcnc_lang.cli.base import Command, usage_error
 from edingcnc_lang.cli.options import MachineOptions, job_or_stdin_argument, json_option, machine_options
-from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE
+from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, PlainFloat, PlainInt
 from edingcnc_lang.cli.streams import job_to_read_twice
 
 
@@ -43,11 +43,11 @@ class StockBox(click.ParamType):
               help="The stock as a box in the job's work coordinates (its first work offset).")
 @click.option("--stock-stl", metavar="FILE", type=EXISTING_FILE,
               help="The stock as an STL mesh (work coordinates); its top surface is what is cut.")
-@click.option("--resolution", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.25,
+@click.option("--resolution", metavar="MM", type=PlainFloat(0, min_open=True), default=0.25,
               show_default=True, help="Cell size of the height field.")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
               help="Tool shapes as TOML, [tool.N] tables (default: the ini's diameters as flat end mills).")
-@click.option("--tool", "first_tool", metavar="N", type=click.IntRange(0),
+@click.option("--tool", "first_tool", metavar="N", type=PlainInt(0, 99999),
               help="The tool in the spindle when the job starts (default: the machine's current tool, #5008).")
 @machine_options
 @json_option("Print the stock's volumes and the collisions as JSON on stdout.")

@@ -10,7 +10,8 @@ import click
 
 from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX, printable
 from edingcnc_lang.cli.base import Command, usage_error
-from edingcnc_lang.cli.value_types import OUTPUT_FILE, ExistingPath
+from edingcnc_lang.cli.value_types import OUTPUT_FILE, ExistingPath, PlainInt
+from edingcnc_lang.syntax.input_limits import MAX_TEST_JOBS
 from edingcnc_lang.cli.style import styled, wants_colour
 
 if TYPE_CHECKING:
@@ -25,7 +26,7 @@ if TYPE_CHECKING:
               help="Only the tests whose FILE::NAME holds these words (and, or, not, parentheses).")
 @click.option("-x", "--exitfirst", is_flag=True, help="Stop at the first failing test.")
 @click.option("--junit", metavar="FILE", type=OUTPUT_FILE, help="Write the results as JUnit XML.")
-@click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
+@click.option("-j", "--jobs", metavar="N", type=PlainInt(0, MAX_TEST_JOBS), default=1,
               help="Run the test files on N processes (0: one per CPU).")
 @click.option("--cov", "cov", is_flag=True, help="Report the coverage of the macro files the tests ran.")
 @click.option("--cov-report", "cov_reports", metavar="term|json:FILE|html:DIR", multiple=True,
