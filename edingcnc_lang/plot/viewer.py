@@ -13,6 +13,7 @@ import base64
 import html
 import json
 import math
+import re
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -126,9 +127,13 @@ def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Too
     other = "" if old is None else \
         f'<script type="application/json" id="job-data-old">{_payload(old, max_moves, view)}</script>'
     name = path.job.replace("\\", "/").rsplit("/", 1)[-1]
-    return (template.replace("{{title}}", html.escape(f"{name} \u2014 ecnc view"))
-            .replace("{{css}}", css).replace("{{script}}", script).replace("{{other}}", other)
-            .replace("{{data}}", payload))
+    parts = {"title": html.escape(f"{name} \u2014 ecnc view"), "css": css, "script": script, "other": other,
+             "data": payload}
+    # one pass over the template: a job named {{data}}.nc keeps its name in the title, not the payload
+    return _PLACE.sub(lambda found: parts[found[1]], template)
+
+
+_PLACE = re.compile(r"\{\{(title|css|script|other|data)\}\}")
 
 
 def _payload(path: Toolpath, max_moves: int, view: str) -> str:
