@@ -18,6 +18,7 @@ regular file (``/dev/null``, a FIFO) is written in place: renaming over it would
 from __future__ import annotations
 
 import contextlib
+import io
 import os
 import stat
 import sys
@@ -79,12 +80,21 @@ def write_error(path: PathLike, err: OSError) -> EcncError:
     return EcncError(f"cannot write {os.fspath(path)}: {err.strerror or err}")
 
 
+def owned_by_us(info: os.stat_result) -> bool:
+    """Whether a file we write anew gets the owner and group of the file ``info`` describes (always
+    without owners, as on Windows)."""
+    return (info.st_uid, info.st_gid) == (os.getuid(), os.getgid()) if hasattr(os, "getuid") else True
+
+
 def _in_place(target: str) -> bool:
-    """Whether ``target`` exists and is not a regular file (a device, a FIFO): written, never replaced."""
+    """Whether ``target`` is written in place, never replaced: it exists and is not a regular file (a
+    device, a FIFO: renaming over it would remove it), or a new file would lose its other hard links
+    or its owner (as the ini's write-back and the ``.npz`` samples file keep them)."""
     try:
-        return not stat.S_ISREG(os.stat(target).st_mode)
+        info = os.stat(target)
     except OSError:
         return False
+    return not stat.S_ISREG(info.st_mode) or info.st_nlink > 1 or not owned_by_us(info)
 
 
 @contextlib.contextmanager
@@ -135,6 +145,87 @@ def replacing(path: PathLike, binary: bool = False, newline: str | None = None) 
     except BaseException:
         _remove(temporary)
         raise
+
+
+class ReplacingText(io.TextIOWrapper):
+    """A text stream written into a temporary file beside ``target`` that replaces it when the stream
+    is closed (``run``'s trace, events and CSV samples, written as the run goes): Ctrl-C or a job
+    error still swaps in the rows so far, whole; a failed write (a full disk) or ``discard()``
+    leaves the target as it was.  ``holder`` is a descriptor of the target (the lock of its run),
+    closed last."""
+
+    def __init__(self, target: str, temporary: str, fd: int, holder: int | None = None) -> None:
+        super().__init__(io.BufferedWriter(io.FileIO(fd, "w"), 1 << 16), encoding="utf-8", newline="")
+        self._target, self._temporary, self._holder = target, temporary, holder
+        self._failed = False
+
+    def write(self, text: str) -> int:
+        try:
+            return super().write(text)
+        except BaseException:
+            self._failed = True  # part of it may be in the buffer: the file is not whole
+            raise
+
+    def discard(self) -> None:
+        """Close without replacing the target."""
+        self._failed = True
+        self.close()
+
+    def close(self) -> None:
+        if self.closed:
+            return
+        try:
+            if not self._failed:
+                try:
+                    self.flush()
+                    _sync(self.fileno())
+                except BaseException:
+                    self._failed = True
+                    raise
+        finally:
+            with contextlib.suppress(OSError):
+                super().close()
+            self._finish()
+
+    def _finish(self) -> None:
+        try:
+            if self._failed:
+                _remove(self._temporary)
+                return
+            try:
+                os.chmod(self._temporary, _mode_for(self._target))
+                os.replace(self._temporary, self._target)
+            except OSError as err:
+                _remove(self._temporary)
+                raise write_error(self._target, err) from None
+        finally:
+            if self._holder is not None:
+                os.close(self._holder)
+
+
+def open_replacing_text(path: PathLike, holder: int | None = None) -> IO[str]:
+    """A ``ReplacingText`` for ``path``, or the file itself, cut to nothing, where it must be written
+    in place (see ``_in_place``); ``holder`` as for ReplacingText, the stream's own descriptor in place."""
+    shown = os.fspath(path)
+    target = os.path.realpath(shown)
+    if not _in_place(target):
+        try:
+            fd, temporary = tempfile.mkstemp(prefix=f".{os.path.basename(target)}.", suffix=".tmp",
+                                             dir=os.path.dirname(target))
+        except OSError:  # a folder that takes no new file (the output itself may be writable): in place
+            pass
+        else:
+            return ReplacingText(target, temporary, fd, holder)
+    try:
+        if holder is None:
+            return open(target, "w", encoding="utf-8", newline="", buffering=1 << 16)
+        if os.fstat(holder).st_size:  # a FIFO or device has none to cut
+            os.ftruncate(holder, 0)  # only now: the lock is held
+        return open(holder, "w", encoding="utf-8", newline="", buffering=1 << 16)
+    except OSError as err:
+        if holder is not None:
+            os.close(holder)
+        raise write_error(shown, err) from None
 
 
 def _sync(fd: int) -> None:

@@ -21,7 +21,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.errors import EcncError, UsageFailure
 from edingcnc_lang.motion.stage import Samples
-from edingcnc_lang.outputs import STDOUT
+from edingcnc_lang.outputs import STDOUT, open_replacing_text
 from edingcnc_lang.motion.planner.estimate import Timing
 
 if TYPE_CHECKING:
@@ -60,12 +60,14 @@ class _NotOpen(io.StringIO):
 _NOT_OPEN = _NotOpen()
 
 
-def _open_for_writing(path: Path, binary: bool = False, truncate: bool = True) -> IO:
+def _open_for_writing(path: Path, binary: bool = False) -> IO:
     """The file to write, locked against another run writing it at the same time; ``-`` is
     standard output (closing the returned stream leaves it open).
 
-    The file is truncated only once it is locked, so a second run refused here leaves the first
-    one's rows alone; not at all with ``truncate`` False (a file replaced whole at the end).
+    The rows go to a file beside it that replaces it when the stream is closed (``outputs.
+    ReplacingText``: a full disk leaves the old file whole); a file written in place is truncated
+    only once it is locked, so a second run refused here leaves the first one's rows alone.
+    ``binary`` (the .npz file, assembled and swapped in at the end) gives the file itself.
     Without fcntl (Windows) there is no lock.
     """
     try:
@@ -77,14 +79,12 @@ def _open_for_writing(path: Path, binary: bool = False, truncate: bool = True) -
         raise EcncError(f"cannot write {path}: {err.strerror}") from None
     try:
         _lock(fd, path)
-        if truncate and os.fstat(fd).st_size:
-            os.ftruncate(fd, 0)
     except BaseException:
         os.close(fd)
         raise
     if binary:
         return open(fd, "wb")
-    return open(fd, "w", encoding="utf-8", newline="", buffering=1 << 16)
+    return open_replacing_text(path, holder=fd)
 
 
 def _lock(fd: int, path: Path) -> None:
@@ -189,7 +189,7 @@ class SamplesWriter:
         self._file: IO = _NOT_OPEN
 
     def open(self) -> None:
-        self._file = _open_for_writing(self.path, binary=self._npz, truncate=not self._npz)
+        self._file = _open_for_writing(self.path, binary=self._npz)
         if not self._npz:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
             return
@@ -246,7 +246,8 @@ class SamplesWriter:
         the output is no plain file (a FIFO)."""
         import stat
 
-        from edingcnc_lang.config.ini import owned_by_us, write_atomic
+        from edingcnc_lang.config.ini import write_atomic
+        from edingcnc_lang.outputs import owned_by_us
 
         info = os.fstat(self._file.fileno())
         if columns.beside and owned_by_us(info) and stat.S_ISREG(info.st_mode) and info.st_nlink == 1:
