@@ -107,29 +107,30 @@ def replacing(path: PathLike, binary: bool = False, newline: str | None = None) 
     it was; an OSError becomes an EcncError naming ``path``.
     """
     shown = os.fspath(path)
-    text = {} if binary else {"encoding": "utf-8", "newline": newline}
     if shown == STDOUT:
         sys.stdout.flush()
-        out = open(sys.stdout.fileno(), "wb" if binary else "w", closefd=False, **text)
-        with out:
+        with _stream(sys.stdout.fileno(), binary, newline, closefd=False) as out:
             yield out
         return
     target = os.path.realpath(shown)
-    if _in_place(target):
+    temporary = None
+    if not _in_place(target):
+        folder, name = os.path.split(target)
         try:
-            with open(target, "wb" if binary else "w", **text) as handle:
+            fd, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
+        except OSError as err:  # a folder that takes no new file: an existing target is written in place
+            if not os.path.exists(target):
+                raise write_error(shown, err) from None
+    if temporary is None:
+        try:
+            with _stream(target, binary, newline) as handle:
                 yield handle
         except OSError as err:
             raise write_error(shown, err) from None
         return
-    folder, name = os.path.split(target)
-    try:
-        fd, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder or ".")
-    except OSError as err:
-        raise write_error(shown, err) from None
     try:
         try:
-            handle = os.fdopen(fd, "wb" if binary else "w", **text)
+            handle = _stream(fd, binary, newline)
         except BaseException:
             os.close(fd)
             raise
@@ -226,6 +227,13 @@ def open_replacing_text(path: PathLike, holder: int | None = None) -> IO[str]:
         if holder is not None:
             os.close(holder)
         raise write_error(shown, err) from None
+
+
+def _stream(file: int | str, binary: bool, newline: str | None, closefd: bool = True) -> IO[Any]:
+    """``file`` (a path or a descriptor) opened for writing: bytes, or UTF-8 text."""
+    if binary:
+        return open(file, "wb", closefd=closefd)
+    return open(file, "w", encoding="utf-8", newline=newline, closefd=closefd)
 
 
 def _sync(fd: int) -> None:

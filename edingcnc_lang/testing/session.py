@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Generator, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
@@ -101,7 +101,7 @@ def run_file_cases(cases: Sequence[TestCase], stop_first: bool, coverage: bool
 
 
 def _file_results(files: Sequence[Sequence[TestCase]], stop_first: bool, jobs: int, coverage: bool
-                  ) -> Iterator[tuple[list[TestResult], CoverageData | None]]:
+                  ) -> Generator[tuple[list[TestResult], CoverageData | None], None, None]:
     if jobs <= 1 or len(files) < 2:
         for cases in files:
             yield run_file_cases(cases, stop_first, coverage)
