@@ -12,7 +12,8 @@ Two promises, shared by every command that writes (``run``, ``test``, ``sim``, `
   and flushed to disk: Ctrl-C, a crash or a full disk mid-write leaves the previous file as it was.
   A write error names the file, never "standard output".
 
-``-`` is standard output and is never checked or replaced.  A target that exists but is not a
+To ``check_outputs``, ``-`` is standard output (``run --trace -``) and is never checked; the
+writers here always write a file.  A target that exists but is not a
 regular file (``/dev/null``, a FIFO) is written in place: renaming over it would remove it.
 """
 from __future__ import annotations
@@ -21,7 +22,6 @@ import contextlib
 import io
 import os
 import stat
-import sys
 import tempfile
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
@@ -107,11 +107,6 @@ def replacing(path: PathLike, binary: bool = False, newline: str | None = None) 
     it was; an OSError becomes an EcncError naming ``path``.
     """
     shown = os.fspath(path)
-    if shown == STDOUT:
-        sys.stdout.flush()
-        with _stream(sys.stdout.fileno(), binary, newline, closefd=False) as out:
-            yield out
-        return
     target = os.path.realpath(shown)
     temporary = None
     if not _in_place(target):
@@ -229,11 +224,11 @@ def open_replacing_text(path: PathLike, holder: int | None = None) -> IO[str]:
         raise write_error(shown, err) from None
 
 
-def _stream(file: int | str, binary: bool, newline: str | None, closefd: bool = True) -> IO[Any]:
+def _stream(file: int | str, binary: bool, newline: str | None) -> IO[Any]:
     """``file`` (a path or a descriptor) opened for writing: bytes, or UTF-8 text."""
     if binary:
-        return open(file, "wb", closefd=closefd)
-    return open(file, "w", encoding="utf-8", newline=newline, closefd=closefd)
+        return open(file, "wb")
+    return open(file, "w", encoding="utf-8", newline=newline)
 
 
 def _sync(fd: int) -> None:
