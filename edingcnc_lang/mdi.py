@@ -21,6 +21,7 @@ from edingcnc_lang.syntax.parser import parse_text
 from edingcnc_lang.runner import Run, RunOptions
 
 MDI_PATH = "<mdi>"
+_VALUE_OF = "#1 = ["  # an expression line is evaluated as the value of this assignment (then "]")
 
 # The first word of a line that opens (+1) or closes (-1) a block; Else neither.
 BLOCK_WORDS = {"if": 1, "while": 1, "sub": 1, "endif": -1, "endwhile": -1, "endsub": -1}
@@ -96,13 +97,19 @@ class MdiSession:
     def _value(self, text: str, line: int) -> float | None:
         """The value of ``text`` if it is only an expression (``#5001``, ``[2 * SIN[30]]``), else None."""
         try:
-            program = parse_text("\n" * (line - 1) + f"#1 = [{text}]", MDI_PATH)
+            program = parse_text("\n" * (line - 1) + f"{_VALUE_OF}{text}]", MDI_PATH)
         except SyntaxErrors:
             return None
         block = program.body[0] if len(program.body) == 1 else None
         if not isinstance(block, Block) or block.words or len(block.assigns) != 1:
             return None
-        return self._interp.evaluator.value(block.assigns[0].value)
+        try:
+            return self._interp.evaluator.value(block.assigns[0].value)
+        except EcncError as err:  # its column in the line as typed, not in the wrapped one
+            where = err.location
+            if where is not None and where.line == line and where.col > len(_VALUE_OF):
+                err.location = Location(where.path, where.line, where.col - len(_VALUE_OF))
+            raise
 
     def _outcome(self, value: float | None, moved: bool, ended: bool) -> MdiOutcome:
         position = tuple(self._interp.reported_position())  # X a diameter on a diameter lathe, as #5001

@@ -35,10 +35,8 @@ from edingcnc_lang.motion.sinks import (
     EventsWriter,
     SamplesWriter,
     TraceWriter,
-    check_outputs,
-    ensure_parent,
-    output_identities,
 )
+from edingcnc_lang.outputs import check_outputs, ensure_parent, output_identities
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
 from edingcnc_lang.syntax.parser import StatementReader, check_file, parse_file, parse_text, read_statements
@@ -185,6 +183,19 @@ class RunOptions:
     variables: Mapping[int, float] = field(default_factory=dict)
 
 
+def _macro_files(opts: RunOptions, cfg: MachineConfig) -> list[Path]:
+    main = opts.macro or cfg.macro_file or packaged_macro()
+    user = opts.user_macro or cfg.user_macro_file
+    return [p for p in (user, main) if p is not None]
+
+
+def input_files(options: RunOptions) -> list[Path]:
+    """The files a run with ``options`` reads besides its job (the ini and the macro files, the ini's
+    own included): what a command that writes checks its outputs against (``outputs.check_outputs``)."""
+    config = load_config(options.ini) if options.ini else MachineConfig.default()
+    return [path for path in (options.ini, *_macro_files(options, config)) if path is not None]
+
+
 def packaged_macro() -> Path:
     """The default macro file shipped inside the package."""
     return Path(__file__).resolve().parent / "stdlib" / "macro.cnc"
@@ -308,10 +319,7 @@ class Run:
 
     def macro_files(self) -> list[Path]:
         """Macro files in lookup order: user macro first (its subs win), then the main macro file."""
-        opts, cfg = self.options, self.config
-        main = opts.macro or cfg.macro_file or packaged_macro()
-        user = opts.user_macro or cfg.user_macro_file
-        return [p for p in (user, main) if p is not None]
+        return _macro_files(self.options, self.config)
 
     def load_macro(self, path: Path) -> n.Program:
         """A macro file as the controller loads it: lines that do not parse wait (as BadLine) until

@@ -38,6 +38,7 @@ FORBIDDEN: dict[str, set[str]] = {
     "canon": {"syntax", "machine", "config", "pipeline", "motion", "kinematics", "runner", *FRONT_ENDS},
     "errors": {"syntax", "machine", "config", "pipeline", "motion", "kinematics", "runner", *FRONT_ENDS},
     "picture_formats": {"plot", "kinematics", "runner", "motion"},
+    "outputs": {"syntax", "machine", "config", "pipeline", "motion", "kinematics", "runner", *FRONT_ENDS},
     # the products and tools built on a run do not import each other or a front end
     "plot": {"cli", "lsp", "debug", "testing", "diff", "sim", "lint"},
     "lint": {"cli", "lsp", "debug", "testing", "diff", "sim", "plot", "runner", "motion", "pipeline"},

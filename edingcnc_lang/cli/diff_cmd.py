@@ -13,6 +13,7 @@ from edingcnc_lang.cli.base import Command
 from edingcnc_lang.cli.options import MachineOptions, json_option, machine_options
 from edingcnc_lang.cli.sim_cmd import StockBox
 from edingcnc_lang.cli.value_types import ANSWER, EXISTING_FILE, INI_FILE, OUTPUT_FILE, POSITIVE_INT, PlainFloat
+from edingcnc_lang.cli.streams import job_to_read_twice
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -78,6 +79,7 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
     Exit status 0 when nothing differs, 1 when something does."""
     from edingcnc_lang.diff import diff_files
     from edingcnc_lang.diff.report import render
+    from edingcnc_lang.outputs import check_outputs
 
     fmt = None
     if output:
@@ -88,9 +90,13 @@ def diff(old: str, new: str, machine: MachineOptions, ini_new: str | None, macro
                                       user_macro=user_macro_new or machine.user_macro,
                                       answers=answers_new or machine.answers,
                                       probe_surface=probe_surface_new or machine.probe_surface)
-    comparison = diff_files(old, new, machine.run_options(show_messages=False, write_job_files=False),
-                            new_machine.run_options(show_messages=False, write_job_files=False), tolerance, limit,
-                            cut=None if box is None else _cutter(box, resolution))
+    check_outputs({"-o": output}, [old, new, *machine.input_files(), *new_machine.input_files()])
+    with job_to_read_twice(old) as (old_path, old_name), job_to_read_twice(new) as (new_path, new_name):
+        # a pipe (<(cat old.nc)) is copied once: the check pass and the run read the same text
+        comparison = diff_files(old_path, new_path, machine.run_options(show_messages=False, write_job_files=False),
+                                new_machine.run_options(show_messages=False, write_job_files=False), tolerance,
+                                limit, cut=None if box is None else _cutter(box, resolution),
+                                names=(old_name, new_name))
     if output:
         from edingcnc_lang.diff.picture import draw_diff
 

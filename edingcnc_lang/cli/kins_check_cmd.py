@@ -122,8 +122,10 @@ def plot(plugin: str, output: str, resolution: int, **workspace: Any) -> int:
     from edingcnc_lang.kinematics.workbench import check as workbench
     from edingcnc_lang.kinematics.workbench.envelope import plot_envelope
 
+    from edingcnc_lang.outputs import check_outputs
     from edingcnc_lang.picture_formats import picture_format
 
+    check_outputs({"-o": output}, [plugin, workspace.get("ini")])  # a plug-in that is a path, and the ini
     fmt = picture_format(Path(output))  # before the workspace is searched
     options = _options(**workspace)
     isolated = in_child_if_compiled(plugin, options.ini, [

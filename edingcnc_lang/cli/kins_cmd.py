@@ -193,7 +193,7 @@ def guarded(kins: Kinematics) -> Kinematics:
 def build_library(source: str, output: str | None, cc: str) -> int:
     """Compile a C plug-in against edingcnc_kins.h; prints the library's path."""
     from edingcnc_lang.kinematics.build import build_plugin
-    from edingcnc_lang.motion.sinks import check_outputs
+    from edingcnc_lang.outputs import check_outputs
 
     check_outputs({"-o": Path(output) if output else None}, [Path(source)])  # the compiler would destroy it
     print(build_plugin(Path(source), Path(output) if output else None, cc))

@@ -149,6 +149,17 @@ class MachineOptions:
                                          for pair in given),
                           on_assumption=None if self.quiet else print_assumption, **extra)
 
+    def input_files(self) -> list[Path]:
+        """Every file a run with these options reads besides its job (the ini, the macro files, the
+        ini's own included, the probe surface): what no output of the command may be."""
+        from edingcnc_lang.runner import RunOptions, input_files
+
+        def path(value: str | None) -> Path | None:
+            return Path(value) if value else None
+
+        files = input_files(RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro)))
+        return files + ([Path(self.probe_surface)] if self.probe_surface else [])
+
 
 def print_assumption(assumption: Assumption) -> None:
     """What the run assumed, on stderr (never stdout): ``ecnc: assuming ...`` or, where it first

@@ -11,7 +11,7 @@ import click
 from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, JobAborted
 from edingcnc_lang.cli.base import Command, usage_error
 from edingcnc_lang.cli.options import MachineOptions, job_or_stdin_argument, json_option, machine_options
-from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE
+from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, PlainFloat
 from edingcnc_lang.cli.streams import job_to_read_twice
 
 
@@ -43,7 +43,7 @@ class StockBox(click.ParamType):
               help="The stock as a box in the job's work coordinates (its first work offset).")
 @click.option("--stock-stl", metavar="FILE", type=EXISTING_FILE,
               help="The stock as an STL mesh (work coordinates); its top surface is what is cut.")
-@click.option("--resolution", metavar="MM", type=click.FloatRange(0, min_open=True), default=0.25,
+@click.option("--resolution", metavar="MM", type=PlainFloat(0, min_open=True), default=0.25,
               show_default=True, help="Cell size of the height field.")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
               help="Tool shapes as TOML, [tool.N] tables (default: the ini's diameters as flat end mills).")
@@ -60,7 +60,7 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
     """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
     stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
     stock (hints), with the removed and remaining volumes."""
-    from edingcnc_lang.motion.sinks import ensure_parent
+    from edingcnc_lang.outputs import check_outputs, ensure_parent
     from edingcnc_lang.picture_formats import picture_target
     from edingcnc_lang.sim import report
     from edingcnc_lang.sim.findings import failing
@@ -71,6 +71,8 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
 
     if (box is None) == (stock_stl is None):
         raise usage_error("give the stock as exactly one of --stock XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX and --stock-stl FILE")
+    check_outputs({"-o": output, "--stl": stl},
+                  [job, stock_stl, tools_file, compare_stl, *machine.input_files()])  # before anything runs
     fmt = picture_target(Path(output)) if output else None  # told before the job runs
     tools = load_tools(tools_file) if tools_file else None
     if box is not None:

@@ -10,12 +10,14 @@ import click
 
 from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, EXIT_SYNTAX, printable
 from edingcnc_lang.cli.base import Command, usage_error
-from edingcnc_lang.cli.value_types import OUTPUT_FILE, ExistingPath
+from edingcnc_lang.cli.value_types import OUTPUT_FILE, ExistingPath, PlainInt
+from edingcnc_lang.syntax.input_limits import MAX_TEST_JOBS
 from edingcnc_lang.cli.style import styled, wants_colour
 
 if TYPE_CHECKING:
     from edingcnc_lang.testing.coverage import CoverageData
     from edingcnc_lang.testing.session import TestResult
+    from edingcnc_lang.testing.spec import TestCase
 
 
 @click.command("test", cls=Command, short_help="Run the tests of test_*.toml files; exit 1 if one fails.")
@@ -24,7 +26,7 @@ if TYPE_CHECKING:
               help="Only the tests whose FILE::NAME holds these words (and, or, not, parentheses).")
 @click.option("-x", "--exitfirst", is_flag=True, help="Stop at the first failing test.")
 @click.option("--junit", metavar="FILE", type=OUTPUT_FILE, help="Write the results as JUnit XML.")
-@click.option("-j", "--jobs", metavar="N", type=click.IntRange(min=0), default=1,
+@click.option("-j", "--jobs", metavar="N", type=PlainInt(0, MAX_TEST_JOBS), default=1,
               help="Run the test files on N processes (0: one per CPU).")
 @click.option("--cov", "cov", is_flag=True, help="Report the coverage of the macro files the tests ran.")
 @click.option("--cov-report", "cov_reports", metavar="term|json:FILE|html:DIR|lcov:FILE|cobertura:FILE", multiple=True,
@@ -62,6 +64,7 @@ def test(paths: tuple[str, ...], keyword: str | None, exitfirst: bool, junit: st
     chosen = [cases for cases in chosen if cases]
     if not chosen:
         raise usage_error(f"no test matches -k {keyword!r}")
+    _refuse_inputs(junit, reports, files, loaded)
     colour = wants_colour(sys.stdout)
 
     def show(result: TestResult) -> None:
@@ -114,8 +117,35 @@ def _coverage(reports: list[tuple[str, str]], data: CoverageData) -> None:
             print(f"coverage pages: {write_coverage_html(files, Path(target))}")
 
 
+def _refuse_inputs(junit: str | None, reports: list[tuple[str, str]], files: list[Path],
+                   loaded: list[list[TestCase]]) -> None:
+    """Usage error (exit 2) before any test runs when a report would be written over a test file, a
+    job, ini or macro file a test reads, or another report."""
+    from edingcnc_lang.outputs import check_outputs
+    from edingcnc_lang.runner import RunOptions, input_files
+
+    outputs: dict[str, str | Path | None] = {"--junit": junit}
+    for kind, target in reports:
+        if kind == "json":
+            outputs[f"--cov-report json:{target}"] = target
+        elif kind == "html":
+            if os.path.exists(target) and not os.path.isdir(target):
+                raise usage_error(f"--cov-report html:{target}: {target} is a file, not a folder")
+            outputs[f"--cov-report html:{target}"] = Path(target, "index.html")
+    inputs: list[Path | None] = list(files)
+    for setup in {(case.ini, case.macro, case.user_macro) for cases in loaded for case in cases}:
+        inputs += input_files(RunOptions(ini=setup[0], macro=setup[1], user_macro=setup[2]))
+    inputs += [case.job_file for cases in loaded for case in cases]
+    check_outputs(outputs, inputs)
+
+
 def _write(target: str, text: str) -> None:
+    """A report written whole (or the old one left as it was), its folder made first."""
+    from edingcnc_lang.outputs import write_error, write_text
+
     path = Path(target)
-    if path.parent != Path(""):
+    try:
         path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
+    except OSError as err:
+        raise write_error(path, err) from None
+    write_text(path, text)

@@ -20,6 +20,7 @@ from edingcnc_lang.errors import EcncError, Location, shortened
 from edingcnc_lang.syntax.input_limits import MAX_HEIGHT_MAP_VALUE, MAX_ZHC_POINTS
 from edingcnc_lang.syntax.source import plain_float
 from edingcnc_lang.records import record
+from edingcnc_lang.outputs import write_text
 
 TABLE_HEADER = "; ecnc ZHC height table"
 _TABLE_KEYS = ("nx", "ny", "x0", "y0", "dx", "dy")
@@ -150,8 +151,7 @@ class ZhcTable:
         return "\n".join(lines) + "\n"
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        with open(path, "w", encoding="utf-8", newline="\n") as handle:
-            handle.write(self.to_text())
+        write_text(path, self.to_text(), newline="\n")
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> "ZhcTable":

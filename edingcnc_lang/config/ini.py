@@ -24,6 +24,7 @@ from types import MappingProxyType
 from typing import IO
 
 from edingcnc_lang.errors import ConfigError, Location
+from edingcnc_lang.outputs import owned_by_us
 from edingcnc_lang.syntax.input_limits import MAX_INI_BYTES
 
 _BOM = b"\xef\xbb\xbf"
@@ -260,12 +261,6 @@ def _update_variables(text: str, values: Mapping[int, float]) -> str:
         lines[at - 1] = (lines[at - 1][0], eol)  # the last line had no ending
     lines[at:at] = added + [(line, eol) for line in missing]
     return "".join(body + end for body, end in lines)
-
-
-def owned_by_us(info: os.stat_result) -> bool:
-    """Whether a file we write anew gets the owner and group of the file ``info`` describes (always
-    without owners, as on Windows)."""
-    return (info.st_uid, info.st_gid) == (os.getuid(), os.getgid()) if hasattr(os, "getuid") else True
 
 
 def write_atomic(path: Path, write: Callable[[IO[bytes]], object], info: os.stat_result) -> bool:

@@ -22,14 +22,16 @@ __all__ = ["Change", "Comparison", "Recording", "compare", "diff_files", "record
 
 def diff_files(old: str | Path, new: str | Path, options: RunOptions | None = None,
                new_options: RunOptions | None = None, tolerance: float = TOLERANCE, limit: int = LIMIT,
-               cut: Callable[[Path, RunOptions], Cut] | None = None) -> Comparison:
+               cut: Callable[[Path, RunOptions], Cut] | None = None,
+               names: tuple[str | None, str | None] = (None, None)) -> Comparison:
     """Run ``old`` and ``new`` (``new_options``, default ``options``: where the machine itself
     changed) and compare what the machine does; with ``cut`` (a job and its options -> the stock it
-    cut, as ``sim.simulate`` gives it) compare the parts too.  Run errors are raised as ``run_file``
-    raises them."""
+    cut, as ``sim.simulate`` gives it) compare the parts too; ``names``: what the report calls the jobs
+    (default their paths: a pipe's copy is named as the user gave it).  Run errors are raised as
+    ``run_file`` raises them."""
     options = options or RunOptions()
-    before = record(Path(old), options)
-    after = record(Path(new), new_options or options)
+    before = record(Path(old), options, names[0])
+    after = record(Path(new), new_options or options, names[1])
     comparison = compare(before, after, tolerance, limit)
     if cut is not None:
         from edingcnc_lang.diff.part import compare_parts

@@ -10,13 +10,13 @@ from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
-from edingcnc_lang.errors import EcncError
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.render import DPI, FEED_WIDTH, RAPID_WIDTH, SIZE_INCHES, _frame
 from edingcnc_lang.diff.compare import Comparison
 from edingcnc_lang.diff.record import RAPID_KINDS, Recording, sample
 from edingcnc_lang.diff.style import KINDS, OLD_COLOR, SAME_COLOR, drawn, kind_of
+from edingcnc_lang.outputs import save_figure
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -86,10 +86,7 @@ def draw_diff(comparison: Comparison, out: Path, view: str = "auto", fmt: str | 
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9, frameon=False)
     if part is not None:
         _draw_part(fig, part)
-    try:
-        fig.savefig(out, format=fmt, dpi=DPI)
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    save_figure(fig, out, fmt, DPI)
     return out
 
 

@@ -12,7 +12,7 @@ import io
 import math
 import os
 import sys
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from operator import neg
 from pathlib import Path
 from typing import IO, TYPE_CHECKING
@@ -21,6 +21,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.errors import CallbackError, EcncError, Location, UsageFailure
 from edingcnc_lang.motion.stage import Samples
+from edingcnc_lang.outputs import STDOUT, open_replacing_text
 from edingcnc_lang.motion.planner.estimate import Timing
 
 if TYPE_CHECKING:
@@ -44,7 +45,6 @@ CSV_ROWS_AT_ONCE = 8192  # samples turned into text in one go
 SAMPLES_COLUMNS = ("t", "x", "y", "z", "a", "b", "c", "jx", "jy", "jz", "ja", "jb", "jc", "s", "v", "acc")
 
 
-STDOUT = "-"  # as an output path: standard output
 
 
 class _NotOpen(io.StringIO):
@@ -60,50 +60,14 @@ class _NotOpen(io.StringIO):
 _NOT_OPEN = _NotOpen()
 
 
-def _identity(path: Path) -> tuple[int, int] | None:
-    """The file ``path`` names (device and inode: a hard link or another spelling is the same file), or None."""
-    try:
-        info = os.stat(path)
-    except (OSError, ValueError):
-        return None
-    return (info.st_dev, info.st_ino)
-
-
-def check_outputs(outputs: Mapping[str, Path | None], inputs: Iterable[Path | None]) -> None:
-    """Refuse, before anything is written, an output that is one of the run's inputs (the job, the
-    ini, a macro file: writing would truncate it before it is read) or another output.
-
-    ``outputs`` maps what the user calls each (``--trace``) to its path; ``-`` is standard output.
-    Raises UsageFailure (exit 2).
-    """
-    read = {ident: path for path in inputs if path is not None and (ident := _identity(path)) is not None}
-    written: dict[tuple[int, int], str] = {}
-    for name, path in outputs.items():
-        if path is None or str(path) == STDOUT:
-            continue
-        ident = _identity(path)
-        if ident is None:  # a new file: it can only clash with another new output of the same name
-            ident = (-1, hash(os.path.abspath(path)))
-        if ident in read:
-            raise UsageFailure(f"{name} {path}: that file is also an input of this run ({read[ident]}); "
-                               "writing it would destroy it, so name another file")
-        if ident in written:
-            raise UsageFailure(f"{written[ident]} and {name} name the same file {path}: it cannot be written twice")
-        written[ident] = name
-
-
-def output_identities(paths: Iterable[Path | None]) -> frozenset[tuple[int, int]]:
-    """The files of ``paths`` that exist, as (device, inode): what a job's own files may never be."""
-    return frozenset(ident for path in paths if path is not None and str(path) != STDOUT
-                     and (ident := _identity(path)) is not None)
-
-
-def _open_for_writing(path: Path, binary: bool = False, truncate: bool = True) -> IO:
+def _open_for_writing(path: Path, binary: bool = False) -> IO:
     """The file to write, locked against another run writing it at the same time; ``-`` is
     standard output (closing the returned stream leaves it open).
 
-    The file is truncated only once it is locked, so a second run refused here leaves the first
-    one's rows alone; not at all with ``truncate`` False (a file replaced whole at the end).
+    The rows go to a file beside it that replaces it when the stream is closed (``outputs.
+    ReplacingText``: a full disk leaves the old file whole); a file written in place is truncated
+    only once it is locked, so a second run refused here leaves the first one's rows alone.
+    ``binary`` (the .npz file, assembled and swapped in at the end) gives the file itself.
     Without fcntl (Windows) there is no lock.
     """
     try:
@@ -115,14 +79,12 @@ def _open_for_writing(path: Path, binary: bool = False, truncate: bool = True) -
         raise EcncError(f"cannot write {path}: {err.strerror}") from None
     try:
         _lock(fd, path)
-        if truncate and os.fstat(fd).st_size:
-            os.ftruncate(fd, 0)
     except BaseException:
         os.close(fd)
         raise
     if binary:
         return open(fd, "wb")
-    return open(fd, "w", encoding="utf-8", newline="", buffering=1 << 16)
+    return open_replacing_text(path, holder=fd)
 
 
 def _lock(fd: int, path: Path) -> None:
@@ -227,7 +189,7 @@ class SamplesWriter:
         self._file: IO = _NOT_OPEN
 
     def open(self) -> None:
-        self._file = _open_for_writing(self.path, binary=self._npz, truncate=not self._npz)
+        self._file = _open_for_writing(self.path, binary=self._npz)
         if not self._npz:
             self._file.write(",".join(SAMPLES_COLUMNS) + "\n")
             return
@@ -284,7 +246,8 @@ class SamplesWriter:
         the output is no plain file (a FIFO)."""
         import stat
 
-        from edingcnc_lang.config.ini import owned_by_us, write_atomic
+        from edingcnc_lang.config.ini import write_atomic
+        from edingcnc_lang.outputs import owned_by_us
 
         info = os.fstat(self._file.fileno())
         if columns.beside and owned_by_us(info) and stat.S_ISREG(info.st_mode) and info.st_nlink == 1:
@@ -407,8 +370,3 @@ class CallbackSink:
                                 Location(at.path, at.line)) from exc
 
 
-def ensure_parent(path: str | os.PathLike[str]) -> Path:
-    result = Path(path)
-    if result.parent and not result.parent.exists():
-        raise EcncError(f"cannot write {result}: folder {result.parent} does not exist")
-    return result

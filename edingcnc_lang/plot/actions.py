@@ -11,8 +11,8 @@ from pathlib import Path
 from typing import Any
 
 from edingcnc_lang.errors import EcncError, Location
-from edingcnc_lang.motion.sinks import check_outputs, ensure_parent
-from edingcnc_lang.runner import RunOptions
+from edingcnc_lang.outputs import check_outputs, ensure_parent
+from edingcnc_lang.runner import RunOptions, input_files
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.lathe import in_work
 from edingcnc_lang.plot.toolpath import Toolpath, record_job
@@ -44,9 +44,9 @@ def parse_line_range(text: str) -> tuple[int, int]:
     return low, high
 
 
-def _refuse_an_input(target: Path, job: Path, options: RunOptions) -> None:
-    """UsageFailure when the picture would be written over the job or a file the run reads."""
-    check_outputs({"-o": target}, [job, options.ini, options.macro, options.user_macro])
+def _refuse_an_input(target: Path, jobs: list[Path | None], options: RunOptions) -> None:
+    """UsageFailure when the picture would be written over a job or a file the run reads."""
+    check_outputs({"-o": target}, [*jobs, *input_files(options)])
 
 
 def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str = "auto", color: str = "tool",
@@ -56,7 +56,7 @@ def plot_job(job: Path, options: RunOptions, out: Path | None = None, view: str 
     from edingcnc_lang.plot.render import plot_toolpath
 
     target = ensure_parent(out or default_output(job, "-joints.png" if joints else ".png"))
-    _refuse_an_input(target, job, options)
+    _refuse_an_input(target, [job], options)
     fmt = picture_target(target)  # a wrong extension or a missing folder is told before the job runs
     path = record_job(job, options, samples=joints, name=name)
     if joints:
@@ -83,7 +83,7 @@ def view_job(job: Path, options: RunOptions, out: Path | None = None, max_moves:
     from edingcnc_lang.plot.viewer import MAX_MOVES, write_view
 
     target = ensure_parent(out or default_output(job, ".html"))
-    _refuse_an_input(target, job, options)
+    _refuse_an_input(target, [job, old], options)
     path = in_work(record_job(job, options, name=name))
     if lines is not None:
         path = path.select_lines(*lines)

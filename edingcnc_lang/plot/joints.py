@@ -15,6 +15,7 @@ from edingcnc_lang.plot import views as v
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.render import DPI
 from edingcnc_lang.plot.toolpath import SAMPLE_ROWS, Toolpath
+from edingcnc_lang.outputs import save_figure
 
 JOINT_COLUMNS = ("jx", "jy", "jz", "ja", "jb", "jc")
 STRIP_INCHES = 1.6
@@ -63,8 +64,5 @@ def plot_joints(path: Toolpath, out: Path, fmt: str | None = None) -> Path:
     axes[-1].set_xlabel("time (s)")
     title = f"{v.title_text(path)}\njoint positions over time"
     fig.suptitle(title, x=0.01, ha="left", fontsize=11)
-    try:
-        fig.savefig(out, format=fmt, dpi=DPI)
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    save_figure(fig, out, fmt, DPI)
     return out

@@ -15,10 +15,10 @@ from typing import TYPE_CHECKING, Any, overload
 
 import numpy as np
 
-from edingcnc_lang.errors import EcncError
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.picture_formats import picture_target
 from edingcnc_lang.plot.toolpath import KINDS, Toolpath
+from edingcnc_lang.outputs import save_figure
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -81,10 +81,7 @@ def plot_toolpath(path: Toolpath, out: Path | None = None, view: str = "auto", c
     view, label = draw_toolpath(fig, ax, path, view, color, fit)
     matrix = ax.transData.get_affine().get_matrix().copy()  # final: the axes sit where add_axes put them
     extent = ax.get_window_extent()
-    try:
-        fig.savefig(out, format=fmt, dpi=DPI)
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    save_figure(fig, out, fmt, DPI)
     width, height = (int(round(s * DPI)) for s in SIZE_INCHES)
     axes = (int(extent.x0), int(height - extent.y1), int(extent.x1), int(height - extent.y0))
     where = None if label is None else (int(label.x0), int(height - label.y1), int(label.x1), int(height - label.y0))

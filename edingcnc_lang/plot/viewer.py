@@ -14,6 +14,7 @@ import html
 import json
 import math
 import os
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from importlib import resources
@@ -22,9 +23,9 @@ from typing import Any
 
 import numpy as np
 
-from edingcnc_lang.errors import EcncError
 from edingcnc_lang.plot import views as v
 from edingcnc_lang.plot.toolpath import KINDS, RAPID_KINDS, Toolpath
+from edingcnc_lang.outputs import write_text
 
 MAX_MOVES = 25_000                  # moves in the page before it is thinned
 VIEW_ARC_STEP = math.radians(6.0)   # 60 chords a turn: finer than a screen shows at a whole-job zoom
@@ -181,9 +182,13 @@ def page(path: Toolpath, max_moves: int = MAX_MOVES, view: str = "iso", old: Too
     if old is not None and changes is not None:
         other += f'<script type="application/json" id="diff-data">{_safe(changes)}</script>'
     name = path.job.replace("\\", "/").rsplit("/", 1)[-1]
-    return (template.replace("{{title}}", html.escape(f"{name} \u2014 ecnc view"))
-            .replace("{{css}}", css).replace("{{script}}", script).replace("{{other}}", other)
-            .replace("{{data}}", payload))
+    parts = {"title": html.escape(f"{name} \u2014 ecnc view"), "css": css, "script": script, "other": other,
+             "data": payload}
+    # one pass over the template: a job named {{data}}.nc keeps its name in the title, not the payload
+    return _PLACE.sub(lambda found: parts[found[1]], template)
+
+
+_PLACE = re.compile(r"\{\{(title|css|script|other|data)\}\}")
 
 
 def _payload(path: Toolpath, max_moves: int, view: str, embed_sources: bool) -> str:
@@ -200,8 +205,5 @@ def write_view(path: Toolpath, out: Path, max_moves: int = MAX_MOVES, view: str 
                old: Toolpath | None = None, embed_sources: bool = False,
                changes: dict[str, Any] | None = None) -> Path:
     """Write the viewer page for ``path`` (and ``old``, to compare with, and its ``changes``) to ``out``."""
-    try:
-        out.write_text(page(path, max_moves, view, old, embed_sources, changes), encoding="utf-8")
-    except OSError as err:
-        raise EcncError(f"cannot write {out}: {err.strerror}") from None
+    write_text(out, page(path, max_moves, view, old, embed_sources, changes))
     return out

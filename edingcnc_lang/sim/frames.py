@@ -20,6 +20,7 @@ from edingcnc_lang.runner import RunOptions
 from edingcnc_lang.sim.job import simulate
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.tools import Tool
+from edingcnc_lang.outputs import write_text
 
 SIZE = 64      # cells across the longer side of a frame
 FRAMES = 48    # frames in a page at most (about 400 kB of base64 at 64 x 64)
@@ -66,7 +67,4 @@ def add_to_page(page: Path, data: dict[str, Any]) -> None:
         raise EcncError(f"{page} is not a page of ecnc view (no job data in it)")
     block = json.dumps(data, separators=(",", ":"), allow_nan=False)
     text = text.replace(MARKER, f'<script type="application/json" id="stock-data">{block}</script>\n{MARKER}', 1)
-    try:
-        page.write_text(text, encoding="utf-8")
-    except OSError as err:
-        raise EcncError(f"cannot write {page}: {err.strerror}") from None
+    write_text(page, text)

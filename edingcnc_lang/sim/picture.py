@@ -11,6 +11,7 @@ import numpy as np
 from edingcnc_lang.sim.compare import Deviation
 from edingcnc_lang.sim.findings import Finding
 from edingcnc_lang.sim.stock import Stock
+from edingcnc_lang.outputs import save_figure
 
 DPI = 120
 MAX_LABELS = 40    # findings labelled with their line number; more would be a smudge
@@ -50,7 +51,7 @@ def draw_stock(stock: Stock, out: Path, fmt: str, findings: list[Finding], title
     if deviation is not None:
         _draw_deviation(fig, fig.add_subplot(1, 2, 2), deviation, step, extent)
     fig.tight_layout()
-    fig.savefig(out, format=fmt, dpi=DPI)
+    save_figure(fig, out, fmt, DPI)
 
 
 def _cmap():  # type: ignore[no-untyped-def]

@@ -17,6 +17,8 @@ import numpy as np
 from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
 from edingcnc_lang.sim.stock import Stock, grid_size
 from edingcnc_lang.sim.sweep import MAX_PAIRS, footprint_cells, pair_counts
+from edingcnc_lang.outputs import replacing
+from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
 
 TRIANGLE = np.dtype([("normal", "<f4", (3,)), ("vertices", "<f4", (3, 3)), ("attribute", "<u2")])
 _VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")
@@ -30,7 +32,17 @@ class StlError(EcncError):
 
 
 def read_stl(path: str | Path) -> np.ndarray:
-    """The triangles of an STL file, (N, 3, 3) float64; binary and ASCII alike."""
+    """The triangles of an STL file, (N, 3, 3) float64; binary and ASCII alike.  A mesh without
+    triangles, or with a coordinate that is not a number or lies beyond MAX_SIM_LENGTH, is refused
+    (the stock and the part alike: a NaN triangle was dropped from the part without a word)."""
+    triangles = _triangles(path)
+    if not len(triangles) or not (np.abs(triangles) <= MAX_SIM_LENGTH).all():
+        raise StlError(f"the mesh has no triangles, or a coordinate that is not a number or lies beyond "
+                       f"{MAX_SIM_LENGTH:g} mm", Location(str(path)))
+    return triangles
+
+
+def _triangles(path: str | Path) -> np.ndarray:
     where = Location(str(path))
     try:
         data = Path(path).read_bytes()
@@ -54,8 +66,6 @@ def stock_from_stl(path: str | Path, resolution: float) -> Stock:
     """A stock shaped like the mesh seen from above: its top surface over its bounding box; cells
     the mesh does not cover hold no material."""
     triangles = read_stl(path)
-    if not len(triangles) or not np.isfinite(triangles).all():
-        raise StlError("the mesh has no triangles, or a coordinate that is not a number", Location(str(path)))
     lower, upper = triangles.reshape(-1, 3).min(axis=0), triangles.reshape(-1, 3).max(axis=0)
     nx, ny = grid_size(tuple(lower), tuple(upper), resolution)  # type: ignore[arg-type]
     empty = np.full((ny, nx), lower[2], dtype=np.float32)
@@ -193,7 +203,7 @@ def write_stl(path: str | Path, chunks: Iterable[np.ndarray], name: str = "ecnc 
     """Binary STL of (N, 3, 3) triangle arrays, written as they come; normals from the vertex
     order (counter-clockwise seen from outside)."""
     count = 0
-    with open(path, "wb") as handle:
+    with replacing(path, binary=True) as handle:
         handle.write(name.encode("ascii", "replace")[:80].ljust(80, b" "))
         handle.write(b"\0\0\0\0")  # the count, once known
         for triangles in chunks:

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from edingcnc_lang.errors import EXIT_USAGE, EcncError
+from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
 
 MAX_CELLS = 400_000_000  # 1.6 GB of heights: more is a typo in --stock or --resolution
 
@@ -95,11 +96,19 @@ def grid_size(lower: tuple[float, float, float], upper: tuple[float, float, floa
     """Cells across X and Y for a box; a box of no size, or of too many cells, is refused."""
     if not (resolution > 0 and math.isfinite(resolution)):
         raise StockError(f"the resolution must be a positive number of mm, not {resolution}")
+    corners = (*lower, *upper)
+    if any(not abs(v) <= MAX_SIM_LENGTH for v in corners):
+        raise StockError(f"a stock corner lies beyond {MAX_SIM_LENGTH:g} mm (the limit; got "
+                         f"{', '.join(f'{v:g}' for v in corners)})")
     sizes = [u - lo for lo, u in zip(lower, upper)]
     if any(not math.isfinite(s) or s <= 0 for s in sizes):
         raise StockError("the stock box must have XMIN < XMAX, YMIN < YMAX and ZMIN < ZMAX "
-                         f"(got {', '.join(f'{v:g}' for v in (*lower, *upper))})")
-    nx, ny = (max(1, round(s / resolution)) for s in sizes[:2])
+                         f"(got {', '.join(f'{v:g}' for v in corners)})")
+    across = [s / resolution for s in sizes[:2]]  # floats first: a count past the doubles is no int
+    if not across[0] * across[1] <= MAX_CELLS:
+        raise StockError(f"{across[0]:.6g} x {across[1]:.6g} cells at {resolution:g} mm are too many "
+                         f"(at most {MAX_CELLS:,}): use a coarser --resolution")
+    nx, ny = (max(1, round(cells)) for cells in across)
     if nx * ny > MAX_CELLS:
         raise StockError(f"{nx} x {ny} cells at {resolution:g} mm are too many (at most {MAX_CELLS:,}): "
                          "use a coarser --resolution")

@@ -7,7 +7,6 @@ checked, and the report says so).  Lengths in mm, the vee angle in degrees (incl
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -16,10 +15,8 @@ from typing import Any
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
+from edingcnc_lang.syntax import toml_input
+from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH, MIN_SIM_SIZE, MIN_VEE_ANGLE
 
 SHAPES = ("flat", "ball", "bull", "vee")
 FIELDS = ("shape", "diameter", "corner_radius", "angle", "flute_length", "shank_diameter",
@@ -91,12 +88,11 @@ def load_tools(path: str | Path) -> dict[int, Tool]:
     """``[tool.N]`` tables of a TOML file, checked; a bad value names the file and the tool."""
     where = Location(str(path))
     try:
-        with open(path, "rb") as handle:
-            data = tomllib.load(handle)
+        data = toml_input.parse(toml_input.decode(Path(path).read_bytes()))
     except OSError as err:
         raise ToolFileError(f"cannot read: {err.strerror or err}", where) from None
-    except tomllib.TOMLDecodeError as err:
-        raise ToolFileError(f"not a TOML file: {err}", where) from None
+    except toml_input.TomlProblem as err:
+        raise ToolFileError(f"not a TOML file: {err.message}", where) from None
     table = data.get("tool")
     if not isinstance(table, Mapping) or not table:
         raise ToolFileError("no [tool.N] tables (e.g. [tool.1] shape = \"flat\", diameter = 6)", where)
@@ -104,9 +100,10 @@ def load_tools(path: str | Path) -> dict[int, Tool]:
 
 
 def _number(key: str, where: Location) -> int:
-    if not key.isdigit() or not 0 <= int(key) <= 99999:
-        raise ToolFileError(f"[tool.{key}]: the tool number must be a whole number 0 or more", where)
-    return int(key)
+    number = toml_input.whole_number(key)  # ASCII digits: "²" is no tool number
+    if number is None or not 0 <= number <= 99999:
+        raise ToolFileError(f"[tool.{key!r}]: the tool number must be a whole number from 0 to 99999", where)
+    return number
 
 
 def _tool(number: int, entry: Any, source: str, where: Location) -> Tool:
@@ -122,18 +119,20 @@ def _tool(number: int, entry: Any, source: str, where: Location) -> Tool:
     values: dict[str, float] = {}
     for key in FIELDS[1:]:
         if key in entry:
-            value = entry[key]
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-                    or value < 0 or (value == 0 and key != "corner_radius"):
-                raise ToolFileError(f"{name}: {key} must be a positive number of mm, not {value!r}", where)
-            values[key] = float(value)
+            value = toml_input.number(entry[key])  # None for a 400-digit integer too
+            if value is None or not (key == "angle" or MIN_SIM_SIZE <= value <= MAX_SIM_LENGTH
+                                     or (value == 0 and key == "corner_radius")):  # the angle: below
+                raise ToolFileError(f"{name}: {key} must be a positive number of mm ({MIN_SIM_SIZE:g} to "
+                                    f"{MAX_SIM_LENGTH:g}), not {entry[key]!r}", where)
+            values[key] = value
     if "diameter" not in values:
         raise ToolFileError(f"{name}: diameter is missing", where)
     tool = Tool(number, shape=shape, source=source, **values)  # type: ignore[arg-type]
     if shape == "bull" and not 0.0 < tool.corner_radius <= tool.radius:
         raise ToolFileError(f"{name}: a bull nose needs 0 < corner_radius <= diameter/2", where)
-    if shape == "vee" and not 0.0 < tool.angle < 180.0:
-        raise ToolFileError(f"{name}: angle must be between 0 and 180 degrees (the included angle)", where)
+    if not MIN_VEE_ANGLE <= tool.angle < 180.0:
+        raise ToolFileError(f"{name}: angle must be from {MIN_VEE_ANGLE:g} to below 180 degrees (the included angle)",
+                            where)
     if tool.holder_length is not None and tool.flute_length is not None and tool.holder_length < tool.flute_length:
         raise ToolFileError(f"{name}: holder_length (tip to holder) is shorter than flute_length", where)
     return tool

@@ -106,6 +106,17 @@ MAX_ENVELOPE_RESOLUTION = 1_000
 MAX_LSP_DOCUMENT_CHARS = 10_000_000
 MAX_TAB_SIZE = 16
 
+# Lengths of ``ecnc sim``: the stock's corners (--stock) and a tool's sizes (--tools), in mm, at most
+# a thousand kilometres and (a size) at least a micrometre; a vee tool's angle at least one degree.
+# Beyond them the grid's cell count overflowed (--stock 0,0,-5,1e308,1e308,0), a 1e200 mm tool
+# squared its radius to inf, and a 1e-300 degree vee had an infinite cone.
+MAX_SIM_LENGTH = 1e9
+MIN_SIM_SIZE = 1e-6
+MIN_VEE_ANGLE = 1.0
+
+# Jobs of ``ecnc test -j``: a worker process each; more than this is a typo (-j 1000000).
+MAX_TEST_JOBS = 256
+
 Problem = tuple[str, str, int]  # code, message, column
 
 

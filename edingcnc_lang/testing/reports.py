@@ -13,6 +13,7 @@ from edingcnc_lang.errors import printable
 from edingcnc_lang.syntax.source import iter_file_lines
 from edingcnc_lang.testing.coverage import FileCoverage
 from edingcnc_lang.testing.session import Summary
+from edingcnc_lang.outputs import write_text
 
 COVERAGE_FORMATS = ("term", "json", "html", "lcov", "cobertura")
 
@@ -58,7 +59,7 @@ def write_coverage_html(files: Sequence[FileCoverage], folder: Path) -> Path:
     rows = []
     for number, cov in enumerate(files, 1):
         page = f"{number:02d}_{re.sub(r'[^A-Za-z0-9_.-]+', '_', Path(cov.path).name)}.html"
-        (folder / page).write_text(_file_page(cov), encoding="utf-8")
+        write_text(folder / page, _file_page(cov))
         rows.append(f"<tr><td><a href=\"{html.escape(page)}\">{html.escape(cov.path)}</a></td>"
                     f"<td>{len(cov.lines_hit)}/{cov.lines_total} ({percent(len(cov.lines_hit), cov.lines_total)})</td>"
                     f"<td>{cov.branches_hit}/{cov.branches_total}</td>"
@@ -66,7 +67,7 @@ def write_coverage_html(files: Sequence[FileCoverage], folder: Path) -> Path:
     body = ("<table><tr><th>macro file</th><th>lines</th><th>branches</th><th>subs no test ran</th></tr>"
             + "\n".join(rows) + "</table>")
     index = folder / "index.html"
-    index.write_text(_page("Macro coverage", body), encoding="utf-8")
+    write_text(index, _page("Macro coverage", body))
     return index
 
 

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import re
 import time
-from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
+from collections.abc import Callable, Generator, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from multiprocessing import get_context
 
+from edingcnc_lang.syntax.input_limits import MAX_BRACKET_DEPTH
 from edingcnc_lang.testing.coverage import CoverageData
 from edingcnc_lang.testing.spec import TestCase
 
@@ -76,14 +78,18 @@ def run_cases(files: Sequence[Sequence[TestCase]], *, stop_first: bool = False, 
     ``report`` with each result in file order as it is known."""
     started = time.perf_counter()
     summary = Summary(coverage=CoverageData() if coverage else None, started=time.time())
-    for results, data in _file_results(files, stop_first, jobs, coverage):
-        if summary.coverage is not None and data is not None:
-            summary.coverage.update(data)
-        for result in results:
-            summary.results.append(result)
-            report(result)
-        if stop_first and any(not r.passed for r in results):
-            break
+    each_file = _file_results(files, stop_first, jobs, coverage)
+    try:
+        for results, data in each_file:
+            if summary.coverage is not None and data is not None:
+                summary.coverage.update(data)
+            for result in results:
+                summary.results.append(result)
+                report(result)
+            if stop_first and any(not r.passed for r in results):
+                break
+    finally:
+        each_file.close()  # at once, also on SIGTERM or Ctrl-C: the workers are ended there
     ran = {(r.file, r.line, r.name) for r in summary.results}
     summary.not_run = [case for cases in files for case in cases if (case.file, case.line, case.name) not in ran]
     summary.seconds = time.perf_counter() - started
@@ -103,20 +109,65 @@ def run_file_cases(cases: Sequence[TestCase], stop_first: bool, coverage: bool
 
 
 def _file_results(files: Sequence[Sequence[TestCase]], stop_first: bool, jobs: int, coverage: bool
-                  ) -> Iterator[tuple[list[TestResult], CoverageData | None]]:
+                  ) -> Generator[tuple[list[TestResult], CoverageData | None], None, None]:
     if jobs <= 1 or len(files) < 2:
         for cases in files:
             yield run_file_cases(cases, stop_first, coverage)
         return
+    first = 0
+    while first < len(files):
+        pool = _pool(min(jobs, len(files) - first))
+        finished = False
+        try:
+            futures = [pool.submit(run_file_cases, cases, stop_first, coverage) for cases in files[first:]]
+            for future in futures:
+                try:
+                    result = future.result()
+                except BrokenProcessPool:  # a worker died (killed, out of memory): every pending file is lost
+                    break
+                first += 1
+                yield result
+            else:
+                finished = True
+        finally:
+            _end(pool, finished)
+        if not finished:  # the file whose result was lost, alone, to tell whether it is the one that dies
+            yield _alone(files[first], stop_first, coverage)
+            first += 1
+
+
+def _pool(workers: int) -> ProcessPoolExecutor:
     # spawn, not fork: the same on every platform (as ecnc lint -j)
-    pool = ProcessPoolExecutor(max_workers=min(jobs, len(files)), mp_context=get_context("spawn"))
+    return ProcessPoolExecutor(max_workers=workers, mp_context=get_context("spawn"))
+
+
+def _end(pool: ProcessPoolExecutor, finished: bool) -> None:
+    """Shut ``pool`` down; unless every file finished (SIGTERM, Ctrl-C, -x, a dead worker) its
+    workers are terminated first, so the command ends at once instead of when they are done."""
+    if not finished:
+        workers = list((getattr(pool, "_processes", None) or {}).values())
+        for process in workers:
+            process.terminate()
+        for process in workers:
+            process.join(1.0)  # ended by SIGTERM in milliseconds; then the pool's queues close cleanly
+    pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _alone(cases: Sequence[TestCase], stop_first: bool, coverage: bool
+           ) -> tuple[list[TestResult], CoverageData | None]:
+    """One file's tests on a worker of their own; when that worker dies too, each test fails saying so."""
+    pool = _pool(1)
+    finished = False
     try:
-        futures: list[Future[tuple[list[TestResult], CoverageData | None]]] = [
-            pool.submit(run_file_cases, cases, stop_first, coverage) for cases in files]
-        for future in futures:
-            yield future.result()
+        result = pool.submit(run_file_cases, cases, stop_first, coverage).result()
+        finished = True
+        return result
+    except BrokenProcessPool:
+        reason = ("the process running this test file ended abruptly (killed, or out of memory) before the "
+                  "test finished",)
+        return [TestResult(case.name, case.file, case.line, reason) for case in cases], None
     finally:
-        pool.shutdown(wait=True, cancel_futures=True)
+        _end(pool, finished)
 
 
 # --- -k EXPR ----------------------------------------------------------------------------------
@@ -127,6 +178,7 @@ def keyword_matcher(expression: str) -> Callable[[str], bool]:
     ``ValueError``."""
     tokens = re.findall(r"\(|\)|[^\s()]+", expression)
     position = 0
+    depth = 0  # "(" and "not" open at once: bounded, so a deep expression is an error, not a RecursionError
 
     def peek() -> str | None:
         return tokens[position].lower() if position < len(tokens) else None
@@ -153,12 +205,17 @@ def keyword_matcher(expression: str) -> Callable[[str], bool]:
         return lambda text: all(p(text) for p in parts)
 
     def single() -> Callable[[str], bool]:
+        nonlocal depth
         token = take()
-        if token.lower() == "not":
-            inner = single()
-            return lambda text: not inner(text)
-        if token == "(":
-            inner = either()
+        if token.lower() == "not" or token == "(":
+            depth += 1
+            if depth > MAX_BRACKET_DEPTH:
+                raise ValueError(f"-k: more than {MAX_BRACKET_DEPTH} parentheses and 'not' inside each other "
+                                 "(the nesting limit)")
+            inner = single() if token.lower() == "not" else either()
+            depth -= 1
+            if token.lower() == "not":
+                return lambda text: not inner(text)
             if take() != ")":
                 raise ValueError(f"-k {expression!r}: a '(' is not closed")
             return inner

@@ -8,10 +8,8 @@ test from keyword arguments instead of TOML (``from_mapping``).
 """
 from __future__ import annotations
 
-import math
 import os
 import re
-import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -20,10 +18,7 @@ from typing import Any
 from edingcnc_lang.errors import EXIT_SYNTAX, EcncError, Location
 from edingcnc_lang.host import DialogAnswer
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10 has the same parser as a package
-    import tomli as tomllib
+from edingcnc_lang.syntax import toml_input
 
 AXES = "xyzabc"
 EQUAL_TOLERANCE = 1e-6  # a bare number in expect: equal within this
@@ -33,7 +28,8 @@ TEST_KEYS = frozenset({"name", "job", "job_file", "ini", "macro", "user_macro", 
                        "simulation", "max_steps", "expect", "forbid"})
 EXPECT_KEYS = frozenset({"vars", "position", "messages", "error"})
 FORBID_KEYS = frozenset({"rapid_below_z", "outside", "feed_with_spindle_off"})
-MERGED_TABLES = ("vars", "expect", "forbid")  # [defaults] and a test's table are merged key by key
+MERGED_TABLES = ("vars", "expect", "forbid")
+MAX_COUNT = 2**63 - 1  # max_steps: far past any run, and a machine integer wherever it is counted
 
 
 class TestFileError(EcncError):
@@ -124,33 +120,18 @@ def load_file(path: str | os.PathLike[str]) -> list[TestCase]:
     """Every test of one file; a file that does not load raises ``TestFileError``."""
     name = os.fspath(path)
     try:
-        text = Path(path).read_bytes().decode("utf-8-sig")  # an editor's BOM is no mistake
+        text = toml_input.decode(Path(path).read_bytes())
+        data = toml_input.parse(text)
     except OSError as err:
         raise TestFileError(f"cannot read the test file: {err.strerror or err}", Location(name)) from None
-    except UnicodeDecodeError as err:
-        raise TestFileError(f"a TOML file must be UTF-8 ({err.reason} at byte {err.start})", Location(name)) from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        message, line = _toml_error(str(err), text)
-        raise TestFileError(message, Location(name, line)) from None
+    except toml_input.TomlProblem as err:
+        raise TestFileError(err.message, Location(name, err.line)) from None
     return _Reader(name, text).tests(data)
 
 
 def from_mapping(keys: Mapping[str, Any], folder: Path, name: str = "<python>") -> TestCase:
     """A test from keyword arguments (the pytest fixture), checked as a ``[[test]]`` table is."""
     return _Reader(name, "", folder).test({"name": "python", **keys}, {}, 0)
-
-
-def _toml_error(message: str, text: str) -> tuple[str, int]:
-    """tomllib's message without its ``(at line L, column C)``, and that line (the last one at its end)."""
-    found = re.search(r"\s*\(at line (\d+), column \d+\)$", message)
-    if found:
-        return message[:found.start()], int(found[1])
-    found = re.search(r"\s*\(at end of document\)$", message)
-    if found:
-        return message[:found.start()] + " at the end of the file", max(1, text.count("\n") + (not text.endswith("\n")))
-    return message, 0
 
 
 class _Reader:
@@ -293,10 +274,11 @@ class _Reader:
             raise self.error(f"{what} must be a table such as {{ \"4520\" = 2 }}", self.line_of(what.split(".")[-1]))
         result = {}
         for key, item in table.items():
-            number = key.strip().lstrip("#")
-            if not number.isdigit() or not 1 <= int(number) <= 5999:
-                raise self.error(f"{what}: {key!r} is not a parameter number (1..5999)", self.line_of(key))
-            result[int(number)] = value(item, f"{what} #{number}")
+            number = toml_input.whole_number(key.strip().lstrip("#"))  # ASCII digits: "²" and "٥٠٠٨" are not
+            if number is None or not 1 <= number <= 5999:
+                raise self.error(f"{what}: {key!r} is not a parameter number (1..5999)",
+                                 self.line_of(key))
+            result[number] = value(item, f"{what} #{number}")
         if what == "vars":
             from edingcnc_lang.machine.tables import is_read_only
 
@@ -318,9 +300,11 @@ class _Reader:
         return Approx(self.number(item, what))
 
     def number(self, item: Any, what: str) -> float:
-        if isinstance(item, bool) or not isinstance(item, (int, float)) or not math.isfinite(item):
-            raise self.error(f"{what}: {item!r} is not a number", self.line_of(what.split()[0].split(".")[-1]))
-        return float(item)
+        value = toml_input.number(item)  # a 400-digit integer is no double: an error, not OverflowError
+        if value is None:
+            raise self.error(f"{what}: {item!r} is not a number",
+                             self.line_of(what.split()[0].split(".")[-1]))
+        return value
 
     def string(self, table: Mapping[str, Any], key: str) -> str:
         value = table[key]
@@ -344,8 +328,8 @@ class _Reader:
 
     def count(self, table: Mapping[str, Any], key: str) -> int | None:
         value = table.get(key)
-        if value is not None and (isinstance(value, bool) or not isinstance(value, int) or value < 1):
-            raise self.error(f"{key} must be a whole number of at least 1", self.line_of(key))
+        if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_COUNT):
+            raise self.error(f"{key} must be a whole number from 1 to {MAX_COUNT}", self.line_of(key))
         return value
 
     def table(self, item: Any, what: str, known: frozenset[str]) -> dict[str, Any]:

@@ -19,6 +19,7 @@ from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
 from edingcnc_lang.picture_formats import picture_format
+from edingcnc_lang.outputs import save_figure
 
 SLICES = ((0, 1, 2), (0, 2, 1), (1, 2, 0))  # (horizontal axis, vertical axis, the axis held at its middle)
 # reached, out of reach, raised, NaN, beyond the ini's joint limits (by Status)
@@ -78,6 +79,6 @@ def plot_envelope(kins: Kinematics, space: Workspace, output: Path, label: str, 
     fig.legend(legend, STATUS_LABELS, loc="outside upper right", ncols=len(STATUS_LABELS))
     fig.suptitle(f"{label}: workspace from {space.source}", x=0.01, ha="left")
     output = Path(output)
-    fig.savefig(output, dpi=80, format=fmt)
+    save_figure(fig, output, fmt, 80)
     plt.close(fig)
     return output

@@ -69,7 +69,10 @@ def profiles(length: np.ndarray, vmax: np.ndarray, accel: np.ndarray, node2: np.
         t_decel = np.where(finite_accel, (peak - v1) / accel, 0.0)
         ramps = np.where(finite_accel, (2.0 * peak2 - v0_2 - v1_2) / (2.0 * accel), 0.0)
         cruise = np.maximum(length - ramps, 0.0)
-        t_cruise = np.where(peak > 0.0, cruise / peak, 0.0)
+        # a feed below about 1e-161 mm/min squares to 0: the move crawls at that feed all the way
+        # (it took 0 s), and a time past the doubles is the largest one
+        crawl = np.minimum(length / vmax, np.finfo(float).max)
+        t_cruise = np.where(peak > 0.0, cruise / peak, np.where(vmax > 0.0, crawl, 0.0))
     moving = length > 0.0
     zero = np.zeros_like(length)
     return Profiles(length, v0, v1, peak, accel, np.where(moving, t_accel, zero),
