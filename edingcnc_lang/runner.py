@@ -17,6 +17,7 @@ from typing import Any
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Event, Move, Pose
+from edingcnc_lang.events import MessageEvent
 from edingcnc_lang.config.machine_config import MachineConfig, load_config, save_variables
 from edingcnc_lang.errors import EcncError, Interrupted, Location, MachineError
 from edingcnc_lang.host import Host
@@ -58,7 +59,7 @@ class RunResult:
     machine: Pose
     joints: Pose
     variables: dict[int, float]
-    messages: list[Event]
+    messages: list[MessageEvent]
     kinematics: dict[str, Any]
     tool: int
     moves: int
@@ -81,7 +82,7 @@ class RunResult:
             "machine": dict(zip(axes, self.machine)),
             "joints": dict(zip(axes, self.joints)),
             "variables": {str(k): v for k, v in self.variables.items()},
-            "messages": [{"kind": e.kind, "text": e.data.get("text", ""), "file": e.path, "line": e.line}
+            "messages": [{"kind": e.kind, "text": e.text, "file": e.path, "line": e.line}
                          for e in self.messages],
             "kinematics": self.kinematics,
             "tool": self.tool,

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang.canon import PLANES, Event, Move, Pose
+from edingcnc_lang.events import CoolantEvent, DwellEvent, SpindleEvent, SpindleSpeedEvent, ToolChangeEvent
 from edingcnc_lang.motion.planner.estimate import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 
@@ -101,20 +102,20 @@ class Recorder:
 
     def event(self, event: Event) -> None:
         value: float
-        if event.kind == "tool_change":
-            self.tool = int(event.data.get("tool", self.tool))
+        if isinstance(event, ToolChangeEvent):
+            self.tool = event.tool
             value = self.tool
-        elif event.kind == "spindle_speed":
-            self.rpm = float(event.data.get("rpm", self.rpm))
+        elif isinstance(event, SpindleSpeedEvent):
+            self.rpm = event.rpm
             return
-        elif event.kind == "spindle":
-            value = float(event.data.get("m", 5))
+        elif isinstance(event, SpindleEvent):
+            value = float(event.m)
             self.turning = value != 5.0
-            self.rpm = float(event.data.get("rpm", self.rpm)) or self.rpm
-        elif event.kind == "coolant":
-            value = float(event.data.get("m", 9))
-        elif event.kind == "dwell":
-            value = float(event.data.get("seconds", 0.0))
+            self.rpm = event.rpm or self.rpm
+        elif isinstance(event, CoolantEvent):
+            value = float(event.m)
+        elif isinstance(event, DwellEvent):
+            value = event.seconds
         else:
             return
         line = self._line(event.path, event.line, 0)

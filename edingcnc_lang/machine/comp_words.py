@@ -10,7 +10,7 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import CutterCompEvent
 from edingcnc_lang.machine.state import (
     G_40,
     G_41,
@@ -37,7 +37,7 @@ class CompensationSteps(MachineState):
                           span: n.Span) -> None:
         if code == G_40:
             if self.modal["cutter_comp"] != G_40:
-                self.canon.event(Event("cutter_comp", self.path, self.line, {"side": "off"}))
+                self.canon.event(CutterCompEvent(self.path, self.line, "off"))
             self.modal["cutter_comp"] = code
             return
         if self.modal["cutter_comp"] != G_40:
@@ -46,9 +46,7 @@ class CompensationSteps(MachineState):
         radius = self._comp_radius(code, words, span)
         self.modal["cutter_comp"] = code
         side = "left" if code in (G_41, G_41_1) else "right"
-        self.canon.event(Event("cutter_comp", self.path, self.line,
-                               {"side": side, "radius": radius, "plane": PLANE_OF[self.modal["plane"]],
-                                "inch": self.inch}))
+        self.canon.event(CutterCompEvent(self.path, self.line, side, radius, PLANE_OF[self.modal["plane"]], self.inch))
 
     def _comp_radius(self, code: int, words: Mapping[str, float], span: n.Span) -> float:
         """The tool radius in mm; negative swaps the side (a tool smaller than the nominal one)."""

@@ -9,7 +9,7 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import ScalingEvent
 from edingcnc_lang.machine.state import G_51, MachineState, format_value, StepTable
 
 
@@ -36,15 +36,14 @@ class Scaling(MachineState):
             self.scaling_center = (work[0] + offset[0], work[1] + offset[1])
         for index, value in enumerate((1.0, work[0], work[1], 0.0, *self.scaling)):
             self.params.set(t.SCALING_ACTIVE + index, value)
-        self.canon.event(Event("scaling", self.path, self.line,
-                               {"on": True, "factors": self.scaling, "center": self.scaling_center}))
+        self.canon.event(ScalingEvent(self.path, self.line, True, self.scaling, self.scaling_center))
 
     def scaling_off(self) -> None:
         if self.scaling is not None:
             with self.machine_kept():
                 self.scaling = None
             self.params.set(t.SCALING_ACTIVE, 0.0)
-            self.canon.event(Event("scaling", self.path, self.line, {"on": False}))
+            self.canon.event(ScalingEvent(self.path, self.line, False))
 
 
 # The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).

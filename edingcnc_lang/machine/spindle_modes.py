@@ -10,7 +10,7 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import SpindleEvent, SpindleSpeedEvent
 from edingcnc_lang.machine.spindle import FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits
 from edingcnc_lang.machine.state import G_96, MachineState, format_value, StepTable
 
@@ -52,12 +52,12 @@ class SpindleModes(MachineState):
                 raise self.fail(str(err), span) from None
             per_unit = FT_PER_MIN if self.inch else M_PER_MIN
             self.css_setting = (self.speed * per_unit, max_rpm, min_rpm)
-            data = {"mode": "css", "speed": self.speed, "max_rpm": max_rpm}
+            mode, top = "css", max_rpm
         else:
             self.rpm = clamp_rpm(self.speed, config.spindle_max_rpm, config.spindle_min_rpm)
-            data = {"mode": "rpm", "speed": self.speed, "max_rpm": config.spindle_max_rpm}
+            mode, top = "rpm", config.spindle_max_rpm
         rpm = self.rpm_at(self.pos[0])
-        self.canon.event(Event("spindle_speed", self.path, self.line, {**data, "rpm": rpm}))
+        self.canon.event(SpindleSpeedEvent(self.path, self.line, mode, self.speed, top, rpm))
 
     def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._spindle_turn(code // 10)
@@ -71,8 +71,7 @@ class SpindleModes(MachineState):
         on = self.spindle != 5
         rpm = self.rpm_at(self.pos[0])
         self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
-        self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed,
-                                                                 "rpm": rpm if on else 0.0}))
+        self.canon.event(SpindleEvent(self.path, self.line, self.spindle, self.speed, rpm if on else 0.0))
 
     def spindle_state(self) -> dict[str, object]:
         """The spindle at the end of a run, for ``--json``: direction, mode and speed."""

@@ -12,11 +12,12 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from contextlib import AbstractContextManager
-from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
+from typing import TYPE_CHECKING, Any, ClassVar, Literal, NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Event, Move, Pose
+from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Move, Pose
+from edingcnc_lang.events import MessageEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
@@ -98,6 +99,9 @@ DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_4
 StatementTable = dict[type, Callable[..., None]]      # statement type -> (machine, stmt)
 StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
 CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
+MessageKind = Literal["msg", "warn", "error"]       # what ``message`` says (events.MsgEvent, WarnEvent, ErrorEvent)
+
+
 class Turn(NamedTuple):
     """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
 
@@ -234,7 +238,7 @@ class MachineState:
         # the runner sets it, an MDI session has no loaded job.
         self.job_tools: Callable[[], Sequence[int]] = tuple
         self.ended_by = "end of file"
-        self.messages: list[Event] = []
+        self.messages: list[MessageEvent] = []
         self.path = "<string>"
         self.line = 0
         self._offset: list[float] | None = None
@@ -414,7 +418,7 @@ class MachineState:
         def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None: ...  # bulk.py
         def moves_held(self) -> AbstractContextManager[None]: ...                            # bulk.py
         def flush_pending(self) -> None: ...                                                 # bulk.py
-        def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None: ...  # messages.py
+        def message(self, kind: MessageKind, text: str) -> None: ...  # messages.py
         def offset(self) -> list[float]: ...                                                 # offsets.py
         def _live_param(self, index: int) -> float: ...                                      # offsets.py
         def _offsets_changed(self) -> None: ...                                              # offsets.py

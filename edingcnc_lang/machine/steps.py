@@ -5,7 +5,8 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import (CoolantEvent, DwellEvent, EndEvent, MCodeEvent, OutputEvent, OverrideEvent,
+                                  PathControlEvent, PauseEvent, ToolChangeEvent)
 from edingcnc_lang.host import checked_level
 from edingcnc_lang.machine.offsets import NON_MODAL
 from edingcnc_lang.machine.state import (
@@ -65,12 +66,11 @@ class LineSteps(MachineState):
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self.coolant = set() if code == 90 else self.coolant | {code // 10}
-        self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
+        self.canon.event(CoolantEvent(self.path, self.line, code // 10))
 
     def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         """M48..M51; the planner follows them (``M50 P0`` switches the feed override off)."""
-        data = {"m": code // 10, **({"p": words["P"]} if "P" in words else {})}
-        self.canon.event(Event("override", self.path, self.line, data))
+        self.canon.event(OverrideEvent(self.path, self.line, code // 10, words.get("P")))
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
@@ -83,14 +83,15 @@ class LineSteps(MachineState):
         tolerance = words["P"] * self.scale if "P" in words else self.config.g64_p
         if tolerance < 0:
             raise self.fail("G64 P: the path tolerance must be 0 or more", span)
-        data: dict[str, object] = {"mode": t.code_name("G", code), "p": tolerance}
+        extra: dict[str, float] = {}
         for letter in "QRSDF":
             if letter in words:
                 value = words[letter] * (self.scale if letter in t.G64_LENGTHS else 1.0)
                 if value < 0:
                     raise self.fail(f"G64 {letter}{format_value(words[letter])}: must be 0 or more", span)
-                data[letter.lower()] = value
-        self.canon.event(Event("path_control", self.path, self.line, data))
+                extra[letter.lower()] = value
+        self.canon.event(PathControlEvent(self.path, self.line, t.code_name("G", code), tolerance, extra.get("q"),
+                                          extra.get("r"), extra.get("s"), extra.get("d"), extra.get("f")))
 
     def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._io(code // 10, words, span)
@@ -101,8 +102,7 @@ class LineSteps(MachineState):
             self.clamped = m == 26
         elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
             self._select_spindle(m)
-        data = {"m": m, **({"p": words["P"]} if "P" in words else {})}  # M100 P: the axis resolution factor
-        self.canon.event(Event("m_code", self.path, self.line, data))
+        self.canon.event(MCodeEvent(self.path, self.line, m, words.get("P")))  # M100 P: the axis resolution factor
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         if code == G_4:
@@ -148,7 +148,7 @@ class LineSteps(MachineState):
         tool = self.selected_tool
         self.params.set(t.TOOL_RADIUS, self.params.read(t.TOOL_DIAMETER + tool) / 2.0 if tool else 0.0)
         self.params.set(t.TOOL_Z_OFFSET, self.params.read(t.TOOL_LENGTH + tool) if tool else 0.0)
-        self.canon.event(Event("tool_change", self.path, self.line, {"tool": tool, "previous": old}))
+        self.canon.event(ToolChangeEvent(self.path, self.line, tool, old))
 
     def _io(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         port = int(words.get("P", words.get("E", 0)))
@@ -157,8 +157,7 @@ class LineSteps(MachineState):
             return
         if code in (54, 55):
             self.outputs[port] = code == 54
-            self.canon.event(Event("output", self.path, self.line, {"port": port, "on": code == 54,
-                                                                     "pwm": words.get("Q")}))
+            self.canon.event(OutputEvent(self.path, self.line, port, code == 54, words.get("Q")))
         elif code == 56:
             try:
                 level = checked_level(self.host.read_input(port)) if self.host.read_input else 0.0
@@ -180,13 +179,13 @@ class LineSteps(MachineState):
         if not 0.0 <= duty <= 1000.0:
             raise self.fail(f"M54 E{port} Q{format_value(duty)}: the PWM value Q must lie in 0..1000", span)
         self.pwm[port] = duty
-        self.canon.event(Event("output", self.path, self.line, {"port": port, "on": duty > 0, "pwm": duty}))
+        self.canon.event(OutputEvent(self.path, self.line, port, duty > 0, duty))
 
     def _dwell(self, words: Mapping[str, float], span: n.Span) -> None:
         if "P" not in words or words["P"] < 0:
             raise self.fail("G4 needs a dwell time P (seconds) of 0 or more", span)
         seconds = words["P"] / 1000.0 if self.config.g4_in_milliseconds else words["P"]
-        self.canon.event(Event("dwell", self.path, self.line, {"seconds": seconds}))
+        self.canon.event(DwellEvent(self.path, self.line, seconds))
 
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
@@ -219,14 +218,14 @@ class LineSteps(MachineState):
 
     def _stop(self, code: int, span: n.Span) -> None:
         if code in PAUSE_CODES:
-            self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
+            self.canon.event(PauseEvent(self.path, self.line, code // 10))
             return
         # Manual 3.7.1: G17 (G18 on a lathe), G90, G94, M48, G40, M5, G1, M9; the coordinate system is
         # kept; M60 keeps the spindle and the coolant on (nesting).  M2 ends as M30 does.
         for group, reset in (("plane", G_18 if self.config.lathe else G_17), ("distance", G_90), ("feed_mode", G_94),
                              ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
-        self.canon.event(Event("override", self.path, self.line, {"m": 48}))
+        self.canon.event(OverrideEvent(self.path, self.line, 48))
         if code != M_60:
             self.spindle = 5
             self.coolant = set()
@@ -234,7 +233,7 @@ class LineSteps(MachineState):
         self.scaling_off()
         self._heaters_off()
         self.ended_by = f"M{code // 10}"
-        self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
+        self.canon.event(EndEvent(self.path, self.line, code // 10))
         raise ProgramEnd()
 
 

@@ -350,7 +350,7 @@ class EventsWriter:
 
     def event(self, event: Event) -> None:
         self._write({"type": "event", "file": event.path, "line": event.line, "kind": event.kind,
-                     "data": dict(event.data)})
+                     "data": event.data})
 
     def close(self) -> None:
         self._file.close()

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 from edingcnc_lang import speedups
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Batch, Event, Move, Pose
+from edingcnc_lang.events import DwellEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location, MachineError, PluginError
 from edingcnc_lang.kinematics import abi
@@ -206,8 +207,8 @@ class MotionStage:
         return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}  # type: ignore[arg-type]
 
     def event(self, event: Event) -> None:
-        if event.kind == "dwell":
-            self.time += float(event.data.get("seconds", 0.0))
+        if isinstance(event, DwellEvent):
+            self.time += event.seconds
         self.planner.event(event)
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang.canon import Arc, Event, Move, Pose
+from edingcnc_lang.events import ToolChangeEvent
 from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
@@ -224,8 +225,8 @@ class Recorder:
         self.poses.extend(joints)
 
     def event(self, event: Event) -> None:
-        if event.kind == "tool_change":
-            self.tool = int(event.data.get("tool", self.tool))
+        if isinstance(event, ToolChangeEvent):
+            self.tool = event.tool
 
     def toolpath(self, job: str, config: MachineConfig, result: RunResult | None,
                  error: EcncError | None) -> Toolpath:

@@ -21,6 +21,7 @@ import numpy as np
 
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.sampling import arc_points
@@ -127,11 +128,11 @@ class Simulator:
         return [self.known[n][1] for n in sorted(self.used) if self.known[n][1]]
 
     def on_event(self, event: Event) -> None:
-        if event.kind == "spindle":
-            self.spindle_on = event.data.get("m") in (3, 4)
-        elif event.kind == "tool_change":
+        if isinstance(event, SpindleEvent):
+            self.spindle_on = event.m in (3, 4)
+        elif isinstance(event, ToolChangeEvent):
             self.flush()
-            self.tool = self._tool(int(event.data.get("tool", 0)))
+            self.tool = self._tool(event.tool)
 
     def on_move(self, move: Move, _joints: Pose) -> None:
         index = len(self.lines)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import OverrideEvent
 from edingcnc_lang.errors import EcncError
 
 MAX_FEED_OVERRIDE = 1000.0  # percent; more is almost certainly a typo
@@ -42,10 +42,10 @@ class Overrides:
     def rapid_factor(self) -> float:
         return self.rapid_percent / 100.0
 
-    def apply(self, event: Event) -> None:
-        """Follow an ``override`` event (M48..M51; ``p`` is the P word when the line had one)."""
-        code = event.data.get("m")
-        enable = float(event.data.get("p", 1.0)) != 0.0
+    def apply(self, event: OverrideEvent) -> None:
+        """Follow an override event (M48..M51; ``p`` is the P word when the line had one)."""
+        code = event.m
+        enable = event.p is None or event.p != 0.0
         if code == 48:
             self.feed_enabled = self.spindle_enabled = True
         elif code == 49:

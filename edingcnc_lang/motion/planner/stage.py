@@ -16,6 +16,8 @@ from itertools import chain
 from typing import TYPE_CHECKING, Any, Protocol
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.events import (DialogEvent, DwellEvent, EndEvent, ExecEvent, OverrideEvent, PathControlEvent,
+                                  PauseEvent, SpindleEvent, ToolChangeEvent)
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.motion.planner.estimate import Estimate, Timing
 from edingcnc_lang.motion.planner.limits_report import LimitsReport
@@ -37,7 +39,7 @@ WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
 # to reach its speed, an external program or an operator's answer.
-STOPPING_EVENTS = frozenset({"dwell", "tool_change", "pause", "end", "spindle", "exec", "dialog"})
+STOPPING_EVENTS = (DwellEvent, ToolChangeEvent, PauseEvent, EndEvent, SpindleEvent, ExecEvent, DialogEvent)
 
 
 class TimedSink(Protocol):
@@ -142,12 +144,12 @@ class Planner:
         return 1.0 if sync > 0.0 else self.overrides.feed_factor
 
     def event(self, event: Event) -> None:
-        if event.kind == "override":
+        if isinstance(event, OverrideEvent):
             self.overrides.apply(event)
-        elif event.kind == "path_control":
-            self.exact_stop = event.data.get("mode") != "G64"
-            self.tolerance = float(event.data.get("p", self.config.g64_p))
-        if event.kind in STOPPING_EVENTS:
+        elif isinstance(event, PathControlEvent):
+            self.exact_stop = event.mode != "G64"
+            self.tolerance = event.p
+        if isinstance(event, STOPPING_EVENTS):
             self.flush()
             self._emit_event(event)
             return
@@ -330,11 +332,10 @@ class Planner:
             queue.popleft()
 
     def _emit_event(self, event: Event) -> None:
-        if event.kind == "dwell":
-            seconds = float(event.data.get("seconds", 0.0))
-            self.estimate.add_dwell(self.tool, seconds)
-            self.time += seconds
-        elif event.kind == "tool_change":
-            self.tool = int(event.data.get("tool", self.tool))
+        if isinstance(event, DwellEvent):
+            self.estimate.add_dwell(self.tool, event.seconds)
+            self.time += event.seconds
+        elif isinstance(event, ToolChangeEvent):
+            self.tool = event.tool
         for sink in self.sinks:
             sink.event(event)

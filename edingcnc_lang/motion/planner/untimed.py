@@ -14,6 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.events import OverrideEvent
 from edingcnc_lang.motion.planner.overrides import Overrides
 
 if TYPE_CHECKING:
@@ -44,7 +45,7 @@ class Untimed:
             self.on_move(move, move.end)
 
     def event(self, event: Event) -> None:
-        if event.kind == "override":
+        if isinstance(event, OverrideEvent):
             self.overrides.apply(event)
         if self.on_event:
             self.on_event(event)
