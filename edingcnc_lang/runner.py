@@ -40,7 +40,8 @@ from edingcnc_lang.motion.sinks import (
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
 from edingcnc_lang.syntax.parser import StatementReader, check_file, parse_file, parse_text, read_statements
-from edingcnc_lang.motion.planner.estimate import Estimate, Timing
+from edingcnc_lang.motion.planner.estimate import Estimate
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.planner.overrides import Overrides
 from edingcnc_lang.motion.planner.stage import Planner, TimedSink
 from edingcnc_lang.motion.planner.untimed import Untimed

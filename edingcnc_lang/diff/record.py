@@ -16,7 +16,7 @@ import numpy as np
 
 from edingcnc_lang.canon import PLANES, Event, Move, Pose
 from edingcnc_lang.events import CoolantEvent, DwellEvent, SpindleEvent, SpindleSpeedEvent, ToolChangeEvent
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")

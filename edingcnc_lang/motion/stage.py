@@ -37,7 +37,7 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
-from edingcnc_lang.motion.reach import arcs_beyond, beyond, table_beyond
+from edingcnc_lang.motion.reach import arcs_beyond, beyond, column_bounds, table_beyond
 
 _T = TypeVar("_T")
 
@@ -51,6 +51,7 @@ DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity before it is an error
 SWITCH_TOLERANCE = 1e-6     # a joint that would have to jump further than this at a switch is an error
 CRAWL_ACCELERATION_SHARE = 1e-3  # of the joints' acceleration: where the path leaves them none
 PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the fastest allowed speed
+_COLUMN_BOUNDS = speedups.compiled("column_bounds") or column_bounds  # the bounds of a batch, on the core that runs
 
 
 class PlannerStage(Protocol):
@@ -171,7 +172,7 @@ class MotionStage:
         lower, upper = self._lower, self._upper
         if not batch.lines:
             return
-        least, most = speedups.column_bounds(batch.ends)
+        least, most = _COLUMN_BOUNDS(batch.ends)
         if any(map(operator.lt, least, lower)) or any(map(operator.gt, most, upper)):
             self._first_limit_violation(batch)
         arcs = None

@@ -23,7 +23,7 @@ from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
 from edingcnc_lang.kinematics.trajectory import arc_geometry
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.syntax.source import iter_file_lines
 

@@ -13,11 +13,11 @@ descending over that list: no character-level scanning in Python.
 """
 from __future__ import annotations
 
-import os
 import re
 from collections.abc import Callable
 from typing import TypeVar
 
+from edingcnc_lang import speedups
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
@@ -92,15 +92,11 @@ _N = TypeVar("_N")
 
 def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
     """The compiled tokenizer, block, condition, statement and lines readers and the block assembler
-    (``_lexer.c``), unless they are not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
-    from edingcnc_lang.speedups import PURE_ENV
+    (``_lexer.c``), when ``speedups`` loaded it (built, and the Python core not asked for)."""
     from edingcnc_lang.syntax import blocks
 
-    if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None, None, None, None, None
-    try:
-        from edingcnc_lang import _lexer  # type: ignore[attr-defined]
-    except ImportError:
+    _lexer = speedups.LEXER
+    if _lexer is None:
         return None, None, None, None, None, None
     _lexer.setup(n, blocks, GIVE_UP, _KEYWORDS - _HANDLED)
     return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement, _lexer.statements, _lexer.assemble
@@ -120,9 +116,7 @@ def _construct(cls: type[_N], values: tuple[object, ...]) -> _N:
 # call of the dataclass's __init__ (the reader makes an If, While or Sub node at every end line).
 new_node: Callable[[type[_N], tuple[object, ...]], _N] = _construct
 if COMPILED_READER:
-    from edingcnc_lang import _lexer  # type: ignore[attr-defined]
-
-    new_node = _lexer.new  # type: ignore[attr-defined]
+    new_node = speedups.LEXER.new
 
 
 def _tokens(text: str, pos: int) -> list[Token]:

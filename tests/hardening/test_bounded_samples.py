@@ -19,7 +19,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.machine.observe import Observer
 from edingcnc_lang.machine.state import MachineState
 from edingcnc_lang.motion import samples_file
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.sinks import SAMPLES_COLUMNS, SamplesWriter
 from edingcnc_lang.motion.stage import Samples
 from edingcnc_lang.syntax import nodes as n

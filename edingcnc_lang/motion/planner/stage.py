@@ -19,7 +19,8 @@ from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.events import (DialogEvent, DwellEvent, EndEvent, ExecEvent, OverrideEvent, PathControlEvent,
                                   PauseEvent, SpindleEvent, ToolChangeEvent)
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.motion.planner.estimate import Estimate, Timing
+from edingcnc_lang.motion.planner.estimate import Estimate
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.planner.limits_report import LimitsReport
 from edingcnc_lang.motion.planner.overrides import Overrides
 from edingcnc_lang.motion.planner.runs import Runs
