@@ -19,8 +19,8 @@ from typing import TypeVar
 
 from edingcnc_lang import speedups
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
-from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
+from edingcnc_lang.syntax.plain_words import FAST_NUMBER
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
 
 

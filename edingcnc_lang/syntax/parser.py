@@ -21,7 +21,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
 from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
-from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_BLOCK_DEPTH, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
@@ -81,7 +81,7 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
 # the check pass's scan on the core that runs (speedups.py chooses)
 _non_plain_lines: Callable[[list[str]], list[int]] = non_plain_lines
 if speedups.SPEEDUPS is not None:  # the C reads its limits from the one table (input_limits.py)
-    _non_plain_lines = partial(speedups.compiled("non_plain_lines"), MAX_LINE_LENGTH, MAX_NUMBER_DIGITS)
+    _non_plain_lines = partial(speedups.compiled("non_plain_lines"), MAX_LINE_LENGTH, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
 
 
 # --------------------------------------------------------------------------- structure
