@@ -41,8 +41,7 @@ _TOKEN = re.compile(rf'[ \t]+|;.*|{FAST_NUMBER}|"[^"\n]*"|\*\*|==|<>|!=|<=|>=|[-
 _KIND = {**dict.fromkeys("0123456789.", "n"), '"': "s", **dict.fromkeys(" \t;", " "),
          **dict.fromkeys("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz", "i")}
 Token = tuple[str, str, int, int]  # kind ("n", "s", "i" or the operator), text, column, end column
-_FUNCTIONS = frozenset({"ABS", "ACOS", "ASIN", "COS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN", "SQRT", "TAN",
-                        "ATAN"})
+_FUNCTIONS = frozenset(n.FUNCTION_NAMES)
 # Binding levels, loosest first: comparisons, then + - OR XOR AND, then * / MOD, then **.
 _LEVEL = {op: 1 for op in ("==", "<>", "!=", "<=", ">=", "<", ">", "EQ", "NE", "GT", "GE", "LT", "LE")}
 _LEVEL.update({op: 2 for op in ("+", "-", "OR", "XOR", "AND")})
