@@ -30,9 +30,6 @@ def _cycles() -> ModuleType:
 class CannedCycles(MachineState):
     """Every hole and peck counts against the step budget."""
 
-    cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
-    cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
-
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         """A cycle line's holes; their straight moves go to the canon as one batch where the bulk path's would
         (``batchable``), handed on before any other move or event of the cycle and before an error it meets."""

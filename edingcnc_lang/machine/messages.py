@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import math
 from datetime import datetime
+from pathlib import Path
 from typing import TextIO
 
 from edingcnc_lang.syntax import nodes as n
@@ -101,6 +102,12 @@ class Messages(MachineState):
         with self._open_log(span) as handle:
             handle.write(line)
         self.tell(LogEvent(self.path, self.line, text, str(self._log_file)))
+
+    def move_files(self, scratch: Path, folder: Path) -> None:
+        """The run's files go to ``folder`` from here on; a log file opened under ``scratch`` moves with them."""
+        self.log_dir = folder
+        if self._log_file is not None and scratch in self._log_file.parents:
+            self._log_file = folder / self._log_file.relative_to(scratch)
 
     def _open_log(self, span: n.Span, truncate: bool = False) -> TextIO:
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""

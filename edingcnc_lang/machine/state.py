@@ -18,13 +18,14 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Move, Pose
 from edingcnc_lang.events import MessageEvent
+from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, mean_rpm_points
-from edingcnc_lang.machine.observe import Observer
+from edingcnc_lang.machine.observe import MachineView, Observer
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.bulk import PendingMoves
@@ -188,6 +189,7 @@ class MachineState:
                  simulation: bool = True, block_delete: bool = False, observer: Observer | None = None) -> None:
         self.canon = canon
         self.observer = observer
+        self.view = MachineView(self)  # what the observer is shown
         self.config = config or MachineConfig.default()
         self.host = host or Host()
         self.max_steps = max_steps
@@ -225,6 +227,9 @@ class MachineState:
         self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
+        self.cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
+        self.cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
+        self.zhc: ZhcTable | None = None         # the Z height compensation table (ZHCINIT, ZHCL)
         self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
         self.tanknife = False
@@ -419,6 +424,7 @@ class MachineState:
         def moves_held(self) -> AbstractContextManager[None]: ...                            # bulk.py
         def flush_pending(self) -> None: ...                                                 # bulk.py
         def message(self, kind: MessageKind, text: str) -> None: ...  # messages.py
+        def move_files(self, scratch: Path, folder: Path) -> None: ...  # messages.py
         def offset(self) -> list[float]: ...                                                 # offsets.py
         def _live_param(self, index: int) -> float: ...                                      # offsets.py
         def _offsets_changed(self) -> None: ...                                              # offsets.py

@@ -22,9 +22,7 @@ from edingcnc_lang.machine.state import CommandTable, MachineState
 
 
 class HeightComp(MachineState):
-    """The ZHC table of one machine and the commands that build, save and switch it."""
-
-    zhc: ZhcTable | None = None
+    """The ZHC table of one machine (``MachineState.zhc``) and the commands that build, save and switch it."""
 
     def _command_values(self, stmt: n.Command, count: int, usage: str) -> list[float]:
         """The ``count`` numeric arguments of a command (``ZHCINIT [#4104] 10 [#4101]``), evaluated

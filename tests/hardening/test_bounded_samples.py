@@ -16,8 +16,7 @@ import pytest
 from edingcnc_lang import RunOptions, run_string
 from edingcnc_lang.canon import Move
 from edingcnc_lang.errors import EcncError
-from edingcnc_lang.machine.observe import Observer
-from edingcnc_lang.machine.state import MachineState
+from edingcnc_lang.machine.observe import MachineView, Observer
 from edingcnc_lang.motion import samples_file
 from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.sinks import SAMPLES_COLUMNS, SamplesWriter
@@ -122,7 +121,7 @@ class _CtrlC(Observer):
     def __init__(self, line: int) -> None:
         self.line = line
 
-    def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
+    def statement(self, machine: MachineView, stmt: n.Stmt) -> None:
         if machine.line == self.line:
             raise KeyboardInterrupt
 
