@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from edingcnc_lang.diff.record import Samples
+from edingcnc_lang.diff.record import PathSamples
 
 BLOCK = 512          # points tried at once on the fast path
 WINDOW = 256         # segments searched around the cursor for a point off the fast path
@@ -74,7 +74,7 @@ def _to_arcs(a: np.ndarray, b: np.ndarray, p: np.ndarray, center: np.ndarray, no
 class _Walk:
     """The cursor over OLD's segments and the NEW points matched so far."""
 
-    def __init__(self, new: Samples, old: Samples, tolerance: float) -> None:
+    def __init__(self, new: PathSamples, old: PathSamples, tolerance: float) -> None:
         self.new, self.tolerance = new, tolerance
         pts = old.points if len(old.points) != 1 else np.vstack((old.points, old.points))
         self.a, self.b = pts[:-1], pts[1:]
@@ -156,7 +156,7 @@ class _Walk:
         return None
 
 
-def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
+def align(new: PathSamples, old: PathSamples, tolerance: float) -> Alignment:
     """Match every point of ``new`` to the segment of ``old`` it lies on (or is nearest to), in order."""
     count = len(new.points)
     # 32-bit: 12 bytes a point (distances far below the tolerance need no more digits)
@@ -205,7 +205,7 @@ def align(new: Samples, old: Samples, tolerance: float) -> Alignment:
     return Alignment(distance, segment, at)
 
 
-def matched_moves(alignment: Alignment, old: Samples) -> np.ndarray:
+def matched_moves(alignment: Alignment, old: PathSamples) -> np.ndarray:
     """The OLD move each point lies on (a point at a vertex counts with the move that ends there)."""
     seg = np.maximum(alignment.segment, 0)
     ending = (alignment.at <= 1e-9) & (seg > 0)

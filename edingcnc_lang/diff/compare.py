@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from edingcnc_lang.diff.align import CAPTURE, Alignment, align, matched_moves
-from edingcnc_lang.diff.record import RAPID_KINDS, Recording, Samples, sample
+from edingcnc_lang.diff.record import RAPID_KINDS, Recording, PathSamples, sample
 
 TOLERANCE = 0.001       # mm, the default of --tolerance
 LIMIT = 50              # changes kept per list (the rest are counted)
@@ -140,7 +140,7 @@ def _turns_rotary(rec: Recording) -> bool:
     return bool(len(rec)) and bool(np.ptp(np.vstack((rec.starts[:, 3:], rec.ends[:, 3:])), axis=0).max() > 1e-9)
 
 
-def _per_move(alignment: Alignment, mine: Samples, other: Samples, count: int) -> tuple[np.ndarray, np.ndarray]:
+def _per_move(alignment: Alignment, mine: PathSamples, other: PathSamples, count: int) -> tuple[np.ndarray, np.ndarray]:
     """Per move: the largest distance of its points from the other path, and the other's move its end lies on."""
     if not count:
         return np.zeros(0), np.zeros(0, dtype=np.int64)

@@ -142,7 +142,7 @@ def record(job: Path, options: RunOptions, name: str | None = None) -> Recording
 
 
 @dataclass
-class Samples:
+class PathSamples:
     """A run's path as one polyline whose pieces of arcs remember their circle: points, path length
     to each, the move each point ends, and for each segment that is a piece of an arc, its circle."""
 
@@ -155,7 +155,7 @@ class Samples:
     radii: np.ndarray    # (N,)
 
 
-def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples:
+def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> PathSamples:
     """The polyline of ``rec``: what the alignment compares, so two ways of writing the same path
     (an arc split in two, a line split in three) give points on the same curve.  Arcs are pieces of
     at most ``arc_step`` radians whose distances are measured to the circle, not to the chord.
@@ -168,7 +168,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     radii = np.zeros(count)
     centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
     if not count:
-        return Samples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
+        return PathSamples(np.zeros((0, dims)), np.zeros(0), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
                        centers, normals, radii)
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
@@ -211,7 +211,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     length[1:][arc_of >= 0] = 0.0  # segment k ends at point k + 1
     length += arc_length
     length[jump_at[jump_at > 0]] = 0.0  # a jump is no path
-    return Samples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
+    return PathSamples(points, np.cumsum(length, out=length), owner, arc_of, centers, normals, radii)
 
 
 def _slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

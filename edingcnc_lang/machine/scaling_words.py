@@ -13,7 +13,7 @@ from edingcnc_lang.events import ScalingEvent
 from edingcnc_lang.machine.state import G_51, MachineState, format_value, StepTable
 
 
-class Scaling(MachineState):
+class ScalingWords(MachineState):
     """G51 switches scaling on (or changes it), G50 and M2/M30 switch it off."""
 
     def _step_scaling(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -47,4 +47,4 @@ class Scaling(MachineState):
 
 
 # The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
-STEPS: StepTable = {"scaling": Scaling._step_scaling}
+STEPS: StepTable = {"scaling": ScalingWords._step_scaling}

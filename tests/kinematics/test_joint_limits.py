@@ -12,7 +12,7 @@ import numpy as np
 
 from edingcnc_lang.kinematics.workbench import CheckOptions, check_plugin
 from edingcnc_lang.kinematics.workbench.check import load_plugin, read_machine
-from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
+from edingcnc_lang.kinematics.workbench.calls import Status, call_each
 from tests.cli_runner import invoke
 
 SCARA = Path(__file__).resolve().parent / "scara"

@@ -30,4 +30,4 @@ def test_every_token_of_a_real_file(path: Path) -> None:
                 assert navigation.definition(model, name, number, token.start), (number + 1, token)
     assert navigation.document_symbols(model, name) or not file.subs
     for found in model.lint(name):
-        actions.fixes(actions.Finding(found.code, found.line - 1, max(found.col - 1, 0), found.message), file.lines)
+        actions.fixes(actions.ShownDiagnostic(found.code, found.line - 1, max(found.col - 1, 0), found.message), file.lines)
