@@ -309,5 +309,5 @@ class BulkPath(MachineState):
         return G_1 if kind == "linear" else G_0
 
 
-# The statements this part executes (machine.py builds the dispatch table from every part's).
+# The statements this part executes (interpreter.py builds the dispatch table from every part's).
 STATEMENTS: StatementTable = {n.PlainRun: BulkPath._exec_plain_run}

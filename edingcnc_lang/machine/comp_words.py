@@ -62,5 +62,5 @@ class CompensationSteps(MachineState):
         return self.params.read(t.TOOL_DIAMETER + int(tool)) / 2.0 if tool else 0.0
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"plane": CompensationSteps._step_plane, "cutter_comp": CompensationSteps._step_cutter_comp}

@@ -90,8 +90,8 @@ class Devices(MachineState):
         self.canon.event(ModbusEvent(self.path, self.line, stmt.args, words, values))
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"laser": Devices._step_laser, "thc": Devices._step_thc, "printer": Devices._step_printer}
 
-# Named commands of this part, by lower-case name (commands.py dispatches them).
+# Named commands of this part, by lower-case name (named_commands.py dispatches them).
 COMMANDS: CommandTable = {"modbus": Devices._modbus}

@@ -96,7 +96,7 @@ class ControlFlow(MachineState):
         raise self.fail(f"Sub {stmt.name} is defined inside a block; subs must be at the top level", stmt.span)
 
 
-# The statements this part executes (machine.py builds the dispatch table from every part's).
+# The statements this part executes (interpreter.py builds the dispatch table from every part's).
 STATEMENTS: StatementTable = {n.If: ControlFlow._exec_if, n.While: ControlFlow._exec_while,
                               n.GoSub: ControlFlow._exec_gosub, n.Sub: ControlFlow._exec_sub,
                               n.BadLine: ControlFlow._exec_bad_line}

@@ -121,6 +121,6 @@ class Messages(MachineState):
 # The messages ``message`` makes, by kind
 MESSAGES: dict[MessageKind, type[MessageEvent]] = {"msg": MsgEvent, "warn": WarnEvent, "error": ErrorEvent}
 
-# The statements this part executes, by method name (machine.py builds the dispatch table).
+# The statements this part executes, by method name (interpreter.py builds the dispatch table).
 STATEMENTS: StatementTable = {n.Message: Messages._exec_message, n.Dialog: Messages._exec_dialog,
                               n.LogFile: Messages._exec_logfile}

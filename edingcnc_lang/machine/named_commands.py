@@ -157,7 +157,7 @@ COMMANDS: CommandTable = {"gettoolinfo": Commands._get_tool_info, "exec": Comman
                           **height_comp.COMMANDS}
 
 
-# The statements this part executes, by method name (machine.py builds the dispatch table).
+# The statements this part executes, by method name (interpreter.py builds the dispatch table).
 STATEMENTS: StatementTable = {n.Home: Commands._exec_home, n.PrepareLinDeltaHome: Commands._exec_prepare_delta,
                               n.Kin: Commands._exec_kin, n.Switch: Commands._exec_switch,
                               n.Command: Commands._exec_command}

@@ -46,5 +46,5 @@ class ScalingWords(MachineState):
             self.canon.event(ScalingEvent(self.path, self.line, False))
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"scaling": ScalingWords._step_scaling}

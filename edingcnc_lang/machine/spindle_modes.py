@@ -81,5 +81,5 @@ class SpindleModes(MachineState):
                 "max_rpm": css[1] if css is not None else self.config.spindle_max_rpm}
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"spindle_mode": SpindleModes._step_spindle_mode, "spindle_speed": SpindleModes._step_spindle_speed, "spindle": SpindleModes._step_spindle}

@@ -3,7 +3,7 @@
 ``MachineState`` holds what one virtual machine knows (modal state, position, feed, tools,
 parameters, the call stack) and the few helpers every part needs: errors that name the line,
 the step budget and handing a move to the canon.  The parts of the interpreter (control flow,
-line steps, offsets, motion, ...) are mixins on top of it, assembled in ``machine.py``.
+line steps, offsets, motion, ...) are mixins on top of it, assembled in ``interpreter.py``.
 """
 from __future__ import annotations
 
@@ -95,7 +95,7 @@ DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_4
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
 
 
-# Dispatch tables of the parts (machine.py merges them): functions, not method names, so every
+# Dispatch tables of the parts (interpreter.py merges them): functions, not method names, so every
 # entry is checked by mypy and seen by dead-code tools.  The methods take the part's own type.
 StatementTable = dict[type, Callable[..., None]]      # statement type -> (machine, stmt)
 StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
@@ -180,7 +180,7 @@ def fmt_point(point: tuple[float, float]) -> str:
 class MachineState:
     """What one virtual machine knows; create one Interpreter per job run."""
 
-    # Built by machine.py from the parts: statement type -> method, and the steps of a line in order.
+    # Built by interpreter.py from the parts: statement type -> method, and the steps of a line in order.
     _EXECUTE: ClassVar[StatementTable]
     _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
 
@@ -413,7 +413,7 @@ class MachineState:
         return rate
 
     if TYPE_CHECKING:
-        # What the parts call on each other.  Each is defined once, in the part named; machine.py
+        # What the parts call on each other.  Each is defined once, in the part named; interpreter.py
         # assembles the parts into one class, and these declarations let mypy check every such call.
         def execute(self, stmt: n.Stmt) -> None: ...                                         # flow.py
         def call_sub(self, name: str, span: n.Span | None = None) -> None: ...              # flow.py

@@ -237,5 +237,5 @@ class LineSteps(MachineState):
         raise ProgramEnd()
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"feed_mode": LineSteps._step_feed_mode, "feed": LineSteps._step_feed, "tool_select": LineSteps._step_tool_select, "tool_change": LineSteps._step_tool_change, "coolant": LineSteps._step_coolant, "overrides": LineSteps._step_overrides, "path_control": LineSteps._step_path_control, "io": LineSteps._step_io, "m_state": LineSteps._step_m_state, "dwell": LineSteps._step_dwell, "length_offset": LineSteps._step_length_offset, "coord_system": LineSteps._step_coord_system, "rotation": LineSteps._step_rotation, "non_modal": LineSteps._step_non_modal, "motion": LineSteps._step_motion, "stopping": LineSteps._step_stopping, "units": LineSteps._step_modal, "distance": LineSteps._step_modal, "return_mode": LineSteps._step_modal}

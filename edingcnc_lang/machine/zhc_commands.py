@@ -105,7 +105,7 @@ class HeightComp(MachineState):
         self.message("msg", self.zhc.statistics())
 
 
-# Named commands of this part, by lower-case name (commands.py dispatches them).
+# Named commands of this part, by lower-case name (named_commands.py dispatches them).
 COMMANDS: CommandTable = {"zhcinit": HeightComp._zhc_init, "zhcinitex": HeightComp._zhc_init,
                           "zhcaddpoint": HeightComp._zhc_add_point, "zhcs": HeightComp._zhc_save,
                           "zhcl": HeightComp._zhc_load, "zhccheck": HeightComp._zhc_check}

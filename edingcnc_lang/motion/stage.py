@@ -97,7 +97,7 @@ class AxisLimits:
 
 def _positive(values: Sequence[float]) -> np.ndarray:
     """Limits as an array; a plug-in's answer of 0 or less means "not set" rather than "cannot move"
-    (the ini's own limits are checked to be above 0 when it is read, see config.py)."""
+    (the ini's own limits are checked to be above 0 when it is read, see config/machine_config.py)."""
     import numpy as np
 
     array = np.asarray(values, dtype=float)
