@@ -9,10 +9,11 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.syntax.input_limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
-from edingcnc_lang.lsp.server import _clamped_positions
 from tests.lsp.client import LspClient, at
 
-pytest.importorskip("pygls")
+pytest.importorskip("pygls", reason="the language server needs the lsp extra")
+pytest.importorskip("lsprotocol", reason="the language server needs the lsp extra")
+from edingcnc_lang.lsp.server import _clamped_positions  # noqa: E402  (after the extra is known to be there)
 
 
 @pytest.fixture(scope="module")
