@@ -22,11 +22,11 @@ P = "edingcnc_lang"
 # layer is open (its units build on each other without a cycle) or an edge is in ALLOWED.
 LAYERS: list[tuple[str, bool, set[str]]] = [
     ("foundation", True, {"records", "errors", "codes", "diagnostics", "events", "canon", "picture_formats",
-                          "gcpause", "speedups"}),
+                          "gcpause", "speedups", "stdlib"}),
     ("syntax", True, {"syntax", "parser"}),
     ("configuration", False, {"config", "host"}),
     ("machine", False, {"machine", "kinematics"}),
-    ("stages", False, {"pipeline", "knowledge", "motion"}),
+    ("stages", False, {"pipeline", "knowledge", "motion", "kins"}),
     ("sinks", False, {"motion.sinks"}),
     ("planner", False, {"motion.planner"}),
     ("orchestration", False, {"runner"}),
