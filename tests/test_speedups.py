@@ -30,6 +30,8 @@ from edingcnc_lang.motion.reach import column_bounds
 from edingcnc_lang.motion.sinks import trace_rows
 from edingcnc_lang.syntax.parser import non_plain_lines
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 compiled = pytest.importorskip("edingcnc_lang._speedups", reason="the compiled core is not built here")
 
 numbers = st.one_of(st.integers(-999, 999).map(str), st.floats(-1000, 1000).map(lambda v: f"{v:.4f}"),

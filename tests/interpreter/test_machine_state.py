@@ -48,10 +48,12 @@ def _declared() -> set[str]:
     return _self_targets(init)
 
 
+@pytest.mark.slow
 def test_the_parts_are_found() -> None:
     assert len(_parts()) >= 12
 
 
+@pytest.mark.slow
 def test_every_attribute_a_part_sets_is_declared_in_machine_state_init() -> None:
     declared = _declared()
     stray = [f"{path.name}: {cls.name}.{fn.name} sets self.{name}"
@@ -60,6 +62,7 @@ def test_every_attribute_a_part_sets_is_declared_in_machine_state_init() -> None
     assert not stray, "\n".join(stray)
 
 
+@pytest.mark.slow
 def test_no_part_keeps_state_in_a_class_attribute() -> None:
     shared = [f"{path.name}: {cls.name}: {ast.unparse(node)}" for path, cls in _parts() for node in cls.body
               if isinstance(node, (ast.Assign, ast.AnnAssign)) and not (

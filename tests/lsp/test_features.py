@@ -10,6 +10,8 @@ from edingcnc_lang.lsp import actions, completion, hover, navigation
 from edingcnc_lang.lsp.lexer import tokens
 from edingcnc_lang.lsp.model import LanguageModel
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parents[2]
 FILES = [ROOT / "stdlib" / "macro.cnc", ROOT / "examples" / "probe_corner.nc", ROOT / "examples" / "dialog_setup.nc"]
 

@@ -96,6 +96,7 @@ def _assert_kept(factory: type[Stage], programmed: list[Move], out: list[Move]) 
                 assert getattr(move, name) == getattr(source, name), (factory.__name__, name)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("factory", list(OWNS), ids=lambda f: f.__name__)
 @settings(max_examples=40, deadline=None)
 @given(items=moves, spindle=spindles)
@@ -109,6 +110,7 @@ def test_a_stage_keeps_every_field_it_does_not_own(factory: type[Stage], items: 
     _assert_kept(factory, programmed, _through(factory, one_by_one))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("factory", list(OWNS), ids=lambda f: f.__name__)
 @settings(max_examples=40, deadline=None)
 @given(items=moves, spindle=spindles)
@@ -172,6 +174,7 @@ def _compensated(programmed: list[Move], comp: tuple[str, float, str], send: obj
     return sink.moves(), error
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None)
 @given(rng=st.randoms(use_true_random=False), count=st.integers(1, 80), spindle=spindles, comp=compensations,
        cuts=st.lists(st.integers(1, 79), max_size=4), long_run=st.sampled_from([1, 2, 5]))
