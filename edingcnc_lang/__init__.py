@@ -36,7 +36,8 @@ if TYPE_CHECKING:
     from edingcnc_lang.lint.driver import LintOptions, lint_paths
     from edingcnc_lang.machine.parameters import ParameterView
     from edingcnc_lang.mdi import MdiOutcome, MdiSession
-    from edingcnc_lang.motion.planner.estimate import Estimate, Timing
+    from edingcnc_lang.motion.planner.estimate import Estimate
+    from edingcnc_lang.motion.sinks import Timing
     from edingcnc_lang.plot.render import plot_toolpath
     from edingcnc_lang.plot.toolpath import Toolpath, record_job
     from edingcnc_lang.syntax.nodes import Program, Span, Stmt
@@ -61,7 +62,8 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(("LintOptions", "lint_paths"), ".lint.driver"),
     "ParameterView": ".machine.parameters",
     **dict.fromkeys(("MdiOutcome", "MdiSession"), ".mdi"),
-    **dict.fromkeys(("Estimate", "Timing"), ".motion.planner.estimate"),
+    "Estimate": ".motion.planner.estimate",
+    "Timing": ".motion.sinks",
     "plot_toolpath": ".plot.render",
     **dict.fromkeys(("Toolpath", "record_job"), ".plot.toolpath"),
     **dict.fromkeys(("Program", "Span", "Stmt"), ".syntax.nodes"),

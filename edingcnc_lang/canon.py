@@ -1,4 +1,4 @@
-"""The canon seam: what the interpreter tells the machine, as plain event records.
+"""The canon seam: what the interpreter tells the machine, as plain records (moves here, events in ``events.py``).
 
 The interpreter emits these to a ``Canon`` and knows nothing of what happens
 next; the motion stage (kinematics, joints, limits), the trace writer and the
@@ -10,10 +10,11 @@ from __future__ import annotations
 import math
 
 from collections.abc import Callable, Iterator
-from dataclasses import field, replace
-from typing import Any, Mapping, Protocol, Sequence
+from dataclasses import replace
+from typing import Mapping, Protocol, Sequence
 
 from edingcnc_lang.errors import EcncError
+from edingcnc_lang.events import Event
 from edingcnc_lang.records import record
 
 
@@ -186,16 +187,6 @@ class Batch:
         spindle = 0.0 if move.css is not None else move.spindle
         return cls(move.path, move.start, (move.kind,), (move.line,), (move.end,), (move.feed,),
                    spindle, move.css, move.sync, move.caller, None if move.arc is None else (move.arc,))
-
-
-@record(frozen=True, slots=True)
-class Event:
-    """Anything else the machine does: dwell, tool change, spindle, messages, dialogs, I/O, ..."""
-
-    kind: str
-    path: str
-    line: int
-    data: Mapping[str, Any] = field(default_factory=dict)
 
 
 class Canon(Protocol):

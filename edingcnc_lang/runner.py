@@ -19,6 +19,7 @@ from typing import Any, TypeVar, overload
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Event, Move, Pose
+from edingcnc_lang.events import MessageEvent
 from edingcnc_lang.config.machine_config import MachineConfig, load_config, save_variables
 from edingcnc_lang.errors import CallbackError, Cancelled, EcncError, Interrupted, Location, MachineError
 from edingcnc_lang.host import Host
@@ -40,7 +41,8 @@ from edingcnc_lang.outputs import check_outputs, ensure_parent, output_identitie
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
 from edingcnc_lang.syntax.parser import StatementReader, check_file, parse_file, parse_text, read_statements
-from edingcnc_lang.motion.planner.estimate import Estimate, Timing
+from edingcnc_lang.motion.planner.estimate import Estimate
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.planner.overrides import Overrides
 from edingcnc_lang.motion.planner.stage import Planner, TimedSink
 from edingcnc_lang.motion.planner.untimed import Untimed
@@ -74,7 +76,7 @@ class RunResult:
     machine: Pose
     joints: Pose
     variables: dict[int, float]
-    messages: list[Event]
+    messages: list[MessageEvent]
     kinematics: dict[str, Any]
     tool: int
     moves: int
@@ -102,7 +104,7 @@ class RunResult:
             "machine": dict(zip(axes, self.machine)),
             "joints": dict(zip(axes, self.joints)),
             "variables": {str(k): v for k, v in self.variables.items()},
-            "messages": [{"kind": e.kind, "text": e.data.get("text", ""), "file": e.path, "line": e.line}
+            "messages": [{"kind": e.kind, "text": e.text, "file": e.path, "line": e.line}
                          for e in self.messages],
             "kinematics": self.kinematics,
             "tool": self.tool,

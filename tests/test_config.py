@@ -265,6 +265,7 @@ def test_save_variables_changes_only_the_values(sample_copy: Path) -> None:
     assert load_config(sample_copy).variables[4000] == 12.5
 
 
+@pytest.mark.slow
 @needs_sample
 def test_save_variables_appends_missing_at_the_end_of_the_section(sample_copy: Path) -> None:
     before = sample_copy.read_bytes()
@@ -321,6 +322,7 @@ def test_save_variables_rejects_non_finite(tmp_path: Path) -> None:
     assert path.read_text() == "[VARIABLES]\n#4000 = 1.000000\n"
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(st.dictionaries(st.sampled_from([4000, 4001, 4777, 5008, 5390]),
                        st.floats(min_value=-1e6, max_value=1e6), max_size=5), st.none() | st.integers(1, 9))
@@ -349,6 +351,7 @@ def test_axis_limits_are_the_joints_on_a_trivial_machine_and_the_cartesian_box_w
     assert plain.axis_limits() == ([j.negative_limit for j in plain.joints], [j.positive_limit for j in plain.joints])
 
 
+@pytest.mark.slow
 def test_an_ini_past_the_size_limit_is_an_error_not_gigabytes(tmp_path: Path) -> None:
     ini = tmp_path / "cnc.ini"
     ini.write_bytes(b"[VARIABLES]\n" + b"#4000 = 1\n" * (MAX_INI_BYTES // 10))  # just past the limit

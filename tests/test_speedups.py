@@ -25,10 +25,12 @@ from edingcnc_lang.kinematics.trajectory import arc_frame, arc_frame_rows
 from edingcnc_lang.runner import Run
 from edingcnc_lang.machine import bulk, plain_runs
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
-from edingcnc_lang.syntax.input_limits import MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
 from edingcnc_lang.motion.reach import column_bounds
 from edingcnc_lang.motion.sinks import trace_rows
 from edingcnc_lang.syntax.parser import non_plain_lines
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 compiled = pytest.importorskip("edingcnc_lang._speedups", reason="the compiled core is not built here")
 
@@ -38,16 +40,18 @@ words = st.tuples(st.sampled_from("GXYZABCFNMSgxyzf"), st.sampled_from(["", " ",
 # ( ) comments the plain path skips, and the ones it must leave to the parser (messages, unclosed,
 # a control or non-ASCII character after the '(')
 comments = st.sampled_from(["", "", "", "(note)", " (a;b) ", "(T1 D=6)", "(msg)", "( MSG, hi)", "(msg1)", "(msg_x)",
-                            "(\tmsg x)", "(note", "(é)", "(x é)", "(\x0bmsg)", "( \u00a0msg)", "(()", "(msg"])
+                            "(\tmsg x)", "(note", "(é)", "(x é)", "(\x0bmsg)", "( \u00a0msg)", "(()", "(msg",
+                            "(\udc80)", "(x \ud800 y)"])  # a lone surrogate: a line read with surrogateescape
 lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{c}{a}{gap}{v}" for c, (a, gap, v) in ws) + tail,
                   st.lists(st.tuples(comments, words), max_size=6), st.sampled_from(["", " ", "\t", "(c) "]),
-                  st.sampled_from(["", " ; cut X5", ";", " (note)", "(msg hi)", " (unclosed", "#1=2", "\r"]))
+                  st.sampled_from(["", " ; cut X5", ";", " (note)", "(msg hi)", " (unclosed", "#1=2", "\r",
+                                   " ;\udcff", "\ud800", "X\udc801", " \udfff"]))
 
 
 @settings(max_examples=300, deadline=None)
 @given(st.lists(lines, min_size=1, max_size=12))
 def test_the_check_scan_is_the_same(chunk: list[str]) -> None:
-    assert compiled.non_plain_lines(MAX_LINE_LENGTH, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+    assert compiled.non_plain_lines(MAX_LINE_LENGTH, INTEGER_DIGITS, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
 
 
 @settings(max_examples=300, deadline=None)
@@ -63,7 +67,7 @@ def test_the_targets_of_plain_lines_are_the_same(chunk: list[str], scale: float,
 
 # arc lines: centre words that fit (a half circle, a full circle, a helix), that nearly fit and that do
 # not, words of another plane, R (left to the Python function), F, N and comments
-ARC_LINES = ["G2 X10 Y0 I5 J0", "G3 X-10 Y0 I-5", "X10 Y10 I10", "G2 X0 Y0 Z-1 I5 J0", "G2 I5 Z-2",
+ARC_LINES = ["G2 X10 Y0 I5 J0", "G2 X10 Y0 I5 J0 ;\udc80", "G3 X\ud8001 I1", "G3 X-10 Y0 I-5", "X10 Y10 I10", "G2 X0 Y0 Z-1 I5 J0", "G2 I5 Z-2",
                              "G3 X4 Z4 I2 K2", "G2 Y6 Z0 J3 K0 F80", "G2 X20 R10", "G3 X10.0015 Y0 I5 J0",
                              "G02 x10 y0 i5 j0.0001 f0", "G3 X10 Y0 I5 J0 F-1", "G2 X1 I1 I2", "G2 X5 Y5",
                              "N7 G3 X10 Y0 I5 J0 (cut) F1200.5", "X3 Y4 J5 K1", "G2 X5 A10 B2 C3 I2.5 ; note",
@@ -145,10 +149,11 @@ def test_the_frames_of_a_batchs_arcs_are_the_same(start: tuple[float, ...],
 
 @pytest.mark.parametrize("chunk", [
     ["M3", "G1 X1", "G1 X2"], ["G1 X1", "G1 X2", "M5"], ["M3", "M4", "G1 X1", "(msg hi)", "#1=2", "G0 Y1"],
-    ["G1 X1"], ["G1X1Y2 (note) ; tail", "x 1.5 Y 2", "G1 X1.2.3", "G1 X" + "1" * 301]])
+    ["G1 X1"], ["G1X1Y2 (note) ; tail", "x 1.5 Y 2", "G1 X1.2.3", "G1 X" + "1" * 301],
+    ["G1 X" + "1" * INTEGER_DIGITS, "G1 X" + "1" * (INTEGER_DIGITS + 1), "G1 X1 ;\udc80", "G1 X\ud8001"]])
 def test_the_check_scan_at_the_ends_of_a_chunk(chunk: list[str]) -> None:
     """Other lines first, last and one after another: each run of plain lines ends where the scan resumes."""
-    assert compiled.non_plain_lines(MAX_LINE_LENGTH, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+    assert compiled.non_plain_lines(MAX_LINE_LENGTH, INTEGER_DIGITS, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
 
 
 @pytest.mark.parametrize("texts", [
@@ -248,6 +253,18 @@ def test_trace_rows_of_constant_columns(column: list[float]) -> None:
             args = (list(range(5)), ["rapid"] * 5, same, "job.nc", [0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
             assert compiled.trace_rows(*args) == trace_rows(*args)
     assert compiled.trace_rows([], [], [], "job.nc", [0.0]) == trace_rows([], [], [], "job.nc", [0.0]) == ""
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 4), st.integers(0, 4), st.integers(0, 4), st.integers(0, 5),
+       st.sampled_from(["job.nc", "j\udcffb.nc", "\ud800", '"a,b"']), st.sampled_from(["linear", "r\udc80pid"]))
+def test_trace_rows_of_short_and_surrogate_inputs_are_the_same(lines: int, kinds: int, ends: int, times: int,
+                                                                name: str, kind: str) -> None:
+    """Columns of unequal length (zip stops at the shortest) and a file name or kind with a lone surrogate
+    (a path read with surrogateescape): the same text, never an error only one core raises."""
+    args = (list(range(lines)), [kind] * kinds, [(float(i), 0.5, -0.0, 0.0, 0.0, 1e22) for i in range(ends)],
+            name, [0.0, *map(float, range(times))][:times])
+    assert compiled.trace_rows(*args) == trace_rows(*args)
 
 
 @settings(max_examples=200, deadline=None)

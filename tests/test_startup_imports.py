@@ -17,6 +17,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parent.parent
 
 RUN_TRIVIAL_JOB = """

@@ -118,7 +118,7 @@ def run_command_line(argv: list[str], until_exit: list[object] | None = None) ->
     except (KeyboardInterrupt, click.Abort):  # outside a run (which names its line itself)
         print(file=sys.stderr)
         return report(Interrupted("interrupted (Ctrl-C)"), as_json)
-    except MemoryError:  # this machine's memory ran out before a limit of limits.py was reached
+    except MemoryError:  # this machine's memory ran out before a limit of syntax/input_limits.py was reached
         return report(EcncError("out of memory: the job needs more than this machine has (the limits are in "
                                 "docs/language.md#limits; --samples FILE.csv streams where .npz does not)"), as_json)
     except BrokenPipeError:  # `ecnc ... | head` stopped reading: end quietly

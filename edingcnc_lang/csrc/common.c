@@ -11,6 +11,23 @@ static inline int append_new(PyObject *list, PyObject *item)
     return failed;
 }
 
+/* The UTF-8 bytes of ``text`` as Python's own str methods see its code points: a lone surrogate (a line
+ * or a file name read with surrogateescape) is written as its three bytes ("surrogatepass") instead of
+ * failing, so both cores read the same text.  ``*keep`` owns those bytes when it is not NULL (release it
+ * with Py_XDECREF); NULL only with an error set. */
+static inline const char *utf8_pass(PyObject *text, Py_ssize_t *len, PyObject **keep)
+{
+    const char *s = PyUnicode_AsUTF8AndSize(text, len);
+    *keep = NULL;
+    if (s != NULL || !PyErr_ExceptionMatches(PyExc_UnicodeEncodeError))
+        return s;
+    PyErr_Clear();
+    if ((*keep = PyUnicode_AsEncodedString(text, "utf-8", "surrogatepass")) == NULL)
+        return NULL;
+    *len = PyBytes_Size(*keep);
+    return PyBytes_AsString(*keep);
+}
+
 /* Interned strings of ``names`` into ``out``: -1 if one cannot be made. */
 static inline int intern_all(PyObject **out, const char *const *names, size_t count)
 {

@@ -168,7 +168,7 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     /* plane: 0 XY, 1 XZ, 2 YZ (PLANES order: first, second in-plane axes) */
     static const int first_axis[3] = {0, 2, 1}, second_axis[3] = {1, 0, 2}, normal_axis[3] = {2, 1, 0};
     static const char first_word[3] = {'I', 'K', 'J'}, second_word[3] = {'J', 'I', 'K'};
-    PyObject *text, *start_obj, *offset_obj, *arc_class, *plane_name, *end = NULL, *arc;
+    PyObject *text, *start_obj, *offset_obj, *arc_class, *plane_name, *end = NULL, *arc, *keep;
     const char *s;
     Py_ssize_t len;
     double start[6], offset[6], target[6], value[26], scale, feed, tolerance, epsilon, tiny;
@@ -185,10 +185,12 @@ static PyObject *plain_arc(PyObject *self, PyObject *args)
     }
     if (read_six(start_obj, start) < 0 || read_six(offset_obj, offset) < 0)
         return NULL;
-    s = PyUnicode_AsUTF8AndSize(text, &len);
+    s = utf8_pass(text, &len, &keep);
     if (s == NULL)
         return NULL;
-    if (!scan_words(s, len, value, seen))
+    k = scan_words(s, len, value, seen);
+    Py_XDECREF(keep);
+    if (!k)
         Py_RETURN_FALSE;
     if (SEEN('G')) {
         double g = VALUE('G');

@@ -184,7 +184,7 @@ static PyObject *plain_moves(PyObject *self, PyObject *args)
     if (!kinds || !numbers || !ends || !feeds || !in_force)
         goto fail;
     for (index = first; index < count && done < room; index++) {
-        PyObject *pair = PySequence_GetItem(lines, index), *lineno, *text;
+        PyObject *pair = PySequence_GetItem(lines, index), *lineno, *text, *keep;
         const char *s;
         Py_ssize_t len;
         double target[6], new_feed = feed;
@@ -199,7 +199,7 @@ static PyObject *plain_moves(PyObject *self, PyObject *args)
             Py_XDECREF(text);
             goto fail;
         }
-        s = PyUnicode_AsUTF8AndSize(text, &len);
+        s = utf8_pass(text, &len, &keep);
         if (s == NULL) {
             Py_DECREF(lineno);
             Py_DECREF(text);
@@ -207,6 +207,7 @@ static PyObject *plain_moves(PyObject *self, PyObject *args)
         }
         memcpy(target, position, sizeof target);
         simple = scan_line(s, len, incremental ? position : offset, scale, target, &line_motion, &new_feed, &moved);
+        Py_XDECREF(keep);
         Py_DECREF(text);
         if (!simple || line_motion == NO_MOTION || (moved && line_motion == G1 && new_feed <= 0)) {
             Py_DECREF(lineno);
@@ -264,7 +265,7 @@ static Py_ssize_t skip_gap(const char *s, Py_ssize_t len, Py_ssize_t i)
     }
 }
 
-static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
+static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t integer_digits, Py_ssize_t max_digits)
 {
     Py_ssize_t i = skip_gap(s, len, 0), words = 0, run;
     int line_number;
@@ -284,7 +285,7 @@ static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
         if (i < len && is_digit(s[i])) {
             for (run = 0; i < len && is_digit(s[i]); i++)
                 run++;
-            if (run > 300 || (line_number && run > 5))  /* N: five digits at most (manual 3.4.1) */
+            if (run > integer_digits || (line_number && run > 5))  /* N: five digits at most (manual 3.4.1) */
                 return 0;
             if (i < len && s[i] == '.') {
                 for (i++, run = 0; i < len && is_digit(s[i]); i++)
@@ -310,23 +311,24 @@ static int plain_line(const char *s, Py_ssize_t len, Py_ssize_t max_digits)
 static PyObject *non_plain_lines(PyObject *self, PyObject *args)
 {
     PyObject *chunk, *found;
-    Py_ssize_t max_length, max_digits, count, i;
+    Py_ssize_t max_length, integer_digits, max_digits, count, i;
     (void)self;
-    if (!PyArg_ParseTuple(args, "nnO", &max_length, &max_digits, &chunk))
+    if (!PyArg_ParseTuple(args, "nnnO", &max_length, &integer_digits, &max_digits, &chunk))
         return NULL;
     count = PySequence_Size(chunk);
     found = count < 0 ? NULL : PyList_New(0);
     if (found == NULL)
         return NULL;
     for (i = 0; i < count; i++) {
-        PyObject *text = PySequence_GetItem(chunk, i);
+        PyObject *text = PySequence_GetItem(chunk, i), *keep;
         const char *s;
         Py_ssize_t len;
         int plain;
         if (text == NULL)
             goto fail;
-        s = PyUnicode_AsUTF8AndSize(text, &len);
-        plain = s != NULL && PyUnicode_GetLength(text) <= max_length && plain_line(s, len, max_digits);
+        s = utf8_pass(text, &len, &keep);
+        plain = s != NULL && PyUnicode_GetLength(text) <= max_length && plain_line(s, len, integer_digits, max_digits);
+        Py_XDECREF(keep);
         Py_DECREF(text);
         if (s == NULL)
             goto fail;

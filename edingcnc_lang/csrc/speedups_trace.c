@@ -164,23 +164,28 @@ static int text_str(Text *text, PyObject *value)
 
 static PyObject *trace_rows(PyObject *self, PyObject *args)
 {
-    PyObject *lines, *kinds, *ends, *name, *times, *result = NULL;
+    PyObject *lines, *kinds, *ends, *name, *times, *result = NULL, *name_keep;
     const char *name_s;
-    Py_ssize_t name_n, count, i;
+    Py_ssize_t name_n, count, i, size;
     Text text = {NULL, 0, 0}, coords = {NULL, 0, 0};
     (void)self;
     if (!PyArg_ParseTuple(args, "OOOUO", &lines, &kinds, &ends, &name, &times))
         return NULL;
-    name_s = PyUnicode_AsUTF8AndSize(name, &name_n);
+    name_s = utf8_pass(name, &name_n, &name_keep);
     if (name_s == NULL)
         return NULL;
-    count = PySequence_Size(lines);
-    if (count < 0 || PySequence_Size(kinds) < count || PySequence_Size(ends) < count)
+    /* zip() stops at the shortest: the rows of min(lines, kinds, ends, times[1:]) */
+    if ((count = PySequence_Size(lines)) < 0 || (size = PySequence_Size(kinds)) < 0)
         goto done;
-    if (PySequence_Size(times) - 1 < count)
-        count = PySequence_Size(times) - 1;  /* zip() stops at the shortest */
+    count = size < count ? size : count;
+    if ((size = PySequence_Size(ends)) < 0)
+        goto done;
+    count = size < count ? size : count;
+    if ((size = PySequence_Size(times)) < 0)
+        goto done;
+    count = size - 1 < count ? size - 1 : count;
     for (i = 0; i < count; i++) {
-        PyObject *line = PySequence_GetItem(lines, i), *kind = NULL, *end = NULL, *t = NULL;
+        PyObject *line = PySequence_GetItem(lines, i), *kind = NULL, *end = NULL, *t = NULL, *kind_keep = NULL;
         const char *kind_s;
         Py_ssize_t kind_n, k;
         int failed = line == NULL;
@@ -201,7 +206,7 @@ static PyObject *trace_rows(PyObject *self, PyObject *args)
             Py_XDECREF(value);
         }
         if (!failed) {
-            kind_s = PyUnicode_AsUTF8AndSize(kind, &kind_n);
+            kind_s = utf8_pass(kind, &kind_n, &kind_keep);
             failed = kind_s == NULL
                 || text_str(&text, line) < 0 || text_add(&text, ",", 1) < 0
                 || text_add(&text, kind_s, (size_t)kind_n) < 0 || text_add(&text, ",", 1) < 0
@@ -210,6 +215,7 @@ static PyObject *trace_rows(PyObject *self, PyObject *args)
                 || text_add(&text, name_s, (size_t)name_n) < 0 || text_add(&text, ",", 1) < 0
                 || text_repr(&text, t) < 0 || text_add(&text, "\n", 1) < 0;
         }
+        Py_XDECREF(kind_keep);
         Py_XDECREF(line);
         Py_XDECREF(kind);
         Py_XDECREF(end);
@@ -217,8 +223,9 @@ static PyObject *trace_rows(PyObject *self, PyObject *args)
         if (failed)
             goto done;
     }
-    result = PyUnicode_FromStringAndSize(text.data ? text.data : "", (Py_ssize_t)text.used);
+    result = PyUnicode_DecodeUTF8(text.data ? text.data : "", (Py_ssize_t)text.used, "surrogatepass");
 done:
+    Py_XDECREF(name_keep);
     PyMem_Free(text.data);
     PyMem_Free(coords.data);
     return result;

@@ -18,8 +18,8 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.canon import Pose
 from edingcnc_lang.errors import EXIT_OK, EcncError
 from edingcnc_lang.host import DialogAnswer, Host, ProbeCallback
-from edingcnc_lang.machine.observe import Observer
-from edingcnc_lang.machine.state import CallFrame, MachineState
+from edingcnc_lang.machine.observe import MachineView, Observer
+from edingcnc_lang.machine.state import CallFrame
 from edingcnc_lang.runner import Run, RunOptions
 from edingcnc_lang.debug.breakpoints import Breakpoints, reached
 from edingcnc_lang.debug.data_breakpoints import DataBreakpoints
@@ -264,7 +264,7 @@ class Session(Observer):
 
     # ------------------------------------------------------------------ stopping
 
-    def _stop(self, machine: MachineState, reason: str, extra: dict[str, Any] | None = None) -> str:
+    def _stop(self, machine: MachineView, reason: str, extra: dict[str, Any] | None = None) -> str:
         """Stop and wait for the user; returns the command that ended the stop (after acting on it)."""
         self.frames = frames_of(machine)
         command = self._wait(reason, extra)
@@ -302,7 +302,7 @@ class Session(Observer):
 
     # ------------------------------------------------------------------ the observer seam
 
-    def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
+    def statement(self, machine: MachineView, stmt: n.Stmt) -> None:
         step = machine.steps
         self.last_step = step
         self._last_where = (machine.path, machine.line)
@@ -343,7 +343,7 @@ class Session(Observer):
         written = self.data.take()
         if written is not None:
             self._stop(machine, "data breakpoint", self.data.stopped_at(
-                written, machine.params.read(written), self.writers.get(written, ("", 0)), self.names))
+                written, machine.variable(written), self.writers.get(written, ("", 0)), self.names))
             return
         lines = self.breakpoints.watched(machine.path)
         if lines:
@@ -355,7 +355,7 @@ class Session(Observer):
                 if decision.stop:
                     self._stop(machine, "breakpoint", {"hitBreakpointIds": [bp.id]})
 
-    def line_by_line(self, machine: MachineState, run: n.PlainRun) -> bool:
+    def line_by_line(self, machine: MachineView, run: n.PlainRun) -> bool:
         self._chunk = key = (run.path, run.lines[0][0])
         first, last = run.lines[0][0], run.lines[-1][0]
         if self._phase == SEARCH:
@@ -388,13 +388,13 @@ class Session(Observer):
         trail.extend([None] * (depth + 1 - len(trail)))
         trail[depth] = (step, self._chunk)
 
-    def branch(self, machine: MachineState, stmt: n.If | n.While, taken: bool) -> None:
+    def branch(self, machine: MachineView, stmt: n.If | n.While, taken: bool) -> None:
         """A While line is reached again at every turn (its first decision follows its statement):
         seen as a statement, it can be stopped at, stepped to and stepped back to."""
         if type(stmt) is n.While and machine.steps != self.last_step:
             self.statement(machine, stmt)
 
-    def call(self, machine: MachineState, frame: CallFrame, sub: n.Sub) -> None:
+    def call(self, machine: MachineView, frame: CallFrame, sub: n.Sub) -> None:
         if self._phase == LIVE:
             bp = self.breakpoints.functions.get(frame.name)
             if bp is not None:
@@ -403,15 +403,15 @@ class Session(Observer):
                     self.channel.output(decision.log, "console", machine.path, machine.line)
                 self._function_stop = self._function_stop or decision.stop
 
-    def ret(self, machine: MachineState, frame: CallFrame) -> None:
+    def ret(self, machine: MachineView, frame: CallFrame) -> None:
         if self._error_frames is None and isinstance(sys.exc_info()[1], EcncError):
             self._error_frames = frames_of(machine)  # the stack as it was where the error happened
 
-    def _rerun_statement(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:
+    def _rerun_statement(self, machine: MachineView, stmt: n.Stmt, step: int) -> None:
         """A statement of a search or replay re-run: the user's edits, then the way back."""
         assert self._replay is not None
         for index, value in self._replay.edits.get(step, ()):
-            machine.params.write(index, value)
+            machine.set_variable(index, value)
             self.writers[index] = (SET_BY_USER, 0)
         if self._phase == SEARCH:
             self._searching(machine, stmt, step)
@@ -425,7 +425,7 @@ class Session(Observer):
                 self._relocate_log(machine)
             self._stop(machine, self._reason)
 
-    def _searching(self, machine: MachineState, stmt: n.Stmt, step: int) -> None:
+    def _searching(self, machine: MachineView, stmt: n.Stmt, step: int) -> None:
         back = self._search
         assert back is not None
         depth = len(machine.stack)
@@ -448,12 +448,9 @@ class Session(Observer):
                 except EcncError:
                     self._found = here
 
-    def _relocate_log(self, machine: MachineState) -> None:
+    def _relocate_log(self, machine: MachineView) -> None:
         """A re-run's log file went to the scratch folder; from here on the real one is written."""
-        log_file = getattr(machine, "_log_file", None)
-        machine.log_dir = self._log_dir()
-        if log_file is not None and self._scratch in log_file.parents:
-            machine._log_file = self._log_dir() / log_file.relative_to(self._scratch)  # type: ignore[attr-defined]
+        machine.move_files(self._scratch, self._log_dir())
 
     # ------------------------------------------------------------------ the operator's part
 
@@ -478,7 +475,7 @@ class Session(Observer):
         self.channel.output(f'dlgmsg "{title}": {shown}\nanswer in the debug console: ok #N=V ... or cancel '
                             "(continue answers ok, values unchanged)")
         self.fields = [f.index for f in fields]
-        value = self._ask(self.run.interpreter, "dialog", f"dlgmsg \"{title}\" waits for an answer")
+        value = self._ask(self.run.interpreter.view, "dialog", f"dlgmsg \"{title}\" waits for an answer")
         answer = value if isinstance(value, DialogAnswer) else DialogAnswer()
         self.history.record(Input(self.last_step, "dialog", answer))
         return answer
@@ -496,12 +493,12 @@ class Session(Observer):
             where = " ".join(f"{a}{v:g}" for a, v in zip("XYZABC", target))
             self.channel.output(f"G38.2 towards {where} (machine): answer in the debug console: ok (trips at "
                                 "the target), miss (no contact) or trip Z-3.2 (trips there)")
-            value = self._ask(self.run.interpreter, "probe", "G38.2 waits for the probe")
+            value = self._ask(self.run.interpreter.view, "probe", "G38.2 waits for the probe")
             trip = value[1] if isinstance(value, tuple) else target
         self.history.record(Input(self.last_step, "probe", trip))
         return trip
 
-    def _ask(self, machine: MachineState, what: str, text: str) -> object:
+    def _ask(self, machine: MachineView, what: str, text: str) -> object:
         """Stop until the console answers (or the user continues: the default answer)."""
         self.waiting, self._answer = what, None
         try:

@@ -19,7 +19,7 @@ from edingcnc_lang.knowledge import variable
 from edingcnc_lang.varmap.names import label
 
 if TYPE_CHECKING:
-    from edingcnc_lang.machine.state import MachineState
+    from edingcnc_lang.machine.observe import MachineView
     from edingcnc_lang.runner import Run
 
 USER, PERSISTENT, SYSTEM, KINEMATICS, MODAL, POSITION = range(1, 7)
@@ -127,7 +127,7 @@ class Frame:
     line: int
 
 
-def frames_of(machine: MachineState) -> list[Frame]:
+def frames_of(machine: MachineView) -> list[Frame]:
     """The stack, innermost first: each active sub at its current line, the job at its call."""
     stack = machine.stack
     found = [Frame(stack[-1].name if stack else "job", machine.path, machine.line)]

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from edingcnc_lang.diff.record import Samples, slots
+from edingcnc_lang.diff.record import PathSamples, slots
 
 BRUTE = 1 << 16      # point-segment pairs measured at once, all against all (below 64 times this in all, or
                      # for fewer points than a 64th of the segments, no grid is built)
@@ -60,7 +60,7 @@ def _to_arcs(a: np.ndarray, b: np.ndarray, p: np.ndarray, center: np.ndarray, no
 class Stretch:
     """Segments of one path (those of the moves ``first``..``stop`` - 1) to measure points against."""
 
-    def __init__(self, samples: Samples, first: int, stop: int) -> None:
+    def __init__(self, samples: PathSamples, first: int, stop: int) -> None:
         low, high = np.searchsorted(samples.owner, (first, stop))
         ends = np.arange(max(int(low), 1), int(high))
         ends = ends[~samples.jump[ends]]  # a segment ends at point k + 1; one that ends at a jump is no path
@@ -176,7 +176,7 @@ class _Grid:
         return np.concatenate(rows), np.concatenate(cols)
 
 
-def matched_moves(segment: np.ndarray, at: np.ndarray, other: Samples) -> np.ndarray:
+def matched_moves(segment: np.ndarray, at: np.ndarray, other: PathSamples) -> np.ndarray:
     """The move of the other path each point lies on (a point at a vertex counts with the move that ends there)."""
     seg = np.maximum(segment, 0)
     index = np.where((at <= 1e-9) & (seg > 0), seg, seg + 1)

@@ -16,7 +16,7 @@ import numpy as np
 
 from edingcnc_lang.diff.align import Stretch, matched_moves, nearest
 from edingcnc_lang.diff.anchor import anchors, between, keys
-from edingcnc_lang.diff.record import RAPID_KINDS, Recording, Samples, sample
+from edingcnc_lang.diff.record import RAPID_KINDS, Recording, PathSamples, sample
 
 CAPTURE = 1.0        # mm: a point this close to the other path is on it, moved; farther, it is elsewhere
 MIN_SHIFTED = 2      # moves moved whole (both ends) that make a shifted feature
@@ -193,7 +193,7 @@ def _reordered_gap(result: Matching, old: Recording, new: Recording, o0: int, o1
     result.new_match[new_left], result.old_match[old_left] = -2, -2  # told as the reordering, compared with nothing
 
 
-def _sampled(rec: Recording, spans: list[tuple[int, int]], dims: int) -> Samples:
+def _sampled(rec: Recording, spans: list[tuple[int, int]], dims: int) -> PathSamples:
     """The path of the moves in ``spans`` (first, stop; clipped to the job), each point owned by its move's
     index in the whole job (a stretch that does not follow the one before starts with a jump)."""
     chosen = np.zeros(len(rec), dtype=bool)
@@ -210,7 +210,7 @@ def _sampled(rec: Recording, spans: list[tuple[int, int]], dims: int) -> Samples
     return samples
 
 
-def _measure(distance: np.ndarray, match: np.ndarray, mine: Samples, m0: int, m1: int, other: Samples,
+def _measure(distance: np.ndarray, match: np.ndarray, mine: PathSamples, m0: int, m1: int, other: PathSamples,
              o0: int, o1: int) -> None:
     """The moves ``m0``..``m1`` - 1 not paired yet, against the other's moves of the gap and its anchors."""
     moves = np.arange(m0, m1)

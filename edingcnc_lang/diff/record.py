@@ -16,8 +16,9 @@ import numpy as np
 
 from edingcnc_lang import speedups
 from edingcnc_lang.canon import Event, Move, Pose
-from edingcnc_lang.kinematics.trajectory import ARC_ROW
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.events import CoolantEvent, DwellEvent, SpindleEvent, SpindleSpeedEvent, ToolChangeEvent
+from edingcnc_lang.kinematics.trajectory import ARC_ROW, arc_frame_rows
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
@@ -32,6 +33,8 @@ MAX_CHORDS = 4096      # pieces per arc move at most
 ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
 CHUNK = 65_536         # moves (points) filled at once
 NO_ARC = (-1.0,) + (0.0,) * (FRAME - 1)
+
+_FRAME_ROWS = speedups.compiled("arc_frame_rows") or arc_frame_rows  # the planner's arc frames
 
 
 @dataclass
@@ -110,25 +113,25 @@ class Recorder:
         self.rows.extend(move.start)
         self.rows.extend(move.end)
         # the arc's circle as the planner reads it: one meaning of an arc's frame, not a second derivation
-        self.rows.extend(speedups.arc_frame_rows(move.start, (move.end,), (move.arc,))[1:]
+        self.rows.extend(_FRAME_ROWS(move.start, (move.end,), (move.arc,))[1:]
                          if move.arc is not None else NO_ARC)
 
     def event(self, event: Event) -> None:
         value: float
-        if event.kind == "tool_change":
-            self.tool = int(event.data.get("tool", self.tool))
+        if isinstance(event, ToolChangeEvent):
+            self.tool = event.tool
             value = self.tool
-        elif event.kind == "spindle_speed":
-            self.rpm = float(event.data.get("rpm", self.rpm))
+        elif isinstance(event, SpindleSpeedEvent):
+            self.rpm = event.rpm
             return
-        elif event.kind == "spindle":
-            value = float(event.data.get("m", 5))
+        elif isinstance(event, SpindleEvent):
+            value = float(event.m)
             self.turning = value != 5.0
-            self.rpm = float(event.data.get("rpm", self.rpm)) or self.rpm
-        elif event.kind == "coolant":
-            value = float(event.data.get("m", 9))
-        elif event.kind == "dwell":
-            value = float(event.data.get("seconds", 0.0))
+            self.rpm = event.rpm or self.rpm
+        elif isinstance(event, CoolantEvent):
+            value = float(event.m)
+        elif isinstance(event, DwellEvent):
+            value = event.seconds
         else:
             return
         line = self._line(event.path, event.line, 0)
@@ -155,7 +158,7 @@ def record(job: Path, options: RunOptions, name: str | None = None) -> Recording
 
 
 @dataclass
-class Samples:
+class PathSamples:
     """A run's path as one polyline whose pieces of arcs remember their circle: points, the move each
     point ends, and for each segment that is a piece of an arc, its circle."""
 
@@ -168,7 +171,7 @@ class Samples:
     jump: np.ndarray     # (P,) bool: a move's start away from the previous end (the segment to it is no path)
 
 
-def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples:
+def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> PathSamples:
     """The polyline of ``rec``: what the alignment compares, so two ways of writing the same path
     (an arc split in two, a line split in three) give points on the same curve.  Arcs are pieces of
     at most ``arc_step`` radians whose distances are measured to the circle, not to the chord.
@@ -181,7 +184,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
     radii = np.zeros(count)
     centers[arcs], normals[arcs], radii[arcs] = circle.center, circle.normal, circle.r0
     if not count:
-        return Samples(np.zeros((0, dims)), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
+        return PathSamples(np.zeros((0, dims)), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
                        centers, normals, radii, np.zeros(0, dtype=bool))
     starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
     lengths = np.linalg.norm(ends - starts, axis=1)
@@ -217,7 +220,7 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> Samples
         owner[at], arc_of[at - 1] = move_of, move_of
     jump = np.zeros(total, dtype=bool)
     jump[jump_at] = True
-    return Samples(points, owner, arc_of, centers, normals, radii, jump)
+    return PathSamples(points, owner, arc_of, centers, normals, radii, jump)
 
 
 def slots(items: np.ndarray, counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

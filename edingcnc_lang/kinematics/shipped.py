@@ -1,9 +1,9 @@
-"""Where the shipped plug-ins (the repo's ``kins/`` folder) live.
+"""Where the shipped plug-ins (the repo's ``kins/`` folder) live: the package ``edingcnc_lang.kins``.
 
-Installed, ``kins/`` is the package ``edingcnc_lang.kins``; a source checkout reaches it through
-the symlink ``edingcnc_lang/kins``, and where git could not create that link (Windows without
-symlink support) through the top-level package ``kins`` with PYTHONPATH at the repo root.
-Everything that needs it goes through this module so that the difference is handled once.
+``edingcnc_lang/kins`` is a real folder, a copy of the top-level ``kins/`` (the source of truth,
+kept equal by ``scripts/sync_package_data.py`` and pinned by ``tests/test_package_data.py``), so an
+installed wheel, an editable install and a Windows clone all find it the same way.  Everything that
+needs it goes through this module.
 """
 from __future__ import annotations
 
@@ -13,18 +13,11 @@ from pathlib import Path
 from types import ModuleType
 
 INSTALLED = "edingcnc_lang.kins"
-SOURCE_CHECKOUT = "kins"
 
 
 def import_shipped(module: str = "") -> ModuleType:
-    """Import ``edingcnc_lang.kins[.module]``, falling back to the source checkout's ``kins``."""
-    suffix = f".{module}" if module else ""
-    try:
-        return importlib.import_module(INSTALLED + suffix)
-    except ModuleNotFoundError as err:
-        if err.name not in (INSTALLED, INSTALLED + suffix):
-            raise
-        return importlib.import_module(SOURCE_CHECKOUT + suffix)
+    """Import ``edingcnc_lang.kins[.module]``."""
+    return importlib.import_module(INSTALLED + (f".{module}" if module else ""))
 
 
 def header_dir() -> AbstractContextManager[Path]:

@@ -82,7 +82,7 @@ def arc_frame_rows(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]
 
     The planner and the motion stage read a batch's arcs as columns (``motion.arc_table``): a frame per
     arc, each the very numbers ``arc_geometry(...).frame`` gives.  The reference for
-    ``speedups.arc_frame_rows``."""
+    ``_speedups.arc_frame_rows``."""
     rows: list[float] = []
     previous = start
     for index, arc in enumerate(arcs):

@@ -1,7 +1,7 @@
 """The language knowledge base: G/M codes, parameters, commands and functions, as data.
 
 Hover, completion and ``ecnc`` help texts all read these records; the rows live in
-``gm.py``, ``variables.py`` and ``commands.py``, the modal groups and read-only ranges
+``gm.py``, ``variables.py`` and ``command_texts.py``, the modal groups and read-only ranges
 in ``tables.py``.  ``describe("G38.2")``, ``describe("#5067")``, ``describe("dlgmsg")``
 give the explanation as plain text.
 """

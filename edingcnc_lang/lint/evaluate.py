@@ -1,4 +1,5 @@
-"""Static evaluation of expressions with unknown values (three-valued, never raises).
+"""Static evaluation of expressions with unknown values (three-valued, never raises), with the
+interpreter's own arithmetic (``machine.evaluator.BINARY``).
 
 The linter folds literal indices such as ``#[5400 + 5]`` and decides which
 branch of ``If [[#5380 == 0] and [#5397 == 0]]`` runs in simulation without
@@ -7,43 +8,12 @@ knowing the other parameters: anything it cannot know is ``None``, and
 """
 from __future__ import annotations
 
-import math
-import operator
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang.machine.evaluator import BINARY, COMPARE, Undefined
 
 Lookup = Callable[[int], "float | None"]
-
-
-def _div(a: float, b: float) -> float | None:
-    return a / b if b else None
-
-
-def _mod(a: float, b: float) -> float | None:
-    if not b:
-        return None
-    r = math.fmod(a, b)
-    return r + abs(b) if r < 0 else r
-
-
-def _pow(a: float, b: float) -> float | None:
-    try:
-        result = a ** b
-    except (OverflowError, ZeroDivisionError):
-        return None
-    return result if isinstance(result, float | int) else None
-
-
-_ARITHMETIC: Mapping[str, Callable[[float, float], float | None]] = {
-    "+": operator.add, "-": operator.sub, "*": operator.mul, "/": _div, "MOD": _mod, "**": _pow,
-    "XOR": lambda a, b: float(bool(a) != bool(b)),
-}
-
-_COMPARE: Mapping[str, Callable[[float, float], bool]] = {
-    "==": operator.eq, "<>": operator.ne, "<": operator.lt, ">": operator.gt,
-    "<=": operator.le, ">=": operator.ge,
-}
 
 
 def unknown(_index: int) -> float | None:
@@ -65,7 +35,7 @@ def evaluate(expr: n.Expr, lookup: Lookup = unknown) -> float | None:
         left, right = evaluate(expr.left, lookup), evaluate(expr.right, lookup)
         if left is None or right is None:
             return None
-        return float(_COMPARE[expr.op](left, right))
+        return float(COMPARE[expr.op](left, right))
     if type(expr) is n.Unary:
         value = evaluate(expr.operand, lookup)
         return None if value is None else (-value if expr.op == "-" else value)
@@ -82,7 +52,10 @@ def _binary(expr: n.Binary, lookup: Lookup) -> float | None:
         return None if left is None or right is None else 1.0 - decisive
     if left is None or right is None:
         return None
-    return _ARITHMETIC[op](left, right)
+    try:  # the interpreter's arithmetic; what has no value there is not known here
+        return BINARY[op](left, right)
+    except Undefined:
+        return None
 
 
 def constant_index(param: n.Param) -> float | None:

@@ -17,6 +17,7 @@ from operator import itemgetter
 from typing import NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
+from edingcnc_lang import speedups
 from edingcnc_lang.records import record
 from edingcnc_lang.syntax.fastparse import COMPILED_READER
 from edingcnc_lang.machine.tables import code_key
@@ -153,9 +154,7 @@ def _compiled() -> Callable[[_Survey, Sequence[n.Stmt], Scope], None] | None:
     """``_Survey.visit`` on the compiled reader when it runs (see fastparse), else None."""
     if not COMPILED_READER:
         return None
-    from edingcnc_lang import _lexer  # type: ignore[attr-defined]
-
-    return partial(_lexer.survey, code_key, literal_index, Scope, simulation_branches, _other_reads, BlockCodes,
+    return partial(speedups.LEXER.survey, code_key, literal_index, Scope, simulation_branches, _other_reads, BlockCodes,
                    END_OF_PROGRAM, GUARD_PARAMS)
 
 

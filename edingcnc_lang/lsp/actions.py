@@ -33,7 +33,7 @@ class Edit:
 
 
 @dataclass(frozen=True)
-class Finding:
+class ShownDiagnostic:
     """What a code action knows about one diagnostic the editor shows."""
 
     code: str
@@ -49,7 +49,7 @@ class Fix:
     preferred: bool = True
 
 
-Fixer = Callable[[Finding, Sequence[str]], list[Fix]]
+Fixer = Callable[[ShownDiagnostic, Sequence[str]], list[Fix]]
 
 
 def _insert_line(lines: Sequence[str], before: int, text: str) -> Edit:
@@ -62,7 +62,7 @@ def _insert_line(lines: Sequence[str], before: int, text: str) -> Edit:
     return Edit(last, len(lines[last]), len(lines[last]), "\n" + text)
 
 
-def _close_block(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _close_block(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     match = _UNCLOSED.match(finding.message)
     if not match:
         return []
@@ -72,11 +72,11 @@ def _close_block(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return [Fix(f"Add the missing {closer}", (_insert_line(lines, where, indent + closer),))]
 
 
-def _end_sub_first(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _end_sub_first(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     return [Fix("Add EndSub before this Sub", (_insert_line(lines, finding.line, "EndSub"),))]
 
 
-def _drop_hash(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _drop_hash(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     text = lines[finding.line] if finding.line < len(lines) else ""
     if finding.col < len(text) and text[finding.col] == "#":
         edit = Edit(finding.line, finding.col, finding.col + 1, "")
@@ -84,7 +84,7 @@ def _drop_hash(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return []
 
 
-def _add_brackets(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _add_brackets(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     fragment, better = _FRAGMENT.search(finding.message), _BRACKETS.search(finding.message)
     text = lines[finding.line] if finding.line < len(lines) else ""
     if not fragment or not better or not text.startswith(fragment.group(1), finding.col):
@@ -93,7 +93,7 @@ def _add_brackets(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return [Fix(f"Write {better.group(1)}", (Edit(finding.line, finding.col, end, better.group(1)),))]
 
 
-def _drop_extra_brackets(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _drop_extra_brackets(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     count = _EXTRA.match(finding.message)
     text = lines[finding.line] if finding.line < len(lines) else ""
     if not count:
@@ -104,7 +104,7 @@ def _drop_extra_brackets(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return [Fix("Remove the extra ']'", (Edit(finding.line, extra.start(), extra.end(), ""),))]
 
 
-def _bracket_condition(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _bracket_condition(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     text = lines[finding.line] if finding.line < len(lines) else ""
     code, _comment, _paren = split_comment(text)
     match = _CONDITION.match(code)
@@ -118,12 +118,12 @@ def _bracket_condition(finding: Finding, lines: Sequence[str]) -> list[Fix]:
     return [Fix(f"Write {match.group(1)} {fixed}", (Edit(finding.line, match.start(2), match.end(2), fixed),))]
 
 
-def _unit_line(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _unit_line(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     return [Fix(f"Add ';@unit {unit}' as the first line", (Edit(0, 0, 0, f";@unit {unit}\n"),), unit == "mm")
             for unit in ("mm", "inch")]
 
 
-def _comment_out(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _comment_out(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     text = lines[finding.line] if finding.line < len(lines) else ""
     start = len(_INDENT.match(text).group())  # type: ignore[union-attr]
     return [Fix("Make the line a comment", (Edit(finding.line, start, start, "; "),))]
@@ -149,13 +149,13 @@ def line_end(text: str | None) -> str:
     return "\r\n" if first > 0 and text[first - 1] == "\r" else "\n"  # type: ignore[index]
 
 
-def fixes(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def fixes(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     """The repairs for one finding, then the ``; noqa`` that silences it on its line."""
     fixer = FIXERS.get(finding.code)
     return (fixer(finding, lines) if fixer else []) + _noqa(finding, lines)
 
 
-def _noqa(finding: Finding, lines: Sequence[str]) -> list[Fix]:
+def _noqa(finding: ShownDiagnostic, lines: Sequence[str]) -> list[Fix]:
     if finding.line >= len(lines) or not finding.code:
         return []
     text = lines[finding.line]

@@ -384,7 +384,7 @@ def _code_actions(ls: EcncServer, params: t.CodeActionParams) -> list[t.CodeActi
         if diagnostic.source != SOURCE:
             continue
         start = ls.codec().position_from_client_units(lines, diagnostic.range.start)
-        finding = actions.Finding(str(diagnostic.code or ""), start.line, start.character, diagnostic.message)
+        finding = actions.ShownDiagnostic(str(diagnostic.code or ""), start.line, start.character, diagnostic.message)
         for fix in actions.fixes(finding, lines) + variables.annotation_fixes(ls.model, path, lines, 0, 0, finding):
             edits = [t.TextEdit(range=ls.client_range(path, e.line, e.start, e.end),
                                 new_text=e.text.replace("\n", eol)) for e in fix.edits]

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from edingcnc_lang.knowledge import parameter_number
 from edingcnc_lang.lint.project import Project
 from edingcnc_lang.lint.variable_uses import VariableUses
-from edingcnc_lang.lsp.actions import Fix, Finding, _insert_line
+from edingcnc_lang.lsp.actions import Fix, ShownDiagnostic, _insert_line
 from edingcnc_lang.lsp.completion import Item
 from edingcnc_lang.lsp.lexer import token_at, tokens
 from edingcnc_lang.lsp.model import LanguageModel, Place, file_name
@@ -187,7 +187,7 @@ def check_new_name(name: str) -> str | None:
 
 
 def annotation_fixes(model: LanguageModel, path: str, lines: Sequence[str], line: int, col: int,
-                     finding: Finding | None = None) -> list[Fix]:
+                     finding: ShownDiagnostic | None = None) -> list[Fix]:
     """``;@var #n name`` added near the top of the file, for the ``#n`` at the cursor (or a V305
     finding's number), named after what the map infers."""
     number = _number_from(finding) if finding is not None else _number_at(model, path, line, col)
@@ -203,7 +203,7 @@ def annotation_fixes(model: LanguageModel, path: str, lines: Sequence[str], line
                 preferred=finding is not None)]
 
 
-def _number_from(finding: Finding) -> int | None:
+def _number_from(finding: ShownDiagnostic) -> int | None:
     match = _NUMBER_IN_V305.match(finding.message) if finding.code == "V305" else None
     return int(match.group(1)) if match else None
 

@@ -9,7 +9,7 @@ general path would have made, with the same spindle and caller.  The step budget
 GetJobDistance are counted by the general path's own helpers (``MachineState.travelled``); any
 other line, and every error, goes to the general path, so messages stay exactly the same.
 
-``plain_moves`` and ``_arc_of_words`` here are the references; ``speedups.plain_moves`` and
+``plain_runs.plain_moves`` and ``_arc_of_words`` here are the references; ``_speedups.plain_moves`` and
 ``_speedups.plain_arc`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
 and ``ECNC_PURE_PYTHON`` is not set.  The equivalence tests run both and compare whole moves with
 the general path's.
@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
+from typing import Any
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
@@ -26,7 +27,7 @@ from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import plain_block, plain_words
 from edingcnc_lang.machine.geometry import TINY, ArcError, radius_tolerance
-from edingcnc_lang.machine.plain_runs import NO_MOTION
+from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.machine.state import (
     AXIS_SET,
     CENTER_WORDS,
@@ -46,6 +47,7 @@ from edingcnc_lang.machine.state import (
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
 _COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
+_PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_moves  # the targets of a run of plain lines
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
 # length (``path_length``, what GetJobDistance counts).
 ArcLine = tuple[int, float, Pose, Arc, float]
@@ -197,7 +199,7 @@ class BulkPath(MachineState):
         arc_next = False
         while index < len(lines) and room > 0:
             if not arc_next:
-                index, done, after, feed, *columns = speedups.plain_moves(
+                index, done, after, feed, *columns = _PLAIN_MOVES(
                     lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
                     feed, room)
                 room -= done
@@ -273,7 +275,7 @@ class BulkPath(MachineState):
         """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
-        The reference for ``speedups.plain_arc``: the general path's own target and ``arc_plan``.
+        The reference for ``_speedups.plain_arc``: the general path's own target and ``arc_plan``.
         """
         pairs = plain_words(text)
         words = {letter.upper(): float(number) for letter, number in pairs}
@@ -307,5 +309,5 @@ class BulkPath(MachineState):
         return G_1 if kind == "linear" else G_0
 
 
-# The statements this part executes (machine.py builds the dispatch table from every part's).
+# The statements this part executes (interpreter.py builds the dispatch table from every part's).
 STATEMENTS: StatementTable = {n.PlainRun: BulkPath._exec_plain_run}

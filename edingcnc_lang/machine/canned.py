@@ -8,7 +8,8 @@ from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Event
+from edingcnc_lang.canon import AXES, PLANES
+from edingcnc_lang.events import DwellEvent, PauseEvent, SpindleEvent
 from edingcnc_lang.machine.state import CENTER_WORDS, G_91, G_93, G_99, MachineState, PLANE_OF, format_value
 
 G_74 = t.code_key(74)
@@ -28,9 +29,6 @@ def _cycles() -> ModuleType:
 
 class CannedCycles(MachineState):
     """Every hole and peck counts against the step budget."""
-
-    cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
-    cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
 
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         """A cycle line's holes; their straight moves go to the canon as one batch where the bulk path's would
@@ -131,7 +129,7 @@ class CannedCycles(MachineState):
         at[normal] = self.work_position()[normal]
         programmed = self.spindle  # what "spindle_start" turns back to
         switched = {"spindle_stop": 5, "spindle_start": programmed, "spindle_reverse": 3 if programmed == 4 else 4}
-        tapping = {"rigid_tap": True} if self.cycle_pitch else {}
+        tapping = True if self.cycle_pitch else None
         for step in steps:
             if step.kind in ("rapid", "feed", "tap"):
                 self._cycle_move(step.kind, at, normal, step.level, feed)
@@ -142,14 +140,13 @@ class CannedCycles(MachineState):
                 self._move("rapid", self.to_machine(at))
             elif step.kind == "dwell":
                 self.flush_pending()
-                self.canon.event(Event("dwell", self.path, self.line, {"seconds": step.level}))
+                self.canon.event(DwellEvent(self.path, self.line, step.level))
             elif step.kind == "pause":  # G88: the operator retracts by hand, then presses Start
                 self.flush_pending()
-                self.canon.event(Event("pause", self.path, self.line, {"m": 0, "cycle": "G88"}))
+                self.canon.event(PauseEvent(self.path, self.line, 0, "G88"))
             else:  # the spindle stops, starts or reverses: the moves after it carry its new speed
                 self.flush_pending()
                 self.spindle = switched[step.kind]
                 on = self.spindle != 5
-                self.canon.event(Event("spindle", self.path, self.line, {
-                    "m": self.spindle, "speed": self.speed, "rpm": self.rpm_at(self.pos[0]) if on else 0.0,
-                    **tapping}))
+                self.canon.event(SpindleEvent(self.path, self.line, self.spindle, self.speed,
+                                              self.rpm_at(self.pos[0]) if on else 0.0, tapping))

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import CutterCompEvent
 from edingcnc_lang.machine.state import (
     G_40,
     G_41,
@@ -37,7 +37,7 @@ class CompensationSteps(MachineState):
                           span: n.Span) -> None:
         if code == G_40:
             if self.modal["cutter_comp"] != G_40:
-                self.canon.event(Event("cutter_comp", self.path, self.line, {"side": "off"}))
+                self.canon.event(CutterCompEvent(self.path, self.line, "off"))
             self.modal["cutter_comp"] = code
             return
         if self.modal["cutter_comp"] != G_40:
@@ -53,14 +53,13 @@ class CompensationSteps(MachineState):
         radius = self._comp_radius(code, words, span)
         self.modal["cutter_comp"] = code
         side = "left" if code in (G_41, G_41_1) else "right"
-        data: dict[str, object] = {"side": side, "radius": radius, "plane": plane, "inch": self.inch}
-        if self.config.lathe and plane == "XZ":  # the nose's controlled point (manual pp. 5-6)
-            data["orientation"] = self._comp_orientation(code, words)
-        self.canon.event(Event("cutter_comp", self.path, self.line, data))
+        orientation = self._comp_orientation(code, words) if self.config.lathe and plane == "XZ" else None
+        self.canon.event(CutterCompEvent(self.path, self.line, side, radius, plane, self.inch, orientation))
 
     def _comp_orientation(self, code: int, words: Mapping[str, float]) -> int:
         """The lathe tool's orientation (#5700 + n): of tool D for G41/G42 (default the tool in the
-        turret), of the tool in the turret for G41.1/G42.1 (whose D is a diameter)."""
+        turret), of the tool in the turret for G41.1/G42.1 (whose D is a diameter).  It places the
+        nose's controlled point (manual pp. 5-6)."""
         tool = int(self.params.read(t.TOOL_CURRENT)) if code in DIAMETER_CODES else \
             int(words.get("D", self.params.read(t.TOOL_CURRENT)))
         return int(self.params.read(t.TOOL_ORIENTATION + tool)) if tool else 0
@@ -79,5 +78,5 @@ class CompensationSteps(MachineState):
         return self.params.read(t.TOOL_DIAMETER + int(tool)) / 2.0 if tool else 0.0
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"plane": CompensationSteps._step_plane, "cutter_comp": CompensationSteps._step_cutter_comp}

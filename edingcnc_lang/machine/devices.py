@@ -12,7 +12,7 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import LaserEvent, ModbusEvent, PrinterEvent, ThcEvent
 from edingcnc_lang.machine.evaluator import param_index
 from edingcnc_lang.machine.state import CommandTable, MachineState, StepTable, format_value
 
@@ -30,19 +30,14 @@ class Devices(MachineState):
 
     def _step_laser(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         """M10 laser off, M11 on (3.7.11); under ``LaserEngrave on`` they switch on the moves' path."""
-        self.canon.event(Event("laser", self.path, self.line, {"m": code // 10, "on": code == 110}))
+        self.canon.event(LaserEvent(self.path, self.line, code // 10, code == 110))
 
     def _step_thc(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         """M20 torch height control off, M21 on, M22 Q the set voltage (3.7.10); M23 reported as given."""
         m = code // 10
-        data: dict[str, object] = {"m": m}
-        if m in (20, 21):
-            data["on"] = m == 21
-        if "Q" in words:
-            data["q"] = words["Q"]
-        elif m == 22:
+        if m == 22 and "Q" not in words:
             raise self.fail("M22 needs Q, the torch height control's set voltage", span)
-        self.canon.event(Event("thc", self.path, self.line, data))
+        self.canon.event(ThcEvent(self.path, self.line, m, m == 21 if m in (20, 21) else None, words.get("Q")))
 
     def _step_printer(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         """3D printing (3.7.12): S is a temperature (degrees C) or the fan's PWM on the 0..255 scale (the event
@@ -54,16 +49,15 @@ class Devices(MachineState):
         if value < 0 or (fan and value > FAN_FULL):
             raise self.fail(f"M{m} S{format_value(value)}: the {'fan value must lie in 0..255 (255 = 100 %)' if fan else 'temperature must not be negative'}", span)
         self.heaters[target] = value
-        data: dict[str, object] = {"m": m, target: value, "unit": unit}
-        if fan:
-            data["percent"] = value * 100.0 / FAN_FULL
-        self.canon.event(Event("printer", self.path, self.line, {**data, "wait": m in WAITS}))
+        heat = {name: value if name == target else None for name in ("extruder", "bed", "extruder_max", "fan")}
+        self.canon.event(PrinterEvent(self.path, self.line, m, heat["extruder"], heat["bed"], heat["extruder_max"],
+                                      heat["fan"], unit, value * 100.0 / FAN_FULL if fan else None, m in WAITS))
 
     def _heaters_off(self) -> None:
         """M30 (3.7.1: "Alle 3D-Drucker heizen AUS")."""
         if any(self.heaters.values()):
             self.heaters = {}
-            self.canon.event(Event("printer", self.path, self.line, {"m": 30, "off": True}))
+            self.canon.event(PrinterEvent(self.path, self.line, 30, off=True))
 
     def _select_spindle(self, m: int) -> None:
         """M90..M97: #5390, and the selected spindle's offsets move the controlled point (3.7.2)."""
@@ -77,7 +71,7 @@ class Devices(MachineState):
         """``modbus s<slave> f<function> a<address> n<count> u<variable>`` reads (f1..f4) into #u..;
         the host's modbus callback answers, else 0 (no bus in simulation).  Every transfer is an event."""
         words = {k.lower(): float(v) for k, v in _MODBUS_WORD.findall(stmt.args)}
-        data: dict[str, object] = {"args": stmt.args, **{k: v for k, v in words.items()}}
+        values: tuple[float, ...] | None = None
         function = int(words.get("f", 0))
         if function in MODBUS_READS:
             if "u" not in words:
@@ -88,16 +82,15 @@ class Devices(MachineState):
                 raise self.fail("modbus n: read 1..125 values", stmt.span)
             first = param_index(words["u"], stmt.span)
             read = self.host.modbus
-            values = list(read(int(words.get("s", 0)), function, int(words.get("a", 0)), count)) if read else []
-            values = (values + [0.0] * count)[:count]
+            read_values = list(read(int(words.get("s", 0)), function, int(words.get("a", 0)), count)) if read else []
+            values = tuple((read_values + [0.0] * count)[:count])
             for offset, value in enumerate(values):
                 self.params.write(param_index(first + offset, stmt.span), float(value), self.where(stmt.span))
-            data["values"] = values
-        self.canon.event(Event("modbus", self.path, self.line, data))
+        self.canon.event(ModbusEvent(self.path, self.line, stmt.args, words, values))
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"laser": Devices._step_laser, "thc": Devices._step_thc, "printer": Devices._step_printer}
 
-# Named commands of this part, by lower-case name (commands.py dispatches them).
+# Named commands of this part, by lower-case name (named_commands.py dispatches them).
 COMMANDS: CommandTable = {"modbus": Devices._modbus}

@@ -7,6 +7,7 @@ ever flows into a move and no Python exception text reaches the user.
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from typing import Protocol
 
@@ -73,44 +74,50 @@ FUNCTIONS: dict[str, Callable[[float, n.Span], float]] = {
 }
 
 
-def _divide(a: float, b: float, span: n.Span) -> float:
+class Undefined(ArithmeticError):
+    """An operation of the dialect with no value (division by zero, ...); the message says why.  The
+    interpreter reports it at the operator, the linter (lint/evaluate.py) takes it for "not known"."""
+
+
+def _divide(a: float, b: float) -> float:
     if b == 0.0:
-        raise fail(f"division by zero ({a!r} / 0)", span)
+        raise Undefined(f"division by zero ({a!r} / 0)")
     return a / b
 
 
-def _mod(a: float, b: float, span: n.Span) -> float:
+def _mod(a: float, b: float) -> float:
     if b == 0.0:
-        raise fail(f"{a!r} MOD 0: division by zero", span)
+        raise Undefined(f"{a!r} MOD 0: division by zero")
     result = math.fmod(a, b)
     return result + abs(b) if result < 0 else result
 
 
-def _power(a: float, b: float, span: n.Span) -> float:
+def _power(a: float, b: float) -> float:
     try:
         result = a ** b
     except (OverflowError, ZeroDivisionError):
-        raise fail(f"{a!r} ** {b!r} has no finite value", span) from None
+        raise Undefined(f"{a!r} ** {b!r} has no finite value") from None
     if isinstance(result, complex):
-        raise fail(f"{a!r} ** {b!r}: a negative number to a fractional power", span)
+        raise Undefined(f"{a!r} ** {b!r}: a negative number to a fractional power")
     return float(result)
 
 
-BINARY: dict[str, Callable[[float, float, n.Span], float]] = {
-    "+": lambda a, b, _s: a + b,
-    "-": lambda a, b, _s: a - b,
-    "*": lambda a, b, _s: a * b,
+# The dialect's arithmetic, the one table of it: the interpreter, the linter's folding (lint/evaluate.py)
+# and through it the language server's hover evaluate with these.
+BINARY: dict[str, Callable[[float, float], float]] = {
+    "+": operator.add,
+    "-": operator.sub,
+    "*": operator.mul,
     "/": _divide,
     "MOD": _mod,
     "**": _power,
-    "AND": lambda a, b, _s: 1.0 if a != 0.0 and b != 0.0 else 0.0,
-    "OR": lambda a, b, _s: 1.0 if a != 0.0 or b != 0.0 else 0.0,
-    "XOR": lambda a, b, _s: 1.0 if (a != 0.0) != (b != 0.0) else 0.0,
+    "AND": lambda a, b: 1.0 if a != 0.0 and b != 0.0 else 0.0,
+    "OR": lambda a, b: 1.0 if a != 0.0 or b != 0.0 else 0.0,
+    "XOR": lambda a, b: 1.0 if (a != 0.0) != (b != 0.0) else 0.0,
 }
 
 COMPARE: dict[str, Callable[[float, float], bool]] = {
-    "==": lambda a, b: a == b, "<>": lambda a, b: a != b, "<": lambda a, b: a < b,
-    ">": lambda a, b: a > b, "<=": lambda a, b: a <= b, ">=": lambda a, b: a >= b,
+    "==": operator.eq, "<>": operator.ne, "<": operator.lt, ">": operator.gt, "<=": operator.le, ">=": operator.ge,
 }
 
 
@@ -127,7 +134,10 @@ class Evaluator:
         if kind is n.Param:
             return self.params.read(self.index(expr))  # type: ignore[arg-type]
         if kind is n.Binary:
-            result = BINARY[expr.op](self.value(expr.left), self.value(expr.right), expr.span)  # type: ignore[union-attr]
+            try:
+                result = BINARY[expr.op](self.value(expr.left), self.value(expr.right))  # type: ignore[union-attr]
+            except Undefined as why:
+                raise fail(str(why), expr.span) from None  # type: ignore[union-attr]
             if math.isinf(result) or math.isnan(result):
                 raise fail(f"the result of {expr.op} is not a finite number", expr.span)  # type: ignore[union-attr]
             return result

@@ -23,7 +23,7 @@ class ControlFlow(MachineState):
             for stmt in statements:
                 kind = type(stmt)
                 if kind is n.PlainRun:  # a chunk of lines, each counted as a statement
-                    if self.observer is not None and self.observer.line_by_line(self, stmt):  # type: ignore[arg-type]
+                    if self.observer is not None and self.observer.line_by_line(self.view, stmt):  # type: ignore[arg-type]
                         self._exec_plain_lines(stmt)  # type: ignore[arg-type]
                     else:
                         self._exec_plain_run(stmt)  # type: ignore[arg-type]
@@ -45,7 +45,7 @@ class ControlFlow(MachineState):
         observer = self.observer
         try:
             if observer is not None:
-                observer.call(self, frame, sub)
+                observer.call(self.view, frame, sub)
             self.execute_body(sub.body)
         except EcncError as err:
             err.notes = (*err.notes, f"in Sub {sub.name}, called from {frame.path}:{frame.line}")
@@ -53,7 +53,7 @@ class ControlFlow(MachineState):
             raise
         finally:
             if observer is not None:
-                observer.ret(self, frame)
+                observer.ret(self.view, frame)
             self.stack.pop()
 
     def execute_body(self, body: tuple[n.Stmt, ...]) -> None:
@@ -67,13 +67,13 @@ class ControlFlow(MachineState):
         if self.max_steps is not None and self.steps > self.max_steps:
             self.spend(0, span)  # reports the exhausted budget
         if self.observer is not None:
-            self.observer.statement(self, stmt)
+            self.observer.statement(self.view, stmt)
         self._EXECUTE[type(stmt)](self, stmt)
 
     def _condition(self, stmt: n.If | n.While) -> bool:
         taken = self.evaluator.value(stmt.cond) != 0.0
         if self.observer is not None:
-            self.observer.branch(self, stmt, taken)
+            self.observer.branch(self.view, stmt, taken)
         return taken
 
     def _exec_if(self, stmt: n.If) -> None:
@@ -97,7 +97,7 @@ class ControlFlow(MachineState):
         raise self.fail(f"Sub {stmt.name} is defined inside a block; subs must be at the top level", stmt.span)
 
 
-# The statements this part executes (machine.py builds the dispatch table from every part's).
+# The statements this part executes (interpreter.py builds the dispatch table from every part's).
 STATEMENTS: StatementTable = {n.If: ControlFlow._exec_if, n.While: ControlFlow._exec_while,
                               n.GoSub: ControlFlow._exec_gosub, n.Sub: ControlFlow._exec_sub,
                               n.BadLine: ControlFlow._exec_bad_line}

@@ -35,13 +35,13 @@ from edingcnc_lang.machine.line import LineWords
 from edingcnc_lang.machine.messages import Messages
 from edingcnc_lang.machine.moves import Moves
 from edingcnc_lang.machine.offsets import CoordinateSystems
-from edingcnc_lang.machine.scaling_words import Scaling
+from edingcnc_lang.machine.scaling_words import ScalingWords
 from edingcnc_lang.machine.spindle_modes import SpindleModes
 from edingcnc_lang.machine.steps import LineSteps
 from edingcnc_lang.machine.threads import Threading
 
 
-class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, Scaling, CoordinateSystems,
+class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, ScalingWords, CoordinateSystems,
                   Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp, Devices):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 

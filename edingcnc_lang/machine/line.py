@@ -143,5 +143,5 @@ class LineWords(MachineState):
                 step(words[letter], words, {}, span)
 
 
-# The statements this part executes (machine.py builds the dispatch table from every part's).
+# The statements this part executes (interpreter.py builds the dispatch table from every part's).
 STATEMENTS: StatementTable = {n.Block: LineWords._exec_block, n.PlainBlock: LineWords._exec_plain}

@@ -2,20 +2,20 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from datetime import datetime
+from pathlib import Path
 from typing import TextIO
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import DialogEvent, ErrorEvent, LogEvent, MessageEvent, MsgEvent, WarnEvent
 from edingcnc_lang.errors import JobAborted, Location
 from edingcnc_lang.machine.evaluator import param_index
 from edingcnc_lang.machine.job_files import job_file, open_job_file
 from edingcnc_lang.syntax.input_limits import MAX_LOG_BYTES
 from edingcnc_lang.host import DialogAnswer, DialogField, checked_answer
 from edingcnc_lang.syntax.dialogs import dialog_fields
-from edingcnc_lang.machine.state import MachineState, format_value, StatementTable
+from edingcnc_lang.machine.state import MachineState, MessageKind, format_value, StatementTable
 
 STAMP_FORMAT = "%Y-%m-%d %H:%M:%S"
 
@@ -31,12 +31,16 @@ class Messages(MachineState):
         """``%d``: the date and time now, as ``YYYY-MM-DD HH:MM:SS`` (sortable, the same everywhere)."""
         return (self.host.clock or datetime.now)().strftime(STAMP_FORMAT)
 
-    def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None:
-        event = Event(kind, self.path, self.line, {"text": text, **(data or {})})
+    def message(self, kind: MessageKind, text: str) -> None:
+        """A ``msg``, ``warn`` or ``error`` message (``MESSAGES``) at the current line."""
+        self.tell(MESSAGES[kind](self.path, self.line, text))
+
+    def tell(self, event: MessageEvent) -> None:
+        """Every message goes here: to the run's messages, the canon and the host."""
         self.messages.append(event)
         self.canon.event(event)
         if self.host.message:
-            self.host.message(kind, text, self.path, self.line)
+            self.host.message(event.kind, event.text, self.path, self.line)
 
     def _exec_message(self, stmt: n.Message) -> None:
         text = self._text(stmt.items)
@@ -74,8 +78,8 @@ class Messages(MachineState):
             for index, value in answer.values.items():
                 self.params.write(index, value, self.where(stmt.span))
         self.params.set(t.DIALOG_RESULT, 1.0 if answer.ok else -1.0)
-        self.message("dialog", title, {"ok": answer.ok,
-                                          "fields": {f.label: self.params.read(f.index) for f in fields}})
+        self.tell(DialogEvent(self.path, self.line, title, answer.ok,
+                              {f.label: self.params.read(f.index) for f in fields}))
 
     def _exec_logfile(self, stmt: n.LogFile) -> None:
         mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
@@ -97,7 +101,13 @@ class Messages(MachineState):
                             "a run may write (a logmsg in a loop that does not end?)", span)
         with self._open_log(span) as handle:
             handle.write(line)
-        self.message("log", text, {"file": str(self._log_file)})
+        self.tell(LogEvent(self.path, self.line, text, str(self._log_file)))
+
+    def move_files(self, scratch: Path, folder: Path) -> None:
+        """The run's files go to ``folder`` from here on; a log file opened under ``scratch`` moves with them."""
+        self.log_dir = folder
+        if self._log_file is not None and scratch in self._log_file.parents:
+            self._log_file = folder / self._log_file.relative_to(scratch)
 
     def _open_log(self, span: n.Span, truncate: bool = False) -> TextIO:
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
@@ -108,6 +118,9 @@ class Messages(MachineState):
             raise self.fail(f"cannot write the log file {self._log_file}: {exc.strerror or exc}", span) from None
 
 
-# The statements this part executes, by method name (machine.py builds the dispatch table).
+# The messages ``message`` makes, by kind
+MESSAGES: dict[MessageKind, type[MessageEvent]] = {"msg": MsgEvent, "warn": WarnEvent, "error": ErrorEvent}
+
+# The statements this part executes, by method name (interpreter.py builds the dispatch table).
 STATEMENTS: StatementTable = {n.Message: Messages._exec_message, n.Dialog: Messages._exec_dialog,
                               n.LogFile: Messages._exec_logfile}

@@ -7,7 +7,8 @@ from collections.abc import Iterable
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, Event
+from edingcnc_lang.canon import AXES
+from edingcnc_lang.events import SWITCH_EVENTS, ExecEvent, ServiceEvent
 from edingcnc_lang.machine.evaluator import param_index
 from edingcnc_lang.machine import devices, zhc_commands as height_comp
 from edingcnc_lang.machine.state import CommandTable, MachineState, StatementTable
@@ -74,14 +75,14 @@ class Commands(MachineState):
             work_zero = tuple(self.offset()[:3])  # the bend knife's Z band is in work coordinates
             self.pos = list(self.canon.kinematics("TANKNIFE_ON" if stmt.on else "TANKNIFE_OFF", work_zero,
                                                   tuple(self.pos), self.path, self.line))
-        self.canon.event(Event(stmt.name, self.path, self.line, {"on": stmt.on}))
+        self.canon.event(SWITCH_EVENTS[stmt.name](self.path, self.line, stmt.on))
 
     def _exec_command(self, stmt: n.Command) -> None:
-        handler = COMMANDS.get(stmt.name)
-        if handler is not None:
-            handler(self, stmt)
-        else:
-            self.canon.event(Event(stmt.name, self.path, self.line, {"args": stmt.args}))
+        COMMANDS[stmt.name](self, stmt)
+
+    def _service(self, stmt: n.Command) -> None:
+        """``service``: nothing to simulate; reported as given."""
+        self.canon.event(ServiceEvent(self.path, self.line, stmt.args))
 
     def _get_tool_info(self, stmt: n.Command) -> None:
         parts = stmt.args.split()
@@ -127,7 +128,7 @@ class Commands(MachineState):
             result = subprocess.run(argv, check=False, stdin=subprocess.DEVNULL, stdout=_stderr_fd())
         except OSError as err:
             raise self.fail(f"Exec {stmt.args}: {err.strerror}", stmt.span) from None
-        self.canon.event(Event("exec", self.path, self.line, {"args": stmt.args, "status": result.returncode}))
+        self.canon.event(ExecEvent(self.path, self.line, stmt.args, result.returncode))
 
 
 def _stderr_fd() -> int:
@@ -151,11 +152,12 @@ def _is_digits(text: str) -> bool:
 COMMANDS: CommandTable = {"gettoolinfo": Commands._get_tool_info, "exec": Commands._exec_program,
                           "getjobdistance": Commands._get_job_distance,
                           "getheightcontrolvact": Commands._get_height_control,
-                          "getheightcontrolvset": Commands._get_height_control, **devices.COMMANDS,
+                          "getheightcontrolvset": Commands._get_height_control,
+                          "service": Commands._service, **devices.COMMANDS,
                           **height_comp.COMMANDS}
 
 
-# The statements this part executes, by method name (machine.py builds the dispatch table).
+# The statements this part executes, by method name (interpreter.py builds the dispatch table).
 STATEMENTS: StatementTable = {n.Home: Commands._exec_home, n.PrepareLinDeltaHome: Commands._exec_prepare_delta,
                               n.Kin: Commands._exec_kin, n.Switch: Commands._exec_switch,
                               n.Command: Commands._exec_command}

@@ -6,7 +6,7 @@ from contextlib import contextmanager
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import RotationEvent
 from edingcnc_lang.machine.geometry import TURNED_AXES, rotate_about, scale_about
 from edingcnc_lang.machine.state import (
     AXIS_INDEX,
@@ -175,7 +175,7 @@ class CoordinateSystems(MachineState):
         with self.machine_kept():
             if code == G_69:
                 if self.rotation is not None:
-                    self.canon.event(Event("rotation", self.path, self.line, {"on": False}))
+                    self.canon.event(RotationEvent(self.path, self.line, False))
                 self.rotation = None
                 self.params.set(t.G68_ACTIVE, 0.0)
             else:
@@ -214,8 +214,7 @@ class CoordinateSystems(MachineState):
         pivot = tuple(p + o for p, o in zip(self.rotation.pivot, offset))
         if pivot != self._sent_pivot:
             self._sent_pivot = pivot
-            self.canon.event(Event("rotation", self.path, self.line, {
-                "on": True, "pivot": pivot, "angle": self.rotation.angle, "plane": self.rotation.plane}))
+            self.canon.event(RotationEvent(self.path, self.line, True, pivot, self.rotation.angle, self.rotation.plane))
 
     def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         level = int(words.get("L", -1))

@@ -10,11 +10,11 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import ScalingEvent
 from edingcnc_lang.machine.state import G_51, MachineState, format_value, StepTable
 
 
-class Scaling(MachineState):
+class ScalingWords(MachineState):
     """G51 switches scaling on (or changes it), G50 and M2/M30 switch it off."""
 
     def _step_scaling(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -41,16 +41,15 @@ class Scaling(MachineState):
             self.params.set(t.SCALING_ACTIVE + index, value)
         self.params.set(t.G68_ACTIVE + 1, work[0])  # #5191/#5192: the G68/G51 point (manual 3.1, p. 3)
         self.params.set(t.G68_ACTIVE + 2, work[1])
-        self.canon.event(Event("scaling", self.path, self.line,
-                               {"on": True, "factors": self.scaling, "center": self.scaling_center}))
+        self.canon.event(ScalingEvent(self.path, self.line, True, self.scaling, self.scaling_center))
 
     def scaling_off(self) -> None:
         if self.scaling is not None:
             with self.machine_kept():
                 self.scaling = None
             self.params.set(t.SCALING_ACTIVE, 0.0)
-            self.canon.event(Event("scaling", self.path, self.line, {"on": False}))
+            self.canon.event(ScalingEvent(self.path, self.line, False))
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
-STEPS: StepTable = {"scaling": Scaling._step_scaling}
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
+STEPS: StepTable = {"scaling": ScalingWords._step_scaling}

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import SpindleEvent, SpindleSpeedEvent
 from edingcnc_lang.machine.spindle import (FT_PER_MIN, M_PER_MIN, SpindleError, clamp_rpm, css_limits,
                                           speed_clamp_message)
 from edingcnc_lang.machine.state import G_96, MachineState, format_value, StepTable
@@ -57,14 +57,14 @@ class SpindleModes(MachineState):
                 raise self.fail(str(err), span) from None
             per_unit = FT_PER_MIN if self.inch else M_PER_MIN
             self.css_setting = (self.speed * per_unit, max_rpm, min_rpm)
-            data = {"mode": "css", "speed": self.speed, "max_rpm": max_rpm}
+            mode, top = "css", max_rpm
         else:
             self.rpm = clamp_rpm(self.speed, config.spindle_max_rpm, config.spindle_min_rpm)
             if self.rpm != self.speed and self.speed > 0:
                 self.warn("G521", speed_clamp_message(self.speed, self.rpm, config.spindle_max_rpm), span)
-            data = {"mode": "rpm", "speed": self.speed, "max_rpm": config.spindle_max_rpm}
+            mode, top = "rpm", config.spindle_max_rpm
         rpm = self.rpm_at(self.pos[0])
-        self.canon.event(Event("spindle_speed", self.path, self.line, {**data, "rpm": rpm}))
+        self.canon.event(SpindleSpeedEvent(self.path, self.line, mode, self.speed, top, rpm))
 
     def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._spindle_turn(code // 10)
@@ -78,8 +78,7 @@ class SpindleModes(MachineState):
         on = self.spindle != 5
         rpm = self.rpm_at(self.pos[0])
         self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
-        self.canon.event(Event("spindle", self.path, self.line, {"m": self.spindle, "speed": self.speed,
-                                                                 "rpm": rpm if on else 0.0}))
+        self.canon.event(SpindleEvent(self.path, self.line, self.spindle, self.speed, rpm if on else 0.0))
 
     def spindle_state(self) -> dict[str, object]:
         """The spindle at the end of a run, for ``--json``: direction, mode and speed."""
@@ -89,5 +88,5 @@ class SpindleModes(MachineState):
                 "max_rpm": css[1] if css is not None else self.config.spindle_max_rpm}
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"spindle_mode": SpindleModes._step_spindle_mode, "spindle_speed": SpindleModes._step_spindle_speed, "spindle": SpindleModes._step_spindle}

@@ -3,7 +3,7 @@
 ``MachineState`` holds what one virtual machine knows (modal state, position, feed, tools,
 parameters, the call stack) and the few helpers every part needs: errors that name the line,
 the step budget and handing a move to the canon.  The parts of the interpreter (control flow,
-line steps, offsets, motion, ...) are mixins on top of it, assembled in ``machine.py``.
+line steps, offsets, motion, ...) are mixins on top of it, assembled in ``interpreter.py``.
 """
 from __future__ import annotations
 
@@ -12,11 +12,13 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from contextlib import AbstractContextManager
-from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
+from typing import TYPE_CHECKING, Any, ClassVar, Literal, NamedTuple
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Event, Move, Pose
+from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Move, Pose
+from edingcnc_lang.events import MessageEvent
+from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import Cancelled, Location, MachineError
@@ -24,7 +26,7 @@ from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
-from edingcnc_lang.machine.observe import Observer
+from edingcnc_lang.machine.observe import MachineView, Observer
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.bulk import PendingMoves
@@ -99,11 +101,14 @@ DEFAULT_MODAL = {"motion": G_0, "plane": G_17, "units": G_21, "cutter_comp": G_4
                  "distance": G_90, "feed_mode": G_94, "return_mode": G_98}
 
 
-# Dispatch tables of the parts (machine.py merges them): functions, not method names, so every
+# Dispatch tables of the parts (interpreter.py merges them): functions, not method names, so every
 # entry is checked by mypy and seen by dead-code tools.  The methods take the part's own type.
 StatementTable = dict[type, Callable[..., None]]      # statement type -> (machine, stmt)
 StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
 CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
+MessageKind = Literal["msg", "warn", "error"]       # what ``message`` says (events.MsgEvent, WarnEvent, ErrorEvent)
+
+
 class Turn(NamedTuple):
     """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
 
@@ -181,7 +186,7 @@ def fmt_point(point: tuple[float, float]) -> str:
 class MachineState:
     """What one virtual machine knows; create one Interpreter per job run."""
 
-    # Built by machine.py from the parts: statement type -> method, and the steps of a line in order.
+    # Built by interpreter.py from the parts: statement type -> method, and the steps of a line in order.
     _EXECUTE: ClassVar[StatementTable]
     _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
 
@@ -190,6 +195,7 @@ class MachineState:
                  simulation: bool = True, block_delete: bool = False, observer: Observer | None = None) -> None:
         self.canon = canon
         self.observer = observer
+        self.view = MachineView(self)  # what the observer is shown
         self.config = config or MachineConfig.default()
         self.host = host or Host()
         self.max_steps = max_steps
@@ -232,6 +238,9 @@ class MachineState:
         self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
+        self.cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
+        self.cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
+        self.zhc: ZhcTable | None = None         # the Z height compensation table (ZHCINIT, ZHCL)
         self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
         self.tanknife = False
@@ -246,7 +255,7 @@ class MachineState:
         # the runner sets it, an MDI session has no loaded job.
         self.job_tools: Callable[[], Sequence[int]] = tuple
         self.ended_by = "end of file"
-        self.messages: list[Event] = []
+        self.messages: list[MessageEvent] = []
         # told of each warning a line earns (a limit of the machine changed what it asked for); the
         # runner reports them as it reports load warnings; once per file and line
         self.on_warning: Callable[[Diagnostic], None] | None = None
@@ -473,7 +482,7 @@ class MachineState:
         return rate
 
     if TYPE_CHECKING:
-        # What the parts call on each other.  Each is defined once, in the part named; machine.py
+        # What the parts call on each other.  Each is defined once, in the part named; interpreter.py
         # assembles the parts into one class, and these declarations let mypy check every such call.
         def execute(self, stmt: n.Stmt) -> None: ...                                         # flow.py
         def call_sub(self, name: str, span: n.Span | None = None) -> None: ...              # flow.py
@@ -483,7 +492,8 @@ class MachineState:
         def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None: ...  # bulk.py
         def moves_held(self) -> AbstractContextManager[None]: ...                            # bulk.py
         def flush_pending(self) -> None: ...                                                 # bulk.py
-        def message(self, kind: str, text: str, data: Mapping[str, object] | None = None) -> None: ...  # messages.py
+        def message(self, kind: MessageKind, text: str) -> None: ...  # messages.py
+        def move_files(self, scratch: Path, folder: Path) -> None: ...  # messages.py
         def offset(self) -> list[float]: ...                                                 # offsets.py
         def _live_param(self, index: int) -> float: ...                                      # offsets.py
         def _offsets_changed(self) -> None: ...                                              # offsets.py

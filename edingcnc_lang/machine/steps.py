@@ -5,7 +5,8 @@ from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import (CoolantEvent, DwellEvent, EndEvent, MCodeEvent, OperatorWaitEvent, OutputEvent,
+                                  OverrideEvent, PathControlEvent, PauseEvent, ToolChangeEvent)
 from edingcnc_lang.host import checked_level
 from edingcnc_lang.machine.offsets import NON_MODAL
 from edingcnc_lang.machine.state import (
@@ -66,7 +67,7 @@ class LineSteps(MachineState):
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self.coolant = set() if code == 90 else self.coolant | {code // 10}
-        self.canon.event(Event("coolant", self.path, self.line, {"m": code // 10}))
+        self.canon.event(CoolantEvent(self.path, self.line, code // 10))
 
     def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         """M48..M53 (manual 3.7.5, p. 61): the planner follows the feed override (M48..M50), the spindle's
@@ -78,12 +79,10 @@ class LineSteps(MachineState):
         if m in (48, 49) or (m == 51 and (p is None or p >= 0)):
             self._spindle_override(m, p)
         if m in (50, 51) and p == 0:
-            self.canon.event(Event("operator_wait", self.path, self.line,
-                                   {"m": m, "override": "feed" if m == 50 else "spindle"}))
+            self.canon.event(OperatorWaitEvent(self.path, self.line, m, "feed" if m == 50 else "spindle"))
         elif m == 51 and p is not None and p < 0:
             self.spindle_override_on = False  # off; the value stays (p. 61)
-        data = {"m": m, **({"p": p} if p is not None else {})}
-        self.canon.event(Event("override", self.path, self.line, data))
+        self.canon.event(OverrideEvent(self.path, self.line, m, p))
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
@@ -96,14 +95,15 @@ class LineSteps(MachineState):
         tolerance = words["P"] * self.scale if "P" in words else self.config.g64_p
         if tolerance < 0:
             raise self.fail("G64 P: the path tolerance must be 0 or more", span)
-        data: dict[str, object] = {"mode": t.code_name("G", code), "p": tolerance}
+        extra: dict[str, float] = {}
         for letter in "QRSDF":
             if letter in words:
                 value = words[letter] * (self.scale if letter in t.G64_LENGTHS else 1.0)
                 if value < 0:
                     raise self.fail(f"G64 {letter}{format_value(words[letter])}: must be 0 or more", span)
-                data[letter.lower()] = value
-        self.canon.event(Event("path_control", self.path, self.line, data))
+                extra[letter.lower()] = value
+        self.canon.event(PathControlEvent(self.path, self.line, t.code_name("G", code), tolerance, extra.get("q"),
+                                          extra.get("r"), extra.get("s"), extra.get("d"), extra.get("f")))
 
     def _step_io(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._io(code // 10, words, span)
@@ -115,7 +115,7 @@ class LineSteps(MachineState):
             if "P" in words:  # manual 3.7.9 (p. 65): "P1 bedeutet AUX 1": the output that drives the brake
                 port = int(words["P"])
                 self.outputs[port] = m == 26
-                self.canon.event(Event("output", self.path, self.line, {"port": port, "on": m == 26, "pwm": None}))
+                self.canon.event(OutputEvent(self.path, self.line, port, m == 26, None))
         elif m == 100:  # manual 3.7.12: the axis resolution by a factor ("1,01 ist 1% mehr")
             factor = words.get("P", 1.0)
             if factor <= 0:
@@ -124,8 +124,7 @@ class LineSteps(MachineState):
             self.resolution_factor = factor
         elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
             self._select_spindle(m)
-        data = {"m": m, **({"p": words["P"]} if "P" in words else {})}  # M100 P: the axis resolution factor
-        self.canon.event(Event("m_code", self.path, self.line, data))
+        self.canon.event(MCodeEvent(self.path, self.line, m, words.get("P")))  # M100 P: the axis resolution factor
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         if code == G_4:
@@ -171,7 +170,7 @@ class LineSteps(MachineState):
         tool = self.selected_tool
         self.params.set(t.TOOL_RADIUS, self.params.read(t.TOOL_DIAMETER + tool) / 2.0 if tool else 0.0)
         self._tool_offsets_read()
-        self.canon.event(Event("tool_change", self.path, self.line, {"tool": tool, "previous": old}))
+        self.canon.event(ToolChangeEvent(self.path, self.line, tool, old))
 
     def _io(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         port = int(words.get("P", words.get("E", 0)))
@@ -180,8 +179,7 @@ class LineSteps(MachineState):
             return
         if code in (54, 55):
             self.outputs[port] = code == 54
-            self.canon.event(Event("output", self.path, self.line, {"port": port, "on": code == 54,
-                                                                     "pwm": words.get("Q")}))
+            self.canon.event(OutputEvent(self.path, self.line, port, code == 54, words.get("Q")))
         elif code == 56:
             try:
                 level = checked_level(self.host.read_input(port)) if self.host.read_input else 0.0
@@ -211,13 +209,13 @@ class LineSteps(MachineState):
         if not 0.0 <= duty <= 1000.0:
             raise self.fail(f"M54 E{port} Q{format_value(duty)}: the PWM value Q must lie in 0..1000", span)
         self.pwm[port] = duty
-        self.canon.event(Event("output", self.path, self.line, {"port": port, "on": duty > 0, "pwm": duty}))
+        self.canon.event(OutputEvent(self.path, self.line, port, duty > 0, duty))
 
     def _dwell(self, words: Mapping[str, float], span: n.Span) -> None:
         if "P" not in words or words["P"] < 0:
             raise self.fail("G4 needs a dwell time P (seconds) of 0 or more", span)
         seconds = words["P"] / 1000.0 if self.config.g4_in_milliseconds else words["P"]
-        self.canon.event(Event("dwell", self.path, self.line, {"seconds": seconds}))
+        self.canon.event(DwellEvent(self.path, self.line, seconds))
 
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
@@ -271,27 +269,27 @@ class LineSteps(MachineState):
 
     def _stop(self, code: int, span: n.Span) -> None:
         if code in PAUSE_CODES:
-            self.canon.event(Event("pause", self.path, self.line, {"m": code // 10}))
+            self.canon.event(PauseEvent(self.path, self.line, code // 10))
             return
         # Manual 3.7.1: G17 (G18 on a lathe), G90, G94, M48, G40, M5, G1, M9; the coordinate system is
         # kept; M60 keeps the spindle and the coolant on (nesting).  M2 ends as M30 does.
         for group, reset in (("plane", G_18 if self.config.lathe else G_17), ("distance", G_90), ("feed_mode", G_94),
                              ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
-        self.canon.event(Event("override", self.path, self.line, {"m": 48}))
+        self.canon.event(OverrideEvent(self.path, self.line, 48))
         self._spindle_override(48, None)
         if code != M_60:
             self.spindle = 5
             if self.coolant:  # M9 (3.7.1), as an event like the program's own M9
-                self.canon.event(Event("coolant", self.path, self.line, {"m": 9}))
+                self.canon.event(CoolantEvent(self.path, self.line, 9))
             self.coolant = set()
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
         self._heaters_off()
         self.ended_by = f"M{code // 10}"
-        self.canon.event(Event("end", self.path, self.line, {"m": code // 10}))
+        self.canon.event(EndEvent(self.path, self.line, code // 10))
         raise ProgramEnd()
 
 
-# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (machine.py merges them).
+# The order-of-execution steps this part performs, by tables.ORDER_OF_EXECUTION name (interpreter.py merges them).
 STEPS: StepTable = {"feed_mode": LineSteps._step_feed_mode, "feed": LineSteps._step_feed, "tool_select": LineSteps._step_tool_select, "tool_change": LineSteps._step_tool_change, "coolant": LineSteps._step_coolant, "overrides": LineSteps._step_overrides, "path_control": LineSteps._step_path_control, "io": LineSteps._step_io, "m_state": LineSteps._step_m_state, "dwell": LineSteps._step_dwell, "length_offset": LineSteps._step_length_offset, "coord_system": LineSteps._step_coord_system, "rotation": LineSteps._step_rotation, "non_modal": LineSteps._step_non_modal, "motion": LineSteps._step_motion, "stopping": LineSteps._step_stopping, "units": LineSteps._step_modal, "distance": LineSteps._step_modal, "return_mode": LineSteps._step_modal}

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import SpindleEvent
 from edingcnc_lang.machine.thread_passes import G76Words, ThreadError, g76
 from edingcnc_lang.machine.state import G, G_40, MachineState, PLANE_OF, format_value, xyz_distance
 
@@ -80,9 +80,8 @@ class Threading(MachineState):
         forward = self.spindle
         self._sync_move(self._target(words), pitch, span)
         for direction in (7 - forward, forward):  # M3 <-> M4 and back again
-            self.canon.event(Event("spindle", self.path, self.line, {"m": direction, "speed": self.speed,
-                                                                     "rpm": self.rpm_at(self.pos[0]),
-                                                                     "rigid_tap": True}))
+            self.canon.event(SpindleEvent(self.path, self.line, direction, self.speed, self.rpm_at(self.pos[0]),
+                                          rigid_tap=True))
             if direction != forward:
                 self._sync_move(start, pitch, span)
 

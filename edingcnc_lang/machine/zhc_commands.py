@@ -13,7 +13,7 @@ from typing import TextIO
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import ZhcEvent, ZhcSaveEvent
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.machine.job_files import OpenMode, job_file, open_job_file
@@ -22,9 +22,7 @@ from edingcnc_lang.machine.state import CommandTable, MachineState
 
 
 class HeightComp(MachineState):
-    """The ZHC table of one machine and the commands that build, save and switch it."""
-
-    zhc: ZhcTable | None = None
+    """The ZHC table of one machine (``MachineState.zhc``) and the commands that build, save and switch it."""
 
     def _command_values(self, stmt: n.Command, count: int, usage: str) -> list[float]:
         """The ``count`` numeric arguments of a command (``ZHCINIT [#4104] 10 [#4101]``), evaluated
@@ -65,11 +63,7 @@ class HeightComp(MachineState):
                 "there is no height table (probe one with ZHCINIT and ZHCADDPOINT, or load one with ZHCL)"
             raise self.fail(f"ZHC on: {measured}", span)
         self.params.set(t.ZHC_ACTIVE, 1.0 if on else 0.0)
-        data: dict[str, object] = {"on": on}
-        if on:
-            assert table is not None
-            data["map"] = table.height_map()
-        self.canon.event(Event("zhc", self.path, self.line, data))
+        self.canon.event(ZhcEvent(self.path, self.line, on, table.height_map() if on and table is not None else None))
 
     def _zhc_file(self, stmt: n.Command) -> Path:
         """The file ZHCS/ZHCL name, in the log folder under logfile's rules (job_files.py)."""
@@ -92,7 +86,7 @@ class HeightComp(MachineState):
         path.parent.mkdir(parents=True, exist_ok=True)
         with self._zhc_open(path, "write", stmt.span) as handle:
             handle.write(self.zhc.to_text())
-        self.canon.event(Event("zhcs", self.path, self.line, {"file": str(path)}))
+        self.canon.event(ZhcSaveEvent(self.path, self.line, str(path)))
 
     def _zhc_load(self, stmt: n.Command) -> None:
         path = self._zhc_file(stmt)
@@ -111,7 +105,7 @@ class HeightComp(MachineState):
         self.message("msg", self.zhc.statistics())
 
 
-# Named commands of this part, by lower-case name (commands.py dispatches them).
+# Named commands of this part, by lower-case name (named_commands.py dispatches them).
 COMMANDS: CommandTable = {"zhcinit": HeightComp._zhc_init, "zhcinitex": HeightComp._zhc_init,
                           "zhcaddpoint": HeightComp._zhc_add_point, "zhcs": HeightComp._zhc_save,
                           "zhcl": HeightComp._zhc_load, "zhccheck": HeightComp._zhc_check}

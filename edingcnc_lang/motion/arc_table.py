@@ -3,7 +3,7 @@
 A CAM job has arcs by the hundred thousand.  The motion stage checks a batch's arcs against the
 limits and the planner needs their lengths, tangents and radii, and the limits report their
 extremes; all of them read the same numbers (``kinematics.trajectory.arc_frame``), so they are
-computed once per batch (``speedups.arc_frame_rows``, one call for all of its arcs) and kept as
+computed once per batch (``arc_frame_rows``, one call for all of its arcs) and kept as
 rows of an array: one row per arc, its move's index among the moves first.  The planner keeps the
 tables of a window's batches with its moves, their indices counted in the window.
 """
@@ -15,7 +15,9 @@ import numpy as np
 
 from edingcnc_lang import speedups
 from edingcnc_lang.canon import Arc, Pose
-from edingcnc_lang.kinematics.trajectory import ARC_ROW, ArcFrame
+from edingcnc_lang.kinematics.trajectory import ARC_ROW, ArcFrame, arc_frame_rows
+
+_ARC_FRAME_ROWS = speedups.compiled("arc_frame_rows") or arc_frame_rows  # on the core that runs
 
 _NO_ROWS = np.empty((0, ARC_ROW))
 
@@ -32,7 +34,7 @@ class ArcTable:
     @classmethod
     def of(cls, start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]) -> ArcTable:
         """The arcs of moves from ``start`` through ``ends`` (``arcs[i]`` None for a straight move)."""
-        return cls(np.array(speedups.arc_frame_rows(start, ends, arcs), dtype=float).reshape(-1, ARC_ROW))
+        return cls(np.array(_ARC_FRAME_ROWS(start, ends, arcs), dtype=float).reshape(-1, ARC_ROW))
 
     @classmethod
     def joined(cls, tables: Sequence[ArcTable]) -> ArcTable:

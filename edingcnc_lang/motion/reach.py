@@ -102,6 +102,6 @@ def frame_extremes(frame: ArcFrame, end: Pose, low: Sequence[float] | None = Non
 
 def column_bounds(ends: Sequence[Pose]) -> tuple[list[float], list[float]]:
     """The least and greatest value of each axis over the poses ``ends`` (not empty): what a batch's
-    straight moves reach.  The reference for ``speedups.column_bounds``."""
+    straight moves reach.  The reference for ``_speedups.column_bounds``."""
     columns = list(zip(*ends))
     return [min(column) for column in columns], [max(column) for column in columns]

@@ -20,9 +20,9 @@ from typing import IO, TYPE_CHECKING
 from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.errors import CallbackError, EcncError, Location, UsageFailure
+from edingcnc_lang.records import record
 from edingcnc_lang.motion.stage import Samples
 from edingcnc_lang.outputs import STDOUT, open_replacing_text
-from edingcnc_lang.motion.planner.estimate import Timing
 
 if TYPE_CHECKING:
     import numpy as np
@@ -30,6 +30,18 @@ if TYPE_CHECKING:
     from edingcnc_lang.motion.samples_file import ColumnFiles
 
 SIX_REPR = ",".join(["%r"] * 6)
+
+
+@record(frozen=True)
+class Timing:
+    """When one move runs (seconds from the start of the job) and the top speed the planner gave it
+    (mm/s along XYZ, or deg/s for a move of the rotary axes only; 0 for a move of zero length): what the
+    planner hands each sink with a move (the sinks are below the planner, which calls them)."""
+
+    start: float
+    end: float
+    speed: float
+
 TRACE_HEADER = "line,kind,x,y,z,a,b,c,jx,jy,jz,ja,jb,jc,file,t\n"
 SAMPLES_FORMATS = (".csv", ".npz")  # by the file's extension; "-" is CSV on standard output
 
@@ -127,7 +139,7 @@ class TraceWriter:
 
     def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
         """Rows of straight moves whose joints equal their end points; ``times[i + 1]`` is when move i ends."""
-        self._file.write(speedups.trace_rows(batch.lines, batch.kinds, batch.ends, csv_field(batch.path), times))
+        self._file.write(_TRACE_ROWS(batch.lines, batch.kinds, batch.ends, csv_field(batch.path), times))
 
     def event(self, event: Event) -> None:
         pass
@@ -142,7 +154,7 @@ def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose],
 
     A coordinate that is the same in every row (A B C mostly, Z on a pass at one depth) is written
     once into the format instead of once a row: ``repr`` is most of the cost.
-    The reference for ``speedups.trace_rows``, which must give the same text byte for byte.
+    The reference for ``_speedups.trace_rows``, which must give the same text byte for byte.
     """
     count = len(ends)
     if not count:
@@ -166,6 +178,9 @@ def _same_bits(zeros: Sequence[float], value: float) -> bool:
     """Whether a column of zeros (0.0 == -0.0, but their reprs differ) are all ``value``'s zero: a sum
     from -0.0 stays -0.0 only while it adds -0.0."""
     return math.copysign(1.0, sum(zeros if math.copysign(1.0, value) < 0 else map(neg, zeros), -0.0)) < 0
+
+
+_TRACE_ROWS = speedups.compiled("trace_rows") or trace_rows  # on the core that runs
 
 
 class SamplesWriter:
@@ -313,7 +328,7 @@ class EventsWriter:
 
     def event(self, event: Event) -> None:
         self._write({"type": "event", "file": event.path, "line": event.line, "kind": event.kind,
-                     "data": dict(event.data)})
+                     "data": event.data})
 
     def close(self) -> None:
         self._file.close()

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 from edingcnc_lang import speedups
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Batch, Event, Move, Pose
+from edingcnc_lang.events import DwellEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location, MachineError, PluginError
 from edingcnc_lang.kinematics import abi
@@ -36,7 +37,7 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
-from edingcnc_lang.motion.reach import arcs_beyond, beyond, table_beyond
+from edingcnc_lang.motion.reach import arcs_beyond, beyond, column_bounds, table_beyond
 
 _T = TypeVar("_T")
 
@@ -50,6 +51,7 @@ DYNAMICS_SLACK = 1.01       # 1 % over maxVelocity before it is an error
 SWITCH_TOLERANCE = 1e-6     # a joint that would have to jump further than this at a switch is an error
 CRAWL_ACCELERATION_SHARE = 1e-3  # of the joints' acceleration: where the path leaves them none
 PLAN_PASSES = 4             # rapids: re-sample at most this often to reach the fastest allowed speed
+_COLUMN_BOUNDS = speedups.compiled("column_bounds") or column_bounds  # the bounds of a batch, on the core that runs
 
 
 class PlannerStage(Protocol):
@@ -95,7 +97,7 @@ class AxisLimits:
 
 def _positive(values: Sequence[float]) -> np.ndarray:
     """Limits as an array; a plug-in's answer of 0 or less means "not set" rather than "cannot move"
-    (the ini's own limits are checked to be above 0 when it is read, see config.py)."""
+    (the ini's own limits are checked to be above 0 when it is read, see config/machine_config.py)."""
     import numpy as np
 
     array = np.asarray(values, dtype=float)
@@ -170,7 +172,7 @@ class MotionStage:
         lower, upper = self._lower, self._upper
         if not batch.lines:
             return
-        least, most = speedups.column_bounds(batch.ends)
+        least, most = _COLUMN_BOUNDS(batch.ends)
         if any(map(operator.lt, least, lower)) or any(map(operator.gt, most, upper)):
             self._first_limit_violation(batch)
         arcs = None
@@ -212,8 +214,8 @@ class MotionStage:
         return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}  # type: ignore[arg-type]
 
     def event(self, event: Event) -> None:
-        if event.kind == "dwell":
-            self.time += float(event.data.get("seconds", 0.0))
+        if isinstance(event, DwellEvent):
+            self.time += event.seconds
         self.planner.event(event)
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:

@@ -15,11 +15,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Sequence
 
 from edingcnc_lang.canon import Batch, Canon, Event, Move, Pose
+from edingcnc_lang.events import EndEvent, PauseEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 
 
 # Events after which the machine must have finished every move programmed before them.
-FLUSHING_EVENTS = frozenset({"end", "pause"})
+FLUSHING_EVENTS = (EndEvent, PauseEvent)
 
 
 class Stage:
@@ -86,7 +87,7 @@ class LookaheadStage(Stage):
             self.next.event(event)
             return
         self.queued.append(event)
-        if event.kind in FLUSHING_EVENTS:
+        if isinstance(event, FLUSHING_EVENTS):
             self.flush()
 
     def kinematics(self, mode: str, args: tuple[float, ...], pos: Pose, path: str, line: int) -> Pose:

@@ -31,6 +31,7 @@ import sys
 from dataclasses import replace
 
 from edingcnc_lang.canon import Arc, Batch, Canon, Event, Move, Pose
+from edingcnc_lang.events import CutterCompEvent, EndEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.pipeline.base import FLUSHING_EVENTS, Stage
@@ -134,16 +135,16 @@ class CutterCompensation(Stage):
             self.next.move(move)
 
     def event(self, event: Event) -> None:
-        if event.kind == "cutter_comp":
+        if isinstance(event, CutterCompEvent):
             self._switch(event)
         if not self.queue:
             self._send()
             self.next.event(event)
         else:
             self.queue.append(event)
-            if event.kind in FLUSHING_EVENTS:
+            if isinstance(event, FLUSHING_EVENTS):
                 self.flush()
-        if event.kind == "end":  # M2/M30 end compensation without an exit move
+        if isinstance(event, EndEvent):  # M2/M30 end compensation without an exit move
             self.side, self.first, self.exit_from = 0, True, None
         self._send()  # moves the event released (G40's last one) go on before the next call
 
@@ -212,17 +213,17 @@ class CutterCompensation(Stage):
             self.next.move_batch(out)
 
     # ---------------------------------------------------------------- on and off
-    def _switch(self, event: Event) -> None:
-        side = SIDES.get(str(event.data.get("side")), 0)
+    def _switch(self, event: CutterCompEvent) -> None:
+        side = SIDES.get(event.side, 0)
         if side:
-            radius = float(event.data.get("radius", 0.0))
+            radius = event.radius or 0.0
             if radius < 0:  # a negative radius (a worn or nominal-size tool) swaps the side
                 side, radius = -side, -radius
             self.side = side if radius > 0 else 0
             self.radius = radius
-            self.frame = Frame(str(event.data.get("plane", "XY")))
-            self.sweep_slack = ARC_SWEEP_SLACK_INCH if event.data.get("inch") else ARC_SWEEP_SLACK_MM
-            orientation = int(event.data.get("orientation", 0)) if self.frame.plane == "XZ" else 0
+            self.frame = Frame(event.plane or "XY")
+            self.sweep_slack = ARC_SWEEP_SLACK_INCH if event.inch else ARC_SWEEP_SLACK_MM
+            orientation = (event.orientation or 0) if self.frame.plane == "XZ" else 0
             self.tip = tip_shift(orientation, radius)
             self.first = True
             return

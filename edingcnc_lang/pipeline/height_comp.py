@@ -1,6 +1,6 @@
 """Z height compensation (``ZHC on``) as a pipeline stage: every move's Z follows a height map.
 
-The interpreter sends a ``zhc`` event when compensation turns on (data: ``on``, ``map`` the
+The interpreter sends a ``ZhcEvent`` when compensation turns on (``on``, ``map`` the
 ``HeightMap`` in machine X/Y) or off.  While on, a straight move is split where its XY path
 crosses a grid line of the map, and each piece ends at its programmed Z plus the surface height
 there: between grid lines the bilinear surface is smooth along the line, so the compensated
@@ -17,7 +17,7 @@ from dataclasses import replace
 from edingcnc_lang.canon import Batch, Canon, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
-from edingcnc_lang.config.heightmap import HeightMap
+from edingcnc_lang.events import HeightSurface, ZhcEvent
 from edingcnc_lang.pipeline.base import Stage
 
 UNCOMPENSATED = frozenset({"probe", "home"})
@@ -28,13 +28,13 @@ class HeightCompensation(Stage):
 
     def __init__(self, next_canon: Canon, config: MachineConfig) -> None:
         super().__init__(next_canon, config)
-        self.surface: HeightMap | None = None
+        self.surface: HeightSurface | None = None
         self.applied = 0.0  # the Z added at the end of the last move handed on
 
     def event(self, event: Event) -> None:
-        if event.kind == "zhc":
-            self.surface = event.data.get("map") if event.data.get("on") else None
-            event = replace(event, data={k: v for k, v in event.data.items() if k != "map"})  # for the record
+        if isinstance(event, ZhcEvent):
+            self.surface = event.map if event.on else None
+            event = replace(event, map=None)  # the map is for this stage only
         self.next.event(event)
 
     def _lift(self, pose: Pose) -> Pose:

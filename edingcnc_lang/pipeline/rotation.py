@@ -1,6 +1,6 @@
 """G68 rotation as a pipeline stage: every move turned in the rotation's plane about the pivot.
 
-The interpreter sends a ``rotation`` event when G68 takes effect (data: ``on``, ``pivot`` machine
+The interpreter sends a ``RotationEvent`` when G68 takes effect (``on``, ``pivot`` machine
 x y z, ``angle`` in degrees counter-clockwise, ``plane`` XY, YZ or XZ) and again when an offset
 change moves the pivot on the machine; G69 ends it.  Arcs in the rotation's plane turn with the
 rest; an arc in another plane would leave its plane and is refused, naming its line.
@@ -10,6 +10,7 @@ from __future__ import annotations
 from edingcnc_lang.canon import Arc, Canon, Event, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
+from edingcnc_lang.events import RotationEvent
 from edingcnc_lang.machine.geometry import rotate_about
 from edingcnc_lang.pipeline.transform import PoseTransform, map_center
 
@@ -31,11 +32,11 @@ class Rotation(PoseTransform):
         return self.angle is not None
 
     def event(self, event: Event) -> None:
-        if event.kind == "rotation":
-            self.angle = float(event.data["angle"]) if event.data.get("on") else None
-            if self.angle is not None:
-                self.pivot = tuple(event.data["pivot"])  # type: ignore[arg-type]
-                self.plane = str(event.data.get("plane", "XY"))
+        if isinstance(event, RotationEvent):
+            self.angle = event.angle if event.on else None
+            if event.on and event.pivot is not None:
+                self.pivot = event.pivot
+                self.plane = event.plane or "XY"
         self.next.event(event)
 
     def forward(self, pose: Pose) -> Pose:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from edingcnc_lang.canon import PLANES, Arc, Canon, Event, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.events import EndEvent, ScalingEvent
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.machine.geometry import scale_about
 from edingcnc_lang.pipeline.transform import PoseTransform, map_center
@@ -28,14 +29,14 @@ class Scaling(PoseTransform):
         return self.factors is not None
 
     def event(self, event: Event) -> None:
-        if event.kind == "scaling":
-            if event.data.get("on"):
-                self.factors = tuple(event.data["factors"])  # type: ignore[assignment]
-                cx, cy = event.data["center"]
+        if isinstance(event, ScalingEvent):
+            if event.on and event.factors is not None and event.center is not None:
+                self.factors = event.factors
+                cx, cy = event.center
                 self.center = (cx, cy, 0.0)
             else:
                 self.factors = None
-        elif event.kind == "end":
+        elif isinstance(event, EndEvent):
             self.factors = None
         self.next.event(event)
 

@@ -10,11 +10,13 @@ keeps the machine's view (the motors).
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
 
-from edingcnc_lang.canon import Arc, Batch, Canon, Event, Move
+from edingcnc_lang.canon import Arc, Batch, Canon, Move
+from edingcnc_lang.events import Event
+from edingcnc_lang.records import record
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.machine.state import MachineState
 from edingcnc_lang.pipeline.base import Stage
@@ -23,7 +25,13 @@ from edingcnc_lang.runner import Run
 if TYPE_CHECKING:
     from edingcnc_lang.plot.toolpath import Toolpath
 
-WORK_OFFSET = "work_offset"  # the plot run's own event (never in `ecnc run`'s): data {"offset": (x, y, z)}
+@record(frozen=True, slots=True)
+class WorkOffsetEvent(Event):
+    """The plot run's own event (never in ``ecnc run``'s): the work offset (x, y, z) the moves after it
+    are made under."""
+
+    kind: ClassVar[str] = "work_offset"
+    offset: tuple[float, float, float]
 
 
 class OffsetWatch(Stage):
@@ -38,10 +46,11 @@ class OffsetWatch(Stage):
         self.sent: tuple[float, ...] | None = None
 
     def _tell(self, path: str, line: int) -> None:
-        offset = tuple(self.machine.offset()[:3])
+        x, y, z = self.machine.offset()[:3]
+        offset = (x, y, z)
         if offset != self.sent:
             self.sent = offset
-            self.next.event(Event(WORK_OFFSET, path, line, {"offset": offset}))
+            self.next.event(WorkOffsetEvent(path, line, offset))
 
     def move(self, move: Move) -> None:
         self._tell(move.path, move.line)

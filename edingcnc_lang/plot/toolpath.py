@@ -18,13 +18,14 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang.canon import Arc, Event, Move, Pose
+from edingcnc_lang.events import ToolChangeEvent
 from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
 from edingcnc_lang.kinematics.trajectory import arc_geometry
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.machine.tables import TOOL_CURRENT
-from edingcnc_lang.plot.lathe import WORK_OFFSET, watch_offsets
+from edingcnc_lang.plot.lathe import WorkOffsetEvent, watch_offsets
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.syntax.source import iter_file_lines
 
@@ -233,10 +234,10 @@ class Recorder:
         self.offsets.extend(self.offset)
 
     def event(self, event: Event) -> None:
-        if event.kind == "tool_change":
-            self.tool = int(event.data.get("tool", self.tool))
-        elif event.kind == WORK_OFFSET:
-            self.offset = event.data["offset"]
+        if isinstance(event, ToolChangeEvent):
+            self.tool = event.tool
+        elif isinstance(event, WorkOffsetEvent):
+            self.offset = event.offset
 
     def toolpath(self, job: str, config: MachineConfig, result: RunResult | None,
                  error: EcncError | None) -> Toolpath:

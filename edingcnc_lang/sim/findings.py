@@ -21,7 +21,7 @@ KINDS = {
 
 
 @dataclass(frozen=True)
-class Finding:
+class CutFinding:
     """One finding; ``position`` is the tool tip (X, Y, Z) where the move went deepest (the first
     such place along it); ``depth`` how far into the material (or below the bottom) it went."""
 
@@ -53,9 +53,9 @@ class Finding:
                 "tool": self.tool, "message": self.message}
 
 
-def merged(findings: list[Finding]) -> list[Finding]:
+def merged(findings: list[CutFinding]) -> list[CutFinding]:
     """In program order; a run of findings of one kind from one file and line becomes one, the deepest."""
-    out: list[Finding] = []
+    out: list[CutFinding] = []
     latest: dict[str, int] = {}  # kind -> index in ``out`` of its latest finding
     for item in sorted(findings, key=lambda f: (f.move, f.kind)):
         at = latest.get(item.kind)
@@ -68,6 +68,6 @@ def merged(findings: list[Finding]) -> list[Finding]:
     return out
 
 
-def failing(findings: list[Finding]) -> bool:
+def failing(findings: list[CutFinding]) -> bool:
     """Whether any finding is an error (hints alone leave the exit code 0)."""
     return any(f.severity == "error" for f in findings)

@@ -21,12 +21,13 @@ import numpy as np
 
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.sampling import arc_points
 from edingcnc_lang.kinematics.trajectory import geometry_of
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.findings import Finding, merged
+from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
 from edingcnc_lang.sim.tools import Tool, ini_tool
@@ -42,7 +43,7 @@ class SimResult:
     """The cut stock, the findings and what the run left; ``error`` when the job stopped early."""
 
     stock: Stock
-    findings: list[Finding]
+    findings: list[CutFinding]
     tools: dict[int, Tool]
     notes: list[str]
     seconds: float
@@ -130,11 +131,11 @@ class Simulator:
         return [self.known[n][1] for n in sorted(self.used) if self.known[n][1]]
 
     def on_event(self, event: Event) -> None:
-        if event.kind == "spindle":
-            self.spindle_on = event.data.get("m") in (3, 4)
-        elif event.kind == "tool_change":
+        if isinstance(event, SpindleEvent):
+            self.spindle_on = event.m in (3, 4)
+        elif isinstance(event, ToolChangeEvent):
             self.flush()
-            self.tool = self._tool(int(event.data.get("tool", 0)))
+            self.tool = self._tool(event.tool)
 
     def on_move(self, move: Move, _joints: Pose) -> None:
         index = len(self.lines)
@@ -197,7 +198,7 @@ class Simulator:
             self.hits.append((Hits(segs.move[below], np.full(len(below), OUTSIDE, np.int8),
                                    self.stock.bottom - low[below], deepest), tool.number))
 
-    def findings(self) -> list[Finding]:
+    def findings(self) -> list[CutFinding]:
         """Every hit as a finding, merged (see ``findings.merged``)."""
         paths = list(self.paths)
         found = []
@@ -205,7 +206,7 @@ class Simulator:
             for move, code, depth, where in zip(hits.move.tolist(), hits.code.tolist(), hits.depth.tolist(),
                                                 hits.where.tolist()):
                 kind = "outside_stock" if code == OUTSIDE else CODE_KINDS[code]
-                found.append(Finding(kind, paths[self.files[move]], self.lines[move], tuple(where),  # type: ignore[arg-type]
+                found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], tuple(where),  # type: ignore[arg-type]
                                      depth, tool, move))
         return merged(found)
 

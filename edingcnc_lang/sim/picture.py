@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang.sim.compare import Deviation
-from edingcnc_lang.sim.findings import Finding
+from edingcnc_lang.sim.findings import CutFinding
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.outputs import save_figure
 
@@ -20,7 +20,7 @@ MARKERS = {"rapid_into_stock": ("X", "#d62728"), "shank": ("s", "#ff7f0e"), "hol
            "spindle_off": ("o", "#9467bd"), "plunge": ("v", "#1f77b4"), "outside_stock": ("^", "#7f7f7f")}
 
 
-def draw_stock(stock: Stock, out: Path, fmt: str, findings: list[Finding], title: str,
+def draw_stock(stock: Stock, out: Path, fmt: str, findings: list[CutFinding], title: str,
                deviation: Deviation | None = None) -> None:
     """Write the picture of the cut stock to ``out`` in format ``fmt`` (png, svg or pdf)."""
     from matplotlib.cm import ScalarMappable
@@ -60,7 +60,7 @@ def _cmap():  # type: ignore[no-untyped-def]
     return colormaps["viridis"]
 
 
-def _mark(ax, findings: list[Finding]) -> None:  # type: ignore[no-untyped-def]
+def _mark(ax, findings: list[CutFinding]) -> None:  # type: ignore[no-untyped-def]
     """One marker per finding where the tool was, labelled with its line; one legend entry per kind."""
     for kind, (marker, colour) in MARKERS.items():
         points = [f.position for f in findings if f.kind == kind]

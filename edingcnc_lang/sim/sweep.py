@@ -23,7 +23,7 @@ from edingcnc_lang.sim.tools import Tool
 EPS = 1e-3            # mm: less than this into the material is no finding (float32 heights)
 MAX_PAIRS = 50_000  # (segment, cell) pairs per chunk: its scratch arrays stay in the CPU's cache
 
-# Finding codes of a pair: what the part of the tool that made it was doing.
+# CutFinding codes of a pair: what the part of the tool that made it was doing.
 NONE, RAPID, SPINDLE_OFF, PLUNGE, SHANK, HOLDER = range(6)
 CODE_KINDS = {RAPID: "rapid_into_stock", SPINDLE_OFF: "spindle_off", PLUNGE: "plunge",
               SHANK: "shank", HOLDER: "holder"}

@@ -13,14 +13,14 @@ descending over that list: no character-level scanning in Python.
 """
 from __future__ import annotations
 
-import os
 import re
 from collections.abc import Callable
 from typing import TypeVar
 
+from edingcnc_lang import speedups
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.input_limits import LINE_NUMBER_DIGITS, MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
-from edingcnc_lang.syntax.plain_words import FAST_NUMBER, INTEGER_DIGITS
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, LINE_NUMBER_DIGITS, MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
+from edingcnc_lang.syntax.plain_words import FAST_NUMBER
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
 
 
@@ -41,8 +41,7 @@ _TOKEN = re.compile(rf'[ \t]+|;.*|{FAST_NUMBER}|"[^"\n]*"|\*\*|==|<>|!=|<=|>=|[-
 _KIND = {**dict.fromkeys("0123456789.", "n"), '"': "s", **dict.fromkeys(" \t;", " "),
          **dict.fromkeys("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz", "i")}
 Token = tuple[str, str, int, int]  # kind ("n", "s", "i" or the operator), text, column, end column
-_FUNCTIONS = frozenset({"ABS", "ACOS", "ASIN", "COS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN", "SQRT", "TAN",
-                        "ATAN"})
+_FUNCTIONS = frozenset(n.FUNCTION_NAMES)
 # Binding levels, loosest first: comparisons, then + - OR XOR AND, then * / MOD, then **.
 _LEVEL = {op: 1 for op in ("==", "<>", "!=", "<=", ">=", "<", ">", "EQ", "NE", "GT", "GE", "LT", "LE")}
 _LEVEL.update({op: 2 for op in ("+", "-", "OR", "XOR", "AND")})
@@ -92,15 +91,11 @@ _N = TypeVar("_N")
 
 def _compiled() -> tuple[_Compiled, _Compiled, _Compiled, _Compiled, _Compiled, _Compiled]:
     """The compiled tokenizer, block, condition, statement and lines readers and the block assembler
-    (``_lexer.c``), unless they are not built or ``ECNC_PURE_PYTHON`` asks for the Python core."""
-    from edingcnc_lang.speedups import PURE_ENV
+    (``_lexer.c``), when ``speedups`` loaded it (built, and the Python core not asked for)."""
     from edingcnc_lang.syntax import blocks
 
-    if os.environ.get(PURE_ENV, "") not in ("", "0"):
-        return None, None, None, None, None, None
-    try:
-        from edingcnc_lang import _lexer  # type: ignore[attr-defined]
-    except ImportError:
+    _lexer = speedups.LEXER
+    if _lexer is None:
         return None, None, None, None, None, None
     _lexer.setup(n, blocks, GIVE_UP, _KEYWORDS - _HANDLED)
     return _lexer.tokens, _lexer.block, _lexer.condition, _lexer.statement, _lexer.statements, _lexer.assemble
@@ -120,9 +115,7 @@ def _construct(cls: type[_N], values: tuple[object, ...]) -> _N:
 # call of the dataclass's __init__ (the reader makes an If, While or Sub node at every end line).
 new_node: Callable[[type[_N], tuple[object, ...]], _N] = _construct
 if COMPILED_READER:
-    from edingcnc_lang import _lexer  # type: ignore[attr-defined]
-
-    new_node = _lexer.new  # type: ignore[attr-defined]
+    new_node = speedups.LEXER.new
 
 
 def _tokens(text: str, pos: int) -> list[Token]:

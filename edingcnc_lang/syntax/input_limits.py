@@ -38,6 +38,11 @@ MAX_BLOCK_DEPTH = 50
 # the printer does; a longer run is a mistake, and would slow the lexers down.
 MAX_NUMBER_DIGITS = 400
 
+# Digits before the point of a number the fast paths (plain_words.FAST_NUMBER, and the compiled
+# scans, which are given it) take: 300 always make a finite double; a longer integer part is left to
+# the parser, which reads it exactly.
+INTEGER_DIGITS = 300
+
 # What counts towards MAX_LINE_OPERATORS: two-character operators once, word operators wherever
 # they stand (also inside names: the count only has to be an upper bound).  Strings and
 # comments do not count.

@@ -78,6 +78,13 @@ class Compare:
     span: Span = field(default=NO_SPAN, compare=False)
 
 
+# The dialect's functions, the one table of their names: each takes one argument; ATAN, which may
+# take two (``ATAN[y]/[x]``), is the last.  The grammar's FUNC and ATAN terminals, the fast reader
+# (fastparse.py), the compiled reader (csrc/lexer_nodes.c, in this order), the evaluator and the
+# texts of hover and help name exactly these (tests/parser/test_function_names.py pins them).
+FUNCTION_NAMES = ("ABS", "ACOS", "ASIN", "COS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN", "SQRT", "TAN", "ATAN")
+
+
 @record(frozen=True, slots=True)
 class Call:
     """Function call; ``ATAN[y]/[x]`` has two arguments, the others one."""

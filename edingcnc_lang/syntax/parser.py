@@ -12,6 +12,7 @@ from array import array
 from bisect import bisect_left
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import replace
+from functools import partial
 from itertools import islice
 
 from edingcnc_lang.syntax import nodes as n
@@ -20,7 +21,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.codes import Severity
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
 from edingcnc_lang.syntax.dialogs import SYNTAX_CODES, dialog_fields
-from edingcnc_lang.syntax.input_limits import MAX_BLOCK_DEPTH, MAX_GCODE_LINE
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_BLOCK_DEPTH, MAX_GCODE_LINE, MAX_NUMBER_DIGITS
 from edingcnc_lang.syntax.line_parser import CONDITION_LINE, parse_line, parse_line_grammar
 from edingcnc_lang.syntax.plain_words import FAST_LINE, FAST_WORD, PLAIN_LINE, is_fast_line, plain_block, plain_words  # re-exported: the public API
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
@@ -68,13 +69,19 @@ def non_plain_lines(chunk: list[str]) -> list[int]:
     every digit written as 9 fall into a few shapes (a CAM job's lines into tens per chunk), and each
     shape is matched once.
 
-    The reference for ``speedups.non_plain_lines`` (the check pass's scan, compiled).
+    The reference for ``_speedups.non_plain_lines`` (the check pass's scan, compiled).
     """
     if max(map(len, chunk)) > MAX_GCODE_LINE:  # rare: parse_line refuses the long ones
         return [i for i, text in enumerate(chunk) if len(text) > MAX_GCODE_LINE or not FAST_LINE.match(text)]
     shapes = "\n".join(chunk).translate(_DIGITS_AS_NINE).split("\n")
     others = {shape for shape in set(shapes) if not FAST_LINE.match(shape)}
     return [i for i, shape in enumerate(shapes) if shape in others] if others else []
+
+
+# the check pass's scan on the core that runs (speedups.py chooses)
+_non_plain_lines: Callable[[list[str]], list[int]] = non_plain_lines
+if speedups.SPEEDUPS is not None:  # the C reads its limits from the one table (input_limits.py)
+    _non_plain_lines = partial(speedups.compiled("non_plain_lines"), MAX_GCODE_LINE, INTEGER_DIGITS, MAX_NUMBER_DIGITS)
 
 
 # --------------------------------------------------------------------------- structure
@@ -222,7 +229,7 @@ class StatementReader:
             first = bisect_left(self.non_plain, base)
             last = bisect_left(self.non_plain, base + len(chunk))
             return [number - base for number in self.non_plain[first:last]]
-        others = speedups.non_plain_lines(chunk)
+        others = _non_plain_lines(chunk)
         if self.mode != "lint":  # (a lint reads each file once: nobody asks for them)
             self.non_plain.extend([base + i for i in others])  # type: ignore[attr-defined]
         return others

@@ -10,13 +10,12 @@ from __future__ import annotations
 import re
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.input_limits import MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_NUMBER_DIGITS
 
 # A number the fast paths take: ASCII digits only (a regex \d would also take Arabic-Indic or
-# fullwidth digits), at most 300 before the point, so always a finite double, and at most the
+# fullwidth digits), at most INTEGER_DIGITS before the point, so always a finite double, and at most the
 # limit after it (a longer one is left to the parser, which reports it).  An optional part is
 # written "(?:...|)", not "(?:...)?": the same pattern, which Python's engine runs a third faster.
-INTEGER_DIGITS = 300
 FAST_NUMBER = rf"(?:[0-9]{{1,{INTEGER_DIGITS}}}(?:\.[0-9]{{0,{MAX_NUMBER_DIGITS}}}|)|\.[0-9]{{1,{MAX_NUMBER_DIGITS}}})(?![0-9])"
 # (an N of six digits or more is left to the parser, which refuses it: manual 3.4.1)
 FAST_WORD = rf"(?![Nn][ \t]*[+-]?[0-9]{{6}})[A-Za-z][ \t]*[+-]?{FAST_NUMBER}"

@@ -20,7 +20,8 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine.observe import Observer
 
 if TYPE_CHECKING:
-    from edingcnc_lang.machine.state import CallFrame, MachineState
+    from edingcnc_lang.machine.observe import MachineView
+    from edingcnc_lang.machine.state import CallFrame
 
 BRANCH_NAMES = {(n.If, True): "then", (n.If, False): "else", (n.While, True): "enter", (n.While, False): "leave"}
 
@@ -54,22 +55,22 @@ class CoverageObserver(Observer):
         self.paths = {os.fspath(p): os.path.realpath(p) for p in macro_files}
         self.data.files |= set(self.paths.values())
 
-    def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
+    def statement(self, machine: MachineView, stmt: n.Stmt) -> None:
         real = self.paths.get(machine.path)
         if real is not None:
             self.data.lines.add((real, stmt.span.line))
 
-    def branch(self, machine: MachineState, stmt: n.If | n.While, taken: bool) -> None:
+    def branch(self, machine: MachineView, stmt: n.If | n.While, taken: bool) -> None:
         real = self.paths.get(stmt.span.path)
         if real is not None:
             self.data.branches.add((real, stmt.span.line, taken))
 
-    def call(self, machine: MachineState, frame: CallFrame, sub: n.Sub) -> None:
+    def call(self, machine: MachineView, frame: CallFrame, sub: n.Sub) -> None:
         real = self.paths.get(sub.span.path)
         if real is not None:
             self.data.subs.add((real, sub.name.lower()))
 
-    def line_by_line(self, machine: MachineState, run: n.PlainRun) -> bool:
+    def line_by_line(self, machine: MachineView, run: n.PlainRun) -> bool:
         """Chunks of plain lines come only from jobs (macro files are read whole), which are not
         measured: keep the fast path."""
         return False

@@ -16,6 +16,7 @@ from pathlib import Path
 
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, Event, Move, Pose, format_pose
+from edingcnc_lang.events import SpindleEvent, SpindleSpeedEvent
 from edingcnc_lang.errors import EcncError, Interrupted, Location
 from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField, Host, scripted_dialogs
 from edingcnc_lang.machine.interpreter import Interpreter
@@ -112,7 +113,7 @@ def _final_state(outcome: Outcome, run: Run) -> None:
     outcome.params = (0.0, *(params.read(i) for i in range(t.FIRST_PARAM, t.LAST_PARAM + 1)))
     outcome.position = dict(zip(AXIS_KEYS, interp.reported_position()))
     outcome.machine = dict(zip(AXIS_KEYS, run.machine_position()))
-    outcome.messages = [(e.kind, str(e.data.get("text", ""))) for e in interp.messages]
+    outcome.messages = [(e.kind, e.text) for e in interp.messages]
     outcome.ended_by = interp.ended_by
 
 
@@ -178,9 +179,9 @@ class _Watch:
 
     def event(self, event: Event) -> None:
         """A ``spindle`` event carries rpm 0 when it stops; a new S (``spindle_speed``) turns only a running spindle."""
-        if event.kind in ("spindle", "spindle_speed"):
-            running = event.kind == "spindle" or (self.interpreter is not None and self.interpreter.spindle != 5)
-            self.turning = running and float(event.data.get("rpm") or 0.0) > 0.0
+        if isinstance(event, (SpindleEvent, SpindleSpeedEvent)):
+            running = isinstance(event, SpindleEvent) or (self.interpreter is not None and self.interpreter.spindle != 5)
+            self.turning = running and event.rpm > 0.0
 
     def move(self, move: Move, _joints: Pose) -> None:
         if self.keep_moves:

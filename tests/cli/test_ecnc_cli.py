@@ -160,6 +160,7 @@ def test_options_must_be_spelt_out(job: Path, abbreviation: str) -> None:
     assert result.exit_code == 2 and f"unrecognized arguments: {abbreviation}" in result.stderr
 
 
+@pytest.mark.slow
 def test_text_the_console_cannot_show_is_escaped_not_a_traceback(tmp_path: Path) -> None:
     job = tmp_path / "uni.nc"
     job.write_text("G0 G1 X1 ; caf\u00e9\n", encoding="utf-8")
@@ -191,6 +192,7 @@ def test_ctrl_c_outside_a_run_exits_130(job: Path, monkeypatch: pytest.MonkeyPat
     assert result.exit_code == 130 and json.loads(result.stdout)["error"]["kind"] == "interrupted"
 
 
+@pytest.mark.slow
 def test_a_closed_pipe_ends_quietly(tmp_path: Path) -> None:
     big = tmp_path / "big.nc"
     big.write_text("G1 X[#1 + 2] Y3 F100\n" * 2000)  # far more JSON than a pipe holds
@@ -202,6 +204,7 @@ def test_a_closed_pipe_ends_quietly(tmp_path: Path) -> None:
     assert (process.wait(), stderr) == (1, b"")
 
 
+@pytest.mark.slow
 def test_the_program_ends_at_once_with_all_its_output(tmp_path: Path) -> None:
     """``entry()`` skips the interpreter's teardown: what was written must be complete anyway."""
     job = tmp_path / "big.nc"
@@ -216,6 +219,7 @@ def test_the_program_ends_at_once_with_all_its_output(tmp_path: Path) -> None:
     assert (parsed.returncode, parsed.stdout.decode()) == (0, invoke("parse", "--json", job).stdout)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("program", [[sys.executable, "-m", "edingcnc_lang"],
                                      [str(Path(sys.executable).parent / "ecnc")]],
                          ids=["python -m edingcnc_lang", "ecnc script"])

@@ -16,6 +16,8 @@ import edingcnc_lang.cli.options
 from edingcnc_lang import speedups
 from tests.cli_runner import invoke
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ECNC = [sys.executable, "-m", "edingcnc_lang"]
 
 

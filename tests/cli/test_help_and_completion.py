@@ -59,6 +59,7 @@ def complete(words: str, env: dict[str, str] | None = None, cwd: Path | None = N
     return [line.split(",", 1)[1] for line in result.stdout.splitlines()]
 
 
+@pytest.mark.slow
 def test_completion_of_commands_options_codes_and_kinematics() -> None:
     assert {"run", "lint", "parse", "kins", "help"} <= set(complete("ecnc "))
     assert "--max-steps" in complete("ecnc run --m")
@@ -67,6 +68,7 @@ def test_completion_of_commands_options_codes_and_kinematics() -> None:
     assert "V302" in complete("ecnc help V3")
 
 
+@pytest.mark.slow
 def test_completion_of_the_workbench_plugins_and_codes() -> None:
     """kins check/compare/plot take PLUGIN like inverse does; help completes the K codes too."""
     assert {"trivial", "rotatekins", "deltakins"} <= set(complete("ecnc kins check "))
@@ -75,6 +77,7 @@ def test_completion_of_the_workbench_plugins_and_codes() -> None:
     assert "K101" in complete("ecnc help K1")
 
 
+@pytest.mark.slow
 def test_completion_of_ini_files(tmp_path: Path) -> None:
     for name in ("cnc.ini", "OTHER.INI", "job.nc"):
         (tmp_path / name).write_text("")
@@ -82,6 +85,7 @@ def test_completion_of_ini_files(tmp_path: Path) -> None:
     assert complete("ecnc run job.nc --ini ", cwd=tmp_path) == ["OTHER.INI", "cnc.ini", "machines/"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("shell", ["bash", "zsh", "fish"])
 def test_the_completion_scripts_are_there(shell: str) -> None:
     script = subprocess.run([sys.executable, "-m", "edingcnc_lang"], capture_output=True, text=True, check=True,

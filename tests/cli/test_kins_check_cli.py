@@ -10,6 +10,8 @@ import pytest
 
 from tests.cli_runner import invoke
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parents[2]
 BROKEN = ROOT / "tests" / "kinematics" / "broken"
 QUICK = ("--samples", "400", "--no-speed")

@@ -4,6 +4,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from edingcnc_lang.lint import LintOptions, lint_paths, lint_paths_parallel
 from edingcnc_lang.lint.parallel import split
 from tests.cli_runner import invoke
@@ -24,6 +26,7 @@ def _shop(tmp_path: Path) -> Path:
     return shop
 
 
+@pytest.mark.slow
 def test_jobs_give_the_same_findings_as_one_process(tmp_path: Path) -> None:
     shop = _shop(tmp_path)
     one = invoke("lint", "--format", "json", shop)
@@ -33,6 +36,7 @@ def test_jobs_give_the_same_findings_as_one_process(tmp_path: Path) -> None:
     assert {d["code"] for d in json.loads(one.stdout)} == {"G500", "S208"}
 
 
+@pytest.mark.slow
 def test_the_python_api_and_an_ini_among_the_paths(tmp_path: Path) -> None:
     shop = _shop(tmp_path)
     ini = tmp_path / "cnc.ini"
@@ -52,6 +56,7 @@ def test_jobs_must_be_a_count() -> None:
     assert result.exit_code == 2 and "argument --jobs" in result.stderr
 
 
+@pytest.mark.slow
 def test_jobs_from_the_real_program(tmp_path: Path) -> None:
     """Worker processes start fresh (spawn): ``python -m edingcnc_lang`` must not run again in them."""
     import subprocess

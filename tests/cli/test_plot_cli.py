@@ -12,6 +12,8 @@ import pytest
 from tests.cli_runner import invoke
 from tests.plot.jobs import SQUARE, write
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 pytest.importorskip("matplotlib")
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -11,6 +11,8 @@ from edingcnc_lang.runner import packaged_macro
 
 from .dap_client import DapClient
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 MACRO = str(packaged_macro())
 CHANGE_TOOL_FIRST = 66  # "#5015 = 0", the first statement of Sub change_tool in the packaged macro
 JOB = "G21 G90\r\n#1 = 5\r\nG1 X10 Y5 F500\r\nT2 M6\r\n#2 = [#1 * 2]\r\nG0 X0\r\nM30\r\n"  # CRLF, as on the machine

@@ -30,6 +30,7 @@ def test_differs_is_exit_1_with_old_and_new_lines() -> None:
     assert re.search(r"NEW +\d+: G1 X65 F1500", result.stdout)
 
 
+@pytest.mark.slow
 def test_a_coarser_tolerance_makes_the_moved_contour_the_same() -> None:
     assert invoke("diff", OLD, CASES / "moved.nc", "--tolerance", "0.06").exit_code == 0
     assert invoke("diff", OLD, CASES / "moved.nc", "--tolerance", "0.04").exit_code == 1
@@ -86,6 +87,7 @@ def test_a_machine_changed_for_new_only(tmp_path: Path) -> None:
     assert doc["time"]["new"] > doc["time"]["old"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("suffix", [".png", ".svg"])
 def test_the_picture_is_written(suffix: str, tmp_path: Path) -> None:
     pytest.importorskip("matplotlib")
@@ -121,6 +123,7 @@ def test_view_diff_holds_both_jobs(tmp_path: Path) -> None:
     assert 'id="job-data-old"' not in plain.read_text(encoding="utf-8").replace('getElementById("job-data-old")', "")
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(CHROMIUM is None, reason="Chromium is not installed")
 @pytest.mark.parametrize(("fragment", "title"), [("", "NEW: "), ("#job=old", "OLD: ")])
 def test_view_diff_toggles_in_the_browser(fragment: str, title: str, tmp_path: Path) -> None:

@@ -10,6 +10,7 @@ import os
 import tempfile
 from pathlib import Path
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -23,6 +24,8 @@ from edingcnc_lang.runner import RunOptions, run_file
 from edingcnc_lang.syntax.source import read_text
 
 from .strategies import INI_SEEDS, ZHC_TABLE_SEEDS, mutants, programs
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 EMPTY_MACRO = Path(__file__).resolve().parents[1] / "interpreter" / "data" / "empty_macro.cnc"
 RELAXED = settings(deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])

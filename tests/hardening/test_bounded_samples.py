@@ -16,10 +16,9 @@ import pytest
 from edingcnc_lang import RunOptions, run_string
 from edingcnc_lang.canon import Move
 from edingcnc_lang.errors import EcncError
-from edingcnc_lang.machine.observe import Observer
-from edingcnc_lang.machine.state import MachineState
+from edingcnc_lang.machine.observe import MachineView, Observer
 from edingcnc_lang.motion import samples_file
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.sinks import SAMPLES_COLUMNS, SamplesWriter
 from edingcnc_lang.motion.stage import Samples
 from edingcnc_lang.syntax import nodes as n
@@ -65,6 +64,7 @@ def _same_npz(a: Path, b: Path) -> None:
             assert np.array_equal(left[name], right[name]), name
 
 
+@pytest.mark.slow
 def test_an_npz_of_many_rows_is_written_in_bounded_memory(tmp_path: Path) -> None:
     out = tmp_path / "s.npz"
     tracemalloc.start()
@@ -122,7 +122,7 @@ class _CtrlC(Observer):
     def __init__(self, line: int) -> None:
         self.line = line
 
-    def statement(self, machine: MachineState, stmt: n.Stmt) -> None:
+    def statement(self, machine: MachineView, stmt: n.Stmt) -> None:
         if machine.line == self.line:
             raise KeyboardInterrupt
 
@@ -217,6 +217,7 @@ def test_a_fifo_gets_the_file_as_a_stream(tmp_path: Path) -> None:
     _same_npz(tmp_path / "got.npz", _expected(tmp_path, 2, 50))
 
 
+@pytest.mark.slow
 def test_the_samples_are_read_back_thinned_in_bounded_memory(tmp_path: Path) -> None:
     out = tmp_path / "s.npz"
     _write(out, _moves())
@@ -235,6 +236,7 @@ def test_the_samples_are_read_back_thinned_in_bounded_memory(tmp_path: Path) -> 
             assert np.array_equal(thinned[name], whole[name][::step]) and spread[name] == np.ptp(whole[name])
 
 
+@pytest.mark.slow
 def test_a_joint_plot_draws_what_it_drew_from_every_sample(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Thinned on reading to what the plot draws: the same points as thinning every sample at drawing."""
     pytest.importorskip("matplotlib")

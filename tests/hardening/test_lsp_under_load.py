@@ -9,10 +9,11 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang.syntax.input_limits import MAX_LSP_DOCUMENT_CHARS, MAX_TAB_SIZE
-from edingcnc_lang.lsp.server import _clamped_positions
 from tests.lsp.client import LspClient, at
 
-pytest.importorskip("pygls")
+pytest.importorskip("pygls", reason="the language server needs the lsp extra")
+pytest.importorskip("lsprotocol", reason="the language server needs the lsp extra")
+from edingcnc_lang.lsp.server import _clamped_positions  # noqa: E402  (after the extra is known to be there)
 
 
 @pytest.fixture(scope="module")
@@ -29,6 +30,7 @@ def test_positions_are_clamped_into_the_protocols_range() -> None:
                                           "range": [{"line": 3, "character": True}]}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("line", "character"), [(-1, 0), (0, -5), (0, 2**31), (2**40, 0), (-(2**40), -1)])
 def test_every_position_gets_an_answer(client: LspClient, tmp_path: Path, line: int, character: int) -> None:
     job = tmp_path / "j.nc"
@@ -47,6 +49,7 @@ def test_formatting_caps_the_tab_size(client: LspClient, tmp_path: Path) -> None
     assert edits and max(len(e["newText"]) for e in edits) <= MAX_TAB_SIZE + len("G0 X1")
 
 
+@pytest.mark.slow
 def test_a_document_too_large_is_told_not_analysed(client: LspClient, tmp_path: Path) -> None:
     job = tmp_path / "big.nc"
     text = "G1 X1 Y2 F100\n" * (MAX_LSP_DOCUMENT_CHARS // 14 + 1)

@@ -81,6 +81,7 @@ def test_plain_numbers() -> None:
 
 # --------------------------------------------------------------------------- kins check --box
 
+@pytest.mark.slow
 @pytest.mark.parametrize("box", [["10", "100", "-50", "50", "-5", "5"], ["10,", "100,", "-50,", "50,", "-5,", "5"],
                                  ["10 100 -50 50 -5 5"], ["10,100,-50,50,-5,5"]])
 def test_box_as_separate_numbers_or_one_value(box: list[str]) -> None:

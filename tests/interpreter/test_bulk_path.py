@@ -70,6 +70,7 @@ def _outcome(run) -> tuple:  # type: ignore[no-untyped-def]
     return ("ok", result.machine, result.modal, result.variables, result.spindle, records)
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(jobs, st.booleans())
 def test_bulk_and_general_paths_agree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, lines: list[str],
@@ -109,6 +110,7 @@ ARCS = ("G1 X0 Y0 F100\nG2 X10 Y0 I5 J0\nG1 X20\nG3 X30 Y0 R5\nX40 Y0 R-5\nG2 X4
 REFUSED_IN_A_BATCH = "G1 X1 F100\nG2 X11 I5\nG18\nG1 X2\nZ1\nG2 X12 Z1 I5 K0\nG1 X0\n"  # the XZ arc: refused
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("source", [ARCS, "M3 S900\nG68 X1 Y1 R30\n" + ARCS, "G51 P2\n" + ARCS,
                                     "G68 X1 Y1 R30\n" + REFUSED_IN_A_BATCH, "G51 P2\n" + REFUSED_IN_A_BATCH,
                                     "G1 X1 F100\nG0 Y2\nX3\n", "G91 G1 X1 F50\nX1\nY-2\n", "G20 G1 X1 F10\n",
@@ -137,6 +139,7 @@ def test_bulk_trace_matches_the_general_trace(tmp_path: Path, source: str) -> No
         assert "XZ plane" in made[1]
 
 
+@pytest.mark.slow
 def test_a_long_job_is_timed_the_same_in_batches_and_one_by_one(tmp_path: Path) -> None:
     """The planner commits fixed windows of moves, however the moves arrive: the ``t`` column of a
     job longer than several windows is the same to the last bit from the bulk path (batches cut

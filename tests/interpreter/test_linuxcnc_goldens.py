@@ -22,6 +22,8 @@ import pytest
 from edingcnc_lang.canon import Move, Pose
 from edingcnc_lang.runner import RunOptions, run_file
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 GOLDENS = Path(__file__).resolve().parent.parent / "golden" / "linuxcnc"
 PROGRAMS = sorted((GOLDENS / "programs").glob("*.ngc"))
 TOOLS = GOLDENS / "tools.ini"  # the tool table rs274 got (in inches) for the compensation goldens

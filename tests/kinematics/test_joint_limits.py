@@ -9,11 +9,14 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from edingcnc_lang.kinematics.workbench import CheckOptions, check_plugin
 from edingcnc_lang.kinematics.workbench.check import load_plugin, read_machine
-from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
+from edingcnc_lang.kinematics.workbench.calls import Status, call_each
 from tests.cli_runner import invoke
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 SCARA = Path(__file__).resolve().parent / "scara"
 QUICK = dict(samples=600, segments=80, speed=False)

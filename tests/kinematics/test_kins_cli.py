@@ -67,6 +67,7 @@ def test_usage_errors_exit_2(args: tuple[str, ...]) -> None:
     assert run(*args)[0] == 2
 
 
+@pytest.mark.slow
 def test_build_and_use(tmp_path: Path) -> None:
     if shutil.which("cc") is None:
         pytest.skip("no C compiler (cc) on PATH")
@@ -96,6 +97,7 @@ def test_build_of_a_source_missing_a_required_function_fails(tmp_path: Path) -> 
     assert "does not export KinematicsForward: a kinematics plug-in must define every function" in err
 
 
+@pytest.mark.slow
 def test_a_compiled_plugin_named_by_bare_file_name_loads_from_the_current_folder(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     if shutil.which("cc") is None:
@@ -139,6 +141,7 @@ char *KINS_CALL KinematicsVersion(void) { return "GAIN 1.0"; }
 """
 
 
+@pytest.mark.slow
 def test_a_compiled_plugin_receives_its_ini_settings_at_load(tmp_path: Path) -> None:
     if shutil.which("cc") is None:
         pytest.skip("no C compiler (cc) on PATH")

@@ -1,7 +1,6 @@
 """Resolving kinematicsDLLName: registered names, the fallback table, .py and .so files, and every failure."""
 from __future__ import annotations
 
-import sys
 import tomllib
 from importlib import metadata
 from pathlib import Path
@@ -12,7 +11,6 @@ from edingcnc_lang.errors import PluginError
 from edingcnc_lang.kinematics import loader
 from edingcnc_lang.kinematics.builtin import CoreXYKinematics
 from edingcnc_lang.kinematics.loader import ENTRY_POINT_GROUP, available_kinematics, load_kinematics
-from edingcnc_lang.kinematics.shipped import import_shipped
 
 REPO = Path(__file__).resolve().parents[2]
 PLUGIN_PY = """
@@ -135,15 +133,3 @@ def test_so_path_that_is_not_a_library(tmp_path: Path) -> None:
 def test_available_kinematics_lists_builtins() -> None:
     listed = {name: kin_type for name, kin_type, _ in available_kinematics()}
     assert {"trivial": 1, "rotatekins": 3, "deltakins": 4, "corexy": 5}.items() <= listed.items()
-
-
-def test_shipped_plugins_without_the_package_link(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Where the edingcnc_lang/kins symlink is missing, the repo's top-level ``kins`` package is used."""
-    fake_entry_points(monkeypatch)                                  # a checkout without installed metadata
-    monkeypatch.syspath_prepend(str(REPO))
-    for name in [m for m in sys.modules if m == "edingcnc_lang.kins" or m.startswith("edingcnc_lang.kins.")]:
-        monkeypatch.delitem(sys.modules, name)
-    monkeypatch.setitem(sys.modules, "edingcnc_lang.kins", None)
-    module = import_shipped("rotatekins")
-    assert module.__name__ == "kins.rotatekins"
-    assert load_kinematics("rotatekins", {}).kin_type() == 3

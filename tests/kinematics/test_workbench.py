@@ -12,6 +12,8 @@ from edingcnc_lang.kinematics.workbench import CheckOptions, check_plugin, compa
 from edingcnc_lang.kinematics.workbench.findings import FINDING_CODES, report_from_json
 from edingcnc_lang.kinematics.workbench.workspace import parse_box
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parents[2]
 BROKEN = Path(__file__).resolve().parent / "broken"
 QUICK = dict(samples=600, segments=80, speed=False)

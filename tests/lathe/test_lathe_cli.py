@@ -41,6 +41,7 @@ def test_example_shaft_runs_with_its_own_ini(tmp_path: Path) -> None:
     assert {"spindle", "spindle_speed", "tool_change", "dwell", "dialog"} - kinds == {"dialog"}
 
 
+@pytest.mark.slow
 def test_example_dialogs_answered_like_an_operator(tmp_path: Path) -> None:
     samples = tmp_path / "cut.csv"
     doc = run_json("--ini", EXAMPLE / "cnc.ini", EXAMPLE / "dialogs.nc", *ANSWERS, "--samples", samples)

@@ -43,12 +43,14 @@ computed = st.builds(lambda e: n.Param(e), exprs)  # #[expr]: a literal index on
 odd_numbers = st.sampled_from([0.05, 0.15, 2.5, 38.25, -1.05, 1e300, 5380.0, 1.5, 27.0])
 
 
+@pytest.mark.slow
 @settings(max_examples=200, deadline=None)
 @given(block_nodes)
 def test_the_compiled_block_facts_are_the_python_ones(block: n.Block) -> None:
     _same_block(block)
 
 
+@pytest.mark.slow
 @settings(max_examples=100, deadline=None)
 @given(st.lists(st.tuples(st.sampled_from("GMTXF"), st.one_of(odd_numbers.map(n.Number), computed, exprs)),
                 max_size=6),
@@ -60,6 +62,7 @@ def test_codes_that_round_half_to_even_and_computed_indices(words: list[tuple[st
                         tuple(n.Assign(target, value) for target, value in assigns)))
 
 
+@pytest.mark.slow
 @settings(max_examples=200, deadline=None)
 @given(exprs)
 def test_the_compiled_expression_reads_are_the_python_ones(expr: n.Expr) -> None:
@@ -125,6 +128,7 @@ def _same_survey(body: tuple[n.Stmt, ...]) -> None:
     assert all(type(c) is facts.BlockCodes for c in compiled.coded)
 
 
+@pytest.mark.slow
 @settings(max_examples=100, deadline=None)
 @given(programs)
 def test_the_compiled_walk_is_the_python_walk(program: n.Program) -> None:

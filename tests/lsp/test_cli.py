@@ -5,7 +5,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from tests.lsp.client import LspClient
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 
 def test_ecnc_lsp_serves_until_the_client_exits(tmp_path: Path) -> None:

@@ -10,6 +10,8 @@ from edingcnc_lang.lsp import actions, completion, hover, navigation
 from edingcnc_lang.lsp.lexer import tokens
 from edingcnc_lang.lsp.model import LanguageModel
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parents[2]
 FILES = [ROOT / "stdlib" / "macro.cnc", ROOT / "examples" / "probe_corner.nc", ROOT / "examples" / "dialog_setup.nc"]
 
@@ -30,4 +32,4 @@ def test_every_token_of_a_real_file(path: Path) -> None:
                 assert navigation.definition(model, name, number, token.start), (number + 1, token)
     assert navigation.document_symbols(model, name) or not file.subs
     for found in model.lint(name):
-        actions.fixes(actions.Finding(found.code, found.line - 1, max(found.col - 1, 0), found.message), file.lines)
+        actions.fixes(actions.ShownDiagnostic(found.code, found.line - 1, max(found.col - 1, 0), found.message), file.lines)

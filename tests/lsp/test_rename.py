@@ -59,6 +59,7 @@ def applied(folder: Path, edit: dict[str, Any]) -> dict[str, str]:
             for uri, edits in edit["changes"].items()}
 
 
+@pytest.mark.slow
 def test_the_server_offers_rename_with_prepare(client: LspClient, folder: Path) -> None:
     uri = client.open(folder / "job.nc")
     assert client.request("textDocument/prepareRename", at(uri, 1, 8)) == {
@@ -83,6 +84,7 @@ def test_a_variable_is_renumbered_in_every_file_and_every_kind_of_use(client: Ls
     assert texts["user_macro.cnc"] == USER.replace("#1001 = 2", "#1050 = 2").replace("u1001", "u1050")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("line, col, new, reason", [
     (5, 5, "m101", "Sub m100 is called by its name"),            # an M-code sub
     (8, 5, "swap", "Sub change_tool is called by its name"),     # the controller's

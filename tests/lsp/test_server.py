@@ -14,6 +14,8 @@ import pytest
 from edingcnc_lang.lint import lint_paths
 from tests.lsp.client import LspClient, at
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 MACRO = """;@unit mm
 Sub drill ; drill one hole at the current XY
 ; Z-5, retract to R2

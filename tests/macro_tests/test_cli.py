@@ -57,6 +57,7 @@ def test_k_selects_and_x_stops_at_the_first_failure(folder: Path) -> None:
     assert stopped.exit_code == 1 and stopped.stdout.splitlines()[-1] == "1 passed, 1 failed"
 
 
+@pytest.mark.slow
 def test_j_runs_files_in_parallel_with_the_same_report(folder: Path) -> None:
     assert invoke("test", "-j", "2").stdout == invoke("test").stdout
 

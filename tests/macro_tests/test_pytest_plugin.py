@@ -9,6 +9,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 TOML = """[[test]]
 name = "passes"
 job = "#1 = 1\\nM30\\n"

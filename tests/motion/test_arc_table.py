@@ -2,6 +2,7 @@
 vectorised circle test deciding as ``machine.geometry.circle_within`` does, arc by arc."""
 from __future__ import annotations
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -16,6 +17,7 @@ arcs = st.builds(Arc, st.tuples(values, values), st.sampled_from(["XY", "XZ", "Y
                  st.sampled_from([0, 0, 1, 2]))
 
 
+@pytest.mark.slow
 @settings(max_examples=200, deadline=None)
 @given(poses, st.lists(st.tuples(poses, st.none() | arcs), min_size=1, max_size=10),
        st.tuples(*[values] * 6), st.tuples(*[values] * 6))

@@ -5,8 +5,12 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import pytest
+
 from edingcnc_lang import RunOptions, run_string
 from tests.cli_runner import invoke
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 INI = Path(__file__).resolve().parent.parent / "kinematics" / "scara" / "cnc.ini"
 JOB = "KIN ON\nG1 X200 Y0 F1000\nG1 X150 Y50\nM30\n"  # KIN ON at joints 0, 0: the arm stretched to X350

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from edingcnc_lang.syntax import parser
 from edingcnc_lang.syntax.fastparse import COMPILED_READER
 
-pytestmark = pytest.mark.skipif(not COMPILED_READER, reason="the compiled reader is not built")
+pytestmark = [pytest.mark.skipif(not COMPILED_READER, reason="the compiled reader is not built"), pytest.mark.slow]
 
 LINES = ["If [#1 > 0]", "  While [#2 < 3]", "Else", "EndIf", "  EndWhile", "Sub a", "EndSub", "G1 X1 Y[#3 * 2]",
          "#1 = [#1 + 1]", "", "; note", 'dlgmsg "t" "a" 1', "dlgmsg 5", 'msg "x "#1', "GoSub a", "home x",

@@ -9,6 +9,7 @@ from __future__ import annotations
 import random
 import re
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -68,6 +69,7 @@ lines = st.one_of(others, blocks.map(lambda b: stmt_lines(b)[0]), messages.map(l
 comments = st.sampled_from(["", " ; note", ";x G1 X2", "   "])
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None)
 @given(lines, comments, st.randoms(use_true_random=False))
 def test_fast_parser_agrees_with_the_grammar(line: str, comment: str, rnd: random.Random) -> None:

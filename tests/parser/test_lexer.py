@@ -26,6 +26,8 @@ from edingcnc_lang.syntax.printer import expr_text, stmt_lines
 from .test_fastparse import _respace, comments, lines
 from .test_properties import blocks as block_nodes, exprs, plain_lines
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 lexer = pytest.importorskip("edingcnc_lang._lexer", reason="the compiled tokenizer is not built")
 lexer.setup(nodes, blocks, fastparse.GIVE_UP, fastparse._KEYWORDS - fastparse._HANDLED)  # as fastparse does (also under ECNC_PURE_PYTHON=1)
 

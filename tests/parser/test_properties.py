@@ -13,6 +13,8 @@ from edingcnc_lang.syntax.parser import is_fast_line, parse_line, parse_line_gra
 from edingcnc_lang.syntax.printer import program_text
 from edingcnc_lang.syntax.serialize import to_data
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 numbers = st.one_of(
     st.integers(min_value=-99999, max_value=99999).map(float),
     st.floats(min_value=-1e5, max_value=1e5, allow_nan=False, allow_infinity=False),

@@ -74,7 +74,7 @@ def test_node_classes_are_frozen_slotted_dataclasses() -> None:
 
 
 def test_a_field_made_by_a_factory_is_made_for_each_record() -> None:
-    """As canon.Event's data: the factory is called for every record that does not give the field."""
+    """As a mutable default: the factory is called for every record that does not give the field."""
     def body() -> dict[str, object]:
         return {"__annotations__": {"kind": "str", "data": "dict"}, "__module__": __name__,
                 "data": field(default_factory=dict)}

@@ -8,10 +8,13 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import RunOptions, run_string
+
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 VELOCITY = np.array([120.0, 80.0, 30.0, 90.0, 90.0, 90.0])
 ACCEL = np.array([1500.0, 900.0, 400.0, 2000.0, 2000.0, 2000.0])

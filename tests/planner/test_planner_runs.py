@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from edingcnc_lang import RunOptions, run_string
-from edingcnc_lang.motion.planner.estimate import Timing
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.runner import RunResult
 from tests.cli_runner import invoke
 

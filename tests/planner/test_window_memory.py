@@ -17,6 +17,8 @@ from edingcnc_lang.motion.planner.overrides import Overrides
 from edingcnc_lang.motion.planner.stage import Planner
 from edingcnc_lang.motion.stage import AxisLimits, Samples
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parents[2]
 MOVES = 200
 ROWS = 10_000  # samples per move: the window's moves hold 200 * 10,000 * 48 bytes = 96 MB of joints unreduced

@@ -18,6 +18,7 @@ SCARA = ROOT / "tests" / "kinematics" / "scara" / "cnc.ini"
 JOB = "G1 X0 Y90 F1000\nKIN ON\nG1 X250 Y100 Z-10 F3000\nG1 X200 Y-100\n"
 
 
+@pytest.mark.slow
 def test_a_scara_s_arm_joints_are_in_degrees(tmp_path: Path) -> None:
     path = record_job(write(tmp_path, "scara.nc", JOB), RunOptions(ini=SCARA), samples=True)
     assert path.joint_kinds == ("rotary", "rotary", "linear", "rotary", "rotary", "rotary")

@@ -26,6 +26,8 @@ from edingcnc_lang.plot.render import plot_toolpath  # noqa: E402
 from edingcnc_lang.plot.toolpath import record_job  # noqa: E402
 from tests.plot.jobs import CIRCLE, SQUARE, TWO_TOOLS, write  # noqa: E402
 
+pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
+
 ROOT = Path(__file__).resolve().parents[2]
 
 

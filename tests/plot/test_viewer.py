@@ -79,6 +79,7 @@ def test_job_text_cannot_end_the_data_block(tmp_path: Path) -> None:
     assert lines["1"].endswith("</script><script>alert(1)</script>") and lines["2"].endswith("(caf\xe9)")
 
 
+@pytest.mark.slow
 def test_a_ten_thousand_move_job_is_a_small_page(tmp_path: Path) -> None:
     path = record_job(write(tmp_path, "big.nc", zigzag(10_000, arcs_every=50)))
     assert len(path) > 10_000
@@ -87,6 +88,7 @@ def test_a_ten_thousand_move_job_is_a_small_page(tmp_path: Path) -> None:
     assert embedded(out.read_text(encoding="utf-8"))["shown"] == len(path)  # nothing thinned
 
 
+@pytest.mark.slow
 def test_past_the_budget_moves_are_thinned_and_every_stretch_is_reachable(tmp_path: Path) -> None:
     path = record_job(write(tmp_path, "huge.nc", zigzag(30_000)))
     thinned = decimate(path, 5_000)

@@ -46,6 +46,7 @@ def test_json_has_the_issue_shape(files):
     assert doc["shank_checked"] is False and any("shank" in note for note in doc["notes"])
 
 
+@pytest.mark.slow
 def test_picture_stl_and_compare(files):
     pytest.importorskip("matplotlib")
     from matplotlib.image import imread
@@ -64,6 +65,7 @@ def test_picture_stl_and_compare(files):
     assert (folder / "dev.svg").read_text().startswith("<?xml")
 
 
+@pytest.mark.slow
 def test_stock_from_stl(files):
     folder, good, _bad = files
     invoke("sim", good, "--stock", STOCK, "--tool", "0", "--stl", folder / "cut.stl")

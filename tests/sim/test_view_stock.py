@@ -20,6 +20,7 @@ def stock_data(page: Path) -> dict:  # type: ignore[type-arg]
     return json.loads(found[1])  # type: ignore[no-any-return]
 
 
+@pytest.mark.slow
 def test_the_page_has_frames_from_the_whole_stock_to_the_cut_part(tmp_path):
     page = tmp_path / "pocket.html"
     result = invoke("view", ROOT / "examples/pocket.nc", "--stock", "0,0,-20,100,60,0", "-o", page)
@@ -33,6 +34,7 @@ def test_the_page_has_frames_from_the_whole_stock_to_the_cut_part(tmp_path):
     assert (data["x0"], data["y0"], data["top"]) == (100.0, 50.0, -80.0)
 
 
+@pytest.mark.slow
 def test_a_browser_draws_the_stock(tmp_path):
     from tests.plot.test_browser import CHROMIUM, chromium, console
 

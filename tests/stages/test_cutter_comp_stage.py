@@ -6,7 +6,8 @@ import math
 import pytest
 from stage_helpers import Recorder, batch, line, pose
 
-from edingcnc_lang.canon import Arc, Event, Move
+from edingcnc_lang.canon import Arc, Move
+from edingcnc_lang.events import CoolantEvent, CutterCompEvent, EndEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
@@ -15,7 +16,7 @@ CONFIG = MachineConfig.default()
 
 
 def comp_on(stage: CutterCompensation, side: str, radius: float, plane: str = "XY") -> None:
-    stage.event(Event("cutter_comp", "job.nc", 1, {"side": side, "radius": radius, "plane": plane}))
+    stage.event(CutterCompEvent("job.nc", 1, side, radius, plane))
 
 
 def entered(side: str, radius: float) -> tuple[Recorder, CutterCompensation]:
@@ -38,7 +39,7 @@ def square(stage: CutterCompensation) -> None:
     stage.move(line(20, 0, 20, 20, 4))
     stage.move(line(20, 20, 0, 20, 5))
     stage.move(line(0, 20, 0, 0, 6))
-    stage.event(Event("cutter_comp", "job.nc", 7, {"side": "off"}))
+    stage.event(CutterCompEvent("job.nc", 7, "off"))
     stage.move(line(0, 0, -10, -10, 8))
 
 
@@ -69,7 +70,7 @@ def test_inside_corners_are_cut_back_to_the_intersection_of_both_sides() -> None
 
 def test_a_move_is_held_until_the_next_one_and_events_wait_behind_it() -> None:
     sink, stage = entered("left", 1.0)
-    stage.event(Event("coolant", "job.nc", 3))
+    stage.event(CoolantEvent("job.nc", 3, 8))
     assert [e[0] for e in sink.log] == ["event"]  # only the cutter_comp event so far
     stage.move(line(0, 0, 10, 0, 4))
     assert [e[1] if e[0] == "event" else list(e[1].lines) for e in sink.log[1:]] == [[2], "coolant"]
@@ -122,7 +123,7 @@ def test_a_tool_too_big_for_a_concave_arc_is_refused() -> None:
 
 def test_the_move_after_g40_must_be_straight() -> None:
     _, stage = entered("left", 1.0)
-    stage.event(Event("cutter_comp", "job.nc", 3, {"side": "off"}))
+    stage.event(CutterCompEvent("job.nc", 3, "off"))
     with pytest.raises(MachineError, match="after G40"):
         stage.move(Move("arc", "job.nc", 4, pose(), pose(10), 100.0, Arc((5.0, 0.0), "XY", 1)))
 
@@ -139,6 +140,6 @@ def test_the_xz_plane_compensates_in_z_and_x() -> None:
 
 def test_program_end_flushes_and_ends_compensation() -> None:
     sink, stage = entered("left", 1.0)
-    stage.event(Event("end", "job.nc", 3))
+    stage.event(EndEvent("job.nc", 3, 30))
     assert [e[0] for e in sink.log] == ["event", "batch", "event"] and not stage.side
     assert math.isclose(sink.moves()[0].end[1], 1.0)

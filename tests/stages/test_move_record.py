@@ -19,6 +19,7 @@ from stage_helpers import Recorder, pose
 
 from edingcnc_lang import RunOptions, run_file, run_string
 from edingcnc_lang.canon import PLANES, Arc, Batch, Event, Move
+from edingcnc_lang.events import CutterCompEvent, RotationEvent, ScalingEvent, ZhcEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.config.heightmap import HeightMap
@@ -36,10 +37,10 @@ SURFACE = HeightMap((0.0, 10.0, 20.0), (0.0, 10.0), ((0.0, 1.0, 2.0), (0.5, 1.5,
 OWNS = {Rotation: {"start", "end", "arc"}, Scaling: {"start", "end", "arc"},
         CutterCompensation: {"start", "end", "arc", "kind", "feed"}, HeightCompensation: {"start", "end"}}
 SWITCH_ON = {
-    Rotation: Event("rotation", "job.nc", 1, {"on": True, "pivot": (1.0, 2.0), "angle": 30.0}),
-    Scaling: Event("scaling", "job.nc", 1, {"on": True, "factors": (2.0, 2.0, 1.0), "center": (0.0, 0.0)}),
-    CutterCompensation: Event("cutter_comp", "job.nc", 1, {"side": "left", "radius": 0.5, "plane": "XY"}),
-    HeightCompensation: Event("zhc", "job.nc", 1, {"on": True, "map": SURFACE}),
+    Rotation: RotationEvent("job.nc", 1, True, (1.0, 2.0), 30.0),
+    Scaling: ScalingEvent("job.nc", 1, True, (2.0, 2.0, 1.0), (0.0, 0.0)),
+    CutterCompensation: CutterCompEvent("job.nc", 1, "left", 0.5, "XY"),
+    HeightCompensation: ZhcEvent("job.nc", 1, True, SURFACE),
 }
 KEPT = [f.name for f in fields(Move)]
 
@@ -95,6 +96,7 @@ def _assert_kept(factory: type[Stage], programmed: list[Move], out: list[Move]) 
                 assert getattr(move, name) == getattr(source, name), (factory.__name__, name)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("factory", list(OWNS), ids=lambda f: f.__name__)
 @settings(max_examples=40, deadline=None)
 @given(items=moves, spindle=spindles)
@@ -108,6 +110,7 @@ def test_a_stage_keeps_every_field_it_does_not_own(factory: type[Stage], items: 
     _assert_kept(factory, programmed, _through(factory, one_by_one))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("factory", list(OWNS), ids=lambda f: f.__name__)
 @settings(max_examples=40, deadline=None)
 @given(items=moves, spindle=spindles)
@@ -160,17 +163,18 @@ def _compensated(programmed: list[Move], comp: tuple[str, float, str], send: obj
     side, radius, plane = comp
     sink = Recorder()
     stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
-    stage.event(Event("cutter_comp", "job.nc", 1, {"side": side, "radius": radius, "plane": plane}))
+    stage.event(CutterCompEvent("job.nc", 1, side, radius, plane))
     error = None
     try:
         send(stage)  # type: ignore[operator]
-        stage.event(Event("cutter_comp", "job.nc", 99, {"side": "off"}))
+        stage.event(CutterCompEvent("job.nc", 99, "off"))
         stage.flush()
     except MachineError as err:
         error = err.format()
     return sink.moves(), error
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None)
 @given(rng=st.randoms(use_true_random=False), count=st.integers(1, 80), spindle=spindles, comp=compensations,
        cuts=st.lists(st.integers(1, 79), max_size=4), long_run=st.sampled_from([1, 2, 5]))
@@ -213,10 +217,10 @@ def test_a_long_contour_goes_on_in_batches_and_gives_the_moves_one_by_one() -> N
     sink = Recorder()
     stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
     stage.numpy_after = 0
-    stage.event(Event("cutter_comp", "job.nc", 1, {"side": "left", "radius": 1.0, "plane": "XY"}))
+    stage.event(CutterCompEvent("job.nc", 1, "left", 1.0, "XY"))
     stage.move_batch(batch)
     assert [(kind, len(what)) for kind, what in sink.log[1:]] == [("batch", 199)]  # the last one held back
-    stage.event(Event("cutter_comp", "job.nc", 99, {"side": "off"}))
+    stage.event(CutterCompEvent("job.nc", 99, "off"))
     stage.flush()
     assert (sink.moves(), None) == alone
 

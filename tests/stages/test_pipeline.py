@@ -11,6 +11,7 @@ from stage_helpers import Recorder, batch, line, pose
 
 from edingcnc_lang import runner
 from edingcnc_lang.canon import Event, Move
+from edingcnc_lang.events import CoolantEvent, EndEvent, MsgEvent, PauseEvent, SpindleEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.runner import RunOptions, run_string
@@ -38,7 +39,7 @@ def test_a_plain_stage_passes_everything_through() -> None:
     stage = Stage(sink, CONFIG)
     stage.move(line(0, 0, 1, 0))
     stage.move_batch(batch(pose(1), ("linear", 2, pose(2), 100.0)))
-    stage.event(Event("coolant", "job.nc", 3))
+    stage.event(CoolantEvent("job.nc", 3, 8))
     assert stage.kinematics("ON", (), pose(5), "job.nc", 4) == pose(5)
     stage.flush()
     assert [entry[0] for entry in sink.log] == ["move", "batch", "event", "kinematics"]
@@ -59,21 +60,21 @@ def test_lookahead_releases_each_move_when_the_next_arrives() -> None:
 def test_events_queue_behind_the_held_move_in_program_order() -> None:
     sink = Recorder()
     stage = Successor(sink, CONFIG)
-    stage.event(Event("spindle", "job.nc", 1))  # nothing held: straight through
+    stage.event(SpindleEvent("job.nc", 1, 3, 1000.0, 1000.0))  # nothing held: straight through
     stage.move(line(0, 0, 1, 0, 2))
-    stage.event(Event("coolant", "job.nc", 3))
-    stage.event(Event("msg", "job.nc", 4))
+    stage.event(CoolantEvent("job.nc", 3, 8))
+    stage.event(MsgEvent("job.nc", 4, "hello"))
     assert sink.log == [("event", "spindle")]
     stage.move(line(1, 0, 2, 0, 5))
     assert [e[1] if e[0] == "event" else e[1].line for e in sink.log] == ["spindle", 2, "coolant", "msg"]
 
 
-@pytest.mark.parametrize("kind", ["end", "pause"])
-def test_program_stops_flush(kind: str) -> None:
+@pytest.mark.parametrize("stop", [EndEvent("job.nc", 2, 30), PauseEvent("job.nc", 2, 0)])
+def test_program_stops_flush(stop: Event) -> None:
     sink = Recorder()
     stage = Successor(sink, CONFIG)
     stage.move(line(0, 0, 1, 0, 1))
-    stage.event(Event(kind, "job.nc", 2))
+    stage.event(stop)
     assert [e[0] for e in sink.log] == ["move", "event"]
     assert sink.moves()[0].path == "then -"
 

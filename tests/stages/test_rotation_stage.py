@@ -4,7 +4,8 @@ from __future__ import annotations
 import pytest
 from stage_helpers import Recorder, batch, line, pose
 
-from edingcnc_lang.canon import Arc, Event, Move
+from edingcnc_lang.canon import Arc, Move
+from edingcnc_lang.events import RotationEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.pipeline.rotation import Rotation
@@ -15,7 +16,7 @@ CONFIG = MachineConfig.default()
 def turned(angle: float, pivot: tuple[float, float] = (0.0, 0.0)) -> tuple[Recorder, Rotation]:
     sink = Recorder()
     stage = Rotation(sink, CONFIG)
-    stage.event(Event("rotation", "job.nc", 1, {"on": True, "pivot": pivot, "angle": angle}))
+    stage.event(RotationEvent("job.nc", 1, True, pivot, angle))
     return sink, stage
 
 
@@ -38,7 +39,7 @@ def test_bulk_moves_turn_while_on_and_pass_whole_after_g69() -> None:
     sink, stage = turned(180.0)
     stage.move_batch(batch(pose(), ("linear", 2, pose(1, 2), 100.0)))
     assert sink.moves()[-1].end == pytest.approx(pose(-1, -2))
-    stage.event(Event("rotation", "job.nc", 3, {"on": False}))
+    stage.event(RotationEvent("job.nc", 3, False))
     stage.move_batch(batch(pose(1, 2), ("linear", 4, pose(3, 3), 100.0)))
     assert sink.moves()[-1].start == pytest.approx(pose(-1, -2))  # starts where the tool really was
     stage.move_batch(batch(pose(3, 3), ("linear", 5, pose(4, 4), 100.0)))

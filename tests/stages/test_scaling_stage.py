@@ -4,7 +4,8 @@ from __future__ import annotations
 import pytest
 from stage_helpers import Recorder, batch, line, pose
 
-from edingcnc_lang.canon import Arc, Event, Move
+from edingcnc_lang.canon import Arc, Move
+from edingcnc_lang.events import ScalingEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.pipeline.scaling import Scaling
@@ -16,7 +17,7 @@ def scaled(factors: tuple[float, float, float], center: tuple[float, float] = (0
     sink = Recorder()
     stage = Scaling(sink, CONFIG)
     stage.move(line(0, 0, 10, 10, 1))  # before G51: where the machine really is
-    stage.event(Event("scaling", "job.nc", 2, {"on": True, "factors": factors, "center": center}))
+    stage.event(ScalingEvent("job.nc", 2, True, factors, center))
     return sink, stage
 
 
@@ -49,7 +50,7 @@ def test_arcs_under_unequal_factors_are_refused_at_their_line(factors: tuple[flo
 def test_after_g50_the_next_move_starts_where_the_machine_is() -> None:
     sink, stage = scaled((2.0, 2.0, 1.0))
     stage.move(line(10, 10, 20, 20, 3))
-    stage.event(Event("scaling", "job.nc", 4, {"on": False}))
+    stage.event(ScalingEvent("job.nc", 4, False))
     stage.move_batch(batch(pose(20, 20), ("linear", 5, pose(0, 0), 100.0)))
     last = sink.moves()[-1]
     assert last.start == pose(40, 40) and last.end == pose(0, 0)

@@ -8,6 +8,6 @@ from __future__ import annotations
 
 from edingcnc_lang.kinematics.workbench.check import CheckOptions, check_plugin
 from edingcnc_lang.kinematics.workbench.compare import Comparison, compare_plugins
-from edingcnc_lang.kinematics.workbench.findings import FINDING_CODES, Finding, Report
+from edingcnc_lang.kinematics.workbench.findings import FINDING_CODES, KinsFinding, Report
 
-__all__ = ["CheckOptions", "Comparison", "FINDING_CODES", "Finding", "Report", "check_plugin", "compare_plugins"]
+__all__ = ["CheckOptions", "Comparison", "FINDING_CODES", "KinsFinding", "Report", "check_plugin", "compare_plugins"]

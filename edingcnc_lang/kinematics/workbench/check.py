@@ -15,8 +15,8 @@ from edingcnc_lang.errors import PluginError
 from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics
 from edingcnc_lang.kinematics.workbench import geometry_checks as geo
 from edingcnc_lang.kinematics.workbench import plugin_checks as plug
-from edingcnc_lang.kinematics.workbench.evaluate import call_each
-from edingcnc_lang.kinematics.workbench.findings import Finding, Report, report_from_json
+from edingcnc_lang.kinematics.workbench.calls import call_each
+from edingcnc_lang.kinematics.workbench.findings import KinsFinding, Report, report_from_json
 from edingcnc_lang.kinematics.workbench.workspace import (
     Workspace,
     default_workspace,
@@ -107,7 +107,7 @@ def check_plugin(name: str, options: CheckOptions = CheckOptions()) -> Report:
         if not is_compiled_file(name, machine):
             raise
         report = _crash_report(name, options)
-        report.findings.append(Finding("K601", err.message))
+        report.findings.append(KinsFinding("K601", err.message))
         return report
     return check_loaded(kins, name, options, machine)
 
@@ -126,11 +126,11 @@ def check_loaded(kins: Kinematics, label: str, options: CheckOptions, machine: M
     rc = plug.switch_on(kins, at)
     rng = np.random.default_rng(options.seed)
     poses = space.random(options.samples, rng)
-    samples = geo.Samples(poses, call_each(kins.inverse, poses, machine.joint_limits), machine.joint_limits)
+    samples = geo.PoseSamples(poses, call_each(kins.inverse, poses, machine.joint_limits), machine.joint_limits)
     tol = geo.tolerance(space, options.tolerance)
     report = Report(label, kins.kin_type(), kins.version(), space.source, space.box, options.seed, len(poses))
     if rc != 0:
-        report.findings.append(Finding("K501", f"KIN ON (control ID 4) returned {rc}"))
+        report.findings.append(KinsFinding("K501", f"KIN ON (control ID 4) returned {rc}"))
     steps = [lambda: geo.domain(samples, space),
              lambda: geo.round_trip(kins, samples, space, tol),
              lambda: geo.continuity(kins, samples, space, rng, segments=options.segments),

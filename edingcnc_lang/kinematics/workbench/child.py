@@ -12,7 +12,7 @@ import sys
 def main(argv: list[str]) -> int:
     from edingcnc_lang.errors import EcncError
     from edingcnc_lang.kinematics.workbench import check, compare
-    from edingcnc_lang.kinematics.workbench.findings import Finding
+    from edingcnc_lang.kinematics.workbench.findings import KinsFinding
     from edingcnc_lang.kinematics.workbench.isolate import guard_calls
 
     command, payload, guard = argv[0], json.loads(argv[1]), argv[2]
@@ -30,7 +30,7 @@ def main(argv: list[str]) -> int:
             kins = loaded(payload["name"])
         except EcncError as err:
             report = check._crash_report(payload["name"], options)
-            report.findings.append(Finding("K601", err.message))
+            report.findings.append(KinsFinding("K601", err.message))
         else:
             report = check.check_loaded(kins, payload["name"], options, machine)
         print(json.dumps(report.to_json()))

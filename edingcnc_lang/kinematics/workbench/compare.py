@@ -12,7 +12,7 @@ import numpy as np
 
 from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.workbench import check
-from edingcnc_lang.kinematics.workbench.evaluate import call_each
+from edingcnc_lang.kinematics.workbench.calls import call_each
 from edingcnc_lang.canon import AXES, format_pose
 from edingcnc_lang.kinematics.workbench.findings import JOINT_NAMES
 from edingcnc_lang.kinematics.workbench.geometry_checks import tolerance

@@ -15,7 +15,7 @@ import numpy as np
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.errors import require_extra
 from edingcnc_lang.kinematics.base import Kinematics
-from edingcnc_lang.kinematics.workbench.evaluate import Status, call_each
+from edingcnc_lang.kinematics.workbench.calls import Status, call_each
 from edingcnc_lang.kinematics.workbench.geometry_checks import jacobian_conditions
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
 from edingcnc_lang.picture_formats import picture_format

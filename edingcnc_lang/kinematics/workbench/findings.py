@@ -23,7 +23,7 @@ def format_joints(values: Sequence[float] | None) -> str:
 
 
 @dataclass(frozen=True)
-class Finding:
+class KinsFinding:
     """One problem, with where it happens: the pose (and joints) that show it."""
 
     code: str
@@ -86,7 +86,7 @@ class Report:
     seed: int
     samples: int
     sections: list[Section] = field(default_factory=list)
-    findings: list[Finding] = field(default_factory=list)
+    findings: list[KinsFinding] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
@@ -135,8 +135,8 @@ def _floats(values: Sequence[float | str] | None) -> tuple[float, ...] | None:
     return None if values is None else tuple(float(v) for v in values)
 
 
-def finding_from_json(data: dict[str, Any]) -> Finding:
-    return Finding(data["code"], data["message"], _floats(data.get("pose")), _floats(data.get("joints")),
+def finding_from_json(data: dict[str, Any]) -> KinsFinding:
+    return KinsFinding(data["code"], data["message"], _floats(data.get("pose")), _floats(data.get("joints")),
                    _floats(data.get("other_pose")), _floats(data.get("other_joints")),
                    None if data.get("value") is None else float(data["value"]), int(data.get("count", 1)))
 

@@ -12,9 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics
-from edingcnc_lang.kinematics.workbench.evaluate import Outcome, Status, call_each
+from edingcnc_lang.kinematics.workbench.calls import Outcome, Status, call_each
 from edingcnc_lang.canon import format_pose
-from edingcnc_lang.kinematics.workbench.findings import Finding, Section
+from edingcnc_lang.kinematics.workbench.findings import KinsFinding, Section
 from edingcnc_lang.kinematics.workbench.workspace import Workspace
 
 RELATIVE_TOLERANCE = 1e-6
@@ -25,7 +25,7 @@ TURNS = (360.0, 2.0 * np.pi)
 
 
 @dataclass
-class Samples:
+class PoseSamples:
     """The sample poses with the inverse's outcome on them, shared by the checks."""
 
     poses: np.ndarray
@@ -45,7 +45,7 @@ def _tup(row: np.ndarray) -> tuple[float, ...]:
     return tuple(float(v) for v in row)
 
 
-def domain(samples: Samples, space: Workspace) -> tuple[Section, list[Finding]]:
+def domain(samples: PoseSamples, space: Workspace) -> tuple[Section, list[KinsFinding]]:
     """NaN/infinity and stray exceptions are findings; the reachable share of the box is reported."""
     out, findings = samples.inverse, []
     n = len(samples.poses)
@@ -55,7 +55,7 @@ def domain(samples: Samples, space: Workspace) -> tuple[Section, list[Finding]]:
         if first is not None:
             detail = out.messages.get(status, "")
             message = f"{what}{': ' + detail if detail else ''}; raise KinematicsDomainError for poses out of reach"
-            findings.append(Finding(code, message, pose=_tup(samples.poses[first]),
+            findings.append(KinsFinding(code, message, pose=_tup(samples.poses[first]),
                                     joints=_tup(out.values[first]) if status == Status.NON_FINITE else None,
                                     count=int((out.status == status).sum())))
     reached = int(out.ok.sum())
@@ -74,7 +74,7 @@ def domain(samples: Samples, space: Workspace) -> tuple[Section, list[Finding]]:
         summary += (f"; {100.0 * beyond.sum() / n:.1f}% the plug-in reaches but the ini's joint limits do not "
                     f"allow (e.g. {format_pose(samples.poses[beyond][0])}: {out.messages.get(Status.JOINT_LIMIT, '')})")
     if reached == 0:
-        findings.append(Finding("K403", "no sample pose of the workspace is reachable; check the box and the "
+        findings.append(KinsFinding("K403", "no sample pose of the workspace is reachable; check the box and the "
                                 "plug-in's settings", pose=_tup(samples.poses[0]), count=n))
     return Section("domain", ("ok, " if not findings else "") + summary, figures), findings
 
@@ -83,11 +83,11 @@ def _box_text(lows: np.ndarray, highs: np.ndarray, space: Workspace) -> str:
     return " ".join(f"{'XYZABC'[i]}{lows[i]:.4g}..{highs[i]:.4g}" for i in space.varying)
 
 
-def round_trip(kins: Kinematics, samples: Samples, space: Workspace,
-               tol: float) -> tuple[Section, list[Finding]]:
+def round_trip(kins: Kinematics, samples: PoseSamples, space: Workspace,
+               tol: float) -> tuple[Section, list[KinsFinding]]:
     """forward(inverse(p)) == p and inverse(forward(j)) == j, each pair called back to back."""
     poses, joints = samples.poses[samples.inverse.ok], samples.inverse.values[samples.inverse.ok]
-    findings: list[Finding] = []
+    findings: list[KinsFinding] = []
     if not len(poses):
         return Section("round trip", "not run: nothing reachable"), findings
     pos_err = np.full(len(poses), np.nan)
@@ -111,18 +111,18 @@ def round_trip(kins: Kinematics, samples: Samples, space: Workspace,
     if worst_p is not None and pos_err[worst_p] > tol:
         kins.inverse(_tup(poses[worst_p]))
         found = kins.forward(_tup(joints[worst_p]))
-        findings.append(Finding("K101", f"forward(inverse(p)) is {pos_err[worst_p]:.6g} away from p "
+        findings.append(KinsFinding("K101", f"forward(inverse(p)) is {pos_err[worst_p]:.6g} away from p "
                                 f"(tolerance {tol:.3g}); forward gives {format_pose(found)}",
                                 pose=_tup(poses[worst_p]), joints=_tup(joints[worst_p]),
                                 value=float(pos_err[worst_p]), count=int((pos_err > tol).sum())))
     if worst_j is not None and joint_err[worst_j] > joint_tol:
-        findings.append(Finding("K102", f"inverse(forward(j)) is {joint_err[worst_j]:.6g} away from j "
+        findings.append(KinsFinding("K102", f"inverse(forward(j)) is {joint_err[worst_j]:.6g} away from j "
                                 f"(tolerance {joint_tol:.3g})", pose=_tup(poses[worst_j]),
                                 joints=_tup(joints[worst_j]), value=float(joint_err[worst_j]),
                                 count=int((joint_err > joint_tol).sum())))
     if forward_failed:
         i, message = forward_failed[0]
-        findings.append(Finding("K103", f"forward failed: {message}", pose=_tup(poses[i]), joints=_tup(joints[i]),
+        findings.append(KinsFinding("K103", f"forward failed: {message}", pose=_tup(poses[i]), joints=_tup(joints[i]),
                                 count=len(forward_failed)))
     worst_pos = float(np.nanmax(pos_err)) if worst_p is not None else float("nan")
     worst_joint = float(np.nanmax(joint_err)) if worst_j is not None else float("nan")
@@ -133,18 +133,18 @@ def round_trip(kins: Kinematics, samples: Samples, space: Workspace,
             findings)
 
 
-def continuity(kins: Kinematics, samples: Samples, space: Workspace, rng: np.random.Generator,
-               segments: int = 200, steps: int = 32) -> tuple[Section, list[Finding]]:
+def continuity(kins: Kinematics, samples: PoseSamples, space: Workspace, rng: np.random.Generator,
+               segments: int = 200, steps: int = 32) -> tuple[Section, list[KinsFinding]]:
     """Lines through the workspace: a joint must not jump between neighbouring poses.
 
     Half the lines cross the whole box parallel to an axis (so a wrap or branch line inside the box
     is always crossed); the other half are short segments in random directions from reached poses.
     """
     starts = samples.reached
-    findings: list[Finding] = []
+    findings: list[KinsFinding] = []
     if not len(starts):
         return Section("continuity", "not run: nothing reachable"), findings
-    jumps: list[Finding] = []
+    jumps: list[KinsFinding] = []
     checked = 0
     for line in _lines(space, starts, rng, segments, steps):
         out = call_each(kins.inverse, line, samples.joint_limits)
@@ -163,7 +163,7 @@ def continuity(kins: Kinematics, samples: Samples, space: Workspace, rng: np.ran
         group = [j for j in jumps if j.code == code]
         if group:
             worst = max(group, key=lambda j: j.value or 0.0)
-            findings.append(Finding(worst.code, worst.message, worst.pose, worst.joints, worst.other_pose,
+            findings.append(KinsFinding(worst.code, worst.message, worst.pose, worst.joints, worst.other_pose,
                                     worst.other_joints, worst.value, count=len(group)))
     summary = f"{checked} lines (across the box along each axis, and short random ones)"
     return Section("continuity", ("ok, " if not findings else "") + summary, {"lines": checked}), findings
@@ -191,7 +191,7 @@ def _lines(space: Workspace, starts: np.ndarray, rng: np.random.Generator, count
     return lines
 
 
-def _bisect(kins: Kinematics, a: np.ndarray, b: np.ndarray, delta: float) -> Finding | None:
+def _bisect(kins: Kinematics, a: np.ndarray, b: np.ndarray, delta: float) -> KinsFinding | None:
     """Halve the step [a, b] towards the larger joint change; a jump keeps its size as the step vanishes."""
     ja, jb = np.asarray(kins.inverse(_tup(a))), np.asarray(kins.inverse(_tup(b)))
     for _ in range(BISECTIONS):
@@ -222,7 +222,7 @@ def _bisect(kins: Kinematics, a: np.ndarray, b: np.ndarray, delta: float) -> Fin
         message = (f"joint {names[joint]} jumps by {size:.6g} between two poses {gap:.2g} apart "
                    f"(a branch switch or a discontinuity)")
         code = "K201"
-    return Finding(code, message, pose=_tup(a), joints=_tup(ja), other_pose=_tup(b), other_joints=_tup(jb),
+    return KinsFinding(code, message, pose=_tup(a), joints=_tup(ja), other_pose=_tup(b), other_joints=_tup(jb),
                    value=size)
 
 
@@ -254,11 +254,11 @@ def jacobian_conditions(kins: Kinematics, poses: np.ndarray, space: Workspace,
     return conds
 
 
-def singularities(kins: Kinematics, samples: Samples, space: Workspace,
-                  count: int = 300) -> tuple[Section, list[Finding]]:
+def singularities(kins: Kinematics, samples: PoseSamples, space: Workspace,
+                  count: int = 300) -> tuple[Section, list[KinsFinding]]:
     """Poses where the Jacobian loses rank; axes that never reach the joints (virtual axes) are set aside."""
     poses = samples.reached[:count]
-    findings: list[Finding] = []
+    findings: list[KinsFinding] = []
     if not len(poses):
         return Section("singularity", "not run: nothing reachable"), findings
     axes = list(space.varying)
@@ -284,7 +284,7 @@ def singularities(kins: Kinematics, samples: Samples, space: Workspace,
     if len(bad):
         worst = bad[np.argmax(np.nan_to_num(conds[bad], posinf=np.finfo(float).max))]
         region = poses[bad]
-        findings.append(Finding("K301", f"the Jacobian's condition number reaches {conds[worst]:.3g} (median "
+        findings.append(KinsFinding("K301", f"the Jacobian's condition number reaches {conds[worst]:.3g} (median "
                                 f"{median:.3g}); singular poses lie within "
                                 f"{_box_text(region.min(axis=0), region.max(axis=0), space)}",
                                 pose=_tup(poses[worst]), value=float(conds[worst]), count=len(bad)))

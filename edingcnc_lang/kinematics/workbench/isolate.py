@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from edingcnc_lang.errors import PluginError
-from edingcnc_lang.kinematics.workbench.findings import Finding, Report
+from edingcnc_lang.kinematics.workbench.findings import KinsFinding, Report
 
 CALLS = ("KinematicsInverse", "KinematicsForward", "KinematicsControl", "KinematicsType", "KinematicsVersion")
 RECORD = 8  # doubles: call number, then six pose or joint values (or the control ID), then a counter
@@ -82,7 +82,7 @@ def run_command_isolated(argv: list[str], plugin: str, timeout: float = TIMEOUT)
     raise PluginError(f"kinematics plug-in {plugin!r}: {crash_text(finding)}")
 
 
-def crash_text(finding: Finding) -> str:
+def crash_text(finding: KinsFinding) -> str:
     """A K602/K604 finding as an error's text: the call, what happened and where."""
     from edingcnc_lang.kinematics.workbench.findings import format_joints, format_pose
 
@@ -91,20 +91,20 @@ def crash_text(finding: Finding) -> str:
     return finding.message + where
 
 
-def _last_call(guard: str, code: str, what: str) -> Finding:
+def _last_call(guard: str, code: str, what: str) -> KinsFinding:
     record = np.fromfile(guard, dtype=np.float64, count=RECORD)
     call = int(record[0])
     if not 1 <= call <= len(CALLS):
-        return Finding(code, f"the plug-in {what} before its first call")
+        return KinsFinding(code, f"the plug-in {what} before its first call")
     name = CALLS[call - 1]
     values = tuple(float(v) for v in record[1:7])
     if name == "KinematicsControl":
-        return Finding(code, f"{name}(id {values[0]:g}) {what}")
+        return KinsFinding(code, f"{name}(id {values[0]:g}) {what}")
     if name == "KinematicsForward":
-        return Finding(code, f"{name} {what}", joints=values)
+        return KinsFinding(code, f"{name} {what}", joints=values)
     if name == "KinematicsInverse":
-        return Finding(code, f"{name} {what}", pose=values)
-    return Finding(code, f"{name}() {what}")
+        return KinsFinding(code, f"{name} {what}", pose=values)
+    return KinsFinding(code, f"{name}() {what}")
 
 
 def guard_calls(kins: Any, guard: str) -> None:

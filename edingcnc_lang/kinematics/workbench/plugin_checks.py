@@ -9,9 +9,9 @@ import numpy as np
 
 from edingcnc_lang.kinematics import abi
 from edingcnc_lang.kinematics.base import PLUGIN_FAILURES, Kinematics, KinematicsPlugin
-from edingcnc_lang.kinematics.workbench.evaluate import call_each
-from edingcnc_lang.kinematics.workbench.findings import Finding, Section, format_joints
-from edingcnc_lang.kinematics.workbench.geometry_checks import Samples
+from edingcnc_lang.kinematics.workbench.calls import call_each
+from edingcnc_lang.kinematics.workbench.findings import KinsFinding, Section, format_joints
+from edingcnc_lang.kinematics.workbench.geometry_checks import PoseSamples
 
 KNOWN_TYPES = frozenset(int(t) for t in abi.KinType) | frozenset(range(18, 31))
 UNKNOWN_CONTROL_ID = 99
@@ -25,10 +25,10 @@ def switch_on(kins: Kinematics, at: tuple[float, ...]) -> int:
     return kins.control(abi.ON, data)
 
 
-def control_and_state(kins: Kinematics, samples: Samples, tol: float,
-                      at: tuple[float, ...]) -> tuple[Section, list[Finding]]:
+def control_and_state(kins: Kinematics, samples: PoseSamples, tol: float,
+                      at: tuple[float, ...]) -> tuple[Section, list[KinsFinding]]:
     """ON/OFF return 0, unknown IDs do not raise, user output is sane, answers do not drift."""
-    findings: list[Finding] = []
+    findings: list[KinsFinding] = []
     for name, control_id in (("OFF", abi.OFF), ("ON", abi.ON)):
         try:
             rc = kins.control(control_id, [*at, *[0.0] * (abi.CONTROL_DATA_LEN - len(at))])
@@ -37,11 +37,11 @@ def control_and_state(kins: Kinematics, samples: Samples, tol: float,
         else:
             detail = f"returned {rc}"
         if rc != 0:
-            findings.append(Finding("K501", f"KIN {name} (control ID {control_id}) {detail}"))
+            findings.append(KinsFinding("K501", f"KIN {name} (control ID {control_id}) {detail}"))
     try:
         kins.control(UNKNOWN_CONTROL_ID, [0.0] * abi.CONTROL_DATA_LEN)
     except PLUGIN_FAILURES as err:  # must answer -1, not raise
-        findings.append(Finding("K501", f"control ID {UNKNOWN_CONTROL_ID} (unknown) raised {type(err).__name__}: "
+        findings.append(KinsFinding("K501", f"control ID {UNKNOWN_CONTROL_ID} (unknown) raised {type(err).__name__}: "
                                 f"{err}; return -1 for IDs the plug-in does not handle"))
     try:
         output = [float(v) for v in kins.user_output()]
@@ -51,13 +51,13 @@ def control_and_state(kins: Kinematics, samples: Samples, tol: float,
         problem = ("" if len(output) <= abi.USER_OUTPUT_LEN and all(math.isfinite(v) for v in output)
                    else f"user output is {output}")
     if problem:
-        findings.append(Finding("K502", problem))
+        findings.append(KinsFinding("K502", problem))
     findings += _drift(kins, samples, tol, at)
     summary = f"KIN ON/OFF, unknown control ID, user output ({len(output)} values), repeatable answers"
     return Section("control", ("ok: " if not findings else "") + summary, {"user_output": output}), findings
 
 
-def _drift(kins: Kinematics, samples: Samples, tol: float, at: tuple[float, ...]) -> list[Finding]:
+def _drift(kins: Kinematics, samples: PoseSamples, tol: float, at: tuple[float, ...]) -> list[KinsFinding]:
     """The first answers again, after thousands of other calls and after an OFF/ON cycle."""
     poses, first = samples.reached[:50], samples.inverse.values[samples.inverse.ok][:50]
     findings = []
@@ -70,7 +70,7 @@ def _drift(kins: Kinematics, samples: Samples, tol: float, at: tuple[float, ...]
         bad = np.flatnonzero(~(diff <= tol))
         if len(bad):
             i = int(bad[np.argmax(np.nan_to_num(diff[bad], nan=np.inf))])
-            findings.append(Finding(code, f"inverse of the same pose {what} differs by {diff[i]:.6g} "
+            findings.append(KinsFinding(code, f"inverse of the same pose {what} differs by {diff[i]:.6g} "
                                     f"(first {format_joints(first[i])})", pose=_floats(poses[i]),
                                     joints=_floats(again.values[i]), count=len(bad)))
     return findings
@@ -80,36 +80,36 @@ def _floats(row: np.ndarray) -> tuple[float, ...]:
     return tuple(float(v) for v in row)
 
 
-def compiled_abi(kins: Kinematics) -> tuple[Section, list[Finding]]:
+def compiled_abi(kins: Kinematics) -> tuple[Section, list[KinsFinding]]:
     """Exports, struct sizes and the two plain calls of a compiled plug-in; Python plug-ins skip this."""
     from edingcnc_lang.kinematics import ctypes_plugin as cp
 
     if not isinstance(kins, cp.CompiledKinematics):
         return Section("compiled", "not a compiled plug-in"), []
-    findings: list[Finding] = []
+    findings: list[KinsFinding] = []
     sizes = {"CNC_CART_DOUBLE": ctypes.sizeof(cp.CncCartDouble), "CNC_JOINT_DOUBLE": ctypes.sizeof(cp.CncJointDouble),
              "CNC_VECTOR": ctypes.sizeof(cp.CncVector), "KIN_CONTROLDATA": ctypes.sizeof(cp.KinControlData)}
     wrong = {k: v for k, v in sizes.items() if HEADER_SIZES[k] != v}
     if wrong:
-        findings.append(Finding("K603", f"struct sizes differ from the header: {wrong}"))
+        findings.append(KinsFinding("K603", f"struct sizes differ from the header: {wrong}"))
     kin_type = kins.kin_type()
     if kin_type not in KNOWN_TYPES:
-        findings.append(Finding("K603", f"KinematicsType() returned {kin_type}, not a CNC_KINEMATICS_TYPE value"))
+        findings.append(KinsFinding("K603", f"KinematicsType() returned {kin_type}, not a CNC_KINEMATICS_TYPE value"))
     raw = kins._fn["KinematicsVersion"]()  # the raw bytes: the wrapper would hide undecodable text
     if not raw:
-        findings.append(Finding("K603", "KinematicsVersion() returned NULL or an empty string"))
+        findings.append(KinsFinding("K603", "KinematicsVersion() returned NULL or an empty string"))
     else:
         try:
             raw.decode("ascii")
         except UnicodeDecodeError:
-            findings.append(Finding("K603", f"KinematicsVersion() is not plain ASCII: {raw[:40]!r}"))
+            findings.append(KinsFinding("K603", f"KinematicsVersion() is not plain ASCII: {raw[:40]!r}"))
     exports = sorted(cp.REQUIRED_EXPORTS) + [e for e in sorted(cp.OPTIONAL_EXPORTS) if kins.has_export(e)]
     summary = f"exports {', '.join(exports)}; struct sizes {sizes}; type {kin_type}"
     return (Section("compiled", ("ok: " if not findings else "") + summary,
                     {"exports": exports, "struct_sizes": sizes}), findings)
 
 
-def speed(kins: Kinematics, samples: Samples, budget: float = 0.2) -> Section:
+def speed(kins: Kinematics, samples: PoseSamples, budget: float = 0.2) -> Section:
     """Scalar inverse and forward calls per second; batch inverse samples per second where there is one."""
     poses = samples.reached
     if not len(poses):

@@ -6,17 +6,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from typing import Any
-from edingcnc_lang.records import record
-
-
-@record(frozen=True)
-class Timing:
-    """When one move runs (seconds from the start of the job) and the top speed the planner gave it
-    (mm/s along XYZ, or deg/s for a move of the rotary axes only; 0 for a move of zero length)."""
-
-    start: float
-    end: float
-    speed: float
 
 
 @dataclass

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from edingcnc_lang.canon import Event
+from edingcnc_lang.events import OverrideEvent
 from edingcnc_lang.errors import EcncError
 
 MAX_FEED_OVERRIDE = 1000.0  # percent; more is almost certainly a typo
@@ -50,15 +50,15 @@ class Overrides:
     def rapid_factor(self) -> float:
         return self.rapid_percent / 100.0
 
-    def apply(self, event: Event) -> None:
-        """Follow an ``override`` event (M48..M50; ``p`` is the P word when the line had one)."""
-        code = event.data.get("m")
+    def apply(self, event: OverrideEvent) -> None:
+        """Follow an override event (M48..M50; ``p`` is the P word when the line had one)."""
+        code = event.m
         if code == 48:
             self.feed_enabled, self.feed_set = True, None
         elif code == 49:
             self.feed_enabled = False
         elif code == 50:
-            p = event.data.get("p")
+            p = event.p
             if p is None:
                 self.feed_enabled = True
             elif float(p) < 0.0:

@@ -16,8 +16,11 @@ from itertools import chain
 from typing import TYPE_CHECKING, Any, Protocol
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.events import (DialogEvent, DwellEvent, EndEvent, ExecEvent, OperatorWaitEvent, OverrideEvent,
+                                  PathControlEvent, PauseEvent, SpindleEvent, ToolChangeEvent)
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.motion.planner.estimate import Estimate, Timing
+from edingcnc_lang.motion.planner.estimate import Estimate
+from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.planner.limits_report import LimitsReport
 from edingcnc_lang.motion.planner.overrides import Overrides
 from edingcnc_lang.motion.planner.runs import Runs
@@ -37,7 +40,8 @@ WINDOW = 4096      # moves planned in one numpy pass
 LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (it can stop within them)
 # Events the machine stops for: it waits for a dwell, a tool change, a pause or the end, the spindle
 # to reach its speed, an external program or an operator's answer.
-STOPPING_EVENTS = frozenset({"dwell", "tool_change", "pause", "end", "spindle", "exec", "dialog", "operator_wait"})
+STOPPING_EVENTS = (DwellEvent, ToolChangeEvent, PauseEvent, EndEvent, SpindleEvent, ExecEvent, DialogEvent,
+                   OperatorWaitEvent)
 
 
 # What a move runs under: exact stop, G64 P, the feed override, the limits of rapids and of the rest, G64 R S D.
@@ -148,16 +152,16 @@ class Planner:
         return 1.0 if sync > 0.0 else self.overrides.feed_factor
 
     def event(self, event: Event) -> None:
-        if event.kind == "override":
+        if isinstance(event, OverrideEvent):
             self.overrides.apply(event)
-        elif event.kind == "path_control":
-            self.exact_stop = event.data.get("mode") != "G64"
-            self.tolerance = float(event.data.get("p", self.config.g64_p))
-            data = event.data
-            if "r" in data or (("s" in data or "d" in data) and not math.isnan(self.laf[0])):
+        elif isinstance(event, PathControlEvent):
+            self.exact_stop = event.mode != "G64"
+            self.tolerance = event.p
+            if event.r is not None or ((event.s is not None or event.d is not None) and not math.isnan(self.laf[0])):
                 angle, second, deviation = self.laf
-                self.laf = (float(data.get("r", angle)), float(data.get("s", second)), float(data.get("d", deviation)))
-        if event.kind in STOPPING_EVENTS:
+                self.laf = (angle if event.r is None else event.r, second if event.s is None else event.s,
+                            deviation if event.d is None else event.d)
+        if isinstance(event, STOPPING_EVENTS):
             self.flush()
             self._emit_event(event)
             return
@@ -345,16 +349,14 @@ class Planner:
             queue.popleft()
 
     def _emit_event(self, event: Event) -> None:
-        if event.kind == "dwell":
-            seconds = float(event.data.get("seconds", 0.0))
-            self.estimate.add_dwell(self.tool, seconds)
-            self.time += seconds
-        elif event.kind == "tool_change":
-            self.tool = int(event.data.get("tool", self.tool))
-        elif event.kind == "operator_wait":
-            knob = self.overrides.feed_percent if event.data.get("override") == "feed" else 100.0
-            self.estimate.add_note(f"{event.path}:{event.line}: M{event.data.get('m')} P0 waits for the operator to "
-                                   f"turn the {event.data.get('override')} override knob (not timed); the run goes on "
-                                   f"at {knob:g} %")
+        if isinstance(event, DwellEvent):
+            self.estimate.add_dwell(self.tool, event.seconds)
+            self.time += event.seconds
+        elif isinstance(event, ToolChangeEvent):
+            self.tool = event.tool
+        elif isinstance(event, OperatorWaitEvent):
+            knob = self.overrides.feed_percent if event.override == "feed" else 100.0
+            self.estimate.add_note(f"{event.path}:{event.line}: M{event.m} P0 waits for the operator to turn the "
+                                   f"{event.override} override knob (not timed); the run goes on at {knob:g} %")
         for sink in self.sinks:
             sink.event(event)

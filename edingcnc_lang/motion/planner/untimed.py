@@ -13,6 +13,7 @@ import math
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.events import OverrideEvent
 from edingcnc_lang.motion.planner.overrides import Overrides
 
 if TYPE_CHECKING:
@@ -36,7 +37,7 @@ class Untimed:
         """As ``move``, for a batch."""
 
     def event(self, event: Event) -> None:
-        if event.kind == "override":
+        if isinstance(event, OverrideEvent):
             self.overrides.apply(event)
 
     def flush(self) -> None:

@@ -31,6 +31,7 @@ def ini(tmp_path: Path) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_concurrent_runs_each_keep_their_change(ini: Path) -> None:
     runs = []
     for i in range(10):

@@ -1,0 +1,1 @@
+"""The packaged default macro file (package data)."""

@@ -1,0 +1,107 @@
+"""The interpreter's state is declared in one place, and an observer sees a read-only view of it.
+
+Every attribute a part of the interpreter (a mixin on ``MachineState``) sets is one that
+``MachineState.__init__`` declares, with its type and meaning; no part keeps state in a class
+attribute (one mutable dict shared by every machine was one such).
+"""
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+from edingcnc_lang import RunOptions, run_string
+from edingcnc_lang.machine import state
+from edingcnc_lang.machine.observe import MachineView, Observer
+from edingcnc_lang.syntax import nodes as n
+
+MACHINE = Path(state.__file__).parent
+
+
+def _parts() -> list[tuple[Path, ast.ClassDef]]:
+    found = []
+    for path in sorted(MACHINE.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ClassDef) and any(isinstance(b, ast.Name) and b.id == "MachineState"
+                                                      for b in node.bases):
+                found.append((path, node))
+    return found
+
+
+def _self_targets(function: ast.AST) -> set[str]:
+    names = set()
+    for node in ast.walk(function):
+        targets = node.targets if isinstance(node, ast.Assign) else \
+            [node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign)) else []
+        for target in targets:
+            for item in target.elts if isinstance(target, ast.Tuple) else [target]:
+                if isinstance(item, ast.Attribute) and isinstance(item.value, ast.Name) and item.value.id == "self":
+                    names.add(item.attr)
+    return names
+
+
+def _declared() -> set[str]:
+    tree = ast.parse((MACHINE / "state.py").read_text(encoding="utf-8"))
+    cls = next(c for c in ast.walk(tree) if isinstance(c, ast.ClassDef) and c.name == "MachineState")
+    init = next(f for f in cls.body if isinstance(f, ast.FunctionDef) and f.name == "__init__")
+    return _self_targets(init)
+
+
+@pytest.mark.slow
+def test_the_parts_are_found() -> None:
+    assert len(_parts()) >= 12
+
+
+@pytest.mark.slow
+def test_every_attribute_a_part_sets_is_declared_in_machine_state_init() -> None:
+    declared = _declared()
+    stray = [f"{path.name}: {cls.name}.{fn.name} sets self.{name}"
+             for path, cls in _parts() for fn in cls.body if isinstance(fn, ast.FunctionDef)
+             for name in sorted(_self_targets(fn) - declared)]
+    assert not stray, "\n".join(stray)
+
+
+@pytest.mark.slow
+def test_no_part_keeps_state_in_a_class_attribute() -> None:
+    shared = [f"{path.name}: {cls.name}: {ast.unparse(node)}" for path, cls in _parts() for node in cls.body
+              if isinstance(node, (ast.Assign, ast.AnnAssign)) and not (
+                  isinstance(node, ast.AnnAssign) and node.value is None)]
+    assert not shared, "\n".join(shared)
+
+
+class _Watch(Observer):
+    def __init__(self) -> None:
+        self.views: list[object] = []
+        self.seen: list[tuple[str, int, int, tuple[float, ...], float]] = []
+
+    def statement(self, machine: MachineView, stmt: n.Stmt) -> None:
+        self.views.append(machine)
+        self.seen.append((machine.path, machine.line, len(machine.stack), machine.position, machine.variable(1)))
+
+
+def test_an_observer_is_shown_a_read_only_view() -> None:
+    watch = _Watch()
+    run_string("#1 = 5\nG0 X3\n", RunOptions(observer=watch))
+    assert all(type(view) is MachineView for view in watch.views)
+    assert watch.seen[-1] == ("<string>", 2, 0, (0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 5.0)
+    view = watch.views[0]
+    with pytest.raises(AttributeError):
+        view.line = 3  # type: ignore[misc]
+    with pytest.raises(AttributeError):
+        view.pos = [1.0] * 6  # type: ignore[attr-defined]
+
+
+def test_two_machines_do_not_share_a_cycle_shift() -> None:
+    """G87's shift was a class attribute: one machine's cycle left it for the next."""
+    from edingcnc_lang.machine.interpreter import Interpreter
+
+    class Sink:
+        def move(self, move: object) -> None: ...
+        def move_batch(self, batch: object) -> None: ...
+        def event(self, event: object) -> None: ...
+        def kinematics(self, *args: object) -> tuple[float, ...]: return (0.0,) * 6
+
+    first, second = Interpreter(Sink()), Interpreter(Sink())  # type: ignore[arg-type]
+    first.cycle_shift[0] = 2.0
+    assert second.cycle_shift == {} and first.zhc is None and second.cycle_pitch == 0.0
