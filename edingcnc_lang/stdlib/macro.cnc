@@ -114,10 +114,9 @@ Sub user_1
         G38.2 G91 Z-[#4000] F[#4001]    ; search down, stop at contact
         G90
         If [#5067 == 1]
-            ; here the work Z is the plate thickness, in the active system
-            G10 L20 P[#5220] Z[#4002]
-            G91 G0 Z5                   ; lift off the plate
-            G90
+            ; at the trip point (#5063) the work Z is the plate thickness; the probe has backed off since
+            G10 L20 P[#5220] Z[#4002 + #5003 - #5063]
+            G0 Z[#4002 + 5]             ; lift off the plate
             msg "Work Z set on a "#4002" mm plate"
         Else
             errmsg "No contact within "#4000" mm"
