@@ -25,7 +25,7 @@ from edingcnc_lang.kinematics.trajectory import arc_frame, arc_frame_rows
 from edingcnc_lang.runner import Run
 from edingcnc_lang.machine import bulk, plain_runs
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
-from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_LINE_LENGTH, MAX_NUMBER_DIGITS
+from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_GCODE_LINE, MAX_NUMBER_DIGITS
 from edingcnc_lang.motion.reach import column_bounds
 from edingcnc_lang.motion.sinks import trace_rows
 from edingcnc_lang.syntax.parser import non_plain_lines
@@ -51,7 +51,7 @@ lines = st.builds(lambda ws, lead, tail: lead + " ".join(f"{c}{a}{gap}{v}" for c
 @settings(max_examples=300, deadline=None)
 @given(st.lists(lines, min_size=1, max_size=12))
 def test_the_check_scan_is_the_same(chunk: list[str]) -> None:
-    assert compiled.non_plain_lines(MAX_LINE_LENGTH, INTEGER_DIGITS, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+    assert compiled.non_plain_lines(MAX_GCODE_LINE, INTEGER_DIGITS, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
 
 
 @settings(max_examples=300, deadline=None)
@@ -153,7 +153,7 @@ def test_the_frames_of_a_batchs_arcs_are_the_same(start: tuple[float, ...],
     ["G1 X" + "1" * INTEGER_DIGITS, "G1 X" + "1" * (INTEGER_DIGITS + 1), "G1 X1 ;\udc80", "G1 X\ud8001"]])
 def test_the_check_scan_at_the_ends_of_a_chunk(chunk: list[str]) -> None:
     """Other lines first, last and one after another: each run of plain lines ends where the scan resumes."""
-    assert compiled.non_plain_lines(MAX_LINE_LENGTH, INTEGER_DIGITS, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
+    assert compiled.non_plain_lines(MAX_GCODE_LINE, INTEGER_DIGITS, MAX_NUMBER_DIGITS, chunk) == non_plain_lines(chunk)
 
 
 @pytest.mark.parametrize("texts", [
