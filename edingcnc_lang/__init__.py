@@ -34,6 +34,7 @@ if TYPE_CHECKING:
     from edingcnc_lang.host import DialogAnswer, DialogField, Host
     from edingcnc_lang.kinematics.trajectory import move_length, move_points
     from edingcnc_lang.lint.driver import LintOptions, lint_paths
+    from edingcnc_lang.machine.observe import MachineView
     from edingcnc_lang.machine.parameters import ParameterView
     from edingcnc_lang.mdi import MdiOutcome, MdiSession
     from edingcnc_lang.motion.planner.estimate import Estimate
@@ -60,6 +61,7 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(("DialogAnswer", "DialogField", "Host"), ".host"),
     **dict.fromkeys(("move_length", "move_points"), ".kinematics.trajectory"),
     **dict.fromkeys(("LintOptions", "lint_paths"), ".lint.driver"),
+    "MachineView": ".machine.observe",
     "ParameterView": ".machine.parameters",
     **dict.fromkeys(("MdiOutcome", "MdiSession"), ".mdi"),
     "Estimate": ".motion.planner.estimate",
@@ -77,7 +79,7 @@ _EXPORTS: dict[str, str] = {
 __all__ = [
     "Arc", "Batch", "CallbackError", "Cancelled", "Code", "ConfigError", "Css", "Diagnostic", "DialogAnswer",
     "DialogField", "EcncError", "Estimate", "Event", "Frame", "Host", "Interrupted", "JobAborted",
-    "LintOptions", "Location", "MachineConfig", "MachineError", "MdiOutcome", "MdiSession", "Move",
+    "LintOptions", "Location", "MachineConfig", "MachineError", "MachineView", "MdiOutcome", "MdiSession", "Move",
     "MoveStream", "ParameterView", "PluginError", "Pose", "Program", "Run", "RunOptions", "RunResult",
     "RuntimeCode", "Severity", "Span", "Stmt", "SyntaxErrors", "Timing", "Toolpath", "Visitor", "lint_paths",
     "load_config", "move_length", "move_points", "parse_file", "parse_text", "plot_toolpath",

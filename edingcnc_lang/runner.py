@@ -26,7 +26,7 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.motion.callback_tap import CallbackTap
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.machine.named_commands import tools_used
-from edingcnc_lang.machine.observe import Observer
+from edingcnc_lang.machine.observe import MachineView, Observer
 from edingcnc_lang.kinematics.base import Kinematics
 from edingcnc_lang.kinematics.builtin import TrivialKinematics
 from edingcnc_lang.kinematics.loader import load_kinematics
@@ -263,6 +263,12 @@ class Run:
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
         if self.planner is not None:
             self.planner.tool = int(self.interpreter.params.read(t.TOOL_CURRENT))
+
+    @property
+    def view(self) -> MachineView:
+        """The machine as it is now, read-only (where the run is, the call stack, the position, every
+        parameter with ``variable(n)``, expressions' values): for a callback during the run."""
+        return self.interpreter.view
 
     def cancel(self) -> None:
         """Stop the run at its next move, statement, loop turn or hole, or before its next callback

@@ -8,6 +8,8 @@ so no handler ever sees a list where it reads a string or a 5,000-character path
 """
 from __future__ import annotations
 
+import math
+
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -19,6 +21,7 @@ MAX_TEXT_CHARS = MAX_LINE_LENGTH  # an expression, condition, log message or val
 MAX_ITEMS = 10_000  # breakpoints of one file, function breakpoints, scripted answers, filters
 MAX_ID = 2**31 - 1  # lines, ids and references
 MAX_STEPS = 2**53  # maxSteps (a JSON number exact in every client)
+MAX_SETTING = 1e9  # a number of the machine's start state (vars, offsets, tools, probeAt): far beyond any machine
 
 Check = Callable[[Any, str], "str | None"]  # (value, its name) -> the problem, or None
 
@@ -73,7 +76,32 @@ def _object(fields: Mapping[str, Check], required: tuple[str, ...] = ()) -> Chec
     return check
 
 
-BOOLEAN, WHOLE = _boolean, _whole()
+def _number(value: Any, where: str) -> str | None:
+    """A finite JSON number (a setting of the machine: a parameter's value, a length)."""
+    if type(value) not in (int, float) or not math.isfinite(value) or abs(value) > MAX_SETTING:
+        return f"{where} must be a finite number of at most {MAX_SETTING:g} in size"
+    return None
+
+
+def _table(value_check: Check) -> Check:
+    """An object of at most MAX_ITEMS names (short strings) to values."""
+    def check(value: Any, where: str) -> str | None:
+        if not isinstance(value, dict):
+            return f"{where} must be an object"
+        if len(value) > MAX_ITEMS:
+            return f"{where} has {len(value):,} entries, more than the {MAX_ITEMS:,} it may have"
+        return next((p for k, v in value.items()
+                     if (p := NAME(k, f"{where} key") or value_check(v, f"{where}.{k}")) is not None), None)
+    return check
+
+
+def _either(first: Check, second: Check) -> Check:
+    def check(value: Any, where: str) -> str | None:
+        return None if first(value, where) is None else second(value, where)
+    return check
+
+
+BOOLEAN, WHOLE, NUMBER = _boolean, _whole(), _number
 PATH, NAME, TEXT = _string(MAX_PATH_CHARS), _string(MAX_NAME_CHARS), _string(MAX_TEXT_CHARS)
 _SOURCE_BREAKPOINT = _object({"line": _whole(), "column": _whole(), "condition": TEXT, "hitCondition": NAME,
                               "logMessage": TEXT}, required=("line",))
@@ -87,7 +115,9 @@ REQUESTS: dict[str, Check] = {
                            "pathFormat": NAME, "linesStartAt1": BOOLEAN, "columnsStartAt1": BOOLEAN}),
     "launch": _object({"program": PATH, "cwd": PATH, "ini": PATH, "macro": PATH, "userMacro": PATH,
                        "probeSurface": PATH, "logDir": PATH, "answers": _list(NAME), "stopOnEntry": BOOLEAN,
-                       "noDebug": BOOLEAN, "maxSteps": _whole(1, MAX_STEPS)}),
+                       "noDebug": BOOLEAN, "maxSteps": _whole(1, MAX_STEPS), "probeAt": NUMBER,
+                       "vars": _table(NUMBER), "offsets": _table(_list(NUMBER, 6)),
+                       "tools": _table(_either(NUMBER, _list(NUMBER, 2)))}),
     "setBreakpoints": _object({"source": _object({"path": PATH, "name": PATH}),
                                "breakpoints": _list(_SOURCE_BREAKPOINT),
                                "lines": _list(_whole()), "sourceModified": BOOLEAN}, required=("source",)),

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from edingcnc_lang.host import DialogAnswer
+from edingcnc_lang.machine import start_state
 
 
 class LaunchError(Exception):
@@ -27,6 +28,9 @@ class Launch:
     no_debug: bool = False
     log_dir: Path | None = None
     max_steps: int | None = None
+    # the machine before the job: vars, offsets and tools as parameters (machine.start_state), the probe's height
+    variables: dict[int, float] = field(default_factory=dict)
+    probe_at: float | None = None
 
 
 
@@ -64,10 +68,28 @@ def launch_of(args: dict[str, Any]) -> Launch:
     if not_folder:
         raise LaunchError(f"logDir: {_shown(log_dir)} is not a folder")
     max_steps = args.get("maxSteps")
+    probe_at = args.get("probeAt")
     return Launch(program, ini=path("ini"), macro=path("macro"), user_macro=path("userMacro"), answers=answers,
                   probe_surface=path("probeSurface"), stop_on_entry=bool(args.get("stopOnEntry")),
                   no_debug=bool(args.get("noDebug")), log_dir=log_folder,
-                  max_steps=int(max_steps) if max_steps else None)
+                  max_steps=int(max_steps) if max_steps else None, variables=_start_state(args),
+                  probe_at=float(probe_at) if probe_at is not None else None)
+
+
+def _start_state(args: dict[str, Any]) -> dict[int, float]:
+    """``vars`` ({"4520": 1}), ``offsets`` ({"G54": [100, 50, -20]}) and ``tools`` ({"3": [42.5, 6]} or
+    {"3": 42.5}) as the parameters they set, read as ``--var``, ``--offset`` and ``--tool`` are."""
+    def text(value: Any) -> str:
+        return ",".join(map(str, value)) if isinstance(value, list) else str(value)
+
+    found: dict[int, float] = {}
+    for key, read in (("vars", start_state.variable), ("offsets", start_state.offset), ("tools", start_state.tool)):
+        for name, value in (args.get(key) or {}).items():
+            try:
+                found.update(read(str(name), text(value)))
+            except ValueError as err:
+                raise LaunchError(f"{key}: {err}") from None
+    return found
 
 
 def _shown(value: object) -> str:

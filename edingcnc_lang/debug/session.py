@@ -182,11 +182,15 @@ class Session(Observer):
             from edingcnc_lang.config.heightmap import ProbeAt, read_surface
 
             self._probe_surface = ProbeAt(read_surface(str(launch.probe_surface)))
+        elif launch.probe_at is not None:
+            from edingcnc_lang.config.heightmap import ProbePlane
+
+            self._probe_surface = ProbePlane(launch.probe_at)
         live = self._phase == LIVE
         options = RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro,
                              host=Host(dialog=self._dialog, probe=self._probe, message=self._message),
                              log_dir=self._log_dir() if live else self._scratch, plan=False,
-                             observer=None if launch.no_debug else self)
+                             observer=None if launch.no_debug else self, variables=launch.variables)
         if launch.max_steps is not None:
             options.max_steps = launch.max_steps
         run = Run(options)

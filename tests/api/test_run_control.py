@@ -153,3 +153,16 @@ def test_run_options_take_file_names_as_strings(tmp_path: Path) -> None:
     assert options.ini == ini and isinstance(options.trace, Path)
     run_string("G0 X1\nM30\n", options)
     assert (tmp_path / "t.csv").exists()
+
+
+def test_a_callback_reads_the_machine_through_the_runs_read_only_view() -> None:
+    seen: list[tuple[int, float, float]] = []
+
+    def on_move(move: Move, joints: Pose) -> None:
+        seen.append((run.view.line, run.view.variable(100), run.view.variable(5001)))
+
+    run = Run(RunOptions(on_move=on_move))
+    run.execute_text("#100 = 3\nG0 X4\n#100 = 5\nG0 X7\nM30\n")
+    # inside on_move the machine is still where the move starts (its end is move.end)
+    assert seen == [(2, 3.0, 0.0), (4, 5.0, 4.0)]
+    assert not hasattr(run.view, "params")  # a view, not the machine

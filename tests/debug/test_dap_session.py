@@ -282,3 +282,15 @@ def test_stepping_back_from_an_error_in_a_plain_line_of_the_bulk_path(tmp_path, 
     assert client.stack() == [("job", 3000)] and client.value("#5001") == "48"
     client.step("next")
     assert client.stack() == [("job", 3001)] and client.value("#5001") == "49"
+
+
+def test_launch_sets_up_the_machine_as_the_command_line_does(tmp_path, client) -> None:
+    job = write(tmp_path, 'G38.2 Z-50 F100\nmsg "at "#5063" v "#4520" g54 "#5221" t3 "#5403","#5503" in "#5008\nM30\n')
+    client.start({}, program=str(job), vars={"4520": 7}, offsets={"G54": [10, 0, 0]}, tools={"3": [42.5, 6]},
+                 probeAt=-12.5)
+    assert client.wait("exited") == {"exitCode": 0}
+    assert "at -12.5 v 7 g54 10 t3 42.5,6 in 0" in client.outputs()
+    refused = client.raw("launch", program=str(job), vars={"5001": 3})
+    assert not refused["success"] and "#5001 is a read-only system variable" in refused["message"]
+    refused = client.raw("launch", program=str(job), probeAt="high")
+    assert not refused["success"] and "probeAt must be a finite number" in refused["message"]

@@ -148,7 +148,7 @@ def test_a_tools_file_that_is_not_utf8_is_a_usage_error(job: Path, tmp_path: Pat
 
 
 def test_sim_options_take_ascii_digits_only(job: Path) -> None:
-    _clean(invoke("sim", job, "--stock", STOCK, "--tool", "\u0661"), 2, "expected N (the tool in the spindle)")
+    _clean(invoke("sim", job, "--stock", STOCK, "--tool", "\u0661"), 2, "is not a tool number")
     _clean(invoke("sim", job, "--stock", STOCK, "--resolution", "\uff11"), 2, "is not a number")
 
 
