@@ -83,6 +83,7 @@ class Shape:
     lines: frozenset[int]
     branches: tuple[tuple[int, bool, str], ...]  # (line, taken, "then"/"else"/"enter"/"leave")
     subs: dict[str, tuple[str, int]]             # lower-case name -> (name as written, line)
+    sub_ends: dict[str, int] = field(default_factory=dict)  # lower-case name -> the line of its EndSub
 
 
 def shape_of(path: str) -> Shape:
@@ -94,9 +95,11 @@ def shape_of(path: str) -> Shape:
     lines: set[int] = set()
     branches: list[tuple[int, bool, str]] = []
     subs: dict[str, tuple[str, int]] = {}
+    ends: dict[str, int] = {}
     for stmt in body:
         if isinstance(stmt, n.Sub):
             subs.setdefault(stmt.name.lower(), (stmt.name, stmt.span.line))
+            ends.setdefault(stmt.name.lower(), stmt.end_span.line)
             statements = _walk(stmt.body)
         elif isinstance(stmt, n.BadLine):  # prose between subs: a run never executes it
             continue
@@ -106,7 +109,7 @@ def shape_of(path: str) -> Shape:
             lines.add(inner.span.line)
             if isinstance(inner, (n.If, n.While)):
                 branches += [(inner.span.line, taken, BRANCH_NAMES[type(inner), taken]) for taken in (True, False)]
-    return Shape(frozenset(lines), tuple(branches), subs)
+    return Shape(frozenset(lines), tuple(branches), subs, ends)
 
 
 def _walk(body: Iterable[n.Stmt]) -> Iterator[n.Stmt]:
@@ -133,6 +136,20 @@ class FileCoverage:
     subs_never_run: tuple[str, ...]
     branches: tuple[tuple[int, str, bool], ...] = ()  # every branch: (line, name, taken), for LCOV and Cobertura
     subs: tuple[tuple[str, int, bool], ...] = ()       # every sub: (name as written, line, run)
+    sub_ends: tuple[int, ...] = ()                     # the line of each sub's EndSub, in the order of ``subs``
+
+    def missed_by_sub(self) -> list[tuple[str | None, tuple[int, ...]]]:
+        """The lines not run of the subs that ran (and of the top level, None), sub by sub in file
+        order: a sub no test ran is all missed and named in ``subs_never_run`` instead."""
+        spans = [(name, first, last) for (name, first, run), last in zip(self.subs, self.sub_ends) if run]
+        never = [(first, last) for (_name, first, run), last in zip(self.subs, self.sub_ends) if not run]
+        groups: dict[str | None, list[int]] = {}
+        for line in self.missed:
+            if any(first <= line <= last for first, last in never):
+                continue
+            owner = next((name for name, first, last in spans if first <= line <= last), None)
+            groups.setdefault(owner, []).append(line)
+        return [(name, tuple(lines)) for name, lines in groups.items()]
 
     def to_json(self) -> dict[str, object]:
         return {"lines": {"total": self.lines_total, "hit": len(self.lines_hit), "missed": list(self.missed)},
@@ -160,7 +177,9 @@ def summarise(data: CoverageData) -> list[FileCoverage]:
                                  if key not in called),
             branches=tuple((line, name, (line, way) in taken) for line, way, name in shape.branches),
             subs=tuple((written, line, key in called)
-                       for key, (written, line) in sorted(shape.subs.items(), key=lambda i: i[1][1]))))
+                       for key, (written, line) in sorted(shape.subs.items(), key=lambda i: i[1][1])),
+            sub_ends=tuple(shape.sub_ends.get(key, line)
+                           for key, (_written, line) in sorted(shape.subs.items(), key=lambda i: i[1][1]))))
     return report
 
 

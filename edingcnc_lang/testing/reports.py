@@ -40,8 +40,8 @@ def coverage_term(files: Sequence[FileCoverage]) -> str:
         out.append(f"{cov.path}: lines {len(cov.lines_hit)}/{cov.lines_total} "
                    f"({percent(len(cov.lines_hit), cov.lines_total)}), branches {cov.branches_hit}/"
                    f"{cov.branches_total} ({percent(cov.branches_hit, cov.branches_total)})")
-        if cov.missed:
-            out.append(f"  lines not run: {ranges(cov.missed)}")
+        for sub, lines in cov.missed_by_sub():  # grouped by sub: a wall of ranges says nothing
+            out.append(f"  lines not run {'in ' + sub if sub else 'outside the subs'}: {ranges(lines)}")
         if cov.branches_missed:
             out.append("  branches not taken: " + ", ".join(f"{line} {name}" for line, name in cov.branches_missed))
         if cov.subs_never_run:

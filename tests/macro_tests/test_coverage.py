@@ -65,8 +65,20 @@ def test_coverage_adds_up_over_tests_and_the_json_has_the_issues_shape(tmp_path:
     assert {k: entry["branches"][k] for k in ("total", "hit")} == {"total": 4, "hit": 4}
     assert entry["subs_never_run"] == ["never"]
     term = coverage_term(files)
-    assert "lines 7/8 (88%), branches 4/4 (100%)" in term and "lines not run: 15" in term
+    assert "lines 7/8 (88%), branches 4/4 (100%)" in term and "lines not run" not in term  # 15 is in `never`
     assert "subs no test ran: never" in term
+
+
+def test_the_lines_not_run_are_grouped_by_the_sub_they_are_in(tmp_path: Path) -> None:
+    path = tmp_path / "g.cnc"
+    path.write_text("Sub a\n#1 = 1\nIf [#1 == 2]\n#2 = 1\nEndIf\nEndSub\n"
+                    "Sub b\n#3 = 1\nIf [#3 == 2]\n#4 = 1\n#5 = 1\nEndIf\nEndSub\n")
+    cases = [from_mapping({"job": "GoSub a\nGoSub b\nM30\n", "macro": str(path)}, tmp_path)]
+    _results, data = run_file_cases(cases, stop_first=False, coverage=True)
+    assert data is not None
+    files = summarise(data)
+    assert files[0].missed_by_sub() == [("a", (4,)), ("b", (10, 11))]
+    assert "  lines not run in a: 4\n  lines not run in b: 10-11" in coverage_term(files)
 
 
 def test_the_html_page_colours_each_line(tmp_path: Path) -> None:
