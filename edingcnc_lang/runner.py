@@ -168,6 +168,8 @@ class RunOptions:
     write_job_files: bool = True
     # told of each thing the run assumes because nobody said (the CLI prints them on stderr)
     on_assumption: Callable[[Assumption], None] | None = None
+    # told, once at the start, what the run uses that was given: the ini, the macro files (``-v``)
+    on_setup: Callable[[str], None] | None = None
     on_move: Callable[[Move, Pose], None] | None = None
     on_event: Callable[[Event], None] | None = None
     strict: bool = False  # macro lines that do not parse are errors at load, not warnings
@@ -299,13 +301,28 @@ class Run:
         return target
 
     def _assume_setup(self) -> None:
-        """Say what the machine is when the user did not: no ini, no macro file of theirs."""
+        """Say what the machine is when the user did not: no ini, no macro file of theirs (and, to
+        ``on_setup``, what was given)."""
+        if self.options.on_setup is not None:
+            for line in self._setup_lines():
+                self.options.on_setup(line)
         if self.config.path is None:
             self._assume("machine", "no cnc.ini given: a built-in 6-axis mill (EdingCNC 4.03), machine zero = work "
                          "zero, travel +-1,000,000 mm at 1000 mm/s, an empty tool table (give --ini FILE)")
         if not (self.options.macro or self.config.macro_file):
             self._assume("macro", f"no macro file given or named by the ini: the packaged {packaged_macro().name} "
                          "(M6's change_tool, homing, tool measurement) (give --macro FILE)")
+
+    def _setup_lines(self) -> list[str]:
+        """The machine and macro files this run uses, one line each, for ``-v``."""
+        config, lines = self.config, []
+        if config.path is not None:
+            kind = ("lathe, X as a diameter" if config.diameter_programming else "lathe") if config.lathe else "mill"
+            travel = ", ".join(f"{j.name} {j.negative_limit:g}..{j.positive_limit:g}" for j in config.joints if j.visible)
+            lines.append(f"{config.path}: a {kind}, travel {travel}, {len(config.tools)} tools in the table, "
+                         f"kinematics {self.kinematics.name}")
+        lines.append("macro files, in lookup order: " + ", ".join(map(str, self.macro_files())))
+        return lines
 
     def _where(self) -> Location:
         return Location(self.interpreter.path, self.interpreter.line)

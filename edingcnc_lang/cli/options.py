@@ -105,6 +105,7 @@ class MachineOptions:
     tools: tuple[Settings, ...] = ()
     probe_at: float | None = None
     quiet: bool = False
+    verbose: bool = False
 
     @property
     def spindle_tool(self) -> int | None:
@@ -147,7 +148,8 @@ class MachineOptions:
                           block_delete=self.block_delete, strict=self.strict, on_warning=print_warning,
                           variables=dict(pair for given in (*self.variables, *self.offsets, *self.tools)
                                          for pair in given),
-                          on_assumption=None if self.quiet else print_assumption, **extra)
+                          on_assumption=None if self.quiet else print_assumption,
+                          on_setup=print_setup if self.verbose and not self.quiet else None, **extra)
 
     def input_files(self) -> list[Path]:
         """Every file a run with these options reads besides its job (the ini, the macro files, the
@@ -159,6 +161,11 @@ class MachineOptions:
 
         files = input_files(RunOptions(ini=path(self.ini), macro=path(self.macro), user_macro=path(self.user_macro)))
         return files + ([Path(self.probe_surface)] if self.probe_surface else [])
+
+
+def print_setup(line: str) -> None:
+    """``-v``: what the run uses that was given, on stderr: ``ecnc: using ...``."""
+    print(printable("ecnc: using " + line), file=sys.stderr)
 
 
 def print_assumption(assumption: Assumption) -> None:
@@ -245,6 +252,8 @@ _MACHINE_OPTIONS = (
                       "N alone: tool N is in the spindle at the start."),
     click.option("-q", "--quiet", is_flag=True,
                  help="Nothing on stderr but errors and the job's messages: no assumptions, progress or summary."),
+    click.option("-v", "--verbose", is_flag=True,
+                 help="Also say what the run uses that was given: the ini (machine, travel, tools) and the macro files."),
 )
 _MACHINE_NAMES = tuple(MachineOptions.__dataclass_fields__)
 

@@ -78,7 +78,7 @@ def test_every_command_that_runs_a_job_takes_the_same_set_up_options(tmp_path: P
     pytest.importorskip("matplotlib") if command[0] == "plot" else None
     job = write(tmp_path, "job.nc", "G21 G90\nT3 M6\nG0 X1 Y1\nG1 Z-1 F100\nG0 Z5\nM30\n")
     ini = write(tmp_path, "cnc.ini", "[TOOLS]\n")
-    common = ["-q", "--ini", ini, "--macro", write(tmp_path, "m.cnc", "Sub change_tool\nEndSub\n"),
+    common = ["-q", "-v", "--ini", ini, "--macro", write(tmp_path, "m.cnc", "Sub change_tool\nEndSub\n"),
               "--answer", "ok", "--var", "4520=1", "--offset", "G54=0,0,0", "--tool", "3=40,6", "--probe-at", "-5"]
     args = [part.format(out=tmp_path / "out", job=job) for part in command]
     result = invoke(args[0], job, *args[1:], *common)
@@ -127,3 +127,12 @@ def test_test_takes_q(tmp_path: Path) -> None:
                                      '[[test]]\nname = "three"\njob = "GoSub two"\nexpect.vars = { 1 = 3 }\n')
     result = invoke("test", "-q", tmp_path)
     assert "PASS" not in result.stdout and "FAIL" in result.stdout and "1 passed, 1 failed" in result.stdout
+
+
+def test_v_says_what_the_run_uses_that_was_given(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", "G0 X1\nM30\n")
+    ini = ROOT / "examples" / "lathe" / "cnc.ini"
+    lines = invoke("run", "-v", job, "--ini", ini, assumptions=True).stderr.splitlines()
+    assert lines[0].startswith(f"ecnc: using {ini}: a lathe, X as a diameter, travel X ")
+    assert lines[1].startswith("ecnc: using macro files, in lookup order: ") and lines[1].endswith("macro.cnc")
+    assert invoke("run", "-v", "-q", job, "--ini", ini, assumptions=True).stderr == ""
