@@ -22,7 +22,7 @@ from edingcnc_lang.canon import AXES, Event, Move, Pose
 from edingcnc_lang.events import MessageEvent
 from edingcnc_lang.config.machine_config import MachineConfig, load_config, save_variables
 from edingcnc_lang.errors import CallbackError, Cancelled, EcncError, Interrupted, Location, MachineError
-from edingcnc_lang.host import Host
+from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField, Host
 from edingcnc_lang.motion.callback_tap import CallbackTap
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.machine.named_commands import tools_used
@@ -253,6 +253,7 @@ class Run:
         host = options.host
         if host.probe is None:  # the simulated probe: trips at its target, and the run says so once
             host = replace(host, probe=self._simulated_probe)
+        host = replace(host, dialog=self._answered(host.dialog))
         self.interpreter = Interpreter(self.pipeline.head, self.config, _guarded(host, self._where),
                                        max_steps=options.max_steps,
                                        log_dir=options.log_dir, allow_exec=options.allow_exec,
@@ -288,11 +289,22 @@ class Run:
         ``Cancelled`` (``Run.cancel()``, a stop button): the loop just ends and ``stream.error`` holds it."""
         return MoveStream(self, Path(job), buffer)
 
-    def _assume(self, what: str, text: str, location: Location | None = None) -> None:
+    def _assume(self, what: str, text: str, location: Location | None = None, tell: bool = True) -> None:
         assumption = Assumption(what, text, location)
         self.assumptions.append(assumption)
-        if self.options.on_assumption is not None:
+        if tell and self.options.on_assumption is not None:
             self.options.on_assumption(assumption)
+
+    def _answered(self, ask: DialogCallback | None) -> DialogCallback:
+        """The dialog callback, noting each dialog nobody answered (OK with its values unchanged) as an
+        assumption at its line; not told again: the command line shows every dialog as it is asked."""
+        def answer(title: str, fields: Sequence[DialogField]) -> DialogAnswer | None:
+            given = ask(title, fields) if ask is not None else None
+            if given is None:
+                self._assume("dialog", f"the dialog {title!r} was answered OK with its values unchanged "
+                             "(no answer given: --answer)", self._where(), tell=False)
+            return given
+        return answer
 
     def _simulated_probe(self, start: Pose, target: Pose) -> Pose:
         if not any(a.what == "probe" for a in self.assumptions):

@@ -136,3 +136,11 @@ def test_v_says_what_the_run_uses_that_was_given(tmp_path: Path) -> None:
     assert lines[0].startswith(f"ecnc: using {ini}: a lathe, X as a diameter, travel X ")
     assert lines[1].startswith("ecnc: using macro files, in lookup order: ") and lines[1].endswith("macro.cnc")
     assert invoke("run", "-v", "-q", job, "--ini", ini, assumptions=True).stderr == ""
+
+
+def test_a_dialog_nobody_answered_is_an_assumption_at_its_line(tmp_path: Path) -> None:
+    job = write(tmp_path, "job.nc", 'dlgmsg "Setup" "depth" 100\ndlgmsg "Again" "depth" 100\nM30\n')
+    document = json.loads(invoke("run", job, "--json", "--answer", "ok:#100=5").stdout)
+    dialogs = [a for a in document["assumptions"] if a["what"] == "dialog"]
+    assert [(a["line"], a["text"]) for a in dialogs] == [
+        (2, "the dialog 'Again' was answered OK with its values unchanged (no answer given: --answer)")]
