@@ -9,7 +9,6 @@ the file and the code disagree; run this after changing a public docstring:
 """
 from __future__ import annotations
 
-import ast
 import dataclasses
 import inspect
 import re
@@ -85,25 +84,25 @@ def reference() -> str:
 
 
 def events() -> list[str]:
-    """The kinds of ``Event`` the interpreter emits and the keys of their data, read from the source."""
-    found: dict[str, set[str]] = {}
-    for path in sorted((ROOT / "edingcnc_lang" / "machine").glob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if not (isinstance(node, ast.Call) and getattr(node.func, "id", "") == "Event" and node.args):
-                continue
-            kind = node.args[0]
-            if isinstance(kind, ast.Constant) and isinstance(kind.value, str):
-                keys = found.setdefault(kind.value, set())
-                data = node.args[3] if len(node.args) > 3 else None
-                if isinstance(data, ast.Dict):
-                    keys.update(k.value for k in data.keys if isinstance(k, ast.Constant) and isinstance(k.value, str))
+    """The vocabulary of events, generated from their records (``edingcnc_lang.events``): per kind its
+    class, its fields with their types, and what it means."""
+    from dataclasses import fields
+
+    from edingcnc_lang import events
+
     lines = ["## Events", "",
-             "Every `Event` has `kind`, `path`, `line` and `data`; the kinds the interpreter emits and the keys of",
-             "their `data` (messages and dialogs: `msg`, `warn`, `error`, `log`, `dialog`, each with `text`, also",
-             "reach `RunResult.messages`):", "",
-             "| kind | data keys |", "|---|---|"]
-    for kind in sorted(found):
-        lines.append(f"| `{kind}` | {', '.join(f'`{k}`' for k in sorted(found[kind])) or '(see the code)'} |")
+             "Every event is a frozen record of `edingcnc_lang.events`, a subclass of `Event` with `kind`, `path`",
+             "and `line`; match them with `isinstance`. `event.data` is the payload as the `--events` file prints",
+             "it (a field that is None is left out). The messages (`msg`, `warn`, `error`, `log`, `dialog`) also",
+             "reach `RunResult.messages`.", "",
+             "| kind | class | fields | what |", "|---|---|---|---|"]
+    for kind, cls in sorted(events.EVENT_KINDS.items()):
+        if cls.__module__ != events.__name__:  # a product's own events (a plot's), not the interpreter's
+            continue
+        shown = ", ".join(f"`{f.name}: {f.type}`".replace("|", "\\|") for f in fields(cls)[2:]
+                          if f.name not in cls.internal)  # (a union's bar escaped: it would end the cell)
+        what = _doc(cls).split("\n\n")[0].replace("\n", " ").replace("|", "\\|")
+        lines.append(f"| `{kind}` | `{cls.__name__}` | {shown} | {what} |")
     return lines + [""]
 
 
