@@ -8,10 +8,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from datetime import datetime
+from typing import Any, TypeVar
 
 from edingcnc_lang.canon import Pose
+from edingcnc_lang.errors import CallbackError, EcncError, Location
 from edingcnc_lang.syntax.source import plain_float, plain_int
 from edingcnc_lang.records import record
 
@@ -139,3 +141,28 @@ def scripted_dialogs(answers: Sequence[DialogAnswer]) -> DialogCallback:
         return queue.pop(0) if queue else None
 
     return answer
+
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+def guarded(host: Host, where: Callable[[], Location]) -> Host:
+    """``host`` with each callback's exception turned into a ``CallbackError`` at the line being run
+    (the run then ends as after any error, with its partial result)."""
+    def guard(name: str, callback: _F | None) -> _F | None:
+        if callback is None or name == "clock":
+            return callback
+        function: Callable[..., Any] = callback
+
+        def guarded(*args: Any) -> Any:
+            try:
+                return function(*args)
+            except EcncError:  # the embedding program's own error, raised on purpose: as it is
+                raise
+            except Exception as exc:
+                text = str(exc)
+                raise CallbackError(f"the host's {name} callback raised {type(exc).__name__}"
+                                    f"{': ' + text if text else ''}", where()) from exc
+        return guarded  # type: ignore[return-value]
+
+    return replace(host, **{f.name: guard(f.name, getattr(host, f.name)) for f in fields(host)})

@@ -30,7 +30,7 @@ LAYERS: list[tuple[str, bool, set[str]]] = [
     ("sinks", False, {"motion.sinks"}),
     ("planner", False, {"motion.planner"}),
     # the variable map's names and kinds: read by the linter, the debugger and ecnc test, so below them all
-    ("orchestration", False, {"runner", "varmap"}),
+    ("orchestration", True, {"runner", "run_records", "varmap"}),
     ("products", False, {"plot", "lint", "sim", "diff", "kinematics.workbench", "mdi"}),
     ("front ends", False, {"lsp", "debug", "testing"}),
     ("command line", False, {"cli"}),
