@@ -46,7 +46,8 @@ class CallbackTap:
     def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
         if self.on_move is None:  # only cancelling to watch: once per batch
             try:
-                self._check(Location(batch.path, batch.lines[0]))
+                if self.stopped is not None or self.cancelled:
+                    self._check(Location(batch.path, batch.lines[0]))
             except EcncError as err:
                 err.done = 0
                 raise
@@ -65,7 +66,8 @@ class CallbackTap:
         self.inner.move_batch(batch, limits, arcs)
 
     def event(self, event: Event) -> None:
-        self._check(Location(event.path, event.line))
+        if self.stopped is not None or self.cancelled:
+            self._check(Location(event.path, event.line))
         if self.on_event is not None:
             try:
                 self.on_event(event)
@@ -84,8 +86,8 @@ class CallbackTap:
         self.inner.close()
 
     def _deliver(self, move: Move, joints: Pose) -> None:
-        where = Location(move.path, move.line)
-        self._check(where)
+        if self.stopped is not None or self.cancelled:
+            self._check(Location(move.path, move.line))
         if self.on_move is not None:
             try:
                 self.on_move(move, joints)
@@ -93,9 +95,11 @@ class CallbackTap:
                 self.stopped = err
                 raise
             except Exception as exc:
-                raise self._stop(CallbackError(f"on_move raised {_described(exc)}", where), exc) from exc
+                raise self._stop(CallbackError(f"on_move raised {_described(exc)}", Location(move.path, move.line)),
+                                 exc) from exc
 
     def _check(self, where: Location) -> None:
+        """Stop here if the run was stopped or cancelled (``where``: the move or event not made)."""
         if self.stopped is not None:
             raise Cancelled("the run was stopped before this move", where)
         if self.cancelled:
