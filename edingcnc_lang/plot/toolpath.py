@@ -83,6 +83,10 @@ class Toolpath:
     offsets: np.ndarray | None = None
     part: bool = False          # in work coordinates (plot/lathe.part_view), not the machine's
     x_diameter: bool = False    # the machine programs X as a diameter: the lathe view labels X so
+    # bounds() by feed_only, worked out once: the picture asks twice and samples every arc each time
+    # (not an __init__ field, so ``replace`` gives a new path an empty one)
+    _bounds: dict[bool, tuple[np.ndarray, np.ndarray] | None] = field(default_factory=dict, init=False,
+                                                                      repr=False, compare=False)
 
     def __len__(self) -> int:
         return len(self.kinds)
@@ -156,6 +160,11 @@ class Toolpath:
 
     def bounds(self, feed_only: bool = True) -> tuple[np.ndarray, np.ndarray] | None:
         """Lower and upper XYZ of the part (``part_moves``), or of the whole path."""
+        if feed_only not in self._bounds:
+            self._bounds[feed_only] = self._work_out_bounds(feed_only)
+        return self._bounds[feed_only]
+
+    def _work_out_bounds(self, feed_only: bool) -> tuple[np.ndarray, np.ndarray] | None:
         if not len(self):
             return None
         chosen = self.part_moves() if feed_only else np.ones(len(self), dtype=bool)
