@@ -226,7 +226,8 @@ def _interior_box(start: list[float], end: list[float], arc: Arc) -> tuple[list[
     frame, normal = geometry.frame, geometry.normal
     (cu, cv), u, v = frame.center, frame.u, frame.v
     swept = abs(frame.sweep)
-    radius = max(math.hypot(start[u] - cu, start[v] - cv), 1e-9)  # move_points' step, as it works it out
+    assert geometry.center is not None
+    radius = max(math.hypot(start[u] - geometry.center[u], start[v] - geometry.center[v]), 1e-9)  # as move_points
     chords = max(2, math.ceil(swept / ARC_STEP))
     length = math.hypot(swept * radius, end[normal] - start[normal])
     if not (length > 0.0 and frame.linear > 0.0 and frame.linear / (length / chords) < chords + 2):
