@@ -185,6 +185,8 @@ def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: l
     cells, heights, moves, codes, owners = [], [], [], [], []
     for part, near in zip(parts, reach):
         picked = chosen[near[chosen]]
+        if not len(picked):  # this part reaches no material here (a shank above the stock): nothing to add
+            continue
         a, b = segs.a[picked], segs.b[picked]
         g = Geometry(stock, a, b, footprint(stock, a, b, part.radius), part.radius, part.floor(tool))
         seg, cell = picked[g.seg], g.cell
