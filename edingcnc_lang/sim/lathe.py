@@ -26,6 +26,7 @@ from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
+from edingcnc_lang.sim.stock import StockError
 from edingcnc_lang.sim.tools import Tool
 from edingcnc_lang.sim.turning import MAX_PAIRS, spans
 
@@ -178,6 +179,9 @@ def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None 
     started = time.perf_counter()
 
     def make(run: Run) -> BarSimulator:
+        if not run.config.lathe:
+            raise StockError("a bar turns on a lathe: the ini is a mill's (machineType = 1 or 2 is a lathe); "
+                             "a mill's rotary axis takes --stock cylinder:DIAMETER,LENGTH[,X0]")
         first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
         return BarSimulator(stock, run, tools, first, chuck)
 
