@@ -36,11 +36,11 @@ def test_json_has_the_box_sim_s_keys(job: Path) -> None:
 
 
 def test_a_rapid_into_the_bar_exits_1_at_its_line(job: Path) -> None:
-    job.write_text(TURN.replace("G1 X30 F100", "G0 X30 F100"))
+    job.write_text(TURN.replace("G1 Z-20", "G0 Z-20"))
     result = invoke("sim", job, "--ini", LATHE_INI, "--bar", "40,50", "--json")
     assert result.exit_code == 1
     (hit,) = json.loads(result.stdout)["collisions"]
-    assert (hit["kind"], hit["line"]) == ("rapid_into_stock", 4)
+    assert (hit["kind"], hit["line"]) == ("rapid_into_stock", 5)
 
 
 @pytest.mark.slow
