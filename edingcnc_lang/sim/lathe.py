@@ -28,7 +28,7 @@ from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
 from edingcnc_lang.sim.stock import StockError
 from edingcnc_lang.sim.tools import Tool
-from edingcnc_lang.sim.turning import MAX_PAIRS, spans
+from edingcnc_lang.sim.turning import CHUNK, ranges, reaching, spans
 
 BATCH = 20_000  # segments cut at once
 KIND_OF_CODE = {1: "rapid_into_stock", 2: "spindle_off"}
@@ -131,17 +131,18 @@ class BarSimulator:
         a, b = centre[:, :2], centre[:, 2:]
         if self.chuck is not None:
             self._chuck(a, b, nose, moves, tool.number)
-        pending = np.arange(len(moves))
-        while len(pending):  # slices of bounded work, in the tool's order
-            seg, cell, low, high = spans(self.stock, a[pending], b[pending], nose)
-            stop = len(pending)
-            if len(seg) > MAX_PAIRS:
-                stop = max(int(seg[MAX_PAIRS]), 1)
-                keep = seg < stop
-                seg, cell, low, high = seg[keep], cell[keep], low[keep], high[keep]
-            depth = self.stock.cut(cell, low, high)
-            self._hits(pending[seg], cell, depth, low, moves, codes, tool.number)
-            pending = pending[stop:]
+        first, last = ranges(self.stock, a, b, nose)
+        ends_at = np.cumsum(np.maximum(last - first + 1, 0))
+        start = 0
+        while start < len(moves):  # chunks of bounded work, in the tool's order
+            stop = max(int(np.searchsorted(ends_at, ends_at[start] + CHUNK, side="right")), start + 1)
+            part = np.arange(start, stop)
+            part = part[reaching(self.stock, a[part], b[part], nose, first[part], last[part])]
+            if len(part):
+                seg, cell, low, high = spans(self.stock, a[part], b[part], nose, first[part], last[part])
+                depth = self.stock.cut(cell, low, high)
+                self._hits(part[seg], cell, depth, low, moves, codes, tool.number)
+            start = stop
 
     def _hits(self, seg: np.ndarray, cell: np.ndarray, depth: np.ndarray, low: np.ndarray, moves: np.ndarray,
               codes: np.ndarray, tool: int) -> None:

@@ -13,15 +13,14 @@ import numpy as np
 
 from edingcnc_lang.sim.round_stock import RoundStock
 
-MAX_PAIRS = 2_000_000  # (segment, slice) pairs evaluated at once: bounded scratch memory
+CHUNK = 65_536  # (segment, slice) pairs evaluated at once: scratch arrays that stay in the cache
+BLOCK = 64      # slices per block of the coarse maximum that rules out strokes above the surface
 
 
-def spans(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float) -> tuple[np.ndarray, np.ndarray,
-                                                                                  np.ndarray, np.ndarray]:
-    """For segments of the nose centre from ``a`` to ``b`` ((n, 2): Z, radius) with nose radius
-    ``nose``: the (segment, slice, low radius, high radius) of every slice the stadium covers."""
+def ranges(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float) -> tuple[np.ndarray, np.ndarray]:
+    """The first and last slice under each stroke (``last < first``: none); a stroke narrower than
+    a slice, with no slice centre under it, gets the slice nearest to it."""
     count = stock.shape[0]
-    centres = stock.centres()
     z_low = np.minimum(a[:, 0], b[:, 0]) - nose
     z_high = np.maximum(a[:, 0], b[:, 0]) + nose
     first = np.clip(np.ceil((z_low - stock.start) / stock.resolution - 0.5).astype(np.int64), 0, count)
@@ -29,13 +28,39 @@ def spans(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float) -> tuple
     nearest = np.clip(np.round((0.5 * (z_low + z_high) - stock.start) / stock.resolution - 0.5).astype(np.int64),
                       0, count - 1)
     inside = (z_high >= stock.start) & (z_low <= stock.start + stock.length)
-    narrow = inside & (last < first)  # no slice centre under the nose: the nearest slice
+    narrow = inside & (last < first)
     first = np.where(narrow, nearest, first)
-    last = np.where(narrow, nearest, np.where(inside, last, first - 1))
+    return first, np.where(narrow, nearest, np.where(inside, last, first - 1))
+
+
+def reaching(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float, first: np.ndarray,
+             last: np.ndarray) -> np.ndarray:
+    """Which strokes may touch the material: those over some slice whose nose goes below the highest
+    outer radius there (a block maximum: a stroke wholly above the surface can change nothing)."""
+    outer = stock.outer.max(axis=1)
+    blocks = -(-len(outer) // BLOCK)
+    padded = np.full(blocks * BLOCK + BLOCK, -np.inf, dtype=np.float32)
+    padded[:len(outer)] = outer
+    tops = padded.reshape(-1, BLOCK).max(axis=1)  # a last block of -inf: the end of a range
+    over = last >= first
+    bounds = np.empty(2 * len(first), dtype=np.int64)
+    bounds[0::2] = np.where(over, first, 0) // BLOCK
+    bounds[1::2] = np.where(over, last, 0) // BLOCK + 1
+    top = np.maximum.reduceat(tops, bounds)[0::2]
+    return over & (np.minimum(a[:, 1], b[:, 1]) - nose < top)
+
+
+def spans(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float, first: np.ndarray,
+          last: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """For segments of the nose centre from ``a`` to ``b`` ((n, 2): Z, radius) with nose radius
+    ``nose`` over slices ``first..last``: the (segment, slice, low radius, high radius) of every
+    slice the stadium covers."""
     counts = np.maximum(last - first + 1, 0)
     seg = np.repeat(np.arange(len(a)), counts)
     cell = np.arange(len(seg)) - np.repeat(np.cumsum(counts) - counts, counts) + np.repeat(first, counts)
-    z = np.clip(centres[cell], z_low[seg], z_high[seg])
+    z_low = np.minimum(a[:, 0], b[:, 0]) - nose
+    z_high = np.maximum(a[:, 0], b[:, 0]) + nose
+    z = np.clip(stock.centres()[cell], z_low[seg], z_high[seg])
     low, high = envelope(a[seg], b[seg], nose, z)
     keep = np.isfinite(low)
     return seg[keep], cell[keep], low[keep], high[keep]

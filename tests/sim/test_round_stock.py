@@ -14,7 +14,7 @@ from edingcnc_lang.sim.lathe import BarResult, simulate_bar
 from edingcnc_lang.sim.round_stock import RoundStock
 from edingcnc_lang.sim.stl import read_stl, write_stl
 from edingcnc_lang.sim.tools import Tool
-from edingcnc_lang.sim.turning import envelope, spans
+from edingcnc_lang.sim.turning import envelope, ranges, spans
 
 from .test_stl import mesh_volume
 from .test_stl_manifold import check_closed
@@ -101,7 +101,7 @@ def test_the_fast_path_agrees_with_point_sampling_of_the_stadium() -> None:
     for _ in range(30):
         a, b = rng.uniform((-20, 0), (0, 25), size=(2, 2))
         nose = float(rng.uniform(0.2, 2.0))
-        seg, cell, low, high = spans(stock, a[None], b[None], nose)
+        seg, cell, low, high = spans(stock, a[None], b[None], nose, *ranges(stock, a[None], b[None], nose))
         z = stock.centres()[cell][:, None]
         t = np.linspace(0, 1, 20001)[None, :]
         zc, rc = a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])
