@@ -1,5 +1,6 @@
-"""What ``ecnc sim --bar`` writes: the ``--json`` document, the lines for a person, the half-section
-picture of the turned profile and the revolved part as a closed STL mesh."""
+"""What ``ecnc sim`` writes for round stock: the ``--json`` document and the lines for a person
+(``--bar`` and ``--stock cylinder:``), the half-section picture of a turned profile and the revolved
+part as a closed STL mesh (``--bar``), the unwrapped depth map of a bar on a rotary axis."""
 from __future__ import annotations
 
 import math
@@ -11,17 +12,21 @@ from typing import Any
 import numpy as np
 
 from edingcnc_lang.sim.lathe import BarResult
+from edingcnc_lang.sim.rotary import CylinderResult
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
 
 SECTORS = 128  # facets around the axis in the STL
 
 
-def to_json(result: BarResult) -> dict[str, Any]:
-    """The box sim's document (``stock.removed_volume``, ``collisions``...) with the bar's size."""
+def to_json(result: BarResult | CylinderResult) -> dict[str, Any]:
+    """The box sim's document (``stock.removed_volume``, ``collisions``...) with the bar's size:
+    ``bar`` (DIAMETER, LENGTH, Z0 of its face) or ``cylinder`` (DIAMETER, LENGTH, X0)."""
     stock = result.stock
+    size = [round(2 * stock.radius, 6), round(stock.length, 6)]
+    where = {"bar": [*size, round(stock.start + stock.length, 6)]} if isinstance(result, BarResult) else \
+        {"cylinder": [*size, round(stock.start, 6)]}
     doc: dict[str, Any] = {
-        "stock": {"bar": [round(2 * stock.radius, 6), round(stock.length, 6), round(stock.start + stock.length, 6)],
-                  "resolution": stock.resolution, "cells": [stock.shape[0], stock.shape[1]],
+        "stock": {**where, "resolution": stock.resolution, "cells": [stock.shape[0], stock.shape[1]],
                   "removed_volume": round(stock.removed_volume, 3),
                   "remaining_volume": round(stock.remaining_volume, 3)},
         "collisions": [f.to_json() for f in result.findings],
@@ -31,21 +36,21 @@ def to_json(result: BarResult) -> dict[str, Any]:
                   for n, t in sorted(result.tools.items())},
         "notes": result.notes,
     }
-    if result.chuck is not None:
+    if isinstance(result, BarResult) and result.chuck is not None:
         doc["stock"]["chuck"] = round(result.chuck, 6)
     if result.error is not None:
         doc["error"] = result.error.to_json()
     return doc
 
 
-def summary(result: BarResult) -> list[str]:
+def summary(result: BarResult | CylinderResult) -> list[str]:
     """The findings, one line each (``FILE:LINE: error: ...``), then notes and the volumes."""
     lines = [f.format() for f in result.findings]
     lines += [f"note: {note}" for note in result.notes]
     errors = sum(f.severity == "error" for f in result.findings)
     stock = result.stock
     lines.append(f"removed {stock.removed_volume:,.1f} mm³, {stock.remaining_volume:,.1f} mm³ left "
-                 f"({stock.shape[0]} slices of {stock.resolution:g} mm, {result.moves:,} moves, "
+                 f"({stock.shape[0]} slices of {stock.resolution:g} mm x {stock.shape[1]} angles, {result.moves:,} moves, "
                  f"{result.seconds:.1f} s); {errors} collision{'s' * (errors != 1)}")
     return lines
 
@@ -69,7 +74,7 @@ def draw_bar(result: BarResult, out: Path, fmt: str, title: str) -> None:
     solid = outer > inner + EPS
     ax.stairs(np.where(solid, outer, np.nan) * scale, edges, baseline=np.where(solid, inner, np.nan) * scale,
               fill=True, color="#4c72b0", label="part")
-    if result.chuck is not None:
+    if isinstance(result, BarResult) and result.chuck is not None:
         ax.axvspan(edges[0] - 0.05 * stock.length, result.chuck, ymin=0, ymax=1, fill=False, hatch="//",
                    edgecolor="#7f7f7f", label="chuck")
     for kind, (marker, colour) in {**MARKERS, "chuck": ("P", "#2ca02c")}.items():
@@ -85,6 +90,33 @@ def draw_bar(result: BarResult, out: Path, fmt: str, title: str) -> None:
     ax.set_ylabel("X mm (diameter)" if result.diameter_mode else "X mm (radius)")
     ax.set_title(title, fontsize=9)
     ax.legend(loc="upper left", fontsize=7, ncol=4)
+    fig.tight_layout()
+    save_figure(fig, out, fmt, DPI)
+
+
+def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str) -> None:
+    """The bar on the rotary axis unrolled: depth below its surface over X and the bar's own angle,
+    the lines of the findings marked at their X."""
+    from matplotlib.figure import Figure
+
+    from edingcnc_lang.outputs import save_figure
+    from edingcnc_lang.sim.picture import DPI, MARKERS
+
+    stock = result.stock
+    step = max(1, math.ceil(max(stock.shape) / 1600))
+    depth = (stock.radius - stock.outer[::step, ::step].astype(np.float64)).T
+    fig = Figure(figsize=(9.0, 5.0), dpi=DPI)
+    ax = fig.add_subplot(1, 1, 1)
+    image = ax.imshow(depth, origin="lower", aspect="auto", cmap="magma_r", interpolation="nearest",
+                      extent=(stock.start, stock.start + stock.length, 0.0, 360.0), vmin=0.0)
+    fig.colorbar(image, ax=ax, shrink=0.8, label="depth below the bar's surface, mm")
+    for kind, (_marker, colour) in MARKERS.items():
+        for f in (f for f in result.findings if f.kind == kind):
+            ax.axvline(f.position[0], color=colour, linewidth=0.8)
+            ax.annotate(f"{f.line} {kind}", (f.position[0], 355), fontsize=7, rotation=90, va="top", color=colour)
+    ax.set_xlabel("X mm")
+    ax.set_ylabel("bar angle, degrees (at A0 the tool is at 90)")
+    ax.set_title(title, fontsize=9)
     fig.tight_layout()
     save_figure(fig, out, fmt, DPI)
 

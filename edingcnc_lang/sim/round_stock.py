@@ -49,6 +49,14 @@ class RoundStock:
         outer = np.full((count, angles), diameter / 2.0, dtype=np.float32)
         return cls(start, length, diameter / 2.0, length / count, outer, np.zeros_like(outer))
 
+    @classmethod
+    def cylinder(cls, diameter: float, length: float, start: float, resolution: float) -> RoundStock:
+        """A bar on a rotary axis: angle cells of about ``resolution`` mm at its surface (at least 8)."""
+        if not (resolution > 0 and 0 < diameter <= MAX_SIM_LENGTH):
+            raise StockError("the resolution and the diameter must be positive numbers of mm")
+        angles = max(8, math.ceil(math.pi * diameter / resolution))
+        return cls.bar(diameter, length, start, resolution, angles)
+
     @property
     def shape(self) -> tuple[int, int]:
         return self.outer.shape  # type: ignore[return-value]
@@ -77,25 +85,32 @@ class RoundStock:
     def removed_volume(self) -> float:
         return self.initial_volume - self.remaining_volume
 
+    def angle_step(self) -> float:
+        """Degrees per angle cell."""
+        return 360.0 / self.shape[1]
+
     def profile(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Axial centres, outer and inner radii of angle column 0 (a lathe part's whole profile)."""
         return self.centres(), self.outer[:, 0].astype(np.float64), self.inner[:, 0].astype(np.float64)
 
-    def cut(self, cells: np.ndarray, low: np.ndarray, high: np.ndarray, column: int = 0) -> np.ndarray:
-        """Remove, in slice ``cells[k]``, the material a tool spans from radius ``low[k]`` to ``high[k]``,
+    def cut(self, cells: np.ndarray, low: np.ndarray, high: np.ndarray, open_top: bool = True) -> np.ndarray:
+        """Remove, in cell ``cells[k]`` (``slice * angles + angle``: the slice itself on a lathe), the material a tool spans from radius ``low[k]`` to ``high[k]``,
         the entries in the order the tool made them.  A tool is the solid its nose leads, as a ray
         from the axis sees it: an outside tool takes everything above its lowest point (the outer
         radius sinks to ``low``); one whose nose reaches the bore or the axis and not the surface as
         the earlier cuts left it (a drill, a boring bar) takes everything up to ``high`` (the inner
-        radius rises).  Returns per entry the depth of material it removed (0 where none)."""
-        outer = self.outer[:, column]
-        inner = self.inner[:, column]
+        radius rises).  Without ``open_top`` (a mill's tool on a rotary axis, whose side a ray may
+        leave below the surface) a cut takes material only where its ray reaches the surface.
+        Returns per entry the depth of material it removed (0 where none)."""
+        outer = self.outer.reshape(-1)  # views: the cuts land in the stock
+        inner = self.inner.reshape(-1)
         order = np.argsort(cells, kind="stable")  # grouped by slice, in the tool's order within each
         cell, lo, hi = cells[order], low[order], high[order]
         start_top, bore = outer[cell].astype(np.float64), inner[cell].astype(np.float64)
         at_bore = lo <= bore + EPS
-        before = np.minimum(start_top, _running_min(cell, np.where(at_bore, np.inf, lo)))
-        surface = ~at_bore | (hi >= before - EPS)  # at the bore: a cut from outside if it reaches the surface
+        outside = ~at_bore if open_top else ~at_bore & (hi >= start_top - EPS)
+        before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf)))
+        surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
         before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
         surface &= lo < before - EPS
         boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
