@@ -72,6 +72,7 @@ class CylinderSimulator:
         self.files = array("h")
         self.paths: dict[str, int] = {}
         self.found: list[CutFinding] = []
+        self.last: tuple[float, ...] | None = None  # the pose the queue ends at
 
     def _tool(self, number: int) -> Tool:
         if self.table is not None and number in self.table:
@@ -83,6 +84,7 @@ class CylinderSimulator:
             self.spindle_on = event.m in (3, 4)
         elif isinstance(event, ToolChangeEvent):
             self.flush()
+            self.last = None
             self.tool = self._tool(event.tool)
 
     def on_move(self, move: Move, _joints: Pose) -> None:
@@ -91,26 +93,30 @@ class CylinderSimulator:
         self.files.append(self.paths.setdefault(move.path, len(self.paths)))
         if move.kind not in CUTTING_KINDS:
             return
-        interp = self.run.interpreter
-        off = interp.offset()
-        shift = np.array([off[0], off[1], off[2], off[3]])  # off[2] holds the tool length: the tip's Z
+        off = self.run.interpreter.offset()  # Z holds the tool length: the tip's Z
         code = RAPID if move.kind in ("rapid", "home") else CUT if self.spindle_on else SPINDLE_OFF
         if move.arc is None:
-            points = np.array([move.start[:3], move.end[:3]])
+            points = [move.start[:3], move.end[:3]]
         else:
-            points = chords(move, self.stock.resolution / 4.0)
-        angles = np.linspace(move.start[3], move.end[3], len(points))
-        poses = np.column_stack((points, angles)) - shift
-        step = np.maximum(np.abs(np.diff(poses[:, 3])) / self.stock.angle_step(),
-                          np.linalg.norm(np.diff(poses[:, :3], axis=0), axis=1) / self.stock.resolution)
-        counts = np.maximum(np.ceil(step).astype(np.int64), 1)
-        fractions = np.concatenate([np.arange(n) / n for n in counts.tolist()] + [np.array([1.0])])
-        base = np.concatenate([np.repeat(np.arange(len(counts)), counts), [len(counts) - 1]])
-        ahead = np.minimum(base + 1, len(poses) - 1)
-        samples = poses[base] + fractions[:, None] * (poses[ahead] - poses[base])
-        self.queue.poses.extend(samples.ravel().tolist())
-        self.queue.moves.extend([index] * len(samples))
-        self.queue.codes.extend([code] * len(samples))
+            points = chords(move, self.stock.resolution / 4.0).tolist()
+        count = len(points) - 1
+        a0, a1 = move.start[3], move.end[3]
+        poses = [(p[0] - off[0], p[1] - off[1], p[2] - off[2], a0 + (a1 - a0) * k / count - off[3])
+                 for k, p in enumerate(points)]
+        samples: list[float] = []
+        if self.last != poses[0]:  # a move starts where the one before ended: its first pose is queued
+            samples.extend(poses[0])
+        for p, q in zip(poses, poses[1:]):
+            steps = max(abs(q[3] - p[3]) / self.stock.angle_step(), math.dist(p[:3], q[:3]) / self.stock.resolution)
+            n = max(1, math.ceil(steps))
+            for k in range(1, n + 1):
+                f = k / n
+                samples.extend((p[0] + (q[0] - p[0]) * f, p[1] + (q[1] - p[1]) * f, p[2] + (q[2] - p[2]) * f,
+                                p[3] + (q[3] - p[3]) * f))
+        self.last = poses[-1]
+        self.queue.poses.extend(samples)
+        self.queue.moves.extend([index] * (len(samples) // 4))
+        self.queue.codes.extend([code] * (len(samples) // 4))
         if len(self.queue.moves) >= BATCH:
             self.flush()
 
@@ -186,11 +192,15 @@ def _extent(stock: RoundStock, poses: np.ndarray, radius: float) -> tuple[np.nda
     first = np.clip(np.ceil((poses[:, 0] - radius - stock.start) / stock.resolution - 0.5), 0, stock.shape[0])
     last = np.clip(np.floor((poses[:, 0] + radius - stock.start) / stock.resolution - 0.5), -1, stock.shape[0] - 1)
     slices = np.where(reach, last - first + 1, 0).astype(np.int64).clip(0)
-    rise = np.where(poses[:, 2] > 0, np.arcsin(np.clip(poses[:, 2] / max(top, 1e-9), -1, 1)), -math.pi / 2)
+    y, z = poses[:, 1], poses[:, 2]
+    rise = np.where(z > 0, np.arcsin(np.clip(z / max(top, 1e-9), -1, 1)), -math.pi / 2)
+    # above the axis the tool's bottom corners bound the angles too (the rays reach it between them)
+    low = np.where(z > 0, np.maximum(rise, np.arctan2(z, y + radius)), rise)
+    high = np.where(z > 0, np.minimum(math.pi - rise, np.arctan2(z, y - radius)), math.pi - rise)
     step = math.radians(stock.angle_step())
-    spread = np.where(slices > 0, np.ceil((math.pi - 2 * rise) / step).astype(np.int64) + 3, 0)
+    spread = np.where((slices > 0) & (high >= low), np.ceil((high - low) / step).astype(np.int64) + 3, 0)
     spread = np.minimum(spread, stock.shape[1])
-    first_angle = np.floor((rise - np.radians(poses[:, 3])) / step - 0.5).astype(np.int64) - 1
+    first_angle = np.floor((low - np.radians(poses[:, 3])) / step - 0.5).astype(np.int64) - 1
     return first.astype(np.int64), slices, first_angle, spread, slices * spread
 
 
