@@ -86,3 +86,16 @@ def test_bad_insert_names_the_file(job: Path, text: str, message: str) -> None:
     bad.write_text(text)
     result = invoke("sim", job, "--ini", LATHE_INI, "--bar", "40,50", "--tools", bad)
     assert result.exit_code == 2 and f"{bad}: error:" in result.stderr and message in result.stderr
+
+
+def test_the_examples_simulate_clean() -> None:
+    """examples/round as docs/simulation.md runs them: no finding, material removed."""
+    root = LATHE_INI.parents[1]
+    bar = invoke("sim", root / "round" / "bar.nc", "--ini", LATHE_INI, "--bar", "40,80,1", "--chuck", "25",
+                 "--tools", root / "round" / "bar-tools.toml", "--json")
+    rotary = invoke("sim", root / "round" / "rotary.nc", "--ini", root / "cylinder" / "cnc.ini",
+                    "--stock", "cylinder:40,100,20", "--json")
+    for result in (bar, rotary):
+        assert result.exit_code == 0, result.output
+        doc = json.loads(result.stdout)
+        assert doc["collisions"] == [] and doc["stock"]["removed_volume"] > 1000
