@@ -175,8 +175,9 @@ def stamps(stock: RoundStock, poses: np.ndarray, radius: float) -> tuple[np.ndar
         lo = np.where(up, z / s, np.where(down | (z <= 0), -np.inf, np.inf))
         hi = np.where(down, z / s, np.where(up | (z <= 0), np.inf, -np.inf))
         right, left = c > 1e-12, c < -1e-12
-        side_lo = np.where(right, (y - half) / c, np.where(left, (y + half) / c, np.where(np.abs(y) <= half, -np.inf, np.inf)))
-        side_hi = np.where(right, (y + half) / c, np.where(left, (y - half) / c, np.where(np.abs(y) <= half, np.inf, -np.inf)))
+        across = np.abs(y) <= half  # a ray along Z: inside the tool's width or not at all
+        side_lo = np.where(right, (y - half) / c, np.where(left, (y + half) / c, np.where(across, -np.inf, np.inf)))
+        side_hi = np.where(right, (y + half) / c, np.where(left, (y - half) / c, np.where(across, np.inf, -np.inf)))
     low = np.maximum(lo, side_lo)
     high = np.minimum(hi, side_hi)
     keep = (np.abs(dx) <= radius) & (low < high) & (high >= 0)

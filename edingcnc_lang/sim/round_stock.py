@@ -1,11 +1,12 @@
-"""Round stock: the material as radii over (axial cells, angle cells), for a lathe's bar.
+"""Round stock: the material as radii over (axial cells, angle cells): a lathe's bar, a bar on a
+mill's rotary A axis.
 
 Axial cell ``i`` is the slice of ``resolution`` mm whose centre is ``start + (i + 0.5) r`` along
 the axis (the lathe's Z); angle cell ``k`` the sector of ``360 / angles`` degrees around it.  Each
 cell's material lies between an inner radius (a bore, 0 for a solid bar) and an outer radius, as a
 ray from the axis sees it: a pocket under an overhang, or a cavity closed on every side, is not
 held.  A lathe's cut sweeps every angle while the spindle turns, so a lathe bar has one angle
-column.  Two float32 per cell: a 100 mm x 300 mm bar at 0.1 mm is 3,000 axial cells, 24 kB with
+column; on the A axis the angle cells are about a slice wide at the surface.  Two float32 per cell: a 100 mm x 300 mm bar at 0.1 mm is 3,000 axial cells, 24 kB with
 one angle column; with angle cells of 0.1 mm at its surface (3,142 of them) it would be 9.4 million
 cells, 75 MB.
 """
@@ -94,8 +95,9 @@ class RoundStock:
         return self.centres(), self.outer[:, 0].astype(np.float64), self.inner[:, 0].astype(np.float64)
 
     def cut(self, cells: np.ndarray, low: np.ndarray, high: np.ndarray, open_top: bool = True) -> np.ndarray:
-        """Remove, in cell ``cells[k]`` (``slice * angles + angle``: the slice itself on a lathe), the material a tool spans from radius ``low[k]`` to ``high[k]``,
-        the entries in the order the tool made them.  A tool is the solid its nose leads, as a ray
+        """Remove, in cell ``cells[k]`` (``slice * angles + angle``: the slice itself on a lathe),
+        the material a tool spans from radius ``low[k]`` to ``high[k]``, the entries in the order
+        the tool made them.  A tool is the solid its nose leads, as a ray
         from the axis sees it: an outside tool takes everything above its lowest point (the outer
         radius sinks to ``low``); one whose nose reaches the bore or the axis and not the surface as
         the earlier cuts left it (a drill, a boring bar) takes everything up to ``high`` (the inner
