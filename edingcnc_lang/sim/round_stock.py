@@ -6,9 +6,9 @@ the axis (the lathe's Z); angle cell ``k`` the sector of ``360 / angles`` degree
 cell's material lies between an inner radius (a bore, 0 for a solid bar) and an outer radius, as a
 ray from the axis sees it: a pocket under an overhang, or a cavity closed on every side, is not
 held.  A lathe's cut sweeps every angle while the spindle turns, so a lathe bar has one angle
-column; on the A axis the angle cells are about a slice wide at the surface.  Two float32 per cell: a 100 mm x 300 mm bar at 0.1 mm is 3,000 axial cells, 24 kB with
-one angle column; with angle cells of 0.1 mm at its surface (3,142 of them) it would be 9.4 million
-cells, 75 MB.
+column; on the A axis the angle cells are about a slice wide at the surface.  Two float32 per
+cell: a 100 mm x 300 mm bar at 0.1 mm is 3,000 axial cells, 24 kB with one angle column; with
+angle cells of 0.1 mm at its surface (3,142 of them) it would be 9.4 million cells, 75 MB.
 """
 from __future__ import annotations
 
