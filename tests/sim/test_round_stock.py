@@ -126,3 +126,12 @@ def test_the_revolved_part_is_a_closed_mesh_of_the_part_s_volume(tmp_path: Path)
 def test_memory_of_a_100_by_300_bar_at_0_1_mm() -> None:
     stock = RoundStock.bar(100, 300, -300, 0.1)
     assert stock.shape == (3000, 1) and stock.outer.nbytes + stock.inner.nbytes == 24_000
+
+
+def test_an_arc_turns_a_dome(tmp_path: Path) -> None:
+    """G3 in G18 from the axis to the bar's surface: a hemisphere's end; chords a quarter slice inside
+    the circle remove a little more (their sagitta over the dome's surface)."""
+    result = turn(tmp_path, "G0 X0 Z2\nG1 Z0 F100\nG3 X20 Z-10 R10\nG0 X30\nG0 Z2", bar=(20, 50, 0), resolution=0.05)
+    removed = math.pi * 100 * 10 - 2 / 3 * math.pi * 1000
+    sagitta = 2 * math.pi * 100 * 0.05 / 4 * 2 / 3
+    assert removed <= result.stock.removed_volume <= removed + 1.5 * sagitta
