@@ -55,8 +55,11 @@ class RoundStock:
         """A bar on a rotary axis: angle cells of about ``resolution`` mm at its surface (at least 8)."""
         if not (resolution > 0 and 0 < diameter <= MAX_SIM_LENGTH):
             raise StockError("the resolution and the diameter must be positive numbers of mm")
-        angles = max(8, math.ceil(math.pi * diameter / resolution))
-        return cls.bar(diameter, length, start, resolution, angles)
+        around = math.pi * diameter / resolution  # a float first: past the doubles it is no int
+        if not around * max(length / resolution, 1.0) <= MAX_CELLS:
+            raise StockError(f"{length / resolution:.6g} x {around:.6g} cells at {resolution:g} mm are too many "
+                             f"(at most {MAX_CELLS:,}): use a coarser --resolution")
+        return cls.bar(diameter, length, start, resolution, max(8, math.ceil(around)))
 
     @property
     def shape(self) -> tuple[int, int]:

@@ -123,3 +123,11 @@ def test_usage_errors_exit_2(tmp_path: Path, args: list[str], message: str) -> N
     result = invoke("sim", job, *args)
     assert result.exit_code == 2, result.output
     assert message in result.stderr
+
+
+@pytest.mark.parametrize("size", ["cylinder:1e9,1", "cylinder:40,100"])
+def test_too_many_cells_is_a_usage_error(tmp_path: Path, size: str) -> None:
+    job = tmp_path / "j.nc"
+    job.write_text("G0 X1\nM30\n")
+    result = invoke("sim", job, "--stock", size, "--resolution", "1e-300")
+    assert result.exit_code == 2 and "too many" in result.stderr
