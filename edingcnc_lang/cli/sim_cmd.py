@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import click
 
@@ -15,8 +15,17 @@ from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, PlainFloat
 from edingcnc_lang.cli.streams import job_to_read_twice
 
 
+class Cylinder(NamedTuple):
+    """``--stock cylinder:DIAMETER,LENGTH[,X0]``: a bar on the rotary A axis, from X0 to X0 + LENGTH."""
+
+    diameter: float
+    length: float
+    x0: float
+
+
 class StockBox(click.ParamType):
-    """``XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX``: six numbers, each minimum below its maximum."""
+    """``XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX``: six numbers, each minimum below its maximum; or
+    ``cylinder:DIAMETER,LENGTH[,X0]`` (a ``Cylinder``)."""
 
     name = "XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX"
 
@@ -24,6 +33,9 @@ class StockBox(click.ParamType):
         if isinstance(value, tuple):
             return value
         from edingcnc_lang.syntax.source import plain_float  # plain decimals only, as every number the CLI takes
+
+        if str(value).startswith("cylinder:"):
+            return self._cylinder(str(value), param, ctx)
 
         try:
             numbers = tuple(plain_float(v) for v in str(value).split(","))
@@ -36,13 +48,54 @@ class StockBox(click.ParamType):
                       param, ctx)
         return numbers
 
+    def _cylinder(self, value: str, param: click.Parameter | None, ctx: click.Context | None) -> Cylinder:
+        from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
+        from edingcnc_lang.syntax.source import plain_float
+
+        try:
+            numbers = tuple(plain_float(v) for v in value[len("cylinder:"):].split(","))
+        except ValueError:
+            numbers = ()
+        if len(numbers) not in (2, 3) or not all(abs(v) <= MAX_SIM_LENGTH for v in numbers):
+            self.fail(f"{value!r} is not cylinder:DIAMETER,LENGTH[,X0] (e.g. cylinder:40,100)", param, ctx)
+        if numbers[0] <= 0 or numbers[1] <= 0:
+            self.fail(f"{value!r}: the diameter and the length must be above 0", param, ctx)
+        return Cylinder(numbers[0], numbers[1], numbers[2] if len(numbers) == 3 else 0.0)
+
+
+class BarSize(click.ParamType):
+    """``DIAMETER,LENGTH[,Z0]``: a lathe bar, its face at work Z0 (default 0), reaching to Z0 - LENGTH."""
+
+    name = "DIAMETER,LENGTH[,Z0]"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, ...]:
+        if isinstance(value, tuple):
+            return value
+        from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
+        from edingcnc_lang.syntax.source import plain_float
+
+        try:
+            numbers = tuple(plain_float(v) for v in str(value).split(","))
+        except ValueError:
+            numbers = ()
+        if len(numbers) not in (2, 3) or not all(abs(v) <= MAX_SIM_LENGTH for v in numbers):
+            self.fail(f"{value!r} is not DIAMETER,LENGTH[,Z0] (e.g. 40,100 or 40,100,2)", param, ctx)
+        if numbers[0] <= 0 or numbers[1] <= 0:
+            self.fail(f"{value!r}: the diameter and the length must be above 0", param, ctx)
+        return numbers if len(numbers) == 3 else (*numbers, 0.0)
+
 
 @click.command("sim", cls=Command, short_help="Cut a stock with JOB: the part, its volumes and every collision.")
 @job_or_stdin_argument
 @click.option("--stock", "box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
-              help="The stock as a box in the job's work coordinates (its first work offset).")
+              help="The stock as a box in the job's work coordinates (its first work offset); "
+                   "cylinder:DIAMETER,LENGTH[,X0]: a bar on the rotary A axis (along X from X0, through Y0 Z0).")
 @click.option("--stock-stl", metavar="FILE", type=EXISTING_FILE,
               help="The stock as an STL mesh (work coordinates); its top surface is what is cut.")
+@click.option("--bar", metavar="DIAMETER,LENGTH[,Z0]", type=BarSize(),
+              help="Lathe: the stock as a bar turning about Z, its face at work Z0 (default 0), to Z0 - LENGTH.")
+@click.option("--chuck", metavar="LENGTH", type=PlainFloat(0, min_open=True, max=1e9),
+              help="With --bar: the length the chuck grips at the bar's far end (a tool reaching it: kind chuck).")
 @click.option("--resolution", metavar="MM", type=PlainFloat(0, min_open=True), default=0.25,
               show_default=True, help="Cell size of the height field.")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
@@ -54,12 +107,15 @@ class StockBox(click.ParamType):
 @click.option("--stl", metavar="FILE", type=OUTPUT_FILE, help="Write the cut stock as a binary STL mesh.")
 @click.option("--compare-stl", metavar="FILE", type=EXISTING_FILE,
               help="The intended part as STL: report (and draw) over- and under-cut against it.")
-def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resolution: float, tools_file: str | None,
+def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, bar: tuple[float, ...] | None,
+        chuck: float | None, resolution: float, tools_file: str | None,
         machine: MachineOptions, as_json: bool, output: str | None, stl: str | None,
         compare_stl: str | None) -> int:
     """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
     stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
-    stock (hints), with the removed and remaining volumes."""
+    stock (hints), with the removed and remaining volumes.  With --bar, on a lathe ini: turn a bar
+    (each cut a revolution) and report rapids into it, cuts with the spindle stopped and the chuck;
+    with --stock cylinder:, cut a bar on the rotary A axis."""
     from edingcnc_lang.outputs import check_outputs, ensure_parent
     from edingcnc_lang.picture_formats import picture_target
     from edingcnc_lang.sim import report
@@ -69,6 +125,9 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
     from edingcnc_lang.sim.stl import stock_from_stl
     from edingcnc_lang.sim.tools import load_tools
 
+    if bar is not None or chuck is not None or isinstance(box, Cylinder):
+        return _sim_round(job, box, stock_stl, bar, chuck, resolution, tools_file, machine, as_json, output, stl,
+                        compare_stl)
     if (box is None) == (stock_stl is None):
         raise usage_error("give the stock as exactly one of --stock XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX and --stock-stl FILE")
     check_outputs({"-o": output, "--stl": stl},
@@ -104,6 +163,73 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, resoluti
         print(json.dumps(report.to_json(result, deviation), indent=1))
     else:
         for line in report.summary(result, deviation):
+            print(line)
+        for written in (output, stl):
+            if written:
+                print(f"wrote {written}")
+    if result.error is not None:
+        if not isinstance(result.error, JobAborted):
+            print(result.error.format(), file=sys.stderr)
+        return result.error.exit_code
+    return EXIT_FINDINGS if failing(result.findings) else EXIT_OK
+
+
+def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, bar: tuple[float, ...] | None,
+               chuck: float | None, resolution: float, tools_file: str | None, machine: MachineOptions,
+               as_json: bool, output: str | None, stl: str | None, compare_stl: str | None) -> int:
+    """``ecnc sim --bar`` (a lathe job turning a bar) and ``--stock cylinder:`` (a bar on a mill's A
+    axis): docs/simulation.md, round stock."""
+    from edingcnc_lang.outputs import check_outputs, ensure_parent
+    from edingcnc_lang.picture_formats import picture_target
+    from edingcnc_lang.sim import bar_output
+    from edingcnc_lang.sim.findings import failing
+    from edingcnc_lang.sim.lathe import BarResult, simulate_bar
+    from edingcnc_lang.sim.rotary import CylinderResult, simulate_cylinder
+    from edingcnc_lang.sim.round_stock import RoundStock
+    from edingcnc_lang.sim.tools import load_tools
+
+    if bar is None and chuck is not None:
+        raise usage_error("--chuck LENGTH goes with --bar DIAMETER,LENGTH[,Z0] (a lathe's bar)")
+    if (bar is not None and box is not None) or stock_stl is not None:
+        raise usage_error("give the stock as exactly one of --stock, --stock-stl and --bar")
+    if compare_stl is not None:
+        raise usage_error("--compare-stl is for the box stock; with round stock, write the part with --stl")
+    if bar is not None and chuck is not None and chuck >= bar[1]:
+        raise usage_error(f"--chuck {chuck:g} grips the whole bar ({bar[1]:g} mm long)")
+    if bar is None and stl is not None:
+        raise usage_error("--stl is for --bar (a turned part); a bar on the rotary axis is drawn with -o")
+    check_outputs({"-o": output, "--stl": stl}, [job, tools_file, *machine.input_files()])
+    fmt = picture_target(Path(output)) if output else None
+    tools = load_tools(tools_file) if tools_file else None
+    options = machine.run_options(show_messages=not as_json, write_job_files=False)
+    result: BarResult | CylinderResult
+    with job_to_read_twice(job) as (path, name):
+        if bar is not None:
+            diameter, length, face = bar
+            stock = RoundStock.bar(diameter, length, face - length, resolution)
+            chuck_face = face - length + chuck if chuck is not None else None
+            result = simulate_bar(path, stock, options, tools, machine.spindle_tool, name=name, chuck=chuck_face)
+        else:
+            assert isinstance(box, Cylinder)
+            stock = RoundStock.cylinder(box.diameter, box.length, box.x0, resolution)
+            result = simulate_cylinder(path, stock, options, tools, machine.spindle_tool, name=name)
+    if output and fmt:
+        count = len(result.findings)
+        title = f"{name or job}: {stock.removed_volume:,.0f} mm³ removed, {count} finding{'s' * (count != 1)}"
+        if isinstance(result, BarResult):
+            bar_output.draw_bar(result, ensure_parent(Path(output)), fmt, title)
+        else:
+            bar_output.draw_unwrapped(result, ensure_parent(Path(output)), fmt, title)
+    if stl:
+        from edingcnc_lang.sim.stl import write_stl
+
+        write_stl(ensure_parent(Path(stl)), bar_output.bar_mesh(stock))
+    if as_json:
+        import json
+
+        print(json.dumps(bar_output.to_json(result), indent=1))
+    else:
+        for line in bar_output.summary(result):
             print(line)
         for written in (output, stl):
             if written:

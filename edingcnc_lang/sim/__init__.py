@@ -4,7 +4,9 @@
 and sweeps every move's tool through the stock (``sweep.py``, ``envelope.py``); the result holds the
 cut stock, the findings (``findings.py``) and the volumes.  Pictures (``picture.py``), STL in and out
 (``stl.py``), the comparison with the intended part (``compare.py``) and the report (``report.py``)
-work on that result.
+work on that result.  Round stock (``round_stock.py``): a lathe's bar turned by ``lathe.simulate_bar``
+(the nose's sweep in ``turning.py``) and a bar on a mill's A axis cut by ``rotary.simulate_cylinder``;
+their outputs in ``bar_output.py``.
 """
 from __future__ import annotations
 

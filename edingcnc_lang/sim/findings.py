@@ -17,6 +17,7 @@ KINDS = {
     "spindle_off": ("error", "material removed with the spindle stopped"),
     "plunge": ("hint", "a flat end mill plunges straight down deeper than half its diameter: ramp or helix in"),
     "outside_stock": ("hint", "the tool goes below the stock's bottom (into the table or fixture)"),
+    "chuck": ("error", "the tool reaches into the chuck (--chuck: the length it grips)"),
 }
 
 

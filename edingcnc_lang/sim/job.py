@@ -15,6 +15,7 @@ import time
 from array import array
 from dataclasses import dataclass, field, replace
 from collections.abc import Callable
+from typing import Any
 from pathlib import Path
 
 import numpy as np
@@ -174,12 +175,7 @@ class Simulator:
             self.flush()
 
     def _chords(self, move: Move) -> np.ndarray:
-        """The arc's points, chords at most a quarter cell from the circle (helices and every plane)."""
-        frame = geometry_of(move).frame
-        radius = max(frame.r0, frame.r1, 1e-9)
-        step = 2.0 * math.acos(max(1.0 - self.chord / radius, -1.0))
-        count = max(2, math.ceil(abs(frame.sweep) / max(step, 1e-6)))
-        return arc_points(move.start, move.end, frame, np.linspace(0.0, 1.0, count + 1))[:, :3]
+        return chords(move, self.chord)
 
     def flush(self) -> None:
         """Sweep what is queued, with the tool in the spindle now."""
@@ -211,6 +207,47 @@ class Simulator:
         return merged(found)
 
 
+def chords(move: Move, chord: float) -> np.ndarray:
+    """The arc's points (X, Y, Z), chords at most ``chord`` from the circle (helices and every plane)."""
+    frame = geometry_of(move).frame
+    radius = max(frame.r0, frame.r1, 1e-9)
+    step = 2.0 * math.acos(max(1.0 - chord / radius, -1.0))
+    count = max(2, math.ceil(abs(frame.sweep) / max(step, 1e-6)))
+    return arc_points(move.start, move.end, frame, np.linspace(0.0, 1.0, count + 1))[:, :3]
+
+
+def drive(job: str | Path, options: RunOptions | None, name: str | None,
+          make: Callable[[Run], Any]) -> tuple[Any, RunResult | None, EcncError | None]:
+    """Run ``job`` with the simulator ``make(run)`` returns fed every move and event first (its
+    ``on_move``/``on_event``; callbacks already in ``options`` still get them); a runtime error is
+    returned, one before anything ran (syntax, configuration) raised."""
+    options = options or RunOptions()
+    outer_move, outer_event = options.on_move, options.on_event
+    holder: list[Any] = []
+
+    def on_move(move: Move, joints: Pose) -> None:
+        holder[0].on_move(move, joints)
+        if outer_move:
+            outer_move(move, joints)
+
+    def on_event(event: Event) -> None:
+        holder[0].on_event(event)
+        if outer_event:
+            outer_event(event)
+
+    run = Run(replace(options, on_move=on_move, on_event=on_event, plan=False))
+    holder.append(make(run))
+    result: RunResult | None = None
+    error: EcncError | None = None
+    try:
+        result = run.execute_file(Path(job), name)
+    except EcncError as err:
+        if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration
+            raise
+        error = err
+    return holder[0], result, error
+
+
 def simulate(job: str | Path, stock: Stock, options: RunOptions | None = None,
              tools: dict[int, Tool] | None = None, first_tool: int | None = None,
              name: str | None = None, every: int = 0,
@@ -224,36 +261,16 @@ def simulate(job: str | Path, stock: Stock, options: RunOptions | None = None,
     called with the stock as cut before move 0, ``every``, 2 ``every``, ... (the viewer's frames).
     """
     started = time.perf_counter()
-    options = options or RunOptions()
-    outer_move, outer_event = options.on_move, options.on_event
-    holder: list[Simulator] = []
 
-    def on_move(move: Move, joints: Pose) -> None:
-        holder[0].on_move(move, joints)
-        if outer_move:
-            outer_move(move, joints)
+    def make(run: Run) -> Simulator:
+        first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
+        made = Simulator(stock, run.config, tools, first)
+        made.attach(run)
+        if on_snapshot is not None:
+            made.every, made.on_snapshot = max(1, every), on_snapshot
+        return made
 
-    def on_event(event: Event) -> None:
-        holder[0].on_event(event)
-        if outer_event:
-            outer_event(event)
-
-    run = Run(replace(options, on_move=on_move, on_event=on_event, plan=False))
-    if first_tool is None:
-        first_tool = int(run.interpreter.params.read(t.TOOL_CURRENT))
-    sim = Simulator(stock, run.config, tools, first_tool)
-    sim.attach(run)
-    if on_snapshot is not None:
-        sim.every, sim.on_snapshot = max(1, every), on_snapshot
-    holder.append(sim)
-    result: RunResult | None = None
-    error: EcncError | None = None
-    try:
-        result = run.execute_file(Path(job), name)
-    except EcncError as err:
-        if getattr(err, "result", None) is None:  # nothing ran: syntax, configuration
-            raise
-        error = err
+    sim, result, error = drive(job, options, name, make)
     sim.flush()
     notes = list(sim.notes)
     if tools is None:

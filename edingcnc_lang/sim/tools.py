@@ -18,9 +18,9 @@ from edingcnc_lang.errors import EXIT_USAGE, EcncError, Location
 from edingcnc_lang.syntax import toml_input
 from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH, MIN_SIM_SIZE, MIN_VEE_ANGLE
 
-SHAPES = ("flat", "ball", "bull", "vee")
+SHAPES = ("flat", "ball", "bull", "vee", "insert")  # insert: a lathe tool (``ecnc sim --bar``)
 FIELDS = ("shape", "diameter", "corner_radius", "angle", "flute_length", "shank_diameter",
-          "holder_diameter", "holder_length")
+          "holder_diameter", "holder_length", "nose_radius", "orientation")
 DEFAULT_DIAMETER = 3.0  # mm: a tool the ini does not size still cuts something visible
 
 
@@ -45,6 +45,8 @@ class Tool:
     shank_diameter: float | None = None
     holder_diameter: float | None = None
     holder_length: float | None = None
+    nose_radius: float | None = None  # an insert's nose (its controlled point: ``orientation``, 1..9)
+    orientation: int | None = None
     source: str = "ini"  # "ini", "default" or the tools file
 
     @property
@@ -117,14 +119,27 @@ def _tool(number: int, entry: Any, source: str, where: Location) -> Tool:
     if shape not in SHAPES:
         raise ToolFileError(f"{name}: shape must be one of {', '.join(SHAPES)}, not {shape!r}", where)
     values: dict[str, float] = {}
-    for key in FIELDS[1:]:
-        if key in entry:
+    if "orientation" in entry:
+        orientation = entry["orientation"]
+        if isinstance(orientation, bool) or not isinstance(orientation, int) or not 0 <= orientation <= 9:
+            raise ToolFileError(f"{name}: orientation must be a whole number from 0 to 9 (the tool table's)", where)
+        values["orientation"] = orientation
+    if shape == "insert":  # a lathe insert is sized by its nose; the diameter is twice it, as the ini's
+        nose = toml_input.number(entry.get("nose_radius", 0))
+        if nose is None or not 0 <= nose <= MAX_SIM_LENGTH:
+            raise ToolFileError(f"{name}: nose_radius must be 0 (a sharp point) or a positive number of mm, "
+                                f"not {entry['nose_radius']!r}", where)
+        values["nose_radius"], values["diameter"] = nose, 2 * nose
+    for key in FIELDS[1:-2]:
+        if key in entry and key not in values:
             value = toml_input.number(entry[key])  # None for a 400-digit integer too
             if value is None or not (key == "angle" or MIN_SIM_SIZE <= value <= MAX_SIM_LENGTH
                                      or (value == 0 and key == "corner_radius")):  # the angle: below
                 raise ToolFileError(f"{name}: {key} must be a positive number of mm ({MIN_SIM_SIZE:g} to "
                                     f"{MAX_SIM_LENGTH:g}), not {entry[key]!r}", where)
             values[key] = value
+    if shape != "insert" and ("nose_radius" in entry or "orientation" in entry):
+        raise ToolFileError(f"{name}: nose_radius and orientation are for shape = \"insert\" (a lathe tool)", where)
     if "diameter" not in values:
         raise ToolFileError(f"{name}: diameter is missing", where)
     tool = Tool(number, shape=shape, source=source, **values)  # type: ignore[arg-type]

@@ -1,0 +1,192 @@
+"""A lathe job cutting a bar: ``simulate_bar``, the round-stock counterpart of ``job.simulate``.
+
+Each move's controlled point (the imaginary tool tip the offsets were measured to) is taken in the
+bar's frame: machine X less the work offset is the radius (machine X is a radius on this lathe,
+whatever the programming mode), machine Z less the offset the axial position.  The nose's centre is
+that point less ``tip_shift(orientation, nose radius)``; the nose swept along the move is cut into
+the bar while the spindle turns it (``turning.spans``).  Findings: material removed by a rapid or
+with the spindle stopped, and with ``--chuck`` the tool reaching into the chuck.
+"""
+from __future__ import annotations
+
+import time
+from array import array
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
+from edingcnc_lang.machine import tables as t
+from edingcnc_lang.pipeline.comp_geometry import tip_shift
+from edingcnc_lang.runner import Run, RunOptions, RunResult
+from edingcnc_lang.sim.findings import CutFinding, merged
+from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
+from edingcnc_lang.sim.round_stock import EPS, RoundStock
+from edingcnc_lang.sim.stock import StockError
+from edingcnc_lang.sim.tools import Tool
+from edingcnc_lang.sim.turning import CHUNK, ranges, reaching, spans
+
+BATCH = 20_000  # segments cut at once
+KIND_OF_CODE = {1: "rapid_into_stock", 2: "spindle_off"}
+CUT, RAPID, SPINDLE_OFF = 0, 1, 2
+
+
+@dataclass
+class BarResult:
+    """The cut bar, the findings and what the run left; ``error`` when the job stopped early."""
+
+    stock: RoundStock
+    findings: list[CutFinding]
+    tools: dict[int, Tool]
+    notes: list[str]
+    seconds: float
+    moves: int
+    diameter_mode: bool
+    chuck: float | None = None  # the axial position of the chuck's face
+    run: RunResult | None = None
+    error: EcncError | None = None
+
+
+def insert_of(config: MachineConfig, number: int, table: dict[int, Tool] | None) -> Tool:
+    """Tool ``number`` as an insert: from the tools file, else the ini's nose (diameter / 2) and orientation."""
+    if table is not None and number in table:
+        return table[number]
+    entry = config.tools.get(number)
+    if entry is None:
+        return Tool(number, shape="insert", diameter=0.0, nose_radius=0.0, orientation=0, source="default")
+    return Tool(number, shape="insert", diameter=entry.diameter, nose_radius=max(entry.diameter, 0.0) / 2.0,
+                orientation=entry.orientation)
+
+
+@dataclass
+class _Queue:
+    ends: array = field(default_factory=lambda: array("d"))  # z0 r0 z1 r1 of the controlled point
+    moves: array = field(default_factory=lambda: array("q"))
+    codes: array = field(default_factory=lambda: array("b"))
+
+
+class BarSimulator:
+    """The ``on_move``/``on_event`` callbacks cutting a bar (``drive`` feeds them)."""
+
+    def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int,
+                 chuck: float | None) -> None:
+        self.stock = stock
+        self.config = run.config
+        self.interp = run.interpreter
+        self.table = tools
+        self.chuck = chuck
+        self.tool = insert_of(self.config, first_tool, tools)
+        self.used: dict[int, Tool] = {}
+        self.spindle_on = False
+        self.queue = _Queue()
+        self.lines = array("i")
+        self.files = array("h")
+        self.paths: dict[str, int] = {}
+        self.found: list[CutFinding] = []
+        self.chord = stock.resolution / 4.0
+        self.scale = 2.0 if self.config.diameter_mode else 1.0  # a radius as the job writes X
+
+    def on_event(self, event: Event) -> None:
+        if isinstance(event, SpindleEvent):
+            self.spindle_on = event.m in (3, 4)
+        elif isinstance(event, ToolChangeEvent):
+            self.flush()
+            self.tool = insert_of(self.config, event.tool, self.table)
+
+    def on_move(self, move: Move, _joints: Pose) -> None:
+        index = len(self.lines)
+        self.lines.append(move.line)
+        self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        if move.kind not in CUTTING_KINDS:
+            return
+        off = self.interp.offset()
+        code = RAPID if move.kind in ("rapid", "home") else CUT if self.spindle_on else SPINDLE_OFF
+        if move.arc is None:
+            points = np.array([[move.start[2], move.start[0]], [move.end[2], move.end[0]]])
+        else:
+            points = chords(move, self.chord)[:, [2, 0]]
+        points = points - (off[2], off[0])
+        self.queue.ends.extend(np.hstack((points[:-1], points[1:])).ravel().tolist())
+        self.queue.moves.extend([index] * (len(points) - 1))
+        self.queue.codes.extend([code] * (len(points) - 1))
+        if len(self.queue.moves) >= BATCH:
+            self.flush()
+
+    def flush(self) -> None:
+        """Cut what is queued with the insert in the turret now."""
+        if not len(self.queue.moves):
+            return
+        ends = np.frombuffer(self.queue.ends, dtype=float).reshape(-1, 4)
+        moves = np.frombuffer(self.queue.moves, dtype=np.int64)
+        codes = np.frombuffer(self.queue.codes, dtype=np.int8)
+        self.queue = _Queue()
+        tool = self.used[self.tool.number] = self.tool
+        nose = tool.nose_radius or 0.0
+        dx, dz = tip_shift(tool.orientation or 0, nose)
+        centre = ends - (dz, dx, dz, dx)  # the nose's centre: the controlled point less the tip's shift
+        a, b = centre[:, :2], centre[:, 2:]
+        if self.chuck is not None:
+            self._chuck(a, b, nose, moves, tool.number)
+        first, last = ranges(self.stock, a, b, nose)
+        ends_at = np.cumsum(np.maximum(last - first + 1, 0))
+        start = 0
+        while start < len(moves):  # chunks of bounded work, in the tool's order
+            stop = max(int(np.searchsorted(ends_at, ends_at[start] + CHUNK, side="right")), start + 1)
+            part = np.arange(start, stop)
+            part = part[reaching(self.stock, a[part], b[part], nose, first[part], last[part])]
+            if len(part):
+                seg, cell, low, high = spans(self.stock, a[part], b[part], nose, first[part], last[part])
+                depth = self.stock.cut(cell, low, high)
+                self._hits(part[seg], cell, depth, low, moves, codes, tool.number)
+            start = stop
+
+    def _hits(self, seg: np.ndarray, cell: np.ndarray, depth: np.ndarray, low: np.ndarray, moves: np.ndarray,
+              codes: np.ndarray, tool: int) -> None:
+        bad = np.flatnonzero((depth > EPS) & (codes[seg] != CUT))
+        centres = self.stock.centres()
+        for k in bad.tolist():
+            s = int(seg[k])
+            where = (max(float(low[k]), 0.0) * self.scale, 0.0, float(centres[cell[k]]))
+            self._add(KIND_OF_CODE[int(codes[s])], int(moves[s]), where, float(depth[k]), tool)
+
+    def _chuck(self, a: np.ndarray, b: np.ndarray, nose: float, moves: np.ndarray, tool: int) -> None:
+        """The tool reaching past the chuck's face (towards the bar's far end) meets the chuck."""
+        assert self.chuck is not None
+        deepest = np.minimum(a[:, 0], b[:, 0]) - nose
+        for s in np.flatnonzero(deepest < self.chuck - EPS).tolist():
+            point = a[s] if a[s, 0] <= b[s, 0] else b[s]
+            self._add("chuck", int(moves[s]), (float(point[1]) * self.scale, 0.0, float(deepest[s])),
+                      float(self.chuck - deepest[s]), tool)
+
+    def _add(self, kind: str, move: int, where: tuple[float, float, float], depth: float, tool: int) -> None:
+        paths = list(self.paths)
+        self.found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], where, depth, tool, move))
+
+    def notes(self) -> list[str]:
+        """What the report should say about the inserts that cut: those simulated as a point."""
+        return [f"T{n} has no nose radius (no --tools entry, no ini diameter): simulated as a sharp point"
+                for n, tool in sorted(self.used.items()) if not tool.nose_radius]
+
+
+def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None = None,
+                 tools: dict[int, Tool] | None = None, first_tool: int | None = None,
+                 name: str | None = None, chuck: float | None = None) -> BarResult:
+    """Run the lathe ``job`` and turn the bar with it; ``chuck`` is the axial position of the chuck's
+    face (the bar gripped beyond it).  A runtime error is kept in ``BarResult.error``."""
+    started = time.perf_counter()
+
+    def make(run: Run) -> BarSimulator:
+        if not run.config.lathe:
+            raise StockError("a bar turns on a lathe: the ini is a mill's (machineType = 1 or 2 is a lathe); "
+                             "a mill's rotary axis takes --stock cylinder:DIAMETER,LENGTH[,X0]")
+        first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
+        return BarSimulator(stock, run, tools, first, chuck)
+
+    sim, result, error = drive(job, options, name, make)
+    sim.flush()
+    return BarResult(stock, merged(sim.found), dict(sim.used), sim.notes(), time.perf_counter() - started,
+                     len(sim.lines), sim.config.diameter_mode, chuck, result, error)
