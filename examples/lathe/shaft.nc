@@ -43,7 +43,8 @@ gosub cycle_thread
 M6 T4
 G97 S700 M3
 G95 F0.05
-G0 X56 Z-48
+G0 X66                     (clear of the 62 mm collar first)
+G0 Z-48
 G1 X2
 G0 X60
 G94 M5
