@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 import time
 from array import array
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from collections.abc import Callable
 from typing import Any
 from pathlib import Path
@@ -28,12 +28,12 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.sampling import arc_points
 from edingcnc_lang.kinematics.trajectory import geometry_of
 from edingcnc_lang.runner import Run, RunOptions, RunResult
+from edingcnc_lang.sim.queue import MoveQueue
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
 from edingcnc_lang.sim.tools import Tool, ini_tool
 
-BATCH = 20_000          # segments swept at once
 PLUNGE_SHARE = 0.5      # a flat tool may plunge this many diameters into the material at once
 OUTSIDE = 99            # finding code of a move below the stock's bottom (found here, not in the sweep)
 CUTTING_KINDS = frozenset({"rapid", "linear", "arc", "home"})  # probe moves touch, they do not cut
@@ -58,22 +58,6 @@ class SimResult:
         return all(t.flute_length is not None for t in self.tools.values())
 
 
-@dataclass
-class _Queue:
-    """Segments waiting to be swept, as flat arrays of numbers."""
-
-    ends: array = field(default_factory=lambda: array("d"))   # ax ay az bx by bz per segment
-    moves: array = field(default_factory=lambda: array("q"))
-    codes: array = field(default_factory=lambda: array("b"))
-
-    def take(self) -> Segments:
-        pairs = np.frombuffer(self.ends, dtype=float).reshape(-1, 2, 3).copy()
-        segs = Segments(pairs[:, 0], pairs[:, 1], np.frombuffer(self.moves, dtype=np.int64).copy(),
-                        np.frombuffer(self.codes, dtype=np.int8).copy())
-        self.ends, self.moves, self.codes = array("d"), array("q"), array("b")
-        return segs
-
-
 class Simulator:
     """The ``on_move``/``on_event`` callbacks of a simulated run; ``attach`` it to the ``Run``."""
 
@@ -87,7 +71,7 @@ class Simulator:
         self.used: dict[int, Tool] = {}  # the tools that swept anything
         self.tool = self._tool(first_tool)
         self.spindle_on = False
-        self.queue = _Queue()
+        self.queue = MoveQueue(6)  # a segment's two ends: ax ay az bx by bz
         self.lines = array("i")
         self.files = array("h")
         self.paths: dict[str, int] = {}
@@ -162,16 +146,12 @@ class Simulator:
         else:
             code = NONE
         if move.arc is None:
-            self.queue.ends.extend((start[0] - fx, start[1] - fy, start[2] - fz, end[0] - fx, end[1] - fy, end[2] - fz))
-            self.queue.moves.append(index)
-            self.queue.codes.append(code)
+            self.queue.add((start[0] - fx, start[1] - fy, start[2] - fz, end[0] - fx, end[1] - fy, end[2] - fz),
+                           index, code)
         else:
             points = self._chords(move) - (fx, fy, fz)
-            count = len(points) - 1
-            self.queue.ends.extend(np.hstack((points[:-1], points[1:])).ravel().tolist())
-            self.queue.moves.extend([index] * count)
-            self.queue.codes.extend([code] * count)
-        if len(self.queue.moves) >= BATCH:
+            self.queue.add(np.hstack((points[:-1], points[1:])).ravel().tolist(), index, code)
+        if self.queue.full:
             self.flush()
 
     def _chords(self, move: Move) -> np.ndarray:
@@ -179,9 +159,10 @@ class Simulator:
 
     def flush(self) -> None:
         """Sweep what is queued, with the tool in the spindle now."""
-        if not len(self.queue.moves):
+        if not len(self.queue):
             return
-        segs = self.queue.take()
+        rows, moves, codes = self.queue.take()
+        segs = Segments(rows[:, :3], rows[:, 3:], moves, codes)
         low = np.minimum(segs.a[:, 2], segs.b[:, 2])
         if not (low < self.ceiling).any():  # all above the material: nothing to cut, nothing to hit
             return

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import time
 from array import array
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +23,7 @@ from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.pipeline.comp_geometry import tip_shift
 from edingcnc_lang.runner import Run, RunOptions, RunResult
+from edingcnc_lang.sim.queue import MoveQueue
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
@@ -30,7 +31,6 @@ from edingcnc_lang.sim.stock import StockError
 from edingcnc_lang.sim.tools import Tool
 from edingcnc_lang.sim.turning import CHUNK, ranges, reaching, spans
 
-BATCH = 20_000  # segments cut at once
 KIND_OF_CODE = {1: "rapid_into_stock", 2: "spindle_off"}
 CUT, RAPID, SPINDLE_OFF = 0, 1, 2
 
@@ -62,13 +62,6 @@ def insert_of(config: MachineConfig, number: int, table: dict[int, Tool] | None)
                 orientation=entry.orientation)
 
 
-@dataclass
-class _Queue:
-    ends: array = field(default_factory=lambda: array("d"))  # z0 r0 z1 r1 of the controlled point
-    moves: array = field(default_factory=lambda: array("q"))
-    codes: array = field(default_factory=lambda: array("b"))
-
-
 class BarSimulator:
     """The ``on_move``/``on_event`` callbacks cutting a bar (``drive`` feeds them)."""
 
@@ -82,7 +75,7 @@ class BarSimulator:
         self.tool = insert_of(self.config, first_tool, tools)
         self.used: dict[int, Tool] = {}
         self.spindle_on = False
-        self.queue = _Queue()
+        self.queue = MoveQueue(4)  # z0 r0 z1 r1 of the controlled point
         self.lines = array("i")
         self.files = array("h")
         self.paths: dict[str, int] = {}
@@ -110,20 +103,15 @@ class BarSimulator:
         else:
             points = chords(move, self.chord)[:, [2, 0]]
         points = points - (off[2], off[0])
-        self.queue.ends.extend(np.hstack((points[:-1], points[1:])).ravel().tolist())
-        self.queue.moves.extend([index] * (len(points) - 1))
-        self.queue.codes.extend([code] * (len(points) - 1))
-        if len(self.queue.moves) >= BATCH:
+        self.queue.add(np.hstack((points[:-1], points[1:])).ravel().tolist(), index, code)
+        if self.queue.full:
             self.flush()
 
     def flush(self) -> None:
         """Cut what is queued with the insert in the turret now."""
-        if not len(self.queue.moves):
+        if not len(self.queue):
             return
-        ends = np.frombuffer(self.queue.ends, dtype=float).reshape(-1, 4)
-        moves = np.frombuffer(self.queue.moves, dtype=np.int64)
-        codes = np.frombuffer(self.queue.codes, dtype=np.int8)
-        self.queue = _Queue()
+        ends, moves, codes = self.queue.take()
         tool = self.used[self.tool.number] = self.tool
         nose = tool.nose_radius or 0.0
         dx, dz = tip_shift(tool.orientation or 0, nose)

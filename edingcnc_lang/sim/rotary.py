@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 import time
 from array import array
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -25,13 +25,13 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.runner import Run, RunOptions, RunResult
+from edingcnc_lang.sim.queue import MoveQueue
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
 from edingcnc_lang.sim.tools import Tool, ini_tool
 from edingcnc_lang.sim.turning import CHUNK
 
-BATCH = 20_000  # samples stamped at once
 CUT, RAPID, SPINDLE_OFF = 0, 1, 2
 KIND_OF_CODE = {RAPID: "rapid_into_stock", SPINDLE_OFF: "spindle_off"}
 
@@ -50,13 +50,6 @@ class CylinderResult:
     error: EcncError | None = None
 
 
-@dataclass
-class _Queue:
-    poses: array = field(default_factory=lambda: array("d"))  # x y z a(degrees) of the tool tip per sample
-    moves: array = field(default_factory=lambda: array("q"))
-    codes: array = field(default_factory=lambda: array("b"))
-
-
 class CylinderSimulator:
     """The ``on_move``/``on_event`` callbacks stamping a mill's tool into a bar on its A axis."""
 
@@ -67,7 +60,7 @@ class CylinderSimulator:
         self.tool = self._tool(first_tool)
         self.used: dict[int, Tool] = {}
         self.spindle_on = False
-        self.queue = _Queue()
+        self.queue = MoveQueue(4)  # x y z a(degrees) of the tool tip per sample
         self.lines = array("i")
         self.files = array("h")
         self.paths: dict[str, int] = {}
@@ -114,20 +107,15 @@ class CylinderSimulator:
                 samples.extend((p[0] + (q[0] - p[0]) * f, p[1] + (q[1] - p[1]) * f, p[2] + (q[2] - p[2]) * f,
                                 p[3] + (q[3] - p[3]) * f))
         self.last = poses[-1]
-        self.queue.poses.extend(samples)
-        self.queue.moves.extend([index] * (len(samples) // 4))
-        self.queue.codes.extend([code] * (len(samples) // 4))
-        if len(self.queue.moves) >= BATCH:
+        self.queue.add(samples, index, code)
+        if self.queue.full:
             self.flush()
 
     def flush(self) -> None:
         """Stamp what is queued with the tool in the spindle now."""
-        if not len(self.queue.moves):
+        if not len(self.queue):
             return
-        poses = np.frombuffer(self.queue.poses, dtype=float).reshape(-1, 4)
-        moves = np.frombuffer(self.queue.moves, dtype=np.int64)
-        codes = np.frombuffer(self.queue.codes, dtype=np.int8)
-        self.queue = _Queue()
+        poses, moves, codes = self.queue.take()
         tool = self.used[self.tool.number] = self.tool
         ends = np.cumsum(_extent(self.stock, poses, tool.radius)[4])
         start = 0
