@@ -3,12 +3,13 @@ from __future__ import annotations
 
 import math
 import sys
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any, NamedTuple
 
 import click
 
-from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, JobAborted
+from edingcnc_lang.errors import EXIT_FINDINGS, EXIT_OK, EcncError, JobAborted
 from edingcnc_lang.cli.base import Command, usage_error
 from edingcnc_lang.cli.options import MachineOptions, job_or_stdin_argument, json_option, machine_options
 from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, PlainFloat
@@ -149,29 +150,40 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, bar: tup
     if output and fmt:
         from edingcnc_lang.sim.picture import draw_stock
 
-        count = len(result.findings)
-        title = (f"{name or job}: {stock.removed_volume:,.0f} mm³ removed, "
-                 f"{count} finding{'s' * (count != 1)}")
-        draw_stock(stock, ensure_parent(Path(output)), fmt, result.findings, title, deviation)
+        draw_stock(stock, ensure_parent(Path(output)), fmt, result.findings,
+                   _title(name or job, stock.removed_volume, len(result.findings)), deviation)
     if stl:
         from edingcnc_lang.sim.stl import stock_mesh, write_stl
 
         write_stl(ensure_parent(Path(stl)), stock_mesh(stock))
+    return _report(as_json, lambda: report.to_json(result, deviation), lambda: report.summary(result, deviation),
+                   (output, stl), result.error, failing(result.findings))
+
+
+def _title(name: str, removed: float, count: int) -> str:
+    """The picture's title: the job, the volume removed, how many findings."""
+    return f"{name}: {removed:,.0f} mm³ removed, {count} finding{'s' * (count != 1)}"
+
+
+def _report(as_json: bool, document: Callable[[], dict[str, Any]], summary: Callable[[], Iterable[str]],
+            written: tuple[str | None, ...], error: EcncError | None, failed: bool) -> int:
+    """Print the result (``--json``'s document, or the summary and the files written), then the error
+    that stopped the run; the exit code: the error's, 1 with a failing finding, else 0."""
     if as_json:
         import json
 
-        print(json.dumps(report.to_json(result, deviation), indent=1))
+        print(json.dumps(document(), indent=1))
     else:
-        for line in report.summary(result, deviation):
+        for line in summary():
             print(line)
-        for written in (output, stl):
-            if written:
-                print(f"wrote {written}")
-    if result.error is not None:
-        if not isinstance(result.error, JobAborted):
-            print(result.error.format(), file=sys.stderr)
-        return result.error.exit_code
-    return EXIT_FINDINGS if failing(result.findings) else EXIT_OK
+        for path in written:
+            if path:
+                print(f"wrote {path}")
+    if error is not None:
+        if not isinstance(error, JobAborted):
+            print(error.format(), file=sys.stderr)
+        return error.exit_code
+    return EXIT_FINDINGS if failed else EXIT_OK
 
 
 def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, bar: tuple[float, ...] | None,
@@ -214,8 +226,7 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
             stock = RoundStock.cylinder(box.diameter, box.length, box.x0, resolution)
             result = simulate_cylinder(path, stock, options, tools, machine.spindle_tool, name=name)
     if output and fmt:
-        count = len(result.findings)
-        title = f"{name or job}: {stock.removed_volume:,.0f} mm³ removed, {count} finding{'s' * (count != 1)}"
+        title = _title(name or job, stock.removed_volume, len(result.findings))
         if isinstance(result, BarResult):
             bar_output.draw_bar(result, ensure_parent(Path(output)), fmt, title)
         else:
@@ -224,18 +235,5 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
         from edingcnc_lang.sim.stl import write_stl
 
         write_stl(ensure_parent(Path(stl)), bar_output.bar_mesh(stock))
-    if as_json:
-        import json
-
-        print(json.dumps(bar_output.to_json(result), indent=1))
-    else:
-        for line in bar_output.summary(result):
-            print(line)
-        for written in (output, stl):
-            if written:
-                print(f"wrote {written}")
-    if result.error is not None:
-        if not isinstance(result.error, JobAborted):
-            print(result.error.format(), file=sys.stderr)
-        return result.error.exit_code
-    return EXIT_FINDINGS if failing(result.findings) else EXIT_OK
+    return _report(as_json, lambda: bar_output.to_json(result), lambda: bar_output.summary(result),
+                   (output, stl), result.error, failing(result.findings))
