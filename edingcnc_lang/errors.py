@@ -194,6 +194,14 @@ class CallbackError(MachineError):
 
     kind = "callback"
 
+    @classmethod
+    def of(cls, who: str, exc: Exception, where: Location | None) -> CallbackError:
+        """``WHO raised ZeroDivisionError: division by zero`` at ``where``, the callback's exception its cause."""
+        text = str(exc)
+        error = cls(f"{who} raised {type(exc).__name__}{': ' + text if text else ''}", where)
+        error.__cause__ = exc
+        return error
+
 
 class UsageFailure(EcncError):
     """A command line that cannot run (exit 2); for the ``--json`` error object of a usage error."""

@@ -160,9 +160,7 @@ def guarded(host: Host, where: Callable[[], Location]) -> Host:
             except EcncError:  # the embedding program's own error, raised on purpose: as it is
                 raise
             except Exception as exc:
-                text = str(exc)
-                raise CallbackError(f"the host's {name} callback raised {type(exc).__name__}"
-                                    f"{': ' + text if text else ''}", where()) from exc
+                raise CallbackError.of(f"the host's {name} callback", exc, where()) from exc
         return guarded  # type: ignore[return-value]
 
     return replace(host, **{f.name: guard(f.name, getattr(host, f.name)) for f in fields(host)})

@@ -75,8 +75,8 @@ class CallbackTap:
                 self.stopped = err
                 raise
             except Exception as exc:
-                raise self._stop(CallbackError(f"on_event raised {_described(exc)} at a {event.kind} event",
-                                               Location(event.path, event.line)), exc) from exc
+                raise self._stop(CallbackError.of(f"on_event (at a {event.kind} event)", exc,
+                                                  Location(event.path, event.line)), exc) from exc
         self.inner.event(event)
 
     def flush(self) -> None:
@@ -95,8 +95,7 @@ class CallbackTap:
                 self.stopped = err
                 raise
             except Exception as exc:
-                raise self._stop(CallbackError(f"on_move raised {_described(exc)}", Location(move.path, move.line)),
-                                 exc) from exc
+                raise self._stop(CallbackError.of("on_move", exc, Location(move.path, move.line)), exc) from exc
 
     def _check(self, where: Location) -> None:
         """Stop here if the run was stopped or cancelled (``where``: the move or event not made)."""
@@ -110,8 +109,3 @@ class CallbackTap:
         error.__cause__ = cause
         return error
 
-
-def _described(exc: BaseException) -> str:
-    """``ZeroDivisionError: division by zero`` as a message says it."""
-    text = str(exc)
-    return f"{type(exc).__name__}: {text}" if text else type(exc).__name__

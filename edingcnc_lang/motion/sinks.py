@@ -380,8 +380,6 @@ class CallbackSink:
             raise
         except Exception as exc:
             self.failed = True
-            text = str(exc)
-            raise CallbackError(f"{name} raised {type(exc).__name__}{': ' + text if text else ''}",
-                                Location(at.path, at.line)) from exc
+            raise CallbackError.of(name, exc, Location(at.path, at.line)) from exc
 
 
