@@ -8,6 +8,11 @@ vanishes, clamped to the part of the segment that passes over the cell (a flat, 
 tool each have their formula; a bull nose is found by a golden-section search, which convexity
 makes exact).  The field takes the minimum; what each move removed, and from what height, is
 worked out exactly in program order only for the pairs that may be a finding.
+
+A chunk where no pair can be a finding (every segment cuts with the spindle on, and no shank or
+holder reaches material) only lowers the field: the compiled core (``_sweep.carve``) does that
+segment after segment, skipping the cells its predecessors already cut lower, to the same heights
+(the field is the minimum over all pairs, whatever their order).
 """
 from __future__ import annotations
 
@@ -16,6 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from edingcnc_lang import speedups
 from edingcnc_lang.sim.envelope import Geometry, lowest
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.tools import Tool
@@ -25,6 +31,8 @@ MAX_PAIRS = 50_000  # (segment, cell) pairs per chunk: its scratch arrays stay i
 
 # CutFinding codes of a pair: what the part of the tool that made it was doing.
 NONE, RAPID, SPINDLE_OFF, PLUNGE, SHANK, HOLDER = range(6)
+CARVE = None if speedups.SWEEP is None else speedups.SWEEP.carve  # the compiled field-only sweep, or None
+CARVED = ("flat", "ball", "vee", "bull")  # the cutter shapes it knows
 CODE_KINDS = {RAPID: "rapid_into_stock", SPINDLE_OFF: "spindle_off", PLUNGE: "plunge",
               SHANK: "shank", HOLDER: "holder"}
 
@@ -173,10 +181,37 @@ def sweep(stock: Stock, tool: Tool, segs: Segments, plunge_limit: float, ceiling
     if not len(busy):
         return Hits.empty()
     bounds = np.searchsorted(np.cumsum(counts[busy]), np.arange(MAX_PAIRS, int(counts.sum()), MAX_PAIRS))
-    found = [_chunk(stock, tool, segs, parts, reach, chosen, plunge_limit)
-             for chosen in np.split(busy, np.unique(np.maximum(bounds, 1)))]
+    found, quiet = [Hits.empty()], []
+    top = stock.top
+    carving = (CARVE is not None and tool.shape in CARVED and top.dtype == np.float32 and top.flags.c_contiguous
+               and top.flags.writeable)
+    for chosen in np.split(busy, np.unique(np.maximum(bounds, 1))):
+        if carving and _quiet(segs, reach, chosen):
+            quiet.append(chosen)  # carved with the next chunk that may find something, or at the end
+            continue
+        if quiet:
+            _carve(stock, tool, segs, reach[0], np.concatenate(quiet))
+            quiet = []
+        found.append(_chunk(stock, tool, segs, parts, reach, chosen, plunge_limit))
+    if quiet:
+        _carve(stock, tool, segs, reach[0], np.concatenate(quiet))
     return Hits(*(np.concatenate([getattr(h, name) for h in found])  # type: ignore[arg-type]
                   for name in ("move", "code", "depth", "where")))
+
+
+def _quiet(segs: Segments, reach: list[np.ndarray], chosen: np.ndarray) -> bool:
+    """No pair of the chunk can be a finding: every segment's code is NONE and only the cutter reaches material."""
+    return not (segs.code[chosen] != NONE).any() and not any(near[chosen].any() for near in reach[1:])
+
+
+def _carve(stock: Stock, tool: Tool, segs: Segments, near: np.ndarray, chosen: np.ndarray) -> None:
+    """``_chunk`` without findings, compiled (``CARVE``): the field lowered by the cutter (``near``:
+    the segments where it reaches material), segment by segment."""
+    assert CARVE is not None
+    picked = chosen[near[chosen]]
+    CARVE(stock.top, np.ascontiguousarray(segs.a[picked], dtype=float), np.ascontiguousarray(segs.b[picked], dtype=float),
+          float(stock.x0), float(stock.y0), float(stock.resolution), float(stock.bottom), tool.shape, tool.radius,
+          tool.corner_radius, tool.cone_slope)
 
 
 def _chunk(stock: Stock, tool: Tool, segs: Segments, parts: list[Part], reach: list[np.ndarray],
