@@ -3,32 +3,27 @@
 The job is a raster finish of a wavy surface (``z = 2 sin(x/8) cos(y/11) - 3``) over 100 x 100 mm
 with a 6 mm ball end mill: 200 rows 0.5 mm apart, 1,000 points 0.1 mm apart on each, against
 ``ecnc run -q`` and ``ecnc run --trace`` of it (the bound: the simulation within 5 times
-``run --trace``).  Also prints the memory of the height field of a
-1 m x 1 m table at 0.25 mm, and the peak memory of each command.
+``run --trace``).  The commands run alternately, ``--repeat`` rounds, medians.  ``--pure`` adds the
+simulation on the pure-Python core (numpy's sweep); ``--against CHECKOUT`` adds the simulation of
+another checkout of the package (its source folder on PYTHONPATH, its extensions built in place:
+``python setup.py build_ext --inplace``), to pair a change with what came before.  Also prints the
+memory of the height field of a 1 m x 1 m table at 0.25 mm, and the peak memory of each command.
 
-    python benchmarks/bench_sim.py [--repeat N] [--rows N]
+    python benchmarks/bench_sim.py [--repeat N] [--rows N] [--pure] [--against CHECKOUT]
+
+Latest figures (2026-12-05, 2 loaded cores, 5 rounds, CPU medians; docs/performance.md's ``ecnc sim``
+table has the rest): ``run`` 0.26 s, ``run --trace`` 0.59 s, ``sim`` 1.98 s (3.3x ``run --trace``;
+the code before the compiled sweep, ``--against``: 6.77 s, 11.4x), ``sim`` on the pure-Python core
+7.12 s (12.0x).
 """
 from __future__ import annotations
 
 import argparse
 import math
-import os
-import statistics
-import subprocess
 import tempfile
-import time
 from pathlib import Path
 
-from bench_run import ECNC, ENV, NEUTRAL_CWD
-
-
-def measure(cmd: list[str]) -> tuple[float, float, float]:
-    """Wall seconds, CPU seconds (user + system) and peak RSS (MB) of one run of ``cmd``.  The CPU
-    time is the figure to compare on a shared machine: it does not grow with other jobs' load."""
-    start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=NEUTRAL_CWD, env=ENV)
-    _, _, usage = os.wait4(proc.pid, 0)
-    return time.perf_counter() - start, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
+from bench_run import ECNC, PURE, median_runs
 
 
 def write_job(path: Path, rows: int, points: int = 1000) -> int:
@@ -49,27 +44,35 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--rows", type=int, default=200)
+    parser.add_argument("--pure", action="store_true", help="also the simulation on the pure-Python core")
+    parser.add_argument("--against", metavar="CHECKOUT", help="also the simulation of this checkout of the package")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
         job, tools = tmp / "finish.nc", tmp / "tools.toml"
         count = write_job(job, args.rows)
         tools.write_text('[tool.0]\nshape = "ball"\ndiameter = 6\nflute_length = 15\n', encoding="ascii")
+        sim = ECNC + ["sim", str(job), "--stock", "-5,-5,-10,105,105,0", "--resolution", "0.2", "--tools", str(tools),
+                      "--tool", "0"]
         commands = {"ecnc run": ECNC + ["run", str(job), "-q"],
                     "run --trace": ECNC + ["run", "--trace", str(tmp / "trace.csv"), str(job), "-q"],
-                    "ecnc sim": ECNC + ["sim", str(job), "--stock", "-5,-5,-10,105,105,0", "--resolution", "0.2",
-                                        "--tools", str(tools), "--tool", "0"]}
-        walls, cpus = {}, {}
+                    "ecnc sim": sim}
+        envs = {}
+        if args.pure:
+            commands["sim, pure"], envs["sim, pure"] = sim, PURE
+        if args.against:
+            commands["sim, against"], envs["sim, against"] = sim, {"PYTHONPATH": str(Path(args.against).resolve())}
         print(f"{count:,} lines, {args.rows * 1000:,} moves")
-        for name, command in commands.items():
-            runs = [measure(command) for _ in range(args.repeat)]
-            walls[name] = statistics.median(r[0] for r in runs)
-            cpus[name] = statistics.median(r[1] for r in runs)
-            print(f"{name:>11}: {walls[name]:6.2f} s wall, {cpus[name]:6.2f} s CPU, {max(r[2] for r in runs):5.0f} MB peak")
-        print(f"sim / run: {cpus['ecnc sim'] / cpus['ecnc run']:.1f}x in CPU time, "
-              f"{walls['ecnc sim'] / walls['ecnc run']:.1f}x in wall time")
-        print(f"sim / run --trace: {cpus['ecnc sim'] / cpus['run --trace']:.1f}x in CPU time, "
-              f"{walls['ecnc sim'] / walls['run --trace']:.1f}x in wall time (bound: 5x)")
+        results = median_runs(commands, args.repeat, envs)
+        for name, (wall, cpu, peak) in results.items():
+            print(f"{name:>12}: {wall:6.2f} s wall, {cpu:6.2f} s CPU, {peak:5.0f} MB peak")
+        walls = {name: r[0] for name, r in results.items()}
+        cpus = {name: r[1] for name, r in results.items()}
+        for name in [n for n in commands if n.startswith(("ecnc sim", "sim, "))]:
+            print(f"{name} / run: {cpus[name] / cpus['ecnc run']:.1f}x in CPU time, "
+                  f"{walls[name] / walls['ecnc run']:.1f}x in wall time; / run --trace: "
+                  f"{cpus[name] / cpus['run --trace']:.1f}x in CPU time, "
+                  f"{walls[name] / walls['run --trace']:.1f}x in wall time (bound: 5x)")
     cells = round(1000 / 0.25) ** 2
     print(f"1 m x 1 m at 0.25 mm: {cells:,} cells, {cells * 4 / 2**20:.0f} MiB of heights "
           f"(float32; a stock read from STL keeps a second copy for the volumes)")

@@ -209,8 +209,8 @@ def _carve(stock: Stock, tool: Tool, segs: Segments, near: np.ndarray, chosen: n
     the segments where it reaches material), segment by segment."""
     assert CARVE is not None
     picked = chosen[near[chosen]]
-    CARVE(stock.top, np.ascontiguousarray(segs.a[picked], dtype=float), np.ascontiguousarray(segs.b[picked], dtype=float),
-          float(stock.x0), float(stock.y0), float(stock.resolution), float(stock.bottom), tool.shape, tool.radius,
+    a, b = (np.ascontiguousarray(ends[picked], dtype=float) for ends in (segs.a, segs.b))
+    CARVE(stock.top, a, b, float(stock.x0), float(stock.y0), float(stock.resolution), float(stock.bottom), tool.shape, tool.radius,
           tool.corner_radius, tool.cone_slope)
 
 

@@ -17,7 +17,8 @@ from edingcnc_lang.sim import Stock, Tool
 from edingcnc_lang.sim import sweep as sweep_module
 from edingcnc_lang.sim.sweep import NONE, RAPID, SPINDLE_OFF, Segments, sweep
 
-pytestmark = pytest.mark.skipif(sweep_module.CARVE is None, reason="the compiled sweep is not built (or ECNC_PURE_PYTHON)")
+pytestmark = pytest.mark.skipif(sweep_module.CARVE is None,
+                                reason="the compiled sweep is not built (or ECNC_PURE_PYTHON)")
 
 coordinate = st.floats(-4.0, 24.0, allow_nan=False)
 height = st.floats(-7.0, 3.0, allow_nan=False)
