@@ -1,7 +1,7 @@
 """The compiled sweep (``_sweep.carve``) cuts the same height field as the numpy reference.
 
-Random straight moves (short and long, vertical, climbing and plunging, in and out of the stock)
-of random flat, ball, bull nose and vee cutters, some with a shank that reaches the material or
+Random straight moves (short and long, vertical, climbing and plunging, in and out of the stock,
+or one after another as a finishing pass makes them) of random flat, ball, bull nose and vee cutters, some with a shank that reaches the material or
 moves with the spindle off (chunks that may be findings, which numpy keeps), are swept both ways
 on the same stock; the fields must be equal cell for cell (the C repeats numpy's operations in
 numpy's precision, so no tolerance is needed) and the findings the same.
@@ -26,6 +26,11 @@ point = st.tuples(coordinate, coordinate, height)
 move = st.one_of(st.tuples(point, point),
                  point.map(lambda p: (p, (p[0], p[1], p[2] - 2.0))),            # a plunge
                  st.tuples(point, st.floats(-3.0, 3.0)).map(lambda pd: (pd[0], (pd[0][0] + pd[1], pd[0][1], pd[0][2]))))
+# a finishing pass: consecutive short segments, each reaching cells the ones before it cut
+step = st.tuples(st.floats(-0.4, 0.4), st.floats(-0.4, 0.4), st.floats(-0.2, 0.2))
+passes = st.tuples(point, st.lists(step, min_size=1, max_size=150)).map(
+    lambda ps: [tuple(p) for p in np.cumsum(np.array([ps[0], *ps[1]]), axis=0)]).map(
+    lambda pts: list(zip(pts[:-1], pts[1:])))
 tools = st.one_of(
     st.builds(lambda d: Tool(0, "flat", d), st.floats(0.2, 8.0)),
     st.builds(lambda d: Tool(0, "ball", d), st.floats(0.2, 8.0)),
@@ -43,8 +48,9 @@ def _cut(stock: Stock, tool: Tool, segs: Segments, compiled: bool) -> tuple:
 
 
 @settings(max_examples=150)
-@given(moves=st.lists(move, min_size=1, max_size=40), tool=tools, resolution=st.sampled_from([0.1, 0.25, 0.37]),
-       codes=st.lists(st.sampled_from([NONE] * 6 + [RAPID, SPINDLE_OFF]), min_size=40, max_size=40),
+@given(moves=st.one_of(st.lists(move, min_size=1, max_size=40), passes), tool=tools, resolution=st.sampled_from([0.1, 0.25, 0.37]),
+       codes=st.one_of(st.just([NONE] * 150),  # all quiet: the compiled sweep cuts every chunk
+                      st.lists(st.sampled_from([NONE] * 6 + [RAPID, SPINDLE_OFF]), min_size=150, max_size=150)),
        flutes=st.one_of(st.none(), st.floats(0.5, 6.0)))
 def test_compiled_sweep_cuts_the_reference_field(moves, tool, resolution, codes, flutes):
     if flutes is not None:
