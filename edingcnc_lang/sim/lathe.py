@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import time
 from array import array
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -83,6 +84,8 @@ class BarSimulator:
         self.found: list[CutFinding] = []
         self.chord = stock.resolution / 4.0
         self.scale = 2.0 if self.config.diameter_mode else 1.0  # a radius as the job writes X
+        self.every = 0  # with ``on_snapshot``: cut and call it before every ``every``-th move
+        self.on_snapshot: Callable[[int, RoundStock], None] | None = None
 
     def on_event(self, event: Event) -> None:
         if isinstance(event, SpindleEvent):
@@ -93,6 +96,9 @@ class BarSimulator:
 
     def on_move(self, move: Move, _joints: Pose) -> None:
         index = len(self.lines)
+        if self.on_snapshot is not None and index % self.every == 0:
+            self.flush()
+            self.on_snapshot(index, self.stock)
         self.lines.append(move.line)
         self.files.append(self.paths.setdefault(move.path, len(self.paths)))
         if move.kind not in CUTTING_KINDS:
@@ -188,9 +194,12 @@ class BarSimulator:
 
 def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None = None,
                  tools: dict[int, Tool] | None = None, first_tool: int | None = None,
-                 name: str | None = None, chuck: float | None = None) -> BarResult:
+                 name: str | None = None, chuck: float | None = None, every: int = 0,
+                 on_snapshot: Callable[[int, RoundStock], None] | None = None) -> BarResult:
     """Run the lathe ``job`` and turn the bar with it; ``chuck`` is the axial position of the chuck's
-    face (the bar gripped beyond it).  A runtime error is kept in ``BarResult.error``."""
+    face (the bar gripped beyond it).  A runtime error is kept in ``BarResult.error``.
+    ``on_snapshot(move, stock)`` is called with the bar as cut before move 0, ``every``, 2 ``every``,
+    ... (the viewer's frames)."""
     started = time.perf_counter()
 
     def make(run: Run) -> BarSimulator:
@@ -198,7 +207,10 @@ def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None 
             raise StockError("a bar turns on a lathe: the ini is a mill's (machineType = 1 or 2 is a lathe); "
                              "a mill's rotary axis takes --stock cylinder:DIAMETER,LENGTH[,X0]")
         first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
-        return BarSimulator(stock, run, tools, first, chuck)
+        made = BarSimulator(stock, run, tools, first, chuck)
+        if on_snapshot is not None:
+            made.every, made.on_snapshot = max(1, every), on_snapshot
+        return made
 
     sim, result, error = drive(job, options, name, make)
     sim.flush()
