@@ -338,7 +338,7 @@
   const barBlock = document.getElementById("bar-data");
   const B = barBlock ? JSON.parse(barBlock.textContent) : null;
   const barRadii = B ? decode(B.radii, Uint16Array) : null;
-  const BAR_MARKS = { rapid_into_stock: "#d62728", spindle_off: "#9467bd", holder: "#ff7f0e", chuck: "#2ca02c" };
+  const BAR_MARKS = { rapid_into_stock: "#d62728", spindle_off: "#9467bd", holder: "#8c564b", chuck: "#2ca02c" };
   function drawBar(w, h) {
     if (!B) return;
     const reached = current >= 0 ? index[current] + 1 : 0;

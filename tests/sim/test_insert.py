@@ -187,3 +187,18 @@ def test_the_tools_file_takes_the_insert_s_fields(tmp_path: Path) -> None:
                     'insert_size = 15\nholder_width = 25\n')
     tool = load_tools(path)[1]
     assert (tool.insert_angle, tool.insert_size, tool.holder_width) == (55, 15, 25)
+
+
+def test_the_example_finds_its_holder_at_line_19() -> None:
+    """examples/round/deep.nc as docs/simulation.md runs it: one holder finding, at the deep pass."""
+    import json
+
+    from tests.cli_runner import invoke
+
+    root = LATHE_INI.parents[1]
+    result = invoke("sim", root / "round" / "deep.nc", "--ini", LATHE_INI, "--bar", "40,60,1", "--chuck", "20",
+                    "--tools", root / "round" / "insert-tools.toml", "--json")
+    assert result.exit_code == 1, result.output
+    doc = json.loads(result.stdout)
+    assert [(c["kind"], c["line"]) for c in doc["collisions"]] == [("holder", 19)]
+    assert doc["tools"]["1"]["insert_angle"] == 80 and doc["tools"]["1"]["holder_width"] == 20
