@@ -4,6 +4,7 @@ against point sampling, and a holder meeting the bar at its line."""
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -202,3 +203,17 @@ def test_the_example_finds_its_holder_at_line_19() -> None:
     doc = json.loads(result.stdout)
     assert [(c["kind"], c["line"]) for c in doc["collisions"]] == [("holder", 19)]
     assert doc["tools"]["1"]["insert_angle"] == 80 and doc["tools"]["1"]["holder_width"] == 20
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ('[tool.1]\nshape = "insert"\ninsert_angle = 200\n', "insert_angle must be from 1 to below 180"),
+    ('[tool.1]\nshape = "insert"\nholder_width = -3\n', "holder_width must be a positive number"),
+    ('[tool.1]\nshape = "flat"\ndiameter = 6\ninsert_size = 12\n', 'are for shape = "insert"'),
+])
+def test_bad_insert_fields_name_the_file_and_tool(tmp_path: Path, text: str, message: str) -> None:
+    from edingcnc_lang.sim.tools import ToolFileError
+
+    path = tmp_path / "t.toml"
+    path.write_text(text)
+    with pytest.raises(ToolFileError, match=re.escape(message)):
+        load_tools(path)
