@@ -2,16 +2,17 @@
 
 With ``insert_angle`` (the insert's included angle: 80 for a C insert, 55 D, 35 V, 60 T) the
 insert is its nose and its two cutting edges, each ``insert_size`` mm long from the sharp corner
-(ISO's size: CNMG 120408 is 12; at least long enough for the back to clear the nose), closed by its back: a triangle whose rounded tip is the nose.  It
-points the way ``orientation`` puts the imaginary tip (1..8; its bisector runs from the tip through
-the nose's centre), so an 80° insert at orientation 2 has one edge 5° off the face and one 5° off
-the turned diameter, as an SCLCR holder holds it.  With ``holder_width`` the holder is a strip of
-that width from the insert's far end outwards, unbounded: along +X for an outside tool (its side
-flush with the insert's leading side), along +Z out of the bore for an inside one (orientations 3,
-4 and 8: a boring bar, its top flush with the insert's; a bar reaching across the axis meets the
-bore's far side).  Each part swept along a stroke is convex,
-so its lowest and highest radius at a slice's centre lie on the sweep of its outline: the outline's
-segments at both ends of the stroke and the paths of their corners.
+(ISO's size: CNMG 120408 is 12; at least long enough for the back to clear the nose), closed by
+its back: a triangle whose rounded tip is the nose.  It points the way ``orientation`` puts the
+imaginary tip (1..8; its bisector runs from the tip through the nose's centre), so an 80° insert
+at orientation 2 has one edge 5° off the face and one 5° off the turned diameter, as an SCLCR
+holder holds it.  With ``holder_width`` the holder is a strip of that width from the insert's far
+end outwards, unbounded: along +X for an outside tool (its side flush with the insert's leading
+side), along +Z out of the bore for an inside one (orientations 3, 4 and 8: a boring bar, its top
+flush with the insert's; a bar reaching across the axis meets the bore's far side).  Each part
+swept along a stroke is convex, so its lowest and highest radius at a slice's centre lie on the
+sweep of its outline: the outline's segments at both ends of the stroke and the paths of their
+corners.
 """
 from __future__ import annotations
 
