@@ -187,9 +187,13 @@ class BarSimulator:
         self.found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], where, depth, tool, move))
 
     def notes(self) -> list[str]:
-        """What the report should say about the inserts that cut: those simulated as a point."""
-        return [f"T{n} has no nose radius (no --tools entry, no ini diameter): simulated as a sharp point"
-                for n, tool in sorted(self.used.items()) if not tool.nose_radius]
+        """What the report should say about the inserts that cut: those simulated as a point, and
+        those whose edges have no direction (orientation 0 or 9: the nose alone)."""
+        notes = [f"T{n} has no nose radius (no --tools entry, no ini diameter): simulated as a sharp point"
+                 for n, tool in sorted(self.used.items()) if not tool.nose_radius]
+        return notes + [f"T{n}'s insert_angle needs an orientation from 1 to 8 to point its edges: "
+                        "simulated as its nose" for n, tool in sorted(self.used.items())
+                        if tool.insert_angle is not None and not 1 <= (tool.orientation or 0) <= 8]
 
 
 def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None = None,

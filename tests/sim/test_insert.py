@@ -217,3 +217,11 @@ def test_bad_insert_fields_name_the_file_and_tool(tmp_path: Path, text: str, mes
     path.write_text(text)
     with pytest.raises(ToolFileError, match=re.escape(message)):
         load_tools(path)
+
+
+def test_an_insert_angle_without_a_direction_is_its_nose_and_said_so(tmp_path: Path) -> None:
+    result = turn(tmp_path, "G0 X42 Z2\nG1 X30 F100\nG1 Z-20\nG1 X42\nG0 Z2", insert(nose=0.4, orientation=9))
+    assert result.stock.removed_volume == pytest.approx(
+        turn(tmp_path, "G0 X42 Z2\nG1 X30 F100\nG1 Z-20\nG1 X42\nG0 Z2", insert(nose=0.4, orientation=9,
+                                                                            angle=None)).stock.removed_volume)
+    assert any("orientation from 1 to 8" in note for note in result.notes)
