@@ -1,4 +1,5 @@
-"""``ecnc sim`` on a generated 200,000-line 3D finishing job at 0.2 mm, against ``ecnc run`` of it.
+"""``ecnc sim`` on a generated 200,000-line 3D finishing job at 0.2 mm, against ``ecnc run`` of it;
+``--only turning``: ``ecnc sim --bar`` of a 20,000-line turning job against ``ecnc run --trace``.
 
 The job is a raster finish of a wavy surface (``z = 2 sin(x/8) cos(y/11) - 3``) over 100 x 100 mm
 with a 6 mm ball end mill: 200 rows 0.5 mm apart, 1,000 points 0.1 mm apart on each, against
@@ -9,7 +10,12 @@ another checkout of the package (its source folder on PYTHONPATH, its extensions
 ``python setup.py build_ext --inplace``), to pair a change with what came before.  Also prints the
 memory of the height field of a 1 m x 1 m table at 0.25 mm, and the peak memory of each command.
 
-    python benchmarks/bench_sim.py [--repeat N] [--rows N] [--pure] [--against CHECKOUT]
+The turning job (on examples/lathe/cnc.ini, X a diameter) roughs a 100 x 300 bar from 98 to 62 in
+1 mm passes over 190 mm (the ini's Z travel), then follows a wavy contour (``X = 58 + 2 sin(Z/3)``) down to 50 in
+five finishing passes of short moves, 20,000 lines in all, at 0.1 mm: once with T1 as its
+nose (0.4 mm), once as a 55° insert with its edges and a 25 mm holder (the holder's checks).
+
+    python benchmarks/bench_sim.py [--repeat N] [--rows N] [--pure] [--against CHECKOUT] [--only raster|turning]
 
 Latest figures (2026-12-05, 2 loaded cores, 5 rounds, CPU medians; docs/performance.md's ``ecnc sim``
 table has the rest): ``run`` 0.26 s, ``run --trace`` 0.59 s, ``sim`` 1.98 s (3.3x ``run --trace``;
@@ -40,13 +46,63 @@ def write_job(path: Path, rows: int, points: int = 1000) -> int:
     return len(lines)
 
 
+def write_turning(path: Path, lines: int = 20_000) -> int:
+    """The roughing passes, then finishing passes of the contour filling the rest of ``lines``."""
+    out = ["G18 G21 G90 G40", "G97 S1500 M3", "G95 F0.2"]
+    for diameter in range(98, 60, -2):
+        out += [f"G0 X{diameter} Z2", "G1 Z-190", f"G1 X{diameter + 2}", "G0 Z2"]
+    passes = 5
+    points = (lines - len(out) - 1 - 3 * passes) // passes
+    for k in range(passes):
+        offset = 8 - 2 * k
+        out.append(f"G0 X{58 + offset:.3f} Z2")
+        out += [f"G1 X{58 + offset + 2 * math.sin(z / 3):.4f} Z{z:.4f}"
+                for z in (-190 * n / (points - 1) for n in range(points))]
+        out += ["G0 X102", "G0 Z2"]
+    out.append("M30")
+    path.write_text("\n".join(out) + "\n", encoding="ascii")
+    return len(out)
+
+
+def compare(commands: dict[str, list[str]], repeat: int, base: str) -> None:
+    """Run the commands alternately, ``repeat`` rounds, and print each one's median times and its
+    ratio to ``base``."""
+    results = median_runs(commands, repeat)
+    for name, (wall, cpu, peak) in results.items():
+        print(f"{name:>18}: {wall:6.2f} s wall, {cpu:6.2f} s CPU, {peak:5.0f} MB peak")
+    for name in commands:
+        if name != base:
+            print(f"{name} / {base}: {results[name][1] / results[base][1]:.1f}x in CPU time (bound: 5x)")
+
+
+def turning(repeat: int) -> None:
+    ini = Path(__file__).resolve().parents[1] / "examples" / "lathe" / "cnc.ini"
+    with tempfile.TemporaryDirectory() as folder:
+        tmp = Path(folder)
+        job, nose, insert = tmp / "turn.nc", tmp / "nose.toml", tmp / "insert.toml"
+        count = write_turning(job)
+        nose.write_text('[tool.1]\nshape = "insert"\nnose_radius = 0.4\norientation = 2\n', encoding="ascii")
+        insert.write_text('[tool.1]\nshape = "insert"\nnose_radius = 0.4\norientation = 2\ninsert_angle = 55\n'
+                          'insert_size = 15\nholder_width = 25\n', encoding="ascii")
+        bar = ["sim", str(job), "--ini", str(ini), "--bar", "100,300", "--resolution", "0.1", "--tool", "1"]
+        print(f"turning: {count:,} lines on a 100 x 300 bar at 0.1 mm")
+        compare({"run --trace": ECNC + ["run", "--ini", str(ini), "--trace", str(tmp / "trace.csv"), str(job), "-q"],
+                 "sim --bar (nose)": ECNC + [*bar, "--tools", str(nose)],
+                 "sim --bar (holder)": ECNC + [*bar, "--tools", str(insert)]}, repeat, "run --trace")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--rows", type=int, default=200)
     parser.add_argument("--pure", action="store_true", help="also the simulation on the pure-Python core")
     parser.add_argument("--against", metavar="CHECKOUT", help="also the simulation of this checkout of the package")
+    parser.add_argument("--only", choices=("raster", "turning"))
     args = parser.parse_args()
+    if args.only != "raster":
+        turning(args.repeat)
+    if args.only == "turning":
+        return
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
         job, tools = tmp / "finish.nc", tmp / "tools.toml"

@@ -115,8 +115,8 @@ def sim(job: str, box: tuple[float, ...] | None, stock_stl: str | None, bar: tup
     """Run JOB and cut the stock with it as a height field (3-axis milling): report rapids into the
     stock, shank and holder hits, cuts with the spindle stopped (exit 1), plunges and cuts below the
     stock (hints), with the removed and remaining volumes.  With --bar, on a lathe ini: turn a bar
-    (each cut a revolution) and report rapids into it, cuts with the spindle stopped and the chuck;
-    with --stock cylinder:, cut a bar on the rotary A axis."""
+    (each cut a revolution) and report rapids into it, cuts with the spindle stopped, the holder
+    and the chuck; with --stock cylinder:, cut a bar on the rotary A axis."""
     from edingcnc_lang.outputs import check_outputs, ensure_parent
     from edingcnc_lang.picture_formats import picture_target
     from edingcnc_lang.sim import report

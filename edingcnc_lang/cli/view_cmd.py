@@ -13,8 +13,8 @@ from edingcnc_lang.errors import EXIT_OK, JobAborted
 from edingcnc_lang.plot.names import VIEW_NAMES
 from edingcnc_lang.cli.base import Command
 from edingcnc_lang.cli.options import MachineOptions, job_argument, machine_options, override_options
-from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, POSITIVE_INT
-from edingcnc_lang.cli.sim_cmd import StockBox
+from edingcnc_lang.cli.value_types import EXISTING_FILE, OUTPUT_FILE, POSITIVE_INT, PlainFloat
+from edingcnc_lang.cli.sim_cmd import BarSize, Cylinder, StockBox
 from edingcnc_lang.cli.streams import job_to_read_twice
 
 if TYPE_CHECKING:
@@ -22,6 +22,7 @@ if TYPE_CHECKING:
 
 
 STOCK_RESOLUTION = 0.5  # mm: the page shows a coarse map anyway (sim/frames.py)
+BAR_RESOLUTION = 0.1    # mm: a bar's slices (the page shows at most 400 of them: sim/bar_frames.py)
 
 
 class LineRange(click.ParamType):
@@ -54,8 +55,12 @@ class LineRange(click.ParamType):
               help="Only the moves made by job lines A to B (with the subs they call), in full.")
 @click.option("--stock", "stock_box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
               help="Show this stock (work coordinates) being cut as the player runs (see ecnc sim).")
+@click.option("--bar", metavar="DIAMETER,LENGTH[,Z0]", type=BarSize(),
+              help="Lathe: show this bar being turned as the player runs, as a half section (see ecnc sim --bar).")
+@click.option("--chuck", metavar="LENGTH", type=PlainFloat(0, min_open=True, max=1e9),
+              help="With --bar: the length the chuck grips at the bar's far end.")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
-              help="With --stock: tool shapes as TOML, as ecnc sim reads them.")
+              help="With --stock or --bar: tool shapes as TOML, as ecnc sim reads them.")
 @click.option("--diff", "old", metavar="OLD", type=EXISTING_FILE,
               help="Also run OLD: the page shows OLD and JOB (NEW), a button (D) switches (ecnc view --diff OLD NEW).")
 @click.option("--embed-sources", is_flag=True,
@@ -64,16 +69,13 @@ class LineRange(click.ParamType):
 def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
          view: str, max_moves: int | None, lines: tuple[int, int] | None,
          stock_box: tuple[float, ...] | None = None, tools_file: str | None = None, old: str | None = None,
-         embed_sources: bool = False) -> int:
+         embed_sources: bool = False, bar: tuple[float, ...] | None = None, chuck: float | None = None) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
     from edingcnc_lang.plot.actions import view_job
 
-    if stock_box is not None and lines is not None:
-        raise click.UsageError("--stock shows the whole job being cut: it does not go with --lines")
-    if tools_file and stock_box is None:
-        raise click.UsageError("--tools gives the tools their shapes for --stock: give the stock too")
+    _check_stock(stock_box, bar, chuck, lines, tools_file)
     tools = None
     if tools_file:  # a bad file is told before the job runs
         from edingcnc_lang.sim.tools import load_tools
@@ -98,7 +100,37 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
             stock = Stock.box(stock_box[:3], stock_box[3:], STOCK_RESOLUTION)  # type: ignore[arg-type]
             quiet = machine.run_options(show_messages=False, write_job_files=False)
             add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, machine.spindle_tool, name))
+        if bar is not None:
+            from edingcnc_lang.sim.bar_frames import bar_frames
+            from edingcnc_lang.sim.frames import add_to_page
+            from edingcnc_lang.sim.round_stock import RoundStock
+
+            diameter, length, face = bar
+            stock_bar = RoundStock.bar(diameter, length, face - length, BAR_RESOLUTION)
+            quiet = machine.run_options(show_messages=False, write_job_files=False)
+            chuck_face = face - length + chuck if chuck is not None else None
+            add_to_page(written.out, bar_frames(path, stock_bar, quiet, len(written.path), tools, machine.spindle_tool,
+                                                name, chuck_face), "bar-data")
     return report(written)
+
+
+def _check_stock(stock_box: tuple[float, ...] | None, bar: tuple[float, ...] | None, chuck: float | None,
+                 lines: tuple[int, int] | None, tools_file: str | None) -> None:
+    """The usage errors of the stock options, told before anything runs."""
+    if isinstance(stock_box, Cylinder):
+        raise click.UsageError("--stock cylinder: (a bar on the rotary axis) is drawn by ecnc sim -o; "
+                               "ecnc view plays the box stock (--stock) and the lathe's bar (--bar)")
+    if stock_box is not None and bar is not None:
+        raise click.UsageError("give the stock as one of --stock (a box) and --bar (a lathe's bar)")
+    if chuck is not None and bar is None:
+        raise click.UsageError("--chuck LENGTH goes with --bar DIAMETER,LENGTH[,Z0] (a lathe's bar)")
+    if bar is not None and chuck is not None and chuck >= bar[1]:
+        raise click.UsageError(f"--chuck {chuck:g} grips the whole bar ({bar[1]:g} mm long)")
+    if (stock_box is not None or bar is not None) and lines is not None:
+        raise click.UsageError(f"{'--stock' if bar is None else '--bar'} shows the whole job being cut: "
+                               "it does not go with --lines")
+    if tools_file and stock_box is None and bar is None:
+        raise click.UsageError("--tools gives the tools their shapes for --stock or --bar: give the stock too")
 
 
 @contextlib.contextmanager

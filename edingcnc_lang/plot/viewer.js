@@ -128,6 +128,10 @@
     if (D.part) {  // the part's box is drawn: in the iso view its far corners can lie outside the path
       for (let k = 0; k < 8; k++) extend(...project(...[0, 1, 2].map((a) => D.part[(k >> a) & 1][a])));
     }
+    if (B) {  // the bar being turned (ecnc view --bar), from its far end (or the chuck's) to its face
+      const far = B.chuck !== null ? B.z0 - 0.05 * B.n * B.slice : B.z0;
+      for (const z of [far, B.z0 + B.n * B.slice]) for (const x of [0, 1.15 * B.radius]) extend(...project(x, 0, z));
+    }
     if (!isFinite(lowU)) { lowU = lowV = -10; highU = highV = 10; }
     const [w, h] = size();
     cam.u = (lowU + highU) / 2;
@@ -327,6 +331,55 @@
     }
   }
 
+  // ---------------------------------------------------------------- the bar being turned (ecnc view --bar)
+  // Its profile every so many moves (edingcnc_lang/sim/bar_frames.py), the one for the move shown
+  // drawn as the half section in the work's ZX plane (X a radius, as the path is), over the bar as it
+  // was, the chuck beyond its face and the findings of the moves made so far.
+  const barBlock = document.getElementById("bar-data");
+  const B = barBlock ? JSON.parse(barBlock.textContent) : null;
+  const barRadii = B ? decode(B.radii, Uint16Array) : null;
+  const BAR_MARKS = { rapid_into_stock: "#d62728", spindle_off: "#9467bd", holder: "#8c564b", chuck: "#2ca02c" };
+  function drawBar(w, h) {
+    if (!B) return;
+    const reached = current >= 0 ? index[current] + 1 : 0;
+    let frame = 0;
+    while (frame + 1 < B.moves.length && B.moves[frame + 1] <= reached) frame++;
+    const n = B.n, base = frame * 2 * n, end = B.z0 + n * B.slice;
+    const outline = (corners) => corners.forEach(([x, z], k) => {
+      const [u, v] = toScreen(...project(x, 0, z), w, h);
+      if (k) ctx.lineTo(u, v); else ctx.moveTo(u, v);
+    });
+    ctx.beginPath();
+    outline([[0, B.z0], [B.radius, B.z0], [B.radius, end], [0, end]]);
+    ctx.fillStyle = "#e4e4e4";
+    ctx.fill();
+    if (B.chuck !== null) {
+      ctx.beginPath();
+      outline([[0, B.z0 - 0.05 * (end - B.z0)], [1.15 * B.radius, B.z0 - 0.05 * (end - B.z0)],
+               [1.15 * B.radius, B.chuck], [0, B.chuck]]);
+      ctx.fillStyle = "rgba(127, 127, 127, 0.35)";
+      ctx.fill();
+    }
+    ctx.beginPath();
+    for (let i = 0; i < n; i++) {
+      const outer = barRadii[base + i] / 65535 * B.radius, inner = barRadii[base + n + i] / 65535 * B.radius;
+      if (outer - inner < 1e-6) continue;
+      const z0 = B.z0 + i * B.slice, z1 = z0 + B.slice;
+      outline([[inner, z0], [outer, z0], [outer, z1], [inner, z1]]);
+    }
+    ctx.fillStyle = "#4c72b0";
+    ctx.fill();
+    for (const f of B.findings) {
+      if (f.move >= reached) continue;
+      const [u, v] = toScreen(...project(f.x, 0, f.z), w, h);
+      ctx.beginPath();
+      ctx.arc(u, v, 5, 0, 2 * Math.PI);
+      ctx.fillStyle = BAR_MARKS[f.kind] || "#d62728";
+      ctx.fill();
+      ctx.fillText(f.line + " " + f.kind, u + 7, v - 7);
+    }
+  }
+
   let drawn = 0;
   function draw() {
     projectAll();
@@ -337,6 +390,7 @@
     box(D.limits, "#b22222", [6, 3, 1, 3], w, h);
     box(D.part, "#777", [1, 2], w, h);
     drawStock(w, h);
+    drawBar(w, h);
     if (otherPoints) {  // the other job of the comparison, thin and light, under this one
       ctx.beginPath();
       for (let i = 0; i < otherFirst.length; i++) {

@@ -6,12 +6,16 @@ cut stock, the findings (``findings.py``) and the volumes.  Pictures (``picture.
 (``stl.py``), the comparison with the intended part (``compare.py``) and the report (``report.py``)
 work on that result.  Round stock (``round_stock.py``): a lathe's bar turned by ``lathe.simulate_bar``
 (the nose's sweep in ``turning.py``) and a bar on a mill's A axis cut by ``rotary.simulate_cylinder``;
-their outputs in ``bar_output.py``.
+their outputs in ``bar_output.py``.  ``simulate_bar(job, RoundStock.bar(...), options, tools)``
+turns a bar (the insert and holder beyond the nose in ``insert.py``).
 """
 from __future__ import annotations
 
 from edingcnc_lang.sim.job import SimResult, simulate
+from edingcnc_lang.sim.lathe import BarResult, simulate_bar
+from edingcnc_lang.sim.round_stock import RoundStock
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.tools import Tool, load_tools
 
 __all__ = ["SimResult", "Stock", "Tool", "load_tools", "simulate"]
+__all__ += ["BarResult", "RoundStock", "simulate_bar"]  # round stock: a lathe's bar

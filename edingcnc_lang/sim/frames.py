@@ -60,11 +60,11 @@ def stock_frames(job: Path, stock: Stock, options: RunOptions, moves: int, tools
             "heights": base64.b64encode(np.round(stacked * 65535).astype("<u2").tobytes()).decode()}
 
 
-def add_to_page(page: Path, data: dict[str, Any]) -> None:
-    """Put the frames into a page ``ecnc view`` wrote, as a JSON block before the job's own."""
+def add_to_page(page: Path, data: dict[str, Any], block: str = "stock-data") -> None:
+    """Put the frames into a page ``ecnc view`` wrote, as a JSON block (``block``: its id) before the job's own."""
     text = page.read_text(encoding="utf-8")
     if MARKER not in text:
         raise EcncError(f"{page} is not a page of ecnc view (no job data in it)")
-    block = json.dumps(data, separators=(",", ":"), allow_nan=False)
-    text = text.replace(MARKER, f'<script type="application/json" id="stock-data">{block}</script>\n{MARKER}', 1)
+    body = json.dumps(data, separators=(",", ":"), allow_nan=False)
+    text = text.replace(MARKER, f'<script type="application/json" id="{block}">{body}</script>\n{MARKER}', 1)
     write_text(page, text)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import time
 from array import array
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -25,14 +26,15 @@ from edingcnc_lang.pipeline.comp_geometry import tip_shift
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 from edingcnc_lang.sim.queue import MoveQueue
 from edingcnc_lang.sim.findings import CutFinding, merged
+from edingcnc_lang.sim.insert import INSIDE, holder_ranges, holder_reach, holder_spans, insert_shape, insert_spans
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
 from edingcnc_lang.sim.stock import StockError
 from edingcnc_lang.sim.tools import Tool
-from edingcnc_lang.sim.turning import CHUNK, ranges, reaching, spans
+from edingcnc_lang.sim.turning import CHUNK, ranges_over, reaching, spans
 
-KIND_OF_CODE = {1: "rapid_into_stock", 2: "spindle_off"}
-CUT, RAPID, SPINDLE_OFF = 0, 1, 2
+KIND_OF_CODE = {1: "rapid_into_stock", 2: "spindle_off", 3: "holder"}
+CUT, RAPID, SPINDLE_OFF, HOLDER = 0, 1, 2, 3
 
 
 @dataclass
@@ -82,6 +84,8 @@ class BarSimulator:
         self.found: list[CutFinding] = []
         self.chord = stock.resolution / 4.0
         self.scale = 2.0 if self.config.diameter_mode else 1.0  # a radius as the job writes X
+        self.every = 0  # with ``on_snapshot``: cut and call it before every ``every``-th move
+        self.on_snapshot: Callable[[int, RoundStock], None] | None = None
 
     def on_event(self, event: Event) -> None:
         if isinstance(event, SpindleEvent):
@@ -92,6 +96,9 @@ class BarSimulator:
 
     def on_move(self, move: Move, _joints: Pose) -> None:
         index = len(self.lines)
+        if self.on_snapshot is not None and index % self.every == 0:
+            self.flush()
+            self.on_snapshot(index, self.stock)
         self.lines.append(move.line)
         self.files.append(self.paths.setdefault(move.path, len(self.paths)))
         if move.kind not in CUTTING_KINDS:
@@ -117,34 +124,59 @@ class BarSimulator:
         dx, dz = tip_shift(tool.orientation or 0, nose)
         centre = ends - (dz, dx, dz, dx)  # the nose's centre: the controlled point less the tip's shift
         a, b = centre[:, :2], centre[:, 2:]
+        shape = insert_shape(tool)
+        reach = shape.z_extent if shape is not None else (-nose, nose)
+        below = -shape.r_low if shape is not None else nose  # how far the insert reaches below its path
         if self.chuck is not None:
-            self._chuck(a, b, nose, moves, tool.number)
-        first, last = ranges(self.stock, a, b, nose)
-        ends_at = np.cumsum(np.maximum(last - first + 1, 0))
+            self._chuck(a, b, reach[0], moves, tool.number)
+        holder = shape.holder if shape is not None else None
+        # an inside insert's edge short of the bore's wall in a slice cuts nothing there, rather than the wall
+        open_top = shape is None or tool.orientation not in INSIDE
+        z_low, z_high = np.minimum(a[:, 0], b[:, 0]), np.maximum(a[:, 0], b[:, 0])
+        first, last = ranges_over(self.stock, z_low + reach[0], z_high + reach[1])
+        counts = np.maximum(last - first + 1, 0)
+        if holder is not None:
+            h_first, h_last = holder_ranges(self.stock, a, b, holder)
+            counts = counts + np.maximum(h_last - h_first + 1, 0)
+        ends_at = np.cumsum(counts)
         start = 0
         while start < len(moves):  # chunks of bounded work, in the tool's order
             stop = max(int(np.searchsorted(ends_at, ends_at[start] + CHUNK, side="right")), start + 1)
             part = np.arange(start, stop)
-            part = part[reaching(self.stock, a[part], b[part], nose, first[part], last[part])]
-            if len(part):
-                seg, cell, low, high = spans(self.stock, a[part], b[part], nose, first[part], last[part])
-                depth = self.stock.cut(cell, low, high)
-                self._hits(part[seg], cell, depth, low, moves, codes, tool.number)
+            cut = part[reaching(self.stock, a[part], b[part], below, first[part], last[part])]
+            if shape is None:
+                seg, cell, low, high = spans(self.stock, a[cut], b[cut], nose, first[cut], last[cut])
+            else:
+                seg, cell, low, high = insert_spans(self.stock, a[cut], b[cut], shape, first[cut], last[cut])
+            seg, code = cut[seg], codes[cut[seg]]
+            if shape is not None and holder is not None:  # each stroke's holder before its insert: the holder meets what is there
+                near = part[reaching(self.stock, a[part], b[part], -holder_reach(holder)[2], h_first[part],
+                                     h_last[part])]
+                h_seg, h_cell, h_lo, h_hi = holder_spans(self.stock, a[near], b[near], shape, open_top)
+                seg, cell, low, high = (np.concatenate(pair) for pair in
+                                        ((seg, near[h_seg]), (cell, h_cell), (low, h_lo), (high, h_hi)))
+                code = np.concatenate((code, np.full(len(h_seg), HOLDER, dtype=code.dtype)))
+                order = np.lexsort((code != HOLDER, seg))
+                seg, cell, low, high, code = seg[order], cell[order], low[order], high[order], code[order]
+            if len(seg):
+                depth = self.stock.cut(cell, low, high, open_top=open_top)
+                self._hits(moves[seg], code, cell, depth, low, tool.number)
             start = stop
 
-    def _hits(self, seg: np.ndarray, cell: np.ndarray, depth: np.ndarray, low: np.ndarray, moves: np.ndarray,
-              codes: np.ndarray, tool: int) -> None:
-        bad = np.flatnonzero((depth > EPS) & (codes[seg] != CUT))
+    def _hits(self, moves: np.ndarray, codes: np.ndarray, cell: np.ndarray, depth: np.ndarray, low: np.ndarray,
+              tool: int) -> None:
+        """Findings of the cut entries (each with its move and code) that removed material they should not have."""
+        bad = np.flatnonzero((depth > EPS) & (codes != CUT))
         centres = self.stock.centres()
         for k in bad.tolist():
-            s = int(seg[k])
             where = (max(float(low[k]), 0.0) * self.scale, 0.0, float(centres[cell[k]]))
-            self._add(KIND_OF_CODE[int(codes[s])], int(moves[s]), where, float(depth[k]), tool)
+            self._add(KIND_OF_CODE[int(codes[k])], int(moves[k]), where, float(depth[k]), tool)
 
-    def _chuck(self, a: np.ndarray, b: np.ndarray, nose: float, moves: np.ndarray, tool: int) -> None:
-        """The tool reaching past the chuck's face (towards the bar's far end) meets the chuck."""
+    def _chuck(self, a: np.ndarray, b: np.ndarray, reach: float, moves: np.ndarray, tool: int) -> None:
+        """The insert (``reach``: its lowest Z offset from the path) past the chuck's face (towards
+        the bar's far end) meets the chuck."""
         assert self.chuck is not None
-        deepest = np.minimum(a[:, 0], b[:, 0]) - nose
+        deepest = np.minimum(a[:, 0], b[:, 0]) + reach
         for s in np.flatnonzero(deepest < self.chuck - EPS).tolist():
             point = a[s] if a[s, 0] <= b[s, 0] else b[s]
             self._add("chuck", int(moves[s]), (float(point[1]) * self.scale, 0.0, float(deepest[s])),
@@ -155,16 +187,23 @@ class BarSimulator:
         self.found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], where, depth, tool, move))
 
     def notes(self) -> list[str]:
-        """What the report should say about the inserts that cut: those simulated as a point."""
-        return [f"T{n} has no nose radius (no --tools entry, no ini diameter): simulated as a sharp point"
-                for n, tool in sorted(self.used.items()) if not tool.nose_radius]
+        """What the report should say about the inserts that cut: those simulated as a point, and
+        those whose edges have no direction (orientation 0 or 9: the nose alone)."""
+        notes = [f"T{n} has no nose radius (no --tools entry, no ini diameter): simulated as a sharp point"
+                 for n, tool in sorted(self.used.items()) if not tool.nose_radius]
+        return notes + [f"T{n}'s insert_angle needs an orientation from 1 to 8 to point its edges: "
+                        "simulated as its nose" for n, tool in sorted(self.used.items())
+                        if tool.insert_angle is not None and not 1 <= (tool.orientation or 0) <= 8]
 
 
 def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None = None,
                  tools: dict[int, Tool] | None = None, first_tool: int | None = None,
-                 name: str | None = None, chuck: float | None = None) -> BarResult:
+                 name: str | None = None, chuck: float | None = None, every: int = 0,
+                 on_snapshot: Callable[[int, RoundStock], None] | None = None) -> BarResult:
     """Run the lathe ``job`` and turn the bar with it; ``chuck`` is the axial position of the chuck's
-    face (the bar gripped beyond it).  A runtime error is kept in ``BarResult.error``."""
+    face (the bar gripped beyond it).  A runtime error is kept in ``BarResult.error``.
+    ``on_snapshot(move, stock)`` is called with the bar as cut before move 0, ``every``, 2 ``every``,
+    ... (the viewer's frames)."""
     started = time.perf_counter()
 
     def make(run: Run) -> BarSimulator:
@@ -172,7 +211,10 @@ def simulate_bar(job: str | Path, stock: RoundStock, options: RunOptions | None 
             raise StockError("a bar turns on a lathe: the ini is a mill's (machineType = 1 or 2 is a lathe); "
                              "a mill's rotary axis takes --stock cylinder:DIAMETER,LENGTH[,X0]")
         first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
-        return BarSimulator(stock, run, tools, first, chuck)
+        made = BarSimulator(stock, run, tools, first, chuck)
+        if on_snapshot is not None:
+            made.every, made.on_snapshot = max(1, every), on_snapshot
+        return made
 
     sim, result, error = drive(job, options, name, make)
     sim.flush()

@@ -111,14 +111,19 @@ class RoundStock:
         inner = self.inner.reshape(-1)
         order = np.argsort(cells, kind="stable")  # grouped by slice, in the tool's order within each
         cell, lo, hi = cells[order], low[order], high[order]
-        start_top, bore = outer[cell].astype(np.float64), inner[cell].astype(np.float64)
-        at_bore = lo <= bore + EPS
-        outside = ~at_bore if open_top else ~at_bore & (hi >= start_top - EPS)
-        before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf)))
-        surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
-        before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
-        surface &= lo < before - EPS
-        boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
+        start_top, start_bore = outer[cell].astype(np.float64), inner[cell].astype(np.float64)
+        bore = start_bore
+        for _ in range(2):  # the second time with the bore as the earlier entries of the cell left it
+            at_bore = lo <= bore + EPS
+            outside = ~at_bore if open_top else ~at_bore & (hi >= start_top - EPS)
+            before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf)))
+            surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
+            before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
+            surface &= lo < before - EPS
+            boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
+            if not boring.any() or bore is not start_bore:
+                break
+            bore = np.maximum(start_bore, -_running_min(cell, np.where(boring, -hi, np.inf)))
         depth = np.zeros(len(cell))
         depth[surface] = np.maximum(before[surface] - np.maximum(lo[surface], bore[surface]), 0.0)
         depth[boring] = np.minimum(hi[boring], before[boring]) - bore[boring]

@@ -68,9 +68,10 @@ class Hits:
         return cls(np.zeros(0, np.int64), np.zeros(0, np.int8), np.zeros(0), np.zeros((0, 3)))
 
 
-def split_long(a: np.ndarray, b: np.ndarray, limit: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Cut segments longer than ``limit`` in XY into equal pieces, so that no footprint's bounding box
-    grows with the square of a long diagonal move; returns starts, ends and the segment each came from."""
+def split_long(a: np.ndarray, b: np.ndarray, limit: float | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cut segments longer than ``limit`` (one, or one per segment) in XY into equal pieces, so that no
+    footprint's bounding box grows with the square of a long diagonal move; returns starts, ends and
+    the segment each came from."""
     length = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1])
     pieces = np.maximum(np.ceil(length / limit), 1).astype(np.int64)
     owner = np.repeat(np.arange(len(a)), pieces)

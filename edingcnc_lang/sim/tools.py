@@ -20,7 +20,9 @@ from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH, MIN_SIM_SIZE, MIN_
 
 SHAPES = ("flat", "ball", "bull", "vee", "insert")  # insert: a lathe tool (``ecnc sim --bar``)
 FIELDS = ("shape", "diameter", "corner_radius", "angle", "flute_length", "shank_diameter",
-          "holder_diameter", "holder_length", "nose_radius", "orientation")
+          "holder_diameter", "holder_length", "nose_radius", "orientation", "insert_angle", "insert_size",
+          "holder_width")
+INSERT_ONLY = ("nose_radius", "orientation", "insert_angle", "insert_size", "holder_width")  # a lathe tool's
 DEFAULT_DIAMETER = 3.0  # mm: a tool the ini does not size still cuts something visible
 
 
@@ -47,6 +49,9 @@ class Tool:
     holder_length: float | None = None
     nose_radius: float | None = None  # an insert's nose (its controlled point: ``orientation``, 1..9)
     orientation: int | None = None
+    insert_angle: float | None = None  # the insert's included angle, degrees (80 a C insert): sim/insert.py
+    insert_size: float | None = None   # its cutting edges' length, mm (ISO's size: CNMG 12.. is 12)
+    holder_width: float | None = None  # the holder behind it, mm
     source: str = "ini"  # "ini", "default" or the tools file
 
     @property
@@ -130,24 +135,25 @@ def _tool(number: int, entry: Any, source: str, where: Location) -> Tool:
             raise ToolFileError(f"{name}: nose_radius must be 0 (a sharp point) or a positive number of mm, "
                                 f"not {entry['nose_radius']!r}", where)
         values["nose_radius"], values["diameter"] = nose, 2 * nose
-    for key in FIELDS[1:-2]:
+    for key in FIELDS[1:]:
         if key in entry and key not in values:
             value = toml_input.number(entry[key])  # None for a 400-digit integer too
-            if value is None or not (key == "angle" or MIN_SIM_SIZE <= value <= MAX_SIM_LENGTH
+            if value is None or not (key.endswith("angle") or MIN_SIM_SIZE <= value <= MAX_SIM_LENGTH
                                      or (value == 0 and key == "corner_radius")):  # the angle: below
                 raise ToolFileError(f"{name}: {key} must be a positive number of mm ({MIN_SIM_SIZE:g} to "
                                     f"{MAX_SIM_LENGTH:g}), not {entry[key]!r}", where)
             values[key] = value
-    if shape != "insert" and ("nose_radius" in entry or "orientation" in entry):
-        raise ToolFileError(f"{name}: nose_radius and orientation are for shape = \"insert\" (a lathe tool)", where)
+    if shape != "insert" and any(key in entry for key in INSERT_ONLY):
+        raise ToolFileError(f"{name}: {', '.join(INSERT_ONLY)} are for shape = \"insert\" (a lathe tool)", where)
     if "diameter" not in values:
         raise ToolFileError(f"{name}: diameter is missing", where)
     tool = Tool(number, shape=shape, source=source, **values)  # type: ignore[arg-type]
     if shape == "bull" and not 0.0 < tool.corner_radius <= tool.radius:
         raise ToolFileError(f"{name}: a bull nose needs 0 < corner_radius <= diameter/2", where)
-    if not MIN_VEE_ANGLE <= tool.angle < 180.0:
-        raise ToolFileError(f"{name}: angle must be from {MIN_VEE_ANGLE:g} to below 180 degrees (the included angle)",
-                            where)
+    for key in ("angle", "insert_angle"):
+        if not MIN_VEE_ANGLE <= (getattr(tool, key) or 90.0) < 180.0:
+            raise ToolFileError(f"{name}: {key} must be from {MIN_VEE_ANGLE:g} to below 180 degrees (the included "
+                                "angle)", where)
     if tool.holder_length is not None and tool.flute_length is not None and tool.holder_length < tool.flute_length:
         raise ToolFileError(f"{name}: holder_length (tip to holder) is shorter than flute_length", where)
     return tool

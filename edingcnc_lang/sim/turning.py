@@ -20,9 +20,12 @@ BLOCK = 64      # slices per block of the coarse maximum that rules out strokes 
 def ranges(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float) -> tuple[np.ndarray, np.ndarray]:
     """The first and last slice under each stroke (``last < first``: none); a stroke narrower than
     a slice, with no slice centre under it, gets the slice nearest to it."""
+    return ranges_over(stock, np.minimum(a[:, 0], b[:, 0]) - nose, np.maximum(a[:, 0], b[:, 0]) + nose)
+
+
+def ranges_over(stock: RoundStock, z_low: np.ndarray, z_high: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``ranges`` of strokes whose tool reaches from ``z_low`` to ``z_high`` along the axis."""
     count = stock.shape[0]
-    z_low = np.minimum(a[:, 0], b[:, 0]) - nose
-    z_high = np.maximum(a[:, 0], b[:, 0]) + nose
     first = np.clip(np.ceil((z_low - stock.start) / stock.resolution - 0.5).astype(np.int64), 0, count)
     last = np.clip(np.floor((z_high - stock.start) / stock.resolution - 0.5).astype(np.int64), -1, count - 1)
     nearest = np.clip(np.round((0.5 * (z_low + z_high) - stock.start) / stock.resolution - 0.5).astype(np.int64),
@@ -36,7 +39,8 @@ def ranges(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float) -> tupl
 def reaching(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float, first: np.ndarray,
              last: np.ndarray) -> np.ndarray:
     """Which strokes may touch the material: those over some slice whose nose goes below the highest
-    outer radius there (a block maximum: a stroke wholly above the surface can change nothing)."""
+    outer radius there (a block maximum: a stroke wholly above the surface can change nothing);
+    ``nose`` is how far the tool reaches below its path."""
     outer = stock.outer.max(axis=1)
     blocks = -(-len(outer) // BLOCK)
     padded = np.full(blocks * BLOCK + BLOCK, -np.inf, dtype=np.float32)
@@ -55,15 +59,22 @@ def spans(stock: RoundStock, a: np.ndarray, b: np.ndarray, nose: float, first: n
     """For segments of the nose centre from ``a`` to ``b`` ((n, 2): Z, radius) with nose radius
     ``nose`` over slices ``first..last``: the (segment, slice, low radius, high radius) of every
     slice the stadium covers."""
-    counts = np.maximum(last - first + 1, 0)
-    seg = np.repeat(np.arange(len(a)), counts)
-    cell = np.arange(len(seg)) - np.repeat(np.cumsum(counts) - counts, counts) + np.repeat(first, counts)
-    z_low = np.minimum(a[:, 0], b[:, 0]) - nose
-    z_high = np.maximum(a[:, 0], b[:, 0]) + nose
-    z = np.clip(stock.centres()[cell], z_low[seg], z_high[seg])
+    seg, cell, z = slices(stock, a, b, (-nose, nose), first, last)
     low, high = envelope(a[seg], b[seg], nose, z)
     keep = np.isfinite(low)
     return seg[keep], cell[keep], low[keep], high[keep]
+
+
+def slices(stock: RoundStock, a: np.ndarray, b: np.ndarray, reach: tuple[float, float], first: np.ndarray,
+           last: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Every (segment, slice) pair of ``first..last``, and the Z to cut it at: the slice's centre,
+    kept within the tool's reach (offsets ``reach`` from the path) so a narrow stroke cuts its slice."""
+    counts = np.maximum(last - first + 1, 0)
+    seg = np.repeat(np.arange(len(a)), counts)
+    cell = np.arange(len(seg)) - np.repeat(np.cumsum(counts) - counts, counts) + np.repeat(first, counts)
+    z_low = np.minimum(a[:, 0], b[:, 0]) + reach[0]
+    z_high = np.maximum(a[:, 0], b[:, 0]) + reach[1]
+    return seg, cell, np.clip(stock.centres()[cell], z_low[seg], z_high[seg])
 
 
 def envelope(a: np.ndarray, b: np.ndarray, nose: float, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

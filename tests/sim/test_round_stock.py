@@ -135,3 +135,12 @@ def test_an_arc_turns_a_dome(tmp_path: Path) -> None:
     removed = math.pi * 100 * 10 - 2 / 3 * math.pi * 1000
     sagitta = 2 * math.pi * 100 * 0.05 / 4 * 2 / 3
     assert removed <= result.stock.removed_volume <= removed + 1.5 * sagitta
+
+
+def test_a_drill_pecking_back_into_its_hole_finds_air(tmp_path: Path) -> None:
+    """Within one batch a later cut sees the bore the earlier ones opened: the rapids of a peck
+    cycle in and out of the hole are no rapid into the stock."""
+    result = turn(tmp_path, "G0 X0 Z5\nG1 Z-10 F50\nG0 Z5\nG0 Z-9\nG1 Z-15\nG0 Z5", nose=4.0)
+    assert result.findings == []
+    hemisphere = 2 / 3 * math.pi * 4 ** 3
+    assert result.stock.removed_volume == pytest.approx(math.pi * 16 * 15 + hemisphere, rel=1e-3)
