@@ -62,12 +62,40 @@ static int hole_words(const char *s, Py_ssize_t len, char a, char b, double valu
     }
 }
 
+/* A pose of six float objects shared with other poses (a hole's moves share its position, the holes their
+ * levels): new references to them, as pose_tuple's, not tracked by the collector. */
+static PyObject *shared_pose(PyObject *const values[6])
+{
+    PyObject *tuple = PyTuple_New(6);
+    Py_ssize_t k;
+    if (tuple == NULL)
+        return NULL;
+    for (k = 0; k < 6; k++) {
+        Py_INCREF(values[k]);
+        PyTuple_SetItem(tuple, k, values[k]);
+    }
+    PyObject_GC_UnTrack(tuple);
+    return tuple;
+}
+
+/* Replace *slot by a new float object of ``value``: -1 if it cannot be made. */
+static int set_float(PyObject **slot, double value)
+{
+    PyObject *made = PyFloat_FromDouble(value);
+    if (made == NULL)
+        return -1;
+    Py_XDECREF(*slot);
+    *slot = made;
+    return 0;
+}
+
 static PyObject *hole_moves(PyObject *self, PyObject *args)
 {
-    PyObject *lines, *pos_obj, *offset_obj, *levels_obj, *lines_of = NULL, *ends = NULL;
+    PyObject *lines, *pos_obj, *offset_obj, *levels_obj, *lines_of = NULL, *ends = NULL, **level_objects = NULL;
+    PyObject *pose[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
     Py_ssize_t first, stop, index, count, k;
     int a1, a2, normal, incremental, steady = 1, holes = 0;
-    double scale, pos[6], offset[6], rest[6], *levels = NULL;
+    double scale, pos[6], offset[6], rest[6];
     char letter1, letter2;
     (void)self;
     if (!PyArg_ParseTuple(args, "Onn(iii)OOdpO", &lines, &first, &stop, &a1, &a2, &normal, &pos_obj, &offset_obj,
@@ -81,15 +109,16 @@ static PyObject *hole_moves(PyObject *self, PyObject *args)
     }
     if ((count = PySequence_Size(levels_obj)) < 0)
         return NULL;
-    if ((levels = PyMem_Malloc(sizeof(double) * (size_t)(count ? count : 1))) == NULL)
+    if ((level_objects = PyMem_Calloc((size_t)(count ? count : 1), sizeof(PyObject *))) == NULL)
         return PyErr_NoMemory();
-    for (k = 0; k < count; k++) {
+    for (k = 0; k < count; k++) {  /* the levels as float objects, shared by every hole */
         PyObject *item = PySequence_GetItem(levels_obj, k);
+        double level;
         if (item == NULL)
             goto fail;
-        levels[k] = PyFloat_AsDouble(item);
+        level = PyFloat_AsDouble(item);
         Py_DECREF(item);
-        if (levels[k] == -1.0 && PyErr_Occurred())
+        if ((level == -1.0 && PyErr_Occurred()) || (level_objects[k] = PyFloat_FromDouble(level)) == NULL)
             goto fail;
     }
     letter1 = "XYZ"[a1];
@@ -107,7 +136,7 @@ static PyObject *hole_moves(PyObject *self, PyObject *args)
         PyObject *pair = PySequence_GetItem(lines, index), *lineno = NULL, *text = NULL, *keep;
         const char *s;
         Py_ssize_t len;
-        double value[2], w1, w2, pose[6];
+        double value[2], w1, w2;
         int have[2], hole;
         if (pair == NULL)
             goto fail;
@@ -138,22 +167,40 @@ static PyObject *hole_moves(PyObject *self, PyObject *args)
         if (holes && !steady)
             for (k = 3; k < 6; k++)
                 rest[k] = (rest[k] - offset[k]) + offset[k];
+        if (set_float(&pose[a1], pos[a1]) < 0 || set_float(&pose[a2], pos[a2]) < 0) {
+            Py_DECREF(lineno);
+            goto fail;
+        }
+        for (k = 3; k < 6; k++)
+            if ((!holes || !steady) && set_float(&pose[k], rest[k]) < 0) {
+                Py_DECREF(lineno);
+                goto fail;
+            }
         holes++;
-        memcpy(pose, pos, sizeof pose);
-        memcpy(pose + 3, rest + 3, 3 * sizeof(double));
         for (k = 0; k < count; k++) {
-            pose[normal] = levels[k];
-            if (PyList_Append(lines_of, lineno) < 0 || append_new(ends, pose_tuple(pose)) < 0) {
+            Py_XDECREF(pose[normal]);
+            Py_INCREF(level_objects[k]);
+            pose[normal] = level_objects[k];
+            if (PyList_Append(lines_of, lineno) < 0 || append_new(ends, shared_pose(pose)) < 0) {
                 Py_DECREF(lineno);
                 goto fail;
             }
         }
         Py_DECREF(lineno);
     }
-    PyMem_Free(levels);
+    for (k = 0; k < 6; k++)
+        Py_XDECREF(pose[k]);
+    for (k = 0; k < count; k++)
+        Py_XDECREF(level_objects[k]);
+    PyMem_Free(level_objects);
     return Py_BuildValue("nNN", index, lines_of, ends);
 fail:
-    PyMem_Free(levels);
+    for (k = 0; k < 6; k++)
+        Py_XDECREF(pose[k]);
+    if (level_objects != NULL)
+        for (k = 0; k < count; k++)
+            Py_XDECREF(level_objects[k]);
+    PyMem_Free(level_objects);
     Py_XDECREF(lines_of);
     Py_XDECREF(ends);
     return NULL;
