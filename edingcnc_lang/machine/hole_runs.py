@@ -8,6 +8,8 @@ from __future__ import annotations
 import string
 from collections.abc import Sequence
 from functools import cache
+from itertools import islice, repeat, takewhile
+from operator import add, mul
 
 from edingcnc_lang.canon import AXES
 
@@ -48,40 +50,61 @@ def hole_moves(lines: Sequence[tuple[int, str]], first: int, stop: int, axes: tu
     shapes = _shapes(AXES[a1], AXES[a2])
     o1, o2 = offset[a1], offset[a2]
     p1, p2 = pos[a1], pos[a2]
-    # the other axes stay, each at the work position plus the offset, as the general path writes them
-    rest = tuple((pos[i] - offset[i]) + offset[i] for i in range(3, 6))
-    steady = all((r - o) + o == r for r, o in zip(rest, offset[3:]))  # the same for every hole after the first
-    holes: list[tuple[float, float, tuple[float, ...]]] = []
+    firsts: list[float] = []  # each hole's machine position on the plane's two axes
+    seconds: list[float] = []
     numbers: list[int] = []
     index = first
     stop = min(stop, len(lines))
     while index < stop:
         chunk = lines[index:min(index + BLOCK, stop)]
         joined = "\n".join([text for _, text in chunk])
+        letters = joined.translate(_LETTERS_OF).split("\n")
         values = joined.translate(_NUMBERS_OF).split()
-        at = 0
-        for (number, _text), letters in zip(chunk, joined.translate(_LETTERS_OF).split("\n")):
-            shape = shapes.get(letters)
+        at = taken = 0  # the numbers and lines of the chunk taken
+        while taken < len(chunk):
+            shape = shapes.get(letters[taken])
             if shape is None:
-                stop = index
+                stop = index + taken
                 break
             i1, i2, width = shape
-            w1 = p1 - o1 if i1 < 0 or incremental else 0.0
-            if i1 >= 0:
-                w1 = w1 + float(values[at + i1]) * scale if incremental else float(values[at + i1]) * scale
-            w2 = p2 - o2 if i2 < 0 or incremental else 0.0
-            if i2 >= 0:
-                w2 = w2 + float(values[at + i2]) * scale if incremental else float(values[at + i2]) * scale
-            p1, p2 = w1 + o1, w2 + o2
-            if holes and not steady:
-                rest = tuple((r - o) + o for r, o in zip(rest, offset[3:]))
-            holes.append((p1, p2, rest))
-            numbers.append(number)
-            at += width
-            index += 1
+            same = 1
+            if i1 >= 0 and i2 >= 0 and not incremental:  # lines of one shape ahead: read as columns
+                same = sum(1 for _ in takewhile(letters[taken].__eq__, islice(letters, taken, None)))
+            if same > 1:
+                words = values[at:at + same * width]
+                firsts += map(add, map(mul, map(float, words[i1::width]), repeat(scale)), repeat(o1))
+                seconds += map(add, map(mul, map(float, words[i2::width]), repeat(scale)), repeat(o2))
+                p1, p2 = firsts[-1], seconds[-1]
+            else:
+                w1 = p1 - o1 if i1 < 0 or incremental else 0.0
+                if i1 >= 0:
+                    w1 = w1 + float(values[at + i1]) * scale if incremental else float(values[at + i1]) * scale
+                w2 = p2 - o2 if i2 < 0 or incremental else 0.0
+                if i2 >= 0:
+                    w2 = w2 + float(values[at + i2]) * scale if incremental else float(values[at + i2]) * scale
+                p1, p2 = w1 + o1, w2 + o2
+                firsts.append(p1)
+                seconds.append(p2)
+            numbers += [number for number, _text in chunk[taken:taken + same]]
+            at += same * width
+            taken += same
+        index += taken
+    # the other axes stay, each at the work position plus the offset, as the general path writes them
+    a, b, c = rest = tuple((pos[i] - offset[i]) + offset[i] for i in range(3, 6))
     lines_of = [number for number in numbers for _ in levels]
-    if normal == 2:  # XY: (first, second) = (X, Y)
-        return index, lines_of, [(x, y, z, *r) for x, y, r in holes for z in levels]
-    if normal == 1:  # XZ: (first, second) = (Z, X)
-        return index, lines_of, [(x, y, z, *r) for z, x, r in holes for y in levels]
-    return index, lines_of, [(x, y, z, *r) for y, z, r in holes for x in levels]
+    if any((r - o) + o != r for r, o in zip(rest, offset[3:])):  # not the same for every hole: hole by hole
+        rests = []
+        for _ in numbers:
+            rests.append(rest)
+            rest = tuple((r - o) + o for r, o in zip(rest, offset[3:]))
+        holes = zip(firsts, seconds, rests)
+        if normal == 2:  # XY: (first, second) = (X, Y)
+            return index, lines_of, [(x, y, z, *r) for x, y, r in holes for z in levels]
+        if normal == 1:  # XZ: (first, second) = (Z, X)
+            return index, lines_of, [(x, y, z, *r) for z, x, r in holes for y in levels]
+        return index, lines_of, [(x, y, z, *r) for y, z, r in holes for x in levels]
+    if normal == 2:
+        return index, lines_of, [(x, y, z, a, b, c) for x, y in zip(firsts, seconds) for z in levels]
+    if normal == 1:
+        return index, lines_of, [(x, y, z, a, b, c) for z, x in zip(firsts, seconds) for y in levels]
+    return index, lines_of, [(x, y, z, a, b, c) for y, z in zip(firsts, seconds) for x in levels]
