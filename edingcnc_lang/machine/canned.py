@@ -202,10 +202,15 @@ class CannedCycles(MachineState):
         if not self._a_hole(block):
             return first
         index = first
+        steady = True  # whether the cycle's state is one the bulk form models (it stays so within the run)
         with self.moves_held():
             while True:
                 self.execute(block)
-                index = self._steady_holes(path, lines, index + 1)
+                index += 1
+                if steady:
+                    taken = self._steady_holes(path, lines, index)
+                    steady = taken is not None
+                    index = index if taken is None else taken
                 if index == len(lines):
                     break
                 block = plain_block(lines[index][1], path, lines[index][0])
@@ -221,27 +226,30 @@ class CannedCycles(MachineState):
         first, second, _ = PLANES[PLANE_OF[self.modal["plane"]]]
         return all(letter in (AXES[first], AXES[second]) for letter, _value, _col in block.words)
 
-    def _steady_holes(self, path: str, lines: Sequence[tuple[int, str]], first: int) -> int:
-        """The holes of lines[first:] in bulk, as long as each line only names the next hole, when every hole
-        drills the same straight moves at the same levels (G73, G81, G83, G85; under G99 the R level reads back
-        as the level the next hole starts from; under G91 only G98, whose start level stays); else none.  The
-        moves join ``cycle.pending`` as the general path's would, the step budget counts each line and hole,
-        and a line the budget cannot pay for is left to the general path, which reports it."""
+    def _steady_holes(self, path: str, lines: Sequence[tuple[int, str]], first: int) -> int | None:
+        """The holes of lines[first:] in bulk, as long as each line only names the next hole; returns the first
+        line it left.  None, taking none, unless every hole drills the same straight moves at the same levels
+        (G73, G81, G83, G85; under G99 the R level reads back as the level the next hole starts from; under G91
+        only G98, whose start level stays).  The moves join ``cycle.pending`` as the general path's would, the
+        step budget counts each line and hole, and a line the budget cannot pay for is left to the general
+        path, which reports it."""
         motion = self.modal["motion"]
-        if first >= len(lines) or motion not in _cycles().STRAIGHT:
+        if first >= len(lines):
             return first
+        if motion not in _cycles().STRAIGHT:
+            return None
         axes = PLANES[PLANE_OF[self.modal["plane"]]]
         normal = axes[2]
         try:
             _work, old, r_level, bottom, feed, _repeats = self._levels(motion, {}, None, False)
             steps = self._steps(motion, old, r_level, bottom, None)
         except MachineError:
-            return first  # (cannot happen after a line that drilled: the general path would say it at its line)
+            return None  # (cannot happen after a line that drilled: the general path would say it at its line)
         if old < r_level:
-            return first
+            return None
         offset = self.offset()
         if self.modal["return_mode"] == G_99 and (r_level + offset[normal]) - offset[normal] != old:
-            return first  # the next hole would start from another level (G91 G99: each hole R deeper)
+            return None  # the next hole would start from another level (G91 G99: each hole R deeper)
         per_line = 2 + len(steps)  # the statement, the hole and its steps
         stop = len(lines)
         if self.max_steps is not None:
