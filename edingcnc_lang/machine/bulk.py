@@ -22,8 +22,7 @@ from typing import Any
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
-from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Pose
+from edingcnc_lang.canon import Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import plain_block, plain_words
 from edingcnc_lang.machine.canned import PendingMoves
