@@ -7,6 +7,7 @@
  * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
+ * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
  *
  * One translation unit in parts, a part per job (csrc/speedups_*.c), included below in order: their
  * helpers stay static, private to the extension.
@@ -34,6 +35,7 @@ static PyObject *rapid_kind;
 #include "csrc/speedups_plain.c"
 #include "csrc/speedups_trace.c"
 #include "csrc/speedups_arcs.c"
+#include "csrc/speedups_holes.c"
 
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
@@ -43,6 +45,7 @@ static PyMethodDef methods[] = {
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
     {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
     {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._arc_of_words for centre-word arcs, compiled."},
+    {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
     {NULL, NULL, 0, NULL},
 };
 

@@ -22,10 +22,10 @@ from typing import Any
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
-from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Pose
+from edingcnc_lang.canon import Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import plain_block, plain_words
+from edingcnc_lang.machine.canned import PendingMoves
 from edingcnc_lang.machine.geometry import TINY, ArcError, radius_tolerance
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.machine.state import (
@@ -51,23 +51,6 @@ _PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_mov
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
 # length (``path_length``, what GetJobDistance counts).
 ArcLine = tuple[int, float, Pose, Arc, float]
-class PendingMoves:
-    """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
-
-    __slots__ = ("start", "kinds", "lines", "ends", "feeds")
-
-    def __init__(self, start: Pose) -> None:
-        self.start = start
-        self.kinds: list[str] = []
-        self.lines: list[int] = []
-        self.ends: list[Pose] = []
-        self.feeds: list[float] = []
-
-    def append(self, kind: str, line: int, end: Pose, feed: float) -> None:
-        self.kinds.append(kind)
-        self.lines.append(line)
-        self.ends.append(end)
-        self.feeds.append(feed)
 
 
 class BulkPath(MachineState):
@@ -83,34 +66,11 @@ class BulkPath(MachineState):
             if done < len(lines):
                 lineno, text = lines[done]
                 block = plain_block(text, run.path, lineno)
-                if self._a_hole(block):
-                    done = self._holes_in_bulk(run.path, lines, done, block)
-                else:
+                taken = self.hole_run(run.path, lines, done, block)  # (canned.py: lines that only name a hole)
+                if taken == done:
                     self.execute(block)
-                    done += 1
-
-    def _a_hole(self, block: n.PlainBlock) -> bool:
-        """Whether a plain line only drills the next hole of the canned cycle in force (its words are the two
-        axes of the cycle's plane): nothing it does can emit an event or be read before the next line runs."""
-        if self.modal["motion"] not in t.CANNED_CYCLES or self.observer is not None or not self.batchable():
-            return False
-        first, second, _ = PLANES[PLANE_OF[self.modal["plane"]]]
-        return all(letter in (AXES[first], AXES[second]) for letter, _value, _col in block.words)
-
-    def _holes_in_bulk(self, path: str, lines: tuple[tuple[int, str], ...], first: int, block: n.PlainBlock) -> int:
-        """Lines of holes from ``first`` on (``block`` is its own): their straight moves go to the canon as one
-        batch, handed on before the first other line, or an error, as the canned cycles of one line are."""
-        index = first
-        with self.moves_held():
-            while True:
-                self.execute(block)
-                index += 1
-                if index == len(lines):
-                    break
-                block = plain_block(lines[index][1], path, lines[index][0])
-                if not self._a_hole(block):
-                    break
-        return index
+                    taken += 1
+                done = taken
 
     def make_batch(self, batch: Batch, arc_lengths: Mapping[int, float], by_line: bool) -> None:
         """Hand ``batch`` to the canon and count it into GetJobDistance, as ``_move`` does one move (the bulk
@@ -139,7 +99,7 @@ class BulkPath(MachineState):
         """The straight moves made inside go to the canon as one batch (``pending``), handed on before any other
         move or event (``flush_pending``) and at the end, also when an error ends it: the moves before it were
         made (one of them refused is the error reported then)."""
-        self.pending = PendingMoves(tuple(self.pos))  # type: ignore[arg-type]
+        self.cycle.pending = PendingMoves(tuple(self.pos))
         try:
             yield
             self.flush_pending()
@@ -147,14 +107,14 @@ class BulkPath(MachineState):
             self.flush_pending()
             raise
         finally:
-            self.pending = None
+            self.cycle.pending = None
 
     def flush_pending(self) -> None:
         """Hand on the straight moves a canned cycle has collected so far (before an event, another kind of
         move, or at the end of its line) as one batch; the cycle goes on collecting after them."""
-        pending = self.pending
+        pending = self.cycle.pending
         if pending is not None and pending.lines:
-            self.pending = PendingMoves(pending.ends[-1])
+            self.cycle.pending = PendingMoves(pending.ends[-1])
             rpm, _css = self.spindle_along()  # (not under G96: the cycle collects only when batchable)
             self.make_batch(Batch(self.path, pending.start, pending.kinds, pending.lines, pending.ends, pending.feeds,
                                   rpm, None, 0.0, self.caller()), {}, by_line=False)

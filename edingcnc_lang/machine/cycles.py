@@ -107,3 +107,6 @@ NEEDS_Q = frozenset({730, 830})
 # revolution; G87 and G88 start it again "in the direction it went", as rs274 requires for all of them).
 NEEDS_SPINDLE = frozenset({740, 840, 860, 870, 880})
 TAPPING = frozenset({740, 840})
+# The cycles whose holes are straight moves alone (no dwell, spindle switch, tap or shift): a run of their
+# holes is read in bulk (canned.py, ``_steady_holes``).
+STRAIGHT = frozenset({730, 810, 830, 850})

@@ -47,7 +47,7 @@ class Moves(MachineState):
             if has_axes:
                 raise self.fail("G80 cancels the canned cycle; it takes no axis words", span)
             self.modal["motion"] = G_80
-            self.cycle_words.clear()
+            self.cycle.words.clear()
             return
         previous = self.modal["motion"]
         if motion is not None:

@@ -29,7 +29,7 @@ from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_poin
 from edingcnc_lang.machine.observe import MachineView, Observer
 
 if TYPE_CHECKING:
-    from edingcnc_lang.machine.bulk import PendingMoves
+    from edingcnc_lang.machine.canned import CycleState
     from edingcnc_lang.machine.geometry import ArcPlan
 
 INCH = t.MM_PER_INCH
@@ -189,6 +189,7 @@ class MachineState:
     # Built by interpreter.py from the parts: statement type -> method, and the steps of a line in order.
     _EXECUTE: ClassVar[StatementTable]
     _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
+    cycle: CycleState  # the canned cycles' state, declared and made by their part (canned.py)
 
     def __init__(self, canon: Canon, config: MachineConfig | None = None, host: Host | None = None, *,
                  max_steps: int | None = None, log_dir: Path | None = None, allow_exec: bool = False,
@@ -216,7 +217,6 @@ class MachineState:
         if not self.config.g64_active:  # [INTERPRETER] g64Active = 0: the machine starts in exact stop
             self.modal["path_control"] = t.code_key(61)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
-        self.pending: PendingMoves | None = None  # a canned cycle's straight moves, held back as one batch
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
         self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
         self.rpm = 0.0                     # G97: the speed the spindle turns at, S within the machine's range
@@ -236,10 +236,6 @@ class MachineState:
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
         self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
         self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
-        self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
-        self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
-        self.cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
-        self.cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
         self.zhc: ZhcTable | None = None         # the Z height compensation table (ZHCINIT, ZHCL)
         self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
@@ -410,7 +406,7 @@ class MachineState:
             raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
                             f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
                             "cnc.ini [KINEMATICS] ...TCA): switch it off with TCAGuard off first")
-        pending = self.pending
+        pending = self.cycle.pending
         if pending is not None:
             if arc is None and not sync and kind != "home":  # a straight move of a canned cycle: into its batch
                 pending.append(kind, self.line, tuple(end), feed)
@@ -457,7 +453,7 @@ class MachineState:
         except SpindleError as err:
             raise self.fail(str(err), span) from None
 
-    def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span,
+    def _feed_for(self, length: float, words: Mapping[str, float], span: n.Span | None,
                   xs: list[float] | None = None) -> float:
         """The feed (mm/min) of a feed move of ``length`` mm under the active feed mode.
 
@@ -515,6 +511,8 @@ class MachineState:
         def arc_plan(self, plane: str, clockwise: bool, start: Sequence[float], end: Sequence[float],
                      words: Mapping[str, float]) -> ArcPlan: ...                            # moves.py
         def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None: ...  # canned.py
+        def hole_run(self, path: str, lines: Sequence[tuple[int, str]], first: int,
+                     block: n.PlainBlock) -> int: ...                                        # canned.py
         def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
         def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py
         def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None: ...  # threads.py

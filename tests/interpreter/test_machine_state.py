@@ -1,8 +1,9 @@
 """The interpreter's state is declared in one place, and an observer sees a read-only view of it.
 
 Every attribute a part of the interpreter (a mixin on ``MachineState``) sets is one that
-``MachineState.__init__`` declares, with its type and meaning; no part keeps state in a class
-attribute (one mutable dict shared by every machine was one such).
+``MachineState.__init__`` declares, with its type and meaning, or a part's own ``__init__`` (the record
+of a concern that owns its state, as ``canned.CycleState``); no part keeps state in a class attribute
+(one mutable dict shared by every machine was one such).
 """
 from __future__ import annotations
 
@@ -41,11 +42,16 @@ def _self_targets(function: ast.AST) -> set[str]:
     return names
 
 
+def _init(cls: ast.ClassDef) -> ast.FunctionDef | None:
+    return next((f for f in cls.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"), None)
+
+
 def _declared() -> set[str]:
     tree = ast.parse((MACHINE / "state.py").read_text(encoding="utf-8"))
     cls = next(c for c in ast.walk(tree) if isinstance(c, ast.ClassDef) and c.name == "MachineState")
-    init = next(f for f in cls.body if isinstance(f, ast.FunctionDef) and f.name == "__init__")
-    return _self_targets(init)
+    init = _init(cls)
+    assert init is not None
+    return _self_targets(init).union(*[_self_targets(own) for _path, part in _parts() if (own := _init(part))])
 
 
 @pytest.mark.slow
@@ -103,5 +109,5 @@ def test_two_machines_do_not_share_a_cycle_shift() -> None:
         def kinematics(self, *args: object) -> tuple[float, ...]: return (0.0,) * 6
 
     first, second = Interpreter(Sink()), Interpreter(Sink())  # type: ignore[arg-type]
-    first.cycle_shift[0] = 2.0
-    assert second.cycle_shift == {} and first.zhc is None and second.cycle_pitch == 0.0
+    first.cycle.shift[0] = 2.0
+    assert second.cycle.shift == {} and first.zhc is None and second.cycle.pitch == 0.0
