@@ -387,7 +387,7 @@ class Run:
             machine=self.machine_position(),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
-            messages=list(interp.messages),
+            messages=list(interp.messages.events),
             kinematics={"name": kin.name, "type": kin.kin_type(), "active": interp.kinematics_active},
             tool=int(interp.params.read(t.TOOL_CURRENT)),
             moves=self.motion.moves,

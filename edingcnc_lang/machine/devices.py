@@ -48,22 +48,22 @@ class Devices(MachineState):
         value = 0.0 if m == 107 else words.get("S", FAN_FULL if fan else 0.0)
         if value < 0 or (fan and value > FAN_FULL):
             raise self.fail(f"M{m} S{format_value(value)}: the {'fan value must lie in 0..255 (255 = 100 %)' if fan else 'temperature must not be negative'}", span)
-        self.heaters[target] = value
+        self.devices.heaters[target] = value
         heat = {name: value if name == target else None for name in ("extruder", "bed", "extruder_max", "fan")}
         self.canon.event(PrinterEvent(self.path, self.line, m, heat["extruder"], heat["bed"], heat["extruder_max"],
                                       heat["fan"], unit, value * 100.0 / FAN_FULL if fan else None, m in WAITS))
 
     def _heaters_off(self) -> None:
         """M30 (3.7.1: "Alle 3D-Drucker heizen AUS")."""
-        if any(self.heaters.values()):
-            self.heaters = {}
+        if any(self.devices.heaters.values()):
+            self.devices.heaters = {}
             self.canon.event(PrinterEvent(self.path, self.line, 30, off=True))
 
     def _select_spindle(self, m: int) -> None:
         """M90..M97: #5390, and the selected spindle's offsets move the controlled point (3.7.2)."""
         self.params.set(t.SPINDLE_SELECTED, float(m - 90))
         before = self.spindle_offset
-        self.spindle_selected = m
+        self.devices.spindle_selected = m
         if self.spindle_offset != before:
             self._offsets_changed()
 

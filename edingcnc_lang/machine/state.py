@@ -17,8 +17,6 @@ from typing import TYPE_CHECKING, Any, ClassVar, Literal, NamedTuple
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Move, Pose
-from edingcnc_lang.events import MessageEvent
-from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import Cancelled, Location, MachineError
@@ -27,6 +25,7 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
+from edingcnc_lang.machine.parts import DeviceState, MessageLog, OffsetState, ZhcState
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.bulk import PendingMoves
@@ -226,12 +225,11 @@ class MachineState:
         self.spindle = 5                   # M3, M4 or M5
         self.spindle_override = 100.0      # M51 P..: percent (manual p. 61)
         self.spindle_override_on = True    # M48 on, M49 off, M51 P<0 off
-        self.coolant: set[int] = set()
-        self.selected_tool = 0
-        self.tool_z = 0.0                  # active G43 length
-        self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
-        self.length_follows_tool = False   # a plain G43 is in force: every M6 applies the new tool's length
-        self.g92_active = False
+        # the parts' own state, one record each (parts.py declares their fields)
+        self.devices = DeviceState()
+        self.offsets = OffsetState()
+        self.zhc = ZhcState()
+        self.messages = MessageLog()
         self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
         self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
         self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
@@ -240,32 +238,21 @@ class MachineState:
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started
         self.cycle_shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
         self.cycle_pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
-        self.zhc: ZhcTable | None = None         # the Z height compensation table (ZHCINIT, ZHCL)
-        self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
         self.tanknife = False
         self.clamped = False               # M26: the rotary axes are clamped until M27
-        self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
-        self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
-        self.spindle_selected = 90         # M90 (the standard spindle) .. M97
-        self.resolution_factor = 1.0       # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
         # the runner sets it, an MDI session has no loaded job.
         self.job_tools: Callable[[], Sequence[int]] = tuple
         self.ended_by = "end of file"
-        self.messages: list[MessageEvent] = []
         # told of each warning a line earns (a limit of the machine changed what it asked for); the
         # runner reports them as it reports load warnings; once per file and line
         self.on_warning: Callable[[Diagnostic], None] | None = None
         self._warned: set[tuple[str, int, str]] = set()
         self.path = "<string>"
         self.line = 0
-        self._offset: list[float] | None = None
-        self._tool_cursor = 0
-        self._log_file: Path | None = None
-        self._logged = 0  # bytes written to log files by this run (limits.MAX_LOG_BYTES)
         self._init_params(simulation)
         if self.config.lathe:
             self.modal["plane"] = G_18
@@ -297,7 +284,7 @@ class MachineState:
         system = int(self.params.values[t.COORD_SYSTEM])
         self.modal["coord_system"] = t.COORD_SYSTEM_CODES[system - 1] if 1 <= system <= 9 else G_54
         self.params.values[t.COORD_SYSTEM] = float(t.COORD_SYSTEM_CODES.index(self.modal["coord_system"]) + 1)
-        self.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
+        self.offsets.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
 
     @property
     def inch(self) -> bool:
@@ -359,7 +346,7 @@ class MachineState:
     def spindle_offset(self) -> tuple[float, float, float]:
         """The selected spindle's offsets (manual 3.7.2): M91's are #5391..#5393 (the ini's [SPINDLE_1] at the
         start; a program may write them), M92..M97 their [SPINDLE_n] sections', M90 none."""
-        m = self.spindle_selected
+        m = self.devices.spindle_selected
         if m == 91:
             values = self.params.values
             return (values[t.ALT_SPINDLE_OFFSET], values[t.ALT_SPINDLE_OFFSET + 1], values[t.ALT_SPINDLE_OFFSET + 2])

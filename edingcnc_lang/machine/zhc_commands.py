@@ -41,10 +41,10 @@ class HeightComp(MachineState):
         if problem:
             raise self.fail(f"{stmt.name.upper()}: {problem}", stmt.span)
         origin = self.offset()
-        self.zhc = ZhcTable.empty(int(nx), int(ny), origin[0], origin[1], dx, dy)
+        self.zhc.table = ZhcTable.empty(int(nx), int(ny), origin[0], origin[1], dx, dy)
 
     def _zhc_add_point(self, stmt: n.Command) -> None:
-        if self.zhc is None:
+        if self.zhc.table is None:
             raise self.fail("ZHCADDPOINT before ZHCINIT: there is no grid to add the point to", stmt.span)
         if self.params.read(t.PROBE_TRIPPED) != 1.0:
             raise self.fail("ZHCADDPOINT: the last G38.2 did not touch (#5067 is not 1)", stmt.span)
@@ -52,12 +52,12 @@ class HeightComp(MachineState):
         z = self.params.read(t.PROBE_WORK + 2)
         if not abs(z) <= MAX_HEIGHT_MAP_VALUE:  # a host's probe answer: the table's statistics stay finite
             raise self.fail(f"ZHCADDPOINT: the probed height {z:g} is beyond {MAX_HEIGHT_MAP_VALUE:g} mm", stmt.span)
-        if self.zhc.add(x, y, z) is None:
+        if self.zhc.table.add(x, y, z) is None:
             raise self.fail(f"ZHCADDPOINT: the probe point X{x:g} Y{y:g} (machine) is not on the ZHC grid",
                             stmt.span)
 
     def _zhc_switch(self, on: bool, span: n.Span) -> None:
-        table = self.zhc
+        table = self.zhc.table
         if on and (table is None or not table.complete()):
             measured = f"{len(table.measured())} of {table.nx * table.ny} points are measured" if table else \
                 "there is no height table (probe one with ZHCINIT and ZHCADDPOINT, or load one with ZHCL)"
@@ -80,12 +80,12 @@ class HeightComp(MachineState):
             raise self.fail(f"cannot {verb} the height table {path}: {exc.strerror or exc}", span) from None
 
     def _zhc_save(self, stmt: n.Command) -> None:
-        if self.zhc is None:
+        if self.zhc.table is None:
             raise self.fail("ZHCS before ZHCINIT: there is no height table to save", stmt.span)
         path = self._zhc_file(stmt)
         path.parent.mkdir(parents=True, exist_ok=True)
         with self._zhc_open(path, "write", stmt.span) as handle:
-            handle.write(self.zhc.to_text())
+            handle.write(self.zhc.table.to_text())
         self.canon.event(ZhcSaveEvent(self.path, self.line, str(path)))
 
     def _zhc_load(self, stmt: n.Command) -> None:
@@ -93,16 +93,16 @@ class HeightComp(MachineState):
         with self._zhc_open(path, "read", stmt.span) as handle:
             text = handle.read()
         try:
-            self.zhc = ZhcTable.from_text(text, str(path))
+            self.zhc.table = ZhcTable.from_text(text, str(path))
         except EcncError as err:
             loc = err.location
             where = f"{loc.path}, line {loc.line}" if loc is not None and loc.line else str(path)
             raise self.fail(f"ZHCL: the height table {where} does not load: {err.message}", stmt.span) from None
 
     def _zhc_check(self, stmt: n.Command) -> None:
-        if self.zhc is None:
+        if self.zhc.table is None:
             raise self.fail("ZHCcheck before ZHCINIT or ZHCL: there is no height table", stmt.span)
-        self.message("msg", self.zhc.statistics())
+        self.message("msg", self.zhc.table.statistics())
 
 
 # Named commands of this part, by lower-case name (named_commands.py dispatches them).

@@ -104,4 +104,4 @@ def test_two_machines_do_not_share_a_cycle_shift() -> None:
 
     first, second = Interpreter(Sink()), Interpreter(Sink())  # type: ignore[arg-type]
     first.cycle_shift[0] = 2.0
-    assert second.cycle_shift == {} and first.zhc is None and second.cycle_pitch == 0.0
+    assert second.cycle_shift == {} and first.zhc.table is None and second.cycle_pitch == 0.0

@@ -1,0 +1,59 @@
+"""The state each part of the interpreter owns: one record per concern, held by ``MachineState``
+as one attribute (``machine.devices``, ``machine.offsets``, ``machine.zhc``, ``machine.messages``).
+
+A part's fields are declared here and nowhere else, each with its meaning; the part's module is the
+one that changes them (named in each record's docstring), others only read them.  The records have
+slots, so a misspelt field is an error where it is written, and mypy checks every read.
+``tests/interpreter/test_machine_state.py`` holds the rule: every attribute of a machine is declared
+once, in ``MachineState.__init__`` or in one of these records.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from edingcnc_lang.config.heightmap import ZhcTable
+from edingcnc_lang.events import MessageEvent
+
+
+@dataclass(slots=True)
+class DeviceState:
+    """The machine's outputs and attached devices (``devices.py``; coolant, outputs and PWM by ``steps.py``'s
+    M7..M9, M26/M27 P, M54..M57 steps): what ``M57`` reads back and what M30 switches off."""
+
+    coolant: set[int] = field(default_factory=set)         # 7 mist, 8 flood (M7/M8; M9 clears)
+    outputs: dict[int, bool] = field(default_factory=dict)  # AUX outputs as M54/M55 and M26/M27 P set them
+    pwm: dict[int, float] = field(default_factory=dict)     # PWM outputs (M54 E Q): duty in per mille
+    heaters: dict[str, float] = field(default_factory=dict)  # 3D printing (M104, M140, M106, ...): temperatures, fan
+    spindle_selected: int = 90      # M90 (the standard spindle) .. M97; its offsets: MachineState.spindle_offset
+    resolution_factor: float = 1.0  # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
+
+
+@dataclass(slots=True)
+class OffsetState:
+    """The tool in use and the offsets that are not parameters (``offsets.py``; the tool's by ``steps.py``'s
+    T, M6 and G43 steps; ``tool_cursor`` by ``named_commands.py``'s GetToolInfo)."""
+
+    selected_tool: int = 0             # the T word in force (M6 makes it the current tool, #5008)
+    tool_z: float = 0.0                # active G43 length
+    tool_x: float = 0.0                # active G43 X offset (lathe), a radius
+    length_follows_tool: bool = False  # a plain G43 is in force: every M6 applies the new tool's length
+    g92_active: bool = False           # G92 offsets (#5211..) apply (G92, G92.3 on; G92.1, G92.2 off)
+    cached: list[float] | None = None  # offset() until a parameter it depends on changes (None: recompute)
+    tool_cursor: int = 0               # GetToolInfo next: the tool number it gave last
+
+
+@dataclass(slots=True)
+class ZhcState:
+    """Z height compensation (``zhc_commands.py``): the table ZHCINIT/ZHCADDPOINT build and ZHCL loads."""
+
+    table: ZhcTable | None = None
+
+
+@dataclass(slots=True)
+class MessageLog:
+    """What the job told the operator and its log file (``messages.py``)."""
+
+    events: list[MessageEvent] = field(default_factory=list)  # every msg, warnmsg, errmsg, dlgmsg and logmsg
+    log_file: Path | None = None  # where logmsg writes (logfile, else log.txt in the log folder at the first)
+    logged: int = 0               # bytes written to log files by this run (input_limits.MAX_LOG_BYTES)
