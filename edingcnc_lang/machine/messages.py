@@ -106,8 +106,7 @@ class Messages(MachineState):
     def move_files(self, scratch: Path, folder: Path) -> None:
         """The run's files go to ``folder`` from here on; a log file opened under ``scratch`` moves with them."""
         self.log_dir = folder
-        if self.messages.log_file is not None and scratch in self.messages.log_file.parents:
-            self.messages.log_file = folder / self.messages.log_file.relative_to(scratch)
+        self.messages.move_files(scratch, folder)
 
     def _open_log(self, span: n.Span, truncate: bool = False) -> TextIO:
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""

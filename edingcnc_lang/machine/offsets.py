@@ -7,7 +7,7 @@ from contextlib import contextmanager
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import RotationEvent
-from edingcnc_lang.machine.geometry import TURNED_AXES, rotate_about, scale_about
+from edingcnc_lang.machine.geometry import TURNED_AXES, rotate_about
 from edingcnc_lang.machine.state import (
     AXIS_INDEX,
     G_10,
@@ -103,17 +103,14 @@ class CoordinateSystems(MachineState):
         """Where the machine really is for a programmed pose."""
         if self.rotation is not None:
             pose = rotate_about(pose, self._rotation_pivot(), self.rotation.angle, self.rotation.plane)
-        if self.scaling is not None:
-            pose = scale_about(pose, (*self.scaling_center, 0.0), self.scaling)
-        return tuple(pose)
+        return tuple(self.scaling.scaled(pose))
 
     def program_frame(self, pose: list[float] | tuple[float, ...]) -> list[float]:
         """The programmed pose that puts the machine at ``pose``."""
-        if self.scaling is not None:
-            pose = scale_about(pose, (*self.scaling_center, 0.0), [1.0 / f for f in self.scaling])
+        programmed = self.scaling.unscaled(pose)
         if self.rotation is not None:
-            pose = rotate_about(pose, self._rotation_pivot(), -self.rotation.angle, self.rotation.plane)
-        return list(pose)
+            programmed = rotate_about(programmed, self._rotation_pivot(), -self.rotation.angle, self.rotation.plane)
+        return list(programmed)
 
     @contextmanager
     def machine_kept(self) -> Iterator[None]:

@@ -1,5 +1,6 @@
 """The state each part of the interpreter owns: one record per concern, held by ``MachineState``
-as one attribute (``machine.devices``, ``machine.offsets``, ``machine.zhc``, ``machine.messages``).
+as one attribute (``machine.devices``, ``machine.offsets``, ``machine.scaling``, ``machine.zhc``,
+``machine.messages``).
 
 A part's fields are declared here and nowhere else, each with its meaning; the part's module is the
 one that changes them (named in each record's docstring), others only read them.  The records have
@@ -12,8 +13,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from collections.abc import Sequence
+
 from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.events import MessageEvent
+from edingcnc_lang.machine.geometry import scale_about
 
 
 @dataclass(slots=True)
@@ -27,6 +31,14 @@ class DeviceState:
     heaters: dict[str, float] = field(default_factory=dict)  # 3D printing (M104, M140, M106, ...): temperatures, fan
     spindle_selected: int = 90      # M90 (the standard spindle) .. M97; its offsets: MachineState.spindle_offset
     resolution_factor: float = 1.0  # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
+
+    def output_on(self, port: int, spindle: int) -> bool:
+        """What ``M57 P<port>`` reads (manual 3.7.8, pp. 64-65), the spindle turning ``spindle`` (M3, M4 or M5):
+        AUX1..n as M54/M55 (and M26/M27 P) set them, 51 machine on and 52 drive enable (on while a job runs),
+        61 flood (M8), 62 mist (M7), 63 the spindle (tool) on, 64 its direction output (on under M3: "M3 ...
+        TOOLDIR = ein", p. 62)."""
+        machine = {51: True, 52: True, 61: 8 in self.coolant, 62: 7 in self.coolant, 63: spindle != 5, 64: spindle == 3}
+        return machine[port] if port in machine else bool(self.outputs.get(port))
 
 
 @dataclass(slots=True)
@@ -44,6 +56,22 @@ class OffsetState:
 
 
 @dataclass(slots=True)
+class ScalingState:
+    """G51 as programmed (``scaling_words.py``; the ``Scaling`` stage does the geometry of the moves)."""
+
+    factors: tuple[float, float, float] | None = None  # G51 factors x, y, z (None: off)
+    center: tuple[float, float] = (0.0, 0.0)           # G51 centre, programmed machine x, y
+
+    def scaled(self, pose: Sequence[float]) -> Sequence[float]:
+        """Where the scaling puts a programmed pose (the stage's map, for what the machine reads back)."""
+        return pose if self.factors is None else scale_about(pose, (*self.center, 0.0), self.factors)
+
+    def unscaled(self, pose: Sequence[float]) -> Sequence[float]:
+        """The programmed pose the scaling puts at ``pose``."""
+        return pose if self.factors is None else scale_about(pose, (*self.center, 0.0), [1.0 / f for f in self.factors])
+
+
+@dataclass(slots=True)
 class ZhcState:
     """Z height compensation (``zhc_commands.py``): the table ZHCINIT/ZHCADDPOINT build and ZHCL loads."""
 
@@ -57,3 +85,8 @@ class MessageLog:
     events: list[MessageEvent] = field(default_factory=list)  # every msg, warnmsg, errmsg, dlgmsg and logmsg
     log_file: Path | None = None  # where logmsg writes (logfile, else log.txt in the log folder at the first)
     logged: int = 0               # bytes written to log files by this run (input_limits.MAX_LOG_BYTES)
+
+    def move_files(self, scratch: Path, folder: Path) -> None:
+        """A log file opened under ``scratch`` is in ``folder`` from here on."""
+        if self.log_file is not None and scratch in self.log_file.parents:
+            self.log_file = folder / self.log_file.relative_to(scratch)

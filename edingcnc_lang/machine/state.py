@@ -25,7 +25,7 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.parts import DeviceState, MessageLog, OffsetState, ZhcState
+from edingcnc_lang.machine.parts import DeviceState, MessageLog, OffsetState, ScalingState, ZhcState
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.bulk import PendingMoves
@@ -228,11 +228,10 @@ class MachineState:
         # the parts' own state, one record each (parts.py declares their fields)
         self.devices = DeviceState()
         self.offsets = OffsetState()
+        self.scaling = ScalingState()
         self.zhc = ZhcState()
         self.messages = MessageLog()
         self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
-        self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
-        self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
         self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
         self.cycle_words: dict[str, float] = {}  # sticky R, Z (drill axis), P, Q of canned cycles
         self.cycle_initial = 0.0                 # drill-axis level where the cycle sequence started

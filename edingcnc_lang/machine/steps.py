@@ -190,15 +190,7 @@ class LineSteps(MachineState):
                 level = -1.0  # the wait for high (L1) / low (L2) timed out
             self.params.set(t.IO_RESULT, level)
         else:
-            self.params.set(t.IO_RESULT, 1.0 if self._output_on(port) else 0.0)
-
-    def _output_on(self, port: int) -> bool:
-        """What ``M57 P<port>`` reads (manual 3.7.8, pp. 64-65): AUX1..n as M54/M55 (and M26/M27 P) set them,
-        51 machine on and 52 drive enable (on while a job runs), 61 flood (M8), 62 mist (M7), 63 the spindle
-        (tool) on, 64 its direction output (on under M3: "M3 ... TOOLDIR = ein", p. 62)."""
-        machine = {51: True, 52: True, 61: 8 in self.devices.coolant, 62: 7 in self.devices.coolant, 63: self.spindle != 5,
-                   64: self.spindle == 3}
-        return machine[port] if port in machine else bool(self.devices.outputs.get(port))
+            self.params.set(t.IO_RESULT, 1.0 if self.devices.output_on(port, self.spindle) else 0.0)
 
     def _pwm(self, code: int, port: int, words: Mapping[str, float], span: n.Span) -> None:
         """PWM outputs: M54 E Q sets the duty (0..1000 per mille), M55 E sets 0, M57 E reads it into #5399."""

@@ -1,18 +1,20 @@
 """The interpreter's state is declared in one place, and an observer sees a read-only view of it.
 
 Every attribute a part of the interpreter (a mixin on ``MachineState``) sets is one that
-``MachineState.__init__`` declares, with its type and meaning; no part keeps state in a class
-attribute (one mutable dict shared by every machine was one such).
+``MachineState.__init__`` declares, with its type and meaning, or a field of a part's own state
+record (``parts.py``), which ``MachineState`` holds as one attribute; no name is declared twice
+and no part keeps state in a class attribute (one mutable dict shared by every machine was one such).
 """
 from __future__ import annotations
 
 import ast
+import dataclasses
 from pathlib import Path
 
 import pytest
 
 from edingcnc_lang import RunOptions, run_string
-from edingcnc_lang.machine import state
+from edingcnc_lang.machine import parts, state
 from edingcnc_lang.machine.observe import MachineView, Observer
 from edingcnc_lang.syntax import nodes as n
 
@@ -60,6 +62,76 @@ def test_every_attribute_a_part_sets_is_declared_in_machine_state_init() -> None
              for path, cls in _parts() for fn in cls.body if isinstance(fn, ast.FunctionDef)
              for name in sorted(_self_targets(fn) - declared)]
     assert not stray, "\n".join(stray)
+
+
+def _records() -> dict[str, type]:
+    """MachineState's attribute -> the part's state record it holds (``self.devices = DeviceState()``)."""
+    tree = ast.parse((MACHINE / "state.py").read_text(encoding="utf-8"))
+    cls = next(c for c in ast.walk(tree) if isinstance(c, ast.ClassDef) and c.name == "MachineState")
+    init = next(f for f in cls.body if isinstance(f, ast.FunctionDef) and f.name == "__init__")
+    return {target.attr: getattr(parts, node.value.func.id) for node in ast.walk(init) if isinstance(node, ast.Assign)
+            for target in node.targets if isinstance(target, ast.Attribute) and isinstance(node.value, ast.Call)
+            and isinstance(node.value.func, ast.Name) and hasattr(parts, node.value.func.id)}
+
+
+def _part_writes(function: ast.AST, records: dict[str, type]) -> set[tuple[str, str]]:
+    """(record attribute, field) for every ``self.<record>.<field> = ...`` in ``function``."""
+    found = set()
+    for node in ast.walk(function):
+        targets = node.targets if isinstance(node, ast.Assign) else \
+            [node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign)) else []
+        for target in targets:
+            for item in target.elts if isinstance(target, ast.Tuple) else [target]:
+                if isinstance(item, ast.Attribute) and isinstance(item.value, ast.Attribute) and \
+                        isinstance(item.value.value, ast.Name) and item.value.value.id == "self" and \
+                        item.value.attr in records:
+                    found.add((item.value.attr, item.attr))
+    return found
+
+
+def test_every_part_record_is_held_once_and_declares_each_name_once() -> None:
+    """A concern's state is one record (no field half-moved back into ``MachineState.__init__``)."""
+    records = _records()
+    made = [c for c in vars(parts).values() if isinstance(c, type) and c.__module__ == parts.__name__]
+    assert sorted(c.__name__ for c in records.values()) == sorted(c.__name__ for c in made)
+    declared = _declared()
+    owners: dict[str, list[str]] = {name: ["MachineState.__init__"] for name in declared - set(records)}
+    for attribute, record in records.items():
+        assert dataclasses.is_dataclass(record) and "__slots__" in vars(record), record
+        for f in dataclasses.fields(record):
+            owners.setdefault(f.name, []).append(f"{record.__name__} (machine.{attribute})")
+    twice = {name: where for name, where in owners.items() if len(where) > 1}
+    assert not twice, twice
+
+
+@pytest.mark.slow
+def test_a_part_writes_only_fields_its_record_declares() -> None:
+    records = _records()
+    stray = [f"{path.name}: {cls.name}.{fn.name} sets self.{attribute}.{name}"
+             for path, cls in _parts() for fn in cls.body if isinstance(fn, ast.FunctionDef)
+             for attribute, name in sorted(_part_writes(fn, records))
+             if name not in {f.name for f in dataclasses.fields(records[attribute])}]
+    assert not stray, "\n".join(stray)
+
+
+EVERY_PART = "\n".join(["M8", "M54 P3", "M54 E2 Q500", "M104 S200", "M91", "M100 P1.01", "T2 M6", "G43", "G92 X1",
+                        "G51 P2", "G50", "ZHCINIT 10 2 2", 'msg "hello"', 'logmsg "logged"', "GetToolInfo first 100",
+                        "M57 P3", "M30", ""])
+
+
+def test_a_run_leaves_only_declared_attributes_on_the_machine(tmp_path: Path) -> None:
+    """At run time too: a part that set an attribute outside ``__init__`` and its record fails here."""
+    from edingcnc_lang.runner import Run
+
+    run = Run(RunOptions(log_dir=tmp_path))
+    result = run.execute_text(EVERY_PART)
+    machine = run.interpreter
+    assert result.error is None and result.ended_by == "M30"
+    assert machine.devices.outputs == {3: True} and machine.devices.pwm == {2: 500.0}
+    assert machine.offsets.g92_active and machine.zhc.table is not None and machine.messages.log_file is not None
+    assert set(vars(machine)) == _declared()
+    for attribute, record in _records().items():
+        assert type(getattr(machine, attribute)) is record
 
 
 @pytest.mark.slow
