@@ -11,7 +11,6 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import DialogEvent, ErrorEvent, LogEvent, MessageEvent, MsgEvent, WarnEvent
 from edingcnc_lang.errors import JobAborted, Location
 from edingcnc_lang.machine.evaluator import param_index
-from edingcnc_lang.machine.job_files import job_file, open_job_file
 from edingcnc_lang.syntax.input_limits import MAX_LOG_BYTES
 from edingcnc_lang.host import DialogAnswer, DialogField, checked_answer
 from edingcnc_lang.syntax.dialogs import dialog_fields
@@ -84,7 +83,7 @@ class Messages(MachineState):
     def _exec_logfile(self, stmt: n.LogFile) -> None:
         mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
         try:  # never outside the log folder, whatever the path says
-            self.messages.log_file = job_file(self.log_folder(), stmt.name)
+            self.messages.log_file = self.files.named(stmt.name, self.path)
         except ValueError as exc:
             raise self.fail(f"logfile {exc}", stmt.span) from None
         if mode == 0:
@@ -105,14 +104,14 @@ class Messages(MachineState):
 
     def move_files(self, scratch: Path, folder: Path) -> None:
         """The run's files go to ``folder`` from here on; a log file opened under ``scratch`` moves with them."""
-        self.log_dir = folder
+        self.files.log_dir = folder
         self.messages.move_files(scratch, folder)
 
     def _open_log(self, span: n.Span, truncate: bool = False) -> TextIO:
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
         assert self.messages.log_file is not None
         try:
-            return open_job_file(self.messages.log_file, "write" if truncate else "append", self.own_files, self.kept_files)
+            return self.files.open(self.messages.log_file, "write" if truncate else "append")
         except OSError as exc:
             raise self.fail(f"cannot write the log file {self.messages.log_file}: {exc.strerror or exc}", span) from None
 

@@ -1,6 +1,6 @@
 """The state each part of the interpreter owns: one record per concern, held by ``MachineState``
-as one attribute (``machine.devices``, ``machine.offsets``, ``machine.scaling``, ``machine.zhc``,
-``machine.messages``).
+as one attribute (``machine.files``, ``machine.devices``, ``machine.offsets``, ``machine.scaling``,
+``machine.zhc``, ``machine.messages``).
 
 A part's fields are declared here and nowhere else, each with its meaning; the part's module is the
 one that changes them (named in each record's docstring), others only read them.  The records have
@@ -12,12 +12,34 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TextIO
 
 from collections.abc import Sequence
 
 from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.events import MessageEvent
 from edingcnc_lang.machine.geometry import scale_about
+from edingcnc_lang.machine.job_files import OpenMode, job_file, open_job_file
+
+
+@dataclass(slots=True)
+class JobFiles:
+    """The files a job names itself (logfile, ZHCS, ZHCL; ``job_files.py`` has the rules): where they
+    are and what the job may not touch.  Set by the runner (``own``, ``kept``) and the debugger
+    (``log_dir``, ``MachineView.move_files``); ``messages.py`` and ``zhc_commands.py`` open files through it."""
+
+    log_dir: Path | None = None  # --log-dir; None: the folder of the job file running
+    own: frozenset[tuple[int, int]] = frozenset()  # the run's files (job, macro files, ini, outputs) as (device,
+    #                                                inode): never the job's to write
+    kept: dict[Path, str] | None = None  # a run that only looks (plot, view, sim, diff): what the job writes, by file
+
+    def named(self, raw: str, job: str) -> Path:
+        """The file ``raw`` names in the log folder of the job file ``job`` runs from (ValueError: no file name)."""
+        return job_file(self.log_dir or Path(job).resolve().parent, raw)
+
+    def open(self, path: Path, mode: OpenMode) -> TextIO:
+        """``path`` opened safely (OSError with a reason fit for the user), or in memory in a run that only looks."""
+        return open_job_file(path, mode, self.own, self.kept)
 
 
 @dataclass(slots=True)

@@ -25,7 +25,7 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.parts import DeviceState, MessageLog, OffsetState, ScalingState, ZhcState
+from edingcnc_lang.machine.parts import DeviceState, JobFiles, MessageLog, OffsetState, ScalingState, ZhcState
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.bulk import PendingMoves
@@ -199,11 +199,7 @@ class MachineState:
         self.host = host or Host()
         self.max_steps = max_steps
         self.cancelled = False  # Run.cancel(): the next step check stops the run
-        self.log_dir = log_dir
-        # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
-        self.own_files: frozenset[tuple[int, int]] = frozenset()
-        # a run that only looks (plot, view, sim, diff): the files the job writes are kept here, not on disk
-        self.kept_files: dict[Path, str] | None = None
+        self.files = JobFiles(log_dir)  # the files a job names: where they go, which it may not touch
         self.allow_exec = allow_exec
         self.block_delete = block_delete
         self.steps = 0
@@ -298,10 +294,6 @@ class MachineState:
         if span is not None and span.line:
             return Location(span.path, span.line, span.col)
         return Location(self.path, self.line)
-
-    def log_folder(self) -> Path:
-        """Where the files a job names (logfile, ZHCS, ZHCL) live: --log-dir, else the job's folder."""
-        return self.log_dir or Path(self.path).resolve().parent
 
     def warn(self, code: str, message: str, span: n.Span | None = None) -> None:
         """A warning at the line (``code`` from codes.py), once per file, line and code."""

@@ -16,7 +16,7 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import ZhcEvent, ZhcSaveEvent
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.config.heightmap import ZhcTable
-from edingcnc_lang.machine.job_files import OpenMode, job_file, open_job_file
+from edingcnc_lang.machine.job_files import OpenMode
 from edingcnc_lang.syntax.input_limits import MAX_HEIGHT_MAP_VALUE
 from edingcnc_lang.machine.state import CommandTable, MachineState
 
@@ -68,13 +68,13 @@ class HeightComp(MachineState):
     def _zhc_file(self, stmt: n.Command) -> Path:
         """The file ZHCS/ZHCL name, in the log folder under logfile's rules (job_files.py)."""
         try:
-            return job_file(self.log_folder(), stmt.args.strip().strip('"'))
+            return self.files.named(stmt.args.strip().strip('"'), self.path)
         except ValueError as exc:
             raise self.fail(f"{stmt.name.upper()} {exc}", stmt.span) from None
 
     def _zhc_open(self, path: Path, mode: OpenMode, span: n.Span) -> TextIO:
         try:
-            return open_job_file(path, mode, self.own_files, self.kept_files)
+            return self.files.open(path, mode)
         except OSError as exc:
             verb = "read" if mode == "read" else "write"
             raise self.fail(f"cannot {verb} the height table {path}: {exc.strerror or exc}", span) from None
