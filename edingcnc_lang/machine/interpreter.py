@@ -1,12 +1,13 @@
 """The interpreter, assembled from its parts; each part is a mixin in a module of its own.
 
-Reading order for a newcomer: ``state`` (what the machine knows), ``flow`` (statements, subs),
-``line`` and ``steps`` (one G-code line in the order of execution), ``spindle_modes`` (S, M3-M5,
-G96/G97), ``offsets`` (work and machine coordinates), ``moves``, ``canned`` and ``threads`` (what a
-line moves), ``bulk`` (the fast path
-for plain CAM lines), ``messages`` and ``commands``.  The interpreter emits every move and
-event to a ``Canon``: in a run that is the head of the pipeline (``pipeline/``), whose last
-stage is the motion stage.
+Reading order for a newcomer: ``state`` (what the machine knows), ``parts`` (the state records the
+parts own: files, devices, tool offsets, G51, ZHC, messages), ``flow`` (statements, subs), ``line``
+and ``steps`` (one G-code line in the order of execution), ``spindle_modes`` (S, M3-M5, G96/G97),
+``comp_words`` and ``scaling_words`` (G40-G42, G50/G51 as programmed), ``offsets`` (work and
+machine coordinates), ``moves``, ``canned`` and ``threads`` (what a line moves), ``bulk`` (the fast
+path for plain CAM lines), ``devices``, ``messages``, ``named_commands`` and ``zhc_commands``.
+The interpreter emits every move and event to a ``Canon``: in a run that is the head of the
+pipeline (``pipeline/``), whose last stage is the motion stage.
 """
 from __future__ import annotations
 

@@ -1,9 +1,10 @@
 """The interpreter's machine state and the constants its parts share.
 
-``MachineState`` holds what one virtual machine knows (modal state, position, feed, tools,
-parameters, the call stack) and the few helpers every part needs: errors that name the line,
-the step budget and handing a move to the canon.  The parts of the interpreter (control flow,
-line steps, offsets, motion, ...) are mixins on top of it, assembled in ``interpreter.py``.
+``MachineState`` holds what one virtual machine knows (modal state, position, feed, spindle,
+parameters, the call stack, and one record per part that owns its state, ``parts.py``) and the
+few helpers every part needs: errors that name the line, the step budget and handing a move to
+the canon.  The parts of the interpreter (control flow, line steps, offsets, motion, ...) are
+mixins on top of it, assembled in ``interpreter.py``.
 """
 from __future__ import annotations
 
