@@ -73,20 +73,21 @@ class CoordinateSystems(MachineState):
     def offset(self) -> list[float]:
         """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43),
         + the selected spindle's offsets."""
-        if self.offsets.cached is None:
+        state = self.offsets
+        if state.cached is None:
             values = self.params.values
             system = int(values[t.COORD_SYSTEM]) if 1 <= values[t.COORD_SYSTEM] <= 9 else 1
             off = [values[t.coord_offset_param(system, i)] for i in range(6)]
-            if self.offsets.g92_active:
+            if state.g92_active:
                 off = [o + values[t.G92_OFFSET + i] for i, o in enumerate(off)]
-            off[2] += self.offsets.tool_z
-            off[0] += self.offsets.tool_x
+            off[2] += state.tool_z
+            off[0] += state.tool_x
             for axis, shift in enumerate(self.spindle_offset):  # an alternate spindle (M91..M97)
                 off[axis] += shift
-            self.offsets.cached = off
+            state.cached = off
             if self.rotation is not None:
                 self._sync_rotation(off)
-        return self.offsets.cached
+        return state.cached
 
     def to_machine(self, work: list[float]) -> list[float]:
         """Programmed machine coordinates of a work position (G51/G68 are applied later, by stages)."""

@@ -246,7 +246,8 @@ class LineSteps(MachineState):
                 self.offsets.tool_x = words.get("I", 0.0) * self.scale * x_part if lathe else 0.0
             elif tool:
                 read = self.params.read
-                self.offsets.tool_z = read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool)  # zDelta: wear, mill and lathe
+                # zDelta: the wear, on a mill and a lathe
+                self.offsets.tool_z = read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool)
                 if lathe:
                     self.offsets.tool_x = (read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool)) * x_part
             else:
