@@ -66,7 +66,7 @@ class Commands(MachineState):
 
     def _exec_switch(self, stmt: n.Switch) -> None:
         if stmt.name == "zhc":
-            self._zhc_switch(stmt.on, stmt.span)
+            height_comp.switch(self, stmt.on, stmt.span)
             return
         if stmt.name == "tcaguard":
             self.tca_guard = stmt.on

@@ -495,7 +495,6 @@ class MachineState:
                      words: Mapping[str, float]) -> ArcPlan: ...                            # moves.py
         def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None: ...  # canned.py
         def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
-        def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py
         def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None: ...  # threads.py
         def _spindle_stop(self) -> None: ...                                                 # spindle_modes.py
         def _select_spindle(self, m: int) -> None: ...                                       # devices.py
