@@ -1,5 +1,6 @@
 """The interpreter, assembled from its parts; each part is a mixin in a module of its own, but
-``zhc_commands``, a composed part (functions of the few things of the machine it declares it uses).
+``devices`` and ``zhc_commands``, composed parts (functions of the few things of the machine each
+declares it uses, in a ``Protocol``).
 
 Reading order for a newcomer: ``state`` (what the machine knows), ``parts`` (the state records the
 parts own: files, devices, tool offsets, G51, ZHC, messages), ``flow`` (statements, subs), ``line``
@@ -30,7 +31,6 @@ from edingcnc_lang.machine.bulk import BulkPath
 from edingcnc_lang.machine.canned import CannedCycles
 from edingcnc_lang.machine.named_commands import Commands
 from edingcnc_lang.machine.comp_words import CompensationSteps
-from edingcnc_lang.machine.devices import Devices
 from edingcnc_lang.machine.flow import ControlFlow
 from edingcnc_lang.machine.line import LineWords
 from edingcnc_lang.machine.messages import Messages
@@ -43,7 +43,7 @@ from edingcnc_lang.machine.threads import Threading
 
 
 class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, ScalingWords, CoordinateSystems,
-                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, Devices):
+                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 

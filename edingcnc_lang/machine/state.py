@@ -497,8 +497,6 @@ class MachineState:
         def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
         def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None: ...  # threads.py
         def _spindle_stop(self) -> None: ...                                                 # spindle_modes.py
-        def _select_spindle(self, m: int) -> None: ...                                       # devices.py
-        def _heaters_off(self) -> None: ...                                                  # devices.py
         def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None: ...
         def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
                                 span: n.Span) -> None: ...

@@ -4,7 +4,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.machine import tables as t
+from edingcnc_lang.machine import devices, tables as t
 from edingcnc_lang.events import (CoolantEvent, DwellEvent, EndEvent, MCodeEvent, OperatorWaitEvent, OutputEvent,
                                   OverrideEvent, PathControlEvent, PauseEvent, ToolChangeEvent)
 from edingcnc_lang.host import checked_level
@@ -123,7 +123,7 @@ class LineSteps(MachineState):
                                 "the standard)", span)
             self.devices.resolution_factor = factor
         elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
-            self._select_spindle(m)
+            devices.select_spindle(self, m)
         self.canon.event(MCodeEvent(self.path, self.line, m, words.get("P")))  # M100 P: the axis resolution factor
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -278,7 +278,7 @@ class LineSteps(MachineState):
             self.devices.coolant = set()
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
-        self._heaters_off()
+        devices.heaters_off(self)
         self.ended_by = f"M{code // 10}"
         self.canon.event(EndEvent(self.path, self.line, code // 10))
         raise ProgramEnd()

@@ -83,7 +83,7 @@ def add_point(machine: ZhcMachine, stmt: n.Command) -> None:
         raise machine.fail(f"ZHCADDPOINT: the probed height {z:g} is beyond {MAX_HEIGHT_MAP_VALUE:g} mm", stmt.span)
     if machine.zhc.table.add(x, y, z) is None:
         raise machine.fail(f"ZHCADDPOINT: the probe point X{x:g} Y{y:g} (machine) is not on the ZHC grid",
-                        stmt.span)
+                           stmt.span)
 
 
 def switch(machine: ZhcMachine, on: bool, span: n.Span) -> None:
@@ -93,7 +93,8 @@ def switch(machine: ZhcMachine, on: bool, span: n.Span) -> None:
             "there is no height table (probe one with ZHCINIT and ZHCADDPOINT, or load one with ZHCL)"
         raise machine.fail(f"ZHC on: {measured}", span)
     machine.params.set(t.ZHC_ACTIVE, 1.0 if on else 0.0)
-    machine.canon.event(ZhcEvent(machine.path, machine.line, on, table.height_map() if on and table is not None else None))
+    heights = table.height_map() if on and table is not None else None
+    machine.canon.event(ZhcEvent(machine.path, machine.line, on, heights))
 
 
 def _file(machine: ZhcMachine, stmt: n.Command) -> Path:
