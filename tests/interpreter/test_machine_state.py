@@ -74,8 +74,9 @@ def _records() -> dict[str, type]:
             and isinstance(node.value.func, ast.Name) and hasattr(parts, node.value.func.id)}
 
 
-def _part_writes(function: ast.AST, records: dict[str, type]) -> set[tuple[str, str]]:
-    """(record attribute, field) for every ``self.<record>.<field> = ...`` in ``function``."""
+def _part_writes(function: ast.AST, records: dict[str, type], receiver: str = "self") -> set[tuple[str, str]]:
+    """(record attribute, field) for every ``self.<record>.<field> = ...`` in ``function`` (``machine.``
+    in a composed part's function), and ("", name) for a ``machine.<name> = ...`` of a composed part."""
     found = set()
     for node in ast.walk(function):
         targets = node.targets if isinstance(node, ast.Assign) else \
@@ -83,10 +84,20 @@ def _part_writes(function: ast.AST, records: dict[str, type]) -> set[tuple[str, 
         for target in targets:
             for item in target.elts if isinstance(target, ast.Tuple) else [target]:
                 if isinstance(item, ast.Attribute) and isinstance(item.value, ast.Attribute) and \
-                        isinstance(item.value.value, ast.Name) and item.value.value.id == "self" and \
+                        isinstance(item.value.value, ast.Name) and item.value.value.id == receiver and \
                         item.value.attr in records:
                     found.add((item.value.attr, item.attr))
+                elif receiver != "self" and isinstance(item, ast.Attribute) and \
+                        isinstance(item.value, ast.Name) and item.value.id == receiver:
+                    found.add(("", item.attr))
     return found
+
+
+def _composed() -> list[tuple[Path, ast.FunctionDef]]:
+    """The functions of the composed parts: module functions whose first argument is ``machine``."""
+    return [(path, node) for path in sorted(MACHINE.glob("*.py"))
+            for node in ast.parse(path.read_text(encoding="utf-8")).body
+            if isinstance(node, ast.FunctionDef) and node.args.args and node.args.args[0].arg == "machine"]
 
 
 def test_every_part_record_is_held_once_and_declares_each_name_once() -> None:
@@ -111,6 +122,17 @@ def test_a_part_writes_only_fields_its_record_declares() -> None:
              for path, cls in _parts() for fn in cls.body if isinstance(fn, ast.FunctionDef)
              for attribute, name in sorted(_part_writes(fn, records))
              if name not in {f.name for f in dataclasses.fields(records[attribute])}]
+    assert not stray, "\n".join(stray)
+
+
+@pytest.mark.slow
+def test_a_composed_part_changes_the_machine_only_inside_its_record() -> None:
+    """devices.py and zhc_commands.py see the machine through a Protocol; they set no attribute of it."""
+    records, composed = _records(), _composed()
+    assert {path.name for path, _ in composed} >= {"devices.py", "zhc_commands.py"}
+    stray = [f"{path.name}: {fn.name} sets machine.{attribute + '.' if attribute else ''}{name}"
+             for path, fn in composed for attribute, name in sorted(_part_writes(fn, records, "machine"))
+             if not attribute or name not in {f.name for f in dataclasses.fields(records[attribute])}]
     assert not stray, "\n".join(stray)
 
 
