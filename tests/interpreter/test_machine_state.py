@@ -3,7 +3,9 @@
 Every attribute a part of the interpreter (a mixin on ``MachineState``) sets is one that
 ``MachineState.__init__`` declares, with its type and meaning, or a field of a part's own state
 record (``parts.py``), which ``MachineState`` holds as one attribute; no name is declared twice
-and no part keeps state in a class attribute (one mutable dict shared by every machine was one such).
+and no part keeps state in a class attribute (one mutable dict shared by every machine was one such);
+a composed part (``devices.py``, ``zhc_commands.py``: functions of ``machine``) changes the machine
+only inside its record.
 """
 from __future__ import annotations
 
