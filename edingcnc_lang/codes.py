@@ -149,7 +149,7 @@ def lookup(code: str) -> Code:
 # R: errors that stop a run (``ecnc run``, the embedding API, ``ecnc debug``'s exception info).  An
 # error's code comes from its kind (errmsg, Ctrl-C, cancel, a callback, the ini, a plug-in) or, for the
 # machine's own refusals, from the first row whose pattern is found in its message: the messages are
-# written once, where the error is raised, and tests/test_runtime_codes.py proves every message the
+# written once, where the error is raised, and tests/api/test_runtime_codes.py proves every message the
 # package can raise has a row other than R899.  ``ecnc help R812`` explains a code from docs/errors.md.
 @record(frozen=True)
 class RuntimeCode:

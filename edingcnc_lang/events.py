@@ -9,7 +9,7 @@ field whose default is None left out while it is None, a field named in ``intern
 
 **To add a kind**: one class here, a subclass of ``Event`` (or of ``MessageEvent`` or
 ``SwitchEvent``) decorated with ``record(frozen=True, slots=True)``, with ``kind`` set and the
-payload as fields; it registers itself (``EVENT_KINDS``), and ``tests/test_events.py`` proves
+payload as fields; it registers itself (``EVENT_KINDS``), and ``tests/stages/test_events.py`` proves
 its JSON round trip.  A payload whose keys follow the input (``ModbusEvent``) overrides
 ``data`` and ``from_payload``.
 """

@@ -127,7 +127,7 @@ class Run:
                                        observer=options.observer)
         self.interpreter.on_warning = self._warn
         if not options.write_job_files:
-            self.interpreter.kept_files = {}
+            self.interpreter.files.kept = {}
         # the configured kinematics' type is there from the start; it is not something the job wrote
         self.interpreter.params.load({t.KIN_TYPE: float(self.kinematics.kin_type())})
         if self.planner is not None:
@@ -253,7 +253,7 @@ class Run:
         check_outputs({"--trace": opts.trace, "--samples": opts.samples, "--events": opts.events}, inputs)
         for writer in self._writers:
             writer.open()
-        self.interpreter.own_files = output_identities([*inputs, *self._outputs])
+        self.interpreter.files.own = output_identities([*inputs, *self._outputs])
 
     def start(self, macros: Sequence[tuple[Path, n.Program]]) -> None:
         """What happens before a job's first line (and before an MDI session's): the outputs are
@@ -387,7 +387,7 @@ class Run:
             machine=self.machine_position(),  # type: ignore[arg-type]
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
-            messages=list(interp.messages),
+            messages=list(interp.messages.events),
             kinematics={"name": kin.name, "type": kin.kin_type(), "active": interp.kinematics_active},
             tool=int(interp.params.read(t.TOOL_CURRENT)),
             moves=self.motion.moves,

@@ -2,7 +2,7 @@
 ``edingcnc_lang/stdlib``), which the wheel and an editable install read.
 
 Both are real folders in git (no symlinks: a Windows clone checks a symlink out as a text file and the
-install breaks); ``tests/test_package_data.py`` fails while a package copy differs from its top-level
+install breaks); ``tests/packaging/test_package_data.py`` fails while a package copy differs from its top-level
 file, and names this script.  Run it after editing a file under ``kins/`` or ``stdlib/``:
 
     python scripts/sync_package_data.py

@@ -98,11 +98,11 @@ def _modal(run: Run) -> list[dict[str, Any]]:
     spindle = {3: "M3 (clockwise)", 4: "M4 (counter-clockwise)", 5: "M5 (stopped)"}.get(interp.spindle, "")
     found += [_plain("F", format_value(interp.feed)), _plain("S", format_value(interp.speed)),
               _plain("spindle", spindle), _plain("tool (#5008)", int(interp.params.read(t.TOOL_CURRENT))),
-              _plain("tool selected (T)", interp.selected_tool),
-              _plain("coolant", " ".join(f"M{c}" for c in sorted(interp.coolant)) or "off"),
-              _plain("G43 length", format_value(interp.tool_z)),
-              *([_plain("G43 X offset (radius)", format_value(interp.tool_x))] if interp.config.lathe else []),
-              _plain("G92 active", "yes" if interp.g92_active else "no"),
+              _plain("tool selected (T)", interp.offsets.selected_tool),
+              _plain("coolant", " ".join(f"M{c}" for c in sorted(interp.devices.coolant)) or "off"),
+              _plain("G43 length", format_value(interp.offsets.tool_z)),
+              *([_plain("G43 X offset (radius)", format_value(interp.offsets.tool_x))] if interp.config.lathe else []),
+              _plain("G92 active", "yes" if interp.offsets.g92_active else "no"),
               _plain("work offset", _pose(interp.offset()))]
     return found
 

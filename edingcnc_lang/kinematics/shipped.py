@@ -1,7 +1,7 @@
 """Where the shipped plug-ins (the repo's ``kins/`` folder) live: the package ``edingcnc_lang.kins``.
 
 ``edingcnc_lang/kins`` is a real folder, a copy of the top-level ``kins/`` (the source of truth,
-kept equal by ``scripts/sync_package_data.py`` and pinned by ``tests/test_package_data.py``), so an
+kept equal by ``scripts/sync_package_data.py`` and pinned by ``tests/packaging/test_package_data.py``), so an
 installed wheel, an editable install and a Windows clone all find it the same way.  Everything that
 needs it goes through this module.
 """

@@ -25,7 +25,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.canon import Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import plain_block, plain_words
-from edingcnc_lang.machine.canned import PendingMoves
+from edingcnc_lang.machine.parts import PendingMoves
 from edingcnc_lang.machine.geometry import TINY, ArcError, radius_tolerance
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.machine.state import (

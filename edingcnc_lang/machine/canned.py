@@ -1,6 +1,6 @@
 """Canned cycles (G73, G81..G89): sticky words, levels and holes; cycles.py expands each hole.
 
-The concern's state is one record, ``CycleState`` (``machine.cycle``): what a cycle keeps from line
+The concern's state is one record, ``parts.CycleState`` (``machine.cycle``): what a cycle keeps from line
 to line and the straight moves it holds back to hand on as one batch.  A run of lines that only
 name the next hole (``X.. Y..`` under G81) is drilled in bulk (``hole_run``): the first line takes
 the general path, then, while nothing the bulk form does not model is in force, the levels are
@@ -39,38 +39,6 @@ def _cycles() -> ModuleType:
     return cycles
 
 
-class PendingMoves:
-    """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
-
-    __slots__ = ("start", "kinds", "lines", "ends", "feeds")
-
-    def __init__(self, start: Pose) -> None:
-        self.start = start
-        self.kinds: list[str] = []
-        self.lines: list[int] = []
-        self.ends: list[Pose] = []
-        self.feeds: list[float] = []
-
-    def append(self, kind: str, line: int, end: Pose, feed: float) -> None:
-        self.kinds.append(kind)
-        self.lines.append(line)
-        self.ends.append(end)
-        self.feeds.append(feed)
-
-
-class CycleState:
-    """What the canned cycles keep between lines, declared here and nowhere else (``machine.cycle``)."""
-
-    __slots__ = ("words", "initial", "shift", "pitch", "pending")
-
-    def __init__(self) -> None:
-        self.words: dict[str, float] = {}  # sticky R, Z (the drill axis's word), P, Q, and G87's I J K
-        self.initial = 0.0                 # drill-axis level where the cycle sequence started (G98 returns there)
-        self.shift: dict[int, float] = {}  # G87: the sideways shift past the boring bar, by axis index
-        self.pitch = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
-        self.pending: PendingMoves | None = None  # straight moves held back as one batch (bulk.moves_held)
-
-
 class _Levels(NamedTuple):
     """A cycle line's levels along the drilling axis (work coordinates), before any climb to R."""
 
@@ -84,10 +52,6 @@ class _Levels(NamedTuple):
 
 class CannedCycles(MachineState):
     """Every hole and peck counts against the step budget."""
-
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        self.cycle = CycleState()
 
     def _cycle(self, motion: int, words: Mapping[str, float], span: n.Span, new_sequence: bool) -> None:
         """A cycle line's holes; their straight moves go to the canon as one batch where the bulk path's would

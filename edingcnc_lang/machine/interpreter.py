@@ -1,12 +1,15 @@
-"""The interpreter, assembled from its parts; each part is a mixin in a module of its own.
+"""The interpreter, assembled from its parts; each part is a mixin in a module of its own, but
+``devices`` and ``zhc_commands``, composed parts (functions of the few things of the machine each
+declares it uses, in a ``Protocol``).
 
-Reading order for a newcomer: ``state`` (what the machine knows), ``flow`` (statements, subs),
-``line`` and ``steps`` (one G-code line in the order of execution), ``spindle_modes`` (S, M3-M5,
-G96/G97), ``offsets`` (work and machine coordinates), ``moves``, ``canned`` and ``threads`` (what a
-line moves), ``bulk`` (the fast path
-for plain CAM lines), ``messages`` and ``commands``.  The interpreter emits every move and
-event to a ``Canon``: in a run that is the head of the pipeline (``pipeline/``), whose last
-stage is the motion stage.
+Reading order for a newcomer: ``state`` (what the machine knows), ``parts`` (the state records the
+parts own: files, devices, tool offsets, G51, ZHC, messages), ``flow`` (statements, subs), ``line``
+and ``steps`` (one G-code line in the order of execution), ``spindle_modes`` (S, M3-M5, G96/G97),
+``comp_words`` and ``scaling_words`` (G40-G42, G50/G51 as programmed), ``offsets`` (work and
+machine coordinates), ``moves``, ``canned`` and ``threads`` (what a line moves), ``bulk`` (the fast
+path for plain CAM lines), ``devices``, ``messages``, ``named_commands`` and ``zhc_commands``.
+The interpreter emits every move and event to a ``Canon``: in a run that is the head of the
+pipeline (``pipeline/``), whose last stage is the motion stage.
 """
 from __future__ import annotations
 
@@ -28,9 +31,7 @@ from edingcnc_lang.machine.bulk import BulkPath
 from edingcnc_lang.machine.canned import CannedCycles
 from edingcnc_lang.machine.named_commands import Commands
 from edingcnc_lang.machine.comp_words import CompensationSteps
-from edingcnc_lang.machine.devices import Devices
 from edingcnc_lang.machine.flow import ControlFlow
-from edingcnc_lang.machine.zhc_commands import HeightComp
 from edingcnc_lang.machine.line import LineWords
 from edingcnc_lang.machine.messages import Messages
 from edingcnc_lang.machine.moves import Moves
@@ -42,7 +43,7 @@ from edingcnc_lang.machine.threads import Threading
 
 
 class Interpreter(ControlFlow, LineWords, LineSteps, SpindleModes, CompensationSteps, ScalingWords, CoordinateSystems,
-                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands, HeightComp, Devices):
+                  Moves, CannedCycles, Threading, BulkPath, Messages, Commands):
     """Runs EdingCNC statements against one virtual machine; create one per job run."""
 
 

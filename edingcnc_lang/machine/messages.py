@@ -11,7 +11,6 @@ from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import DialogEvent, ErrorEvent, LogEvent, MessageEvent, MsgEvent, WarnEvent
 from edingcnc_lang.errors import JobAborted, Location
 from edingcnc_lang.machine.evaluator import param_index
-from edingcnc_lang.machine.job_files import job_file, open_job_file
 from edingcnc_lang.syntax.input_limits import MAX_LOG_BYTES
 from edingcnc_lang.host import DialogAnswer, DialogField, checked_answer
 from edingcnc_lang.syntax.dialogs import dialog_fields
@@ -37,7 +36,7 @@ class Messages(MachineState):
 
     def tell(self, event: MessageEvent) -> None:
         """Every message goes here: to the run's messages, the canon and the host."""
-        self.messages.append(event)
+        self.messages.events.append(event)
         self.canon.event(event)
         if self.host.message:
             self.host.message(event.kind, event.text, self.path, self.line)
@@ -84,38 +83,37 @@ class Messages(MachineState):
     def _exec_logfile(self, stmt: n.LogFile) -> None:
         mode = self.evaluator.value(stmt.mode) if stmt.mode is not None else 1.0
         try:  # never outside the log folder, whatever the path says
-            self._log_file = job_file(self.log_folder(), stmt.name)
+            self.messages.log_file = self.files.named(stmt.name, self.path)
         except ValueError as exc:
             raise self.fail(f"logfile {exc}", stmt.span) from None
         if mode == 0:
             self._open_log(stmt.span, truncate=True).close()
 
     def _log(self, text: str, span: n.Span) -> None:
-        if self._log_file is None:
+        if self.messages.log_file is None:
             self._exec_logfile(n.LogFile("log.txt", None, span))
-        assert self._log_file is not None
+        assert self.messages.log_file is not None
         line = text + "\n"
-        self._logged += len(line.encode("utf-8", errors="replace"))
-        if self._logged > MAX_LOG_BYTES:
+        self.messages.logged += len(line.encode("utf-8", errors="replace"))
+        if self.messages.logged > MAX_LOG_BYTES:
             raise self.fail(f"logmsg: this run has written {MAX_LOG_BYTES // 2**20} MB to its log files, the most "
                             "a run may write (a logmsg in a loop that does not end?)", span)
         with self._open_log(span) as handle:
             handle.write(line)
-        self.tell(LogEvent(self.path, self.line, text, str(self._log_file)))
+        self.tell(LogEvent(self.path, self.line, text, str(self.messages.log_file)))
 
     def move_files(self, scratch: Path, folder: Path) -> None:
         """The run's files go to ``folder`` from here on; a log file opened under ``scratch`` moves with them."""
-        self.log_dir = folder
-        if self._log_file is not None and scratch in self._log_file.parents:
-            self._log_file = folder / self._log_file.relative_to(scratch)
+        self.files.log_dir = folder
+        self.messages.move_files(scratch, folder)
 
     def _open_log(self, span: n.Span, truncate: bool = False) -> TextIO:
         """The log file, opened to append; an error at the job's line if it cannot be, or is not a file of its own."""
-        assert self._log_file is not None
+        assert self.messages.log_file is not None
         try:
-            return open_job_file(self._log_file, "write" if truncate else "append", self.own_files, self.kept_files)
+            return self.files.open(self.messages.log_file, "write" if truncate else "append")
         except OSError as exc:
-            raise self.fail(f"cannot write the log file {self._log_file}: {exc.strerror or exc}", span) from None
+            raise self.fail(f"cannot write the log file {self.messages.log_file}: {exc.strerror or exc}", span) from None
 
 
 # The messages ``message`` makes, by kind

@@ -66,7 +66,7 @@ class Commands(MachineState):
 
     def _exec_switch(self, stmt: n.Switch) -> None:
         if stmt.name == "zhc":
-            self._zhc_switch(stmt.on, stmt.span)
+            height_comp.switch(self, stmt.on, stmt.span)
             return
         if stmt.name == "tcaguard":
             self.tca_guard = stmt.on
@@ -94,10 +94,10 @@ class Commands(MachineState):
         if kind == "num":
             value = float(len(tools))
         else:
-            after = 0 if kind == "first" else self._tool_cursor
+            after = 0 if kind == "first" else self.offsets.tool_cursor
             following = [k for k in tools if k > after]
             value = float(following[0]) if following else -1.0
-            self._tool_cursor = int(value) if following else t.MAX_TOOL
+            self.offsets.tool_cursor = int(value) if following else t.MAX_TOOL
         self.params.write(index, value, self.where(stmt.span))
 
     def _get_job_distance(self, stmt: n.Command) -> None:

@@ -7,7 +7,7 @@ from contextlib import contextmanager
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import RotationEvent
-from edingcnc_lang.machine.geometry import TURNED_AXES, rotate_about, scale_about
+from edingcnc_lang.machine.geometry import TURNED_AXES, rotate_about
 from edingcnc_lang.machine.state import (
     AXIS_INDEX,
     G_10,
@@ -39,8 +39,8 @@ class CoordinateSystems(MachineState):
     def _offsets_changed(self) -> None:
         """An offset changed (G5x, G10, G92.., G43, a macro's write): under G68 the pivot moves with
         the offsets, so the current point is re-expressed about the new pivot and the machine stays."""
-        pivot = self._rotation_pivot() if self.rotation is not None and self._offset is not None else None
-        self._offset = None
+        pivot = self._rotation_pivot() if self.rotation is not None and self.offsets.cached is not None else None
+        self.offsets.cached = None
         system = self.params.values[t.COORD_SYSTEM]  # a macro may select the system by writing #5220
         if system == int(system) and 1 <= system <= 9:
             self.modal["coord_system"] = t.COORD_SYSTEM_CODES[int(system) - 1]
@@ -73,20 +73,21 @@ class CoordinateSystems(MachineState):
     def offset(self) -> list[float]:
         """Machine minus work position: G5x + G92 (if active) + tool length on Z, and X on a lathe (G43),
         + the selected spindle's offsets."""
-        if self._offset is None:
+        state = self.offsets
+        if state.cached is None:
             values = self.params.values
             system = int(values[t.COORD_SYSTEM]) if 1 <= values[t.COORD_SYSTEM] <= 9 else 1
             off = [values[t.coord_offset_param(system, i)] for i in range(6)]
-            if self.g92_active:
+            if state.g92_active:
                 off = [o + values[t.G92_OFFSET + i] for i, o in enumerate(off)]
-            off[2] += self.tool_z
-            off[0] += self.tool_x
+            off[2] += state.tool_z
+            off[0] += state.tool_x
             for axis, shift in enumerate(self.spindle_offset):  # an alternate spindle (M91..M97)
                 off[axis] += shift
-            self._offset = off
+            state.cached = off
             if self.rotation is not None:
                 self._sync_rotation(off)
-        return self._offset
+        return state.cached
 
     def to_machine(self, work: list[float]) -> list[float]:
         """Programmed machine coordinates of a work position (G51/G68 are applied later, by stages)."""
@@ -103,17 +104,14 @@ class CoordinateSystems(MachineState):
         """Where the machine really is for a programmed pose."""
         if self.rotation is not None:
             pose = rotate_about(pose, self._rotation_pivot(), self.rotation.angle, self.rotation.plane)
-        if self.scaling is not None:
-            pose = scale_about(pose, (*self.scaling_center, 0.0), self.scaling)
-        return tuple(pose)
+        return tuple(self.scaling.scaled(pose))
 
     def program_frame(self, pose: list[float] | tuple[float, ...]) -> list[float]:
         """The programmed pose that puts the machine at ``pose``."""
-        if self.scaling is not None:
-            pose = scale_about(pose, (*self.scaling_center, 0.0), [1.0 / f for f in self.scaling])
+        programmed = self.scaling.unscaled(pose)
         if self.rotation is not None:
-            pose = rotate_about(pose, self._rotation_pivot(), -self.rotation.angle, self.rotation.plane)
-        return list(pose)
+            programmed = rotate_about(programmed, self._rotation_pivot(), -self.rotation.angle, self.rotation.plane)
+        return list(programmed)
 
     @contextmanager
     def machine_kept(self) -> Iterator[None]:
@@ -262,7 +260,7 @@ class CoordinateSystems(MachineState):
         diameter mode X is a diameter, as in a move, and the table's X offset a diameter value."""
         offsets = self.offset()
         if level == 10:
-            base_x, base_z = offsets[0] - self.tool_x, offsets[2] - self.tool_z
+            base_x, base_z = offsets[0] - self.offsets.tool_x, offsets[2] - self.offsets.tool_z
         else:
             base_x, base_z = (self.params.read(t.coord_offset_param(9, axis)) for axis in (0, 2))
         wear_x, wear_z = (self.params.read(base + tool) for base in (t.TOOL_X_WEAR, t.TOOL_Z_WEAR))
@@ -304,32 +302,32 @@ class CoordinateSystems(MachineState):
         wanted, solved = self._offset_reading(axes, self.offset()), self._solved_axes(axes)
         values: dict[int, float] = {}
         for axis in range(6):
-            tool = self.tool_z if axis == 2 else self.tool_x if axis == 0 else 0.0
+            tool = self.offsets.tool_z if axis == 2 else self.offsets.tool_x if axis == 0 else 0.0
             g5x = self.params.read(t.coord_offset_param(system, axis))
             if axis in solved:
                 values[axis] = wanted[axis] - g5x - tool
-            elif not self.g92_active:
+            elif not self.offsets.g92_active:
                 values[axis] = 0.0
         for axis, number in values.items():
             self.params.set(t.G92_OFFSET + axis, number)
-        self.g92_active = True
+        self.offsets.g92_active = True
         self._offsets_changed()
 
     def _g92_1(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)
         for axis in range(6):
             self.params.set(t.G92_OFFSET + axis, 0.0)
-        self.g92_active = False
+        self.offsets.g92_active = False
         self._offsets_changed()
 
     def _g92_2(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)
-        self.g92_active = False
+        self.offsets.g92_active = False
         self._offsets_changed()
 
     def _g92_3(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         self.refuse_with_comp(t.code_name("G", code), span)
-        self.g92_active = True
+        self.offsets.g92_active = True
         self._offsets_changed()
 
 

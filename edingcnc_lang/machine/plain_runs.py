@@ -1,6 +1,6 @@
 """Runs of plain G0/G1 lines turned into targets: ``plain_moves``, the Python reference of the compiled
 ``_speedups.plain_moves`` (``csrc/speedups_plain.c``), which the bulk path (``bulk.py``) calls for the
-straight lines of a run.  Both give the same columns for the same lines, to the bit (tests/test_speedups.py).
+straight lines of a run.  Both give the same columns for the same lines, to the bit (tests/speedups/test_speedups.py).
 """
 from __future__ import annotations
 

@@ -35,18 +35,19 @@ class ScalingWords(MachineState):
             work = self.rotation.pivot[:2]  # der Skalierungspunkt die gleich"
         offset = self.offset()
         with self.machine_kept():
-            self.scaling = (*factors, 1.0)
-            self.scaling_center = (work[0] + offset[0], work[1] + offset[1])
-        for index, value in enumerate((1.0, work[0], work[1], 0.0, *self.scaling)):
+            scaling = self.scaling
+            scaling.factors = (*factors, 1.0)
+            scaling.center = (work[0] + offset[0], work[1] + offset[1])
+        for index, value in enumerate((1.0, work[0], work[1], 0.0, *scaling.factors)):
             self.params.set(t.SCALING_ACTIVE + index, value)
         self.params.set(t.G68_ACTIVE + 1, work[0])  # #5191/#5192: the G68/G51 point (manual 3.1, p. 3)
         self.params.set(t.G68_ACTIVE + 2, work[1])
-        self.canon.event(ScalingEvent(self.path, self.line, True, self.scaling, self.scaling_center))
+        self.canon.event(ScalingEvent(self.path, self.line, True, scaling.factors, scaling.center))
 
     def scaling_off(self) -> None:
-        if self.scaling is not None:
+        if self.scaling.factors is not None:
             with self.machine_kept():
-                self.scaling = None
+                self.scaling.factors = None
             self.params.set(t.SCALING_ACTIVE, 0.0)
             self.canon.event(ScalingEvent(self.path, self.line, False))
 

@@ -1,9 +1,10 @@
 """The interpreter's machine state and the constants its parts share.
 
-``MachineState`` holds what one virtual machine knows (modal state, position, feed, tools,
-parameters, the call stack) and the few helpers every part needs: errors that name the line,
-the step budget and handing a move to the canon.  The parts of the interpreter (control flow,
-line steps, offsets, motion, ...) are mixins on top of it, assembled in ``interpreter.py``.
+``MachineState`` holds what one virtual machine knows (modal state, position, feed, spindle,
+parameters, the call stack, and one record per part that owns its state, ``parts.py``) and the
+few helpers every part needs: errors that name the line, the step budget and handing a move to
+the canon.  The parts of the interpreter (control flow, line steps, offsets, motion, ...) are
+mixins on top of it, assembled in ``interpreter.py``.
 """
 from __future__ import annotations
 
@@ -17,8 +18,6 @@ from typing import TYPE_CHECKING, Any, ClassVar, Literal, NamedTuple
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES, PLANES, Arc, Batch, Canon, Css, Move, Pose
-from edingcnc_lang.events import MessageEvent
-from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import Cancelled, Location, MachineError
@@ -27,9 +26,9 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
+from edingcnc_lang.machine.parts import CycleState, DeviceState, JobFiles, MessageLog, OffsetState, ScalingState, ZhcState
 
 if TYPE_CHECKING:
-    from edingcnc_lang.machine.canned import CycleState
     from edingcnc_lang.machine.geometry import ArcPlan
 
 INCH = t.MM_PER_INCH
@@ -189,7 +188,6 @@ class MachineState:
     # Built by interpreter.py from the parts: statement type -> method, and the steps of a line in order.
     _EXECUTE: ClassVar[StatementTable]
     _LINE_STEPS: ClassVar[tuple[tuple[Callable[..., None], str, str], ...]]
-    cycle: CycleState  # the canned cycles' state, declared and made by their part (canned.py)
 
     def __init__(self, canon: Canon, config: MachineConfig | None = None, host: Host | None = None, *,
                  max_steps: int | None = None, log_dir: Path | None = None, allow_exec: bool = False,
@@ -201,11 +199,7 @@ class MachineState:
         self.host = host or Host()
         self.max_steps = max_steps
         self.cancelled = False  # Run.cancel(): the next step check stops the run
-        self.log_dir = log_dir
-        # the files of the run (job, macro files, ini, outputs) as (device, inode): never the job's to write
-        self.own_files: frozenset[tuple[int, int]] = frozenset()
-        # a run that only looks (plot, view, sim, diff): the files the job writes are kept here, not on disk
-        self.kept_files: dict[Path, str] | None = None
+        self.files = JobFiles(log_dir)  # the files a job names: where they go, which it may not touch
         self.allow_exec = allow_exec
         self.block_delete = block_delete
         self.steps = 0
@@ -226,42 +220,30 @@ class MachineState:
         self.spindle = 5                   # M3, M4 or M5
         self.spindle_override = 100.0      # M51 P..: percent (manual p. 61)
         self.spindle_override_on = True    # M48 on, M49 off, M51 P<0 off
-        self.coolant: set[int] = set()
-        self.selected_tool = 0
-        self.tool_z = 0.0                  # active G43 length
-        self.tool_x = 0.0                  # active G43 X offset (lathe), a radius
-        self.length_follows_tool = False   # a plain G43 is in force: every M6 applies the new tool's length
-        self.g92_active = False
+        # the parts' own state, one record each (parts.py declares their fields)
+        self.devices = DeviceState()
+        self.offsets = OffsetState()
+        self.scaling = ScalingState()
+        self.zhc = ZhcState()
+        self.messages = MessageLog()
+        self.cycle = CycleState()
         self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
-        self.scaling: tuple[float, float, float] | None = None  # G51 factors x, y, z (the stage scales)
-        self.scaling_center = (0.0, 0.0)                        # G51 centre, programmed machine x, y
         self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
-        self.zhc: ZhcTable | None = None         # the Z height compensation table (ZHCINIT, ZHCL)
-        self.outputs: dict[int, bool] = {}
         self.kinematics_active = False
         self.tanknife = False
         self.clamped = False               # M26: the rotary axes are clamped until M27
-        self.pwm: dict[int, float] = {}    # PWM outputs (M54 E Q): duty in per mille
-        self.heaters: dict[str, float] = {}  # 3D printing (M104, M140, M106, ...): temperatures, fan
-        self.spindle_selected = 90         # M90 (the standard spindle) .. M97
-        self.resolution_factor = 1.0       # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
         self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
         # the runner sets it, an MDI session has no loaded job.
         self.job_tools: Callable[[], Sequence[int]] = tuple
         self.ended_by = "end of file"
-        self.messages: list[MessageEvent] = []
         # told of each warning a line earns (a limit of the machine changed what it asked for); the
         # runner reports them as it reports load warnings; once per file and line
         self.on_warning: Callable[[Diagnostic], None] | None = None
         self._warned: set[tuple[str, int, str]] = set()
         self.path = "<string>"
         self.line = 0
-        self._offset: list[float] | None = None
-        self._tool_cursor = 0
-        self._log_file: Path | None = None
-        self._logged = 0  # bytes written to log files by this run (limits.MAX_LOG_BYTES)
         self._init_params(simulation)
         if self.config.lathe:
             self.modal["plane"] = G_18
@@ -293,7 +275,7 @@ class MachineState:
         system = int(self.params.values[t.COORD_SYSTEM])
         self.modal["coord_system"] = t.COORD_SYSTEM_CODES[system - 1] if 1 <= system <= 9 else G_54
         self.params.values[t.COORD_SYSTEM] = float(t.COORD_SYSTEM_CODES.index(self.modal["coord_system"]) + 1)
-        self.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
+        self.offsets.g92_active = any(self.params.values[t.G92_OFFSET + i] for i in range(6))
 
     @property
     def inch(self) -> bool:
@@ -308,10 +290,6 @@ class MachineState:
         if span is not None and span.line:
             return Location(span.path, span.line, span.col)
         return Location(self.path, self.line)
-
-    def log_folder(self) -> Path:
-        """Where the files a job names (logfile, ZHCS, ZHCL) live: --log-dir, else the job's folder."""
-        return self.log_dir or Path(self.path).resolve().parent
 
     def warn(self, code: str, message: str, span: n.Span | None = None) -> None:
         """A warning at the line (``code`` from codes.py), once per file, line and code."""
@@ -355,7 +333,7 @@ class MachineState:
     def spindle_offset(self) -> tuple[float, float, float]:
         """The selected spindle's offsets (manual 3.7.2): M91's are #5391..#5393 (the ini's [SPINDLE_1] at the
         start; a program may write them), M92..M97 their [SPINDLE_n] sections', M90 none."""
-        m = self.spindle_selected
+        m = self.devices.spindle_selected
         if m == 91:
             values = self.params.values
             return (values[t.ALT_SPINDLE_OFFSET], values[t.ALT_SPINDLE_OFFSET + 1], values[t.ALT_SPINDLE_OFFSET + 2])
@@ -514,11 +492,8 @@ class MachineState:
         def hole_run(self, path: str, lines: Sequence[tuple[int, str]], first: int,
                      block: n.PlainBlock) -> int: ...                                        # canned.py
         def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None: ...  # threads.py
-        def _zhc_switch(self, on: bool, span: n.Span) -> None: ...                           # height_comp.py
         def _sync_move(self, end: list[float], pitch: float, span: n.Span | None) -> None: ...  # threads.py
         def _spindle_stop(self) -> None: ...                                                 # spindle_modes.py
-        def _select_spindle(self, m: int) -> None: ...                                       # devices.py
-        def _heaters_off(self) -> None: ...                                                  # devices.py
         def _step_feed(self, value: float, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None: ...
         def _step_spindle_speed(self, value: float, words: Mapping[str, float], g: Mapping[str, int],
                                 span: n.Span) -> None: ...

@@ -4,7 +4,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.machine import tables as t
+from edingcnc_lang.machine import devices, tables as t
 from edingcnc_lang.events import (CoolantEvent, DwellEvent, EndEvent, MCodeEvent, OperatorWaitEvent, OutputEvent,
                                   OverrideEvent, PathControlEvent, PauseEvent, ToolChangeEvent)
 from edingcnc_lang.host import checked_level
@@ -53,7 +53,7 @@ class LineSteps(MachineState):
                           span: n.Span) -> None:
         if value != int(value) or not 0 <= value <= t.MAX_TOOL:
             raise self.fail(f"tool T{format_value(value)} does not exist (tools are T0..T{t.MAX_TOOL})", span)
-        self.selected_tool = int(value)
+        self.offsets.selected_tool = int(value)
 
     def _step_tool_change(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         """M6 (manual 3.7.3): the change (the change_tool sub, or the built-in), then the spindle is
@@ -62,11 +62,11 @@ class LineSteps(MachineState):
         self._tool_change(span)
         if self.spindle != 5:
             self._spindle_stop()
-        if self.modal["length_offset"] == G_43 and self.length_follows_tool:
+        if self.modal["length_offset"] == G_43 and self.offsets.length_follows_tool:
             self._apply_length(G_43, {})
 
     def _step_coolant(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
-        self.coolant = set() if code == 90 else self.coolant | {code // 10}
+        self.devices.coolant = set() if code == 90 else self.devices.coolant | {code // 10}
         self.canon.event(CoolantEvent(self.path, self.line, code // 10))
 
     def _step_overrides(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -114,16 +114,16 @@ class LineSteps(MachineState):
             self.clamped = m == 26
             if "P" in words:  # manual 3.7.9 (p. 65): "P1 bedeutet AUX 1": the output that drives the brake
                 port = int(words["P"])
-                self.outputs[port] = m == 26
+                self.devices.outputs[port] = m == 26
                 self.canon.event(OutputEvent(self.path, self.line, port, m == 26, None))
         elif m == 100:  # manual 3.7.12: the axis resolution by a factor ("1,01 ist 1% mehr")
             factor = words.get("P", 1.0)
             if factor <= 0:
                 raise self.fail(f"M100 P{format_value(factor)}: the resolution factor must be more than 0 (1 is "
                                 "the standard)", span)
-            self.resolution_factor = factor
+            self.devices.resolution_factor = factor
         elif m in SPINDLE_SELECT:  # M90 standard spindle, M91..M97 the alternate spindles, probe, camera
-            self._select_spindle(m)
+            devices.select_spindle(self, m)
         self.canon.event(MCodeEvent(self.path, self.line, m, words.get("P")))  # M100 P: the axis resolution factor
 
     def _step_dwell(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
@@ -161,13 +161,13 @@ class LineSteps(MachineState):
 
     def _tool_change(self, span: n.Span) -> None:
         if t.TOOL_CHANGE_SUB in self.subs and all(f.name != t.TOOL_CHANGE_SUB for f in self.stack):
-            self.params.set(t.TOOL_NEW, float(self.selected_tool))
+            self.params.set(t.TOOL_NEW, float(self.offsets.selected_tool))
             self.params.set(t.TOOL_CHANGED, 0.0)
             self.call_sub(t.TOOL_CHANGE_SUB, span)
             return
         old = int(self.params.read(t.TOOL_CURRENT))
-        self.params.set(t.TOOL_CURRENT, float(self.selected_tool))
-        tool = self.selected_tool
+        self.params.set(t.TOOL_CURRENT, float(self.offsets.selected_tool))
+        tool = self.offsets.selected_tool
         self.params.set(t.TOOL_RADIUS, self.params.read(t.TOOL_DIAMETER + tool) / 2.0 if tool else 0.0)
         self._tool_offsets_read()
         self.canon.event(ToolChangeEvent(self.path, self.line, tool, old))
@@ -178,7 +178,7 @@ class LineSteps(MachineState):
             self._pwm(code, port, words, span)
             return
         if code in (54, 55):
-            self.outputs[port] = code == 54
+            self.devices.outputs[port] = code == 54
             self.canon.event(OutputEvent(self.path, self.line, port, code == 54, words.get("Q")))
         elif code == 56:
             try:
@@ -190,25 +190,17 @@ class LineSteps(MachineState):
                 level = -1.0  # the wait for high (L1) / low (L2) timed out
             self.params.set(t.IO_RESULT, level)
         else:
-            self.params.set(t.IO_RESULT, 1.0 if self._output_on(port) else 0.0)
-
-    def _output_on(self, port: int) -> bool:
-        """What ``M57 P<port>`` reads (manual 3.7.8, pp. 64-65): AUX1..n as M54/M55 (and M26/M27 P) set them,
-        51 machine on and 52 drive enable (on while a job runs), 61 flood (M8), 62 mist (M7), 63 the spindle
-        (tool) on, 64 its direction output (on under M3: "M3 ... TOOLDIR = ein", p. 62)."""
-        machine = {51: True, 52: True, 61: 8 in self.coolant, 62: 7 in self.coolant, 63: self.spindle != 5,
-                   64: self.spindle == 3}
-        return machine[port] if port in machine else bool(self.outputs.get(port))
+            self.params.set(t.IO_RESULT, 1.0 if self.devices.output_on(port, self.spindle) else 0.0)
 
     def _pwm(self, code: int, port: int, words: Mapping[str, float], span: n.Span) -> None:
         """PWM outputs: M54 E Q sets the duty (0..1000 per mille), M55 E sets 0, M57 E reads it into #5399."""
         if code == 57:
-            self.params.set(t.IO_RESULT, self.pwm.get(port, 0.0))
+            self.params.set(t.IO_RESULT, self.devices.pwm.get(port, 0.0))
             return
         duty = words.get("Q", 0.0) if code == 54 else 0.0
         if not 0.0 <= duty <= 1000.0:
             raise self.fail(f"M54 E{port} Q{format_value(duty)}: the PWM value Q must lie in 0..1000", span)
-        self.pwm[port] = duty
+        self.devices.pwm[port] = duty
         self.canon.event(OutputEvent(self.path, self.line, port, duty > 0, duty))
 
     def _dwell(self, words: Mapping[str, float], span: n.Span) -> None:
@@ -220,7 +212,7 @@ class LineSteps(MachineState):
     def _length_offset(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         """G43/G43.1/G49; on a lathe G43 applies the tool's X offset (a radius) as well as Z."""
         self.refuse_with_comp(f"changing the tool length offset ({t.code_name('G', code)})", span)
-        self.length_follows_tool = code == G_43 and "H" not in words
+        self.offsets.length_follows_tool = code == G_43 and "H" not in words
         self._apply_length(code, words, span)
 
     def _tool_offsets_read(self) -> None:
@@ -240,9 +232,9 @@ class LineSteps(MachineState):
         On a lathe the X offset too: the tool table's width + xDelta (G43.1: I) is a diameter
         value on a diameter lathe, so X moves by half of it (the real lathe's saved state: width
         -35.248, #5014 = -17.624)."""
-        self.tool_x = 0.0
+        self.offsets.tool_x = 0.0
         if code == G_49:
-            self.tool_z = 0.0
+            self.offsets.tool_z = 0.0
         else:
             tool = int(words.get("H", self.params.read(t.TOOL_CURRENT)))
             if not 0 <= tool <= t.MAX_TOOL:
@@ -250,21 +242,22 @@ class LineSteps(MachineState):
             lathe = self.config.lathe
             x_part = 0.5 if self.diameter_mode else 1.0
             if code == G_43_1:  # dynamic offset: K is the tool length, I the X offset on a lathe
-                self.tool_z = words.get("K", 0.0) * self.scale
-                self.tool_x = words.get("I", 0.0) * self.scale * x_part if lathe else 0.0
+                self.offsets.tool_z = words.get("K", 0.0) * self.scale
+                self.offsets.tool_x = words.get("I", 0.0) * self.scale * x_part if lathe else 0.0
             elif tool:
                 read = self.params.read
-                self.tool_z = read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool)  # zDelta: wear, mill and lathe
+                # zDelta: the wear, on a mill and a lathe
+                self.offsets.tool_z = read(t.TOOL_LENGTH + tool) + read(t.TOOL_Z_WEAR + tool)
                 if lathe:
-                    self.tool_x = (read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool)) * x_part
+                    self.offsets.tool_x = (read(t.TOOL_X_OFFSET + tool) + read(t.TOOL_X_WEAR + tool)) * x_part
             else:
-                self.tool_z = 0.0
+                self.offsets.tool_z = 0.0
             if code == G_43 and "H" not in words:
                 self._tool_offsets_read()
         self.modal["length_offset"] = code
-        self.params.set(t.TOOL_G43_OFFSET, self.tool_z)
+        self.params.set(t.TOOL_G43_OFFSET, self.offsets.tool_z)
         if self.config.lathe:
-            self.params.set(t.TOOL_G43_X_OFFSET, self.tool_x)
+            self.params.set(t.TOOL_G43_X_OFFSET, self.offsets.tool_x)
         self._offsets_changed()
 
     def _stop(self, code: int, span: n.Span) -> None:
@@ -280,12 +273,12 @@ class LineSteps(MachineState):
         self._spindle_override(48, None)
         if code != M_60:
             self.spindle = 5
-            if self.coolant:  # M9 (3.7.1), as an event like the program's own M9
+            if self.devices.coolant:  # M9 (3.7.1), as an event like the program's own M9
                 self.canon.event(CoolantEvent(self.path, self.line, 9))
-            self.coolant = set()
+            self.devices.coolant = set()
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
-        self._heaters_off()
+        devices.heaters_off(self)
         self.ended_by = f"M{code // 10}"
         self.canon.event(EndEvent(self.path, self.line, code // 10))
         raise ProgramEnd()

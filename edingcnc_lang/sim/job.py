@@ -88,7 +88,7 @@ class Simulator:
 
         def offset() -> tuple[float, float, float, float]:
             off = interp.offset()
-            return off[0], off[1], off[2] - interp.tool_z, interp.tool_z
+            return off[0], off[1], off[2] - interp.offsets.tool_z, interp.offsets.tool_z
         self._offset = offset
 
     def _tool(self, number: int) -> Tool:

@@ -113,7 +113,7 @@ def _final_state(outcome: Outcome, run: Run) -> None:
     outcome.params = (0.0, *(params.read(i) for i in range(t.FIRST_PARAM, t.LAST_PARAM + 1)))
     outcome.position = dict(zip(AXIS_KEYS, interp.reported_position()))
     outcome.machine = dict(zip(AXIS_KEYS, run.machine_position()))
-    outcome.messages = [(e.kind, e.text) for e in interp.messages]
+    outcome.messages = [(e.kind, e.text) for e in interp.messages.events]
     outcome.ended_by = interp.ended_by
 
 

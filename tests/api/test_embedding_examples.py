@@ -48,6 +48,7 @@ def test_the_macro_report_lists_subs_calls_and_writes() -> None:
 
 @pytest.mark.skipif(shutil.which("mypy") is None and importlib.util.find_spec("mypy") is None,
                     reason="mypy is not installed (CI installs it)")
+@pytest.mark.slow
 def test_the_examples_and_the_api_tests_pass_mypy_strict() -> None:
     done = subprocess.run([sys.executable, "-m", "mypy", "--strict", "--follow-imports=silent",
                            "--no-incremental", str(EXAMPLES), str(ROOT / "tests" / "api")],

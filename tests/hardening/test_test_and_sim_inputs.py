@@ -75,6 +75,7 @@ def _ecnc(*args: object, cwd: Path) -> subprocess.Popen[str]:
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not hasattr(signal, "SIGTERM") or os.name == "nt", reason="POSIX signals")
 def test_sigterm_ends_test_j_at_once_with_143(tmp_path: Path) -> None:
     (tmp_path / "test_a.toml").write_text('[[test]]\nname = "quick"\njob = "M30"\n')
@@ -91,6 +92,7 @@ def test_sigterm_ends_test_j_at_once_with_143(tmp_path: Path) -> None:
     assert "Traceback" not in process.stderr.read() if process.stderr else True
 
 
+@pytest.mark.slow
 def test_a_worker_that_dies_is_its_files_failure(tmp_path: Path) -> None:
     (tmp_path / "killer.py").write_text("import os, signal\nos.kill(os.getpid(), signal.SIGKILL)\n")
     (tmp_path / "kill.ini").write_bytes(b"[KINEMATICS]\r\nkinematicsDLLName = killer.py\r\n")

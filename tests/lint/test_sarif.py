@@ -54,6 +54,7 @@ def schema_validator() -> Any:
     return jsonschema.Draft4Validator(schema, format_checker=jsonschema.FormatChecker())  # all formats: uri-reference too
 
 
+@pytest.mark.slow
 def test_the_log_is_valid_against_the_official_schema(project: Path) -> None:
     validator = schema_validator()
     log = lint_sarif(*ODD_NAMES, str(project / ODD_NAMES[0]))
@@ -63,6 +64,7 @@ def test_the_log_is_valid_against_the_official_schema(project: Path) -> None:
     assert files == set(ODD_NAMES)
 
 
+@pytest.mark.slow
 def test_a_broken_uri_is_caught_by_the_check(project: Path) -> None:
     """The check can fail: the unencoded URI older versions wrote is a schema error."""
     validator = schema_validator()

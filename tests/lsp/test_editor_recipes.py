@@ -34,6 +34,7 @@ CHECK = """
 """
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(EMACS is None, reason="Emacs is not installed")
 def test_eglot_with_the_documented_setup_shows_findings_and_hover(tmp_path: Path) -> None:
     has_eglot = subprocess.run([EMACS or "emacs", "--batch", "--eval", "(progn (package-initialize) (require 'eglot))"],

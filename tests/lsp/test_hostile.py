@@ -126,6 +126,7 @@ def calls(count: int) -> str:
     return "Sub foo\n#1 = 1\nEndSub\n" + "GoSub foo\n" * count
 
 
+@pytest.mark.slow
 def test_other_requests_are_answered_while_a_rename_is_worked_out(client: LspClient, tmp_path: Path) -> None:
     job = tmp_path / "macro.cnc"
     uri = client.open(job, calls(100_000))
@@ -160,6 +161,7 @@ def _cpu_seconds(count: int) -> float:
     return time.process_time() - start
 
 
+@pytest.mark.slow
 def test_rename_and_references_take_time_linear_in_the_calls() -> None:
     small, large = _cpu_seconds(20_000), _cpu_seconds(80_000)
     assert large < 8 * max(small, 0.05)  # 4x the calls: about 4x the time (quadratic would be 16x)

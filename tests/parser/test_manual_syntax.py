@@ -51,6 +51,7 @@ def test_lists_of_values_keep_blanks_as_separators() -> None:
 SPACED = st.from_regex(r"[GXYZF] ?[+-]? ?[0-9]{1,3}( [0-9]{1,3}){0,2}( ?\. ?[0-9]{1,2}( [0-9])?)?", fullmatch=True)
 
 
+@pytest.mark.slow
 @settings(max_examples=200, deadline=None)
 @given(st.lists(SPACED, min_size=1, max_size=4).map(" ".join))
 def test_every_parse_path_agrees_on_numbers_with_blanks(line: str) -> None:

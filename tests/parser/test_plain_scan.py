@@ -1,6 +1,6 @@
 """The check pass's scan in Python (``parser.non_plain_lines``): the other lines of a chunk, wherever they stand.
 
-It runs on every core (tests/test_speedups.py puts it beside the compiled one where that is built).
+It runs on every core (tests/speedups/test_speedups.py puts it beside the compiled one where that is built).
 """
 from __future__ import annotations
 

@@ -27,6 +27,7 @@ def mill(folder: Path, body: str, diameter: float, resolution: float = 0.2) -> t
     return stock, result.findings
 
 
+@pytest.mark.slow
 def test_a_flat_of_depth_d_across_the_bar(tmp_path: Path) -> None:
     d = 3.0
     stock, found = mill(tmp_path, f"G0 X0 Y0\nG1 Z{R - d} F500\nG1 X140", diameter=30)
@@ -35,6 +36,7 @@ def test_a_flat_of_depth_d_across_the_bar(tmp_path: Path) -> None:
     assert found == []
 
 
+@pytest.mark.slow
 def test_an_indexed_second_flat_on_the_far_side(tmp_path: Path) -> None:
     d = 2.0
     stock, _ = mill(tmp_path, f"G0 X0 Y0\nG1 Z{R - d} F500\nG1 X140\nG0 Z25\nG0 X0 A180\nG1 Z{R - d}\nG1 X140",

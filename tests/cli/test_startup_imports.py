@@ -19,7 +19,7 @@ import pytest
 
 pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 RUN_TRIVIAL_JOB = """
 import sys

@@ -18,8 +18,9 @@ import pytest
 from tests.macro_tests.test_coverage_formats import parse_lcov
 
 yaml = pytest.importorskip("yaml")
+pytestmark = pytest.mark.slow  # the whole module: bash runs every recipe (pyproject's slow marker)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.MULTILINE | re.DOTALL)
 COMMAND = re.compile(r"^\s*(?:-\s+|run:\s+)?(ecnc\s.*)$")
 

@@ -14,7 +14,7 @@ from typing import Any
 
 import pytest
 
-GOLDEN = Path(__file__).parent / "golden"
+GOLDEN = Path(__file__).resolve().parent
 PROGRAMS = GOLDEN / "linuxcnc" / "programs"
 EXPECTED = GOLDEN / "linuxcnc" / "expected"
 DELTA = GOLDEN / "lineardelta" / "cases.json"

@@ -15,7 +15,7 @@ import pytest
 
 pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 CHECK = """
 import edingcnc_lang, sys

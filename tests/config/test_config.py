@@ -23,7 +23,7 @@ from edingcnc_lang.config.ini import read_ini
 from edingcnc_lang.syntax.input_limits import MAX_INI_BYTES
 
 SAMPLE = Path("/work/shared/samples/cnc.ini")
-DATA = Path(__file__).parent / "data" / "config"
+DATA = Path(__file__).resolve().parents[1] / "data" / "config"
 
 needs_sample = pytest.mark.skipif(not SAMPLE.is_file(), reason="shared sample cnc.ini not present")
 
@@ -343,7 +343,7 @@ def test_axis_limits_are_the_joints_on_a_trivial_machine_and_the_cartesian_box_w
     """One answer for the limits report and the pictures: which travel applies to the axes."""
     from edingcnc_lang.config.machine_config import MachineConfig, load_config
 
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     delta = load_config(root / "examples/delta/cnc.ini")
     assert delta.axis_limits() == (list(delta.cartesian_negative_limits), list(delta.cartesian_positive_limits))
     assert delta.axis_limits()[1][:3] == [400.0, 400.0, 200.0]  # not the carriages' 0..420 mm

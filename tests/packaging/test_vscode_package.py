@@ -9,7 +9,7 @@ from pathlib import Path
 
 from edingcnc_lang import HOMEPAGE
 
-VSCODE = Path(__file__).resolve().parent.parent / "editors" / "vscode"
+VSCODE = Path(__file__).resolve().parents[2] / "editors" / "vscode"
 
 
 def manifest() -> dict:

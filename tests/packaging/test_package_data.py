@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 spec = importlib.util.spec_from_file_location("sync_package_data", ROOT / "scripts" / "sync_package_data.py")
 assert spec and spec.loader
 sync = importlib.util.module_from_spec(spec)

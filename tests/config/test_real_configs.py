@@ -16,7 +16,7 @@ from edingcnc_lang import RunOptions, run_string
 from edingcnc_lang.config.machine_config import LATHES, MACHINE_TYPES, load_config
 from tests.cli_runner import invoke
 
-DATA = Path(__file__).parent / "data" / "config"
+DATA = Path(__file__).resolve().parents[1] / "data" / "config"
 LATHE = DATA / "lathe-4.03" / "cnc.ini"
 MILL = DATA / "mill-4.03" / "cnc.ini"
 NO_UNIT = "Sub x\nG0 X1\nEndSub\n"

@@ -1,0 +1,143 @@
+"""The state each part of the interpreter owns: one record per concern, held by ``MachineState``
+as one attribute (``machine.files``, ``machine.devices``, ``machine.offsets``, ``machine.scaling``,
+``machine.zhc``, ``machine.messages``, ``machine.cycle``).
+
+A part's fields are declared here and nowhere else, each with its meaning; the part's module is the
+one that changes them (named in each record's docstring), others only read them.  The records have
+slots, so a misspelt field is an error where it is written, and mypy checks every read.
+``tests/interpreter/test_machine_state.py`` holds the rule: every attribute of a machine is declared
+once, in ``MachineState.__init__`` or in one of these records.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TextIO
+
+from collections.abc import Sequence
+
+from edingcnc_lang.canon import Pose
+from edingcnc_lang.config.heightmap import ZhcTable
+from edingcnc_lang.events import MessageEvent
+from edingcnc_lang.machine.geometry import scale_about
+from edingcnc_lang.machine.job_files import OpenMode, job_file, open_job_file
+
+
+@dataclass(slots=True)
+class JobFiles:
+    """The files a job names itself (logfile, ZHCS, ZHCL; ``job_files.py`` has the rules): where they
+    are and what the job may not touch.  Set by the runner (``own``, ``kept``) and the debugger
+    (``log_dir``, ``MachineView.move_files``); ``messages.py`` and ``zhc_commands.py`` open files through it."""
+
+    log_dir: Path | None = None  # --log-dir; None: the folder of the job file running
+    own: frozenset[tuple[int, int]] = frozenset()  # the run's files (job, macro files, ini, outputs) as (device,
+    #                                                inode): never the job's to write
+    kept: dict[Path, str] | None = None  # a run that only looks (plot, view, sim, diff): what the job writes, by file
+
+    def named(self, raw: str, job: str) -> Path:
+        """The file ``raw`` names in the log folder of the job file ``job`` runs from (ValueError: no file name)."""
+        return job_file(self.log_dir or Path(job).resolve().parent, raw)
+
+    def open(self, path: Path, mode: OpenMode) -> TextIO:
+        """``path`` opened safely (OSError with a reason fit for the user), or in memory in a run that only looks."""
+        return open_job_file(path, mode, self.own, self.kept)
+
+
+@dataclass(slots=True)
+class DeviceState:
+    """The machine's outputs and attached devices (``devices.py``; coolant, outputs and PWM by ``steps.py``'s
+    M7..M9, M26/M27 P, M54..M57 steps): what ``M57`` reads back and what M30 switches off."""
+
+    coolant: set[int] = field(default_factory=set)         # 7 mist, 8 flood (M7/M8; M9 clears)
+    outputs: dict[int, bool] = field(default_factory=dict)  # AUX outputs as M54/M55 and M26/M27 P set them
+    pwm: dict[int, float] = field(default_factory=dict)     # PWM outputs (M54 E Q): duty in per mille
+    heaters: dict[str, float] = field(default_factory=dict)  # 3D printing (M104, M140, M106, ...): temperatures, fan
+    spindle_selected: int = 90      # M90 (the standard spindle) .. M97; its offsets: MachineState.spindle_offset
+    resolution_factor: float = 1.0  # M100 P: the axis resolution factor (3D printing, manual 3.7.12)
+
+    def output_on(self, port: int, spindle: int) -> bool:
+        """What ``M57 P<port>`` reads (manual 3.7.8, pp. 64-65), the spindle turning ``spindle`` (M3, M4 or M5):
+        AUX1..n as M54/M55 (and M26/M27 P) set them, 51 machine on and 52 drive enable (on while a job runs),
+        61 flood (M8), 62 mist (M7), 63 the spindle (tool) on, 64 its direction output (on under M3: "M3 ...
+        TOOLDIR = ein", p. 62)."""
+        machine = {51: True, 52: True, 61: 8 in self.coolant, 62: 7 in self.coolant, 63: spindle != 5, 64: spindle == 3}
+        return machine[port] if port in machine else bool(self.outputs.get(port))
+
+
+@dataclass(slots=True)
+class OffsetState:
+    """The tool in use and the offsets that are not parameters (``offsets.py``; the tool's by ``steps.py``'s
+    T, M6 and G43 steps; ``tool_cursor`` by ``named_commands.py``'s GetToolInfo)."""
+
+    selected_tool: int = 0             # the T word in force (M6 makes it the current tool, #5008)
+    tool_z: float = 0.0                # active G43 length
+    tool_x: float = 0.0                # active G43 X offset (lathe), a radius
+    length_follows_tool: bool = False  # a plain G43 is in force: every M6 applies the new tool's length
+    g92_active: bool = False           # G92 offsets (#5211..) apply (G92, G92.3 on; G92.1, G92.2 off)
+    cached: list[float] | None = None  # offset() until a parameter it depends on changes (None: recompute)
+    tool_cursor: int = 0               # GetToolInfo next: the tool number it gave last
+
+
+@dataclass(slots=True)
+class ScalingState:
+    """G51 as programmed (``scaling_words.py``; the ``Scaling`` stage does the geometry of the moves)."""
+
+    factors: tuple[float, float, float] | None = None  # G51 factors x, y, z (None: off)
+    center: tuple[float, float] = (0.0, 0.0)           # G51 centre, programmed machine x, y
+
+    def scaled(self, pose: Sequence[float]) -> Sequence[float]:
+        """Where the scaling puts a programmed pose (the stage's map, for what the machine reads back)."""
+        return pose if self.factors is None else scale_about(pose, (*self.center, 0.0), self.factors)
+
+    def unscaled(self, pose: Sequence[float]) -> Sequence[float]:
+        """The programmed pose the scaling puts at ``pose``."""
+        return pose if self.factors is None else scale_about(pose, (*self.center, 0.0), [1.0 / f for f in self.factors])
+
+
+@dataclass(slots=True)
+class ZhcState:
+    """Z height compensation (``zhc_commands.py``): the table ZHCINIT/ZHCADDPOINT build and ZHCL loads."""
+
+    table: ZhcTable | None = None
+
+
+@dataclass(slots=True)
+class MessageLog:
+    """What the job told the operator and its log file (``messages.py``)."""
+
+    events: list[MessageEvent] = field(default_factory=list)  # every msg, warnmsg, errmsg, dlgmsg and logmsg
+    log_file: Path | None = None  # where logmsg writes (logfile, else log.txt in the log folder at the first)
+    logged: int = 0               # bytes written to log files by this run (input_limits.MAX_LOG_BYTES)
+
+    def move_files(self, scratch: Path, folder: Path) -> None:
+        """A log file opened under ``scratch`` is in ``folder`` from here on."""
+        if self.log_file is not None and scratch in self.log_file.parents:
+            self.log_file = folder / self.log_file.relative_to(scratch)
+
+
+@dataclass(slots=True)
+class PendingMoves:
+    """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
+
+    start: Pose
+    kinds: list[str] = field(default_factory=list)
+    lines: list[int] = field(default_factory=list)
+    ends: list[Pose] = field(default_factory=list)
+    feeds: list[float] = field(default_factory=list)
+
+    def append(self, kind: str, line: int, end: Pose, feed: float) -> None:
+        self.kinds.append(kind)
+        self.lines.append(line)
+        self.ends.append(end)
+        self.feeds.append(feed)
+
+
+@dataclass(slots=True)
+class CycleState:
+    """What the canned cycles keep between lines (``canned.py``; ``bulk.py`` holds and hands on ``pending``)."""
+
+    words: dict[str, float] = field(default_factory=dict)  # sticky R, Z (the drill axis's word), P, Q, and G87's I J K
+    initial: float = 0.0                 # drill-axis level where the cycle sequence started (G98 returns there)
+    shift: dict[int, float] = field(default_factory=dict)  # G87: the sideways shift past the boring bar, by axis index
+    pitch: float = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
+    pending: PendingMoves | None = None  # straight moves held back as one batch (bulk.moves_held)
