@@ -29,7 +29,7 @@ def reformat(old: Path, new: Path) -> None:
     for number, line in enumerate(old.read_text(encoding="ascii").splitlines(), start=1):
         line = re.sub(r"\bG([0-3])\b", r"G0\1", line)
         line = re.sub(r"([XYZR]-?\d+)(?=\s|$)", r"\1.000", line)
-        out.append(f"N{number * 10} {line}")
+        out.append(f"N{number % 10_000 * 10} {line}")  # at most five digits (E115)
     new.write_text("\n".join(out) + "\n", encoding="ascii")
 
 
