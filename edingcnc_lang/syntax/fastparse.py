@@ -1,8 +1,9 @@
 """A hand-written parser for the most common macro lines, a fast path in front of Lark.
 
 It covers blocks of words and assignments with expressions, If/While heads,
-Else/End lines, Sub/GoSub and messages, and builds exactly the nodes (spans
-included) the Lark grammar builds; property tests compare the two on generated
+Else/End lines, Sub/GoSub, messages, the on/off switches and the commands (ZHC*,
+modbus, ...), with a ';' comment that may hold parentheses, and builds exactly the
+nodes (spans included) the Lark grammar builds; property tests compare the two on generated
 lines.  It never reports errors: on anything it is not sure about it gives up
 (returns ``GIVE_UP``) and the caller asks the grammar, which is the reference
 and explains mistakes.
