@@ -10,6 +10,8 @@ reports too) of each job, of ``ecnc diff`` of each pair, and the ratios diff / (
 time too: on a loaded machine the wall time says more about the others).
 
     python benchmarks/bench_diff.py [--lines N] [--repeat N]
+    python benchmarks/bench_diff.py --scaling 4    # OLD against itself reversed at 1, 2, 4, 8 times
+                                                   # --reversed-lines: linear when the time per move stays flat
 """
 from __future__ import annotations
 
@@ -17,6 +19,7 @@ import argparse
 import re
 import statistics
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 
 from bench_plot import write_job
@@ -29,7 +32,7 @@ def reformat(old: Path, new: Path) -> None:
     for number, line in enumerate(old.read_text(encoding="ascii").splitlines(), start=1):
         line = re.sub(r"\bG([0-3])\b", r"G0\1", line)
         line = re.sub(r"([XYZR]-?\d+)(?=\s|$)", r"\1.000", line)
-        out.append(f"N{number * 10} {line}")
+        out.append(f"N{number % 10_000 * 10} {line}")  # at most five digits (E115)
     new.write_text("\n".join(out) + "\n", encoding="ascii")
 
 
@@ -71,26 +74,47 @@ def reverse(old: Path, new: Path, lines: int) -> None:
     new.write_text("\n".join(out + ["G0 Z5", "M30"]) + "\n", encoding="ascii")
 
 
+def scaling(tmp: Path, old: Path, lines: int, steps: int, timed: Callable[..., tuple[float, float, float]]) -> None:
+    """The reversed pair at ``lines``, twice as many, ...: CPU microseconds per move of the diff and of running
+    both jobs; a diff that is linear in the moves whatever their order keeps its figure flat."""
+    for step in range(steps):
+        count = lines << step
+        forward, backward = tmp / f"forward{count}.nc", tmp / f"reversed{count}.nc"
+        reverse(old, backward, count)
+        reverse(backward, forward, count + 10)
+        moves = sum(1 for line in backward.read_text(encoding="ascii").splitlines() if line.startswith("G"))
+        both = timed("run", forward, "--json")[1] + timed("run", backward, "--json")[1]
+        wall, cpu, peak = timed("diff", forward, backward, "--json")
+        print(f"reversed, {moves:>9,} moves: diff {cpu / moves * 1e6:6.1f} us CPU a move ({cpu:.2f} s, {wall:.2f} s wall, "
+              f"{peak:.0f} MB), running both {both / moves * 1e6:6.1f} us a move: {cpu / both:.2f} x")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--lines", type=int, default=300_000)
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--reversed-lines", type=int, default=20_000)
+    parser.add_argument("--scaling", type=int, default=0,
+                        help="Only the reversed pair, at this many sizes from --reversed-lines on, each twice the last.")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
         old, same, edited = tmp / "old.nc", tmp / "same.nc", tmp / "edited.nc"
         write_job(old, args.lines)
-        reformat(old, same)
-        edit(old, edited)
-        forward, backward = tmp / "forward.nc", tmp / "reversed.nc"
-        reverse(old, backward, args.reversed_lines)
-        reverse(backward, forward, args.reversed_lines + 10)  # the same moves forwards, as the reversed job starts
 
         def timed(*command: object) -> tuple[float, float, float]:
             runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
             return (statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs),
                     max(r[2] for r in runs))
+
+        if args.scaling:
+            scaling(tmp, old, args.reversed_lines, args.scaling, timed)
+            return
+        reformat(old, same)
+        edit(old, edited)
+        forward, backward = tmp / "forward.nc", tmp / "reversed.nc"
+        reverse(old, backward, args.reversed_lines)
+        reverse(backward, forward, args.reversed_lines + 10)  # the same moves forwards, as the reversed job starts
 
         runs = {job.name: timed("run", job, "--json") for job in (old, same, edited, forward, backward)}
         for name, (wall, cpu, peak) in runs.items():

@@ -12,6 +12,15 @@ rest splits into parsing and the rules.
     python benchmarks/bench_lint.py --before /tmp/old   # side by side with an older checkout (its
                                                         # extensions built in place), run alternately
     python benchmarks/bench_lint.py --files 400 --jobs 2   # many files: -j 1 beside -j N
+    python benchmarks/bench_lint.py --corpus DIR    # real macro files instead (target: at most 0.4 s)
+
+``--corpus DIR`` (or the environment variable ``ECNC_BENCH_CORPUS``) reads every ``*.cnc`` file under
+DIR (``.git`` folders left out, sorted by path) and concatenates them, over and over, up to
+``--lines`` lines: real users' files are not copied into the project, so the benchmark reads them
+from wherever they were fetched (issue 42 used the public macro files of kgerrits/EdingCNC_turning_macros,
+Phobia943/CNC_Macro_for_Sorotec, Schallbert/macro_edingCNC_sorotec, Miniclubbin/Eding_CNC_Macros_English,
+GameOEver/EdingCNC_Macro and plylab-nl/JKR2513, cloned into one folder).  It also prints how many
+lines the Lark grammar read (the rest took the fast reader).
 """
 from __future__ import annotations
 
@@ -84,6 +93,41 @@ def generate(folder: Path, total: int) -> Path:
     return path
 
 
+def from_corpus(folder: Path, corpus: Path, total: int) -> Path:
+    """The ``*.cnc`` files under ``corpus`` concatenated (repeated as needed) into ``total`` lines."""
+    from edingcnc_lang.syntax.source import iter_file_lines
+
+    files = sorted(p for p in corpus.rglob("*") if p.suffix.lower() == ".cnc" and ".git" not in p.parts
+                   and p.is_file())
+    if not files:
+        raise SystemExit(f"{corpus}: no .cnc files")
+    text = [line for path in files for line in iter_file_lines(path)]
+    lines = (text * (total // len(text) + 1))[:total]
+    path = folder / "macro.cnc"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+def grammar_lines(path: Path) -> int:
+    """How many lines (and command arguments) of ``path`` the Lark grammar reads: the fast reader's misses."""
+    from edingcnc_lang.syntax import line_parser
+
+    count = 0
+    grammar = line_parser.parse_line_grammar
+
+    def counted(*args: object) -> object:
+        nonlocal count
+        count += 1
+        return grammar(*args)  # type: ignore[arg-type]
+
+    line_parser.parse_line_grammar = counted  # type: ignore[assignment]
+    try:
+        load_source(path, is_macro=True)
+    finally:
+        line_parser.parse_line_grammar = grammar
+    return count
+
+
 def _median_wall(cmd: list[str], repeat: int) -> float:
     return statistics.median(measure(cmd)[0] for _ in range(repeat))
 
@@ -129,12 +173,14 @@ def main() -> None:
     parser.add_argument("--files", type=int, help="Many files instead: this many, of --lines lines each.")
     parser.add_argument("--jobs", type=int, default=2, help="With --files: the -j to compare with -j 1.")
     parser.add_argument("--before", type=Path, help="An older checkout to time alongside (PYTHONPATH).")
+    parser.add_argument("--corpus", type=Path, default=os.environ.get("ECNC_BENCH_CORPUS") or None,
+                        help="A folder of real macro files to concatenate instead of the generated code.")
     args = parser.parse_args()
     if args.files:
         bench_many(args.files, args.lines, args.jobs, args.repeat)
         return
     with tempfile.TemporaryDirectory() as tmp:
-        path = generate(Path(tmp), args.lines)
+        path = from_corpus(Path(tmp), args.corpus, args.lines) if args.corpus else generate(Path(tmp), args.lines)
         one = Path(tmp) / "alone" / "one.cnc"  # a folder of its own: no macro.cnc beside it to load
         one.parent.mkdir()
         one.write_text(";@unit mm\nG0 X1\n")
@@ -149,7 +195,10 @@ def main() -> None:
                 envs[f"before: {name}"] = {**envs.get(name, {}), **older}
         runs = median_runs(cmds, args.repeat, envs)
         parse, walk, rules = _split(path, args.repeat)
-    print(f"lines:                      {lines}  (load average {' '.join(f'{x:.2f}' for x in os.getloadavg())})")
+        slow = grammar_lines(path)
+    what = f"real files under {args.corpus}" if args.corpus else "generated"
+    print(f"lines:                      {lines} {what}  (load average {' '.join(f'{x:.2f}' for x in os.getloadavg())})")
+    print(f"  read by the grammar:      {slow} ({100 * slow / lines:.2f} %)")
     for name, (wall, cpu, _rss) in runs.items():
         what = "ecnc lint" if "start-up" not in name else "  start-up (one-line file)"
         core = "python core" if name.endswith("python") else "compiled core"
@@ -158,8 +207,8 @@ def main() -> None:
     print(f"  parse (best, in process): {parse:.3f} s")
     print(f"  facts (best, in process): {walk:.3f} s")
     print(f"  rules (best, in process): {rules:.3f} s")
-    wall = runs["compiled"][0]
-    print(f"target <= 0.5 s: {'met' if wall <= 0.5 else 'NOT met'} ({lines / wall:,.0f} lines/s)")
+    wall, bound = runs["compiled"][0], 0.4 if args.corpus else 0.5
+    print(f"target <= {bound} s: {'met' if wall <= bound else 'NOT met'} ({lines / wall:,.0f} lines/s)")
 
 
 if __name__ == "__main__":

@@ -6,10 +6,10 @@ them without the engine (``runner.Run``), which re-exports them.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, overload
+from typing import TYPE_CHECKING, Any, overload
 
 from edingcnc_lang.canon import AXES, Event, Move, Pose
 from edingcnc_lang.diagnostics import Diagnostic
@@ -20,6 +20,9 @@ from edingcnc_lang.machine.observe import Observer
 from edingcnc_lang.motion.planner.estimate import Estimate
 from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
+
+if TYPE_CHECKING:
+    from edingcnc_lang.motion.planner.stage import TimedSink
 
 
 @dataclass(frozen=True)
@@ -144,6 +147,9 @@ class RunOptions:
     strict: bool = False  # macro lines that do not parse are errors at load, not warnings
     on_warning: Callable[[Diagnostic], None] | None = None  # each load warning, once, as it is found
     on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
+    # more outputs in this process (``ecnc diff``'s recorder): each hears every planned move, every batch of
+    # straight moves at once (``write_batch``: the columns, no Move per move) and every event, in program order
+    sinks: Sequence[TimedSink] = ()
     feed_override: float = 100.0   # percent
     rapid_override: float = 100.0  # percent, at most 100
     # False: time the moves only if an output reads time (trace, samples, events, on_timed_move);

@@ -95,7 +95,7 @@ class Run:
             self._writers.append(SamplesWriter(ensure_parent(options.samples)))
         if options.events:
             self._writers.append(EventsWriter(ensure_parent(options.events)))
-        sinks: list[TimedSink] = list(self._writers)
+        sinks: list[TimedSink] = [*self._writers, *options.sinks]
         timed = options.on_timed_move is not None
         if timed:  # all the callbacks in program order, as the planner hands each window on
             sinks.append(CallbackSink(options.on_move, options.on_event, options.on_timed_move))
@@ -530,8 +530,9 @@ def _add_column(error: EcncError, texts: dict[str, str], files: dict[str, Path],
 
 
 def _reads_time(options: RunOptions) -> bool:
-    """An output that reads each move's planned time: the trace's t column, samples, events, ``on_timed_move``."""
-    return bool(options.trace or options.samples or options.events or options.on_timed_move)
+    """An output that reads each move's planned time: the trace's t column, samples, events, ``on_timed_move``,
+    an in-process sink."""
+    return bool(options.trace or options.samples or options.events or options.on_timed_move or options.sinks)
 
 
 def run_file(job: str | os.PathLike[str], options: RunOptions | None = None) -> RunResult:

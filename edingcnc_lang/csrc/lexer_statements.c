@@ -2,8 +2,8 @@
 
 /* ------------------------------------------------------------------------------------------
  * statement(text, path, line, integer_digits, fraction_digits): what fastparse.parse_fast makes of a
- * line without '(' (the caller checks that, and the input limits): None for a blank or comment line,
- * the Block of words and assignments (as block() above), the Open/Close of a Sub/If/While head or
+ * line without '(' before its ';' comment (the caller checks that, and the input limits): None for a
+ * blank or comment line, the Block of words and assignments (as block() above), the Open/Close of a Sub/If/While head or
  * end line, a GoSub, a message or a dlgmsg, the same nodes as the Python methods build; the give-up
  * marker of setup() where that function gives up or this one does not try (logfile, home, ...).
  */
@@ -193,8 +193,29 @@ static PyObject *statement(PyObject *self, PyObject *args)
 
 /* statements(lines, path, first_line, shortest_problem, integer_digits, fraction_digits): statement()
  * of each line of a list (line numbers from ``first_line`` on), the give-up marker for a line that
- * is longer than ``shortest_problem`` code points or holds a '(' (line_parser.parse_line asks the
- * compiled reader about the other lines only). */
+ * is longer than ``shortest_problem`` code points or holds a '(' before its ';' comment (line_parser.parse_line
+ * asks the compiled reader about the other lines only). */
+/* Whether a '(' stands before the line's ';' comment, strings ("..." without a newline) left out: a ( )
+ * comment or an operator message, the grammar's; a '(' in the ';' comment is only its text. The same as
+ * fastparse.paren_before_comment. */
+static int paren_before_comment(const char *s, Py_ssize_t size)
+{
+    Py_ssize_t i, j;
+    for (i = 0; i < size; i++) {
+        if (s[i] == '"') {
+            for (j = i + 1; j < size && s[j] != '"' && s[j] != '\n'; j++)
+                ;
+            if (j < size && s[j] == '"')
+                i = j;  /* past the string */
+        } else if (s[i] == ';') {
+            return 0;
+        } else if (s[i] == '(') {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static PyObject *statements(PyObject *self, PyObject *args)
 {
     PyObject *lines, *path, *out;
@@ -217,7 +238,7 @@ static PyObject *statements(PyObject *self, PyObject *args)
             s = PyUnicode_AsUTF8AndSize(text, &size);
             if (s == NULL) {  /* a lone surrogate: the Python path reads it */
                 PyErr_Clear();
-            } else if (memchr(s, '(', (size_t)size) == NULL) {
+            } else if (!paren_before_comment(s, size)) {
                 if ((line = PyLong_FromSsize_t(first + i)) == NULL) {
                     Py_DECREF(out);
                     return NULL;

@@ -27,7 +27,6 @@ from edingcnc_lang.debug.arguments import arguments_problem
 from edingcnc_lang.debug.protocol import Channel, Message, ProtocolError, Reader
 from edingcnc_lang.debug.launch import Launch, LaunchError, launch_of
 from edingcnc_lang.debug.session import Session
-from edingcnc_lang.debug.data_breakpoints import launch_names
 from edingcnc_lang.debug.variables import PERSISTENT, SYSTEM, USER, parameter, scopes, variables
 
 CAPABILITIES = {
@@ -130,7 +129,6 @@ class Adapter:
             except EcncError as err:
                 raise RequestError(err.format()) from None
         self.session = Session(self.channel, launch)
-        self.session.names = launch_names(launch)
 
     def on_setBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         path = (args.get("source") or {}).get("path")

@@ -1,24 +1,26 @@
 """One run of a job, recorded for comparison: every move as a row of numbers, the events that matter.
 
-``record`` runs the job with ``RunOptions(on_timed_move=..., on_event=...)`` and keeps each move as
-one row of doubles in a flat ``array`` (no Python object per move survives the callback), then hands
-out numpy columns.  ``sample`` turns the moves into the dense polyline the alignment walks: every
+``record`` runs the job with a ``Recorder`` among the planner's outputs (``RunOptions.sinks``) and keeps
+each move as one row of doubles in a flat ``array``, a batch of straight moves as its rows at once from
+the batch's columns (no ``Move`` made per move), then hands out numpy columns.  ``sample`` turns the moves into the dense polyline the alignment walks: every
 move's end, arcs in pieces that keep their circle, long lines split every ``LINE_STEP``.
 """
 from __future__ import annotations
 
 import math
 from array import array
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from edingcnc_lang import speedups
-from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.events import CoolantEvent, DwellEvent, SpindleEvent, SpindleSpeedEvent, ToolChangeEvent
 from edingcnc_lang.kinematics.trajectory import ARC_ROW, arc_frame_rows
 from edingcnc_lang.motion.sinks import Timing
+from edingcnc_lang.motion.stage import Samples
 from edingcnc_lang.runner import Run, RunOptions, RunResult
 
 KINDS = ("rapid", "linear", "arc", "probe", "home")
@@ -83,7 +85,8 @@ class Recording:
 
 
 class Recorder:
-    """The run's callbacks: a flat array of doubles per move, a short tuple per event that matters."""
+    """The run's timed output (a planner sink): a flat array of doubles per move, a short tuple per
+    event that matters."""
 
     def __init__(self, job: str) -> None:
         self.job = job
@@ -98,15 +101,19 @@ class Recorder:
     def _line(self, path: str, line: int, caller: int) -> int:
         return caller if caller else (line if path == self.job else 0)
 
-    def move(self, move: Move, joints: Pose, timing: Timing) -> None:
-        line = self._line(move.path, move.line, move.caller)
+    def _place(self, line: int, caller: int) -> None:
+        """A move at job ``line`` (made in a sub if ``caller``): the events waiting for a line get theirs."""
         # events made inside a sub take the job line of the call: the next move's when it is made in a sub
         # too, else that of the sub's last move (the tool change macro's events after its moves)
-        placed = line if move.caller or not self._caller else self._caller
+        placed = line if caller or not self._caller else self._caller
         while self._unplaced:
             kind, _none, value, at = self.events[self._unplaced[-1]]
             self.events[self._unplaced.pop()] = (kind, placed, value, at)
-        self._caller = move.caller
+        self._caller = caller
+
+    def move(self, move: Move, joints: Pose, samples: Samples | None, timing: Timing) -> None:
+        line = self._line(move.path, move.line, move.caller)
+        self._place(line, move.caller)
         # straight moves that came in a bulk batch carry no spindle speed: the events tell it
         rpm = move.spindle or (self.rpm if self.turning else 0.0)
         self.rows.extend((self._kind.get(move.kind, 1), self.tool, line, move.feed, rpm, timing.start, timing.end))
@@ -115,6 +122,36 @@ class Recorder:
         # the arc's circle as the planner reads it: one meaning of an arc's frame, not a second derivation
         self.rows.extend(_FRAME_ROWS(move.start, (move.end,), (move.arc,))[1:]
                          if move.arc is not None else NO_ARC)
+
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        """A batch's rows at once from its columns, the same numbers ``move`` records for each of its
+        moves, its arcs' frames from one ``arc_frame_rows`` (a batch under constant surface speed, whose
+        moves each have their spindle speed: move by move)."""
+        count = len(batch)
+        if batch.css is not None or not count:
+            for move, t0, t1, speed in zip(batch.moves(), times, times[1:], speeds):
+                self.move(move, move.end, None, Timing(t0, t1, speed))
+            return
+        caller = batch.caller
+        self._place(self._line(batch.path, batch.lines[0], caller), caller)
+        table = np.empty((count, ROW))
+        kind = self._kind
+        table[:, 0] = [kind.get(k, 1) for k in batch.kinds]
+        table[:, 1] = self.tool
+        table[:, 2] = caller if caller else (batch.lines if batch.path == self.job else 0)
+        table[:, 3] = batch.feeds
+        table[:, 4] = batch.spindle or (self.rpm if self.turning else 0.0)
+        clock = np.asarray(times, dtype=float)
+        table[:, 5], table[:, 6] = clock[:count], clock[1:count + 1]
+        ends = np.asarray(batch.ends, dtype=float).reshape(count, 6)
+        table[0, 7:13] = batch.start
+        table[1:, 7:13] = ends[:-1]
+        table[:, 13:19] = ends
+        table[:, 19:] = NO_ARC
+        if batch.arcs is not None:
+            frames = np.asarray(_FRAME_ROWS(batch.start, batch.ends, batch.arcs), dtype=float).reshape(-1, ARC_ROW)
+            table[frames[:, 0].astype(np.int64), 19:] = frames[:, 1:]
+        self.rows.frombytes(table.tobytes())
 
     def event(self, event: Event) -> None:
         value: float
@@ -139,6 +176,9 @@ class Recorder:
             self._unplaced.append(len(self.events))
         self.events.append((event.kind, line, value, len(self.rows) // ROW))
 
+    def close(self) -> None:
+        """The planner's end of the run: nothing is left to write."""
+
     def recording(self, name: str, result: RunResult) -> Recording:
         # the float columns are views of the recorded rows, not copies: the rows are all there is
         table = np.frombuffer(self.rows, dtype=float).reshape(-1, ROW)
@@ -152,7 +192,7 @@ def record(job: Path, options: RunOptions, name: str | None = None) -> Recording
     """Run ``job`` (planned, for its time estimate) and record what it did; errors are raised as ``run`` raises them."""
     shown = name or str(job)
     recorder = Recorder(shown)
-    run = Run(replace(options, on_timed_move=recorder.move, on_event=recorder.event, plan=True))
+    run = Run(replace(options, sinks=(*options.sinks, recorder), plan=True))
     result = run.execute_file(job, name)
     return recorder.recording(shown, result)
 

@@ -1,8 +1,9 @@
 """A hand-written parser for the most common macro lines, a fast path in front of Lark.
 
 It covers blocks of words and assignments with expressions, If/While heads,
-Else/End lines, Sub/GoSub and messages, and builds exactly the nodes (spans
-included) the Lark grammar builds; property tests compare the two on generated
+Else/End lines, Sub/GoSub, messages, the on/off switches and the commands (ZHC*,
+modbus, ...), with a ';' comment that may hold parentheses, and builds exactly the
+nodes (spans included) the Lark grammar builds; property tests compare the two on generated
 lines.  It never reports errors: on anything it is not sure about it gives up
 (returns ``GIVE_UP``) and the caller asks the grammar, which is the reference
 and explains mistakes.
@@ -22,6 +23,7 @@ from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, LINE_NUMBER_DIGITS, MAX_NUMBER_DIGITS, SHORTEST_PROBLEM
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER
 from edingcnc_lang.syntax.blocks import Close, LineResult, Open
+from edingcnc_lang.syntax.tree_builder import command_values
 
 
 GIVE_UP = object()
@@ -64,9 +66,16 @@ _KEYWORDS = frozenset({
     "laserengrave", "kin", "preparelindeltahome", "zhcinitex", "zhcinit", "zhcaddpoint", "zhccheck", "zhcs",
     "zhcl", "gettoolinfo", "modbus", "getjobdistance", "getheightcontrolvact", "getheightcontrolvset",
     "service", "exec"})
-# The keywords handled here; a line starting with another one goes to Lark untokenized.
+# The keywords handled here and by the compiled reader; a line starting with another one goes to Lark
+# untokenized, unless it is a switch or a command (handled here only: rare lines, read by regular expressions).
 _HANDLED = frozenset({*_CLOSERS, *_MESSAGES, "sub", "gosub", "home", "hometandem", "logfile", "if", "while",
                       "dlgmsg"})
+_SWITCHES = frozenset({"tanknife", "homeisestop", "tcaguard", "zhc", "laserengrave"})  # the grammar's SWITCH_KW
+_COMMANDS = frozenset({"zhcinitex", "zhcinit", "zhcaddpoint", "zhccheck", "zhcs", "zhcl", "gettoolinfo", "modbus",
+                       "getjobdistance", "getheightcontrolvact", "getheightcontrolvset", "service", "exec"})
+_ON_OFF = re.compile(r"[ \t]*(on|off)(?![a-z0-9_])[ \t]*(?:;.*)?\Z", re.IGNORECASE)
+# a command's RAW_ARGS (the grammar's terminal) after the blanks, then the ';' comment
+_RAW_ARGS = re.compile(r"[ \t]*([^;\s][^;\n]*)?(?:;.*)?\Z")
 
 
 def _tokens_python(text: str, pos: int) -> list[Token]:
@@ -309,9 +318,11 @@ def _statement(text: str, path: str, line: int) -> LineResult:
     word = head.group(1).lower() if head else ""
     if head is None or word not in _KEYWORDS:
         return _block(text, path, line)
-    if word not in _HANDLED:  # kin, exec, tanknife, ...: the grammar's
-        raise _GiveUp
     start, pos = head.start(1) + 1, head.end()
+    if word in _SWITCHES or word in _COMMANDS:
+        return _switch_or_command(text, path, line, word, start, pos)
+    if word not in _HANDLED:  # kin, preparelindeltahome: the grammar's
+        raise _GiveUp
     end = pos + 1
     if word in _CLOSERS:
         if not _BLANK.match(text, pos):
@@ -402,9 +413,39 @@ def _logfile(text: str, path: str, line: int, start: int, pos: int) -> n.LogFile
     return n.LogFile(name, mode, rest.span(start, end))
 
 
+def _switch_or_command(text: str, path: str, line: int, word: str, start: int, pos: int) -> n.Switch | n.Command:
+    """``TCAGuard on``, ``ZHC off``: a Switch; ``ZHCINIT [#4104] 10 5``, ``modbus s1 f5 a22 v1``: a Command
+    whose arguments are the rest of the line up to its ';' comment (its span ends there, blanks included,
+    as the grammar's RAW_ARGS does), and their values as the grammar's builder reads them."""
+    if pos < len(text) and text[pos] not in " \t;":  # not the keyword alone (ZHCx, a non-ASCII letter)
+        raise _GiveUp
+    if word in _SWITCHES:
+        state = _ON_OFF.match(text, pos)
+        if state is None:
+            raise _GiveUp
+        return n.Switch(word, state.group(1).lower() == "on", n.Span(path, line, start, line, state.end(1) + 1))
+    raw = _RAW_ARGS.match(text, pos)
+    if raw is None:
+        raise _GiveUp
+    if raw.group(1) is None:
+        return n.Command(word, "", n.Span(path, line, start, line, pos + 1), None)
+    args = raw.group(1).strip()
+    values = command_values(args, raw.start(1) + 1, path, line)
+    return n.Command(word, args, n.Span(path, line, start, line, raw.end(1) + 1), values)
+
+
+def paren_before_comment(text: str) -> bool:
+    """Whether a '(' (a ( ) comment, an operator message) stands in ``text`` before its ';' comment,
+    strings left out: such a line is the grammar's, while a '(' inside the ';' comment is only its
+    text (``#4504 = 50 ; feed (mm/min)``).  ``_lexer.c``'s ``paren_before_comment`` is the same."""
+    bare = _STRINGS.sub("", text) if '"' in text else text
+    paren = bare.find("(")
+    return paren >= 0 and bare.find(";", 0, paren) < 0
+
+
 def parse_fast(text: str, path: str, line: int) -> LineResult | object:
     """The line's node, or GIVE_UP when the grammar must decide."""
-    if "(" in text and "(" in _STRINGS.sub("", text):  # ( ) comments and MSG comments: the grammar's business
+    if "(" in text and paren_before_comment(text):  # ( ) comments and MSG comments: the grammar's business
         return GIVE_UP
     try:
         return _statement(text, path, line)

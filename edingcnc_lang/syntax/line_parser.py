@@ -14,7 +14,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.syntax.fastparse import COMPILED_READER, GIVE_UP, compiled_block, compiled_statement, parse_fast
+from edingcnc_lang.syntax.fastparse import (
+    COMPILED_READER,
+    GIVE_UP,
+    compiled_block,
+    compiled_statement,
+    paren_before_comment,
+    parse_fast,
+)
 from edingcnc_lang.syntax.input_limits import (
     LINE_NUMBER_DIGITS,
     MAX_GCODE_LINE,
@@ -200,9 +207,9 @@ def _parse_line(text: str, path: str, line: int) -> LineResult:
     if len(text) > MAX_LINE_LENGTH:
         raise _LineError("E110", f"line is longer than {MAX_LINE_LENGTH} characters, the limit for one line "
                          "(EdingCNC itself reads at most 1055): split it", MAX_LINE_LENGTH + 1)
-    if COMPILED_READER and len(text) <= SHORTEST_PROBLEM and "(" not in text:
-        # A line this short passes every limit, and without '(' it holds no ( ) comment: the
-        # compiled reader may answer first.  It builds what the paths below build (the Block of a
+    if COMPILED_READER and len(text) <= SHORTEST_PROBLEM and ("(" not in text or not paren_before_comment(text)):
+        # A line this short passes every limit, and without '(' (but in its ';' comment) it holds no
+        # ( ) comment: the compiled reader may answer first.  It builds what the paths below build (the Block of a
         # plain line as _fast_block, the rest as parse_fast), and gives up on anything else.
         found = compiled_statement(text, path, line)
         if found is not GIVE_UP:

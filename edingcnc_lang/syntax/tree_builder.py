@@ -203,22 +203,8 @@ class Builder:
 
     def _command(self, tree: Tree) -> n.Stmt:
         args = str(tree.children[1]).strip() if len(tree.children) > 1 else ""
-        values = self._values(args, _token(tree.children[1]).column or 1) if args else None
+        values = command_values(args, _token(tree.children[1]).column or 1, self.path, self.line) if args else None
         return n.Command(str(tree.children[0]).lower(), args, self.span(tree), values)
-
-    def _values(self, args: str, col: int) -> tuple[n.Expr, ...] | None:
-        """A command's arguments read as expressions, each spanned where it stands in the line, or
-        None when they are not a list of expressions (a file name, words)."""
-        from edingcnc_lang.syntax.line_parser import _LineError, parse_line  # the line parser builds its trees here
-
-        pad = " " * max(0, col - 1 - len("msg "))  # "msg " ends where the arguments start
-        try:
-            message = parse_line(f"{pad}msg {args}", self.path, self.line)
-        except _LineError:
-            return None
-        if not isinstance(message, n.Message) or any(isinstance(item, (str, n.Stamp)) for item in message.items):
-            return None
-        return message.items  # type: ignore[return-value]  # (no strings or stamps: expressions)
 
     def _percent(self, tree: Tree) -> LineResult:
         return None
@@ -237,6 +223,44 @@ class Builder:
 _MSG_TEXT = re.compile(r"\(\s*msg\b[ \t,]*([^)]*)\)", re.IGNORECASE)
 _COMPARE_OPS = {"==": "==", "EQ": "==", "<>": "<>", "!=": "<>", "NE": "<>", "<": "<", "LT": "<",
                 ">": ">", "GT": ">", "<=": "<=", "LE": "<=", ">=": ">=", "GE": ">="}
+
+
+def command_values(args: str, col: int, path: str, line: int) -> tuple[n.Expr, ...] | None:
+    """A command's arguments (starting at column ``col``) read as expressions, each spanned where it
+    stands in the line, or None when they are not a list of expressions (a file name, words).  Shared
+    by the grammar's builder and the fast path (``fastparse``), so both read a command alike."""
+    from edingcnc_lang.syntax.line_parser import _LineError, parse_line  # the line parser builds its trees here
+
+    if _not_values(args):
+        return None
+    pad = " " * max(0, col - 1 - len("msg "))  # "msg " ends where the arguments start
+    try:
+        message = parse_line(f"{pad}msg {args}", path, line)
+    except _LineError:
+        return None
+    if not isinstance(message, n.Message) or any(isinstance(item, (str, n.Stamp)) for item in message.items):
+        return None
+    return message.items  # type: ignore[return-value]  # (no strings or stamps: expressions)
+
+
+def _not_values(args: str) -> bool:
+    """Whether ``args`` (no ';' in them) are surely not a list of expressions, without parsing them:
+    a '"' (a string, or a mistake) or a letter outside brackets (a word: ``s1 f5``, ``num 5025``,
+    ``table.txt``; a list item never starts with a letter) makes ``msg ARGS`` a message with a
+    string or stamp in it, or a syntax error.  A '(' comment could hide either: then it parses."""
+    if "(" in args:
+        return False
+    if '"' in args:
+        return True
+    depth = 0
+    for ch in args:
+        if ch == "[":
+            depth += 1
+        elif ch == "]":
+            depth -= 1
+        elif depth <= 0 and ch.isalpha():
+            return True
+    return False
 
 
 def make_block(words: list[n.Word], assigns: list[n.Assign], message: str | None,

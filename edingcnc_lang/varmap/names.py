@@ -234,6 +234,7 @@ def names_of_paths(paths: Iterable[str], texts: Mapping[str, str] | None = None)
     """The names in files read from disk (and in ``texts``: name -> text, a job given as text), with
     the sidecars beside the files: what the debugger and ``ecnc test`` show beside numbers.  A file
     that cannot be read names nothing."""
+    from edingcnc_lang.gcpause import whole_trees
     from edingcnc_lang.syntax.parser import StatementReader
     from edingcnc_lang.syntax.source import iter_file_lines, iter_text_lines
 
@@ -243,8 +244,11 @@ def names_of_paths(paths: Iterable[str], texts: Mapping[str, str] | None = None)
             sources.append((path, list(iter_file_lines(path))))
         except (OSError, UnicodeError):
             continue
-    files = [source_of(path, lines, tuple(StatementReader(lines, path, mode="tree", tolerant=True)))
-             for path, lines in sources]
+    # "lint": the plain word lines at the top level (a job's bulk) come as runs of lines, unparsed (names
+    # come from the lines' text, dialogs and subs); the nodes are dropped at once: the collector paused
+    with whole_trees():
+        files = [source_of(path, lines, tuple(StatementReader(lines, path, mode="lint", tolerant=True)))
+                 for path, lines in sources]
     return Names(files, (convention.sidecar_of(path) for path in dict.fromkeys(paths)))
 
 

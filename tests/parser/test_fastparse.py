@@ -63,10 +63,16 @@ others = st.one_of(
     st.builds(lambda name, mode: f"logfile {name}{mode}",
               st.sampled_from(['"log.txt"', "probe.txt", '"a;b (1).txt"', "x", "C:\\temp\\l.txt"]),
               st.sampled_from(["", " 0", " 1", " [1]", " -1"])),
+    st.builds(lambda name, state: f"{name} {state}", st.sampled_from(["TCAGuard", "zhc", "tanknife", "LaserEngrave"]),
+              st.sampled_from(["on", "OFF", "Off ", "x", "on1", "onx"])),
+    st.builds(lambda name, args: f"{name}{args}",
+              st.sampled_from(["ZHCINIT", "zhcaddpoint", "ZHCS", "modbus", "GetToolInfo", "exec", "ZHCcheck"]),
+              st.sampled_from(["", " ", " [#4104] [#4100] [#4101] ", " 20", " s1 f5 a22 v1", " num 5025",
+                               " table.txt", ' "a b.txt"', " -#1 [2 * 3]", " [1]x", " 1 %d", " ]", "\t2\t"])),
 )
 lines = st.one_of(others, blocks.map(lambda b: stmt_lines(b)[0]), messages.map(lambda m: stmt_lines(m)[0]), heads,
                   simple.map(lambda s: stmt_lines(s)[0]))
-comments = st.sampled_from(["", " ; note", ";x G1 X2", "   "])
+comments = st.sampled_from(["", " ; note", ";x G1 X2", "   ", "\t; feed (mm/min)", ' ;; "(x" (', "\t\t;(msg x)"])
 
 
 @pytest.mark.slow
@@ -85,13 +91,15 @@ def test_fast_parser_handles_the_common_lines() -> None:
                "While [#1 < 10]", "msg \"T\"#5011\" ok\"", "EndIf", "Else", "Sub home_x ; homes X",
                "GoSub change_tool", "X[ATAN[1]/[2]] Y[SQRT[4]]", "/G0 X[1]", "N10 #3 = 6 G1 X#3",
                "home z", "homeTandem x", 'dlgmsg "Setup" "width" 27', 'logfile "probe.txt" 1',
-               'errmsg "probe (T1) not found"']
+               'errmsg "probe (T1) not found"', "#4504 = 50\t; feed (mm/min)", "\tIF [#5397 == 0]\t; off (0= off)",
+               "TCAGuard off ;allow", "ZHC on", "ZHCINIT [#4104] [#4100] [#4101] ", "ZHCADDPOINT",
+               "modbus s1 f2 a23 n1 u723 ;; status (x)", "GetToolInfo num 5025", "ZHCS zHeightCompTable.txt"]
     for line in handled:
         assert _check(line), line
 
 
 def test_fast_parser_gives_up_on_what_it_does_not_cover() -> None:
-    for line in ["G0 X1 (comment)", "kin on", "tanknife off", "G0 X1+2", "If [1] AND [2]",
+    for line in ["G0 X1 (comment)", "kin on", "tanknife maybe", "ZHCx on", "ZHCS(a)", "G0 X1+2", "If [1] AND [2]",
                  "#1 == 2", "msg \"open", "Sub a b", "KIN ON", "G1 X"]:
         assert parse_fast(line, "f", 1) is GIVE_UP, line
 
