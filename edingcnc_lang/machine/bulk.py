@@ -46,11 +46,40 @@ from edingcnc_lang.machine.state import (
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
-_COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
+_COMPILED_ARCS = speedups.compiled("plain_arcs")  # None on the Python core
 _PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_moves  # the targets of a run of plain lines
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
 # length (``path_length``, what GetJobDistance counts).
 ArcLine = tuple[int, float, Pose, Arc, float]
+Lines = tuple[tuple[int, str], ...]
+# What a run of arc lines gives: the index of the first line not taken, the motion and feed in force after the
+# run, and its arcs as columns (line numbers, ends, feeds, arcs, lengths).
+ArcColumns = tuple[int, int, float, list[int], list[Pose], list[float], list[Arc], list[float]]
+ArcRun = Callable[[Lines, int, Pose, int, float, int], ArcColumns]
+
+
+def arc_run(read_arc: Callable[[str, Pose, int, float], ArcLine | None], lines: Lines, index: int, start: Pose,
+            motion: int, feed: float, room: int) -> ArcColumns:
+    """The arc lines of ``lines[index:]`` one after another, at most ``room`` of them, each as ``read_arc`` reads
+    it (``BulkPath._arc_of_words``), as columns.  The reference for ``_speedups.plain_arcs``."""
+    numbers: list[int] = []
+    ends: list[Pose] = []
+    feeds: list[float] = []
+    arcs: list[Arc] = []
+    lengths: list[float] = []
+    while index < len(lines) and len(numbers) < room:
+        taken = read_arc(lines[index][1], start, motion, feed)
+        if taken is None:
+            break
+        motion, feed, start, arc, length = taken
+        numbers.append(lines[index][0])
+        ends.append(start)
+        feeds.append(feed)
+        arcs.append(arc)
+        lengths.append(length)
+        index += 1
+    return index, motion, feed, numbers, ends, feeds, arcs, lengths
+
 class PendingMoves:
     """Straight moves a canned cycle makes one by one, held back to go to the canon as one ``Batch``."""
 
@@ -178,9 +207,8 @@ class BulkPath(MachineState):
     def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
         """Execute lines[first:] as long as each is a plain G0/G1 move or arc; returns the first it left.
 
-        ``plain_moves`` takes the straight lines; a line it stops at may be an arc (``_arc_reader``),
-        which joins the same batch, and the straight lines after it are scanned on.  After an arc the next
-        line is tried as an arc first: a CAM job's arcs come in runs.
+        ``plain_moves`` takes the straight lines; a line it stops at may start a run of arcs (``_arc_reader``),
+        which joins the same batch, and the straight lines after it are scanned on.
         """
         start = tuple(self.pos)
         budget = self.max_steps
@@ -194,49 +222,39 @@ class BulkPath(MachineState):
         in_force: list[float] = []
         arcs: list[Arc | None] | None = None
         lengths: dict[int, float] = {}  # the arcs' lengths, by their index among the moves
-        read_arc: Callable[[str, Pose, int, float], ArcLine | None] | None = None
+        read_arcs: ArcRun | None = None
         index = first
-        arc_next = False
         while index < len(lines) and room > 0:
-            if not arc_next:
-                index, done, after, feed, *columns = _PLAIN_MOVES(
-                    lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
-                    feed, room)
-                room -= done
-                if after != NO_MOTION:
-                    motion = after
-                if columns[1]:
-                    for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
-                        column.extend(values)  # type: ignore[attr-defined]
-                    if arcs is not None:
-                        arcs.extend([None] * len(columns[1]))
-                    pos = ends[-1]
-                if index >= len(lines) or room <= 0:
-                    break
+            index, done, after, feed, *columns = _PLAIN_MOVES(
+                lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
+                feed, room)
+            room -= done
+            if after != NO_MOTION:
+                motion = after
+            if columns[1]:
+                for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
+                    column.extend(values)  # type: ignore[attr-defined]
+                if arcs is not None:
+                    arcs.extend([None] * len(columns[1]))
+                pos = ends[-1]
+            if index >= len(lines) or room <= 0:
+                break
             text = lines[index][1]
             if motion not in (G_2, G_3) and "G" not in text and "g" not in text:
                 break  # no arc in force and no G word: not an arc (a canned cycle's next hole, say)
-            if read_arc is None:
-                read_arc = self._arc_reader()
-            taken = read_arc(text, pos, motion, feed)
-            if taken is None:
-                if not arc_next:
-                    break
-                arc_next = False  # a straight line, most likely
-                continue
-            motion, feed, end, arc, lengths[len(numbers)] = taken
+            if read_arcs is None:
+                read_arcs = self._arc_reader()
+            index, motion, feed, *run = read_arcs(lines, index, pos, motion, feed, room)
+            if not run[0]:
+                break  # neither a straight line nor an arc
             if arcs is None:
                 arcs = [None] * len(numbers)
-            kinds.append("arc")
-            numbers.append(lines[index][0])
-            ends.append(end)
-            feeds.append(feed)
-            in_force.append(feed)
-            arcs.append(arc)
-            pos = end
-            room -= 1
-            index += 1
-            arc_next = True
+            lengths.update(zip(range(len(numbers), len(numbers) + len(run[0])), run[4]))
+            kinds.extend(["arc"] * len(run[0]))
+            for column, values in zip((numbers, ends, feeds, in_force, arcs), (*run[:3], run[2], run[3])):
+                column.extend(values)  # type: ignore[attr-defined]
+            pos = ends[-1]
+            room -= len(run[0])
         self.steps += index - first
         if numbers:
             rpm, _css = self.spindle_along()
@@ -255,20 +273,35 @@ class BulkPath(MachineState):
             self.modal["motion"] = motion
         return index
 
-    def _arc_reader(self) -> Callable[[str, Pose, int, float], ArcLine | None]:
-        """``_arc_of_words`` on the core that runs, for the lines of one run (the state it reads cannot change
+    def _arc_reader(self) -> ArcRun:
+        """``arc_run`` on the core that runs, for the lines of one run (the state it reads cannot change
         within a run): the compiled one takes arcs with centre words or R, and leaves absolute centres and
         diameter programs to the Python reference (and a line it cannot scan, which the reference reads)."""
-        if _COMPILED_ARC is None or self.config.absolute_center_coords or self.diameter_mode:
-            return self._arc_of_words
+        if _COMPILED_ARCS is None or self.config.absolute_center_coords or self.diameter_mode:
+            return lambda lines, index, start, motion, feed, room: arc_run(
+                self._arc_of_words, lines, index, start, motion, feed, room)
         plane = PLANE_OF[self.modal["plane"]]
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
         fixed = (_PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
                  self.config.full_circle_theta_epsilon, TINY, Arc, plane)
 
-        def read(text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
-            found = _COMPILED_ARC(text, start, offset, scale, incremental, motion, feed, *fixed)
-            return self._arc_of_words(text, start, motion, feed) if found is False else found
+        def read(lines: Lines, index: int, start: Pose, motion: int, feed: float, room: int) -> ArcColumns:
+            columns: ArcColumns = (index, motion, feed, [], [], [], [], [])
+            while True:
+                index, scanned, motion, feed, *run = _COMPILED_ARCS(
+                    lines, index, start, offset, scale, incremental, motion, feed, room - len(columns[3]), *fixed)
+                for column, values in zip(columns[3:], run):
+                    column.extend(values)
+                if scanned or index >= len(lines) or len(columns[3]) >= room:
+                    return (index, motion, feed, *columns[3:])  # type: ignore[return-value]
+                start = columns[4][-1] if columns[4] else start
+                taken = self._arc_of_words(lines[index][1], start, motion, feed)  # a line the scan cannot read
+                if taken is None:
+                    return (index, motion, feed, *columns[3:])  # type: ignore[return-value]
+                motion, feed, start, arc, length = taken
+                for column, value in zip(columns[3:], (lines[index][0], start, feed, arc, length)):
+                    column.append(value)
+                index += 1
         return read
 
     def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
