@@ -244,17 +244,21 @@ class BulkPath(MachineState):
                 break  # no arc in force and no G word: not an arc (a canned cycle's next hole, say)
             if read_arcs is None:
                 read_arcs = self._arc_reader()
-            index, motion, feed, *run = read_arcs(lines, index, pos, motion, feed, room)
-            if not run[0]:
+            index, motion, feed, run_numbers, run_ends, run_feeds, run_arcs, run_lengths = read_arcs(
+                lines, index, pos, motion, feed, room)
+            if not run_numbers:
                 break  # neither a straight line nor an arc
             if arcs is None:
                 arcs = [None] * len(numbers)
-            lengths.update(zip(range(len(numbers), len(numbers) + len(run[0])), run[4]))
-            kinds.extend(["arc"] * len(run[0]))
-            for column, values in zip((numbers, ends, feeds, in_force, arcs), (*run[:3], run[2], run[3])):
-                column.extend(values)  # type: ignore[attr-defined]
+            lengths.update(zip(range(len(numbers), len(numbers) + len(run_numbers)), run_lengths))
+            kinds.extend(["arc"] * len(run_numbers))
+            numbers.extend(run_numbers)
+            ends.extend(run_ends)
+            feeds.extend(run_feeds)
+            in_force.extend(run_feeds)
+            arcs.extend(run_arcs)
             pos = ends[-1]
-            room -= len(run[0])
+            room -= len(run_numbers)
         self.steps += index - first
         if numbers:
             rpm, _css = self.spindle_along()
@@ -286,22 +290,24 @@ class BulkPath(MachineState):
                  self.config.full_circle_theta_epsilon, TINY, Arc, plane)
 
         def read(lines: Lines, index: int, start: Pose, motion: int, feed: float, room: int) -> ArcColumns:
-            columns: ArcColumns = (index, motion, feed, [], [], [], [], [])
+            columns: tuple[list[Any], ...] = ([], [], [], [], [])  # line numbers, ends, feeds, arcs, lengths
             while True:
                 index, scanned, motion, feed, *run = _COMPILED_ARCS(
-                    lines, index, start, offset, scale, incremental, motion, feed, room - len(columns[3]), *fixed)
-                for column, values in zip(columns[3:], run):
+                    lines, index, start, offset, scale, incremental, motion, feed, room - len(columns[0]), *fixed)
+                for column, values in zip(columns, run):
                     column.extend(values)
-                if scanned or index >= len(lines) or len(columns[3]) >= room:
-                    return (index, motion, feed, *columns[3:])  # type: ignore[return-value]
-                start = columns[4][-1] if columns[4] else start
+                if columns[1]:
+                    start = columns[1][-1]
+                if scanned or index >= len(lines) or len(columns[0]) >= room:
+                    break
                 taken = self._arc_of_words(lines[index][1], start, motion, feed)  # a line the scan cannot read
                 if taken is None:
-                    return (index, motion, feed, *columns[3:])  # type: ignore[return-value]
+                    break
                 motion, feed, start, arc, length = taken
-                for column, value in zip(columns[3:], (lines[index][0], start, feed, arc, length)):
+                for column, value in zip(columns, (lines[index][0], start, feed, arc, length)):
                     column.append(value)
                 index += 1
+            return (index, motion, feed, *columns)  # type: ignore[return-value]
         return read
 
     def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
