@@ -339,7 +339,10 @@ class BulkPath(MachineState):
             plan = self.arc_plan(plane, (motion == G_2) != self.config.reverse_g2g3, start, end, words)
         except ArcError:
             return None
-        return motion, feed, tuple(end), plan.arc, path_length(start, end, plan.arc)
+        # path_length of an arc of less than a turn is the plan's own length (the same angle, radius and
+        # helix, computed alike); a full circle counts its turn from the angle between its ends
+        length = plan.length if not plan.arc.full_turns else path_length(start, end, plan.arc)
+        return motion, feed, tuple(end), plan.arc, length
 
     def _motion_of(self, kind: str, arc: Arc | None) -> int:
         """The motion mode a move of the bulk path was made in."""
