@@ -1,4 +1,4 @@
-/* Part of _speedups.c (one translation unit: included there, in this order). A batch's bounds (column_bounds), arc lines (plain_arc, plain_arcs) and an arc's frame (arc_frame). */
+/* Part of _speedups.c (one translation unit: included there, in this order). A batch's bounds (column_bounds), runs of arc lines (plain_arcs) and an arc's frame (arc_frame). */
 
 /* motion.reach.column_bounds, compiled: the least and greatest value of each of the six columns of a
    sequence of poses of floats, as min() and max() of each column find them (the first of equal values;
@@ -275,36 +275,8 @@ static int check_plane(int plane)
     return -1;
 }
 
-static PyObject *plain_arc(PyObject *self, PyObject *args)
-{
-    PyObject *text, *start_obj, *offset_obj, *end, *arc = NULL;
-    struct arc_setting set;
-    double start[6], target[6], feed, length;
-    int motion, found;
-    (void)self;
-    if (!PyArg_ParseTuple(args, "UOOdpidipdddO!U", &text, &start_obj, &offset_obj, &set.scale, &set.incremental,
-                          &motion, &feed, &set.plane, &set.reverse, &set.tolerance, &set.epsilon, &set.tiny,
-                          &PyType_Type, &set.arc_class, &set.plane_name))
-        return NULL;
-    if (check_plane(set.plane) < 0 || read_six(start_obj, start) < 0 || read_six(offset_obj, set.offset) < 0)
-        return NULL;
-    found = read_arc_line(text, start, &set, &motion, &feed, target, &arc, &length);
-    if (found < 0)
-        return NULL;
-    if (found == 2)
-        Py_RETURN_FALSE;
-    if (found == 0)
-        Py_RETURN_NONE;
-    end = pose_tuple(target);
-    if (end == NULL) {
-        Py_DECREF(arc);
-        return NULL;
-    }
-    return Py_BuildValue("idNNd", motion, feed, end, arc, length);
-}
-
 /* machine/bulk.py's arc_run, compiled: the arc lines of lines[first:] (pairs of line number and text) one after
-   another, at most room of them, as plain_arc reads each, as columns: (index of the first line not taken,
+   another, at most room of them, each as BulkPath._arc_of_words reads it (read_arc_line), as columns: (index of the first line not taken,
    whether that line was scanned (False: the Python reference reads it), the motion and feed in force,
    line numbers, ends, feeds, arcs, lengths). */
 static PyObject *plain_arcs(PyObject *self, PyObject *args)

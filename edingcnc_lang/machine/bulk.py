@@ -3,14 +3,14 @@
 CAM output is mostly lines such as ``G1 X.. Y.. Z..`` and ``G2 X.. Y.. I.. J..``.  While the
 machine is in a state where such a line can only be a straight move or an arc (``batchable``, the
 one place that decides it), a run of them is turned into targets by ``plain_moves`` (straight
-lines, ``plain_runs.py``) and ``BulkPath._arc_of_words`` (an arc line: the general path's own target and
-``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
+lines, ``plain_runs.py``) and ``arc_run`` over ``BulkPath._arc_of_words`` (arc lines: the general path's own
+target and ``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
 general path would have made, with the same spindle and caller.  The step budget and
 GetJobDistance are counted by the general path's own helpers (``MachineState.travelled``); any
 other line, and every error, goes to the general path, so messages stay exactly the same.
 
-``plain_runs.plain_moves`` and ``_arc_of_words`` here are the references; ``_speedups.plain_moves`` and
-``_speedups.plain_arc`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
+``plain_runs.plain_moves`` and ``arc_run`` over ``_arc_of_words`` here are the references; ``_speedups.plain_moves``
+and ``_speedups.plain_arcs`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
 and ``ECNC_PURE_PYTHON`` is not set.  The equivalence tests run both and compare whole moves with
 the general path's.
 """
@@ -45,7 +45,7 @@ from edingcnc_lang.machine.state import (
 
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
-_PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
+_PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arcs numbers them
 _COMPILED_ARCS = speedups.compiled("plain_arcs")  # None on the Python core
 _PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_moves  # the targets of a run of plain lines
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
@@ -314,7 +314,7 @@ class BulkPath(MachineState):
         """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
-        The reference for ``_speedups.plain_arc``: the general path's own target and ``arc_plan``.
+        The reference for ``_speedups.plain_arcs``' reading of a line: the general path's own target and ``arc_plan``.
         """
         pairs = plain_words(text)
         words = {letter.upper(): float(number) for letter, number in pairs}
