@@ -54,7 +54,7 @@ def write_cam_job(path: Path, lines: int, ngc: bool = False, arcs: float = 0.1) 
     out = ["G21 G17 G90 G94 G40 G49 G80", "T1 M6", "S12000 M3", "G0 X0 Y0 Z5", "G1 Z-1 F300"]
     number, x, y = 10, 0.0, 0.0
     while len(out) < lines:
-        number += 2
+        number = number + 2 if number < 99_990 else 10  # N words go up to N99999 (a longer job starts again)
         draw = rng.random()
         if draw < arcs:
             nx, ny = x + rng.uniform(-5, 5), y + rng.uniform(-5, 5)

@@ -2,7 +2,7 @@
  *
  * non_plain_lines: syntax/parser.py's non_plain_lines (the check pass's scan for lines that are not plain).
  * plain_moves:     machine/plain_runs.py's plain_moves (runs of plain G0/G1 lines into targets).
- * plain_arc:       machine/bulk.py's BulkPath._arc_of_words (an arc line with centre words or R).
+ * plain_arcs:      machine/bulk.py's arc_run over BulkPath._arc_of_words (runs of arc lines with centre words or R).
  * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
  * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
@@ -44,7 +44,7 @@ static PyMethodDef methods[] = {
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
     {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
-    {"plain_arc", plain_arc, METH_VARARGS, "machine.bulk.BulkPath._arc_of_words for centre-word arcs, compiled."},
+    {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
     {NULL, NULL, 0, NULL},
 };

@@ -165,6 +165,7 @@ def entry() -> NoReturn:
     command line calls ``main()``, which returns.
     """
     _terminate_cleanly()
+    _one_blas_thread()
     until_exit: list[object] = []
     try:
         code = run_command_line(sys.argv[1:], until_exit)
@@ -172,6 +173,14 @@ def entry() -> NoReturn:
         code = stop.code if isinstance(stop.code, int) else EXIT_TERMINATED
     flush_quietly()
     os._exit(code)
+
+
+def _one_blas_thread() -> None:
+    """numpy's OpenBLAS starts a thread per core when numpy loads (the planner's arrays); ecnc makes no
+    matrix products big enough to share out, so in the ``ecnc`` program those threads only cost CPU time
+    (40-60 ms of a 0.15 s ``run --trace`` on 2 cores, issue 42).  Set before numpy loads; a user's own
+    ``OPENBLAS_NUM_THREADS`` wins.  No result changes: a thread count splits the work, not a sum's order."""
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 
 EXIT_TERMINATED = 128 + 15  # what a shell reports for a process ended by SIGTERM

@@ -3,14 +3,14 @@
 CAM output is mostly lines such as ``G1 X.. Y.. Z..`` and ``G2 X.. Y.. I.. J..``.  While the
 machine is in a state where such a line can only be a straight move or an arc (``batchable``, the
 one place that decides it), a run of them is turned into targets by ``plain_moves`` (straight
-lines, ``plain_runs.py``) and ``BulkPath._arc_of_words`` (an arc line: the general path's own target and
-``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
+lines, ``plain_runs.py``) and ``arc_run`` over ``BulkPath._arc_of_words`` (arc lines: the general path's own
+target and ``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
 general path would have made, with the same spindle and caller.  The step budget and
 GetJobDistance are counted by the general path's own helpers (``MachineState.travelled``); any
 other line, and every error, goes to the general path, so messages stay exactly the same.
 
-``plain_runs.plain_moves`` and ``_arc_of_words`` here are the references; ``_speedups.plain_moves`` and
-``_speedups.plain_arc`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
+``plain_runs.plain_moves`` and ``arc_run`` over ``_arc_of_words`` here are the references; ``_speedups.plain_moves``
+and ``_speedups.plain_arcs`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
 and ``ECNC_PURE_PYTHON`` is not set.  The equivalence tests run both and compare whole moves with
 the general path's.
 """
@@ -45,12 +45,40 @@ from edingcnc_lang.machine.state import (
 
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
-_PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arc numbers them
-_COMPILED_ARC = speedups.compiled("plain_arc")  # None on the Python core
+_PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arcs numbers them
+_COMPILED_ARCS = speedups.compiled("plain_arcs")  # None on the Python core
 _PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_moves  # the targets of a run of plain lines
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
 # length (``path_length``, what GetJobDistance counts).
 ArcLine = tuple[int, float, Pose, Arc, float]
+Lines = tuple[tuple[int, str], ...]
+# What a run of arc lines gives: the index of the first line not taken, the motion and feed in force after the
+# run, and its arcs as columns (line numbers, ends, feeds, arcs, lengths).
+ArcColumns = tuple[int, int, float, list[int], list[Pose], list[float], list[Arc], list[float]]
+ArcRun = Callable[[Lines, int, Pose, int, float, int], ArcColumns]
+
+
+def arc_run(read_arc: Callable[[str, Pose, int, float], ArcLine | None], lines: Lines, index: int, start: Pose,
+            motion: int, feed: float, room: int) -> ArcColumns:
+    """The arc lines of ``lines[index:]`` one after another, at most ``room`` of them, each as ``read_arc`` reads
+    it (``BulkPath._arc_of_words``), as columns.  The reference for ``_speedups.plain_arcs``."""
+    numbers: list[int] = []
+    ends: list[Pose] = []
+    feeds: list[float] = []
+    arcs: list[Arc] = []
+    lengths: list[float] = []
+    while index < len(lines) and len(numbers) < room:
+        taken = read_arc(lines[index][1], start, motion, feed)
+        if taken is None:
+            break
+        motion, feed, start, arc, length = taken
+        numbers.append(lines[index][0])
+        ends.append(start)
+        feeds.append(feed)
+        arcs.append(arc)
+        lengths.append(length)
+        index += 1
+    return index, motion, feed, numbers, ends, feeds, arcs, lengths
 
 
 class BulkPath(MachineState):
@@ -138,9 +166,8 @@ class BulkPath(MachineState):
     def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
         """Execute lines[first:] as long as each is a plain G0/G1 move or arc; returns the first it left.
 
-        ``plain_moves`` takes the straight lines; a line it stops at may be an arc (``_arc_reader``),
-        which joins the same batch, and the straight lines after it are scanned on.  After an arc the next
-        line is tried as an arc first: a CAM job's arcs come in runs.
+        ``plain_moves`` takes the straight lines; a line it stops at may start a run of arcs (``_arc_reader``),
+        which joins the same batch, and the straight lines after it are scanned on.
         """
         start = tuple(self.pos)
         budget = self.max_steps
@@ -154,49 +181,43 @@ class BulkPath(MachineState):
         in_force: list[float] = []
         arcs: list[Arc | None] | None = None
         lengths: dict[int, float] = {}  # the arcs' lengths, by their index among the moves
-        read_arc: Callable[[str, Pose, int, float], ArcLine | None] | None = None
+        read_arcs: ArcRun | None = None
         index = first
-        arc_next = False
         while index < len(lines) and room > 0:
-            if not arc_next:
-                index, done, after, feed, *columns = _PLAIN_MOVES(
-                    lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
-                    feed, room)
-                room -= done
-                if after != NO_MOTION:
-                    motion = after
-                if columns[1]:
-                    for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
-                        column.extend(values)  # type: ignore[attr-defined]
-                    if arcs is not None:
-                        arcs.extend([None] * len(columns[1]))
-                    pos = ends[-1]
-                if index >= len(lines) or room <= 0:
-                    break
+            index, done, after, feed, *columns = _PLAIN_MOVES(
+                lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
+                feed, room)
+            room -= done
+            if after != NO_MOTION:
+                motion = after
+            if columns[1]:
+                for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
+                    column.extend(values)  # type: ignore[attr-defined]
+                if arcs is not None:
+                    arcs.extend([None] * len(columns[1]))
+                pos = ends[-1]
+            if index >= len(lines) or room <= 0:
+                break
             text = lines[index][1]
             if motion not in (G_2, G_3) and "G" not in text and "g" not in text:
                 break  # no arc in force and no G word: not an arc (a canned cycle's next hole, say)
-            if read_arc is None:
-                read_arc = self._arc_reader()
-            taken = read_arc(text, pos, motion, feed)
-            if taken is None:
-                if not arc_next:
-                    break
-                arc_next = False  # a straight line, most likely
-                continue
-            motion, feed, end, arc, lengths[len(numbers)] = taken
+            if read_arcs is None:
+                read_arcs = self._arc_reader()
+            index, motion, feed, run_numbers, run_ends, run_feeds, run_arcs, run_lengths = read_arcs(
+                lines, index, pos, motion, feed, room)
+            if not run_numbers:
+                break  # neither a straight line nor an arc
             if arcs is None:
                 arcs = [None] * len(numbers)
-            kinds.append("arc")
-            numbers.append(lines[index][0])
-            ends.append(end)
-            feeds.append(feed)
-            in_force.append(feed)
-            arcs.append(arc)
-            pos = end
-            room -= 1
-            index += 1
-            arc_next = True
+            lengths.update(zip(range(len(numbers), len(numbers) + len(run_numbers)), run_lengths))
+            kinds.extend(["arc"] * len(run_numbers))
+            numbers.extend(run_numbers)
+            ends.extend(run_ends)
+            feeds.extend(run_feeds)
+            in_force.extend(run_feeds)
+            arcs.extend(run_arcs)
+            pos = ends[-1]
+            room -= len(run_numbers)
         self.steps += index - first
         if numbers:
             rpm, _css = self.spindle_along()
@@ -215,27 +236,44 @@ class BulkPath(MachineState):
             self.modal["motion"] = motion
         return index
 
-    def _arc_reader(self) -> Callable[[str, Pose, int, float], ArcLine | None]:
-        """``_arc_of_words`` on the core that runs, for the lines of one run (the state it reads cannot change
+    def _arc_reader(self) -> ArcRun:
+        """``arc_run`` on the core that runs, for the lines of one run (the state it reads cannot change
         within a run): the compiled one takes arcs with centre words or R, and leaves absolute centres and
         diameter programs to the Python reference (and a line it cannot scan, which the reference reads)."""
-        if _COMPILED_ARC is None or self.config.absolute_center_coords or self.diameter_mode:
-            return self._arc_of_words
+        if _COMPILED_ARCS is None or self.config.absolute_center_coords or self.diameter_mode:
+            return lambda lines, index, start, motion, feed, room: arc_run(
+                self._arc_of_words, lines, index, start, motion, feed, room)
         plane = PLANE_OF[self.modal["plane"]]
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
         fixed = (_PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
                  self.config.full_circle_theta_epsilon, TINY, Arc, plane)
 
-        def read(text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
-            found = _COMPILED_ARC(text, start, offset, scale, incremental, motion, feed, *fixed)
-            return self._arc_of_words(text, start, motion, feed) if found is False else found
+        def read(lines: Lines, index: int, start: Pose, motion: int, feed: float, room: int) -> ArcColumns:
+            columns: tuple[list[Any], ...] = ([], [], [], [], [])  # line numbers, ends, feeds, arcs, lengths
+            while True:
+                index, scanned, motion, feed, *run = _COMPILED_ARCS(
+                    lines, index, start, offset, scale, incremental, motion, feed, room - len(columns[0]), *fixed)
+                for column, values in zip(columns, run):
+                    column.extend(values)
+                if columns[1]:
+                    start = columns[1][-1]
+                if scanned or index >= len(lines) or len(columns[0]) >= room:
+                    break
+                taken = self._arc_of_words(lines[index][1], start, motion, feed)  # a line the scan cannot read
+                if taken is None:
+                    break
+                motion, feed, start, arc, length = taken
+                for column, value in zip(columns, (lines[index][0], start, feed, arc, length)):
+                    column.append(value)
+                index += 1
+            return (index, motion, feed, *columns)  # type: ignore[return-value]
         return read
 
     def _arc_of_words(self, text: str, start: Pose, motion: int, feed: float) -> ArcLine | None:
         """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
-        The reference for ``_speedups.plain_arc``: the general path's own target and ``arc_plan``.
+        The reference for ``_speedups.plain_arcs``' reading of a line: the general path's own target and ``arc_plan``.
         """
         pairs = plain_words(text)
         words = {letter.upper(): float(number) for letter, number in pairs}
@@ -260,7 +298,10 @@ class BulkPath(MachineState):
             plan = self.arc_plan(plane, (motion == G_2) != self.config.reverse_g2g3, start, end, words)
         except ArcError:
             return None
-        return motion, feed, tuple(end), plan.arc, path_length(start, end, plan.arc)
+        # path_length of an arc of less than a turn is the plan's own length (the same angle, radius and
+        # helix, computed alike); a full circle counts its turn from the angle between its ends
+        length = plan.length if not plan.arc.full_turns else path_length(start, end, plan.arc)
+        return motion, feed, tuple(end), plan.arc, length
 
     def _motion_of(self, kind: str, arc: Arc | None) -> int:
         """The motion mode a move of the bulk path was made in."""

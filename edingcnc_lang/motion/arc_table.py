@@ -9,6 +9,7 @@ tables of a window's batches with its moves, their indices counted in the window
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 import numpy as np
@@ -85,6 +86,28 @@ class ArcTable:
         lower, upper = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
         return ((lower[u] <= cu - radius) & (cu + radius <= upper[u])
                 & (lower[v] <= cv - radius) & (cv + radius <= upper[v]))
+
+    def extremes(self, ends: np.ndarray, low: Sequence[float], high: Sequence[float]) -> np.ndarray:
+        """The points (rows of six) where the arcs whose circle leaves ``low``..``high`` reach their extremes,
+        for all of them at once: ``reach.frame_extremes`` of each arc (its move ending at column ``ends[:, i]``
+        of the (6, n) ``ends``) with the same numbers (the same operations, element by element), grouped by
+        quadrant rather than arc by arc.  What the limits report and the limit check read of a batch's arcs."""
+        rows = self.rows[~self.circle_within(low, high)]
+        moves, u, v = rows[:, 0].astype(np.intp), rows[:, 1].astype(np.intp), rows[:, 2].astype(np.intp)
+        cu, cv, radius = rows[:, 3], rows[:, 4], np.maximum(rows[:, 5], rows[:, 6])
+        start_angle, sweep = rows[:, 7], rows[:, 8]
+        direction = np.where(sweep < 0.0, -1.0, 1.0)
+        reach = np.minimum(np.abs(sweep), 2.0 * math.pi) + 1e-12
+        points = []
+        for k in range(4):  # as machine.geometry.arc_extremes
+            quadrant = k * math.pi / 2
+            hit = np.flatnonzero((direction * (quadrant - start_angle)) % (2 * math.pi) <= reach)
+            point = ends[:, moves[hit]].T.copy()
+            rows_hit = np.arange(len(hit))
+            point[rows_hit, u[hit]] = cu[hit] + radius[hit] * math.cos(quadrant)
+            point[rows_hit, v[hit]] = cv[hit] + radius[hit] * math.sin(quadrant)
+            points.append(point)
+        return np.concatenate(points)
 
 
 _COLUMNS = {name: k for k, name in enumerate(("index", "u", "v", "cu", "cv", "r0", "r1", "start_angle", "sweep",

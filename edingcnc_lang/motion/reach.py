@@ -57,9 +57,10 @@ def table_beyond(arcs: ArcTable, ends: Sequence[Pose], lower: Sequence[float], u
     as ``beyond`` finds it arc by arc: only an arc whose circle leaves them can, at its extremes."""
     import numpy as np
 
-    moves = arcs.index
-    return any(first_outside(frame_extremes(arcs.frame(k), ends[moves[k]]), lower, upper) is not None
-               for k in np.flatnonzero(~arcs.circle_within(lower, upper)).tolist())
+    if arcs.circle_within(lower, upper).all():
+        return False  # the usual case, found without the ends as an array
+    points = arcs.extremes(np.array(ends, dtype=float).T, lower, upper)
+    return not ((np.asarray(lower) <= points) & (points <= np.asarray(upper))).all()
 
 
 def first_outside(points: Sequence[Pose], lower: Sequence[float], upper: Sequence[float]) -> tuple[int, float] | None:

@@ -282,3 +282,15 @@ def test_a_windows_unicode_job_is_decoded_as_utf16(tmp_path: Path, codec: str) -
     assert invoke("lint", job).exit_code == 0
     piped = invoke("run", "-", input=data)
     assert piped.exit_code == 0 and "<stdin>:3: msg: Höhe 10" in piped.stderr
+
+
+def test_the_ecnc_program_runs_openblas_on_one_thread_unless_told(monkeypatch: pytest.MonkeyPatch) -> None:
+    """numpy's BLAS thread pool only costs a run CPU time (issue 42); a user's own setting is kept."""
+    from edingcnc_lang.cli import _one_blas_thread
+
+    monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
+    _one_blas_thread()
+    assert os.environ["OPENBLAS_NUM_THREADS"] == "1"
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "4")
+    _one_blas_thread()
+    assert os.environ["OPENBLAS_NUM_THREADS"] == "4"

@@ -10,6 +10,7 @@ from edingcnc_lang.canon import Arc
 from edingcnc_lang.kinematics.trajectory import arc_geometry
 from edingcnc_lang.machine.geometry import circle_within
 from edingcnc_lang.motion.arc_table import ArcTable
+from edingcnc_lang.motion.reach import frame_extremes, table_beyond
 
 values = st.one_of(st.floats(-200, 200), st.sampled_from([0.0, -0.0, 10.0, -10.0]))
 poses = st.tuples(*[values] * 6)
@@ -32,6 +33,30 @@ def test_each_row_is_the_arcs_frame_and_the_circle_test_is_the_scalar_one(
     assert [repr(table.frame(k)) for k in range(len(table))] == [repr(frame) for _, frame in expected]
     within = [circle_within(f.center, max(f.r0, f.r1), (f.u, f.v), low, high) for _, f in expected]
     assert table.circle_within(low, high).tolist() == within
+
+
+@pytest.mark.slow
+@settings(max_examples=300, deadline=None)
+@given(poses, st.lists(st.tuples(poses, st.none() | arcs), min_size=1, max_size=10),
+       st.tuples(*[values] * 6), st.tuples(*[values] * 6))
+def test_the_tables_extremes_are_each_arcs_frame_extremes(
+        start: tuple[float, ...], moves: list[tuple[tuple[float, ...], Arc | None]],
+        low: tuple[float, ...], high: tuple[float, ...]) -> None:
+    """The vectorised extremes (the limits report's, the limit check's) are the very points
+    ``frame_extremes`` gives arc by arc, the same bits, and the limit check decides as it did."""
+    import numpy as np
+
+    ends, arcs_of = [end for end, _ in moves], [arc for _, arc in moves]
+    table = ArcTable.of(start, ends, arcs_of)
+    moves_of = table.index.tolist()
+    expected = sorted(repr(tuple(point)) for k in range(len(table)) if not table.circle_within(low, high)[k]
+                      for point in frame_extremes(table.frame(k), ends[moves_of[k]]))
+    points = table.extremes(np.array(ends, dtype=float).T, low, high)
+    assert sorted(repr(tuple(row)) for row in points.tolist()) == expected
+    one_by_one = any(not low[axis] <= value <= high[axis] for k in range(len(table))
+                     if not table.circle_within(low, high)[k]
+                     for point in frame_extremes(table.frame(k), ends[moves_of[k]]) for axis, value in enumerate(point))
+    assert table_beyond(table, ends, low, high) == one_by_one
 
 
 def test_a_window_keeps_its_arcs_in_order_as_moves_come_and_go() -> None:

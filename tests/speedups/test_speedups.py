@@ -84,28 +84,35 @@ ARC_STATES = [f"{plane} {distance} {units}\n{offsets}\n" for plane in ("G17", "G
 
 
 def test_the_arcs_of_plain_lines_are_the_same(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The compiled arc of a plain line against the Python one (the general path's target and arc_plan),
-    in every plane, G90/G91, mm and inch, with offsets and reversed G2/G3: the same record or the same None."""
-    monkeypatch.setattr(bulk, "_COMPILED_ARC", compiled.plain_arc)  # also when ECNC_PURE_PYTHON picks Python
-    made, full = 0, 0
+    """The compiled arcs of plain lines against the Python ones (the general path's target and arc_plan),
+    in every plane, G90/G91, mm and inch, with offsets and reversed G2/G3: the same records or the same
+    nothing, a line at a time and as runs of lines (from each line on, within a room of steps)."""
+    monkeypatch.setattr(bulk, "_COMPILED_ARCS", compiled.plain_arcs)  # also when ECNC_PURE_PYTHON picks Python
+    made, full, runs = 0, 0, 0
+    numbered = tuple(enumerate(ARC_LINES, 5))
     for state in ARC_STATES:
         run = Run(RunOptions())
         run.execute_text(state, "job.nc")
         interp = run.interpreter
         for reverse in (False, True):
             interp.config = replace(interp.config, reverse_g2g3=reverse)
-            read_arc = interp._arc_reader()
-            assert read_arc != interp._arc_of_words  # the compiled reader
-            for text in ARC_LINES:
-                for start in ((0.0, 0.0, 0.0), (1.5, -2.25, 10.0)):
-                    pose = (*start, 0.0, 0.0, 0.0)
-                    for motion in (0, 20, 30):
-                        for feed in (0.0, 300.0):
-                            arc = read_arc(text, pose, motion, feed)
-                            assert arc == interp._arc_of_words(text, pose, motion, feed), (state, text, pose, motion)
-                            made += arc is not None
-                            full += arc is not None and arc[3].full_turns == 1
-    assert made > 2000 and full > 50
+            read_arcs = interp._arc_reader()
+            for start in ((0.0, 0.0, 0.0), (1.5, -2.25, 10.0)):
+                pose = (*start, 0.0, 0.0, 0.0)
+                for motion in (0, 20, 30):
+                    for feed in (0.0, 300.0):
+                        for index, (number, text) in enumerate(numbered):
+                            one = read_arcs(((number, text),), 0, pose, motion, feed, 1)
+                            assert one == bulk.arc_run(interp._arc_of_words, ((number, text),), 0, pose, motion,
+                                                       feed, 1), (state, text, pose, motion)
+                            made += len(one[3])
+                            full += bool(one[3]) and one[6][0].full_turns == 1
+                            for room in (2, 40):
+                                several = read_arcs(numbered, index, pose, motion, feed, room)
+                                assert several == bulk.arc_run(interp._arc_of_words, numbered, index, pose, motion,
+                                                               feed, room), (state, text, pose, motion, room)
+                                runs += len(several[3]) > 1
+    assert made > 2000 and full > 50 and runs > 100
 
 
 coordinates = st.one_of(st.floats(-1e4, 1e4), st.sampled_from([0.0, -0.0, 5.0, -5.0, 1e-9]))

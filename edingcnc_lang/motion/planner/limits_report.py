@@ -14,7 +14,6 @@ from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.motion.reach import frame_extremes
 
 if TYPE_CHECKING:
     import numpy as np
@@ -41,10 +40,8 @@ class LimitsReport:
         low, high = np.minimum(ends.min(axis=1), starts[:, 0]), np.maximum(ends.max(axis=1), starts[:, 0])
         # an arc whose whole circle lies within what the end points reach cannot reach further
         inside_low, inside_high = np.minimum(low, self.axis_low).tolist(), np.maximum(high, self.axis_high).tolist()
-        moves = arcs.index
-        extremes = [point for k in np.flatnonzero(~arcs.circle_within(inside_low, inside_high)).tolist()
-                    for point in frame_extremes(arcs.frame(k), tuple(ends[:, moves[k]].tolist()))]
-        if extremes:
+        extremes = arcs.extremes(ends, inside_low, inside_high)
+        if len(extremes):
             low, high = np.minimum(low, np.min(extremes, axis=0)), np.maximum(high, np.max(extremes, axis=0))
         self._widen("axis", low.tolist(), high.tolist())
         if joints is None:  # the usual case: joints = position everywhere
