@@ -24,7 +24,7 @@ def to_json(result: BarResult | CylinderResult) -> dict[str, Any]:
     stock = result.stock
     size = [round(2 * stock.radius, 6), round(stock.length, 6)]
     where = {"bar": [*size, round(stock.start + stock.length, 6)]} if isinstance(result, BarResult) else \
-        {"cylinder": [*size, round(stock.start, 6)]}
+        {"cylinder": [*size, round(stock.start, 6)], "axis": result.axis}
     doc: dict[str, Any] = {
         "stock": {**where, "resolution": stock.resolution, "cells": [stock.shape[0], stock.shape[1]],
                   "removed_volume": round(stock.removed_volume, 3),
