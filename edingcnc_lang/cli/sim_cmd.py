@@ -90,7 +90,8 @@ class BarSize(click.ParamType):
 @job_or_stdin_argument
 @click.option("--stock", "box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
               help="The stock as a box in the job's work coordinates (its first work offset); "
-                   "cylinder:DIAMETER,LENGTH[,X0]: a bar on the rotary A axis (along X from X0, through Y0 Z0).")
+                   "cylinder:DIAMETER,LENGTH[,X0]: a bar on the rotary A axis (along X from X0, through Y0 Z0; "
+                   "on B where the ini shows B and hides A: along Y from Y0, through X0 Z0).")
 @click.option("--stock-stl", metavar="FILE", type=EXISTING_FILE,
               help="The stock as an STL mesh (work coordinates); its top surface is what is cut.")
 @click.option("--bar", metavar="DIAMETER,LENGTH[,Z0]", type=BarSize(),
@@ -208,8 +209,6 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
         raise usage_error("--compare-stl is for the box stock; with round stock, write the part with --stl")
     if bar is not None and chuck is not None and chuck >= bar[1]:
         raise usage_error(f"--chuck {chuck:g} grips the whole bar ({bar[1]:g} mm long)")
-    if bar is None and stl is not None:
-        raise usage_error("--stl is for --bar (a turned part); a bar on the rotary axis is drawn with -o")
     check_outputs({"-o": output, "--stl": stl}, [job, tools_file, *machine.input_files()])
     fmt = picture_target(Path(output)) if output else None
     tools = load_tools(tools_file) if tools_file else None
@@ -234,6 +233,9 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
     if stl:
         from edingcnc_lang.sim.stl import write_stl
 
-        write_stl(ensure_parent(Path(stl)), bar_output.bar_mesh(stock))
+        from edingcnc_lang.sim.rotary_output import rotary_mesh
+
+        write_stl(ensure_parent(Path(stl)), bar_output.bar_mesh(stock) if isinstance(result, BarResult) else
+                  rotary_mesh(stock, result.axis))
     return _report(as_json, lambda: bar_output.to_json(result), lambda: bar_output.summary(result),
                    (output, stl), result.error, failing(result.findings))
