@@ -6,7 +6,12 @@ with a 6 mm ball end mill: 200 rows 0.5 mm apart, 1,000 points 0.1 mm apart on e
 ``run --trace``).  Also prints the memory of the height field of a
 1 m x 1 m table at 0.25 mm, and the peak memory of each command.
 
-    python benchmarks/bench_sim.py [--repeat N] [--rows N]
+``--only wrap``: a 200,000-line 4-axis wrapping job instead (``--stock cylinder:40,100,20`` at
+0.2 mm, a 3 mm flat end mill with its shank checked, X and A moving together on every line: 200
+passes of 1,000 lines, each pass 100 mm along the bar and a turn round it, 1 mm deep), against
+``ecnc run --trace`` of it, the commands alternating (the bound: the simulation within 20 times).
+
+    python benchmarks/bench_sim.py [--repeat N] [--rows N] [--only wrap]
 """
 from __future__ import annotations
 
@@ -45,11 +50,50 @@ def write_job(path: Path, rows: int, points: int = 1000) -> int:
     return len(lines)
 
 
+def write_wrap(path: Path, passes: int, points: int = 1000) -> int:
+    """The wrapping job on the A axis; returns its number of lines."""
+    lines = ["G21 G90 G17", "S18000 M3", "G0 Z25", "G0 X20 Y0 A0", "G1 Z19 F1000"]
+    for row in range(passes):
+        shift = 1.8 * row
+        steps = range(points) if row % 2 == 0 else range(points - 1, -1, -1)
+        lines += [f"G1 X{20 + 0.1 * k:.3f} A{shift + 0.36 * k:.3f} F3000" for k in steps]
+    lines += ["G0 Z25", "M30"]
+    path.write_text("\n".join(lines) + "\n", encoding="ascii")
+    return len(lines)
+
+
+def bench_wrap(tmp: Path, repeat: int, passes: int) -> None:
+    """The wrapping job: ``ecnc sim --stock cylinder:`` and ``run --trace`` alternately."""
+    job, tools = tmp / "wrap.nc", tmp / "tools.toml"
+    count = write_wrap(job, passes)
+    tools.write_text('[tool.0]\nshape = "flat"\ndiameter = 3\nflute_length = 6\n', encoding="ascii")
+    commands = {"run --trace": ECNC + ["run", "--trace", str(tmp / "trace.csv"), str(job), "-q"],
+                "ecnc sim": ECNC + ["sim", str(job), "--stock", "cylinder:40,100,20", "--resolution", "0.2",
+                                    "--tools", str(tools), "--tool", "0"]}
+    runs: dict[str, list[tuple[float, float, float]]] = {name: [] for name in commands}
+    print(f"{count:,} lines (4-axis wrap)")
+    for _ in range(repeat):  # alternating: the machine's load falls on both alike
+        for name, command in commands.items():
+            runs[name].append(measure(command))
+    for name, results in runs.items():
+        print(f"{name:>11}: {statistics.median(r[0] for r in results):6.2f} s wall, "
+              f"{statistics.median(r[1] for r in results):6.2f} s CPU, {max(r[2] for r in results):5.0f} MB peak")
+    cpu = {name: statistics.median(r[1] for r in results) for name, results in runs.items()}
+    wall = {name: statistics.median(r[0] for r in results) for name, results in runs.items()}
+    print(f"sim / run --trace: {cpu['ecnc sim'] / cpu['run --trace']:.1f}x in CPU time, "
+          f"{wall['ecnc sim'] / wall['run --trace']:.1f}x in wall time (bound: 20x)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--rows", type=int, default=200)
+    parser.add_argument("--only", choices=["wrap"], help="the 4-axis wrapping job on round stock instead")
     args = parser.parse_args()
+    if args.only == "wrap":
+        with tempfile.TemporaryDirectory() as folder:
+            bench_wrap(Path(folder), args.repeat, args.rows)
+        return
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
         job, tools = tmp / "finish.nc", tmp / "tools.toml"

@@ -9,7 +9,7 @@ set ``|u| <= half`` (u = p - tip p, half = sqrt(r² - dx²)) with ``bottom + g(u
 top``, g the cutter's profile at the distance sqrt(dx² + u²) from its axis (0 for a flat end, the
 shank and the holder).  That set is convex, so a ray meets it in one interval of radii: for a flat
 bottom the interval is closed-form (a strip and two half-planes), for a ball too (a disc joined to
-the strip above its centre); for a bull or vee cutter
+the strip above its centre) and a vee (the cone's upper nappe: a quadratic); for a bull cutter
 ρ s - tip q - g(ρ c - tip p) is concave along the ray, so its top is found by a golden-section
 search and the interval's two ends by bisection on either side (exact to ``TOLERANCE``).
 """
@@ -78,6 +78,10 @@ def stamps(stock: RoundStock, poses: np.ndarray, radius: float, part: Part | Non
     if part.cutter is not None and part.cutter.shape == "ball" and keep.any():
         k = np.flatnonzero(keep)
         low[k], high[k] = _ball(part, dx[k], y[k], z[k], half[k], c[k], s[k])
+    elif part.cutter is not None and part.cutter.shape == "vee" and keep.any():
+        k = np.flatnonzero(keep)
+        lo, hi = _vee(part.cutter.cone_slope, dx[k], y[k], z[k], c[k], s[k])
+        low[k], high[k] = np.maximum(lo, low[k]), np.minimum(hi, high[k])
     elif part.cutter is not None and keep.any():
         top = float(stock.outer.max()) + 1.0  # beyond the surface every interval only needs to reach it
         k = np.flatnonzero(keep)
@@ -123,6 +127,31 @@ def _ball(part: Part, dx: np.ndarray, y: np.ndarray, z: np.ndarray, half: np.nda
     missed = strip_lo > strip_hi  # an empty piece must not widen the union
     strip_lo, strip_hi = np.where(missed, np.inf, strip_lo), np.where(missed, -np.inf, strip_hi)
     return np.minimum(disc_lo, strip_lo), np.maximum(disc_hi, strip_hi)
+
+
+def _vee(slope: float, dx: np.ndarray, y: np.ndarray, z: np.ndarray, c: np.ndarray, s: np.ndarray
+         ) -> tuple[np.ndarray, np.ndarray]:
+    """A vee cutter's cone, q - z >= slope sqrt(dx² + u²) (its upper nappe), on the ray: where the
+    quadratic (ρ s - z)² - slope² (dx² + (ρ c - y)²) is >= 0 on that nappe.  A ray steeper than the
+    cone crosses each nappe once and stays inside the upper one beyond its root; a shallower one is
+    inside between its two roots, if they lie on the upper nappe."""
+    k2 = slope * slope
+    a = s * s - k2 * c * c
+    a = np.where(np.abs(a) < 1e-12, 1e-12, a)  # a ray along the cone's side: as a hair steeper
+    b = -2.0 * (s * z - k2 * c * y)
+    c0 = z * z - k2 * (dx * dx + y * y)
+    disc = b * b - 4.0 * a * c0
+    root = np.sqrt(np.maximum(disc, 0.0))
+    half = -(b + np.where(b >= 0.0, root, -root)) / 2.0  # the stable form: no cancellation
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r1, r2 = half / a, np.where(half != 0.0, c0 / half, 0.0)
+    near, far = np.minimum(r1, r2), np.maximum(r1, r2)
+    steep = a > 0.0
+    lo = np.where(steep, np.where(s > 0.0, far, -np.inf), near)
+    hi = np.where(steep, np.where(s > 0.0, np.inf, near), far)
+    upper = ((near + far) / 2.0) * s - z >= 0.0
+    missed = (disc < 0.0) | (~steep & ~upper)
+    return np.where(missed, np.inf, lo), np.where(missed, -np.inf, hi)
 
 
 def _shaped(tool: Tool, dx: np.ndarray, y: np.ndarray, z: np.ndarray, c: np.ndarray, s: np.ndarray,

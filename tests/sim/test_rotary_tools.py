@@ -33,29 +33,29 @@ def _rounded_bottom(r0: float, rc: float, w: float) -> float:
                       + 2 * c * (w * math.sqrt(rc * rc - w * w) + rc * rc * math.asin(w / rc)))
 
 
-def test_a_ball_ring_groove() -> None:
+def test_a_ball_ring_groove(tmp_path: Path) -> None:
     d, radius = 2.0, 4.0  # the sphere's section reaches the surface at w from its centre
     w = math.sqrt(radius ** 2 - (radius - d) ** 2)
     expected = _rounded_bottom(R - d, radius, w)
-    stock, _ = ring(Path(_tmp()), Tool(0, "ball", 2 * radius), d)
+    stock, _ = ring(tmp_path, Tool(0, "ball", 2 * radius), d, resolution=0.2)
     assert stock.removed_volume == pytest.approx(expected, rel=2e-3)
 
 
-def test_a_bull_ring_groove() -> None:
+def test_a_bull_ring_groove(tmp_path: Path) -> None:
     d, radius, corner = 1.0, 4.0, 2.0
     flat = radius - corner
     w = math.sqrt(corner ** 2 - (corner - d) ** 2)
     expected = 2 * math.pi * (R * R - (R - d) ** 2) * flat + _rounded_bottom(R - d, corner, w)
-    stock, _ = ring(Path(_tmp()), Tool(0, "bull", 2 * radius, corner_radius=corner), d, resolution=0.2)
+    stock, _ = ring(tmp_path, Tool(0, "bull", 2 * radius, corner_radius=corner), d, resolution=0.2)
     assert stock.removed_volume == pytest.approx(expected, rel=2e-3)
 
 
-def test_a_vee_ring_groove() -> None:
+def test_a_vee_ring_groove(tmp_path: Path) -> None:
     """A 90° vee 2 mm deep: the groove's wall r = R - d + |t| turned about the axis."""
     d, k = 2.0, 1.0
     w = d / k
     expected = 2 * math.pi * (R * R * w - ((R - d + k * w) ** 3 - (R - d) ** 3) / (3 * k))
-    stock, _ = ring(Path(_tmp()), Tool(0, "vee", 10.0, angle=90.0), d, resolution=0.2)
+    stock, _ = ring(tmp_path, Tool(0, "vee", 10.0, angle=90.0), d, resolution=0.2)
     assert stock.removed_volume == pytest.approx(expected, rel=3e-3)
 
 
@@ -105,8 +105,3 @@ def test_shank_and_holder_findings_at_their_line(tmp_path: Path, tool: Tool, kin
     if not kinds:  # the whole groove cut, nothing more
         assert stock.removed_volume == pytest.approx(math.pi * (R * R - 17.0 ** 2) * 6.0, rel=2e-3)
 
-
-def _tmp() -> str:
-    import tempfile
-
-    return tempfile.mkdtemp()
