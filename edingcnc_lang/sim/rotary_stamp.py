@@ -68,12 +68,13 @@ def stamps(stock: RoundStock, poses: np.ndarray, radius: float, part: Part | Non
     spread_s = spread[sample]
     slice_ = first[sample].astype(np.int64) + within // np.maximum(spread_s, 1)
     angle = (first_angle[sample] + within % np.maximum(spread_s, 1)) % stock.shape[1]
-    x, y, z, a = (poses[sample, k] for k in range(4))
+    x, y, z, a = poses[sample].T
     dx = stock.centres()[slice_] - x
     half = np.sqrt(np.maximum(part.radius * part.radius - dx * dx, 0.0))
     phi = (angle + 0.5) * step + np.radians(a)
     c, s = np.cos(phi), np.sin(phi)
-    low, high = _flat(y, z + part.bottom, z + part.top, half, c, s)
+    capped = math.isfinite(part.top) and float(poses[:, 2].min()) + part.top < float(stock.outer.max())
+    low, high = _flat(y, z + part.bottom, z + part.top if capped else None, half, c, s)
     keep = (np.abs(dx) <= part.radius) & (low < high) & (high >= 0)
     if part.cutter is not None and part.cutter.shape == "ball" and keep.any():
         k = np.flatnonzero(keep)
@@ -93,17 +94,21 @@ def stamps(stock: RoundStock, poses: np.ndarray, radius: float, part: Part | Non
     return sample[keep], (slice_ * stock.shape[1] + angle)[keep], low[keep], high[keep]
 
 
-def _flat(y: np.ndarray, bottom: np.ndarray, top: np.ndarray, half: np.ndarray, c: np.ndarray, s: np.ndarray
-          ) -> tuple[np.ndarray, np.ndarray]:
-    """The ray's interval in the strip |ρ c - y| <= half between the heights ``bottom`` and ``top``."""
+def _flat(y: np.ndarray, bottom: np.ndarray, top: np.ndarray | None, half: np.ndarray, c: np.ndarray,
+          s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The ray's interval in the strip |ρ c - y| <= half between the heights ``bottom`` and ``top``
+    (None: no top, as for a part reaching up past the bar)."""
     with np.errstate(divide="ignore", invalid="ignore"):
         up, down = s > 1e-12, s < -1e-12
-        flat = ~up & ~down  # a ray along p: all of it between the heights when 0 is, else none
-        lo = np.where(up, bottom / s, np.where(down, top / s, np.where(flat & (bottom <= 0) & (top >= 0),
-                                                                        -np.inf, np.inf)))
-        hi = np.where(up, top / s, np.where(down, bottom / s, np.where(flat & (bottom <= 0) & (top >= 0),
-                                                                        np.inf, -np.inf)))
-        lo, hi = np.where(np.isnan(lo), -np.inf, lo), np.where(np.isnan(hi), np.inf, hi)  # inf / s
+        level = ~up & ~down  # a ray along p: all of it between the heights when 0 is, else none
+        between = (bottom <= 0) if top is None else (bottom <= 0) & (top >= 0)
+        along = np.where(level & between, -np.inf, np.inf)
+        if top is None:
+            lo = np.where(up, bottom / s, np.where(down, -np.inf, along))
+            hi = np.where(up, np.inf, np.where(down, bottom / s, -along))
+        else:
+            lo = np.where(up, bottom / s, np.where(down, top / s, along))
+            hi = np.where(up, top / s, np.where(down, bottom / s, -along))
         right, left = c > 1e-12, c < -1e-12
         across = np.abs(y) <= half  # a ray along q: inside the tool's width or not at all
         side_lo = np.where(right, (y - half) / c, np.where(left, (y + half) / c, np.where(across, -np.inf, np.inf)))
@@ -120,10 +125,10 @@ def _ball(part: Part, dx: np.ndarray, y: np.ndarray, z: np.ndarray, half: np.nda
     root = np.sqrt(np.maximum(b * b - (y * y + centre * centre - half * half), 0.0))
     hit = b * b >= y * y + centre * centre - half * half
     infinite = np.full_like(y, np.inf)
-    cap_lo, cap_hi = _flat(y, -infinite, z + part.top, infinite, c, s)
+    cap_lo, cap_hi = _flat(y, -infinite, z + part.top if math.isfinite(part.top) else None, infinite, c, s)
     disc_lo = np.where(hit, np.maximum(b - root, cap_lo), np.inf)
     disc_hi = np.where(hit, np.minimum(b + root, cap_hi), -np.inf)
-    strip_lo, strip_hi = _flat(y, centre, z + part.top, half, c, s)
+    strip_lo, strip_hi = _flat(y, centre, z + part.top if math.isfinite(part.top) else None, half, c, s)
     missed = strip_lo > strip_hi  # an empty piece must not widen the union
     strip_lo, strip_hi = np.where(missed, np.inf, strip_lo), np.where(missed, -np.inf, strip_hi)
     return np.minimum(disc_lo, strip_lo), np.maximum(disc_hi, strip_hi)
