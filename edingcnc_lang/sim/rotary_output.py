@@ -17,7 +17,7 @@ import numpy as np
 
 from edingcnc_lang.sim.round_stock import RoundStock
 
-VIEW_CELLS = 240  # vertices along each side of the shaded view at most
+VIEW_CELLS = 180  # vertices along each side of the shaded view at most (mplot3d draws each facet)
 
 
 def vertex_radii(field: np.ndarray) -> np.ndarray:
@@ -105,7 +105,8 @@ def draw_shaded(ax: Any, stock: RoundStock, axis: str) -> None:
     depth = stock.radius - radii[:-1, :-1]
     colours = colormaps["magma_r"](Normalize(0.0, max(float(depth.max()), 1e-6))(depth))
     ax.plot_surface(points[..., 0], points[..., 1], points[..., 2], facecolors=colours, shade=True,
-                    lightsource=LightSource(azdeg=315, altdeg=35), linewidth=0, antialiased=False)
+                    lightsource=LightSource(azdeg=315, altdeg=35), linewidth=0, antialiased=False,
+                    rcount=points.shape[0], ccount=points.shape[1])
     span = max(stock.length, 2 * stock.radius) / 2.0
     middle = stock.start + stock.length / 2.0
     centre = (0.0, middle, 0.0) if axis == "B" else (middle, 0.0, 0.0)
