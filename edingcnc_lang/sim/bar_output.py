@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from edingcnc_lang.sim.compare import Deviation
 from edingcnc_lang.sim.lathe import BarResult
 from edingcnc_lang.sim.rotary import CylinderResult
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
@@ -94,9 +95,12 @@ def draw_bar(result: BarResult, out: Path, fmt: str, title: str) -> None:
     save_figure(fig, out, fmt, DPI)
 
 
-def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str) -> None:
+def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str, deviation: Deviation | None = None
+                   ) -> None:
     """The bar on the rotary axis unrolled: depth below its surface over X (Y on B) and the bar's own
-    angle, the lines of the findings marked at their place along it; below, the part shaded in 3D."""
+    angle, the lines of the findings marked at their place along it (with ``deviation``: the bar's
+    radius less the intended part's instead, red where material is left, blue where it gouged);
+    below, the part shaded in 3D."""
     from matplotlib.figure import Figure
 
     from edingcnc_lang.outputs import save_figure
@@ -107,9 +111,16 @@ def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str) -> N
     depth = (stock.radius - stock.outer[::step, ::step].astype(np.float64)).T
     fig = Figure(figsize=(9.0, 10.0), dpi=DPI)
     ax = fig.add_subplot(2, 1, 1)
-    image = ax.imshow(depth, origin="lower", aspect="auto", cmap="magma_r", interpolation="nearest",
-                      extent=(stock.start, stock.start + stock.length, 0.0, 360.0), vmin=0.0)
-    fig.colorbar(image, ax=ax, shrink=0.8, label="depth below the bar's surface, mm")
+    extent = (stock.start, stock.start + stock.length, 0.0, 360.0)
+    if deviation is None:
+        image = ax.imshow(depth, origin="lower", aspect="auto", cmap="magma_r", interpolation="nearest",
+                          extent=extent, vmin=0.0)
+        fig.colorbar(image, ax=ax, shrink=0.8, label="depth below the bar's surface, mm")
+    else:
+        worst = max(deviation.max_overcut, deviation.max_undercut, 1e-3)
+        image = ax.imshow(deviation.map[::step, ::step].T, origin="lower", aspect="auto", cmap="RdBu_r",
+                          interpolation="nearest", extent=extent, vmin=-worst, vmax=worst)
+        fig.colorbar(image, ax=ax, shrink=0.8, label=f"left (+) / gouged (-) against {Path(deviation.file).name}, mm")
     for kind, (_marker, colour) in MARKERS.items():
         for f in (f for f in result.findings if f.kind == kind):
             along = f.position[1] if result.axis == "B" else f.position[0]

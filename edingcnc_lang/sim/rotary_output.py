@@ -1,5 +1,6 @@
 """The part a bar on a rotary axis became (``ecnc sim --stock cylinder:``): a closed STL mesh of
-its radii field and a shaded 3D view of it (the second panel of ``-o``).
+its radii field, a shaded 3D view of it (the second panel of ``-o``), and its deviation from the
+intended part (``--compare-stl``).
 
 Both read the surface at the grid's vertices (slice edges along the axis, angle-cell edges around
 it): a vertex's radius is the root of the mean square of the radii of the cells that meet there,
@@ -11,11 +12,16 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from edingcnc_lang.errors import Location
+from edingcnc_lang.sim.compare import Deviation
 from edingcnc_lang.sim.round_stock import RoundStock
+from edingcnc_lang.sim.stl import StlError, raster_top, read_stl
+from edingcnc_lang.sim.stock import Stock
 
 VIEW_CELLS = 180  # vertices along each side of the shaded view at most (mplot3d draws each facet)
 
@@ -117,3 +123,58 @@ def draw_shaded(ax: Any, stock: RoundStock, axis: str) -> None:
     ax.set_ylabel("Y mm")
     ax.set_zlabel("Z mm")
     ax.view_init(elev=25, azim=-60)
+
+
+def compare_rotary(stock: RoundStock, part: str | Path, axis: str = "A") -> Deviation:
+    """The cut bar against the intended part (an STL in work coordinates at A0/B0, as ``--stl``
+    writes it): the part unrolled to (axial position, the bar's angle, radius) and its outermost
+    radius over each cell found as ``compare`` finds a part's top (``stl.raster_top``); the
+    deviation is the bar's outer radius less the part's, over the cells the part covers."""
+    triangles = _unrolled(_fine(read_stl(part).astype(np.float64), stock.angle_step(), axis), axis)
+    scale = stock.resolution / stock.angle_step()  # an angle cell as tall as a slice is long
+    triangles[:, :, 1] *= scale
+    grid = Stock(stock.start, 0.0, stock.resolution, 0.0, stock.radius,
+                 np.zeros((stock.shape[1], stock.shape[0]), np.float32))
+    top, covered = raster_top(grid, triangles)
+    if not covered.any():
+        raise StlError("the part does not lie along the bar (no cell of the bar is under it)", Location(str(part)))
+    deviation = np.where(covered.T, stock.outer.astype(np.float64) - top.T, np.nan)
+    values = deviation[covered.T]
+    return Deviation(str(part), deviation, max(0.0, -float(values.min())), max(0.0, float(values.max())),
+                     float(np.abs(values).mean()), int(covered.sum()))
+
+
+def _polar(triangles: np.ndarray, axis: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Axial position, the bar's own angle (degrees, 0..360) and radius of each vertex."""
+    x, y, z = triangles[..., 0], triangles[..., 1], triangles[..., 2]
+    along, p = (y, -x) if axis == "B" else (x, y)
+    return along, np.degrees(np.arctan2(z, p)) % 360.0, np.hypot(p, z)
+
+
+def _fine(triangles: np.ndarray, step: float, axis: str, rounds: int = 10) -> np.ndarray:
+    """Triangles split in four (at their edges' midpoints, in space) until none spans more than an
+    angle cell around the axis: between its corners a facet's radius is then near linear in the angle."""
+    for _ in range(rounds):
+        _, angle, radius = _polar(triangles, axis)
+        spread = np.ptp(angle, axis=1)
+        spread = np.minimum(spread, 360.0 - spread)  # across the seam at 0 degrees
+        wide = (spread > step) & (radius.min(axis=1) > 1e-9)  # a fan's centre on the axis has no angle
+        if not wide.any():
+            break
+        a, b, c = (triangles[wide, k] for k in range(3))
+        ab, bc, ca = (a + b) / 2, (b + c) / 2, (c + a) / 2
+        split = np.concatenate([np.stack(t, axis=1) for t in ((a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca))])
+        triangles = np.concatenate((triangles[~wide], split))
+    return triangles
+
+
+def _unrolled(triangles: np.ndarray, axis: str) -> np.ndarray:
+    """(axial, angle, radius) triangles; one across the seam at 0 degrees is put on both sides of it
+    (its low corners 360 up, and a copy 360 down), so each side's cells see it."""
+    along, angle, radius = _polar(triangles, axis)
+    seam = np.ptp(angle, axis=1) > 180.0
+    angle = np.where(seam[:, None] & (angle < 180.0), angle + 360.0, angle)
+    flat = np.stack((along, angle, radius), axis=-1)
+    below = flat[seam].copy()
+    below[:, :, 1] -= 360.0
+    return np.concatenate((flat, below))
