@@ -107,6 +107,7 @@ class CylinderSimulator:
         self.paths: dict[str, int] = {}
         self.found: list[CutFinding] = []
         self.last: tuple[float, ...] | None = None  # the pose the queue ends at
+        self.steps = (stock.angle_step(), stock.resolution)  # the most a sample may turn and move
 
     def _tool(self, number: int) -> Tool:
         if self.table is not None and number in self.table:
@@ -151,11 +152,14 @@ class CylinderSimulator:
         """``rows`` after the first, flat, with samples between where the ``keys`` (three lengths and an
         angle) move more than a slice or an angle cell."""
         out: list[float] = []
+        turn, move = self.steps
         for k in range(1, len(rows)):
             p, q = keys[k - 1], keys[k]
-            steps = max(abs(q[3] - p[3]) / self.stock.angle_step(), math.dist(p[:3], q[:3]) / self.stock.resolution)
-            n = max(1, math.ceil(steps))
+            n = max(1, math.ceil(max(abs(q[3] - p[3]) / turn, math.dist(p[:3], q[:3]) / move)))
             a, b = rows[k - 1], rows[k]
+            if n == 1:
+                out.extend(b)
+                continue
             for j in range(1, n + 1):
                 f = j / n
                 out.extend([u + (v - u) * f for u, v in zip(a, b)])
@@ -168,20 +172,26 @@ class CylinderSimulator:
             return
         poses, moves, codes = self.queue.take()
         tool = self.tool
-        parts = parts_of(tool)
-        ends = np.cumsum(np.sum([extent(self.stock, poses, part)[4] for part in parts], axis=0))
-        if not ends[-1]:  # all above the bar
+        parts, counts = [], []
+        for part in parts_of(tool):  # the parts that reach the bar in this batch
+            count = extent(self.stock, poses, part)[4]
+            if count.any():
+                parts.append(part)
+                counts.append(count)
+        if not parts:  # all above the bar
             return
+        ends = np.cumsum(np.sum(counts, axis=0))
         self.used[tool.number] = tool
         start = 0
         while start < len(poses):  # chunks of bounded work, in the tool's order
             stop = max(int(np.searchsorted(ends, ends[start] + CHUNK, side="right")), start + 1)
-            pieces = [stamps(self.stock, poses[start:stop], part.radius, part) for part in parts]
+            chunk = [part for part, count in zip(parts, counts) if count[start:stop].any()]
+            pieces = [stamps(self.stock, poses[start:stop], part.radius, part) for part in chunk]
             sample, cell, low, high = (np.concatenate([p[k] for p in pieces]) for k in range(4))
             code = np.concatenate([codes[start:stop][p[0]] if part.code == CUT else
-                                   np.full(len(p[0]), part.code, np.int8) for part, p in zip(parts, pieces)])
-            if len(parts) > 1:  # pose by pose, the outer part first
-                rank = np.repeat(np.arange(len(parts)), [len(p[0]) for p in pieces])
+                                   np.full(len(p[0]), part.code, np.int8) for part, p in zip(chunk, pieces)])
+            if len(chunk) > 1:  # pose by pose, the outer part first
+                rank = np.repeat(np.arange(len(chunk)), [len(p[0]) for p in pieces])
                 order = np.lexsort((rank, sample))
                 sample, cell, low, high, code = sample[order], cell[order], low[order], high[order], code[order]
             if len(cell):
