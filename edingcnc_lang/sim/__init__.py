@@ -6,7 +6,8 @@ cut stock, the findings (``findings.py``) and the volumes.  Pictures (``picture.
 (``stl.py``), the comparison with the intended part (``compare.py``) and the report (``report.py``)
 work on that result.  Round stock (``round_stock.py``): a lathe's bar turned by ``lathe.simulate_bar``
 (the nose's sweep in ``turning.py``) and a bar on a mill's A axis cut by ``rotary.simulate_cylinder``;
-their outputs in ``bar_output.py``.
+their outputs in ``bar_output.py``.  The rotary tool's parts on the bar's rays: ``rotary_stamp.py``;
+the rotary part's STL, shaded view and comparison: ``rotary_output.py``.
 """
 from __future__ import annotations
 
