@@ -186,11 +186,16 @@ class CylinderSimulator:
         while start < len(poses):  # chunks of bounded work, in the tool's order
             stop = max(int(np.searchsorted(ends, ends[start] + CHUNK, side="right")), start + 1)
             chunk = [part for part, count in zip(parts, counts) if count[start:stop].any()]
+            if not chunk:  # these poses are all above the bar
+                start = stop
+                continue
             pieces = [stamps(self.stock, poses[start:stop], part.radius, part) for part in chunk]
-            sample, cell, low, high = (np.concatenate([p[k] for p in pieces]) for k in range(4))
             code = np.concatenate([codes[start:stop][p[0]] if part.code == CUT else
                                    np.full(len(p[0]), part.code, np.int8) for part, p in zip(chunk, pieces)])
-            if len(chunk) > 1:  # pose by pose, the outer part first
+            if len(chunk) == 1:
+                sample, cell, low, high = pieces[0]
+            else:  # pose by pose, the outer part first
+                sample, cell, low, high = (np.concatenate([p[k] for p in pieces]) for k in range(4))
                 rank = np.repeat(np.arange(len(chunk)), [len(p[0]) for p in pieces])
                 order = np.lexsort((rank, sample))
                 sample, cell, low, high, code = sample[order], cell[order], low[order], high[order], code[order]
