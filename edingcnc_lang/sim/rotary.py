@@ -26,7 +26,7 @@ import numpy as np
 
 from edingcnc_lang.canon import Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
-from edingcnc_lang.errors import EcncError
+from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.runner import Run, RunOptions, RunResult
@@ -139,8 +139,12 @@ class CylinderSimulator:
             rows = [(*p, *(s + (e - s) * k / count for s, e in zip(move.start[3:], move.end[3:])))
                     for k, p in enumerate(points)]
         if not self.run.motion.joints_are_position:  # the kinematics' joints along the move, finely
-            dense = self._fill([(*r[:3], r[self.axis.joint]) for r in rows], rows)
-            rows = self.run.motion.joints_at(np.array(dense).reshape(-1, 6)).tolist()
+            dense = [*rows[0], *self._fill([(*r[:3], r[self.axis.joint]) for r in rows], rows)]
+            try:
+                rows = self.run.motion.joints_at(np.array(dense).reshape(-1, 6)).tolist()
+            except EcncError as err:  # a pose between the machine's own samples it cannot reach
+                err.location = err.location or Location(move.path, move.line)
+                raise
         poses = [self.axis.frame(r, off) for r in rows]
         samples = self._fill(poses, poses) if self.last == poses[0] else [*poses[0], *self._fill(poses, poses)]
         self.last = poses[-1]
