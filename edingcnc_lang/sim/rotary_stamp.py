@@ -89,8 +89,7 @@ def stamps(stock: RoundStock, poses: np.ndarray, radius: float, part: Part | Non
         lo, hi = _shaped(part.cutter, dx[k], y[k], z[k], c[k], s[k], np.maximum(low[k], -1.0), np.minimum(high[k], top))
         low[k] = lo
         high[k] = np.where(hi >= top, high[k], hi)  # reaching past the surface: as the flat part's
-        keep[k] = lo <= hi
-    keep &= high >= 0
+    keep &= (high >= 0) & (low <= high)
     return sample[keep], (slice_ * stock.shape[1] + angle)[keep], low[keep], high[keep]
 
 
@@ -126,8 +125,9 @@ def _ball(part: Part, dx: np.ndarray, y: np.ndarray, z: np.ndarray, half: np.nda
     hit = b * b >= y * y + centre * centre - half * half
     infinite = np.full_like(y, np.inf)
     cap_lo, cap_hi = _flat(y, -infinite, z + part.top if math.isfinite(part.top) else None, infinite, c, s)
-    disc_lo = np.where(hit, np.maximum(b - root, cap_lo), np.inf)
-    disc_hi = np.where(hit, np.minimum(b + root, cap_hi), -np.inf)
+    disc_lo, disc_hi = np.maximum(b - root, cap_lo), np.minimum(b + root, cap_hi)
+    hit &= disc_lo <= disc_hi  # the cap may take the disc's part of the ray away
+    disc_lo, disc_hi = np.where(hit, disc_lo, np.inf), np.where(hit, disc_hi, -np.inf)
     strip_lo, strip_hi = _flat(y, centre, z + part.top if math.isfinite(part.top) else None, half, c, s)
     missed = strip_lo > strip_hi  # an empty piece must not widen the union
     strip_lo, strip_hi = np.where(missed, np.inf, strip_lo), np.where(missed, -np.inf, strip_hi)
