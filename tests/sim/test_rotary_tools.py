@@ -62,7 +62,9 @@ def test_a_vee_ring_groove(tmp_path: Path) -> None:
 @pytest.mark.parametrize("tool", [Tool(0, "ball", 8.0), Tool(0, "bull", 10.0, corner_radius=2.0),
                                   Tool(0, "vee", 8.0, angle=60.0),
                                   Tool(0, "ball", 8.0, flute_length=3.0, shank_diameter=5.0, holder_diameter=20.0,
-                                       holder_length=6.0)], ids=["ball", "bull", "vee", "ball with shank and holder"])
+                                       holder_length=6.0),
+                                  Tool(0, "ball", 8.0, flute_length=2.0)],
+                         ids=["ball", "bull", "vee", "ball with shank and holder", "ball with flutes below its centre"])
 def test_each_part_agrees_with_point_sampling(tool: Tool) -> None:
     """Random poses: each ray's interval inside each part against points along the ray."""
     rng = np.random.default_rng(7)
