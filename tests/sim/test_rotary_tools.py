@@ -84,7 +84,9 @@ def test_each_part_agrees_with_point_sampling(tool: Tool) -> None:
                 d = np.sqrt(dx[k] ** 2 + u * u)
                 floor = part.bottom + (part.cutter.profile(np.minimum(d, part.radius)) if part.cutter else 0.0)
                 inside = (d <= part.radius) & (height >= floor) & (height <= part.top) & (rho >= 0)
-                if inside.any():
+                if not inside.any():  # a ray that misses the part: nothing of the bar is in its interval
+                    assert not max(low[k], 0.0) < min(high[k], 20.0) - 0.02
+                else:
                     checked += 1
                     assert max(low[k], 0.0) == pytest.approx(rho[inside].min(), abs=0.01)
                     # past the bar's surface (radius 20) the interval only has to reach beyond it
