@@ -47,6 +47,10 @@ class RotaryAxis:
 
     letter: str = "A"
 
+    def __post_init__(self) -> None:
+        if self.letter not in ("A", "B"):
+            raise ValueError(f"the bar turns with A (about X) or B (about Y), not {self.letter!r}")
+
     @property
     def joint(self) -> int:
         """Its index among X Y Z A B C."""
@@ -68,8 +72,11 @@ def rotary_axis(config: MachineConfig) -> RotaryAxis:
     """B about Y when the ini shows B and hides A (``[KINEMATICS] aVisible``/``bVisible``, the
     joints' ``visible``), else A about X."""
     def shown(letter: str, joint: int) -> bool:
-        setting = config.kinematics_settings.get(f"{letter}visible", "1").strip()
-        return config.joints[joint].visible and setting not in ("0", "0.0", "0.000000")
+        try:
+            visible = float(config.kinematics_settings.get(f"{letter}visible", "1")) != 0.0
+        except ValueError:  # not a number: the setting says nothing
+            visible = True
+        return config.joints[joint].visible and visible
 
     return RotaryAxis("B" if shown("b", 4) and not shown("a", 3) else "A")
 
