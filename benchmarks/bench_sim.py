@@ -1,5 +1,6 @@
 """``ecnc sim`` on a generated 200,000-line 3D finishing job at 0.2 mm, against ``ecnc run`` of it;
-``--only turning``: ``ecnc sim --bar`` of a 20,000-line turning job against ``ecnc run --trace``.
+``--only turning``: ``ecnc sim --bar`` of a 20,000-line turning job; ``--only wrap``: ``--stock cylinder:`` of a
+200,000-line 4-axis wrapping job; each against ``ecnc run --trace``.
 
 The job is a raster finish of a wavy surface (``z = 2 sin(x/8) cos(y/11) - 3``) over 100 x 100 mm
 with a 6 mm ball end mill: 200 rows 0.5 mm apart, 1,000 points 0.1 mm apart on each, against
@@ -10,12 +11,17 @@ another checkout of the package (its source folder on PYTHONPATH, its extensions
 ``python setup.py build_ext --inplace``), to pair a change with what came before.  Also prints the
 memory of the height field of a 1 m x 1 m table at 0.25 mm, and the peak memory of each command.
 
+The wrapping job (``--stock cylinder:40,100,20`` at
+0.2 mm, a 3 mm flat end mill with its shank checked, X and A moving together on every line: 200
+passes of 1,000 lines, each pass 100 mm along the bar and a turn round it, 1 mm deep), against
+``ecnc run --trace`` of it, the commands alternating (the bound: the simulation within 20 times).
+
 The turning job (on examples/lathe/cnc.ini, X a diameter) roughs a 100 x 300 bar from 98 to 62 in
 1 mm passes over 190 mm (the ini's Z travel), then follows a wavy contour (``X = 58 + 2 sin(Z/3)``) down to 50 in
 five finishing passes of short moves, 20,000 lines in all, at 0.1 mm: once with T1 as its
 nose (0.4 mm), once as a 55° insert with its edges and a 25 mm holder (the holder's checks).
 
-    python benchmarks/bench_sim.py [--repeat N] [--rows N] [--pure] [--against CHECKOUT] [--only raster|turning]
+    python benchmarks/bench_sim.py [--repeat N] [--rows N] [--pure] [--against CHECKOUT] [--only raster|turning|wrap]
 
 Latest figures (2026-12-05, 2 loaded cores, 5 rounds, CPU medians; docs/performance.md's ``ecnc sim``
 table has the rest): ``run`` 0.26 s, ``run --trace`` 0.59 s, ``sim`` 1.98 s (3.3x ``run --trace``;
@@ -64,7 +70,7 @@ def write_turning(path: Path, lines: int = 20_000) -> int:
     return len(out)
 
 
-def compare(commands: dict[str, list[str]], repeat: int, base: str) -> None:
+def compare(commands: dict[str, list[str]], repeat: int, base: str, bound: int = 5) -> None:
     """Run the commands alternately, ``repeat`` rounds, and print each one's median times and its
     ratio to ``base``."""
     results = median_runs(commands, repeat)
@@ -72,7 +78,7 @@ def compare(commands: dict[str, list[str]], repeat: int, base: str) -> None:
         print(f"{name:>18}: {wall:6.2f} s wall, {cpu:6.2f} s CPU, {peak:5.0f} MB peak")
     for name in commands:
         if name != base:
-            print(f"{name} / {base}: {results[name][1] / results[base][1]:.1f}x in CPU time (bound: 5x)")
+            print(f"{name} / {base}: {results[name][1] / results[base][1]:.1f}x in CPU time (bound: {bound}x)")
 
 
 def turning(repeat: int) -> None:
@@ -91,17 +97,44 @@ def turning(repeat: int) -> None:
                  "sim --bar (holder)": ECNC + [*bar, "--tools", str(insert)]}, repeat, "run --trace")
 
 
+def write_wrap(path: Path, passes: int, points: int = 1000) -> int:
+    """The wrapping job on the A axis; returns its number of lines."""
+    lines = ["G21 G90 G17", "S18000 M3", "G0 Z25", "G0 X20 Y0 A0", "G1 Z19 F1000"]
+    for row in range(passes):
+        shift = 1.8 * row
+        steps = range(points) if row % 2 == 0 else range(points - 1, -1, -1)
+        lines += [f"G1 X{20 + 0.1 * k:.3f} A{shift + 0.36 * k:.3f} F3000" for k in steps]
+    lines += ["G0 Z25", "M30"]
+    path.write_text("\n".join(lines) + "\n", encoding="ascii")
+    return len(lines)
+
+
+def wrap(repeat: int, passes: int) -> None:
+    """The wrapping job: ``ecnc sim --stock cylinder:`` and ``run --trace`` alternately."""
+    with tempfile.TemporaryDirectory() as folder:
+        tmp = Path(folder)
+        job, tools = tmp / "wrap.nc", tmp / "tools.toml"
+        count = write_wrap(job, passes)
+        tools.write_text('[tool.0]\nshape = "flat"\ndiameter = 3\nflute_length = 6\n', encoding="ascii")
+        print(f"{count:,} lines (4-axis wrap)")
+        compare({"run --trace": ECNC + ["run", "--trace", str(tmp / "trace.csv"), str(job), "-q"],
+                 "ecnc sim": ECNC + ["sim", str(job), "--stock", "cylinder:40,100,20", "--resolution", "0.2",
+                                     "--tools", str(tools), "--tool", "0"]}, repeat, "run --trace", bound=20)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--rows", type=int, default=200)
     parser.add_argument("--pure", action="store_true", help="also the simulation on the pure-Python core")
     parser.add_argument("--against", metavar="CHECKOUT", help="also the simulation of this checkout of the package")
-    parser.add_argument("--only", choices=("raster", "turning"))
+    parser.add_argument("--only", choices=("raster", "turning", "wrap"))
     args = parser.parse_args()
-    if args.only != "raster":
+    if args.only in (None, "turning"):
         turning(args.repeat)
-    if args.only == "turning":
+    if args.only in (None, "wrap"):
+        wrap(args.repeat, args.rows)
+    if args.only in ("turning", "wrap"):
         return
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)

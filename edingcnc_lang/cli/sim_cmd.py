@@ -90,7 +90,8 @@ class BarSize(click.ParamType):
 @job_or_stdin_argument
 @click.option("--stock", "box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
               help="The stock as a box in the job's work coordinates (its first work offset); "
-                   "cylinder:DIAMETER,LENGTH[,X0]: a bar on the rotary A axis (along X from X0, through Y0 Z0).")
+                   "cylinder:DIAMETER,LENGTH[,X0]: a bar on the rotary A axis (along X from X0, through Y0 Z0; "
+                   "on B where the ini shows B and hides A: along Y from Y0, through X0 Z0).")
 @click.option("--stock-stl", metavar="FILE", type=EXISTING_FILE,
               help="The stock as an STL mesh (work coordinates); its top surface is what is cut.")
 @click.option("--bar", metavar="DIAMETER,LENGTH[,Z0]", type=BarSize(),
@@ -204,13 +205,11 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
         raise usage_error("--chuck LENGTH goes with --bar DIAMETER,LENGTH[,Z0] (a lathe's bar)")
     if (bar is not None and box is not None) or stock_stl is not None:
         raise usage_error("give the stock as exactly one of --stock, --stock-stl and --bar")
-    if compare_stl is not None:
+    if compare_stl is not None and bar is not None:
         raise usage_error("--compare-stl is for the box stock; with round stock, write the part with --stl")
     if bar is not None and chuck is not None and chuck >= bar[1]:
         raise usage_error(f"--chuck {chuck:g} grips the whole bar ({bar[1]:g} mm long)")
-    if bar is None and stl is not None:
-        raise usage_error("--stl is for --bar (a turned part); a bar on the rotary axis is drawn with -o")
-    check_outputs({"-o": output, "--stl": stl}, [job, tools_file, *machine.input_files()])
+    check_outputs({"-o": output, "--stl": stl}, [job, tools_file, compare_stl, *machine.input_files()])
     fmt = picture_target(Path(output)) if output else None
     tools = load_tools(tools_file) if tools_file else None
     options = machine.run_options(show_messages=not as_json, write_job_files=False)
@@ -225,15 +224,25 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
             assert isinstance(box, Cylinder)
             stock = RoundStock.cylinder(box.diameter, box.length, box.x0, resolution)
             result = simulate_cylinder(path, stock, options, tools, machine.spindle_tool, name=name)
+    deviation = None
+    if compare_stl is not None and isinstance(result, CylinderResult):
+        from edingcnc_lang.sim.rotary_output import compare_rotary
+
+        deviation = compare_rotary(stock, compare_stl, result.axis)
     if output and fmt:
         title = _title(name or job, stock.removed_volume, len(result.findings))
         if isinstance(result, BarResult):
             bar_output.draw_bar(result, ensure_parent(Path(output)), fmt, title)
         else:
-            bar_output.draw_unwrapped(result, ensure_parent(Path(output)), fmt, title)
+            bar_output.draw_unwrapped(result, ensure_parent(Path(output)), fmt, title, deviation)
     if stl:
         from edingcnc_lang.sim.stl import write_stl
 
-        write_stl(ensure_parent(Path(stl)), bar_output.bar_mesh(stock))
-    return _report(as_json, lambda: bar_output.to_json(result), lambda: bar_output.summary(result),
+        from edingcnc_lang.sim.rotary_output import rotary_mesh
+
+        write_stl(ensure_parent(Path(stl)), bar_output.bar_mesh(stock) if isinstance(result, BarResult) else
+                  rotary_mesh(stock, result.axis))
+    compared = {} if deviation is None else {"compare": deviation.to_json()}
+    return _report(as_json, lambda: {**bar_output.to_json(result), **compared},
+                   lambda: bar_output.summary(result) + ([deviation.line()] if deviation else []),
                    (output, stl), result.error, failing(result.findings))

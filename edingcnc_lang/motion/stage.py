@@ -310,6 +310,11 @@ class MotionStage:
             raise MachineError(f"{label} would make joint {AXES[axis]} jump from {self.joints[axis]:.4f} to "
                                f"{joints[axis]:.4f}; move the machine to where both agree first", where)
 
+    @property
+    def joints_are_position(self) -> bool:
+        """Whether the joints equal the position now: a simulator may then read a move's path as it is."""
+        return self._identity()
+
     # ---------------------------------------------------------------- helpers
     def _identity(self) -> bool:
         """Joints equal the position: kinematics off or trivial, and no bend knife correction."""

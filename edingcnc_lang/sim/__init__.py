@@ -7,7 +7,8 @@ cut stock, the findings (``findings.py``) and the volumes.  Pictures (``picture.
 work on that result.  Round stock (``round_stock.py``): a lathe's bar turned by ``lathe.simulate_bar``
 (the nose's sweep in ``turning.py``) and a bar on a mill's A axis cut by ``rotary.simulate_cylinder``;
 their outputs in ``bar_output.py``.  ``simulate_bar(job, RoundStock.bar(...), options, tools)``
-turns a bar (the insert and holder beyond the nose in ``insert.py``).
+turns a bar (the insert and holder beyond the nose in ``insert.py``).  The rotary tool's parts on the bar's rays: ``rotary_stamp.py``;
+the rotary part's STL, shaded view and comparison: ``rotary_output.py``.
 """
 from __future__ import annotations
 

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from edingcnc_lang.sim.compare import Deviation
 from edingcnc_lang.sim.lathe import BarResult
 from edingcnc_lang.sim.rotary import CylinderResult
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
@@ -24,7 +25,7 @@ def to_json(result: BarResult | CylinderResult) -> dict[str, Any]:
     stock = result.stock
     size = [round(2 * stock.radius, 6), round(stock.length, 6)]
     where = {"bar": [*size, round(stock.start + stock.length, 6)]} if isinstance(result, BarResult) else \
-        {"cylinder": [*size, round(stock.start, 6)]}
+        {"cylinder": [*size, round(stock.start, 6)], "axis": result.axis}
     doc: dict[str, Any] = {
         "stock": {**where, "resolution": stock.resolution, "cells": [stock.shape[0], stock.shape[1]],
                   "removed_volume": round(stock.removed_volume, 3),
@@ -94,9 +95,12 @@ def draw_bar(result: BarResult, out: Path, fmt: str, title: str) -> None:
     save_figure(fig, out, fmt, DPI)
 
 
-def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str) -> None:
-    """The bar on the rotary axis unrolled: depth below its surface over X and the bar's own angle,
-    the lines of the findings marked at their X."""
+def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str, deviation: Deviation | None = None
+                   ) -> None:
+    """The bar on the rotary axis unrolled: depth below its surface over X (Y on B) and the bar's own
+    angle, the lines of the findings marked at their place along it (with ``deviation``: the bar's
+    radius less the intended part's instead, red where material is left, blue where it gouged);
+    below, the part shaded in 3D."""
     from matplotlib.figure import Figure
 
     from edingcnc_lang.outputs import save_figure
@@ -105,18 +109,29 @@ def draw_unwrapped(result: CylinderResult, out: Path, fmt: str, title: str) -> N
     stock = result.stock
     step = max(1, math.ceil(max(stock.shape) / 1600))
     depth = (stock.radius - stock.outer[::step, ::step].astype(np.float64)).T
-    fig = Figure(figsize=(9.0, 5.0), dpi=DPI)
-    ax = fig.add_subplot(1, 1, 1)
-    image = ax.imshow(depth, origin="lower", aspect="auto", cmap="magma_r", interpolation="nearest",
-                      extent=(stock.start, stock.start + stock.length, 0.0, 360.0), vmin=0.0)
-    fig.colorbar(image, ax=ax, shrink=0.8, label="depth below the bar's surface, mm")
+    fig = Figure(figsize=(9.0, 10.0), dpi=DPI)
+    ax = fig.add_subplot(2, 1, 1)
+    extent = (stock.start, stock.start + stock.length, 0.0, 360.0)
+    if deviation is None:
+        image = ax.imshow(depth, origin="lower", aspect="auto", cmap="magma_r", interpolation="nearest",
+                          extent=extent, vmin=0.0)
+        fig.colorbar(image, ax=ax, shrink=0.8, label="depth below the bar's surface, mm")
+    else:
+        worst = max(deviation.max_overcut, deviation.max_undercut, 1e-3)
+        image = ax.imshow(deviation.map[::step, ::step].T, origin="lower", aspect="auto", cmap="RdBu_r",
+                          interpolation="nearest", extent=extent, vmin=-worst, vmax=worst)
+        fig.colorbar(image, ax=ax, shrink=0.8, label=f"left (+) / gouged (-) against {Path(deviation.file).name}, mm")
     for kind, (_marker, colour) in MARKERS.items():
         for f in (f for f in result.findings if f.kind == kind):
-            ax.axvline(f.position[0], color=colour, linewidth=0.8)
-            ax.annotate(f"{f.line} {kind}", (f.position[0], 355), fontsize=7, rotation=90, va="top", color=colour)
-    ax.set_xlabel("X mm")
-    ax.set_ylabel("bar angle, degrees (at A0 the tool is at 90)")
+            along = f.position[1] if result.axis == "B" else f.position[0]
+            ax.axvline(along, color=colour, linewidth=0.8)
+            ax.annotate(f"{f.line} {kind}", (along, 355), fontsize=7, rotation=90, va="top", color=colour)
+    ax.set_xlabel("Y mm" if result.axis == "B" else "X mm")
+    ax.set_ylabel(f"bar angle, degrees (at {result.axis}0 the tool is at 90)")
     ax.set_title(title, fontsize=9)
+    from edingcnc_lang.sim.rotary_output import draw_shaded
+
+    draw_shaded(fig.add_subplot(2, 1, 2, projection="3d"), stock, result.axis)
     fig.tight_layout()
     save_figure(fig, out, fmt, DPI)
 

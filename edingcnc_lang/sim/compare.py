@@ -30,6 +30,11 @@ class Deviation:
     mean: float            # mean of |deviation| over the compared cells
     cells: int
 
+    def line(self) -> str:
+        """The report's line: the worst over- and under-cut and the mean."""
+        return (f"against {self.file}: over-cut {self.max_overcut:.3f} mm, under-cut {self.max_undercut:.3f} mm, "
+                f"mean |deviation| {self.mean:.3f} mm over {self.cells:,} cells")
+
     def to_json(self) -> dict[str, Any]:
         return {"file": self.file, "cells": self.cells, "max_overcut": round(self.max_overcut, 4),
                 "max_undercut": round(self.max_undercut, 4), "mean_deviation": round(self.mean, 4)}

@@ -42,7 +42,5 @@ def summary(result: SimResult, deviation: Deviation | None = None) -> list[str]:
                  f"({stock.shape[1]} x {stock.shape[0]} cells of {stock.resolution:g} mm, {result.moves:,} moves, "
                  f"{result.seconds:.1f} s); {errors} collision{'s' * (errors != 1)}, {hints} hint{'s' * (hints != 1)}")
     if deviation is not None:
-        lines.append(f"against {deviation.file}: over-cut {deviation.max_overcut:.3f} mm, under-cut "
-                     f"{deviation.max_undercut:.3f} mm, mean |deviation| {deviation.mean:.3f} mm "
-                     f"over {deviation.cells:,} cells")
+        lines.append(deviation.line())
     return lines

@@ -1,27 +1,32 @@
-"""A mill with a rotary A axis cutting a bar: ``simulate_cylinder``.
+"""A mill with a rotary axis cutting a bar: ``simulate_cylinder``.
 
-The bar lies along X (from X0 to X0 + LENGTH, its axis through work Y0 Z0) and turns with A.  A
-point of the bar at angle θ (its own, degrees) stands at angle θ + A in the machine, measured
-about X from +Y towards +Z; so the tool, pointing down -Z, works at machine angle 90°.  Each move
-is sampled so that neither X/Y/Z moves more than a cell nor A more than an angle cell between
-samples (indexed and simultaneous 4-axis moves alike), and at each sample the tool, a flat end
-mill as a vertical cylinder from its tip upwards, is stamped into the bar: along the ray from the
-axis through each (slice, angle) cell it covers an interval of radii, which ``RoundStock.cut``
-takes as it takes a lathe insert's.  The work offset and tool length are read as each move
-arrives; A is taken as the job programs it (a kinematics plug-in that maps axes is not applied).
+The bar turns with A about X (along X from X0 to X0 + LENGTH, its axis through work Y0 Z0), or
+with B about Y where the ini shows B and hides A (along Y from Y0, its axis through work X0 Z0).
+A point of the bar at its own angle θ (degrees) stands at θ + A in the machine, measured about X
+from +Y towards +Z (for B: about Y from -X towards +Z, both right-handed); so the tool, pointing
+down -Z, works at machine angle 90°.  The tool's pose is the machine's joints (the motion stage's
+inverse kinematics of each move, so a plug-in or a ``KIN`` mapping that moves other motors than
+the job names is honoured), less the work offset and tool length in force as the move arrives.
+Each move is sampled so that neither the linear joints move more than a slice nor the rotary one
+more than an angle cell between samples (indexed and simultaneous 4-axis moves alike), and at each
+sample every part of the tool (``rotary_stamp.py``: the cutter with its shape, the shank and the
+holder) is stamped into the bar: along the ray from the axis through each (slice, angle) cell it
+covers an interval of radii, which ``RoundStock.cut`` takes as it takes a lathe insert's.
 """
 from __future__ import annotations
 
 import math
 import time
 from array import array
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from edingcnc_lang.canon import Event, Move, Pose
-from edingcnc_lang.errors import EcncError
+from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.runner import Run, RunOptions, RunResult
@@ -29,11 +34,51 @@ from edingcnc_lang.sim.queue import MoveQueue
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
+from edingcnc_lang.sim.rotary_stamp import CUT, HOLDER, RAPID, SHANK, SPINDLE_OFF, extent, parts_of, stamps
 from edingcnc_lang.sim.tools import Tool, ini_tool
 from edingcnc_lang.sim.turning import CHUNK
 
-CUT, RAPID, SPINDLE_OFF = 0, 1, 2
-KIND_OF_CODE = {RAPID: "rapid_into_stock", SPINDLE_OFF: "spindle_off"}
+KIND_OF_CODE = {RAPID: "rapid_into_stock", SPINDLE_OFF: "spindle_off", SHANK: "shank", HOLDER: "holder"}
+
+
+@dataclass(frozen=True)
+class RotaryAxis:
+    """The rotary axis the bar turns with: ``A`` (about X, the bar along X) or ``B`` (about Y)."""
+
+    letter: str = "A"
+
+    def __post_init__(self) -> None:
+        if self.letter not in ("A", "B"):
+            raise ValueError(f"the bar turns with A (about X) or B (about Y), not {self.letter!r}")
+
+    @property
+    def joint(self) -> int:
+        """Its index among X Y Z A B C."""
+        return 4 if self.letter == "B" else 3
+
+    def frame(self, row: Sequence[float], off: Sequence[float]) -> tuple[float, float, float, float]:
+        """Joints (machine X Y Z A B C) as a pose in the bar's frame: axial, p, q of the tip, angle."""
+        if self.letter == "B":
+            return row[1] - off[1], off[0] - row[0], row[2] - off[2], row[4] - off[4]
+        return row[0] - off[0], row[1] - off[1], row[2] - off[2], row[3] - off[3]
+
+    def work(self, pose: Sequence[float]) -> tuple[float, float, float]:
+        """The work X Y Z of a pose of the bar's frame (a finding's position)."""
+        axial, p, q = float(pose[0]), float(pose[1]), float(pose[2])
+        return (-p, axial, q) if self.letter == "B" else (axial, p, q)
+
+
+def rotary_axis(config: MachineConfig) -> RotaryAxis:
+    """B about Y when the ini shows B and hides A (``[KINEMATICS] aVisible``/``bVisible``, the
+    joints' ``visible``), else A about X."""
+    def shown(letter: str, joint: int) -> bool:
+        try:
+            visible = float(config.kinematics_settings.get(f"{letter}visible", "1")) != 0.0
+        except ValueError:  # not a number: the setting says nothing
+            visible = True
+        return config.joints[joint].visible and visible
+
+    return RotaryAxis("B" if shown("b", 4) and not shown("a", 3) else "A")
 
 
 @dataclass
@@ -48,24 +93,28 @@ class CylinderResult:
     moves: int
     run: RunResult | None = None
     error: EcncError | None = None
+    axis: str = "A"  # the rotary axis the bar turned with: A (along X) or B (along Y)
 
 
 class CylinderSimulator:
-    """The ``on_move``/``on_event`` callbacks stamping a mill's tool into a bar on its A axis."""
+    """The ``on_move``/``on_event`` callbacks stamping a mill's tool into a bar on its rotary axis."""
 
-    def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int) -> None:
+    def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int,
+                 axis: RotaryAxis | None = None) -> None:
         self.stock = stock
         self.run = run
+        self.axis = axis or rotary_axis(run.config)
         self.table = tools
         self.tool = self._tool(first_tool)
         self.used: dict[int, Tool] = {}
         self.spindle_on = False
-        self.queue = MoveQueue(4)  # x y z a(degrees) of the tool tip per sample
+        self.queue = MoveQueue(4)  # axial, p, q of the tool tip and the bar's angle, per sample
         self.lines = array("i")
         self.files = array("h")
         self.paths: dict[str, int] = {}
         self.found: list[CutFinding] = []
         self.last: tuple[float, ...] | None = None  # the pose the queue ends at
+        self.steps = (stock.angle_step(), stock.resolution)  # the most a sample may turn and move
 
     def _tool(self, number: int) -> Tool:
         if self.table is not None and number in self.table:
@@ -88,122 +137,118 @@ class CylinderSimulator:
             return
         off = self.run.interpreter.offset()  # Z holds the tool length: the tip's Z
         code = RAPID if move.kind in ("rapid", "home") else CUT if self.spindle_on else SPINDLE_OFF
+        rows: list[Sequence[float]]
         if move.arc is None:
-            points = [move.start[:3], move.end[:3]]
+            rows = [move.start, move.end]
         else:
             points = chords(move, self.stock.resolution / 4.0).tolist()
-        count = len(points) - 1
-        a0, a1 = move.start[3], move.end[3]
-        poses = [(p[0] - off[0], p[1] - off[1], p[2] - off[2], a0 + (a1 - a0) * k / count - off[3])
-                 for k, p in enumerate(points)]
-        samples: list[float] = []
-        if self.last != poses[0]:  # a move starts where the one before ended: its first pose is queued
-            samples.extend(poses[0])
-        for p, q in zip(poses, poses[1:]):
-            steps = max(abs(q[3] - p[3]) / self.stock.angle_step(), math.dist(p[:3], q[:3]) / self.stock.resolution)
-            n = max(1, math.ceil(steps))
-            for k in range(1, n + 1):
-                f = k / n
-                samples.extend((p[0] + (q[0] - p[0]) * f, p[1] + (q[1] - p[1]) * f, p[2] + (q[2] - p[2]) * f,
-                                p[3] + (q[3] - p[3]) * f))
+            count = len(points) - 1
+            rows = [(*p, *(s + (e - s) * k / count for s, e in zip(move.start[3:], move.end[3:])))
+                    for k, p in enumerate(points)]
+        if not self.run.motion.joints_are_position:  # the kinematics' joints along the move, finely
+            dense = [*rows[0], *self._fill([(*r[:3], r[self.axis.joint]) for r in rows], rows)]
+            try:
+                rows = self.run.motion.joints_at(np.array(dense).reshape(-1, 6)).tolist()
+            except EcncError as err:  # a pose between the machine's own samples it cannot reach
+                err.location = err.location or Location(move.path, move.line)
+                raise
+        poses = [self.axis.frame(r, off) for r in rows]
+        samples = self._fill(poses, poses) if self.last == poses[0] else [*poses[0], *self._fill(poses, poses)]
         self.last = poses[-1]
         self.queue.add(samples, index, code)
         if self.queue.full:
             self.flush()
 
+    def _fill(self, keys: Sequence[Sequence[float]], rows: Sequence[Sequence[float]]) -> list[float]:
+        """``rows`` after the first, flat, with samples between where the ``keys`` (three lengths and an
+        angle) move more than a slice or an angle cell."""
+        out: list[float] = []
+        turn, move = self.steps
+        for k in range(1, len(rows)):
+            p, q = keys[k - 1], keys[k]
+            n = max(1, math.ceil(max(abs(q[3] - p[3]) / turn, math.dist(p[:3], q[:3]) / move)))
+            a, b = rows[k - 1], rows[k]
+            if n == 1:
+                out.extend(b)
+                continue
+            for j in range(1, n + 1):
+                f = j / n
+                out.extend([u + (v - u) * f for u, v in zip(a, b)])
+        return out
+
     def flush(self) -> None:
-        """Stamp what is queued with the tool in the spindle now."""
+        """Stamp what is queued with the tool in the spindle now: in each pose its parts from the
+        outside in, each cell's cuts in the tool's order."""
         if not len(self.queue):
             return
         poses, moves, codes = self.queue.take()
-        tool = self.used[self.tool.number] = self.tool
-        ends = np.cumsum(_extent(self.stock, poses, tool.radius)[4])
+        tool = self.tool
+        parts, counts = [], []
+        for part in parts_of(tool):  # the parts that reach the bar in this batch
+            count = extent(self.stock, poses, part)[4]
+            if count.any():
+                parts.append(part)
+                counts.append(count)
+        if not parts:  # all above the bar
+            return
+        ends = np.cumsum(np.sum(counts, axis=0))
+        self.used[tool.number] = tool
         start = 0
         while start < len(poses):  # chunks of bounded work, in the tool's order
             stop = max(int(np.searchsorted(ends, ends[start] + CHUNK, side="right")), start + 1)
-            sample, cell, low, high = stamps(self.stock, poses[start:stop], tool.radius)
+            chunk = [part for part, count in zip(parts, counts) if count[start:stop].any()]
+            if not chunk:  # these poses are all above the bar
+                start = stop
+                continue
+            pieces = [stamps(self.stock, poses[start:stop], part.radius, part) for part in chunk]
+            code = np.concatenate([codes[start:stop][p[0]] if part.code == CUT else
+                                   np.full(len(p[0]), part.code, np.int8) for part, p in zip(chunk, pieces)])
+            if len(chunk) == 1:
+                sample, cell, low, high = pieces[0]
+            else:  # pose by pose, the outer part first
+                sample, cell, low, high = (np.concatenate([p[k] for p in pieces]) for k in range(4))
+                rank = np.repeat(np.arange(len(chunk)), [len(p[0]) for p in pieces])
+                order = np.lexsort((rank, sample))
+                sample, cell, low, high, code = sample[order], cell[order], low[order], high[order], code[order]
             if len(cell):
                 depth = self.stock.cut(cell, low, high, open_top=False)
-                bad = np.flatnonzero((depth > EPS) & (codes[start:stop][sample] != CUT))
-                for k in bad.tolist():
-                    at = start + int(sample[k])
-                    self._add(KIND_OF_CODE[int(codes[at])], int(moves[at]), tuple(poses[at, :3].tolist()),
-                              float(depth[k]), tool.number)
+                self._found(start + sample, depth, code, poses, moves, tool.number)
             start = stop
 
-    def _add(self, kind: str, move: int, where: tuple[float, ...], depth: float, tool: int) -> None:
+    def _found(self, at: np.ndarray, depth: np.ndarray, code: np.ndarray, poses: np.ndarray, moves: np.ndarray,
+               tool: int) -> None:
+        """The deepest cut that should not have been, per move and kind."""
+        bad = np.flatnonzero((depth > EPS) & (code != CUT))
+        if not len(bad):
+            return
+        at, depth, code = at[bad], depth[bad], code[bad]
+        move = moves[at]
+        order = np.lexsort((at, -depth, code, move))
+        first = order[np.r_[True, (np.diff(move[order]) != 0) | (np.diff(code[order]) != 0)]]
         paths = list(self.paths)
-        self.found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], where,  # type: ignore[arg-type]
-                                     depth, tool, move))
+        for k in first.tolist():
+            index = int(move[k])
+            self.found.append(CutFinding(KIND_OF_CODE[int(code[k])], paths[self.files[index]], self.lines[index],
+                                         self.axis.work(poses[at[k]]), float(depth[k]), tool, index))
 
     def notes(self) -> list[str]:
-        return [f"T{n} is a {tool.shape} tool: simulated as a flat end mill of its diameter on the rotary axis"
-                for n, tool in sorted(self.used.items()) if tool.shape != "flat"]
-
-
-def stamps(stock: RoundStock, poses: np.ndarray, radius: float) -> tuple[np.ndarray, np.ndarray,
-                                                                        np.ndarray, np.ndarray]:
-    """(sample, cell, low, high): for each tool pose (X, Y, Z of the tip, A degrees) the interval of
-    radii its cylinder (radius ``radius``, from the tip upwards) covers on each cell's ray."""
-    first, slices, first_angle, spread, per = _extent(stock, poses, radius)
-    step = math.radians(stock.angle_step())
-    sample = np.repeat(np.arange(len(poses)), per)
-    within = np.arange(len(sample)) - np.repeat(np.cumsum(per) - per, per)
-    spread_s = spread[sample]
-    slice_ = first[sample].astype(np.int64) + within // np.maximum(spread_s, 1)
-    angle = (first_angle[sample] + within % np.maximum(spread_s, 1)) % stock.shape[1]
-    x, y, z, a = (poses[sample, k] for k in range(4))
-    dx = stock.centres()[slice_] - x
-    half = np.sqrt(np.maximum(radius * radius - dx * dx, 0.0))
-    phi = (angle + 0.5) * step + np.radians(a)
-    c, s = np.cos(phi), np.sin(phi)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        up = s > 1e-12
-        down = s < -1e-12
-        lo = np.where(up, z / s, np.where(down | (z <= 0), -np.inf, np.inf))
-        hi = np.where(down, z / s, np.where(up | (z <= 0), np.inf, -np.inf))
-        right, left = c > 1e-12, c < -1e-12
-        across = np.abs(y) <= half  # a ray along Z: inside the tool's width or not at all
-        side_lo = np.where(right, (y - half) / c, np.where(left, (y + half) / c, np.where(across, -np.inf, np.inf)))
-        side_hi = np.where(right, (y + half) / c, np.where(left, (y - half) / c, np.where(across, np.inf, -np.inf)))
-    low = np.maximum(lo, side_lo)
-    high = np.minimum(hi, side_hi)
-    keep = (np.abs(dx) <= radius) & (low < high) & (high >= 0)
-    return sample[keep], (slice_ * stock.shape[1] + angle)[keep], low[keep], high[keep]
-
-
-def _extent(stock: RoundStock, poses: np.ndarray, radius: float) -> tuple[np.ndarray, ...]:
-    """Per pose: the first slice and how many, the first angle cell and how many (the machine angles
-    the tool can reach: sin(phi) >= z / top for a tip above the axis, all for one below it), and
-    their product, the cells to look at."""
-    top = float(stock.outer.max())
-    reach = poses[:, 2] < top  # a tip above the bar touches nothing
-    first = np.clip(np.ceil((poses[:, 0] - radius - stock.start) / stock.resolution - 0.5), 0, stock.shape[0])
-    last = np.clip(np.floor((poses[:, 0] + radius - stock.start) / stock.resolution - 0.5), -1, stock.shape[0] - 1)
-    slices = np.where(reach, last - first + 1, 0).astype(np.int64).clip(0)
-    y, z = poses[:, 1], poses[:, 2]
-    rise = np.where(z > 0, np.arcsin(np.clip(z / max(top, 1e-9), -1, 1)), -math.pi / 2)
-    # above the axis the tool's bottom corners bound the angles too (the rays reach it between them)
-    low = np.where(z > 0, np.maximum(rise, np.arctan2(z, y + radius)), rise)
-    high = np.where(z > 0, np.minimum(math.pi - rise, np.arctan2(z, y - radius)), math.pi - rise)
-    step = math.radians(stock.angle_step())
-    spread = np.where((slices > 0) & (high >= low), np.ceil((high - low) / step).astype(np.int64) + 3, 0)
-    spread = np.minimum(spread, stock.shape[1])
-    first_angle = np.floor((low - np.radians(poses[:, 3])) / step - 0.5).astype(np.int64) - 1
-    return first.astype(np.int64), slices, first_angle, spread, slices * spread
+        return [f"T{n} has no flute_length: its shank and holder are not checked" if tool.shape != "insert" else
+                f"T{n} is a lathe insert: simulated as a flat end mill of its diameter on the rotary axis"
+                for n, tool in sorted(self.used.items()) if tool.flute_length is None or tool.shape == "insert"]
 
 
 def simulate_cylinder(job: str | Path, stock: RoundStock, options: RunOptions | None = None,
                       tools: dict[int, Tool] | None = None, first_tool: int | None = None,
-                      name: str | None = None) -> CylinderResult:
-    """Run the 4-axis ``job`` and cut the bar on its A axis; a runtime error is kept in ``error``."""
+                      name: str | None = None, axis: RotaryAxis | None = None) -> CylinderResult:
+    """Run the 4-axis ``job`` and cut the bar on its rotary axis (``axis``, default as the ini has it:
+    ``rotary_axis``); a runtime error is kept in ``error``."""
     started = time.perf_counter()
 
     def make(run: Run) -> CylinderSimulator:
         first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
-        return CylinderSimulator(stock, run, tools, first)
+        return CylinderSimulator(stock, run, tools, first, axis)
 
     sim, result, error = drive(job, options, name, make)
     sim.flush()
     return CylinderResult(stock, merged(sim.found), dict(sim.used), sim.notes(), time.perf_counter() - started,
-                          len(sim.lines), result, error)
+                          len(sim.lines), result, error, sim.axis.letter)

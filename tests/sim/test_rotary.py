@@ -116,7 +116,6 @@ def test_the_command_line(tmp_path: Path) -> None:
 @pytest.mark.parametrize(("args", "message"), [
     (["--stock", "cylinder:40"], "is not cylinder:DIAMETER,LENGTH[,X0]"),
     (["--stock", "cylinder:0,100"], "must be above 0"),
-    (["--stock", "cylinder:40,100", "--stl", "x.stl"], "--stl is for --bar"),
     (["--stock", "cylinder:40,100", "--chuck", "5"], "--chuck LENGTH goes with --bar"),
 ])
 def test_usage_errors_exit_2(tmp_path: Path, args: list[str], message: str) -> None:
