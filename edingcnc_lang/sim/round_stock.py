@@ -119,6 +119,12 @@ class RoundStock:
             before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf)))
             surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
             before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
+            while not open_top:  # a chain of cuts, each reaching only the surface the one before left
+                grown = surface | (hi >= before - EPS)  # grows as the surface sinks: its end is the cut in order
+                if np.array_equal(grown, surface):
+                    break
+                surface = grown
+                before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
             surface &= lo < before - EPS
             boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
             if not boring.any() or bore is not start_bore:
@@ -146,5 +152,10 @@ def _running_min(groups: np.ndarray, values: np.ndarray) -> np.ndarray:
     out = np.empty_like(running)
     out[0] = np.inf
     out[1:] = running[:-1]
-    out[1:][groups[1:] != groups[:-1]] = np.inf
+    # no finite value earlier in its own group: an earlier group's minimum, shifted, leaks in (above
+    # that group's values, not above every threshold a caller compares with): none is inf
+    counted = np.concatenate(([0], np.cumsum(np.isfinite(values))))  # finite values before each entry
+    first = np.r_[True, groups[1:] != groups[:-1]]
+    start = np.maximum.accumulate(np.where(first, np.arange(len(values)), 0))
+    out[counted[:-1] == counted[start]] = np.inf
     return out
