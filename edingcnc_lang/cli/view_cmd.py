@@ -19,10 +19,12 @@ from edingcnc_lang.cli.streams import job_to_read_twice
 
 if TYPE_CHECKING:
     from edingcnc_lang.plot.actions import Written
+    from edingcnc_lang.sim.tools import Tool
 
 
 STOCK_RESOLUTION = 0.5  # mm: the page shows a coarse map anyway (sim/frames.py)
 BAR_RESOLUTION = 0.1    # mm: a bar's slices (the page shows at most 400 of them: sim/bar_frames.py)
+CYLINDER_RESOLUTION = 0.5  # mm: a bar on a rotary axis (the page shows at most 8192 blocks: sim/rotary_frames.py)
 
 
 class LineRange(click.ParamType):
@@ -54,13 +56,17 @@ class LineRange(click.ParamType):
 @click.option("--lines", metavar="A:B", type=LineRange(),
               help="Only the moves made by job lines A to B (with the subs they call), in full.")
 @click.option("--stock", "stock_box", metavar="XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX", type=StockBox(),
-              help="Show this stock (work coordinates) being cut as the player runs (see ecnc sim).")
+              help="Show this stock (work coordinates) being cut as the player runs (see ecnc sim); "
+                   "cylinder:DIAMETER,LENGTH[,X0]: a bar on the rotary axis, its unrolled depth map.")
 @click.option("--bar", metavar="DIAMETER,LENGTH[,Z0]", type=BarSize(),
               help="Lathe: show this bar being turned as the player runs, as a half section (see ecnc sim --bar).")
 @click.option("--chuck", metavar="LENGTH", type=PlainFloat(0, min_open=True, max=1e9),
               help="With --bar: the length the chuck grips at the bar's far end.")
 @click.option("--tools", "tools_file", metavar="FILE", type=EXISTING_FILE,
               help="With --stock or --bar: tool shapes as TOML, as ecnc sim reads them.")
+@click.option("--resolution", metavar="MM", type=PlainFloat(0, min_open=True),
+              help="With --stock or --bar: the cell (slice) of the simulation the page shows (default 0.5 mm; "
+                   "0.1 for --bar).")
 @click.option("--diff", "old", metavar="OLD", type=EXISTING_FILE,
               help="Also run OLD: the page shows OLD and JOB (NEW), a button (D) switches (ecnc view --diff OLD NEW).")
 @click.option("--embed-sources", is_flag=True,
@@ -69,13 +75,15 @@ class LineRange(click.ParamType):
 def view(job: str, machine: MachineOptions, feed_override: float, rapid_override: float, output: str | None,
          view: str, max_moves: int | None, lines: tuple[int, int] | None,
          stock_box: tuple[float, ...] | None = None, tools_file: str | None = None, old: str | None = None,
-         embed_sources: bool = False, bar: tuple[float, ...] | None = None, chuck: float | None = None) -> int:
+         embed_sources: bool = False, bar: tuple[float, ...] | None = None, chuck: float | None = None,
+         resolution: float | None = None) -> int:
     """Run JOB and write a page to open in any browser, without network access: rotate, pan,
     zoom, top/front/side/iso, and a slider that plays the job move by move beside its program
     lines and the machine position. Prints the file written."""
     from edingcnc_lang.plot.actions import view_job
+    from edingcnc_lang.sim.stock import StockError
 
-    _check_stock(stock_box, bar, chuck, lines, tools_file)
+    _check_stock(stock_box, bar, chuck, lines, tools_file, resolution)
     tools = None
     if tools_file:  # a bad file is told before the job runs
         from edingcnc_lang.sim.tools import load_tools
@@ -93,35 +101,56 @@ def view(job: str, machine: MachineOptions, feed_override: float, rapid_override
         written = view_job(path, options, Path(output) if output else None,
                            max_moves=max_moves, lines=lines, view=view, name=name,
                            old=Path(old) if old else None, embed_sources=embed_sources, changes=changes)
-        if stock_box is not None:
-            from edingcnc_lang.sim.frames import add_to_page, stock_frames
-            from edingcnc_lang.sim.stock import Stock
-
-            stock = Stock.box(stock_box[:3], stock_box[3:], STOCK_RESOLUTION)  # type: ignore[arg-type]
-            quiet = machine.run_options(show_messages=False, write_job_files=False)
-            add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, machine.spindle_tool, name))
-        if bar is not None:
-            from edingcnc_lang.sim.bar_frames import bar_frames
-            from edingcnc_lang.sim.frames import add_to_page
-            from edingcnc_lang.sim.round_stock import RoundStock
-
-            diameter, length, face = bar
-            stock_bar = RoundStock.bar(diameter, length, face - length, BAR_RESOLUTION)
-            quiet = machine.run_options(show_messages=False, write_job_files=False)
-            chuck_face = face - length + chuck if chuck is not None else None
-            add_to_page(written.out, bar_frames(path, stock_bar, quiet, len(written.path), tools, machine.spindle_tool,
-                                                name, chuck_face), "bar-data")
+        try:
+            _add_stock(written, path, name, machine, stock_box, bar, chuck, resolution, tools, max_moves)
+        except StockError:  # the stock does not fit the machine (a bar on a mill, a cylinder on a lathe)
+            written.out.unlink(missing_ok=True)  # the page just written, without its stock: not left half made
+            raise
     return report(written)
 
 
-def _check_stock(stock_box: tuple[float, ...] | None, bar: tuple[float, ...] | None, chuck: float | None,
-                 lines: tuple[int, int] | None, tools_file: str | None) -> None:
-    """The usage errors of the stock options, told before anything runs."""
+def _add_stock(written: Written, path: Path, name: str | None, machine: MachineOptions, stock_box: tuple[float, ...] | None,
+               bar: tuple[float, ...] | None, chuck: float | None, resolution: float | None,
+               tools: dict[int, Tool] | None, max_moves: int | None) -> None:
+    """Simulate the stock beside the page's run and put its frames into the page."""
     if isinstance(stock_box, Cylinder):
-        raise click.UsageError("--stock cylinder: (a bar on the rotary axis) is drawn by ecnc sim -o; "
-                               "ecnc view plays the box stock (--stock) and the lathe's bar (--bar)")
+        from edingcnc_lang.plot.viewer import MAX_MOVES, decimate
+        from edingcnc_lang.sim.frames import add_to_page
+        from edingcnc_lang.sim.rotary_frames import rotary_frames
+        from edingcnc_lang.sim.round_stock import RoundStock
+
+        cylinder = RoundStock.cylinder(stock_box.diameter, stock_box.length, stock_box.x0,
+                                       resolution or CYLINDER_RESOLUTION)
+        quiet = machine.run_options(show_messages=False, write_job_files=False)
+        shown = decimate(written.path, max_moves or MAX_MOVES).keep
+        add_to_page(written.out, rotary_frames(path, cylinder, quiet, len(written.path), shown, tools,
+                                               machine.spindle_tool, name), "rotary-data")
+    elif stock_box is not None:
+        from edingcnc_lang.sim.frames import add_to_page, stock_frames
+        from edingcnc_lang.sim.stock import Stock
+
+        stock = Stock.box(stock_box[:3], stock_box[3:], resolution or STOCK_RESOLUTION)  # type: ignore[arg-type]
+        quiet = machine.run_options(show_messages=False, write_job_files=False)
+        add_to_page(written.out, stock_frames(path, stock, quiet, len(written.path), tools, machine.spindle_tool, name))
+    if bar is not None:
+        from edingcnc_lang.sim.bar_frames import bar_frames
+        from edingcnc_lang.sim.frames import add_to_page
+        from edingcnc_lang.sim.round_stock import RoundStock
+
+        diameter, length, face = bar
+        stock_bar = RoundStock.bar(diameter, length, face - length, resolution or BAR_RESOLUTION)
+        quiet = machine.run_options(show_messages=False, write_job_files=False)
+        chuck_face = face - length + chuck if chuck is not None else None
+        add_to_page(written.out, bar_frames(path, stock_bar, quiet, len(written.path), tools, machine.spindle_tool,
+                                            name, chuck_face), "bar-data")
+
+
+def _check_stock(stock_box: tuple[float, ...] | None, bar: tuple[float, ...] | None, chuck: float | None,
+                 lines: tuple[int, int] | None, tools_file: str | None, resolution: float | None = None) -> None:
+    """The usage errors of the stock options, told before anything runs."""
     if stock_box is not None and bar is not None:
-        raise click.UsageError("give the stock as one of --stock (a box) and --bar (a lathe's bar)")
+        what = "a bar on the rotary axis" if isinstance(stock_box, Cylinder) else "a box"
+        raise click.UsageError(f"give the stock as one of --stock ({what}) and --bar (a lathe's bar)")
     if chuck is not None and bar is None:
         raise click.UsageError("--chuck LENGTH goes with --bar DIAMETER,LENGTH[,Z0] (a lathe's bar)")
     if bar is not None and chuck is not None and chuck >= bar[1]:
@@ -131,6 +160,8 @@ def _check_stock(stock_box: tuple[float, ...] | None, bar: tuple[float, ...] | N
                                "it does not go with --lines")
     if tools_file and stock_box is None and bar is None:
         raise click.UsageError("--tools gives the tools their shapes for --stock or --bar: give the stock too")
+    if resolution is not None and stock_box is None and bar is None:
+        raise click.UsageError("--resolution is the cell of the stock's simulation: give --stock or --bar too")
 
 
 @contextlib.contextmanager

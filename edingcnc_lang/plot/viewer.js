@@ -380,6 +380,125 @@
     }
   }
 
+  // ---------------------------------------------------------------- the bar on a rotary axis (ecnc view --stock cylinder:)
+  // Its unrolled depth map every so many moves (edingcnc_lang/sim/rotary_frames.py): depth below the
+  // bar's surface over the axial position (across) and the bar's own angle (up), as ecnc sim -o draws
+  // it, in a panel under the 3D view; the tool where the move shown leaves it, the findings so far.
+  const rotaryBlock = document.getElementById("rotary-data");
+  const R = rotaryBlock ? JSON.parse(rotaryBlock.textContent) : null;
+  const rotaryDepths = R ? decode(R.depths, Uint8Array) : null;
+  const rotaryTips = R ? decode(R.tips, Float32Array) : null;
+  const DEPTH_SHADES = [[252, 253, 191], [252, 137, 97], [183, 55, 121], [81, 18, 124], [0, 0, 4]];  // magma_r
+  const map = R ? document.createElement("canvas") : null;
+  let mapImage = null, mapFrame = -1;
+  if (R) {
+    map.id = "unrolled";
+    map.setAttribute("aria-label", "the bar unrolled: depth over its axis and angle");
+    document.getElementById("stage").classList.add("with-map");
+    document.getElementById("stage").append(map);
+  }
+  function depthShade(level) {
+    const f = Math.min(0.9999, Math.max(0, level)) * (DEPTH_SHADES.length - 1), k = Math.floor(f), t = f - k;
+    return DEPTH_SHADES[k].map((v, n) => Math.round(v + (DEPTH_SHADES[k + 1][n] - v) * t));
+  }
+  function drawUnrolled() {
+    if (!R) return;
+    const ratio = window.devicePixelRatio || 1;
+    const w = map.clientWidth, h = map.clientHeight;
+    if (map.width !== Math.round(w * ratio) || map.height !== Math.round(h * ratio)) {
+      map.width = Math.round(w * ratio);
+      map.height = Math.round(h * ratio);
+    }
+    const g = map.getContext("2d");
+    g.setTransform(ratio, 0, 0, ratio, 0, 0);
+    g.clearRect(0, 0, w, h);
+    g.font = "11px sans-serif";
+    const reached = current >= 0 ? index[current] + 1 : 0;
+    let frame = 0;
+    while (frame + 1 < R.moves.length && R.moves[frame + 1] <= reached) frame++;
+    const n = R.n, m = R.m;
+    if (frame !== mapFrame) {  // the frame as an n x m picture, angle 0 at the bottom
+      mapImage = document.createElement("canvas");
+      mapImage.width = n;
+      mapImage.height = m;
+      const mc = mapImage.getContext("2d"), pixels = mc.createImageData(n, m);
+      for (let k = 0; k < m; k++) {
+        for (let i = 0; i < n; i++) {
+          const c = depthShade(rotaryDepths[frame * n * m + k * n + i] / 255), p = 4 * ((m - 1 - k) * n + i);
+          pixels.data[p] = c[0]; pixels.data[p + 1] = c[1]; pixels.data[p + 2] = c[2]; pixels.data[p + 3] = 255;
+        }
+      }
+      mc.putImageData(pixels, 0, 0);
+      mapFrame = frame;
+    }
+    const left = 52, right = 86, top = 20, bottom = 30;
+    const pw = Math.max(w - left - right, 10), ph = Math.max(h - top - bottom, 10);
+    const x = (along) => left + (along - R.start) / R.length * pw;
+    const y = (angle) => top + ph - angle / 360 * ph;
+    g.save();
+    g.beginPath();
+    g.rect(left, top, pw, ph);
+    g.clip();
+    g.imageSmoothingEnabled = false;  // blocks past the bar's end or 360 degrees are clipped
+    g.drawImage(mapImage, left, top + ph - m * R.blockAngle / 360 * ph, n * R.block / R.length * pw, m * R.blockAngle / 360 * ph);
+    g.restore();
+    g.strokeStyle = "#888";
+    g.lineWidth = 1;
+    g.strokeRect(left, top, pw, ph);
+    g.fillStyle = "#444";
+    g.textAlign = "right";
+    for (let a = 0; a <= 360; a += 90) { g.fillText(String(a), left - 4, y(a) + 4); }
+    g.textAlign = "center";
+    const span = R.length, tick = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000].find((s) => span / s <= 8) || 1000;
+    for (let v = Math.ceil(R.start / tick) * tick; v <= R.start + span + 1e-9; v += tick) g.fillText(String(+v.toFixed(3)), x(v), top + ph + 14);
+    const along = R.axis === "B" ? "Y" : "X";
+    g.fillText(along + " mm along the bar; up: the bar's angle, degrees (at " + R.axis + "0 the tool is at 90)", left + pw / 2, top + ph + 27);
+    g.textAlign = "left";
+    g.fillText("frame of move " + R.moves[frame] + " of " + R.moves[R.moves.length - 1] + " (depth below the bar's surface)", left, top - 6);
+    const bar = [left + pw + 14, top, 12, ph];  // the colour scale: 0 at the top, the deepest at the bottom
+    for (let k = 0; k < ph; k++) {
+      const c = depthShade(k / ph);
+      g.fillStyle = "rgb(" + c.join(",") + ")";
+      g.fillRect(bar[0], bar[1] + k, bar[2], 1.5);
+    }
+    g.fillStyle = "#444";
+    g.fillText("0 mm", bar[0] + 16, top + 8);
+    g.fillText(R.deepest.toFixed(2) + " mm", bar[0] + 16, top + ph);
+    const MARKS = { rapid_into_stock: "#d62728", spindle_off: "#9467bd", holder: "#8c564b", shank: "#ff7f0e" };
+    for (const f of R.findings) {
+      if (f.move >= reached) continue;
+      const colour = MARKS[f.kind] || "#d62728", u = x(f.along);
+      g.strokeStyle = colour;
+      g.beginPath();
+      g.moveTo(u, top);
+      g.lineTo(u, top + ph);
+      g.stroke();
+      const v = f.angle !== null ? y(f.angle) : top + 12;
+      g.beginPath();
+      g.arc(u, v, 4, 0, 2 * Math.PI);
+      g.fillStyle = colour;
+      g.fill();
+      g.fillText(f.line + " " + f.kind, u + 6, v - 5);
+    }
+    if (current >= 0 && rotaryTips) {
+      const ta = rotaryTips[2 * current], tb = rotaryTips[2 * current + 1];
+      if (isFinite(ta) && isFinite(tb)) {
+        const u = x(ta), v = y(tb);
+        g.beginPath();
+        g.moveTo(u - 9, v); g.lineTo(u + 9, v); g.moveTo(u, v - 9); g.lineTo(u, v + 9);
+        g.strokeStyle = "#fff";
+        g.lineWidth = 4;
+        g.stroke();
+        g.strokeStyle = "#e02020";
+        g.lineWidth = 2;
+        g.stroke();
+        g.beginPath();
+        g.arc(u, v, 5, 0, 2 * Math.PI);
+        g.stroke();
+      }
+    }
+  }
+
   let drawn = 0;
   function draw() {
     projectAll();
@@ -446,6 +565,7 @@
     ctx.lineWidth = 1.2;
     ctx.stroke();
     triad(w, h);
+    drawUnrolled();
     status.dataset.drawn = String(drawn);
   }
 

@@ -33,6 +33,7 @@ class CutFinding:
     depth: float
     tool: int
     move: int  # index of the (first) move, in program order
+    angle: float | None = None  # on a rotary axis: the bar's own angle under the tip, degrees
 
     @property
     def severity(self) -> str:
@@ -62,7 +63,7 @@ def merged(findings: list[CutFinding]) -> list[CutFinding]:
         at = latest.get(item.kind)
         if at is not None and (out[at].file, out[at].line) == (item.file, item.line):
             if item.depth > out[at].depth:
-                out[at] = replace(out[at], position=item.position, depth=item.depth)
+                out[at] = replace(out[at], position=item.position, depth=item.depth, angle=item.angle)
             continue
         latest[item.kind] = len(out)
         out.append(item)

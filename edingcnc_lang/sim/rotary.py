@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import time
 from array import array
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,6 +34,7 @@ from edingcnc_lang.sim.queue import MoveQueue
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
+from edingcnc_lang.sim.stock import StockError
 from edingcnc_lang.sim.rotary_stamp import CUT, HOLDER, RAPID, SHANK, SPINDLE_OFF, extent, parts_of, stamps
 from edingcnc_lang.sim.tools import Tool, ini_tool
 from edingcnc_lang.sim.turning import CHUNK
@@ -94,6 +95,7 @@ class CylinderResult:
     run: RunResult | None = None
     error: EcncError | None = None
     axis: str = "A"  # the rotary axis the bar turned with: A (along X) or B (along Y)
+    tips: np.ndarray | None = None  # with ``tips=True``: (moves, 2) axial position and bar angle of each move's end
 
 
 class CylinderSimulator:
@@ -115,6 +117,9 @@ class CylinderSimulator:
         self.found: list[CutFinding] = []
         self.last: tuple[float, ...] | None = None  # the pose the queue ends at
         self.steps = (stock.angle_step(), stock.resolution)  # the most a sample may turn and move
+        self.every = 0  # with ``on_snapshot``: cut and call it before every ``every``-th move
+        self.on_snapshot: Callable[[int, RoundStock], None] | None = None
+        self.tips: array[float] | None = None  # with tips: axial position, bar angle of each move's end
 
     def _tool(self, number: int) -> Tool:
         if self.table is not None and number in self.table:
@@ -131,9 +136,14 @@ class CylinderSimulator:
 
     def on_move(self, move: Move, _joints: Pose) -> None:
         index = len(self.lines)
+        if self.on_snapshot is not None and index % self.every == 0:
+            self.flush()
+            self.on_snapshot(index, self.stock)
         self.lines.append(move.line)
         self.files.append(self.paths.setdefault(move.path, len(self.paths)))
         if move.kind not in CUTTING_KINDS:
+            if self.tips is not None:  # a probe move: the tool stays where the last move left it
+                self.tips.extend(self.tips[-2:] if len(self.tips) else (math.nan, math.nan))
             return
         off = self.run.interpreter.offset()  # Z holds the tool length: the tip's Z
         code = RAPID if move.kind in ("rapid", "home") else CUT if self.spindle_on else SPINDLE_OFF
@@ -155,6 +165,8 @@ class CylinderSimulator:
         poses = [self.axis.frame(r, off) for r in rows]
         samples = self._fill(poses, poses) if self.last == poses[0] else [*poses[0], *self._fill(poses, poses)]
         self.last = poses[-1]
+        if self.tips is not None:
+            self.tips.extend((self.last[0], bar_angle(self.last)))
         self.queue.add(samples, index, code)
         if self.queue.full:
             self.flush()
@@ -228,8 +240,9 @@ class CylinderSimulator:
         paths = list(self.paths)
         for k in first.tolist():
             index = int(move[k])
+            pose = poses[at[k]]
             self.found.append(CutFinding(KIND_OF_CODE[int(code[k])], paths[self.files[index]], self.lines[index],
-                                         self.axis.work(poses[at[k]]), float(depth[k]), tool, index))
+                                         self.axis.work(pose), float(depth[k]), tool, index, bar_angle(pose)))
 
     def notes(self) -> list[str]:
         return [f"T{n} has no flute_length: its shank and holder are not checked" if tool.shape != "insert" else
@@ -237,18 +250,39 @@ class CylinderSimulator:
                 for n, tool in sorted(self.used.items()) if tool.flute_length is None or tool.shape == "insert"]
 
 
+def bar_angle(pose: Sequence[float]) -> float:
+    """The bar's own angle (degrees, 0..360) under the tool tip of a pose in the bar's frame: the
+    tip's machine angle about the axis (90: straight above it, as on the axis itself) less A (B)."""
+    p, q = float(pose[1]), float(pose[2])
+    machine = math.degrees(math.atan2(q, p)) if math.hypot(p, q) > 1e-9 else 90.0
+    return (machine - float(pose[3])) % 360.0
+
+
 def simulate_cylinder(job: str | Path, stock: RoundStock, options: RunOptions | None = None,
                       tools: dict[int, Tool] | None = None, first_tool: int | None = None,
-                      name: str | None = None, axis: RotaryAxis | None = None) -> CylinderResult:
+                      name: str | None = None, axis: RotaryAxis | None = None, every: int = 0,
+                      on_snapshot: Callable[[int, RoundStock], None] | None = None,
+                      tips: bool = False) -> CylinderResult:
     """Run the 4-axis ``job`` and cut the bar on its rotary axis (``axis``, default as the ini has it:
-    ``rotary_axis``); a runtime error is kept in ``error``."""
+    ``rotary_axis``); a runtime error is kept in ``error``.  ``on_snapshot(move, stock)`` is called
+    with the bar as cut before move 0, ``every``, 2 ``every``, ...; ``tips`` keeps where each move
+    leaves the tool on the bar (``CylinderResult.tips``): the viewer's frames and marker."""
     started = time.perf_counter()
 
     def make(run: Run) -> CylinderSimulator:
+        if run.config.lathe:
+            raise StockError("a bar on a rotary axis is a mill's: the ini is a lathe's (machineType 1 or 2); "
+                             "a lathe's bar takes --bar DIAMETER,LENGTH[,Z0]")
         first = int(run.interpreter.params.read(t.TOOL_CURRENT)) if first_tool is None else first_tool
-        return CylinderSimulator(stock, run, tools, first, axis)
+        made = CylinderSimulator(stock, run, tools, first, axis)
+        if on_snapshot is not None:
+            made.every, made.on_snapshot = max(1, every), on_snapshot
+        if tips:
+            made.tips = array("f")
+        return made
 
     sim, result, error = drive(job, options, name, make)
     sim.flush()
+    ends = None if sim.tips is None else np.frombuffer(sim.tips, np.float32).reshape(-1, 2)
     return CylinderResult(stock, merged(sim.found), dict(sim.used), sim.notes(), time.perf_counter() - started,
-                          len(sim.lines), result, error, sim.axis.letter)
+                          len(sim.lines), result, error, sim.axis.letter, ends)

@@ -64,7 +64,7 @@ def test_a_holder_hit_is_on_the_page_at_its_line(tmp_path: Path) -> None:
     (("--chuck", "20"), "--chuck LENGTH goes with --bar"),
     (("--bar", "40,80", "--chuck", "80"), "grips the whole bar"),
     (("--bar", "40,80", "--lines", "5:9"), "--bar shows the whole job being cut"),
-    (("--stock", "cylinder:40,100"), "is drawn by ecnc sim -o"),
+    (("--stock", "cylinder:40,100"), "a bar on a rotary axis is a mill's"),
     (("--bar", "40"), "is not DIAMETER,LENGTH[,Z0]"),
 ])
 def test_view_bar_usage_errors(tmp_path: Path, args: tuple[str, ...], message: str) -> None:
