@@ -113,23 +113,24 @@ class RoundStock:
         cell, lo, hi = cells[order], low[order], high[order]
         start_top, start_bore = outer[cell].astype(np.float64), inner[cell].astype(np.float64)
         bore = start_bore
+        top = float(start_top.max()) if len(cell) else 0.0  # no running minimum above it counts
         for _ in range(2):  # the second time with the bore as the earlier entries of the cell left it
             at_bore = lo <= bore + EPS
             outside = ~at_bore if open_top else ~at_bore & (hi >= start_top - EPS)
-            before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf)))
+            before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf), top))
             surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
-            before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
+            before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf), top))
             while not open_top:  # a chain of cuts, each reaching only the surface the one before left
                 grown = surface | (hi >= before - EPS)  # grows as the surface sinks: its end is the cut in order
                 if np.array_equal(grown, surface):
                     break
                 surface = grown
-                before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf)))
+                before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf), top))
             surface &= lo < before - EPS
             boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
             if not boring.any() or bore is not start_bore:
                 break
-            bore = np.maximum(start_bore, -_running_min(cell, np.where(boring, -hi, np.inf)))
+            bore = np.maximum(start_bore, -_running_min(cell, np.where(boring, -hi, np.inf), 0.0))
         depth = np.zeros(len(cell))
         depth[surface] = np.maximum(before[surface] - np.maximum(lo[surface], bore[surface]), 0.0)
         depth[boring] = np.minimum(hi[boring], before[boring]) - bore[boring]
@@ -140,22 +141,19 @@ class RoundStock:
         return removed
 
 
-def _running_min(groups: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """Per entry, the least of the earlier ``values`` of its group (inf for the first): ``groups``
-    ascending, so shifting each group below all earlier ones makes one running minimum serve all."""
+def _running_min(groups: np.ndarray, values: np.ndarray, ceiling: float) -> np.ndarray:
+    """Per entry, the least of the earlier ``values`` of its group; where there is none, inf or a
+    number above ``ceiling`` (the callers clamp to at most it).  ``groups`` ascending: shifting each
+    group below all earlier ones by more than the values' spread and ``ceiling`` makes one running
+    minimum serve all (an earlier group's minimum, shifted, is what an entry with none sees)."""
     if not len(values):
         return values
     finite = values[np.isfinite(values)]
-    span = float(finite.max() - finite.min()) + 1.0 if len(finite) else 1.0
+    span = float(max(float(finite.max()), ceiling) - finite.min()) + 1.0 if len(finite) else 1.0
     shift = (groups - groups[0]).astype(np.float64) * span
     running = np.minimum.accumulate(values - shift) + shift
     out = np.empty_like(running)
     out[0] = np.inf
     out[1:] = running[:-1]
-    # no finite value earlier in its own group: an earlier group's minimum, shifted, leaks in (above
-    # that group's values, not above every threshold a caller compares with): none is inf
-    counted = np.concatenate(([0], np.cumsum(np.isfinite(values))))  # finite values before each entry
-    first = np.r_[True, groups[1:] != groups[:-1]]
-    start = np.maximum.accumulate(np.where(first, np.arange(len(values)), 0))
-    out[counted[:-1] == counted[start]] = np.inf
+    out[1:][groups[1:] != groups[:-1]] = np.inf
     return out
