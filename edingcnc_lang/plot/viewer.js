@@ -454,7 +454,7 @@
     const along = R.axis === "B" ? "Y" : "X";
     g.fillText(along + " mm along the bar; up: the bar's angle, degrees (at " + R.axis + "0 the tool is at 90)", left + pw / 2, top + ph + 27);
     g.textAlign = "left";
-    g.fillText("frame of move " + R.moves[frame] + " of " + R.moves[R.moves.length - 1] + " (depth below the bar's surface)", left, top - 6);
+    g.fillText("the bar after move " + R.moves[frame] + " of " + R.moves[R.moves.length - 1] + ": depth below its surface", left, top - 6);
     const bar = [left + pw + 14, top, 12, ph];  // the colour scale: 0 at the top, the deepest at the bottom
     for (let k = 0; k < ph; k++) {
       const c = depthShade(k / ph);
