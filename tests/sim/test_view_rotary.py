@@ -131,3 +131,20 @@ def test_a_browser_draws_the_unrolled_bar(tmp_path: Path) -> None:
     assert deep.mean() > 0.0005, "the cuts are not on the picture"
     marker = np.all(np.abs(lower - np.array([0xe0, 0x20, 0x20]) / 255) < 0.06, axis=-1)
     assert marker.sum() > 10, "the tool's marker is not on the picture"
+
+
+def test_on_b_the_map_runs_along_y(tmp_path: Path) -> None:
+    from tests.sim.test_rotary_kinematics import B_INI, ini, job
+
+    page = tmp_path / "b.html"
+    crash = job(tmp_path, "G0 X0 Y50 B30\nG0 Z15")  # a rapid straight down onto the bar at Y50, turned by B30
+    result = invoke("view", crash, "--ini", ini(tmp_path, extra=B_INI), "--stock", "cylinder:40,100,20", "-o", page)
+    assert result.exit_code == 0, result.output
+    data = rotary_data(page)
+    assert data["axis"] == "B" and data["start"] == 20.0
+    (found,) = data["findings"]
+    assert (found["kind"], found["line"]) == ("rapid_into_stock", 7)
+    assert found["along"] == pytest.approx(50.0) and found["angle"] == pytest.approx(60.0, abs=1e-3)  # 90° less B30
+    tips = np.frombuffer(base64.b64decode(data["tips"]), "<f4").reshape(-1, 2)
+    assert tips[found["move"]] == pytest.approx((50.0, 60.0), abs=1e-3)
+    assert depth_maps(data)[-1].max() > 4.0  # the rapid went 5 mm into the bar
