@@ -205,8 +205,6 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
         raise usage_error("--chuck LENGTH goes with --bar DIAMETER,LENGTH[,Z0] (a lathe's bar)")
     if (bar is not None and box is not None) or stock_stl is not None:
         raise usage_error("give the stock as exactly one of --stock, --stock-stl and --bar")
-    if compare_stl is not None and bar is not None:
-        raise usage_error("--compare-stl is for the box stock; with round stock, write the part with --stl")
     if bar is not None and chuck is not None and chuck >= bar[1]:
         raise usage_error(f"--chuck {chuck:g} grips the whole bar ({bar[1]:g} mm long)")
     check_outputs({"-o": output, "--stl": stl}, [job, tools_file, compare_stl, *machine.input_files()])
@@ -225,14 +223,14 @@ def _sim_round(job: str, box: tuple[float, ...] | None, stock_stl: str | None, b
             stock = RoundStock.cylinder(box.diameter, box.length, box.x0, resolution)
             result = simulate_cylinder(path, stock, options, tools, machine.spindle_tool, name=name)
     deviation = None
-    if compare_stl is not None and isinstance(result, CylinderResult):
+    if compare_stl is not None:
         from edingcnc_lang.sim.rotary_output import compare_rotary
 
-        deviation = compare_rotary(stock, compare_stl, result.axis)
+        deviation = compare_rotary(stock, compare_stl, "Z" if isinstance(result, BarResult) else result.axis)
     if output and fmt:
         title = _title(name or job, stock.removed_volume, len(result.findings))
         if isinstance(result, BarResult):
-            bar_output.draw_bar(result, ensure_parent(Path(output)), fmt, title)
+            bar_output.draw_bar(result, ensure_parent(Path(output)), fmt, title, deviation)
         else:
             bar_output.draw_unwrapped(result, ensure_parent(Path(output)), fmt, title, deviation)
     if stl:

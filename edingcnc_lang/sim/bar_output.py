@@ -56,9 +56,10 @@ def summary(result: BarResult | CylinderResult) -> list[str]:
     return lines
 
 
-def draw_bar(result: BarResult, out: Path, fmt: str, title: str) -> None:
+def draw_bar(result: BarResult, out: Path, fmt: str, title: str, deviation: Deviation | None = None) -> None:
     """The half section: Z across, X up (as the job writes it: a diameter on a diameter lathe), the
-    material left shaded over the bar's outline, the chuck hatched, the findings marked."""
+    material left shaded over the bar's outline, the chuck hatched, the findings marked; with
+    ``deviation`` (``--compare-stl``) the intended part's profile drawn over it."""
     from matplotlib.figure import Figure
 
     from edingcnc_lang.outputs import save_figure
@@ -75,6 +76,10 @@ def draw_bar(result: BarResult, out: Path, fmt: str, title: str) -> None:
     solid = outer > inner + EPS
     ax.stairs(np.where(solid, outer, np.nan) * scale, edges, baseline=np.where(solid, inner, np.nan) * scale,
               fill=True, color="#4c72b0", label="part")
+    if deviation is not None:  # the bar's radius less the part's, per slice (one angle cell)
+        intended = outer.astype(np.float64) - deviation.map[:, 0]
+        ax.stairs(intended * scale, edges, color="#d62728", linestyle="--", linewidth=1.2,
+                  label=f"{Path(deviation.file).name} (max over-cut {deviation.max_overcut:.3f} mm)")
     if isinstance(result, BarResult) and result.chuck is not None:
         ax.axvspan(edges[0] - 0.05 * stock.length, result.chuck, ymin=0, ymax=1, fill=False, hatch="//",
                    edgecolor="#7f7f7f", label="chuck")

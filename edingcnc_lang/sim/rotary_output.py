@@ -127,7 +127,8 @@ def draw_shaded(ax: Any, stock: RoundStock, axis: str) -> None:
 
 def compare_rotary(stock: RoundStock, part: str | Path, axis: str = "A") -> Deviation:
     """The cut bar against the intended part (an STL in work coordinates at A0/B0, as ``--stl``
-    writes it): the part unrolled to (axial position, the bar's angle, radius) and its outermost
+    writes it; ``axis`` "Z": a lathe's bar, the part about the Z axis, its one angle cell the whole
+    turn, so the part's outermost radius over each slice is its profile): the part unrolled to (axial position, the bar's angle, radius) and its outermost
     radius over each cell found as ``compare`` finds a part's top (``stl.raster_top``); the
     deviation is the bar's outer radius less the part's, over the cells the part covers."""
     triangles = _unrolled(_fine(read_stl(part).astype(np.float64), stock.angle_step(), axis), axis)
@@ -147,8 +148,8 @@ def compare_rotary(stock: RoundStock, part: str | Path, axis: str = "A") -> Devi
 def _polar(triangles: np.ndarray, axis: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Axial position, the bar's own angle (degrees, 0..360) and radius of each vertex."""
     x, y, z = triangles[..., 0], triangles[..., 1], triangles[..., 2]
-    along, p = (y, -x) if axis == "B" else (x, y)
-    return along, np.degrees(np.arctan2(z, p)) % 360.0, np.hypot(p, z)
+    along, p, q = (z, x, y) if axis == "Z" else (y, -x, z) if axis == "B" else (x, y, z)
+    return along, np.degrees(np.arctan2(q, p)) % 360.0, np.hypot(p, q)
 
 
 def _fine(triangles: np.ndarray, step: float, axis: str, rounds: int = 10) -> np.ndarray:

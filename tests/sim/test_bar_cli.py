@@ -99,3 +99,41 @@ def test_the_examples_simulate_clean() -> None:
         assert result.exit_code == 0, result.output
         doc = json.loads(result.stdout)
         assert doc["collisions"] == [] and doc["stock"]["removed_volume"] > 1000
+
+
+def _pin(path: Path, diameter: float, length: float, low: float) -> None:
+    """An intended part: a plain pin of ``diameter`` from Z ``low`` for ``length``, revolved about Z."""
+    from edingcnc_lang.sim.bar_output import bar_mesh
+    from edingcnc_lang.sim.round_stock import RoundStock
+    from edingcnc_lang.sim.stl import write_stl
+
+    write_stl(path, bar_mesh(RoundStock.bar(diameter, length, low, 0.1)))
+
+
+def test_compare_stl_against_the_part_it_wrote_is_exact(job: Path) -> None:
+    mesh = job.parent / "turned.stl"
+    args = ["sim", job, "--ini", LATHE_INI, "--bar", "40,50", "--resolution", "0.1",
+            "--tools", job.parent / "tools.toml"]
+    assert invoke(*args, "--stl", mesh).exit_code == 0
+    result = invoke(*args, "--compare-stl", mesh, "--json")
+    assert result.exit_code == 0, result.output
+    compared = json.loads(result.stdout)["compare"]
+    assert compared["cells"] == 500 and compared["max_overcut"] == 0 and compared["max_undercut"] == 0
+
+
+def test_compare_stl_tells_material_left_and_a_gouge(job: Path) -> None:
+    """The job turns X30 (radius 15) over Z0..-20 of a 40 mm bar: against a 32 mm pin over Z0..-30
+    it leaves 4 mm on Z-20..-30 and gouges 1 mm into Z0..-20."""
+    pin = job.parent / "pin.stl"
+    _pin(pin, 32, 30, -30)
+    result = invoke("sim", job, "--ini", LATHE_INI, "--bar", "40,50", "--resolution", "0.1",
+                    "--tools", job.parent / "tools.toml", "--compare-stl", pin, "--json")
+    assert result.exit_code == 0, result.output
+    compared = json.loads(result.stdout)["compare"]
+    assert compared["cells"] == 300
+    assert compared["max_overcut"] == pytest.approx(1.0, abs=1e-3)
+    assert compared["max_undercut"] == pytest.approx(4.0, abs=1e-3)
+    report = invoke("sim", job, "--ini", LATHE_INI, "--bar", "40,50", "--tools", job.parent / "tools.toml",
+                    "--compare-stl", pin, "-o", job.parent / "cmp.svg")
+    assert f"against {pin}: over-cut 1.000 mm, under-cut 4.000 mm" in report.stdout
+    assert "pin.stl (max over-cut 1.000 mm)" in (job.parent / "cmp.svg").read_text()
