@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang import speedups
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import AXES, PLANES, Pose
+from edingcnc_lang.canon import AXES, PLANES
 from edingcnc_lang.errors import MachineError
 from edingcnc_lang.events import DwellEvent, PauseEvent, SpindleEvent
 from edingcnc_lang.syntax.plain_words import plain_block

@@ -17,13 +17,11 @@ from collections.abc import Mapping
 from typing import Protocol
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.canon import Canon
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import LaserEvent, ModbusEvent, PrinterEvent, ThcEvent
-from edingcnc_lang.errors import Location, MachineError
+from edingcnc_lang.errors import Location
 from edingcnc_lang.host import Host
-from edingcnc_lang.machine.parameters import Parameters
-from edingcnc_lang.machine.parts import DeviceState
+from edingcnc_lang.machine.parts import DeviceState, PartMachine
 from edingcnc_lang.machine.evaluator import param_index
 from edingcnc_lang.machine.state import CommandTable, StepTable, format_value
 
@@ -36,24 +34,15 @@ MODBUS_READS = frozenset({1, 2, 3, 4})  # read coils, discrete inputs, holding a
 _MODBUS_WORD = re.compile(r"([a-z])\s*(-?\d+(?:\.\d*)?)", re.IGNORECASE)
 
 
-class DeviceMachine(Protocol):
+class DeviceMachine(PartMachine, Protocol):
     """What the devices' codes use of the machine, read-only (their state changes inside ``devices``)."""
 
     @property
     def devices(self) -> DeviceState: ...
     @property
-    def params(self) -> Parameters: ...
-    @property
     def host(self) -> Host: ...
     @property
-    def canon(self) -> Canon: ...
-    @property
-    def path(self) -> str: ...
-    @property
-    def line(self) -> int: ...
-    @property
     def spindle_offset(self) -> tuple[float, float, float]: ...
-    def fail(self, message: str, span: n.Span | None = None) -> MachineError: ...
     def where(self, span: n.Span | None = None) -> Location: ...
     def _offsets_changed(self) -> None: ...
 

@@ -12,15 +12,34 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TextIO
+from typing import Protocol, TextIO
 
 from collections.abc import Sequence
 
-from edingcnc_lang.canon import Pose
+from edingcnc_lang.canon import Canon, Pose
 from edingcnc_lang.config.heightmap import ZhcTable
+from edingcnc_lang.errors import MachineError
 from edingcnc_lang.events import MessageEvent
 from edingcnc_lang.machine.geometry import scale_about
 from edingcnc_lang.machine.job_files import OpenMode, job_file, open_job_file
+from edingcnc_lang.machine.parameters import Parameters
+from edingcnc_lang.syntax import nodes as n
+
+
+class PartMachine(Protocol):
+    """What every composed part (``devices.py``, ``zhc_commands.py``) uses of the machine, read-only:
+    the parameters, the canon, where the run is and errors naming it; each part's own protocol adds
+    its record and the few other things it needs."""
+
+    @property
+    def params(self) -> Parameters: ...
+    @property
+    def canon(self) -> Canon: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def line(self) -> int: ...
+    def fail(self, message: str, span: n.Span | None = None) -> MachineError: ...
 
 
 @dataclass(slots=True)

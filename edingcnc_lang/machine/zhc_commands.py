@@ -16,37 +16,26 @@ from pathlib import Path
 from typing import Protocol, TextIO
 
 from edingcnc_lang.syntax import nodes as n
-from edingcnc_lang.canon import Canon
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.events import ZhcEvent, ZhcSaveEvent
-from edingcnc_lang.errors import EcncError, MachineError
+from edingcnc_lang.errors import EcncError
 from edingcnc_lang.config.heightmap import ZhcTable
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.machine.job_files import OpenMode
-from edingcnc_lang.machine.parameters import Parameters
-from edingcnc_lang.machine.parts import JobFiles, ZhcState
+from edingcnc_lang.machine.parts import JobFiles, PartMachine, ZhcState
 from edingcnc_lang.syntax.input_limits import MAX_HEIGHT_MAP_VALUE
 from edingcnc_lang.machine.state import CommandTable, MessageKind
 
 
-class ZhcMachine(Protocol):
+class ZhcMachine(PartMachine, Protocol):
     """What the ZHC commands use of the machine, read-only (the table changes inside ``zhc``)."""
 
     @property
     def zhc(self) -> ZhcState: ...
     @property
-    def params(self) -> Parameters: ...
-    @property
     def evaluator(self) -> Evaluator: ...
     @property
     def files(self) -> JobFiles: ...
-    @property
-    def canon(self) -> Canon: ...
-    @property
-    def path(self) -> str: ...
-    @property
-    def line(self) -> int: ...
-    def fail(self, message: str, span: n.Span | None = None) -> MachineError: ...
     def offset(self) -> list[float]: ...
     def message(self, kind: MessageKind, text: str) -> None: ...
 

@@ -79,7 +79,8 @@ def _records() -> dict[str, type]:
     init = next(f for f in cls.body if isinstance(f, ast.FunctionDef) and f.name == "__init__")
     return {target.attr: getattr(parts, node.value.func.id) for node in ast.walk(init) if isinstance(node, ast.Assign)
             for target in node.targets if isinstance(target, ast.Attribute) and isinstance(node.value, ast.Call)
-            and isinstance(node.value.func, ast.Name) and hasattr(parts, node.value.func.id)}
+            and isinstance(node.value.func, ast.Name)
+            and getattr(getattr(parts, node.value.func.id, None), "__module__", None) == parts.__name__}
 
 
 def _part_writes(function: ast.AST, records: dict[str, type], receiver: str = "self") -> set[tuple[str, str]]:
@@ -111,7 +112,8 @@ def _composed() -> list[tuple[Path, ast.FunctionDef]]:
 def test_every_part_record_is_held_once_and_declares_each_name_once() -> None:
     """A concern's state is one record (no field half-moved back into ``MachineState.__init__``)."""
     records = _records()
-    made = [c for c in vars(parts).values() if isinstance(c, type) and c.__module__ == parts.__name__]
+    made = [c for c in vars(parts).values()
+            if isinstance(c, type) and c.__module__ == parts.__name__ and dataclasses.is_dataclass(c)]
     # a record may hold records of its own (CycleState.pending: PendingMoves); the machine holds the others
     fields = [str(f.type) for record in records.values() for f in dataclasses.fields(record)]
     made = [c for c in made if not any(c.__name__ in annotation.split(" | ") for annotation in fields)]
