@@ -137,7 +137,7 @@ class CoordinateSystems(MachineState):
         if index >= t.POS_MACHINE:
             return self.machine_frame(self.pos)[index - t.POS_MACHINE]
         if index == t.SPINDLE_SPEED:  # rev/s, following X under constant surface speed
-            return self.rpm_at(self.pos[0]) / 60.0 if self.spindle != 5 else 0.0
+            return self.rpm_at(self.pos[0]) / 60.0 if self.spindle.direction != 5 else 0.0
         return self.reported_position()[index - t.POS_WORK]
 
     def _axis_values(self, words: Mapping[str, float]) -> dict[int, float]:

@@ -26,7 +26,8 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.parts import CycleState, DeviceState, JobFiles, MessageLog, OffsetState, ScalingState, ZhcState
+from edingcnc_lang.machine.parts import (CycleState, DeviceState, JobFiles, MessageLog, OffsetState, ScalingState,
+                                         SpindleState, ZhcState)
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.geometry import ArcPlan
@@ -212,15 +213,8 @@ class MachineState:
             self.modal["path_control"] = t.code_key(61)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
-        self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
-        self.rpm = 0.0                     # G97: the speed the spindle turns at, S within the machine's range
-        self.css_setting: tuple[float, float, float] | None = None  # G96: surface mm/min, max and min rpm
-        self.css_max = 0.0                 # the D word of G96 (0: none)
-        self.sync_pitch = 0.0              # K of G33, mm per revolution
-        self.spindle = 5                   # M3, M4 or M5
-        self.spindle_override = 100.0      # M51 P..: percent (manual p. 61)
-        self.spindle_override_on = True    # M48 on, M49 off, M51 P<0 off
         # the parts' own state, one record each (parts.py declares their fields)
+        self.spindle = SpindleState()
         self.devices = DeviceState()
         self.offsets = OffsetState()
         self.scaling = ScalingState()
@@ -340,39 +334,28 @@ class MachineState:
         section = SPINDLE_SECTION.get(m)
         return self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
 
-    @property
-    def spindle_factor(self) -> float:
-        """The spindle speed override in force (M48/M49/M51, manual p. 61) as a factor."""
-        return self.spindle_override / 100.0 if self.spindle_override_on else 1.0
-
-    def _spindle_override(self, m: int, p: float | None) -> None:
-        """M48 switches the spindle override on at 100 % (there is no spindle knob in a simulation), M49
-        off; M51 P.. on at P percent (P0: the knob's 100 %), M51 without P on at the value it had."""
-        self.spindle_override_on = m != 49
-        if m == 48 or (m == 51 and p == 0):
-            self.spindle_override = 100.0
-        elif m == 51 and p is not None:
-            self.spindle_override = p
-
     def css(self, overridden: bool = True) -> Css | None:
         """Constant surface speed in force (G96), centred on the current work X0; None under G97.
         The spindle override scales the surface speed the spindle keeps (``overridden``)."""
-        if self.css_setting is None:
+        spindle = self.spindle
+        if spindle.css is None:
             return None
-        surface, max_rpm, min_rpm = self.css_setting
-        return Css(surface * (self.spindle_factor if overridden else 1.0), max_rpm, min_rpm, self.offset()[0])
+        surface, max_rpm, min_rpm = spindle.css
+        return Css(surface * (spindle.factor if overridden else 1.0), max_rpm, min_rpm, self.offset()[0])
 
     def rpm_at(self, x: float, overridden: bool = True) -> float:
         """The spindle speed with the tool at machine X ``x`` (also while it is stopped): the programmed
         one, times the spindle override unless ``overridden`` is False, within the machine's range."""
         css = self.css(overridden)
-        return css.rpm(x) if css is not None else self._overridden_rpm() if overridden else self.rpm
+        return css.rpm(x) if css is not None else self._overridden_rpm() if overridden else self.spindle.rpm
 
     def _overridden_rpm(self) -> float:
         """The G97 speed the spindle turns at under the spindle override, within the machine's range."""
-        if self.spindle_factor == 1.0:
-            return self.rpm
-        return clamp_rpm(self.rpm * self.spindle_factor, self.config.spindle_max_rpm, self.config.spindle_min_rpm)
+        spindle = self.spindle
+        factor = spindle.factor
+        if factor == 1.0:
+            return spindle.rpm
+        return clamp_rpm(spindle.rpm * factor, self.config.spindle_max_rpm, self.config.spindle_min_rpm)
 
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
               sync: float = 0.0) -> None:
@@ -412,7 +395,7 @@ class MachineState:
     def spindle_along(self) -> tuple[float, Css | None]:
         """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the
         constant surface speed that gives the speed at any X instead."""
-        if self.spindle == 5:
+        if self.spindle.direction == 5:
             return 0.0, None
         css = self.css()
         return (0.0, css) if css is not None else (self._overridden_rpm(), None)
