@@ -86,7 +86,7 @@ def _has_kinematics(run: Run) -> bool:
 def _kinematics(run: Run, writers: Writers) -> list[dict[str, Any]]:
     interp, kin = run.interpreter, run.kinematics
     found = [_plain("name", kin.name), _plain("type (#5150)", kin.kin_type()),
-             _plain("active", "yes" if interp.kinematics_active else "no")]
+             _plain("active", "yes" if interp.guards.kinematics_active else "no")]
     found += [_plain(f"joint {i + 1}", format_value(v)) for i, v in enumerate(run.motion.joints)]
     found += [parameter(run, i, writers) for i in KINEMATICS_OUTPUT if i in interp.params.written]
     return found

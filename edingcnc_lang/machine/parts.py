@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TextIO
+from typing import NamedTuple, TextIO
 
 from collections.abc import Sequence
 
@@ -172,3 +172,32 @@ class SpindleState:
             self.override = 100.0
         elif m == 51 and p is not None:
             self.override = p
+
+
+class Turn(NamedTuple):
+    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
+
+    pivot: tuple[float, float, float]
+    angle: float
+    plane: str  # "XY", "YZ" or "XZ"
+
+
+@dataclass(slots=True)
+class RotationState:
+    """G68 (``offsets.py``: G68/G69, and the pivot the rotation stage is told of as the offsets move it);
+    ``moves.py`` (the tangential knife's direction) and ``scaling_words.py`` (G51's centre) read it."""
+
+    turn: Turn | None = None                     # G68 in force (None: G69)
+    sent_pivot: tuple[float, ...] | None = None  # the G68 pivot the rotation stage has (None: none sent yet)
+
+
+@dataclass(slots=True)
+class MotionGuards:
+    """Switches that change what a move may do or does (``steps.py``'s M26/M27; ``named_commands.py``'s
+    TCAGuard, tanknife and KIN): ``MachineState._move`` refuses a move they forbid, ``moves.py`` turns the
+    knife, ``threads.py`` takes the Cartesian limits under kinematics, and ``bulk.batchable`` reads them all."""
+
+    clamped: bool = False            # M26: the rotary axes are clamped until M27
+    tca_guard: bool = False          # TCAGuard on: moves into the tool-change area are refused
+    tanknife: bool = False           # tanknife on: C follows the XY direction of the cut
+    kinematics_active: bool = False  # KIN ON or a mapping: the kinematics maps Cartesian moves to the joints

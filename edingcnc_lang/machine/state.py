@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from contextlib import AbstractContextManager
-from typing import TYPE_CHECKING, Any, ClassVar, Literal, NamedTuple
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
@@ -26,8 +26,8 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.parts import (CycleState, DeviceState, JobFiles, MessageLog, OffsetState, ScalingState,
-                                         SpindleState, ZhcState)
+from edingcnc_lang.machine.parts import (CycleState, DeviceState, JobFiles, MessageLog, MotionGuards, OffsetState,
+                                         RotationState, ScalingState, SpindleState, ZhcState)
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.geometry import ArcPlan
@@ -107,14 +107,6 @@ StatementTable = dict[type, Callable[..., None]]      # statement type -> (machi
 StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
 CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
 MessageKind = Literal["msg", "warn", "error"]       # what ``message`` says (events.MsgEvent, WarnEvent, ErrorEvent)
-
-
-class Turn(NamedTuple):
-    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
-
-    pivot: tuple[float, float, float]
-    angle: float
-    plane: str  # "XY", "YZ" or "XZ"
 
 
 class ProgramEnd(Exception):
@@ -221,12 +213,8 @@ class MachineState:
         self.zhc = ZhcState()
         self.messages = MessageLog()
         self.cycle = CycleState()
-        self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
-        self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
-        self.kinematics_active = False
-        self.tanknife = False
-        self.clamped = False               # M26: the rotary axes are clamped until M27
-        self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
+        self.rotation = RotationState()
+        self.guards = MotionGuards()
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
         # the runner sets it, an MDI session has no loaded job.
@@ -360,9 +348,10 @@ class MachineState:
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
               sync: float = 0.0) -> None:
         start = tuple(self.pos)
-        if self.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
+        guards = self.guards
+        if guards.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
             raise self.fail("a rotary axis cannot move while it is clamped (M26): release it with M27 first")
-        if self.tca_guard and kind != "home" and enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
+        if guards.tca_guard and kind != "home" and enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
             low, high = self.config.tca_negative, self.config.tca_positive
             raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
                             f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "

@@ -111,7 +111,7 @@ class LineSteps(MachineState):
     def _step_m_state(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         m = code // 10
         if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
-            self.clamped = m == 26
+            self.guards.clamped = m == 26
             if "P" in words:  # manual 3.7.9 (p. 65): "P1 bedeutet AUX 1": the output that drives the brake
                 port = int(words["P"])
                 self.devices.outputs[port] = m == 26

@@ -47,7 +47,7 @@ class Threading(MachineState):
         length = xyz_distance(self.pos, end)
         config = self.config
         for axis in range(3):
-            limit = (config.cartesian_max_velocity[axis] if self.kinematics_active
+            limit = (config.cartesian_max_velocity[axis] if self.guards.kinematics_active
                      else config.joints[axis].max_velocity if axis < len(config.joints) else 0.0)
             speed = feed * abs(end[axis] - self.pos[axis]) / length / 60.0  # mm/s along this axis
             if limit > 0.0 and speed > limit * (1.0 + 1e-9):
