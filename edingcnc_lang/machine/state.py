@@ -1,6 +1,6 @@
 """The interpreter's machine state and the constants its parts share.
 
-``MachineState`` holds what one virtual machine knows (modal state, position, feed, spindle,
+``MachineState`` holds what one virtual machine knows (modal state, position, feed,
 parameters, the call stack, and one record per part that owns its state, ``parts.py``) and the
 few helpers every part needs: errors that name the line, the step budget and handing a move to
 the canon.  The parts of the interpreter (control flow, line steps, offsets, motion, ...) are
