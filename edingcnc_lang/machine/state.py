@@ -351,7 +351,8 @@ class MachineState:
         guards = self.guards
         if guards.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
             raise self.fail("a rotary axis cannot move while it is clamped (M26): release it with M27 first")
-        if guards.tca_guard and kind != "home" and enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
+        if guards.tca_guard and kind != "home" and \
+                enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
             low, high = self.config.tca_negative, self.config.tca_positive
             raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
                             f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
