@@ -388,7 +388,7 @@ class Run:
             joints=tuple(self.motion.joints),  # type: ignore[arg-type]
             variables=interp.params.snapshot_written(),
             messages=list(interp.messages.events),
-            kinematics={"name": kin.name, "type": kin.kin_type(), "active": interp.kinematics_active},
+            kinematics={"name": kin.name, "type": kin.kin_type(), "active": interp.guards.kinematics_active},
             tool=int(interp.params.read(t.TOOL_CURRENT)),
             moves=self.motion.moves,
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],

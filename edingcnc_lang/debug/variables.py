@@ -86,7 +86,7 @@ def _has_kinematics(run: Run) -> bool:
 def _kinematics(run: Run, writers: Writers) -> list[dict[str, Any]]:
     interp, kin = run.interpreter, run.kinematics
     found = [_plain("name", kin.name), _plain("type (#5150)", kin.kin_type()),
-             _plain("active", "yes" if interp.kinematics_active else "no")]
+             _plain("active", "yes" if interp.guards.kinematics_active else "no")]
     found += [_plain(f"joint {i + 1}", format_value(v)) for i, v in enumerate(run.motion.joints)]
     found += [parameter(run, i, writers) for i in KINEMATICS_OUTPUT if i in interp.params.written]
     return found
@@ -95,8 +95,8 @@ def _kinematics(run: Run, writers: Writers) -> list[dict[str, Any]]:
 def _modal(run: Run) -> list[dict[str, Any]]:
     interp = run.interpreter
     found = [_plain(group.replace("_", " "), t.code_name("G", code)) for group, code in interp.modal.items()]
-    spindle = {3: "M3 (clockwise)", 4: "M4 (counter-clockwise)", 5: "M5 (stopped)"}.get(interp.spindle, "")
-    found += [_plain("F", format_value(interp.feed)), _plain("S", format_value(interp.speed)),
+    spindle = {3: "M3 (clockwise)", 4: "M4 (counter-clockwise)", 5: "M5 (stopped)"}.get(interp.spindle.direction, "")
+    found += [_plain("F", format_value(interp.feed)), _plain("S", format_value(interp.spindle.speed)),
               _plain("spindle", spindle), _plain("tool (#5008)", int(interp.params.read(t.TOOL_CURRENT))),
               _plain("tool selected (T)", interp.offsets.selected_tool),
               _plain("coolant", " ".join(f"M{c}" for c in sorted(interp.devices.coolant)) or "off"),

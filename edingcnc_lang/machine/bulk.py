@@ -160,8 +160,9 @@ class BulkPath(MachineState):
         X), not on a lathe (X words are diameters there).  G68, G51, G41/G42 and ZHC do not stop
         it: they are later pipeline stages, which take batches too.
         """
-        return not (self.tanknife or self.clamped or self.tca_guard or self.modal["feed_mode"] != G_94
-                    or self.css_setting is not None or self.config.lathe)
+        guards = self.guards
+        return not (guards.tanknife or guards.clamped or guards.tca_guard or self.modal["feed_mode"] != G_94
+                    or self.spindle.css is not None or self.config.lathe)
 
     def _simple_moves(self, path: str, lines: tuple[tuple[int, str], ...], first: int) -> int:
         """Execute lines[first:] as long as each is a plain G0/G1 move or arc; returns the first it left.

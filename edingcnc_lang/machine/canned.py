@@ -87,7 +87,7 @@ class CannedCycles(MachineState):
             raise self.fail("G87 needs K, the level the back bore ends at (between the bottom and R)", span)
         if motion in cycles.NEEDS_Q and sticky.get("Q", 0) <= 0:
             raise self.fail(f"{t.code_name('G', motion)} needs a peck depth Q greater than 0", span)
-        if motion in cycles.NEEDS_SPINDLE and (self.spindle == 5 or self.rpm_at(self.pos[0]) <= 0):
+        if motion in cycles.NEEDS_SPINDLE and (self.spindle.direction == 5 or self.rpm_at(self.pos[0]) <= 0):
             raise self.fail(f"{t.code_name('G', motion)} needs the spindle turning: program "
                             f"{'M4' if motion == G_74 else 'M3'} with an S word first", span)
         repeats = words.get("L", 1)
@@ -249,7 +249,7 @@ class CannedCycles(MachineState):
     def _cycle_steps(self, steps: list[Step], hole: list[float], normal: int, feed: float) -> None:
         at = list(hole)  # where the tool is across the hole: its centre, or shifted past the bar (G87)
         at[normal] = self.work_position()[normal]
-        programmed = self.spindle  # what "spindle_start" turns back to
+        programmed = self.spindle.direction  # what "spindle_start" turns back to
         switched = {"spindle_stop": 5, "spindle_start": programmed, "spindle_reverse": 3 if programmed == 4 else 4}
         tapping = True if self.cycle.pitch else None
         for step in steps:
@@ -268,7 +268,8 @@ class CannedCycles(MachineState):
                 self.canon.event(PauseEvent(self.path, self.line, 0, "G88"))
             else:  # the spindle stops, starts or reverses: the moves after it carry its new speed
                 self.flush_pending()
-                self.spindle = switched[step.kind]
-                on = self.spindle != 5
-                self.canon.event(SpindleEvent(self.path, self.line, self.spindle, self.speed,
+                spindle = self.spindle
+                spindle.direction = switched[step.kind]
+                on = spindle.direction != 5
+                self.canon.event(SpindleEvent(self.path, self.line, spindle.direction, spindle.speed,
                                               self.rpm_at(self.pos[0]) if on else 0.0, tapping))

@@ -3,11 +3,12 @@
 declares it uses, in a ``Protocol``).
 
 Reading order for a newcomer: ``state`` (what the machine knows), ``parts`` (the state records the
-parts own: files, devices, tool offsets, G51, ZHC, messages), ``flow`` (statements, subs), ``line``
-and ``steps`` (one G-code line in the order of execution), ``spindle_modes`` (S, M3-M5, G96/G97),
-``comp_words`` and ``scaling_words`` (G40-G42, G50/G51 as programmed), ``offsets`` (work and
-machine coordinates), ``moves``, ``canned`` and ``threads`` (what a line moves), ``bulk`` (the fast
-path for plain CAM lines), ``devices``, ``messages``, ``named_commands`` and ``zhc_commands``.
+parts own: files, devices, tool offsets, G51, ZHC, messages, canned cycles, the spindle, G68, the
+motion guards), ``flow`` (statements, subs), ``line`` and ``steps`` (one G-code line in the order
+of execution), ``spindle_modes`` (S, M3-M5, G96/G97), ``comp_words`` and ``scaling_words``
+(G40-G42, G50/G51 as programmed), ``offsets`` (work and machine coordinates), ``moves``, ``canned``
+and ``threads`` (what a line moves), ``bulk`` (the fast path for plain CAM lines), ``devices``,
+``messages``, ``named_commands`` and ``zhc_commands``.
 The interpreter emits every move and event to a ``Canon``: in a run that is the head of the
 pipeline (``pipeline/``), whose last stage is the motion stage.
 """

@@ -78,7 +78,7 @@ class Moves(MachineState):
                 self._move("rapid", target)
             elif motion == G_1:
                 feed = self._feed_for(xyz_distance(self.pos, target), words, span, [self.pos[0], target[0]])
-                if self.tanknife and math.hypot(target[0] - self.pos[0], target[1] - self.pos[1]) > 1e-9:
+                if self.guards.tanknife and math.hypot(target[0] - self.pos[0], target[1] - self.pos[1]) > 1e-9:
                     target[5] = self._knife_align(math.degrees(math.atan2(target[1] - self.pos[1],
                                                                           target[0] - self.pos[0])))
                 self._move("linear", target, feed)
@@ -101,7 +101,7 @@ class Moves(MachineState):
             raise self.fail(f"{err}; {where} in the {plane} plane", span) from None
         s, center = (self.pos[first], self.pos[second]), plan.center
         feed = self._feed_for(plan.length, words, span, self._arc_xs(plane, s, center, plan.angle, clockwise))
-        if self.tanknife and plane == "XY":  # the knife follows the tangent all along the arc
+        if self.guards.tanknife and plane == "XY":  # the knife follows the tangent all along the arc
             normal_deg = -90.0 if clockwise else 90.0
             start_tangent = math.degrees(math.atan2(s[1] - center[1], s[0] - center[0])) + normal_deg
             c_start = self._knife_align(start_tangent)
@@ -161,8 +161,9 @@ class Moves(MachineState):
         A turn larger than tanKnifeAngleForLiftUp lifts the knife, turns it and lowers it
         again (three moves); a smaller one turns in place.  Returns the new C.
         """
-        if self.rotation is not None and self.rotation.plane == "XY":  # the cut runs turned on the machine
-            direction += self.rotation.angle
+        g68 = self.rotation.turn
+        if g68 is not None and g68.plane == "XY":  # the cut runs turned on the machine
+            direction += g68.angle
         current = self.pos[5]
         target = current + ((direction - current + 180.0) % 360.0 - 180.0)
         turn = abs(target - current)

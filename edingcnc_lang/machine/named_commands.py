@@ -51,9 +51,9 @@ class Commands(MachineState):
         self._machine_move("home", end, velocity * 60.0)
 
     def _kinematics_off(self) -> None:
-        if self.kinematics_active:
+        if self.guards.kinematics_active:
             self.pos = list(self.canon.kinematics("OFF", (), tuple(self.pos), self.path, self.line))
-            self.kinematics_active = False
+            self.guards.kinematics_active = False
 
     def _exec_kin(self, stmt: n.Kin) -> None:
         args = tuple(self.evaluator.value(a) for a in stmt.args)
@@ -62,16 +62,16 @@ class Commands(MachineState):
             args = (off[0], off[1])  # a mapping's rotation point defaults to the work zero
         self.pos = list(self.canon.kinematics(stmt.mode, args, tuple(self.pos), self.path, self.line))
         if stmt.mode != "CTRL":
-            self.kinematics_active = stmt.mode != "OFF"
+            self.guards.kinematics_active = stmt.mode != "OFF"
 
     def _exec_switch(self, stmt: n.Switch) -> None:
         if stmt.name == "zhc":
             height_comp.switch(self, stmt.on, stmt.span)
             return
         if stmt.name == "tcaguard":
-            self.tca_guard = stmt.on
+            self.guards.tca_guard = stmt.on
         if stmt.name == "tanknife":
-            self.tanknife = stmt.on
+            self.guards.tanknife = stmt.on
             work_zero = tuple(self.offset()[:3])  # the bend knife's Z band is in work coordinates
             self.pos = list(self.canon.kinematics("TANKNIFE_ON" if stmt.on else "TANKNIFE_OFF", work_zero,
                                                   tuple(self.pos), self.path, self.line))

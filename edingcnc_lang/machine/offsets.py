@@ -22,9 +22,9 @@ from edingcnc_lang.machine.state import (
     LINEAR_AXES,
     PLANE_OF,
     MachineState,
-    Turn,
     format_value,
 )
+from edingcnc_lang.machine.parts import Turn
 
 # G68 I1 / J1 / K1: the rotation axis X, Y or Z, so the plane YZ, XZ or XY (manual 3.6.17).
 G68_AXIS_WORDS = {"I": "YZ", "J": "XZ", "K": "XY"}
@@ -39,15 +39,16 @@ class CoordinateSystems(MachineState):
     def _offsets_changed(self) -> None:
         """An offset changed (G5x, G10, G92.., G43, a macro's write): under G68 the pivot moves with
         the offsets, so the current point is re-expressed about the new pivot and the machine stays."""
-        pivot = self._rotation_pivot() if self.rotation is not None and self.offsets.cached is not None else None
+        turn = self.rotation.turn
+        pivot = self._rotation_pivot() if turn is not None and self.offsets.cached is not None else None
         self.offsets.cached = None
         system = self.params.values[t.COORD_SYSTEM]  # a macro may select the system by writing #5220
         if system == int(system) and 1 <= system <= 9:
             self.modal["coord_system"] = t.COORD_SYSTEM_CODES[int(system) - 1]
-        if pivot is not None and self.rotation is not None:
+        if pivot is not None and turn is not None:
             moved = self._rotation_pivot()  # recomputes the offset and tells the rotation stage
             if moved != pivot:
-                angle, plane = self.rotation.angle, self.rotation.plane
+                angle, plane = turn.angle, turn.plane
                 here = rotate_about(self.pos, pivot, angle, plane)
                 self.pos = list(rotate_about(here, moved, -angle, plane))
 
@@ -56,9 +57,10 @@ class CoordinateSystems(MachineState):
         reads ``reading`` on the given axes; the others read what they read with ``base``.  Under
         G68 the reading is taken through the rotation (whose pivot moves with the offset), so X and
         Y are solved together."""
-        if self.rotation is None:
+        turn = self.rotation.turn
+        if turn is None:
             return [self.pos[i] - reading[i] if i in reading else b for i, b in enumerate(base)]
-        pivot, angle, plane = self.rotation
+        pivot, angle, plane = turn
         here = rotate_about(self.pos, self._rotation_pivot(), angle, plane)
         work = list(rotate_about([h - b for h, b in zip(here, base)], pivot, -angle, plane))
         for axis, number in reading.items():
@@ -67,7 +69,8 @@ class CoordinateSystems(MachineState):
 
     def _solved_axes(self, axes: Mapping[int, float]) -> set[int]:
         """The axes whose offset G92/G10 L20 set: the programmed ones, and both axes G68 turns."""
-        turned = set(TURNED_AXES[self.rotation.plane]) if self.rotation is not None else set()
+        turn = self.rotation.turn
+        turned = set(TURNED_AXES[turn.plane]) if turn is not None else set()
         return set(axes) | (turned if axes.keys() & turned else set())
 
     def offset(self) -> list[float]:
@@ -85,7 +88,7 @@ class CoordinateSystems(MachineState):
             for axis, shift in enumerate(self.spindle_offset):  # an alternate spindle (M91..M97)
                 off[axis] += shift
             state.cached = off
-            if self.rotation is not None:
+            if self.rotation.turn is not None:
                 self._sync_rotation(off)
         return state.cached
 
@@ -102,15 +105,17 @@ class CoordinateSystems(MachineState):
     # homing, probing, #5071..): the stages' maps, in the stages' order.
     def machine_frame(self, pose: list[float] | tuple[float, ...]) -> tuple[float, ...]:
         """Where the machine really is for a programmed pose."""
-        if self.rotation is not None:
-            pose = rotate_about(pose, self._rotation_pivot(), self.rotation.angle, self.rotation.plane)
+        turn = self.rotation.turn
+        if turn is not None:
+            pose = rotate_about(pose, self._rotation_pivot(), turn.angle, turn.plane)
         return tuple(self.scaling.scaled(pose))
 
     def program_frame(self, pose: list[float] | tuple[float, ...]) -> list[float]:
         """The programmed pose that puts the machine at ``pose``."""
         programmed = self.scaling.unscaled(pose)
-        if self.rotation is not None:
-            programmed = rotate_about(programmed, self._rotation_pivot(), -self.rotation.angle, self.rotation.plane)
+        turn = self.rotation.turn
+        if turn is not None:
+            programmed = rotate_about(programmed, self._rotation_pivot(), -turn.angle, turn.plane)
         return list(programmed)
 
     @contextmanager
@@ -137,7 +142,7 @@ class CoordinateSystems(MachineState):
         if index >= t.POS_MACHINE:
             return self.machine_frame(self.pos)[index - t.POS_MACHINE]
         if index == t.SPINDLE_SPEED:  # rev/s, following X under constant surface speed
-            return self.rpm_at(self.pos[0]) / 60.0 if self.spindle != 5 else 0.0
+            return self.rpm_at(self.pos[0]) / 60.0 if self.spindle.direction != 5 else 0.0
         return self.reported_position()[index - t.POS_WORK]
 
     def _axis_values(self, words: Mapping[str, float]) -> dict[int, float]:
@@ -170,19 +175,20 @@ class CoordinateSystems(MachineState):
         self.params.set(t.COORD_SYSTEM, float(t.COORD_SYSTEM_CODES.index(code) + 1))
 
     def _rotation(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
+        rotation = self.rotation
         with self.machine_kept():
             if code == G_69:
-                if self.rotation is not None:
+                if rotation.turn is not None:
                     self.canon.event(RotationEvent(self.path, self.line, False))
-                self.rotation = None
+                rotation.turn = None
                 self.params.set(t.G68_ACTIVE, 0.0)
             else:
-                self.rotation = self._turn(words, span)
-                values = [1.0, *self.rotation.pivot, 0.0, 0.0, 0.0]
-                values[G68_ANGLE_PARAM[self.rotation.plane]] = self.rotation.angle
+                turn = rotation.turn = self._turn(words, span)
+                values = [1.0, *turn.pivot, 0.0, 0.0, 0.0]
+                values[G68_ANGLE_PARAM[turn.plane]] = turn.angle
                 for offset, number in enumerate(values):
                     self.params.set(t.G68_ACTIVE + offset, number)
-                self._sent_pivot = None  # a new G68 reaches the rotation stage once, whether or not
+                rotation.sent_pivot = None  # a new G68 reaches the rotation stage once, whether or not
                 self._sync_rotation(self.offset())  # offset() (recomputed) has already told it
         self.modal["rotation"] = code
 
@@ -202,17 +208,18 @@ class CoordinateSystems(MachineState):
 
     def _rotation_pivot(self) -> tuple[float, ...]:
         """The G68 pivot in programmed machine coordinates (it moves with the work offsets)."""
-        assert self.rotation is not None
+        assert self.rotation.turn is not None
         off = self.offset()
-        return tuple(p + o for p, o in zip(self.rotation.pivot, off))
+        return tuple(p + o for p, o in zip(self.rotation.turn.pivot, off))
 
     def _sync_rotation(self, offset: list[float]) -> None:
         """Tell the rotation stage where the pivot is now (after G68, or when an offset moved it)."""
-        assert self.rotation is not None
-        pivot = tuple(p + o for p, o in zip(self.rotation.pivot, offset))
-        if pivot != self._sent_pivot:
-            self._sent_pivot = pivot
-            self.canon.event(RotationEvent(self.path, self.line, True, pivot, self.rotation.angle, self.rotation.plane))
+        rotation = self.rotation
+        assert rotation.turn is not None
+        pivot = tuple(p + o for p, o in zip(rotation.turn.pivot, offset))
+        if pivot != rotation.sent_pivot:
+            rotation.sent_pivot = pivot
+            self.canon.event(RotationEvent(self.path, self.line, True, pivot, rotation.turn.angle, rotation.turn.plane))
 
     def _g10(self, code: int, words: Mapping[str, float], span: n.Span) -> None:
         level = int(words.get("L", -1))

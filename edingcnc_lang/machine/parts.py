@@ -1,6 +1,7 @@
 """The state each part of the interpreter owns: one record per concern, held by ``MachineState``
 as one attribute (``machine.files``, ``machine.devices``, ``machine.offsets``, ``machine.scaling``,
-``machine.zhc``, ``machine.messages``, ``machine.cycle``).
+``machine.zhc``, ``machine.messages``, ``machine.cycle``, ``machine.spindle``, ``machine.rotation``,
+``machine.guards``).
 
 A part's fields are declared here and nowhere else, each with its meaning; the part's module is the
 one that changes them (named in each record's docstring), others only read them.  The records have
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Protocol, TextIO
+from typing import NamedTuple, Protocol, TextIO
 
 from collections.abc import Sequence
 
@@ -160,3 +161,62 @@ class CycleState:
     shift: dict[int, float] = field(default_factory=dict)  # G87: the sideways shift past the boring bar, by axis index
     pitch: float = 0.0                   # G84/G74: mm per spindle revolution (0: not a tapping cycle)
     pending: PendingMoves | None = None  # straight moves held back as one batch (bulk.moves_held)
+
+
+@dataclass(slots=True)
+class SpindleState:
+    """The spindle as programmed (``spindle_modes.py``: S, M3/M4/M5, G96/G97; the override by ``steps.py``'s
+    M48/M49/M51 and M2/M30; G33's pitch by ``threads.py``; the turns of a G74/G84/G87 cycle by ``canned.py``).
+    ``MachineState.css()``, ``rpm_at()`` and ``spindle_along()`` give the speed it turns at."""
+
+    direction: int = 5                 # M3, M4 or M5
+    speed: float = 0.0                 # the S word in force: rpm (G97) or surface speed (G96)
+    rpm: float = 0.0                   # G97: the speed the spindle turns at, S within the machine's range
+    css: tuple[float, float, float] | None = None  # G96: surface mm/min, max and min rpm (None: G97)
+    css_max: float = 0.0               # the D word of G96 (0: none)
+    sync_pitch: float = 0.0            # K of G33, mm per revolution
+    override: float = 100.0            # M51 P..: percent (manual p. 61)
+    override_on: bool = True           # M48 on, M49 off, M51 P<0 off
+
+    @property
+    def factor(self) -> float:
+        """The spindle speed override in force (M48/M49/M51, manual p. 61) as a factor."""
+        return self.override / 100.0 if self.override_on else 1.0
+
+    def set_override(self, m: int, p: float | None) -> None:
+        """M48 switches the spindle override on at 100 % (there is no spindle knob in a simulation), M49
+        off; M51 P.. on at P percent (P0: the knob's 100 %), M51 without P on at the value it had."""
+        self.override_on = m != 49
+        if m == 48 or (m == 51 and p == 0):
+            self.override = 100.0
+        elif m == 51 and p is not None:
+            self.override = p
+
+
+class Turn(NamedTuple):
+    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
+
+    pivot: tuple[float, float, float]
+    angle: float
+    plane: str  # "XY", "YZ" or "XZ"
+
+
+@dataclass(slots=True)
+class RotationState:
+    """G68 (``offsets.py``: G68/G69, and the pivot the rotation stage is told of as the offsets move it);
+    ``moves.py`` (the tangential knife's direction) and ``scaling_words.py`` (G51's centre) read it."""
+
+    turn: Turn | None = None                     # G68 in force (None: G69)
+    sent_pivot: tuple[float, ...] | None = None  # the G68 pivot the rotation stage has (None: none sent yet)
+
+
+@dataclass(slots=True)
+class MotionGuards:
+    """Switches that change what a move may do or does (``steps.py``'s M26/M27; ``named_commands.py``'s
+    TCAGuard, tanknife and KIN): ``MachineState._move`` refuses a move they forbid, ``moves.py`` turns the
+    knife, ``threads.py`` takes the Cartesian limits under kinematics, and ``bulk.batchable`` reads them all."""
+
+    clamped: bool = False            # M26: the rotary axes are clamped until M27
+    tca_guard: bool = False          # TCAGuard on: moves into the tool-change area are refused
+    tanknife: bool = False           # tanknife on: C follows the XY direction of the cut
+    kinematics_active: bool = False  # KIN ON or a mapping: the kinematics maps Cartesian moves to the joints

@@ -31,8 +31,9 @@ class ScalingWords(MachineState):
             if factor == 0:
                 raise self.fail(f"G51 factor {format_value(factor)}: a factor of 0 would flatten the job", span)
         work = (words.get("I", 0.0) * self.scale, words.get("J", 0.0) * self.scale)
-        if self.rotation is not None:  # manual 3.6.13 (p. 33): "In Kombination mit G68 sind der Drehpunkt und
-            work = self.rotation.pivot[:2]  # der Skalierungspunkt die gleich"
+        turn = self.rotation.turn
+        if turn is not None:  # manual 3.6.13 (p. 33): "In Kombination mit G68 sind der Drehpunkt und
+            work = turn.pivot[:2]  # der Skalierungspunkt die gleich"
         offset = self.offset()
         with self.machine_kept():
             scaling = self.scaling

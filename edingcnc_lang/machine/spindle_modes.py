@@ -21,22 +21,23 @@ class SpindleModes(MachineState):
 
     def _step_spindle_mode(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
                            span: n.Span) -> None:
+        spindle = self.spindle
         if code == G_96:
             if "D" in words:
                 if words["D"] < 0:
                     raise self.fail(f"G96 D{format_value(words['D'])}: the maximum spindle speed must not be "
                                     "negative", span)
-                self.css_max = words["D"]
-                if self.css_max > self.config.spindle_max_rpm > 0:
-                    self.warn("G521", f"G96 D{format_value(self.css_max)}: the spindle turns at most "
+                spindle.css_max = words["D"]
+                if spindle.css_max > self.config.spindle_max_rpm > 0:
+                    self.warn("G521", f"G96 D{format_value(spindle.css_max)}: the spindle turns at most "
                               f"{format_value(self.config.spindle_max_rpm)} rpm, the machine's spindleNmax "
                               "(cnc.ini)", span)
-            self.css_setting = self.css_setting or (0.0, 0.0, 0.0)
+            spindle.css = spindle.css or (0.0, 0.0, 0.0)
         else:
-            if self.css_setting is not None:  # keep turning at the speed CSS asked for here
-                self.rpm = self.rpm_at(self.pos[0], overridden=False)
-                self.speed = self.rpm
-            self.css_setting = None
+            if spindle.css is not None:  # keep turning at the speed CSS asked for here
+                spindle.rpm = self.rpm_at(self.pos[0], overridden=False)
+                spindle.speed = spindle.rpm
+            spindle.css = None
         if "S" not in words:
             self._apply_speed(span)
 
@@ -44,27 +45,27 @@ class SpindleModes(MachineState):
                             span: n.Span) -> None:
         if value < 0:
             raise self.fail(f"spindle speed S{format_value(value)} is negative", span)
-        self.speed = value
+        self.spindle.speed = value
         self._apply_speed(span)
 
     def _apply_speed(self, span: n.Span) -> None:
         """Turn the S in force into the speed the spindle runs at, and report it."""
-        config = self.config
-        if self.css_setting is not None:
+        config, spindle = self.config, self.spindle
+        if spindle.css is not None:
             try:
-                max_rpm, min_rpm = css_limits(self.css_max or None, config.spindle_max_rpm, config.spindle_min_rpm)
+                max_rpm, min_rpm = css_limits(spindle.css_max or None, config.spindle_max_rpm, config.spindle_min_rpm)
             except SpindleError as err:
                 raise self.fail(str(err), span) from None
             per_unit = FT_PER_MIN if self.inch else M_PER_MIN
-            self.css_setting = (self.speed * per_unit, max_rpm, min_rpm)
+            spindle.css = (spindle.speed * per_unit, max_rpm, min_rpm)
             mode, top = "css", max_rpm
         else:
-            self.rpm = clamp_rpm(self.speed, config.spindle_max_rpm, config.spindle_min_rpm)
-            if self.rpm != self.speed and self.speed > 0:
-                self.warn("G521", speed_clamp_message(self.speed, self.rpm, config.spindle_max_rpm), span)
+            spindle.rpm = clamp_rpm(spindle.speed, config.spindle_max_rpm, config.spindle_min_rpm)
+            if spindle.rpm != spindle.speed and spindle.speed > 0:
+                self.warn("G521", speed_clamp_message(spindle.speed, spindle.rpm, config.spindle_max_rpm), span)
             mode, top = "rpm", config.spindle_max_rpm
         rpm = self.rpm_at(self.pos[0])
-        self.canon.event(SpindleSpeedEvent(self.path, self.line, mode, self.speed, top, rpm))
+        self.canon.event(SpindleSpeedEvent(self.path, self.line, mode, spindle.speed, top, rpm))
 
     def _step_spindle(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         self._spindle_turn(code // 10)
@@ -74,17 +75,18 @@ class SpindleModes(MachineState):
         self._spindle_turn(5)
 
     def _spindle_turn(self, direction: int) -> None:
-        self.spindle = direction
-        on = self.spindle != 5
+        self.spindle.direction = direction
+        on = direction != 5
         rpm = self.rpm_at(self.pos[0])
         self.params.set(t.SPINDLE_ON, 1.0 if on else 0.0)
-        self.canon.event(SpindleEvent(self.path, self.line, self.spindle, self.speed, rpm if on else 0.0))
+        self.canon.event(SpindleEvent(self.path, self.line, direction, self.spindle.speed, rpm if on else 0.0))
 
     def spindle_state(self) -> dict[str, object]:
         """The spindle at the end of a run, for ``--json``: direction, mode and speed."""
-        css = self.css_setting
-        return {"m": self.spindle, "mode": "G96" if css is not None else "G97", "s": self.speed,
-                "rpm": self.rpm_at(self.pos[0]) if self.spindle != 5 else 0.0,
+        spindle = self.spindle
+        css = spindle.css
+        return {"m": spindle.direction, "mode": "G96" if css is not None else "G97", "s": spindle.speed,
+                "rpm": self.rpm_at(self.pos[0]) if spindle.direction != 5 else 0.0,
                 "max_rpm": css[1] if css is not None else self.config.spindle_max_rpm}
 
 

@@ -1,6 +1,6 @@
 """The interpreter's machine state and the constants its parts share.
 
-``MachineState`` holds what one virtual machine knows (modal state, position, feed, spindle,
+``MachineState`` holds what one virtual machine knows (modal state, position, feed,
 parameters, the call stack, and one record per part that owns its state, ``parts.py``) and the
 few helpers every part needs: errors that name the line, the step budget and handing a move to
 the canon.  The parts of the interpreter (control flow, line steps, offsets, motion, ...) are
@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from contextlib import AbstractContextManager
-from typing import TYPE_CHECKING, ClassVar, Literal, NamedTuple
+from typing import TYPE_CHECKING, ClassVar, Literal
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
@@ -26,7 +26,8 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.parts import CycleState, DeviceState, JobFiles, MessageLog, OffsetState, ScalingState, ZhcState
+from edingcnc_lang.machine.parts import (CycleState, DeviceState, JobFiles, MessageLog, MotionGuards, OffsetState,
+                                         RotationState, ScalingState, SpindleState, ZhcState)
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.geometry import ArcPlan
@@ -106,14 +107,6 @@ StatementTable = dict[type, Callable[..., None]]      # statement type -> (machi
 StepTable = dict[str, Callable[..., None]]            # ORDER_OF_EXECUTION name -> (machine, value, words, g, span)
 CommandTable = dict[str, Callable[..., None]]         # lower-case command name -> (machine, stmt)
 MessageKind = Literal["msg", "warn", "error"]       # what ``message`` says (events.MsgEvent, WarnEvent, ErrorEvent)
-
-
-class Turn(NamedTuple):
-    """G68 in force: the pivot in work coordinates, the angle (degrees, counter-clockwise) and the plane."""
-
-    pivot: tuple[float, float, float]
-    angle: float
-    plane: str  # "XY", "YZ" or "XZ"
 
 
 class ProgramEnd(Exception):
@@ -212,27 +205,16 @@ class MachineState:
             self.modal["path_control"] = t.code_key(61)
         self.pos: list[float] = [0.0] * 6  # machine coordinates, mm / degrees
         self.feed = 0.0                    # mm/min (G94), or the raw F in G93/G95
-        self.speed = 0.0                   # the S word in force: rpm (G97) or surface speed (G96)
-        self.rpm = 0.0                     # G97: the speed the spindle turns at, S within the machine's range
-        self.css_setting: tuple[float, float, float] | None = None  # G96: surface mm/min, max and min rpm
-        self.css_max = 0.0                 # the D word of G96 (0: none)
-        self.sync_pitch = 0.0              # K of G33, mm per revolution
-        self.spindle = 5                   # M3, M4 or M5
-        self.spindle_override = 100.0      # M51 P..: percent (manual p. 61)
-        self.spindle_override_on = True    # M48 on, M49 off, M51 P<0 off
         # the parts' own state, one record each (parts.py declares their fields)
+        self.spindle = SpindleState()
         self.devices = DeviceState()
         self.offsets = OffsetState()
         self.scaling = ScalingState()
         self.zhc = ZhcState()
         self.messages = MessageLog()
         self.cycle = CycleState()
-        self.rotation: Turn | None = None  # G68: pivot (work x y z), angle (deg) and plane
-        self._sent_pivot: tuple[float, ...] | None = None       # the G68 pivot the rotation stage has
-        self.kinematics_active = False
-        self.tanknife = False
-        self.clamped = False               # M26: the rotary axes are clamped until M27
-        self.tca_guard = False             # TCAGuard on: moves into the tool-change area are refused
+        self.rotation = RotationState()
+        self.guards = MotionGuards()
         self.job_distance = 0.0            # mm the tool has travelled (GetJobDistance)
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
         # the runner sets it, an MDI session has no loaded job.
@@ -340,46 +322,37 @@ class MachineState:
         section = SPINDLE_SECTION.get(m)
         return self.config.spindle_offsets[section] if section is not None else (0.0, 0.0, 0.0)
 
-    @property
-    def spindle_factor(self) -> float:
-        """The spindle speed override in force (M48/M49/M51, manual p. 61) as a factor."""
-        return self.spindle_override / 100.0 if self.spindle_override_on else 1.0
-
-    def _spindle_override(self, m: int, p: float | None) -> None:
-        """M48 switches the spindle override on at 100 % (there is no spindle knob in a simulation), M49
-        off; M51 P.. on at P percent (P0: the knob's 100 %), M51 without P on at the value it had."""
-        self.spindle_override_on = m != 49
-        if m == 48 or (m == 51 and p == 0):
-            self.spindle_override = 100.0
-        elif m == 51 and p is not None:
-            self.spindle_override = p
-
     def css(self, overridden: bool = True) -> Css | None:
         """Constant surface speed in force (G96), centred on the current work X0; None under G97.
         The spindle override scales the surface speed the spindle keeps (``overridden``)."""
-        if self.css_setting is None:
+        spindle = self.spindle
+        if spindle.css is None:
             return None
-        surface, max_rpm, min_rpm = self.css_setting
-        return Css(surface * (self.spindle_factor if overridden else 1.0), max_rpm, min_rpm, self.offset()[0])
+        surface, max_rpm, min_rpm = spindle.css
+        return Css(surface * (spindle.factor if overridden else 1.0), max_rpm, min_rpm, self.offset()[0])
 
     def rpm_at(self, x: float, overridden: bool = True) -> float:
         """The spindle speed with the tool at machine X ``x`` (also while it is stopped): the programmed
         one, times the spindle override unless ``overridden`` is False, within the machine's range."""
         css = self.css(overridden)
-        return css.rpm(x) if css is not None else self._overridden_rpm() if overridden else self.rpm
+        return css.rpm(x) if css is not None else self._overridden_rpm() if overridden else self.spindle.rpm
 
     def _overridden_rpm(self) -> float:
         """The G97 speed the spindle turns at under the spindle override, within the machine's range."""
-        if self.spindle_factor == 1.0:
-            return self.rpm
-        return clamp_rpm(self.rpm * self.spindle_factor, self.config.spindle_max_rpm, self.config.spindle_min_rpm)
+        spindle = self.spindle
+        factor = spindle.factor
+        if factor == 1.0:
+            return spindle.rpm
+        return clamp_rpm(spindle.rpm * factor, self.config.spindle_max_rpm, self.config.spindle_min_rpm)
 
     def _move(self, kind: str, end: list[float], feed: float = 0.0, arc: Arc | None = None,
               sync: float = 0.0) -> None:
         start = tuple(self.pos)
-        if self.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
+        guards = self.guards
+        if guards.clamped and kind != "home" and any(abs(end[i] - start[i]) > 1e-9 for i in ROTARY):
             raise self.fail("a rotary axis cannot move while it is clamped (M26): release it with M27 first")
-        if self.tca_guard and kind != "home" and enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
+        if guards.tca_guard and kind != "home" and \
+                enters_box(start, end, self.config.tca_negative, self.config.tca_positive):
             low, high = self.config.tca_negative, self.config.tca_positive
             raise self.fail("the move enters the tool-change area while TCAGuard is on (X "
                             f"{low[0]:g}..{high[0]:g} Y {low[1]:g}..{high[1]:g} Z {low[2]:g}..{high[2]:g}, "
@@ -412,7 +385,7 @@ class MachineState:
     def spindle_along(self) -> tuple[float, Css | None]:
         """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the
         constant surface speed that gives the speed at any X instead."""
-        if self.spindle == 5:
+        if self.spindle.direction == 5:
             return 0.0, None
         css = self.css()
         return (0.0, css) if css is not None else (self._overridden_rpm(), None)

@@ -60,7 +60,7 @@ class LineSteps(MachineState):
         stopped, and a plain G43 in force compensates the new tool (3.6.12: G43 H and G43.1 do not)."""
         self.refuse_with_comp("a tool change (M6)", span)
         self._tool_change(span)
-        if self.spindle != 5:
+        if self.spindle.direction != 5:
             self._spindle_stop()
         if self.modal["length_offset"] == G_43 and self.offsets.length_follows_tool:
             self._apply_length(G_43, {})
@@ -77,11 +77,11 @@ class LineSteps(MachineState):
         if m in (50, 51) and p is not None and p > MAX_OVERRIDE:
             raise self.fail(f"M{m} P{format_value(p)}: an override is at most {MAX_OVERRIDE:g} percent", span)
         if m in (48, 49) or (m == 51 and (p is None or p >= 0)):
-            self._spindle_override(m, p)
+            self.spindle.set_override(m, p)
         if m in (50, 51) and p == 0:
             self.canon.event(OperatorWaitEvent(self.path, self.line, m, "feed" if m == 50 else "spindle"))
         elif m == 51 and p is not None and p < 0:
-            self.spindle_override_on = False  # off; the value stays (p. 61)
+            self.spindle.override_on = False  # off; the value stays (p. 61)
         self.canon.event(OverrideEvent(self.path, self.line, m, p))
 
     def _step_path_control(self, code: int, words: Mapping[str, float], g: Mapping[str, int],
@@ -111,7 +111,7 @@ class LineSteps(MachineState):
     def _step_m_state(self, code: int, words: Mapping[str, float], g: Mapping[str, int], span: n.Span) -> None:
         m = code // 10
         if m in (26, 27):  # clamp / release the rotary axes: a move that turns one while clamped is refused
-            self.clamped = m == 26
+            self.guards.clamped = m == 26
             if "P" in words:  # manual 3.7.9 (p. 65): "P1 bedeutet AUX 1": the output that drives the brake
                 port = int(words["P"])
                 self.devices.outputs[port] = m == 26
@@ -190,7 +190,7 @@ class LineSteps(MachineState):
                 level = -1.0  # the wait for high (L1) / low (L2) timed out
             self.params.set(t.IO_RESULT, level)
         else:
-            self.params.set(t.IO_RESULT, 1.0 if self.devices.output_on(port, self.spindle) else 0.0)
+            self.params.set(t.IO_RESULT, 1.0 if self.devices.output_on(port, self.spindle.direction) else 0.0)
 
     def _pwm(self, code: int, port: int, words: Mapping[str, float], span: n.Span) -> None:
         """PWM outputs: M54 E Q sets the duty (0..1000 per mille), M55 E sets 0, M57 E reads it into #5399."""
@@ -270,9 +270,9 @@ class LineSteps(MachineState):
                              ("cutter_comp", G_40), ("motion", G_1)):
             self.modal[group] = reset
         self.canon.event(OverrideEvent(self.path, self.line, 48))
-        self._spindle_override(48, None)
+        self.spindle.set_override(48, None)
         if code != M_60:
-            self.spindle = 5
+            self.spindle.direction = 5
             if self.devices.coolant:  # M9 (3.7.1), as an event like the program's own M9
                 self.canon.event(CoolantEvent(self.path, self.line, 9))
             self.devices.coolant = set()

@@ -26,7 +26,7 @@ class Threading(MachineState):
 
     def _synchronised(self, motion: int, words: Mapping[str, float], span: n.Span) -> None:
         name = f"G{format_value(motion / 10)}"
-        if self.spindle == 5 or self.rpm_at(self.pos[0]) <= 0:
+        if self.spindle.direction == 5 or self.rpm_at(self.pos[0]) <= 0:
             raise self.fail(f"{name} needs the spindle turning: program M3 or M4 with an S word first", span)
         if self.modal["cutter_comp"] != G_40:
             raise self.fail(f"{name} is not allowed while cutter compensation (G41/G42) is on", span)
@@ -47,7 +47,7 @@ class Threading(MachineState):
         length = xyz_distance(self.pos, end)
         config = self.config
         for axis in range(3):
-            limit = (config.cartesian_max_velocity[axis] if self.kinematics_active
+            limit = (config.cartesian_max_velocity[axis] if self.guards.kinematics_active
                      else config.joints[axis].max_velocity if axis < len(config.joints) else 0.0)
             speed = feed * abs(end[axis] - self.pos[axis]) / length / 60.0  # mm/s along this axis
             if limit > 0.0 and speed > limit * (1.0 + 1e-9):
@@ -66,10 +66,10 @@ class Threading(MachineState):
     def _g33(self, words: Mapping[str, float], span: n.Span) -> None:
         pitch = self._pitch(words, "G33", span)
         if pitch is not None:
-            self.sync_pitch = pitch
-        elif self.sync_pitch <= 0:
+            self.spindle.sync_pitch = pitch
+        elif self.spindle.sync_pitch <= 0:
             raise self.fail("G33 needs K, the pitch (distance per spindle revolution)", span)
-        self._sync_move(self._target(words), self.sync_pitch, span)
+        self._sync_move(self._target(words), self.spindle.sync_pitch, span)
 
     def _g33_1(self, words: Mapping[str, float], span: n.Span) -> None:
         """Rigid tapping: in at the pitch, the spindle reverses, out to the start, the spindle turns back."""
@@ -77,10 +77,10 @@ class Threading(MachineState):
         if pitch is None:
             raise self.fail("G33.1 needs K, the pitch of the tap", span)
         start = list(self.pos)
-        forward = self.spindle
+        forward = self.spindle.direction
         self._sync_move(self._target(words), pitch, span)
         for direction in (7 - forward, forward):  # M3 <-> M4 and back again
-            self.canon.event(SpindleEvent(self.path, self.line, direction, self.speed, self.rpm_at(self.pos[0]),
+            self.canon.event(SpindleEvent(self.path, self.line, direction, self.spindle.speed, self.rpm_at(self.pos[0]),
                                           rigid_tap=True))
             if direction != forward:
                 self._sync_move(start, pitch, span)

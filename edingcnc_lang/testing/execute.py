@@ -180,7 +180,8 @@ class _Watch:
     def event(self, event: Event) -> None:
         """A ``spindle`` event carries rpm 0 when it stops; a new S (``spindle_speed``) turns only a running spindle."""
         if isinstance(event, (SpindleEvent, SpindleSpeedEvent)):
-            running = isinstance(event, SpindleEvent) or (self.interpreter is not None and self.interpreter.spindle != 5)
+            interp = self.interpreter
+            running = isinstance(event, SpindleEvent) or (interp is not None and interp.spindle.direction != 5)
             self.turning = running and event.rpm > 0.0
 
     def move(self, move: Move, _joints: Pose) -> None:

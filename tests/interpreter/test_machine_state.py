@@ -151,7 +151,7 @@ def test_a_composed_part_changes_the_machine_only_inside_its_record() -> None:
 
 EVERY_PART = "\n".join(["M8", "M54 P3", "M54 E2 Q500", "M104 S200", "M91", "M100 P1.01", "T2 M6", "G43", "G92 X1",
                         "G51 P2", "G50", "ZHCINIT 10 2 2", 'msg "hello"', 'logmsg "logged"', "GetToolInfo first 100",
-                        "M57 P3", "M30", ""])
+                        "M57 P3", "M3 S1000", "M51 P50", "G68 R30", "M26", "TCAGuard on", "G0 X1", "M30", ""])
 
 
 def test_a_run_leaves_only_declared_attributes_on_the_machine(tmp_path: Path) -> None:
@@ -164,6 +164,9 @@ def test_a_run_leaves_only_declared_attributes_on_the_machine(tmp_path: Path) ->
     assert result.error is None and result.ended_by == "M30"
     assert machine.devices.outputs == {3: True} and machine.devices.pwm == {2: 500.0}
     assert machine.offsets.g92_active and machine.zhc.table is not None and machine.messages.log_file is not None
+    assert machine.spindle.speed == 1000.0 and machine.spindle.direction == 5  # M30 stops the spindle
+    assert machine.rotation.turn is not None and machine.rotation.turn.angle == 30.0
+    assert machine.rotation.sent_pivot is not None and machine.guards.clamped and machine.guards.tca_guard
     assert set(vars(machine)) == _declared()
     for attribute, record in _records().items():
         assert type(getattr(machine, attribute)) is record
@@ -212,3 +215,17 @@ def test_two_machines_do_not_share_a_cycle_shift() -> None:
     first, second = Interpreter(Sink()), Interpreter(Sink())  # type: ignore[arg-type]
     first.cycle.shift[0] = 2.0
     assert second.cycle.shift == {} and first.zhc.table is None and second.cycle.pitch == 0.0
+
+
+def test_the_spindle_override_as_its_record_keeps_it() -> None:
+    """M51 P sets the percent, M49 switches it off keeping the value, M48 (and M30) on at 100 % (manual p. 61)."""
+    spindle = parts.SpindleState()
+    assert spindle.factor == 1.0
+    spindle.set_override(51, 50.0)
+    assert (spindle.override, spindle.override_on, spindle.factor) == (50.0, True, 0.5)
+    spindle.set_override(49, None)
+    assert (spindle.override, spindle.override_on, spindle.factor) == (50.0, False, 1.0)
+    spindle.set_override(51, None)
+    assert spindle.factor == 0.5
+    spindle.set_override(48, None)
+    assert (spindle.override, spindle.factor) == (100.0, 1.0)
