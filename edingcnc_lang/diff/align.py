@@ -82,18 +82,22 @@ class Stretch:
         """Low and high corners (XYZ) of a box around each run of ``BLOCK`` segments: a segment lies in
         the box of its ends, a piece of an arc in that and the box of its circle (measured to the circle
         at a point's angle, a helix's height between its ends)."""
-        a, b = self.a[:, :3], self.b[:, :3]
-        low, high = np.minimum(a, b), np.maximum(a, b)
-        arcs = np.flatnonzero(self.arc >= 0)
-        if arcs.size:
-            moves = self.arc[arcs]
-            center, radius = self.samples.centers[moves], np.abs(self.samples.radii[moves])[:, None]
-            ring_low, ring_high = center - radius, center + radius
-            rows, normal = np.arange(len(arcs)), self.samples.normals[moves]
-            ring_low[rows, normal], ring_high[rows, normal] = low[arcs, normal], high[arcs, normal]
-            low[arcs], high[arcs] = np.minimum(low[arcs], ring_low), np.maximum(high[arcs], ring_high)
-        starts = np.arange(0, len(a), BLOCK)
-        return np.minimum.reduceat(low, starts, axis=0), np.maximum.reduceat(high, starts, axis=0)
+        lows, highs = [], []
+        for first in range(0, len(self), BLOCK * 2048):  # a chunk at a time: little memory besides the boxes
+            a, b = self.a[first:first + BLOCK * 2048, :3], self.b[first:first + BLOCK * 2048, :3]
+            low, high = np.minimum(a, b), np.maximum(a, b)
+            arcs = np.flatnonzero(self.arc[first:first + BLOCK * 2048] >= 0)
+            if arcs.size:
+                moves = self.arc[first + arcs]
+                center, radius = self.samples.centers[moves], np.abs(self.samples.radii[moves])[:, None]
+                ring_low, ring_high = center - radius, center + radius
+                rows, normal = np.arange(len(arcs)), self.samples.normals[moves]
+                ring_low[rows, normal], ring_high[rows, normal] = low[arcs, normal], high[arcs, normal]
+                low[arcs], high[arcs] = np.minimum(low[arcs], ring_low), np.maximum(high[arcs], ring_high)
+            starts = np.arange(0, len(a), BLOCK)
+            lows.append(np.minimum.reduceat(low, starts, axis=0))
+            highs.append(np.maximum.reduceat(high, starts, axis=0))
+        return np.concatenate(lows), np.concatenate(highs)
 
     def measure(self, points: np.ndarray, segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Distances of ``points`` to this stretch's ``segments`` (row by row), pieces of arcs to their circle."""

@@ -95,20 +95,22 @@ def _shifted(old: Recording, new: Recording, o0: int, o1: int, n0: int, n1: int,
 
 def _shift_run(old: Recording, new: Recording, olds: np.ndarray, news: np.ndarray, tolerance: float) -> list[Shift]:
     """The longest run of pairs that fits one vector: moved whole, or (the moves into and out of the
-    feature) moved at one end only; the vector is the one most moves are moved by whole."""
-    ends = new.ends[news, :3] - old.ends[olds, :3]
-    starts = new.starts[news, :3] - old.starts[olds, :3]
-    alike = (new.kinds[news] == old.kinds[olds]) & (new.tools[news] == old.tools[olds])
-    alike &= np.all(np.abs(new.frames[news, 4:8] - old.frames[olds, 4:8]) <= tolerance, axis=1)
-    still_end, still_start = (np.abs(d).max(axis=1) <= tolerance for d in (ends, starts))
-    whole = alike & ~still_end & (np.abs(ends - starts).max(axis=1) <= tolerance)
+    feature) moved at one end only; the vector is the one most moves are moved by whole.  ``olds`` and
+    ``news``: runs of consecutive moves, read as views of the recordings."""
+    o, n = slice(int(olds[0]), int(olds[-1]) + 1), slice(int(news[0]), int(news[-1]) + 1)
+    ends = new.ends[n, :3] - old.ends[o, :3]
+    starts = new.starts[n, :3] - old.starts[o, :3]
+    alike = (new.kinds[n] == old.kinds[o]) & (new.tools[n] == old.tools[o])
+    alike &= _largest(new.frames[n, 4:8] - old.frames[o, 4:8]) <= tolerance
+    still_end, still_start = (_largest(d) <= tolerance for d in (ends, starts))
+    whole = alike & ~still_end & (_largest(ends - starts) <= tolerance)
     # a feature cuts: rapids alone moved (the way home from another place) are not one
-    if whole.sum() < MIN_SHIFTED or np.isin(new.kinds[news][whole], RAPID_KINDS).all():
+    if whole.sum() < MIN_SHIFTED or np.isin(new.kinds[n][whole], RAPID_KINDS).all():
         return []
     vote = Counter(map(tuple, np.round(ends[whole] / max(tolerance, 1e-9)).astype(np.int64).tolist()))
     step = np.array(vote.most_common(1)[0][0], dtype=float) * max(tolerance, 1e-9)
     by = ends[whole][np.argmin(np.abs(ends[whole] - step).max(axis=1))]
-    on_end, on_start = (np.abs(d - by).max(axis=1) <= tolerance for d in (ends, starts))
+    on_end, on_start = (_largest(d - by) <= tolerance for d in (ends, starts))
     fits = alike & (on_end | still_end) & (on_start | still_start) & ~(still_end & still_start)
     moved_whole = fits & on_end & on_start
     best: tuple[int, int] | None = None
@@ -120,6 +122,15 @@ def _shift_run(old: Recording, new: Recording, olds: np.ndarray, news: np.ndarra
     first, last = best
     return [Shift((int(olds[first]), int(olds[last])), (int(news[first]), int(news[last])),
                   (float(by[0]), float(by[1]), float(by[2])))]
+
+
+def _largest(rows: np.ndarray) -> np.ndarray:
+    """The largest absolute value in each row (NaN if any is), column by column: numpy is slow across a
+    short row."""
+    largest = np.abs(rows[:, 0])
+    for column in range(1, rows.shape[1]):
+        np.maximum(largest, np.abs(rows[:, column]), out=largest)
+    return largest
 
 
 def _true_runs(mask: np.ndarray) -> list[tuple[int, int]]:
