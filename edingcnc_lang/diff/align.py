@@ -5,7 +5,9 @@ the other polyline (pieces of arcs to their circle): the segments are filed by t
 at most ``2 * reach`` long, a point looks in its own cell and the 26 around it, so every segment within
 ``reach`` of it is found and measured exactly (a fine grid first, ``NEAR``, then the whole reach for the
 points it left); a point farther than ``reach`` from all of them is
-measured against a bounded sample of the stretch's points (``FAR_POINTS``) instead.  Work and memory
+measured against a bounded sample of the stretch's points (``FAR_POINTS``) instead.  A few points
+against a long stretch (a job driven backwards: one move left to measure against all of the other) skip
+the runs of segments whose box is farther than the nearest found (``_by_boxes``).  Work and memory
 grow with the points and the segments near each, never with their product.
 """
 from __future__ import annotations

@@ -34,7 +34,8 @@ ROW = 19 + FRAME
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
 MAX_CHORDS = 4096      # pieces per arc move at most
 ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
-CHUNK = 65_536         # moves (points) filled at once
+CHUNK = 2048           # moves filled at once: each piece's arrays stay small enough to reuse memory
+                       # (a big one is new pages from the system each time, which costs more than the loop)
 NO_ARC = (-1.0,) + (0.0,) * (FRAME - 1)
 
 _FRAME_ROWS = speedups.compiled("arc_frame_rows") or arc_frame_rows  # the planner's arc frames
@@ -221,8 +222,9 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP, moves: np.
     point of their own (default: those that start away from the previous move's end, and the first).
     Each point is worked out from its move alone, so a move's points are the same whichever moves are
     sampled with it; filled a chunk of moves at a time, so what it needs besides its result stays small."""
-    if moves is None:
-        starts, ends, frames = rec.starts[:, :dims], rec.ends[:, :dims], rec.frames
+    if moves is None or (len(moves) and moves[-1] - moves[0] == len(moves) - 1):  # a run of moves: views
+        rows = slice(None) if moves is None else slice(int(moves[0]), int(moves[-1]) + 1)
+        starts, ends, frames = rec.starts[rows, :dims], rec.ends[rows, :dims], rec.frames[rows]
     else:  # only the columns the path needs, not a copy of the whole recording
         starts, ends, frames = rec.starts[moves, :dims], rec.ends[moves, :dims], rec.frames[moves]
     count = len(starts)
@@ -259,8 +261,8 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP, moves: np.
         points[at] = starts[move_of] + fraction[:, None] * delta[move_of]
         owner[at] = move_of
     arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
-    for low in range(0, len(arcs), CHUNK // 16):
-        high = min(len(arcs), low + CHUNK // 16)
+    for low in range(0, len(arcs), CHUNK // 4):
+        high = min(len(arcs), low + CHUNK // 4)
         which, slot = slots(np.arange(low, high), circle.pieces[low:high])
         move_of = arcs[which]
         at = firsts[move_of] + slot
