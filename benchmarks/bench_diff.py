@@ -1,4 +1,4 @@
-"""``ecnc diff`` on two generated 300,000-line jobs, against running both (the issue's bound: at most 4x).
+"""``ecnc diff`` on two generated 300,000-line jobs, against running both (the issue's bound: at most 2x).
 
 OLD is a zigzag of short cuts with a half circle every tenth move (``bench_plot.write_job``); the
 pairs compared are OLD with a reformatted copy of itself (N words, G01, trailing zeros: the same)
@@ -12,6 +12,8 @@ time too: on a loaded machine the wall time says more about the others).
     python benchmarks/bench_diff.py [--lines N] [--repeat N]
     python benchmarks/bench_diff.py --scaling 4    # OLD against itself reversed at 1, 2, 4, 8 times
                                                    # --reversed-lines: linear when the time per move stays flat
+    python benchmarks/bench_diff.py --against CHECKOUT --repeat 3   # each diff alternately with another
+                                                   # checkout's (its source folder on PYTHONPATH, extensions built in place)
 """
 from __future__ import annotations
 
@@ -24,6 +26,8 @@ from pathlib import Path
 
 from bench_plot import write_job
 from bench_run import ECNC, measure
+
+Timing = tuple[float, float, float]
 
 
 def reformat(old: Path, new: Path) -> None:
@@ -74,7 +78,7 @@ def reverse(old: Path, new: Path, lines: int) -> None:
     new.write_text("\n".join(out + ["G0 Z5", "M30"]) + "\n", encoding="ascii")
 
 
-def scaling(tmp: Path, old: Path, lines: int, steps: int, timed: Callable[..., tuple[float, float, float]]) -> None:
+def scaling(tmp: Path, old: Path, lines: int, steps: int, timed: Callable[..., Timing]) -> None:
     """The reversed pair at ``lines``, twice as many, ...: CPU microseconds per move of the diff and of running
     both jobs; a diff that is linear in the moves whatever their order keeps its figure flat."""
     for step in range(steps):
@@ -94,6 +98,8 @@ def main() -> None:
     parser.add_argument("--lines", type=int, default=300_000)
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--reversed-lines", type=int, default=20_000)
+    parser.add_argument("--against", metavar="CHECKOUT", type=Path,
+                        help="Time each diff alternately with this checkout's (paired: the ratio after / before).")
     parser.add_argument("--scaling", type=int, default=0,
                         help="Only the reversed pair, at this many sizes from --reversed-lines on, each twice the last.")
     args = parser.parse_args()
@@ -102,10 +108,23 @@ def main() -> None:
         old, same, edited = tmp / "old.nc", tmp / "same.nc", tmp / "edited.nc"
         write_job(old, args.lines)
 
-        def timed(*command: object) -> tuple[float, float, float]:
-            runs = [measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)]
+        def median(runs: list[Timing]) -> Timing:
             return (statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs),
                     max(r[2] for r in runs))
+
+        def timed(*command: object) -> Timing:
+            return median([measure([*ECNC, *map(str, command)]) for _ in range(args.repeat)])
+
+        def paired(*command: object) -> tuple[Timing, Timing | None]:
+            """This checkout's timing and, with --against, the other's, run alternately."""
+            if args.against is None:
+                return timed(*command), None
+            older = {"PYTHONPATH": str(args.against.resolve())}
+            mine, theirs = [], []
+            for _ in range(args.repeat):
+                mine.append(measure([*ECNC, *map(str, command)]))
+                theirs.append(measure([*ECNC, *map(str, command)], older))
+            return median(mine), median(theirs)
 
         if args.scaling:
             scaling(tmp, old, args.reversed_lines, args.scaling, timed)
@@ -120,10 +139,13 @@ def main() -> None:
         for name, (wall, cpu, peak) in runs.items():
             print(f"ecnc run --json {name:<11} {wall:7.2f} s wall {cpu:7.2f} s CPU {peak:6.0f} MB")
         for first, job in ((old, same), (old, edited), (forward, backward)):
-            wall, cpu, peak = timed("diff", first, job, "--json")
+            (wall, cpu, peak), before = paired("diff", first, job, "--json")
             both, both_cpu = (runs[first.name][k] + runs[job.name][k] for k in (0, 1))
             print(f"ecnc diff {first.name:<10} {job.name:<11} {wall:7.2f} s wall {cpu:7.2f} s CPU {peak:6.0f} MB"
                   f"  = {wall / both:.2f} x running both ({cpu / both_cpu:.2f} x in CPU time)")
+            if before is not None:
+                print(f"  against {args.against}: {before[0]:7.2f} s wall {before[1]:7.2f} s CPU {before[2]:6.0f} MB"
+                      f"  = {before[1] / both_cpu:.2f} x running both in CPU time; after / before {cpu / before[1]:.2f}")
 
 
 if __name__ == "__main__":

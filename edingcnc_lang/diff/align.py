@@ -5,7 +5,9 @@ the other polyline (pieces of arcs to their circle): the segments are filed by t
 at most ``2 * reach`` long, a point looks in its own cell and the 26 around it, so every segment within
 ``reach`` of it is found and measured exactly (a fine grid first, ``NEAR``, then the whole reach for the
 points it left); a point farther than ``reach`` from all of them is
-measured against a bounded sample of the stretch's points (``FAR_POINTS``) instead.  Work and memory
+measured against a bounded sample of the stretch's points (``FAR_POINTS``) instead.  A few points
+against a long stretch (a job driven backwards: one move left to measure against all of the other) skip
+the runs of segments whose box is farther than the nearest found (``_by_boxes``).  Work and memory
 grow with the points and the segments near each, never with their product.
 """
 from __future__ import annotations
@@ -19,6 +21,8 @@ BRUTE = 1 << 16      # point-segment pairs measured at once, all against all (be
 CHUNK = 4096         # points looked up at once
 NEAR = 0.25          # mm: the reach of the fine grid
 FAR_POINTS = 4096    # points of the other stretch a far point is measured against
+BLOCK = 32           # segments in a box, for a few points against a long stretch
+BOX_POINTS = 16      # points bounded against all the boxes at once
 NEIGHBOURS = np.array([(i, j, k) for i in (-1, 0, 1) for j in (-1, 0, 1) for k in (-1, 0, 1)], dtype=np.int64)
 
 
@@ -76,6 +80,27 @@ class Stretch:
     def __len__(self) -> int:
         return len(self.a)
 
+    def boxes(self) -> tuple[np.ndarray, np.ndarray]:
+        """Low and high corners (XYZ) of a box around each run of ``BLOCK`` segments: a segment lies in
+        the box of its ends, a piece of an arc in that and the box of its circle (measured to the circle
+        at a point's angle, a helix's height between its ends)."""
+        lows, highs = [], []
+        for first in range(0, len(self), BLOCK * 2048):  # a chunk at a time: little memory besides the boxes
+            a, b = self.a[first:first + BLOCK * 2048, :3], self.b[first:first + BLOCK * 2048, :3]
+            low, high = np.minimum(a, b), np.maximum(a, b)
+            arcs = np.flatnonzero(self.arc[first:first + BLOCK * 2048] >= 0)
+            if arcs.size:
+                moves = self.arc[first + arcs]
+                center, radius = self.samples.centers[moves], np.abs(self.samples.radii[moves])[:, None]
+                ring_low, ring_high = center - radius, center + radius
+                rows, normal = np.arange(len(arcs)), self.samples.normals[moves]
+                ring_low[rows, normal], ring_high[rows, normal] = low[arcs, normal], high[arcs, normal]
+                low[arcs], high[arcs] = np.minimum(low[arcs], ring_low), np.maximum(high[arcs], ring_high)
+            starts = np.arange(0, len(a), BLOCK)
+            lows.append(np.minimum.reduceat(low, starts, axis=0))
+            highs.append(np.maximum.reduceat(high, starts, axis=0))
+        return np.concatenate(lows), np.concatenate(highs)
+
     def measure(self, points: np.ndarray, segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Distances of ``points`` to this stretch's ``segments`` (row by row), pieces of arcs to their circle."""
         a, b = self.a[segments], self.b[segments]
@@ -100,7 +125,9 @@ def nearest(points: np.ndarray, stretch: Stretch, reach: float) -> tuple[np.ndar
     at = np.zeros(count)
     if not count or not size:
         return distance, segment, at
-    if count * size <= BRUTE * 64 or count * 64 < size:  # few points (a long stretch): all against all, in pieces
+    if (count * size <= BRUTE * 64 or count * 64 < size) and size > BRUTE:  # a few points, a long stretch
+        _by_boxes(points, stretch, distance, segment, at)
+    elif count * size <= BRUTE * 64 or count * 64 < size:  # few points (a short stretch): all against all
         for low in range(0, count, max(1, BRUTE // size)):
             chosen = np.arange(low, min(count, low + max(1, BRUTE // size)))
             for first in range(0, size, BRUTE):
@@ -128,6 +155,38 @@ def nearest(points: np.ndarray, stretch: Stretch, reach: float) -> tuple[np.ndar
     known = segment >= 0
     segment[known] = stretch.index[segment[known]]
     return distance, segment, at
+
+
+def _by_boxes(points: np.ndarray, stretch: Stretch, distance: np.ndarray, segment: np.ndarray,
+              at: np.ndarray) -> None:
+    """All against all, less the segments that cannot be nearest: a box around each run of ``BLOCK``
+    segments bounds their distance from below; the nearest box's segments give a distance, and only the
+    boxes as near as that (and a margin for rounding) are measured.  A segment left out is farther than
+    the nearest, so the nearest (the first of equally near ones) is the one all against all finds."""
+    low, high = stretch.boxes()
+    for first in range(0, len(points), BOX_POINTS):
+        chosen = np.arange(first, min(len(points), first + BOX_POINTS))
+        p = points[chosen, :3]
+        bound = np.zeros((len(chosen), len(low)))
+        for axis in range(3):
+            out = np.maximum(low[None, :, axis] - p[:, None, axis], p[:, None, axis] - high[None, :, axis])
+            bound += np.maximum(out, 0.0) ** 2
+        bound = np.sqrt(bound)
+        rows, cols = _block_pairs(chosen, np.argmin(bound, axis=1), len(stretch))
+        upper = np.full(len(points), np.inf)
+        np.minimum.at(upper, rows, stretch.measure(points[rows], cols)[0])
+        limit = upper[chosen] * (1.0 + 1e-9) + 1e-6
+        which, blocks = np.nonzero(~(bound > limit[:, None]))  # a NaN bound is measured
+        rows, cols = _block_pairs(chosen[which], blocks, len(stretch))
+        _keep(distance, segment, at, rows, cols, *stretch.measure(points[rows], cols))
+
+
+def _block_pairs(rows: np.ndarray, blocks: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs (point, segment) of each point in ``rows`` with the segments of its block, in order."""
+    rows = np.repeat(rows, BLOCK)
+    cols = (np.repeat(blocks * BLOCK, BLOCK).reshape(-1, BLOCK) + np.arange(BLOCK)).ravel()
+    inside = cols < size
+    return rows[inside], cols[inside]
 
 
 def _keep(distance: np.ndarray, segment: np.ndarray, at: np.ndarray, rows: np.ndarray, cols: np.ndarray,

@@ -19,6 +19,7 @@ from edingcnc_lang.diff.record import RAPID_KINDS, Recording
 RARE = 8           # a key occurring more often than this in a stretch anchors nothing there
 MIN_GAP = 2        # a stretch this short on both sides is not searched for anchors again
 BUDGET = 40        # the anchoring's work, in moves looked at, stops at this many times the moves
+ROWS = 4096       # moves hashed at once
 
 
 def keys(old: Recording, new: Recording, tolerance: float, dims: int = 6) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -30,16 +31,21 @@ def keys(old: Recording, new: Recording, tolerance: float, dims: int = 6) -> tup
     step = max(tolerance, 1e-9)
 
     def hashed(rec: Recording, backwards: bool = False) -> np.ndarray:
-        kind = np.where(np.isin(rec.kinds, RAPID_KINDS), -1, rec.kinds.astype(np.int64))
-        arc = rec.frames[:, [0, 2, 3, 5 if backwards else 4, 7]].copy()
-        arc[:, 1:4] /= step
-        arc[:, 4] *= -1e6 if backwards else 1e6  # the sweep (radians): its direction and size
-        start, end = (rec.ends[:, :dims], rec.starts[:, :dims]) if backwards else (rec.starts[:, :dims], rec.ends[:, :dims])
-        key = np.full(len(rec), 0x9E3779B97F4A7C15, dtype=np.uint64)
-        for column in (kind.astype(np.float64)[:, None], start / step, end / step, arc):
-            whole = np.clip(np.round(column), -2.0 ** 62, 2.0 ** 62).astype(np.int64)
-            for values in whole.T:
-                key = _mix(key ^ values.view(np.uint64))
+        key = np.empty(len(rec), dtype=np.uint64)
+        for low in range(0, len(rec), ROWS):  # a piece at a time: its arrays stay small enough to reuse memory
+            rows = slice(low, low + ROWS)
+            kinds = rec.kinds[rows]
+            kind = np.where(np.isin(kinds, RAPID_KINDS), -1, kinds.astype(np.int64))
+            arc = rec.frames[rows][:, [0, 2, 3, 5 if backwards else 4, 7]]
+            arc[:, 1:4] /= step
+            arc[:, 4] *= -1e6 if backwards else 1e6  # the sweep (radians): its direction and size
+            start, end = (rec.starts[rows, :dims], rec.ends[rows, :dims])[::-1 if backwards else 1]
+            part = np.full(len(kind), 0x9E3779B97F4A7C15, dtype=np.uint64)
+            for column in (kind.astype(np.float64)[:, None], start / step, end / step, arc):
+                whole = np.clip(np.round(column), -2.0 ** 62, 2.0 ** 62).astype(np.int64)
+                for values in whole.T:
+                    part = _mix(part ^ values.view(np.uint64))
+            key[rows] = part
         return key
 
     every = np.concatenate((hashed(old), hashed(new), hashed(new, backwards=True)))
@@ -49,12 +55,16 @@ def keys(old: Recording, new: Recording, tolerance: float, dims: int = 6) -> tup
 
 
 def _mix(x: np.ndarray) -> np.ndarray:
-    """splitmix64's finaliser: every bit of the input moves about half the bits of the output."""
+    """splitmix64's finaliser: every bit of the input moves about half the bits of the output (in place:
+    ``x`` is a temporary of the caller's, and fewer new arrays are fewer new pages)."""
     with np.errstate(over="ignore"):
-        x = x + np.uint64(0x9E3779B97F4A7C15)
-        x = (x ^ (x >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
-        x = (x ^ (x >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
-        return x ^ (x >> np.uint64(31))
+        x += np.uint64(0x9E3779B97F4A7C15)
+        x ^= x >> np.uint64(30)
+        x *= np.uint64(0xBF58476D1CE4E5B9)
+        x ^= x >> np.uint64(27)
+        x *= np.uint64(0x94D049BB133111EB)
+        x ^= x >> np.uint64(31)
+        return x
 
 
 def anchors(old_keys: np.ndarray, new_keys: np.ndarray) -> np.ndarray:

@@ -202,13 +202,18 @@ def compare(old: Recording, new: Recording, tolerance: float = TOLERANCE, limit:
 
 
 def _goes_somewhere(rec: Recording) -> np.ndarray:
-    moving = np.abs(rec.ends - rec.starts).max(axis=1, initial=0.0) > 1e-12
+    moving = np.zeros(len(rec), dtype=bool)
+    for axis in range(rec.ends.shape[1]):  # column by column: numpy is slow across a row of six
+        moving |= np.abs(rec.ends[:, axis] - rec.starts[:, axis]) > 1e-12
     moving[rec.arc_moves()] = True
     return moving
 
 
 def _turns_rotary(rec: Recording) -> bool:
-    return bool(len(rec)) and bool(np.ptp(np.vstack((rec.starts[:, 3:], rec.ends[:, 3:])), axis=0).max() > 1e-9)
+    if not len(rec):
+        return False
+    columns = [(rec.starts[:, axis], rec.ends[:, axis]) for axis in range(3, rec.starts.shape[1])]
+    return any(bool(np.maximum(a.max(), b.max()) - np.minimum(a.min(), b.min()) > 1e-9) for a, b in columns)
 
 
 def _runs(mask: np.ndarray, *keys: np.ndarray) -> Iterator[tuple[int, int]]:

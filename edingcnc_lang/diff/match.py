@@ -65,12 +65,13 @@ def match(old: Recording, new: Recording, tolerance: float, dims: int) -> Matchi
         _reordered_gap(result, old, new, o0, o1, n0, n1)
     if not ((result.new_match == -1).any() or (result.old_match == -1).any()):
         return result  # every move has its counterpart: no path to measure
-    # only the moves of the gaps and the anchors beside them have their path sampled
-    old_samples = _sampled(old, [(o0 - 1, o1 + 1) for o0, o1, _n0, _n1 in gaps], dims)
-    new_samples = _sampled(new, [(n0 - 1, n1 + 1) for _o0, _o1, n0, n1 in gaps], dims)
+    # the path of the moves of the gaps and the anchors beside them, sampled where it is measured
+    old_paths = _Paths(old, [(o0 - 1, o1 + 1) for o0, o1, _n0, _n1 in gaps], dims)
+    new_paths = _Paths(new, [(n0 - 1, n1 + 1) for _o0, _o1, n0, n1 in gaps], dims)
+    old_samples, new_samples = _needed(result, old_paths, new_paths, gaps)
     for o0, o1, n0, n1 in gaps:
-        _measure(result.new_distance, result.new_match, new_samples, n0, n1, old_samples, o0, o1)
-        _measure(result.old_distance, result.old_match, old_samples, o0, o1, new_samples, n0, n1)
+        _measure(result.new_distance, result.new_match, new_samples, n0, n1, old_samples, old_paths, o0, o1)
+        _measure(result.old_distance, result.old_match, old_samples, o0, o1, new_samples, new_paths, n0, n1)
     return result
 
 
@@ -94,20 +95,22 @@ def _shifted(old: Recording, new: Recording, o0: int, o1: int, n0: int, n1: int,
 
 def _shift_run(old: Recording, new: Recording, olds: np.ndarray, news: np.ndarray, tolerance: float) -> list[Shift]:
     """The longest run of pairs that fits one vector: moved whole, or (the moves into and out of the
-    feature) moved at one end only; the vector is the one most moves are moved by whole."""
-    ends = new.ends[news, :3] - old.ends[olds, :3]
-    starts = new.starts[news, :3] - old.starts[olds, :3]
-    alike = (new.kinds[news] == old.kinds[olds]) & (new.tools[news] == old.tools[olds])
-    alike &= np.all(np.abs(new.frames[news, 4:8] - old.frames[olds, 4:8]) <= tolerance, axis=1)
-    still_end, still_start = (np.abs(d).max(axis=1) <= tolerance for d in (ends, starts))
-    whole = alike & ~still_end & (np.abs(ends - starts).max(axis=1) <= tolerance)
+    feature) moved at one end only; the vector is the one most moves are moved by whole.  ``olds`` and
+    ``news``: runs of consecutive moves, read as views of the recordings."""
+    o, n = slice(int(olds[0]), int(olds[-1]) + 1), slice(int(news[0]), int(news[-1]) + 1)
+    ends = new.ends[n, :3] - old.ends[o, :3]
+    starts = new.starts[n, :3] - old.starts[o, :3]
+    alike = (new.kinds[n] == old.kinds[o]) & (new.tools[n] == old.tools[o])
+    alike &= _largest(new.frames[n, 4:8] - old.frames[o, 4:8]) <= tolerance
+    still_end, still_start = (_largest(d) <= tolerance for d in (ends, starts))
+    whole = alike & ~still_end & (_largest(ends - starts) <= tolerance)
     # a feature cuts: rapids alone moved (the way home from another place) are not one
-    if whole.sum() < MIN_SHIFTED or np.isin(new.kinds[news][whole], RAPID_KINDS).all():
+    if whole.sum() < MIN_SHIFTED or np.isin(new.kinds[n][whole], RAPID_KINDS).all():
         return []
     vote = Counter(map(tuple, np.round(ends[whole] / max(tolerance, 1e-9)).astype(np.int64).tolist()))
     step = np.array(vote.most_common(1)[0][0], dtype=float) * max(tolerance, 1e-9)
     by = ends[whole][np.argmin(np.abs(ends[whole] - step).max(axis=1))]
-    on_end, on_start = (np.abs(d - by).max(axis=1) <= tolerance for d in (ends, starts))
+    on_end, on_start = (_largest(d - by) <= tolerance for d in (ends, starts))
     fits = alike & (on_end | still_end) & (on_start | still_start) & ~(still_end & still_start)
     moved_whole = fits & on_end & on_start
     best: tuple[int, int] | None = None
@@ -119,6 +122,15 @@ def _shift_run(old: Recording, new: Recording, olds: np.ndarray, news: np.ndarra
     first, last = best
     return [Shift((int(olds[first]), int(olds[last])), (int(news[first]), int(news[last])),
                   (float(by[0]), float(by[1]), float(by[2])))]
+
+
+def _largest(rows: np.ndarray) -> np.ndarray:
+    """The largest absolute value in each row (NaN if any is), column by column: numpy is slow across a
+    short row."""
+    largest = np.abs(rows[:, 0])
+    for column in range(1, rows.shape[1]):
+        np.maximum(largest, np.abs(rows[:, column]), out=largest)
+    return largest
 
 
 def _true_runs(mask: np.ndarray) -> list[tuple[int, int]]:
@@ -193,26 +205,74 @@ def _reordered_gap(result: Matching, old: Recording, new: Recording, o0: int, o1
     result.new_match[new_left], result.old_match[old_left] = -2, -2  # told as the reordering, compared with nothing
 
 
-def _sampled(rec: Recording, spans: list[tuple[int, int]], dims: int) -> PathSamples:
-    """The path of the moves in ``spans`` (first, stop; clipped to the job), each point owned by its move's
-    index in the whole job (a stretch that does not follow the one before starts with a jump)."""
-    chosen = np.zeros(len(rec), dtype=bool)
-    for first, stop in spans:
-        chosen[max(first, 0):min(stop, len(rec))] = True
-    moves = np.flatnonzero(chosen)
-    samples = sample(rec.take(moves), dims)
-    samples.owner = moves[samples.owner].astype(np.int32) if len(moves) else samples.owner
-    centers, normals, radii = (np.zeros((len(rec), 3)), np.full(len(rec), -1, dtype=np.int8), np.zeros(len(rec)))
-    centers[moves], normals[moves], radii[moves] = samples.centers, samples.normals, samples.radii
-    samples.centers, samples.normals, samples.radii = centers, normals, radii
-    samples.arc_of = np.where(samples.arc_of >= 0, moves[np.maximum(samples.arc_of, 0)], -1).astype(np.int32) \
-        if len(moves) else samples.arc_of
-    return samples
+class _Paths:
+    """One job's path along the moves of ``spans`` (first, stop; clipped to the job): each move's points
+    as ``sample`` gives them for all those moves at once (a move that starts where the one before it in
+    the spans ends has no point of its own there), so sampling some of them gives the same points."""
+
+    def __init__(self, rec: Recording, spans: list[tuple[int, int]], dims: int) -> None:
+        chosen = np.zeros(len(rec), dtype=bool)
+        for first, stop in spans:
+            chosen[max(first, 0):min(stop, len(rec))] = True
+        self.rec, self.dims = rec, dims
+        self.moves = np.flatnonzero(chosen)
+        starts, ends = rec.starts[self.moves, :dims], rec.ends[self.moves, :dims]
+        self.jumps = np.ones(len(self.moves), dtype=bool)
+        self.jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
+        self._whole: PathSamples | None = None
+
+    def whole(self) -> PathSamples:
+        """The path of all the moves of the spans."""
+        if self._whole is None:
+            self._whole = self._sample(np.arange(len(self.moves)), self.jumps)
+        return self._whole
+
+    def part(self, needed: np.ndarray) -> PathSamples:
+        """The path of the moves marked in ``needed`` (a mask over the job): a run of them that continues
+        the move before it starts from that move's last point (that move with a point of its own at its
+        start), so the segments of the run are those of the whole path."""
+        want = needed[self.moves]
+        lead = np.flatnonzero(want[1:] & ~want[:-1] & ~self.jumps[1:])
+        jumps = self.jumps.copy()
+        jumps[lead] = True
+        want[lead] = True
+        chosen = np.flatnonzero(want)
+        return self._sample(chosen, jumps[chosen])
+
+    def _sample(self, chosen: np.ndarray, jumps: np.ndarray) -> PathSamples:
+        """The path of moves ``chosen`` (positions in the spans' moves), each point owned by its move's
+        index in the whole job."""
+        rec, moves = self.rec, self.moves[chosen]
+        samples = sample(rec, self.dims, moves=moves, jumps=jumps)
+        samples.owner = moves[samples.owner].astype(np.int32) if len(moves) else samples.owner
+        centers, normals, radii = (np.zeros((len(rec), 3)), np.full(len(rec), -1, dtype=np.int8), np.zeros(len(rec)))
+        centers[moves], normals[moves], radii[moves] = samples.centers, samples.normals, samples.radii
+        samples.centers, samples.normals, samples.radii = centers, normals, radii
+        samples.arc_of = np.where(samples.arc_of >= 0, moves[np.maximum(samples.arc_of, 0)], -1).astype(np.int32) \
+            if len(moves) else samples.arc_of
+        return samples
+
+
+def _needed(result: Matching, old: _Paths, new: _Paths,
+            gaps: list[tuple[int, int, int, int]]) -> tuple[PathSamples, PathSamples]:
+    """Each job's path where ``_measure`` looks: the moves of a gap still without a counterpart, and the
+    moves of a gap (with the anchors beside it) the other job's such moves are measured against."""
+    old_needed, new_needed = np.zeros(len(old.rec), dtype=bool), np.zeros(len(new.rec), dtype=bool)
+    for o0, o1, n0, n1 in gaps:
+        old_left, new_left = (result.old_match[o0:o1] == -1), (result.new_match[n0:n1] == -1)
+        old_needed[o0:o1] |= old_left
+        new_needed[n0:n1] |= new_left
+        if new_left.any():
+            old_needed[max(o0 - 1, 0):o1 + 1] = True
+        if old_left.any():
+            new_needed[max(n0 - 1, 0):n1 + 1] = True
+    return old.part(old_needed), new.part(new_needed)
 
 
 def _measure(distance: np.ndarray, match: np.ndarray, mine: PathSamples, m0: int, m1: int, other: PathSamples,
-             o0: int, o1: int) -> None:
-    """The moves ``m0``..``m1`` - 1 not paired yet, against the other's moves of the gap and its anchors."""
+             others: _Paths, o0: int, o1: int) -> None:
+    """The moves ``m0``..``m1`` - 1 not paired yet, against the other's moves of the gap and its anchors
+    (``other``: the other's path there; ``others``: all of it, for a gap where the other job makes no move)."""
     moves = np.arange(m0, m1)
     moves = moves[match[moves] == -1]
     if not len(moves):
@@ -221,9 +281,10 @@ def _measure(distance: np.ndarray, match: np.ndarray, mine: PathSamples, m0: int
     low, high = np.searchsorted(mine.owner, (m0, m1))
     owner = mine.owner[low:high]
     chosen = np.flatnonzero(match[owner] == -1)
+    if not len(stretch) and len(others.moves):  # the other job moves, but not here: far from all of it
+        other = others.whole()
+        stretch = Stretch(other, 0, len(other.owner))
     dist, seg, at = nearest(mine.points[low:high][chosen], stretch, CAPTURE)
-    if not len(stretch) and len(other.owner):  # the other job moves, but not here: far from all of it
-        dist, seg, at = nearest(mine.points[low:high][chosen], Stretch(other, 0, len(other.owner)), CAPTURE)
     owners = owner[chosen]
     firsts = np.searchsorted(owners, moves)
     distance[moves] = np.maximum.reduceat(dist, firsts)

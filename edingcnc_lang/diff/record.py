@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from array import array
 from collections.abc import Sequence
+from itertools import chain
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -33,7 +34,8 @@ ROW = 19 + FRAME
 LINE_STEP = 5.0        # mm: a straight move longer than this gets points inside it, so alignment stays local
 MAX_CHORDS = 4096      # pieces per arc move at most
 ARC_STEP = math.radians(10.0)  # radians: an arc in pieces this long, each measured to its circle
-CHUNK = 65_536         # moves (points) filled at once
+CHUNK = 2048           # moves filled at once: each piece's arrays stay small enough to reuse memory
+                       # (a big one is new pages from the system each time, which costs more than the loop)
 NO_ARC = (-1.0,) + (0.0,) * (FRAME - 1)
 
 _FRAME_ROWS = speedups.compiled("arc_frame_rows") or arc_frame_rows  # the planner's arc frames
@@ -143,7 +145,7 @@ class Recorder:
         table[:, 4] = batch.spindle or (self.rpm if self.turning else 0.0)
         clock = np.asarray(times, dtype=float)
         table[:, 5], table[:, 6] = clock[:count], clock[1:count + 1]
-        ends = np.asarray(batch.ends, dtype=float).reshape(count, 6)
+        ends = np.fromiter(chain.from_iterable(batch.ends), float, count * 6).reshape(count, 6)  # poses, flat
         table[0, 7:13] = batch.start
         table[1:, 7:13] = ends[:-1]
         table[:, 13:19] = ends
@@ -211,14 +213,23 @@ class PathSamples:
     jump: np.ndarray     # (P,) bool: a move's start away from the previous end (the segment to it is no path)
 
 
-def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> PathSamples:
-    """The polyline of ``rec``: what the alignment compares, so two ways of writing the same path
-    (an arc split in two, a line split in three) give points on the same curve.  Arcs are pieces of
-    at most ``arc_step`` radians whose distances are measured to the circle, not to the chord.
-    Filled a chunk of moves at a time, so what it needs besides its result stays small."""
-    count = len(rec)
-    arcs = rec.arc_moves()
-    circle = _circles(rec, arcs, arc_step)
+def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP, moves: np.ndarray | None = None,
+           jumps: np.ndarray | None = None) -> PathSamples:
+    """The polyline of ``rec`` (of its moves ``moves`` alone, sorted, numbered 0.. in the result): what
+    the alignment compares, so two ways of writing the same path (an arc split in two, a line split in
+    three) give points on the same curve.  Arcs are pieces of at most ``arc_step`` radians whose
+    distances are measured to the circle, not to the chord.  ``jumps`` says which moves start with a
+    point of their own (default: those that start away from the previous move's end, and the first).
+    Each point is worked out from its move alone, so a move's points are the same whichever moves are
+    sampled with it; filled a chunk of moves at a time, so what it needs besides its result stays small."""
+    if moves is None or (len(moves) and moves[-1] - moves[0] == len(moves) - 1):  # a run of moves: views
+        rows = slice(None) if moves is None else slice(int(moves[0]), int(moves[-1]) + 1)
+        starts, ends, frames = rec.starts[rows, :dims], rec.ends[rows, :dims], rec.frames[rows]
+    else:  # only the columns the path needs, not a copy of the whole recording
+        starts, ends, frames = rec.starts[moves, :dims], rec.ends[moves, :dims], rec.frames[moves]
+    count = len(starts)
+    arcs = np.flatnonzero(frames[:, 0] >= 0)
+    circle = _circles(frames[arcs], rec.starts[arcs if moves is None else moves[arcs], :3], arcs, arc_step)
     centers = np.zeros((count, 3))
     normals = np.full(count, -1, dtype=np.int8)
     radii = np.zeros(count)
@@ -226,14 +237,13 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> PathSam
     if not count:
         return PathSamples(np.zeros((0, dims)), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32),
                        centers, normals, radii, np.zeros(0, dtype=bool))
-    starts, ends = rec.starts[:, :dims], rec.ends[:, :dims]
-    lengths = np.linalg.norm(ends - starts, axis=1)
+    delta = ends - starts
     # at least the middle and the end: a move between two points of the other path that strays between them shows
-    pieces = np.maximum(2, np.ceil(lengths / LINE_STEP)).astype(np.int64)
+    pieces = np.maximum(2, np.ceil(np.linalg.norm(delta, axis=1) / LINE_STEP)).astype(np.int64)
     pieces[arcs] = circle.pieces
-    # a point where a move starts away from the previous end (a kinematics switch, the first move)
-    jumps = np.ones(count, dtype=bool)
-    jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
+    if jumps is None:  # a point where a move starts away from the previous end (a kinematics switch, the first move)
+        jumps = np.ones(count, dtype=bool)
+        jumps[1:] = np.any(np.abs(starts[1:] - ends[:-1]) > 1e-9, axis=1)
     total = int(pieces.sum() + jumps.sum())
     points = np.empty((total, dims))
     owner = np.empty(total, dtype=np.int32)
@@ -248,11 +258,11 @@ def sample(rec: Recording, dims: int = 3, arc_step: float = ARC_STEP) -> PathSam
         move_of, slot = slots(np.arange(low, high), straight[low:high])
         at = firsts[move_of] + slot
         fraction = (slot + 1) / pieces[move_of]
-        points[at] = starts[move_of] + fraction[:, None] * (ends[move_of] - starts[move_of])
+        points[at] = starts[move_of] + fraction[:, None] * delta[move_of]
         owner[at] = move_of
     arc_of = np.full(max(total - 1, 0), -1, dtype=np.int32)
-    for low in range(0, len(arcs), CHUNK // 16):
-        high = min(len(arcs), low + CHUNK // 16)
+    for low in range(0, len(arcs), CHUNK // 4):
+        high = min(len(arcs), low + CHUNK // 4)
         which, slot = slots(np.arange(low, high), circle.pieces[low:high])
         move_of = arcs[which]
         at = firsts[move_of] + slot
@@ -302,14 +312,13 @@ class _Circles:
         return pts
 
 
-def _circles(rec: Recording, arcs: np.ndarray, arc_step: float) -> _Circles:
-    """The circles of the arc moves ``arcs`` (their recorded frames), each in pieces of at most ``arc_step``
-    radians and ``LINE_STEP`` mm."""
-    table = rec.frames[arcs]
+def _circles(table: np.ndarray, starts: np.ndarray, arcs: np.ndarray, arc_step: float) -> _Circles:
+    """The circles of the arc moves ``arcs`` from their recorded frames ``table`` and XYZ ``starts``, each
+    in pieces of at most ``arc_step`` radians and ``LINE_STEP`` mm."""
     u, v = table[:, 0].astype(np.int64), table[:, 1].astype(np.int64)
     normal = 3 - u - v
     rows = np.arange(len(arcs))
-    center = rec.starts[arcs, :3].copy()
+    center = starts.copy()
     center[rows, u], center[rows, v] = table[:, 2], table[:, 3]
     r0, r1, angle, sweep, length = table[:, 4], table[:, 5], table[:, 6], table[:, 7], table[:, 8]
     pieces = np.clip(np.maximum(np.ceil(np.abs(sweep) / arc_step), np.ceil(length / LINE_STEP)), 2, MAX_CHORDS)

@@ -108,3 +108,35 @@ def test_a_path_driven_the_other_way_is_one_reversed_change(tmp_path: Path) -> N
     reversed_ = [c for c in comparison.changes["deviations"] if c.what == "reversed"]
     assert len(reversed_) == 1 and reversed_[0].moves >= 39  # all but the move to where the passes start
     assert comparison.changes["feeds"] == []
+
+
+def test_a_few_points_against_a_long_stretch_find_what_all_against_all_finds(tmp_path: Path, monkeypatch) -> None:
+    """The boxes leave out only segments farther than the nearest: the distances, segments and places are
+    those of measuring every pair, ties (points on vertices, a path driven twice) included."""
+    import numpy as np
+
+    from edingcnc_lang.diff import align
+    from edingcnc_lang.diff.record import record, sample
+    from edingcnc_lang.runner import RunOptions
+
+    moves = []
+    for k in range(600):
+        x = 40 * (k % 2)
+        moves.append(f"G{2 + k % 2} X{x} Y{k * 0.5:.1f} R25\n" if k % 5 == 3 else f"G1 X{x} Y{k * 0.5:.1f}\n")
+    helix = "G17 G2 X40 Y309.5 Z-2 I0 J5\nG18 G3 X50 Z-2 I5 K0\nG19 G2 Y299.5 Z-2 J-5 K0\n"
+    job = write(tmp_path, "long.nc", HEAD + "".join(moves) + helix + "G1 X0 Y0\n" + "".join(moves[:50]) + TAIL)
+    samples = sample(record(job, RunOptions()))
+    stretch = align.Stretch(samples, 0, int(samples.owner[-1]) + 1)
+    rng = np.random.default_rng(7)
+    points = np.vstack((samples.points[rng.choice(len(samples.points), 30)],       # on the path
+                        samples.points[rng.choice(len(samples.points), 20)] + rng.normal(0, 0.3, (20, 3)),
+                        rng.uniform(-20, 60, (20, 3))))                             # near it and far
+    monkeypatch.setattr(align, "BRUTE", 1 << 30)  # every pair
+    expected = align.nearest(points, stretch, 1.0)
+    boxed, by_boxes = [], align._by_boxes
+    monkeypatch.setattr(align, "BRUTE", 256)       # a long stretch: by boxes
+    monkeypatch.setattr(align, "_by_boxes", lambda *args: boxed.append(1) or by_boxes(*args))
+    found = align.nearest(points, stretch, 1.0)
+    assert boxed and len(stretch) > 256 and len(points) * 64 < len(stretch)
+    for mine, theirs in zip(found, expected):
+        assert np.array_equal(mine, theirs)
