@@ -91,7 +91,7 @@ def checked_trip(trip: object, start: Pose, goal: Pose) -> Pose | None:
                          "(x y z a b c, machine coordinates)")
     if any(abs(pose[i] - start[i]) > 1e-9 for i in range(3, 6)):
         raise ValueError("the host's probe callback moved a rotary axis, which G38.2 never moves")
-    return pose  # type: ignore[return-value]
+    return pose
 
 
 def _shown(value: object) -> str:

@@ -113,7 +113,7 @@ class MdiSession:
 
     def _outcome(self, value: float | None, moved: bool, ended: bool) -> MdiOutcome:
         position = tuple(self._interp.reported_position())  # X a diameter on a diameter lathe, as #5001
-        return MdiOutcome(value, moved, position, self._run.machine_position(), ended)  # type: ignore[arg-type]
+        return MdiOutcome(value, moved, position, self._run.machine_position(), ended)
 
     def _flush(self) -> None:
         self._run.pipeline.flush()

@@ -33,7 +33,7 @@ def _build(cls: type[T], eq: bool, slots: bool) -> type[T]:
     for name, method in _SHARED.items():
         if eq or name not in ("__eq__", "__hash__"):  # without eq: compared and hashed by identity
             setattr(cls, name, method)
-    made: Any = dataclass(cls, init=False, repr=False, eq=False, slots=slots)  # type: ignore[call-overload]
+    made: Any = dataclass(cls, init=False, repr=False, eq=False, slots=slots)
     for f in fields(made):
         if not f.init or f.hash is not None:
             raise TypeError(f"{cls.__name__}.{f.name}: records.record takes plain fields, defaults and factories only")
@@ -42,7 +42,7 @@ def _build(cls: type[T], eq: bool, slots: bool) -> type[T]:
     made.__init__ = _init(made)
     if slots:  # as dataclass(frozen=True, slots=True): copy and pickle set the fields past __setattr__
         made.__getstate__, made.__setstate__ = _getstate, _setstate
-    return made  # type: ignore[no-any-return]
+    return made
 
 
 def _key(names: tuple[str, ...]) -> Callable[[Any], tuple[Any, ...]]:

@@ -383,9 +383,9 @@ class Run:
         modal_codes.append(motion if motion in t.CANNED_CYCLES else t.code_key(80))
         kin = self.kinematics
         return RunResult(
-            position=tuple(interp.reported_position()),  # type: ignore[arg-type]
-            machine=self.machine_position(),  # type: ignore[arg-type]
-            joints=tuple(self.motion.joints),  # type: ignore[arg-type]
+            position=tuple(interp.reported_position()),
+            machine=self.machine_position(),
+            joints=tuple(self.motion.joints),
             variables=interp.params.snapshot_written(),
             messages=list(interp.messages.events),
             kinematics={"name": kin.name, "type": kin.kin_type(), "active": interp.guards.kinematics_active},
@@ -399,7 +399,7 @@ class Run:
             spindle=interp.spindle_state(),
             estimate=self.planner.estimate if self.planner else None,
             limits=self.planner.limits.to_json() if self.planner else None,
-            work_zero=tuple(interp.offset()),  # type: ignore[arg-type]
+            work_zero=tuple(interp.offset()),
             parameters=interp.params.frozen(),
             assumptions=list(self.assumptions),
         )

@@ -18,7 +18,7 @@ import click
 try:  # click >= 8.2
     from click.parser import _OptionParser as OptionParser
 except ImportError:  # pragma: no cover - click 8.1
-    from click.parser import OptionParser  # type: ignore[attr-defined,no-redef]
+    from click.parser import OptionParser  # type: ignore[attr-defined,no-redef,unused-ignore]
 
 # "-5", "-.5", "-2.5e-3", "-inf": values, not options.
 NEGATIVE_NUMBER = re.compile(r"-\.?\d|-inf|-nan", re.IGNORECASE)
@@ -37,7 +37,7 @@ def until_exit() -> list[object] | None:
     return kept if isinstance(kept, list) else None
 
 
-class ArgvParser(OptionParser):  # type: ignore[misc]
+class ArgvParser(OptionParser):  # type: ignore[misc,unused-ignore]
     """click's parser, taking a negative number where an argument may stand for that argument."""
 
     def _process_opts(self, arg: str, state: Any) -> None:
@@ -54,7 +54,7 @@ class UsageWriter:
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
         try:
-            return super().parse_args(ctx, args)  # type: ignore[misc,no-any-return]
+            return super().parse_args(ctx, args)  # type: ignore[misc,no-any-return,unused-ignore]
         except click.UsageError as err:
             if err.ctx is None:  # click's parser leaves it out for "--cc" without a value
                 err.ctx = ctx

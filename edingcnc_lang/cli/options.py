@@ -268,4 +268,4 @@ def machine_options(func: F) -> F:
     decorated: Any = command
     for option in reversed(_MACHINE_OPTIONS):
         decorated = option(decorated)
-    return decorated  # type: ignore[no-any-return]
+    return decorated

@@ -67,7 +67,7 @@ def _six_numbers(result: object, label: str, call: str) -> Pose:
         text = repr(result)
         raise PluginError(f"kinematics plug-in {label}: {call} returned {type(result).__name__} "
                           f"{text[:60]}{'...' if len(text) > 60 else ''}, not six numbers (x y z a b c)")
-    return values  # type: ignore[return-value]
+    return values
 
 
 class KinematicsDomainError(MachineError):

@@ -137,7 +137,7 @@ class Evaluator:
             try:
                 result = BINARY[expr.op](self.value(expr.left), self.value(expr.right))  # type: ignore[union-attr]
             except Undefined as why:
-                raise fail(str(why), expr.span) from None  # type: ignore[union-attr]
+                raise fail(str(why), expr.span) from None
             if math.isinf(result) or math.isnan(result):
                 raise fail(f"the result of {expr.op} is not a finite number", expr.span)  # type: ignore[union-attr]
             return result

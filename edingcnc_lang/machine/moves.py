@@ -192,9 +192,9 @@ class Moves(MachineState):
         feed = self._feed_for(distance, words, span)
         goal = self.machine_frame(target)  # the host sees machine coordinates
         start = self.machine_frame(self.pos)
-        trip = self.host.probe(start, goal) if self.host.probe else goal  # type: ignore[arg-type]
+        trip = self.host.probe(start, goal) if self.host.probe else goal
         try:
-            trip = checked_trip(trip, start, goal)  # type: ignore[arg-type]
+            trip = checked_trip(trip, start, goal)
         except ValueError as err:
             raise self.fail(str(err), span) from None
         self._move("probe", self.program_frame(trip) if trip is not None else target, feed)

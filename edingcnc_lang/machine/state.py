@@ -365,7 +365,7 @@ class MachineState:
                 return
             self.flush_pending()  # the moves before this one go first
         rpm, css = self.spindle_along()
-        self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,  # type: ignore[arg-type]
+        self.canon.move(Move(kind, self.path, self.line, start, tuple(end), feed, arc,
                              css.rpm(end[0]) if css is not None else rpm, css, sync, self.caller()))
         self.job_distance += path_length(start, end, arc)
         self.pos = list(end)  # only a move the machine made changes the position

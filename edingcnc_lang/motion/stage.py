@@ -121,7 +121,7 @@ class MotionStage:
         self.active: Kinematics | None = None  # None: kinematics off, joints = position
         self.tanknife = False
         self.knife_z_zero = 0.0                # machine Z of the work zero when tanknife was switched on
-        self.joints: Pose = (0.0,) * 6         # type: ignore[assignment]
+        self.joints: Pose = (0.0,) * 6
         self.time = 0.0
         self.moves = 0
         # joint position limits, LIMIT_SLACK included
@@ -211,7 +211,7 @@ class MotionStage:
     def _straight_limits(self) -> dict[str, AxisLimits]:
         """The limits of the fast path's rapids and feed moves (kinematics off)."""
         origin = (0.0,) * 6
-        return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}  # type: ignore[arg-type]
+        return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}
 
     def event(self, event: Event) -> None:
         if isinstance(event, DwellEvent):
@@ -255,7 +255,7 @@ class MotionStage:
         zero = args[0] if MAPPINGS[mode].wrap == 0 else args[1]
         mapping = self._plugin_call(
             lambda: CylinderMapping(mode, self.config.kinematics_settings, zero, self.joints[2]), where)
-        return self._switch(mapping, f"KIN {mode}", where)  # type: ignore[arg-type]
+        return self._switch(mapping, f"KIN {mode}", where)
 
     def _switch(self, kin: Kinematics | None, label: str, where: Location) -> Pose:
         """Make ``kin`` active without moving a motor: the position is found from the joints."""
@@ -375,7 +375,7 @@ class MotionStage:
                 joints = self._plugin_call(lambda: checked_rows(kin.inverse_many(pos), len(pos)), where)
             except KinematicsDomainError as err:
                 raise MachineError(f"{err.message} (kinematics {kin.name})", where) from None
-        return joints + self._bend_offset(pos) if self._bend_active() else joints  # type: ignore[return-value]
+        return joints + self._bend_offset(pos) if self._bend_active() else joints
 
     def _limits_for(self, move: Move) -> AxisLimits:
         """What a move is timed against: joints with kinematics off, [KINEMATICS] (or the plug-in) with them on."""

@@ -109,12 +109,12 @@ def side_angle(side: int) -> float:
 
 def inside_corner(beta: R) -> R:
     """Whether the corner turns into the tool (concave): the previous move is cut back."""
-    return (beta < -CONCAVE_TOLERANCE) | (beta > math.pi + CONCAVE_TOLERANCE)  # type: ignore[return-value]
+    return (beta < -CONCAVE_TOLERANCE) | (beta > math.pi + CONCAVE_TOLERANCE)
 
 
 def outside_corner(beta: R) -> R:
     """Whether a corner that is not inside turns away from the tool (convex): the tool goes round it."""
-    return beta > CONCAVE_TOLERANCE  # type: ignore[return-value]
+    return beta > CONCAVE_TOLERANCE
 
 
 def half_corner(beta: R) -> R:
@@ -130,7 +130,7 @@ def cut_back(ops: Ops[R], radius: float, current: tuple[R, R], theta: R, gamma: 
 def reverses(direction: tuple[R, R], endpoint: tuple[R, R], point: tuple[R, R]) -> R:
     """Whether moving a straight move's end from ``endpoint`` to ``point`` turns it against its
     programmed ``direction`` (the tool would gouge)."""
-    return direction[0] * (point[0] - endpoint[0]) + direction[1] * (point[1] - endpoint[1]) < 0  # type: ignore[return-value]
+    return direction[0] * (point[0] - endpoint[0]) + direction[1] * (point[1] - endpoint[1]) < 0
 
 
 @dataclass

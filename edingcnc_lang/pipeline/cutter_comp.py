@@ -174,7 +174,7 @@ class CutterCompensation(Stage):
         out.lines.append(origin.line)  # type: ignore[attr-defined]
         out.ends.append(end)  # type: ignore[attr-defined]
         out.feeds.append(item.feed)  # type: ignore[attr-defined]
-        return end  # type: ignore[return-value]
+        return end
 
     def _at_tip(self, item: Queued) -> None:
         """A lathe tool's move, computed for the nose centre, moved to the tool's controlled point."""
@@ -232,7 +232,7 @@ class CutterCompensation(Stage):
             end = list(self.current)
             end[0] += self.tip[0]
             end[2] += self.tip[1]
-            self.exit_from = tuple(end)  # type: ignore[assignment]
+            self.exit_from = tuple(end)
         self.side = 0
         self.first = True
         self.tip = (0.0, 0.0)
@@ -260,7 +260,7 @@ class CutterCompensation(Stage):
                 self.next.event(item)
                 continue
             start = self.emitted if self.emitted is not None else tuple(item.end)
-            self.emitted = self._hand_on(item, start)  # type: ignore[arg-type]
+            self.emitted = self._hand_on(item, start)
 
     def _move_endpoint_and_flush(self, point: Point, move: Move | Event | None) -> None:
         """End every queued move at ``point`` (cut back into a corner), refusing reversals; hand them on.

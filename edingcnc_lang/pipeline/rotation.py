@@ -40,10 +40,10 @@ class Rotation(PoseTransform):
         self.next.event(event)
 
     def forward(self, pose: Pose) -> Pose:
-        return rotate_about(pose, self.pivot, self.angle, self.plane) if self.angle else pose  # type: ignore[return-value]
+        return rotate_about(pose, self.pivot, self.angle, self.plane) if self.angle else pose
 
     def inverse(self, pose: Pose) -> Pose:
-        return rotate_about(pose, self.pivot, -self.angle, self.plane) if self.angle else pose  # type: ignore[return-value]
+        return rotate_about(pose, self.pivot, -self.angle, self.plane) if self.angle else pose
 
     def arc(self, arc: Arc, where: Location) -> Arc:
         if arc.plane != self.plane and self.angle and self.angle % 360.0:

@@ -41,12 +41,12 @@ class Scaling(PoseTransform):
         self.next.event(event)
 
     def forward(self, pose: Pose) -> Pose:
-        return scale_about(pose, self.center, self.factors) if self.factors else pose  # type: ignore[return-value]
+        return scale_about(pose, self.center, self.factors) if self.factors else pose
 
     def inverse(self, pose: Pose) -> Pose:
         if not self.factors:
             return pose
-        return scale_about(pose, self.center, [1.0 / f for f in self.factors])  # type: ignore[return-value]
+        return scale_about(pose, self.center, [1.0 / f for f in self.factors])
 
     def arc(self, arc: Arc, where: Location) -> Arc:
         assert self.factors is not None

@@ -20,7 +20,7 @@ def map_center(arc: Arc, mapping: Callable[[Pose], Pose]) -> tuple[float, float]
     in_frame = (arc.center[1], arc.center[0]) if arc.plane == "XZ" else arc.center
     pose = [0.0] * 6
     pose[first], pose[second] = in_frame
-    mapped = mapping(tuple(pose))  # type: ignore[arg-type]
+    mapped = mapping(tuple(pose))
     return (mapped[second], mapped[first]) if arc.plane == "XZ" else (mapped[first], mapped[second])
 
 

@@ -117,7 +117,7 @@ def lowest(tool: Tool, g: Geometry) -> np.ndarray:
 def _golden(tool: Tool, g: Geometry) -> np.ndarray:
     """The parameter minimising a convex profile's height over the interval (golden section)."""
     def height(t: np.ndarray) -> np.ndarray:
-        return g.az + t * g.dz + tool.profile(np.sqrt(g.d2(t)))  # type: ignore[no-any-return]
+        return g.az + t * g.dz + tool.profile(np.sqrt(g.d2(t)))
 
     lo, hi = g.lo.copy(), g.hi.copy()
     for _ in range(GOLDEN_STEPS):
@@ -125,4 +125,4 @@ def _golden(tool: Tool, g: Geometry) -> np.ndarray:
         go_left = height(left) < height(right)
         hi = np.where(go_left, right, hi)
         lo = np.where(go_left, lo, left)
-    return (lo + hi) / 2.0  # type: ignore[no-any-return]
+    return (lo + hi) / 2.0

@@ -183,7 +183,7 @@ class Simulator:
             for move, code, depth, where in zip(hits.move.tolist(), hits.code.tolist(), hits.depth.tolist(),
                                                 hits.where.tolist()):
                 kind = "outside_stock" if code == OUTSIDE else CODE_KINDS[code]
-                found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], tuple(where),  # type: ignore[arg-type]
+                found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], tuple(where),
                                      depth, tool, move))
         return merged(found)
 

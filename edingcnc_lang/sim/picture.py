@@ -54,13 +54,13 @@ def draw_stock(stock: Stock, out: Path, fmt: str, findings: list[CutFinding], ti
     save_figure(fig, out, fmt, DPI)
 
 
-def _cmap():  # type: ignore[no-untyped-def]
+def _cmap():
     from matplotlib import colormaps
 
     return colormaps["viridis"]
 
 
-def _mark(ax, findings: list[CutFinding]) -> None:  # type: ignore[no-untyped-def]
+def _mark(ax, findings: list[CutFinding]) -> None:
     """One marker per finding where the tool was, labelled with its line; one legend entry per kind."""
     for kind, (marker, colour) in MARKERS.items():
         points = [f.position for f in findings if f.kind == kind]
@@ -81,7 +81,7 @@ def _mark(ax, findings: list[CutFinding]) -> None:  # type: ignore[no-untyped-de
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=len(MARKERS), fontsize=7, frameon=False)
 
 
-def _draw_deviation(fig, ax, deviation: Deviation, step: int, extent: tuple[float, ...]) -> None:  # type: ignore[no-untyped-def]
+def _draw_deviation(fig, ax, deviation: Deviation, step: int, extent: tuple[float, ...]) -> None:
     values = deviation.map[::step, ::step]
     limit = max(deviation.max_overcut, deviation.max_undercut, 1e-3)
     image = ax.imshow(values[::-1], extent=extent, cmap="RdBu_r", vmin=-limit, vmax=limit, interpolation="nearest")

@@ -32,7 +32,7 @@ def vertex_radii(field: np.ndarray) -> np.ndarray:
     square = field.astype(np.float64) ** 2
     around = (square + np.roll(square, 1, axis=1)) / 2.0  # at each angle edge, per slice
     padded = np.vstack((around[:1], around, around[-1:]))
-    return np.sqrt((padded[:-1] + padded[1:]) / 2.0)  # type: ignore[no-any-return]
+    return np.sqrt((padded[:-1] + padded[1:]) / 2.0)
 
 
 def _points(stock: RoundStock, radii: np.ndarray, axis: str, rows: np.ndarray | None = None,
@@ -93,7 +93,7 @@ def _ring(outer: np.ndarray, inner: np.ndarray, first: bool) -> np.ndarray:
 
 def _kept(triangles: np.ndarray) -> np.ndarray:
     area = np.linalg.norm(np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]), axis=1)
-    return triangles[area > 1e-12].astype(np.float32)  # type: ignore[no-any-return]
+    return triangles[area > 1e-12].astype(np.float32)
 
 
 def draw_shaded(ax: Any, stock: RoundStock, axis: str) -> None:

@@ -165,7 +165,7 @@ def _shaped(tool: Tool, dx: np.ndarray, y: np.ndarray, z: np.ndarray, c: np.ndar
     cutter's profile): the top of that concave function, then its zeros either side (lo > hi: none)."""
     def f(rho: np.ndarray) -> np.ndarray:
         u = rho * c - y
-        return rho * s - z - tool.profile(np.sqrt(dx * dx + u * u))  # type: ignore[no-any-return]
+        return rho * s - z - tool.profile(np.sqrt(dx * dx + u * u))
 
     lo, hi = a.copy(), b.copy()
     left, right = hi - GOLDEN * (hi - lo), lo + GOLDEN * (hi - lo)
@@ -198,7 +198,7 @@ def _zero(f: Callable[[np.ndarray], np.ndarray], a: np.ndarray, b: np.ndarray, r
             lo = np.where(above, mid, lo)
             hi = np.where(above, hi, mid)
     found = np.where(at_end, end, hi if rising else lo)
-    return np.where(inside, found, np.inf if rising else -np.inf)  # type: ignore[no-any-return]
+    return np.where(inside, found, np.inf if rising else -np.inf)
 
 
 def extent(stock: RoundStock, poses: np.ndarray, part: Part) -> tuple[np.ndarray, ...]:

@@ -63,7 +63,7 @@ class RoundStock:
 
     @property
     def shape(self) -> tuple[int, int]:
-        return self.outer.shape  # type: ignore[return-value]
+        return self.outer.shape
 
     def centres(self) -> np.ndarray:
         """The axial position of each slice's centre."""

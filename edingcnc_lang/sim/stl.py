@@ -67,7 +67,7 @@ def stock_from_stl(path: str | Path, resolution: float) -> Stock:
     the mesh does not cover hold no material."""
     triangles = read_stl(path)
     lower, upper = triangles.reshape(-1, 3).min(axis=0), triangles.reshape(-1, 3).max(axis=0)
-    nx, ny = grid_size(tuple(lower), tuple(upper), resolution)  # type: ignore[arg-type]
+    nx, ny = grid_size(tuple(lower), tuple(upper), resolution)
     empty = np.full((ny, nx), lower[2], dtype=np.float32)
     stock = Stock(float(lower[0]), float(lower[1]), resolution, float(lower[2]), float(upper[2]), empty)
     top, covered = raster_top(stock, triangles)

@@ -51,7 +51,7 @@ class Stock:
 
     @property
     def shape(self) -> tuple[int, int]:
-        return self.top.shape  # type: ignore[return-value]
+        return self.top.shape
 
     @property
     def box_bounds(self) -> list[float]:

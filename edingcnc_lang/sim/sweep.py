@@ -132,7 +132,7 @@ def footprint_cells(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -
 def pair_counts(stock: Stock, a: np.ndarray, b: np.ndarray, radius: float) -> np.ndarray:
     """How many pairs ``footprint_cells`` makes per segment (to cut a batch into chunks)."""
     (_i0, wide), (_j0, tall) = _spans(stock, a, b, radius)
-    return wide * tall  # type: ignore[no-any-return]
+    return wide * tall
 
 
 @dataclass(frozen=True)
@@ -147,7 +147,7 @@ class Part:
     def floor(self, tool: Tool) -> Callable[[np.ndarray], np.ndarray]:
         """Height of this part's lowest surface above the tip at a distance from the axis."""
         if self.code == NONE:
-            return tool.profile  # type: ignore[no-any-return]
+            return tool.profile
         above = np.float32(self.offset)
 
         def flat(d: np.ndarray) -> np.ndarray:
@@ -196,7 +196,7 @@ def sweep(stock: Stock, tool: Tool, segs: Segments, plunge_limit: float, ceiling
         found.append(_chunk(stock, tool, segs, parts, reach, chosen, plunge_limit))
     if quiet:
         _carve(stock, tool, segs, reach[0], np.concatenate(quiet))
-    return Hits(*(np.concatenate([getattr(h, name) for h in found])  # type: ignore[arg-type]
+    return Hits(*(np.concatenate([getattr(h, name) for h in found])
                   for name in ("move", "code", "depth", "where")))
 
 
@@ -250,7 +250,7 @@ def _tool_at(stock: Stock, segs: Segments, seg: np.ndarray, cell: np.ndarray) ->
     l2 = d[:, 0] ** 2 + d[:, 1] ** 2
     along = np.where(l2 > 0, (c[:, 0] * d[:, 0] + c[:, 1] * d[:, 1]) / np.where(l2 > 0, l2, 1.0),
                      (d[:, 2] < 0).astype(float))
-    return a + np.clip(along, 0.0, 1.0)[:, None] * d  # type: ignore[no-any-return]
+    return a + np.clip(along, 0.0, 1.0)[:, None] * d
 
 
 def _hits(stock: Stock, cell: np.ndarray, h: np.ndarray, move: np.ndarray, code: np.ndarray, seg: np.ndarray,
@@ -294,4 +294,4 @@ def _height_before(top: np.ndarray, cell: np.ndarray, h: np.ndarray, move: np.nd
     before = np.minimum(top[g_cell].astype(np.float64), earlier)
     stride = int(move.max()) + 1
     keys = g_cell * stride + g_move
-    return before[np.searchsorted(keys, cell[candidate] * stride + move[candidate])]  # type: ignore[no-any-return]
+    return before[np.searchsorted(keys, cell[candidate] * stride + move[candidate])]
