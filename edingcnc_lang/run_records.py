@@ -15,6 +15,7 @@ from edingcnc_lang.canon import AXES, Event, Move, Pose
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.events import MessageEvent
+from edingcnc_lang.records import record
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.observe import Observer
 from edingcnc_lang.motion.planner.estimate import Estimate
@@ -163,7 +164,7 @@ class RunOptions:
     variables: Mapping[int, float] = field(default_factory=dict)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class CheckedJob:
     """A job's check pass (``Run.check_job``): its structure and the T words it names (GetToolInfo).
     A run of the unchanged file may take it instead of reading the file through again: the debugger's

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.errors import EcncError
+from edingcnc_lang.records import record
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.syntax.parser import read_statements
 from edingcnc_lang.debug.expressions import ExpressionError, evaluate, interpolate, parse_expression
@@ -59,7 +60,7 @@ class Breakpoint:
         return body
 
 
-@dataclass
+@record(frozen=True)
 class Decision:
     """What reaching a breakpoint means: stop, print a log line, or neither."""
 
@@ -189,7 +190,7 @@ def sub_of(name: str) -> str:
     return word.lower()
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Facts:
     """What the debugger needs to know of a file: the lines statements start on (``first_at``), its
     subs, and the syntax error that keeps it from running (None if it parses).
@@ -274,7 +275,7 @@ def facts(path: str) -> Facts:
     return _remember(key, stamp, _read(key))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class JobCheck:
     """The launch's check of the job (``Run.check_job``), which the run takes instead of checking the
     job again while the file is the version that was checked."""
