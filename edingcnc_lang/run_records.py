@@ -15,6 +15,7 @@ from edingcnc_lang.canon import AXES, Event, Move, Pose
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.events import MessageEvent
+from edingcnc_lang.records import record
 from edingcnc_lang.host import Host
 from edingcnc_lang.machine.observe import Observer
 from edingcnc_lang.motion.planner.estimate import Estimate
@@ -23,6 +24,7 @@ from edingcnc_lang.syntax.input_limits import DEFAULT_MAX_STEPS
 
 if TYPE_CHECKING:
     from edingcnc_lang.motion.planner.stage import TimedSink
+    from edingcnc_lang.syntax.parser import CheckedFile
 
 
 @dataclass(frozen=True)
@@ -160,6 +162,16 @@ class RunOptions:
     # parameters set before the job's first line (after the macro files' top-level lines and the
     # ini's initialString, before the start sub), as if the machine had them: a test's starting state
     variables: Mapping[int, float] = field(default_factory=dict)
+
+
+@record(frozen=True)
+class CheckedJob:
+    """A job's check pass (``Run.check_job``): its structure and the T words it names (GetToolInfo).
+    A run of the unchanged file may take it instead of reading the file through again: the debugger's
+    launch checks the job for its breakpoint lines, and the run it starts uses that check."""
+
+    file: CheckedFile
+    tools: frozenset[int]
 
 
 def result_of(error: EcncError) -> RunResult | None:

@@ -22,7 +22,7 @@ from edingcnc_lang.config.machine_config import MachineConfig, load_config, save
 from edingcnc_lang.errors import Cancelled, EcncError, Interrupted, Location, MachineError
 from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField, guarded
 # the records of a run, re-exported: ``from edingcnc_lang.runner import RunOptions`` keeps working
-from edingcnc_lang.run_records import Assumption, RunOptions, RunResult, result_of
+from edingcnc_lang.run_records import Assumption, CheckedJob, RunOptions, RunResult, result_of
 from edingcnc_lang.motion.callback_tap import CallbackTap
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.machine.named_commands import tools_used
@@ -271,31 +271,41 @@ class Run:
             interp.run(parse_text(self.config.initial_string, f"{self.config.path}:initialString").body)
         self._set_variables()
 
-    def execute_file(self, job: Path, name: str | None = None) -> RunResult:
-        """Check the job, then run it as it streams in; ``name`` is what messages call it (default its path)."""
-        tools: set[int] = set()  # the T words, found by the check pass (GetToolInfo): the job is read twice, not more
+    def check_job(self, job: Path, name: str | None = None,
+                  on_statement: Callable[[n.Stmt], None] | None = None) -> CheckedJob:
+        """The job read through before its first line runs: its syntax errors raised, its subs, which
+        lines are plain and its T words (GetToolInfo) noted; ``on_statement`` as ``check_file``'s."""
+        tools: set[int] = set()  # the T words, found by the check pass: the job is read twice, not more
 
         def find_tools(chunk: list[str]) -> None:
             joined = "\n".join(chunk)
             if "T" in joined or "t" in joined:
                 tools.update(tools_used((joined,)))
 
-        self._jobs.append(job)
         try:
-            checked = check_file(job, name, on_chunk=find_tools)
+            checked = check_file(job, name, on_chunk=find_tools, on_statement=on_statement)
         except KeyboardInterrupt:  # Ctrl-C while the job is read through before its first move
             raise Interrupted("interrupted (Ctrl-C) while checking the job, before its first move",
                               Location(name or os.fspath(job))) from None
+        return CheckedJob(checked, frozenset(tools))
+
+    def execute_file(self, job: Path, name: str | None = None, checked: CheckedJob | None = None) -> RunResult:
+        """Check the job (unless ``checked``, its check of the file as it is now, is given), then run it as
+        it streams in; ``name`` is what messages call it (default its path)."""
+        self._jobs.append(job)
+        if checked is None:
+            checked = self.check_job(job, name)
         if name is not None:
             self._files[name] = job
-        self.job_lines = checked.lines
-        self.interpreter.job_tools = lambda: sorted(tools)
+        self.job_lines = checked.file.lines
+        tools = tuple(sorted(checked.tools))
+        self.interpreter.job_tools = lambda: tools
         macros = self.load_macros()
 
         def statements() -> Iterable[n.Stmt]:
-            self._reader = read_statements(job, mode="run", non_plain=checked.non_plain, name=name)
+            self._reader = read_statements(job, mode="run", non_plain=checked.file.non_plain, name=name)
             return self._reader
-        return self._execute(statements, checked.subs, macros)
+        return self._execute(statements, checked.file.subs, macros)
 
     def execute_text(self, text: str, path: str = "<string>") -> RunResult:
         self._texts[path] = text

@@ -13,7 +13,7 @@ from typing import Any, BinaryIO
 
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.host import DialogAnswer
-from edingcnc_lang.debug.breakpoints import sub_of
+from edingcnc_lang.debug.breakpoints import JobCheck, job_facts, sub_of
 from edingcnc_lang.debug.expressions import (
     ExpressionError,
     dialog_answer,
@@ -120,7 +120,7 @@ class Adapter:
             launch = launch_of(args)
         except LaunchError as err:
             raise RequestError(str(err)) from None
-        self.subs = known_subs(launch)
+        self.subs, check = known_subs(launch)
         if launch.probe_surface is not None:
             from edingcnc_lang.config.heightmap import read_surface
 
@@ -128,7 +128,7 @@ class Adapter:
                 read_surface(launch.probe_surface)
             except EcncError as err:
                 raise RequestError(err.format()) from None
-        self.session = Session(self.channel, launch)
+        self.session = Session(self.channel, launch, check)
 
     def on_setBreakpoints(self, args: dict[str, Any]) -> dict[str, Any]:
         path = (args.get("source") or {}).get("path")
@@ -246,7 +246,7 @@ class Adapter:
                     return "answered: " + _shown(answer)
             elif session.waiting == "probe":
                 assert session.run is not None
-                trip = probe_answer(text, tuple(session.run.interpreter.pos))  # type: ignore[arg-type]
+                trip = probe_answer(text, tuple(session.run.interpreter.pos))
                 if trip is not None:
                     session.answer(trip)
                     return "answered: " + text
@@ -289,11 +289,11 @@ def _shown(answer: DialogAnswer) -> str:
     return ("ok" if answer.ok else "cancel") + (f" {values}" if values else "")
 
 
-def known_subs(launch: Launch) -> dict[str, tuple[str, int]]:
+def known_subs(launch: Launch) -> tuple[dict[str, tuple[str, int]], JobCheck | None]:
     """Every sub the run can call, by lower-case name, with its file and the line of its ``Sub``;
-    a job or macro file that does not load is the launch's error."""
+    a job or macro file that does not load is the launch's error.  The job is read by the run's own
+    check (``job_facts``), which the run then uses: with the check, when it passed."""
     from edingcnc_lang.runner import Run, RunOptions
-    from edingcnc_lang.debug.breakpoints import facts
 
     try:
         run = Run(RunOptions(ini=launch.ini, macro=launch.macro, user_macro=launch.user_macro, plan=False))
@@ -301,12 +301,12 @@ def known_subs(launch: Launch) -> dict[str, tuple[str, int]]:
         for path, program in run.load_macros():
             for name, sub in program.subs.items():
                 found.setdefault(name.lower(), (str(path), sub.span.line))
-        job = facts(str(launch.program))
+        job, check = job_facts(run, launch.program)
         if job.error is not None:
             raise job.error
         for name, line in job.subs:
             found[name] = (str(launch.program), line)
-        return found
+        return found, check
     except EcncError as err:
         raise RequestError(err.format()) from None
 

@@ -12,17 +12,23 @@ import os
 import re
 import stat
 from bisect import bisect_left
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from functools import lru_cache
 from operator import itemgetter
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.errors import EcncError
+from edingcnc_lang.records import record
 from edingcnc_lang.machine.evaluator import Evaluator
 from edingcnc_lang.syntax.parser import read_statements
 from edingcnc_lang.debug.expressions import ExpressionError, evaluate, interpolate, parse_expression
+
+if TYPE_CHECKING:
+    from edingcnc_lang.run_records import CheckedJob
+    from edingcnc_lang.runner import Run
 
 HIT = re.compile(r"\s*(==|>=|>|%)?\s*([0-9]{1,9})\s*$")  # a count past 999,999,999 is never reached
 
@@ -54,7 +60,7 @@ class Breakpoint:
         return body
 
 
-@dataclass
+@record(frozen=True)
 class Decision:
     """What reaching a breakpoint means: stop, print a log line, or neither."""
 
@@ -78,21 +84,21 @@ class Breakpoints:
     def set_source(self, path: str, specs: Iterable[dict[str, object]]) -> list[Breakpoint]:
         """Replace the breakpoints of one file with ``specs`` (DAP SourceBreakpoint objects)."""
         key = file_key(path)
-        lines = executable_lines(key)
+        known = file_facts(key)
         placed: dict[int, Breakpoint] = {}
         answer = []
         for spec in specs:
             bp = self._make(spec)
             wanted = int(spec.get("line", 0))  # type: ignore[call-overload]
-            if isinstance(lines, str):
-                bp.line, bp.verified, bp.message = wanted, False, lines
+            if isinstance(known, str):
+                bp.line, bp.verified, bp.message = wanted, False, known
             else:
-                at = bisect_left(lines, wanted)
-                if at == len(lines):
+                line = known.first_at(wanted)
+                if line is None:
                     bp.line, bp.verified = wanted, False
                     bp.message = f"no statement on or after line {wanted} is ever executed"
                 else:
-                    bp.line = lines[at]
+                    bp.line = line
             if bp.verified and bp.line in placed:
                 bp.verified, bp.message = False, f"line {bp.line} already has a breakpoint"
             if bp.verified:
@@ -184,18 +190,45 @@ def sub_of(name: str) -> str:
     return word.lower()
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Facts:
-    """What the debugger needs to know of a file: the lines statements start on, its subs, and the
-    syntax error that keeps it from running (None if it parses)."""
+    """What the debugger needs to know of a file: the lines statements start on (``first_at``), its
+    subs, and the syntax error that keeps it from running (None if it parses).
 
-    lines: tuple[int, ...]
+    A statement starts on every line but the ``others`` (a job's few lines that are not plain: the
+    check lists them), and on those of them in ``starts``: so a 200,000-line job's lines are not
+    listed one by one."""
+
+    count: int  # the file's lines
+    others: Sequence[int]  # ascending
+    starts: tuple[int, ...]  # ascending
     subs: tuple[tuple[str, int], ...]  # (lower-case name, line of its Sub)
     error: EcncError | None = None
 
+    def first_at(self, wanted: int) -> int | None:
+        """The first line on or after ``wanted`` that a statement starts on (None: there is none)."""
+        line = max(wanted, 1)
+        starts = self.starts
+        at = bisect_left(starts, line)
+        found = [starts[at]] if at < len(starts) else []
+        others = self.others
+        at = bisect_left(others, line)
+        if at < len(others) and others[at] == line:  # past the run of others it starts: others[k] - k
+            low, high = at, len(others)  # is the same along a run and grows after it
+            while high - low > 1:
+                middle = (low + high) // 2
+                low, high = (middle, high) if others[middle] - middle == line - at else (low, middle)
+            line = others[low] + 1
+        if line <= self.count:
+            found.append(line)
+        return min(found, default=None)
 
-@lru_cache(maxsize=32)
-def _facts(key: str, stamp: float) -> Facts:
+
+Stamp = tuple[int, int]  # a file's version: its modification time (ns) and size
+_known: dict[str, tuple[Stamp, Facts]] = {}  # file_key -> the Facts of that version (the last 32 files)
+
+
+def _read(key: str) -> Facts:
     """One read of the file: the run's reader (plain lines listed, not parsed), or for a macro file
     with lines that do not parse, the tolerant reader (those lines wait as BadLine)."""
     error = None
@@ -209,26 +242,85 @@ def _facts(key: str, stamp: float) -> Facts:
         statements = list(reader)
         reader.raise_errors()
     subs = tuple((stmt.name.lower(), stmt.span.line) for stmt in statements if isinstance(stmt, n.Sub))
-    return Facts(tuple(sorted(set(_starts(statements, [])))), subs, error)
+    return Facts(reader.lines, range(1, reader.lines + 1), tuple(sorted(set(_starts(statements, [])))), subs, error)
 
 
-def facts(path: str) -> Facts:
-    """The file's Facts, read once per version of it (the launch and the breakpoints share them);
-    raises the EcncError of a file that cannot be read or whose blocks do not close."""
-    key = file_key(path)
+def _stamp(path: str, key: str) -> Stamp:
+    """The version of the file; raises the EcncError of a file that cannot be read."""
     try:
         info = os.stat(key)
     except OSError as err:
         raise EcncError(f"cannot read {path}: {err.strerror}") from None
     if not stat.S_ISREG(info.st_mode):  # a FIFO would block the adapter, a device never end
         raise EcncError(f"cannot read {path}: not a regular file")
-    return _facts(key, info.st_mtime)
+    return info.st_mtime_ns, info.st_size
 
 
-def executable_lines(key: str) -> tuple[int, ...] | str:
-    """The lines of a file a statement starts on, or why they are unknown."""
+def _remember(key: str, stamp: Stamp, found: Facts) -> Facts:
+    _known.pop(key, None)
+    if len(_known) >= 32:
+        del _known[next(iter(_known))]
+    _known[key] = (stamp, found)
+    return found
+
+
+def facts(path: str) -> Facts:
+    """The file's Facts, read once per version of it (the launch and the breakpoints share them);
+    raises the EcncError of a file that cannot be read or whose blocks do not close."""
+    key = file_key(path)
+    stamp = _stamp(path, key)
+    known = _known.get(key)
+    if known is not None and known[0] == stamp:
+        return known[1]
+    return _remember(key, stamp, _read(key))
+
+
+@record(frozen=True)
+class JobCheck:
+    """The launch's check of the job (``Run.check_job``), which the run takes instead of checking the
+    job again while the file is the version that was checked."""
+
+    checked: CheckedJob
+    path: str
+    stamp: Stamp
+
+    def current(self) -> CheckedJob | None:
+        """The check, if the file is still the version checked (else the run checks it again)."""
+        try:
+            return self.checked if _stamp(self.path, file_key(self.path)) == self.stamp else None
+        except EcncError:
+            return None
+
+
+def job_facts(run: Run, job: Path) -> tuple[Facts, JobCheck | None]:
+    """The job's Facts, taken from the check pass its run needs anyway (a job is read once for both:
+    the lines a statement starts on are the plain lines, which the check lists, and those of the
+    statements it parses); with the check, for the run.  A job whose check fails is read as ``facts``
+    reads a file (its error, if it has one, is the launch's), and the run checks it again."""
+    path = str(job)
+    key = file_key(path)
+    stamp = _stamp(path, key)
+    starts: list[int] = []
+    subs: list[tuple[str, int]] = []
+
+    def seen(stmt: n.Stmt) -> None:
+        if isinstance(stmt, n.Sub):
+            subs.append((stmt.name.lower(), stmt.span.line))
+        _starts((stmt,), starts)
+
     try:
-        return facts(key).lines
+        checked = run.check_job(job, on_statement=seen)
+    except EcncError:
+        return facts(path), None
+    file = checked.file
+    found = Facts(file.lines, file.non_plain, tuple(sorted(set(starts))), tuple(subs))
+    return _remember(key, stamp, found), JobCheck(checked, path, stamp)
+
+
+def file_facts(key: str) -> Facts | str:
+    """The file's Facts, or why they are unknown."""
+    try:
+        return facts(key)
     except EcncError as err:
         return err.message
 

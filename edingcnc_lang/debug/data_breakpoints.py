@@ -18,7 +18,6 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.machine.state import format_value
 from edingcnc_lang.machine.tables import FIRST_PARAM, LAST_PARAM
 from edingcnc_lang.debug.launch import Launch
-from edingcnc_lang.varmap.names import label
 
 FIRST_ID = 1_000_000  # data breakpoint ids, apart from the line and function breakpoints' (counted from 1)
 _NUMBER = re.compile(r"^\s*#\s*(\d+)\b")
@@ -57,6 +56,8 @@ class DataBreakpoints:
 
     def info(self, text: str, names: Mapping[int, str]) -> dict[str, Any]:
         """The ``dataBreakpointInfo`` body for a variable or expression."""
+        from edingcnc_lang.varmap.names import label  # (loaded when first needed, not at start-up)
+
         index = number_of(text, names)
         if index is None:
             return {"dataId": None, "description": f"{text.strip()!r} is not a parameter (#1..#5999)"}
@@ -88,6 +89,8 @@ class DataBreakpoints:
 
     def stopped_at(self, index: int, value: float, where: tuple[str, int], names: Mapping[int, str]) -> dict[str, Any]:
         """The ``stopped`` event's details for a hit: the breakpoint, and what was written where."""
+        from edingcnc_lang.varmap.names import label
+
         text = f"{label(index, names)} = {format_value(value)} (written at {os.path.basename(where[0])}:{where[1]})"
         return {"hitBreakpointIds": [self.watched[index]], "description": text, "text": text}
 

@@ -129,4 +129,4 @@ def probe_answer(text: str, target: Pose) -> tuple[bool, Pose | None] | None:
             raise ExpressionError(f"trip {word!r}: {number!r} is not a number") from None
         if not math.isfinite(point[AXES.index(letter)]):
             raise ExpressionError(f"trip {word!r}: not a finite number")
-    return True, tuple(point)  # type: ignore[return-value]
+    return True, tuple(point)

@@ -14,10 +14,12 @@ from __future__ import annotations
 from collections import deque
 from dataclasses import dataclass, field
 
+from edingcnc_lang.records import record
+
 MAX_INPUTS = 10_000
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Input:
     """One thing the run was told: a dialog answer, a probe result, or a variable set by the user."""
 

@@ -21,7 +21,7 @@ from edingcnc_lang.host import DialogAnswer, Host, ProbeCallback
 from edingcnc_lang.machine.observe import MachineView, Observer
 from edingcnc_lang.machine.state import CallFrame
 from edingcnc_lang.runner import Run, RunOptions
-from edingcnc_lang.debug.breakpoints import Breakpoints, reached
+from edingcnc_lang.debug.breakpoints import Breakpoints, JobCheck, reached
 from edingcnc_lang.debug.data_breakpoints import DataBreakpoints, launch_names
 from edingcnc_lang.debug.expressions import evaluate
 from edingcnc_lang.debug.history import History, Input, Replay, Rewind
@@ -45,9 +45,10 @@ class _SearchDone(BaseException):
 class Session(Observer):
     """One debugged run (and the re-runs that step back in it)."""
 
-    def __init__(self, channel: Channel, launch: Launch) -> None:
+    def __init__(self, channel: Channel, launch: Launch, check: JobCheck | None = None) -> None:
         self.channel = channel
         self.launch = launch
+        self.check = check  # the launch's check of the job: the run (and each re-run) reads the job once
         self.breakpoints = Breakpoints()
         self.stop_on_errors = True
         self.history = History()
@@ -212,7 +213,7 @@ class Session(Observer):
         self._trail, self._before, self._chunk, self._open_bulk = [], None, None, None
         self.error = None
         self._error_frames = None
-        result = run.execute_file(launch.program)
+        result = run.execute_file(launch.program, checked=self.check.current() if self.check else None)
         if self._phase == LIVE:
             self.channel.output(f"the job ended ({result.ended_by}) after {result.moves:,} moves")
 

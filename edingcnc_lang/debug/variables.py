@@ -9,14 +9,12 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import AXES
 from edingcnc_lang.machine.state import format_value
-from edingcnc_lang.knowledge import variable
-from edingcnc_lang.varmap.names import label
+from edingcnc_lang.records import record
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.observe import MachineView
@@ -65,6 +63,9 @@ def variables(run: Run, ref: int, writers: Writers, names: Mapping[int, str] | N
 
 def parameter(run: Run, index: int, writers: Writers, names: Mapping[int, str] | None = None) -> dict[str, Any]:
     """``#index`` as a DAP Variable: its value, its meaning and where it was last written."""
+    from edingcnc_lang.knowledge import variable  # (loaded at the first stop, not at start-up)
+    from edingcnc_lang.varmap.names import label
+
     entry = variable(index)
     what = [entry.title] if entry is not None else []
     if index in writers:
@@ -118,7 +119,7 @@ def _pose(values: list[float] | tuple[float, ...]) -> str:
     return " ".join(f"{a}{format_value(v)}" for a, v in zip(AXES, values))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Frame:
     """One frame of the stack shown at a stop: a sub (or the job) and where it is."""
 

@@ -411,14 +411,18 @@ class CheckedFile:
 
 
 def check_file(path: str | os.PathLike[str], name: str | None = None,
-               on_chunk: Callable[[list[str]], None] | None = None) -> CheckedFile:
+               on_chunk: Callable[[list[str]], None] | None = None,
+               on_statement: Callable[[n.Stmt], None] | None = None) -> CheckedFile:
     """Read a whole file without keeping its plain lines: raise SyntaxErrors if anything is wrong.
 
-    ``on_chunk`` sees the lines as they are read (see StatementReader), so nothing else need read them.
+    ``on_chunk`` sees the lines as they are read (see StatementReader), so nothing else need read them;
+    ``on_statement`` sees each top-level statement that is not a plain line (the debugger's breakpoint lines).
     """
     reader = read_statements(path, mode="check", name=name, on_chunk=on_chunk)
     subs: dict[str, n.Sub] = {}
     for stmt in reader:
+        if on_statement is not None:
+            on_statement(stmt)
         if isinstance(stmt, n.Sub):
             subs.setdefault(stmt.name.lower(), stmt)
     reader.raise_errors()
