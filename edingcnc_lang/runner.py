@@ -323,7 +323,7 @@ class Run:
         error: EcncError | None = None
         try:
             self.start(macros)
-            if "start" in interp.subs:
+            if "start" in interp.flow.subs:
                 interp.call_sub("start")
             interp.run(statements())
         except EcncError as err:
@@ -402,7 +402,7 @@ class Run:
             tool=int(interp.params.read(t.TOOL_CURRENT)),
             moves=self.motion.moves,
             modal=[t.code_name("G", c) for c in sorted(set(modal_codes))],
-            ended_by=interp.ended_by,
+            ended_by=interp.flow.ended_by,
             error=error.format() if error else None,
             error_record=error.to_json() if error else None,
             warnings=list(self.warnings),

@@ -6,7 +6,7 @@ the job from its start, with every output suppressed, to the statement wanted (t
 deterministic), and the inputs that made it the run it was are replayed: dialog and probe
 answers and the variables the user set, each at the statement (step number) it happened on.
 Memory holds these inputs only, at most ``MAX_INPUTS``; a session past that cannot step back.
-Statements are numbered by the machine's step counter (``MachineState.steps``), which counts a
+Statements are numbered by the machine's step counter (``MachineState.budget.steps``), which counts a
 plain line the same on the bulk path as line by line.
 """
 from __future__ import annotations

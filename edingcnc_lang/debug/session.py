@@ -19,7 +19,7 @@ from edingcnc_lang.canon import Pose
 from edingcnc_lang.errors import EXIT_OK, EcncError
 from edingcnc_lang.host import DialogAnswer, Host, ProbeCallback
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.state import CallFrame
+from edingcnc_lang.machine.parts import CallFrame
 from edingcnc_lang.runner import Run, RunOptions
 from edingcnc_lang.debug.breakpoints import Breakpoints, JobCheck, reached
 from edingcnc_lang.debug.data_breakpoints import DataBreakpoints, launch_names
@@ -274,7 +274,7 @@ class Session(Observer):
             return Rewind(command, self.last_step, 0, exact=True, chunk=self._last_chunk)
         if command in BACK_COMMANDS:  # it failed in a plain line the bulk path ran: find that line
             self._error_at = (where.path, where.line) if where is not None else None
-            return Rewind("error" if command == "stepBack" else command, self.run.interpreter.steps + 1,
+            return Rewind("error" if command == "stepBack" else command, self.run.interpreter.budget.steps + 1,
                           len(self.frames) - 1)
         return None
 

@@ -171,8 +171,8 @@ class BulkPath(MachineState):
         which joins the same batch, and the straight lines after it are scanned on.
         """
         start = tuple(self.pos)
-        budget = self.max_steps
-        room = len(lines) if budget is None else budget - self.steps  # statements left in the step budget
+        left = self.budget.room()
+        room = len(lines) if left is None else left  # statements left in the step budget
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
         motion, feed, pos = self.modal["motion"], self.feed, start
         kinds: list[str] = []
@@ -219,7 +219,7 @@ class BulkPath(MachineState):
             arcs.extend(run_arcs)
             pos = ends[-1]
             room -= len(run_numbers)
-        self.steps += index - first
+        self.budget.steps += index - first
         if numbers:
             rpm, _css = self.spindle_along()
             self.path, self.line = path, numbers[-1]

@@ -144,7 +144,8 @@ class CannedCycles(MachineState):
         scale = self.scale
         hole = list(work)
         cost = repeats * (1 + len(steps))
-        if self.max_steps is not None and cost > self.max_steps - self.steps:
+        room = self.budget.room()
+        if room is not None and cost > room:
             self.spend(cost, span)  # L1000000000: the budget error now, not after minutes of drilling
         for _ in range(repeats):
             self.spend(1 + len(steps), span)
@@ -216,8 +217,9 @@ class CannedCycles(MachineState):
             return None  # the next hole would start from another level (G91 G99: each hole R deeper)
         per_line = 2 + len(steps)  # the statement, the hole and its steps
         stop = len(lines)
-        if self.max_steps is not None:
-            stop = min(stop, first + max(0, (self.max_steps - self.steps) // per_line))
+        room = self.budget.room()
+        if room is not None:
+            stop = min(stop, first + max(0, room // per_line))
         kinds = ["rapid", *(["rapid"] if old != r_level else []),
                  *["rapid" if step.kind == "rapid" else "linear" for step in steps]]
         feeds = [0.0, *([0.0] if old != r_level else []), *[feed if step.kind == "feed" else 0.0 for step in steps]]
@@ -232,7 +234,7 @@ class CannedCycles(MachineState):
             pending.lines += numbers
             pending.ends += ends
             pending.feeds += feeds * count
-            self.steps += count * per_line
+            self.budget.steps += count * per_line
             self.path, self.line = path, numbers[-1]
             self.pos = list(ends[-1])
         return index

@@ -6,7 +6,8 @@ from collections.abc import Iterable
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.diagnostics import Diagnostic, SyntaxErrors
 from edingcnc_lang.errors import EcncError, Frame
-from edingcnc_lang.machine.state import CallFrame, MAX_CALL_DEPTH, MachineState, ProgramEnd, StatementTable
+from edingcnc_lang.machine.parts import CallFrame
+from edingcnc_lang.machine.state import MAX_CALL_DEPTH, MachineState, ProgramEnd, StatementTable
 
 
 class ControlFlow(MachineState):
@@ -15,7 +16,7 @@ class ControlFlow(MachineState):
     def define_subs(self, subs: Iterable[n.Sub]) -> None:
         """Register subs (the first definition of a name wins, like a lookup in file order)."""
         for sub in subs:
-            self.subs.setdefault(sub.name.lower(), sub)
+            self.flow.subs.setdefault(sub.name.lower(), sub)
 
     def run(self, statements: Iterable[n.Stmt]) -> bool:
         """Execute top-level statements; Sub definitions are skipped. False if M2/M30 ended the run."""
@@ -35,13 +36,13 @@ class ControlFlow(MachineState):
 
     def call_sub(self, name: str, span: n.Span | None = None) -> None:
         """GoSub: run a sub by (case-insensitive) name."""
-        sub = self.subs.get(name.lower())
+        sub = self.flow.subs.get(name.lower())
         if sub is None:
             raise self.fail(f"GoSub {name}: no Sub {name} is defined in the job or the macro files", span)
-        if len(self.stack) >= MAX_CALL_DEPTH:
+        if len(self.flow.stack) >= MAX_CALL_DEPTH:
             raise self.fail(f"GoSub {name}: calls nested deeper than {MAX_CALL_DEPTH} (endless recursion?)", span)
         frame = CallFrame(sub.name.lower(), self.path, self.line)
-        self.stack.append(frame)
+        self.flow.stack.append(frame)
         observer = self.observer
         try:
             if observer is not None:
@@ -54,7 +55,7 @@ class ControlFlow(MachineState):
         finally:
             if observer is not None:
                 observer.ret(self.view, frame)
-            self.stack.pop()
+            self.flow.stack.pop()
 
     def execute_body(self, body: tuple[n.Stmt, ...]) -> None:
         for stmt in body:
@@ -63,8 +64,9 @@ class ControlFlow(MachineState):
     def execute(self, stmt: n.Stmt) -> None:
         span = stmt.span
         self.path, self.line = span.path, span.line
-        self.steps += 1
-        if self.max_steps is not None and self.steps > self.max_steps:
+        budget = self.budget
+        budget.steps += 1
+        if budget.limit is not None and budget.steps > budget.limit:
             self.spend(0, span)  # reports the exhausted budget
         if self.observer is not None:
             self.observer.statement(self.view, stmt)

@@ -89,9 +89,9 @@ class LineWords(MachineState):
         error: there is nothing to run instead, and running nothing would hide the mistake.
         """
         name = t.m_sub_name(key)
-        if name is None or name not in self.subs:
+        if name is None or name not in self.flow.subs:
             return None
-        if all(frame.name != name for frame in self.stack):
+        if all(frame.name != name for frame in self.flow.stack):
             return name
         if key not in t.M_GROUPS:
             raise self.fail(f"M{key // 10} inside Sub {name}, which is already running: M{key // 10} has no "

@@ -24,7 +24,8 @@ from edingcnc_lang.syntax import nodes as n
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.evaluator import Evaluator
-    from edingcnc_lang.machine.state import CallFrame, MachineState
+    from edingcnc_lang.machine.parts import CallFrame
+    from edingcnc_lang.machine.state import MachineState
 
 
 class MachineView:
@@ -48,12 +49,12 @@ class MachineView:
     @property
     def steps(self) -> int:
         """Statements, loop turns and holes executed so far (the step budget's count)."""
-        return self._machine.steps
+        return self._machine.budget.steps
 
     @property
     def stack(self) -> Sequence[CallFrame]:
         """The sub calls in progress, outermost first (each frame is where its call was made)."""
-        return self._machine.stack
+        return self._machine.flow.stack
 
     @property
     def position(self) -> tuple[float, ...]:

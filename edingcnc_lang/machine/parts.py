@@ -220,3 +220,42 @@ class MotionGuards:
     tca_guard: bool = False          # TCAGuard on: moves into the tool-change area are refused
     tanknife: bool = False           # tanknife on: C follows the XY direction of the cut
     kinematics_active: bool = False  # KIN ON or a mapping: the kinematics maps Cartesian moves to the joints
+
+
+@dataclass
+class CallFrame:
+    """A sub being run, kept so that errors can show the GoSub chain that led to them."""
+
+    name: str  # lower-case sub name
+    path: str
+    line: int
+
+
+@dataclass(slots=True)
+class FlowState:
+    """The statements' flow (``flow.py``): the subs a job and its macro files define, the subs being
+    run (the GoSub chain an error shows, the debugger's call stack) and what ended the run (M2/M30)."""
+
+    subs: dict[str, n.Sub] = field(default_factory=dict)  # by lower-case name
+    stack: list[CallFrame] = field(default_factory=list)
+    ended_by: str = "end of file"
+
+
+@dataclass(slots=True)
+class StepBudget:
+    """The work a run may do (``MachineState.spend``; statements in ``flow.py``, a run of lines in
+    ``bulk.py``, holes in ``canned.py``): steps counted against ``limit`` (``--max-steps``)."""
+
+    limit: int | None = None
+    steps: int = 0
+    cancelled: bool = False  # Run.cancel(): the next step check stops the run
+
+    def cancel(self) -> None:
+        """Stop at the next step check (safe from another thread): the budget runs out at once, so
+        the hot path checks nothing new."""
+        self.cancelled = True
+        self.limit = -1
+
+    def room(self) -> int | None:
+        """Steps left before the budget runs out (None: no limit)."""
+        return None if self.limit is None else self.limit - self.steps

@@ -26,8 +26,9 @@ from edingcnc_lang.host import Host
 from edingcnc_lang.machine.parameters import Parameters
 from edingcnc_lang.machine.spindle import SpindleError, clamp_rpm, mean_rpm_points
 from edingcnc_lang.machine.observe import MachineView, Observer
-from edingcnc_lang.machine.parts import (CycleState, DeviceState, JobFiles, MessageLog, MotionGuards, OffsetState,
-                                         RotationState, ScalingState, SpindleState, ZhcState)
+from edingcnc_lang.machine.parts import (CallFrame, CycleState, DeviceState, FlowState, JobFiles, MessageLog,
+                                         MotionGuards, OffsetState, RotationState, ScalingState, SpindleState,
+                                         StepBudget, ZhcState)
 
 if TYPE_CHECKING:
     from edingcnc_lang.machine.geometry import ArcPlan
@@ -113,15 +114,6 @@ class ProgramEnd(Exception):
     """M2/M30 (or the end of the file): stops execution wherever it is."""
 
 
-@dataclass
-class CallFrame:
-    """A sub being run, kept so that errors can show the GoSub chain that led to them."""
-
-    name: str  # lower-case sub name
-    path: str
-    line: int
-
-
 def format_value(value: float) -> str:
     """How numbers appear in messages: integers plainly, others with up to 4 decimals; an infinite
     or NaN value (only an embedding program can make one) as ``inf``, ``-inf`` or ``nan``."""
@@ -190,14 +182,11 @@ class MachineState:
         self.view = MachineView(self)  # what the observer is shown
         self.config = config or MachineConfig.default()
         self.host = host or Host()
-        self.max_steps = max_steps
-        self.cancelled = False  # Run.cancel(): the next step check stops the run
+        self.budget = StepBudget(max_steps)
         self.files = JobFiles(log_dir)  # the files a job names: where they go, which it may not touch
         self.allow_exec = allow_exec
         self.block_delete = block_delete
-        self.steps = 0
-        self.subs: dict[str, n.Sub] = {}
-        self.stack: list[CallFrame] = []
+        self.flow = FlowState()
         self.params = Parameters(self._live_param, self._offsets_changed)
         self.evaluator = Evaluator(self.params)
         self.modal: dict[str, int] = dict(DEFAULT_MODAL)
@@ -219,7 +208,6 @@ class MachineState:
         # The tool numbers the loaded job uses (GetToolInfo), asked for only when a macro wants them;
         # the runner sets it, an MDI session has no loaded job.
         self.job_tools: Callable[[], Sequence[int]] = tuple
-        self.ended_by = "end of file"
         # told of each warning a line earns (a limit of the machine changed what it asked for); the
         # runner reports them as it reports load warnings; once per file and line
         self.on_warning: Callable[[Diagnostic], None] | None = None
@@ -291,18 +279,17 @@ class MachineState:
                             "turn it off with G40 first", span)
 
     def cancel(self) -> None:
-        """Stop the run at its next statement, loop turn or hole (``Run.cancel``; safe from another
-        thread): the step budget runs out at once, so the hot path checks nothing new."""
-        self.cancelled = True
-        self.max_steps = -1
+        """Stop the run at its next statement, loop turn or hole (``Run.cancel``; safe from another thread)."""
+        self.budget.cancel()
 
     def spend(self, steps: int, span: n.Span | None = None) -> None:
         """Count work against the step budget (statements, loop turns, canned-cycle holes and pecks)."""
-        self.steps += steps
-        if self.max_steps is not None and self.steps > self.max_steps:
-            if self.cancelled:
+        budget = self.budget
+        budget.steps += steps
+        if budget.limit is not None and budget.steps > budget.limit:
+            if budget.cancelled:
                 raise Cancelled("cancelled by the embedding program", self.where(span))
-            raise self.fail(f"step budget of {self.max_steps:,} steps exhausted (an endless loop?): statements, "
+            raise self.fail(f"step budget of {budget.limit:,} steps exhausted (an endless loop?): statements, "
                             "loop turns and drilled holes count; raise it with --max-steps N "
                             "(RunOptions.max_steps in Python)", span)
 
@@ -392,7 +379,7 @@ class MachineState:
 
     def caller(self) -> int:
         """``Move.caller`` of a move made now: the line of the outermost sub call, 0 at the top level."""
-        return self.stack[0].line if self.stack else 0
+        return self.flow.stack[0].line if self.flow.stack else 0
 
     def mean_rpm(self, xs: list[float], span: n.Span | None) -> float:
         """The spindle speed that gives a per-revolution move through machine X ``xs`` its true time."""

@@ -160,7 +160,7 @@ class LineSteps(MachineState):
         self._stop(code, span)
 
     def _tool_change(self, span: n.Span) -> None:
-        if t.TOOL_CHANGE_SUB in self.subs and all(f.name != t.TOOL_CHANGE_SUB for f in self.stack):
+        if t.TOOL_CHANGE_SUB in self.flow.subs and all(f.name != t.TOOL_CHANGE_SUB for f in self.flow.stack):
             self.params.set(t.TOOL_NEW, float(self.offsets.selected_tool))
             self.params.set(t.TOOL_CHANGED, 0.0)
             self.call_sub(t.TOOL_CHANGE_SUB, span)
@@ -279,7 +279,7 @@ class LineSteps(MachineState):
             self.params.set(t.SPINDLE_ON, 0.0)
         self.scaling_off()
         devices.heaters_off(self)
-        self.ended_by = f"M{code // 10}"
+        self.flow.ended_by = f"M{code // 10}"
         self.canon.event(EndEvent(self.path, self.line, code // 10))
         raise ProgramEnd()
 

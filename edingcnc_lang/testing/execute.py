@@ -114,7 +114,7 @@ def _final_state(outcome: Outcome, run: Run) -> None:
     outcome.position = dict(zip(AXIS_KEYS, interp.reported_position()))
     outcome.machine = dict(zip(AXIS_KEYS, run.machine_position()))
     outcome.messages = [(e.kind, e.text) for e in interp.messages.events]
-    outcome.ended_by = interp.ended_by
+    outcome.ended_by = interp.flow.ended_by
 
 
 def _counted(dialog: DialogCallback, outcome: Outcome) -> DialogCallback:
