@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from edingcnc_lang.runner import RunOptions
-from edingcnc_lang.sim.frames import FRAMES
+from edingcnc_lang.sim.frames import Frames
 from edingcnc_lang.sim.lathe import simulate_bar
 from edingcnc_lang.sim.round_stock import RoundStock
 from edingcnc_lang.sim.tools import Tool
@@ -38,21 +38,13 @@ def coarse_profile(stock: RoundStock, size: int = SLICES) -> tuple[np.ndarray, f
 def bar_frames(job: Path, stock: RoundStock, options: RunOptions, moves: int, tools: dict[int, Tool] | None,
                first_tool: int | None, name: str | None, chuck: float | None) -> dict[str, Any]:
     """Turn the bar with ``job`` and return the page's ``bar-data`` (work coordinates, X a radius)."""
-    every = max(1, math.ceil(max(moves, 1) / FRAMES))
-    profiles: list[np.ndarray] = []
-    at: list[int] = []
-
-    def snapshot(index: int, cut: RoundStock) -> None:
-        profiles.append(coarse_profile(cut)[0])
-        at.append(index)
-
-    result = simulate_bar(job, stock, options, tools, first_tool, name, chuck, every=every, on_snapshot=snapshot)
-    profiles.append(coarse_profile(stock)[0])
-    at.append(result.moves)
-    stacked = np.clip(np.stack(profiles) / stock.radius, 0.0, 1.0)
+    frames: Frames[RoundStock] = Frames(moves, lambda cut: coarse_profile(cut)[0])
+    result = simulate_bar(job, stock, options, tools, first_tool, name, chuck, every=frames.every,
+                          on_snapshot=frames.snapshot)
+    stacked = np.clip(frames.close(stock, result.moves) / stock.radius, 0.0, 1.0)
     scale = 2.0 if result.diameter_mode else 1.0
     return {"z0": stock.start, "slice": coarse_profile(stock)[1], "n": stacked.shape[2], "radius": stock.radius,
-            "chuck": chuck, "moves": at,
+            "chuck": chuck, "moves": frames.at,
             "radii": base64.b64encode(np.round(stacked * 65535).astype("<u2").tobytes()).decode(),
             "findings": [{"move": f.move, "line": f.line, "kind": f.kind, "z": round(f.position[2], 4),
                           "x": round(f.position[0] / scale, 4)} for f in result.findings]}

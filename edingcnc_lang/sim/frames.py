@@ -10,8 +10,9 @@ from __future__ import annotations
 import base64
 import json
 import math
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, Generic, TypeVar
 
 import numpy as np
 
@@ -27,6 +28,30 @@ FRAMES = 48    # frames in a page at most (about 400 kB of base64 at 64 x 64)
 MARKER = '<script type="application/json" id="job-data">'
 
 
+Cut = TypeVar("Cut")
+
+
+class Frames(Generic[Cut]):
+    """The frames a page plays, for every stock: the simulation's snapshot hook (``on_snapshot``,
+    called every ``every``-th move of ``moves``, at most ``FRAMES`` times) keeps ``reduce`` of the
+    stock as cut so far and the move it was taken before; ``close`` adds the stock at the end."""
+
+    def __init__(self, moves: int, reduce: Callable[[Cut], np.ndarray]) -> None:
+        self.every = max(1, math.ceil(max(moves, 1) / FRAMES))
+        self.reduce = reduce
+        self.frames: list[np.ndarray] = []
+        self.at: list[int] = []
+
+    def snapshot(self, index: int, cut: Cut) -> None:
+        self.frames.append(self.reduce(cut))
+        self.at.append(index)
+
+    def close(self, cut: Cut, moves: int) -> np.ndarray:
+        """The last frame (the stock after all ``moves``) added; all of them stacked."""
+        self.snapshot(moves, cut)
+        return np.stack(self.frames)
+
+
 def coarse(stock: Stock, size: int = SIZE) -> tuple[np.ndarray, float]:
     """The field averaged over square blocks so that neither side has more than ``size`` blocks;
     returns the heights and the block's side in mm."""
@@ -40,23 +65,15 @@ def coarse(stock: Stock, size: int = SIZE) -> tuple[np.ndarray, float]:
 def stock_frames(job: Path, stock: Stock, options: RunOptions, moves: int, tools: dict[int, Tool] | None,
                  first_tool: int | None, name: str | None) -> dict[str, Any]:
     """Simulate ``job`` and return the page's ``stock-data``: frames in machine coordinates."""
-    every = max(1, math.ceil(max(moves, 1) / FRAMES))
-    heights: list[np.ndarray] = []
-    at: list[int] = []
-
-    def snapshot(index: int, cut: Stock) -> None:
-        heights.append(coarse(cut)[0])
-        at.append(index)
-
-    result = simulate(job, stock, options, tools, first_tool, name, every=every, on_snapshot=snapshot)
-    heights.append(coarse(stock)[0])
-    at.append(result.moves)
+    frames: Frames[Stock] = Frames(moves, lambda cut: coarse(cut)[0])
+    result = simulate(job, stock, options, tools, first_tool, name, every=frames.every, on_snapshot=frames.snapshot)
+    heights = frames.close(stock, result.moves)
     fx, fy, fz = result.frame
     low, high = stock.bottom, stock.height
-    stacked = np.clip((np.stack(heights) - low) / max(high - low, 1e-9), 0.0, 1.0)
+    stacked = np.clip((heights - low) / max(high - low, 1e-9), 0.0, 1.0)
     cell = coarse(stock)[1]
     return {"x0": stock.x0 + fx, "y0": stock.y0 + fy, "cell": cell, "nx": stacked.shape[2], "ny": stacked.shape[1],
-            "bottom": low + fz, "top": high + fz, "moves": at,
+            "bottom": low + fz, "top": high + fz, "moves": frames.at,
             "heights": base64.b64encode(np.round(stacked * 65535).astype("<u2").tobytes()).decode()}
 
 

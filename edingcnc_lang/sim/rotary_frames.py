@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from edingcnc_lang.runner import RunOptions
-from edingcnc_lang.sim.frames import FRAMES
+from edingcnc_lang.sim.frames import Frames
 from edingcnc_lang.sim.rotary import simulate_cylinder
 from edingcnc_lang.sim.round_stock import RoundStock
 from edingcnc_lang.sim.tools import Tool
@@ -46,26 +46,18 @@ def rotary_frames(job: Path, stock: RoundStock, options: RunOptions, moves: int,
                   tools: dict[int, Tool] | None, first_tool: int | None, name: str | None) -> dict[str, Any]:
     """Cut the bar with ``job`` (of ``moves`` moves) and return the page's ``rotary-data``; ``shown``
     are the job's move numbers the page's moves end at (the tool's marker for each)."""
-    every = max(1, math.ceil(max(moves, 1) / FRAMES))
-    maps: list[np.ndarray] = []
-    at: list[int] = []
-
-    def snapshot(index: int, cut: RoundStock) -> None:
-        maps.append(coarse_depth(cut)[0])
-        at.append(index)
-
-    result = simulate_cylinder(job, stock, options, tools, first_tool, name, every=every, on_snapshot=snapshot,
-                               tips=True)
-    last, step = coarse_depth(stock)
-    maps.append(last)
-    at.append(result.moves)
-    deepest = max(float(last.max()), 0.0)
-    stacked = np.clip(np.stack(maps) / (deepest or 1.0), 0.0, 1.0)
+    frames: Frames[RoundStock] = Frames(moves, lambda cut: coarse_depth(cut)[0])
+    result = simulate_cylinder(job, stock, options, tools, first_tool, name, every=frames.every,
+                               on_snapshot=frames.snapshot, tips=True)
+    maps = frames.close(stock, result.moves)
+    step = coarse_depth(stock)[1]
+    deepest = max(float(maps[-1].max()), 0.0)
+    stacked = np.clip(maps / (deepest or 1.0), 0.0, 1.0)
     tips = result.tips if result.tips is not None else np.zeros((0, 2), np.float32)
     marks = tips[np.clip(shown, 0, len(tips) - 1)] if len(tips) else np.full((len(shown), 2), np.nan, np.float32)
     return {"axis": result.axis, "start": stock.start, "length": stock.length, "radius": stock.radius,
             "block": step * stock.resolution, "blockAngle": step * 360.0 / stock.shape[1],
-            "n": stacked.shape[2], "m": stacked.shape[1], "deepest": deepest, "moves": at,
+            "n": stacked.shape[2], "m": stacked.shape[1], "deepest": deepest, "moves": frames.at,
             "depths": base64.b64encode(np.round(stacked * 255).astype(np.uint8).tobytes()).decode(),
             "tips": base64.b64encode(np.ascontiguousarray(marks, "<f4").tobytes()).decode(),
             "findings": [{"move": f.move, "line": f.line, "kind": f.kind,

@@ -1,7 +1,10 @@
 """Small jobs and helpers shared by the simulation tests."""
 from __future__ import annotations
 
+import json
+import re
 from pathlib import Path
+from typing import Any
 
 from edingcnc_lang.sim import Stock, Tool, simulate
 from edingcnc_lang.sim.job import SimResult
@@ -19,3 +22,10 @@ def cut(folder: Path, body: str, tool: Tool, box: tuple[float, ...] = (0, 0, -10
     """Simulate ``body`` with ``tool`` (tool 0, in the spindle from the start) on a box stock."""
     stock = Stock.box(box[:3], box[3:], resolution)  # type: ignore[arg-type]
     return simulate(write_job(folder, body), stock, tools={0: tool}, first_tool=0)
+
+
+def page_data(page: Path, block: str) -> dict[str, Any]:
+    """The JSON block ``block`` (``stock-data``, ``bar-data``, ``rotary-data``) of an ``ecnc view`` page."""
+    found = re.search(rf'<script type="application/json" id="{block}">(.*?)</script>', page.read_text())
+    assert found, f"no {block} block in the page"
+    return json.loads(found[1])  # type: ignore[no-any-return]

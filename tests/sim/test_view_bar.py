@@ -2,24 +2,23 @@
 from __future__ import annotations
 
 import base64
-import json
-import re
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
 
 from tests.cli_runner import invoke
 
+from .jobs import page_data
+
 ROOT = Path(__file__).resolve().parents[2]
 LATHE_INI = ROOT / "examples" / "lathe" / "cnc.ini"
 BAR = ROOT / "examples" / "round" / "bar.nc"
 
 
-def bar_data(page: Path) -> dict:  # type: ignore[type-arg]
-    found = re.search(r'<script type="application/json" id="bar-data">(.*?)</script>', page.read_text())
-    assert found, "no bar-data block in the page"
-    return json.loads(found[1])  # type: ignore[no-any-return]
+def bar_data(page: Path) -> dict[str, Any]:
+    return page_data(page, "bar-data")
 
 
 def profiles(data: dict) -> np.ndarray:  # type: ignore[type-arg]

@@ -3,9 +3,8 @@ the bar and the findings, the same cut as ``ecnc sim``'s; a browser draws them."
 from __future__ import annotations
 
 import base64
-import json
-import re
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -17,6 +16,8 @@ from edingcnc_lang.sim.round_stock import RoundStock
 from edingcnc_lang.sim.tools import load_tools
 from tests.cli_runner import invoke
 
+from .jobs import page_data
+
 ROOT = Path(__file__).resolve().parents[2]
 MILL_INI = ROOT / "examples" / "cylinder" / "cnc.ini"
 LATHE_INI = ROOT / "examples" / "lathe" / "cnc.ini"
@@ -24,10 +25,8 @@ ROTARY = ROOT / "examples" / "round" / "rotary.nc"
 TOOLS = ROOT / "examples" / "round" / "rotary-tools.toml"
 
 
-def rotary_data(page: Path) -> dict:  # type: ignore[type-arg]
-    found = re.search(r'<script type="application/json" id="rotary-data">(.*?)</script>', page.read_text())
-    assert found, "no rotary-data block in the page"
-    return json.loads(found[1])  # type: ignore[no-any-return]
+def rotary_data(page: Path) -> dict[str, Any]:
+    return page_data(page, "rotary-data")
 
 
 def depth_maps(data: dict) -> np.ndarray:  # type: ignore[type-arg]

@@ -2,22 +2,21 @@
 from __future__ import annotations
 
 import base64
-import json
-import re
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
 
 from tests.cli_runner import invoke
 
+from .jobs import page_data
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def stock_data(page: Path) -> dict:  # type: ignore[type-arg]
-    found = re.search(r'<script type="application/json" id="stock-data">(.*?)</script>', page.read_text())
-    assert found, "no stock-data block in the page"
-    return json.loads(found[1])  # type: ignore[no-any-return]
+def stock_data(page: Path) -> dict[str, Any]:
+    return page_data(page, "stock-data")
 
 
 @pytest.mark.slow
