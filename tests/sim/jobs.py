@@ -29,3 +29,19 @@ def page_data(page: Path, block: str) -> dict[str, Any]:
     found = re.search(rf'<script type="application/json" id="{block}">(.*?)</script>', page.read_text())
     assert found, f"no {block} block in the page"
     return json.loads(found[1])  # type: ignore[no-any-return]
+
+
+def screenshot(page: Path, folder: Path, fragment: str) -> Any:
+    """The page drawn by headless Chromium at ``fragment`` (``#move=N``) as an RGB array, with no
+    message on the browser's console; the test skips where Chromium or matplotlib is missing."""
+    import pytest
+
+    from tests.plot.test_browser import CHROMIUM, chromium, console
+
+    if CHROMIUM is None:
+        pytest.skip("Chromium is not installed (Debian: apt-get install chromium)")
+    imread = pytest.importorskip("matplotlib.image").imread
+    shot = folder / "shot.png"
+    log = chromium(page, folder / "profile", f"--screenshot={shot}", fragment=fragment)
+    assert console(log) == [], console(log)
+    return imread(shot)[..., :3]

@@ -10,7 +10,7 @@ import pytest
 
 from tests.cli_runner import invoke
 
-from .jobs import page_data
+from .jobs import page_data, screenshot
 
 ROOT = Path(__file__).resolve().parents[2]
 LATHE_INI = ROOT / "examples" / "lathe" / "cnc.ini"
@@ -78,15 +78,8 @@ def test_a_bar_on_a_mill_is_an_error_not_a_traceback(tmp_path: Path) -> None:
 
 @pytest.mark.slow
 def test_a_browser_draws_the_bar(tmp_path: Path) -> None:
-    from tests.plot.test_browser import CHROMIUM, chromium, console
-
-    if CHROMIUM is None:
-        pytest.skip("Chromium is not installed (Debian: apt-get install chromium)")
-    imread = pytest.importorskip("matplotlib.image").imread
-    page, shot = tmp_path / "bar.html", tmp_path / "shot.png"
+    page = tmp_path / "bar.html"
     invoke("view", BAR, "--ini", LATHE_INI, "--bar", "40,80,1", "--chuck", "25", "-o", page)
-    log = chromium(page, tmp_path / "profile", f"--screenshot={shot}", fragment="#move=38")
-    assert console(log) == [], console(log)
-    image = imread(shot)[..., :3]
+    image = screenshot(page, tmp_path, "#move=38")
     part = np.all(np.abs(image - np.array([0x4c, 0x72, 0xb0]) / 255) < 0.05, axis=-1)
     assert part.mean() > 0.01, "the bar's half section is not on the picture"

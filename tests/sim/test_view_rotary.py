@@ -16,7 +16,7 @@ from edingcnc_lang.sim.round_stock import RoundStock
 from edingcnc_lang.sim.tools import load_tools
 from tests.cli_runner import invoke
 
-from .jobs import page_data
+from .jobs import page_data, screenshot
 
 ROOT = Path(__file__).resolve().parents[2]
 MILL_INI = ROOT / "examples" / "cylinder" / "cnc.ini"
@@ -113,16 +113,9 @@ def test_view_cylinder_usage_errors(tmp_path: Path, args: tuple[str, ...], ini: 
 
 @pytest.mark.slow
 def test_a_browser_draws_the_unrolled_bar(tmp_path: Path) -> None:
-    from tests.plot.test_browser import CHROMIUM, chromium, console
-
-    if CHROMIUM is None:
-        pytest.skip("Chromium is not installed (Debian: apt-get install chromium)")
-    imread = pytest.importorskip("matplotlib.image").imread
-    page, shot = tmp_path / "rotary.html", tmp_path / "shot.png"
+    page = tmp_path / "rotary.html"
     invoke("view", ROTARY, "--ini", MILL_INI, "--stock", "cylinder:40,100,20", "--tools", TOOLS, "-o", page)
-    log = chromium(page, tmp_path / "profile", f"--screenshot={shot}", fragment="#move=20")
-    assert console(log) == [], console(log)
-    image = imread(shot)[..., :3]
+    image = screenshot(page, tmp_path, "#move=20")
     lower = image[image.shape[0] // 2:]
     uncut = np.all(np.abs(lower - np.array([252, 253, 191]) / 255) < 0.03, axis=-1)  # the bar's surface
     deep = np.all(lower < 0.25, axis=-1) & (np.abs(lower[..., 2] - lower[..., 0]) < 0.2)  # near black: deep
