@@ -98,7 +98,10 @@ def test_ctrl_c_while_the_job_is_checked_names_the_job(tmp_path: Path, monkeypat
 
 def test_a_real_sigint_ends_a_long_run_with_130(tmp_path: Path) -> None:
     job = write(tmp_path, "loop.nc", "#1 = 0\nWhile [1]\n  #1 = [#1 + 1]\nEndWhile\n")
-    process = subprocess.Popen([*ECNC, "run", str(job), "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    # Ctrl-C as a user's terminal sends it, even where the tests run with SIGINT ignored (a shell's
+    # background job), which a child would inherit
+    process = subprocess.Popen([*ECNC, "run", str(job), "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(4)  # started and looping: the loop runs for minutes; a Ctrl-C inside Python's own start-up is not ours
     process.send_signal(signal.SIGINT)
     stdout, stderr = process.communicate(timeout=60)

@@ -95,6 +95,8 @@ def test_a_ctrl_c_during_the_write_back_waits_until_the_file_is_whole(ini: Path,
         return update(text, values)
 
     monkeypatch.setattr(ini_module, "_update_variables", interrupted)
+    # Python's own Ctrl-C handler, even where the tests run with SIGINT ignored (a shell's background job)
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
     other = threading.Event()  # a thread that could take the signal (a mask on the main thread did not hold)
     threading.Thread(target=other.wait, daemon=True).start()
     try:
@@ -102,4 +104,5 @@ def test_a_ctrl_c_during_the_write_back_waits_until_the_file_is_whole(ini: Path,
             ini_module.write_variables(ini, {4000: 5.0, 4123: 7.0})
     finally:
         other.set()
+        signal.signal(signal.SIGINT, before)
     assert ini.read_bytes() == (INI.replace("#4000 = 1.000000", "#4000 = 5.000000") + "#4123 = 7.000000\r\n").encode()
