@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 import time
-from array import array
 from dataclasses import dataclass, replace
 from collections.abc import Callable
 from typing import Any
@@ -22,13 +21,12 @@ import numpy as np
 
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.canon import Event, Move, Pose
-from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.sampling import arc_points
 from edingcnc_lang.kinematics.trajectory import geometry_of
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.queue import MoveQueue
+from edingcnc_lang.sim.simulator import SimulatorBase
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
@@ -58,29 +56,22 @@ class SimResult:
         return all(t.flute_length is not None for t in self.tools.values())
 
 
-class Simulator:
+class Simulator(SimulatorBase[Stock]):
     """The ``on_move``/``on_event`` callbacks of a simulated run; ``attach`` it to the ``Run``."""
 
     def __init__(self, stock: Stock, config: MachineConfig, tools: dict[int, Tool] | None = None,
                  first_tool: int = 0) -> None:
-        self.stock = stock
+        super().__init__(stock, 6)  # a segment's two ends: ax ay az bx by bz
         self.config = config
         self.table = tools
         self.ceiling = float(stock.top.max())
         self.known: dict[int, tuple[Tool, str]] = {}  # tool number -> the tool and a note on where it came from
         self.used: dict[int, Tool] = {}  # the tools that swept anything
         self.tool = self._tool(first_tool)
-        self.spindle_on = False
-        self.queue = MoveQueue(6)  # a segment's two ends: ax ay az bx by bz
-        self.lines = array("i")
-        self.files = array("h")
-        self.paths: dict[str, int] = {}
         self.hits: list[tuple[Hits, int]] = []
         self.frame: tuple[float, float, float] | None = None
         self.chord = stock.resolution / 4.0
         self._offset = lambda: (0.0, 0.0, 0.0, 0.0)  # frame x, y, z and the tool length in force
-        self.every = 0  # with ``on_snapshot``: sweep and call it before every ``every``-th move
-        self.on_snapshot: Callable[[int, Stock], None] | None = None
 
     def attach(self, run: Run) -> None:
         """Read the work offset and the tool length from the run's interpreter as each move arrives."""
@@ -115,20 +106,11 @@ class Simulator:
         """What the report should say about the tools that cut: those not described as asked."""
         return [self.known[n][1] for n in sorted(self.used) if self.known[n][1]]
 
-    def on_event(self, event: Event) -> None:
-        if isinstance(event, SpindleEvent):
-            self.spindle_on = event.m in (3, 4)
-        elif isinstance(event, ToolChangeEvent):
-            self.flush()
-            self.tool = self._tool(event.tool)
+    def change_tool(self, number: int) -> None:
+        self.tool = self._tool(number)
 
     def on_move(self, move: Move, _joints: Pose) -> None:
-        index = len(self.lines)
-        if self.on_snapshot is not None and index % self.every == 0:
-            self.flush()
-            self.on_snapshot(index, self.stock)
-        self.lines.append(move.line)
-        self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        index = self.record(move)
         if move.kind not in CUTTING_KINDS:
             return
         ox, oy, oz, length = self._offset()
@@ -177,13 +159,12 @@ class Simulator:
 
     def findings(self) -> list[CutFinding]:
         """Every hit as a finding, merged (see ``findings.merged``)."""
-        paths = list(self.paths)
         found = []
         for hits, tool in self.hits:
             for move, code, depth, where in zip(hits.move.tolist(), hits.code.tolist(), hits.depth.tolist(),
                                                 hits.where.tolist()):
                 kind = "outside_stock" if code == OUTSIDE else CODE_KINDS[code]
-                found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], tuple(where),
+                found.append(CutFinding(kind, *self.source(move), tuple(where),
                                      depth, tool, move))
         return merged(found)
 

@@ -10,21 +10,19 @@ with the spindle stopped, and with ``--chuck`` the tool reaching into the chuck.
 from __future__ import annotations
 
 import time
-from array import array
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.canon import Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError
-from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.pipeline.comp_geometry import tip_shift
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.queue import MoveQueue
+from edingcnc_lang.sim.simulator import SimulatorBase
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.insert import INSIDE, holder_ranges, holder_reach, holder_spans, insert_shape, insert_spans
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
@@ -64,43 +62,27 @@ def insert_of(config: MachineConfig, number: int, table: dict[int, Tool] | None)
                 orientation=entry.orientation)
 
 
-class BarSimulator:
+class BarSimulator(SimulatorBase[RoundStock]):
     """The ``on_move``/``on_event`` callbacks cutting a bar (``drive`` feeds them)."""
 
     def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int,
                  chuck: float | None) -> None:
-        self.stock = stock
+        super().__init__(stock, 4)  # z0 r0 z1 r1 of the controlled point
         self.config = run.config
         self.interp = run.interpreter
         self.table = tools
         self.chuck = chuck
         self.tool = insert_of(self.config, first_tool, tools)
         self.used: dict[int, Tool] = {}
-        self.spindle_on = False
-        self.queue = MoveQueue(4)  # z0 r0 z1 r1 of the controlled point
-        self.lines = array("i")
-        self.files = array("h")
-        self.paths: dict[str, int] = {}
         self.found: list[CutFinding] = []
         self.chord = stock.resolution / 4.0
         self.scale = 2.0 if self.config.diameter_mode else 1.0  # a radius as the job writes X
-        self.every = 0  # with ``on_snapshot``: cut and call it before every ``every``-th move
-        self.on_snapshot: Callable[[int, RoundStock], None] | None = None
 
-    def on_event(self, event: Event) -> None:
-        if isinstance(event, SpindleEvent):
-            self.spindle_on = event.m in (3, 4)
-        elif isinstance(event, ToolChangeEvent):
-            self.flush()
-            self.tool = insert_of(self.config, event.tool, self.table)
+    def change_tool(self, number: int) -> None:
+        self.tool = insert_of(self.config, number, self.table)
 
     def on_move(self, move: Move, _joints: Pose) -> None:
-        index = len(self.lines)
-        if self.on_snapshot is not None and index % self.every == 0:
-            self.flush()
-            self.on_snapshot(index, self.stock)
-        self.lines.append(move.line)
-        self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        index = self.record(move)
         if move.kind not in CUTTING_KINDS:
             return
         off = self.interp.offset()
@@ -183,8 +165,7 @@ class BarSimulator:
                       float(self.chuck - deepest[s]), tool)
 
     def _add(self, kind: str, move: int, where: tuple[float, float, float], depth: float, tool: int) -> None:
-        paths = list(self.paths)
-        self.found.append(CutFinding(kind, paths[self.files[move]], self.lines[move], where, depth, tool, move))
+        self.found.append(CutFinding(kind, *self.source(move), where, depth, tool, move))
 
     def notes(self) -> list[str]:
         """What the report should say about the inserts that cut: those simulated as a point, and

@@ -24,13 +24,12 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.canon import Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location
-from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.queue import MoveQueue
+from edingcnc_lang.sim.simulator import SimulatorBase
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
@@ -98,27 +97,20 @@ class CylinderResult:
     tips: np.ndarray | None = None  # with ``tips=True``: (moves, 2) axial position and bar angle of each move's end
 
 
-class CylinderSimulator:
+class CylinderSimulator(SimulatorBase[RoundStock]):
     """The ``on_move``/``on_event`` callbacks stamping a mill's tool into a bar on its rotary axis."""
 
     def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int,
                  axis: RotaryAxis | None = None) -> None:
-        self.stock = stock
+        super().__init__(stock, 4)  # axial, p, q of the tool tip and the bar's angle, per sample
         self.run = run
         self.axis = axis or rotary_axis(run.config)
         self.table = tools
         self.tool = self._tool(first_tool)
         self.used: dict[int, Tool] = {}
-        self.spindle_on = False
-        self.queue = MoveQueue(4)  # axial, p, q of the tool tip and the bar's angle, per sample
-        self.lines = array("i")
-        self.files = array("h")
-        self.paths: dict[str, int] = {}
         self.found: list[CutFinding] = []
         self.last: tuple[float, ...] | None = None  # the pose the queue ends at
         self.steps = (stock.angle_step(), stock.resolution)  # the most a sample may turn and move
-        self.every = 0  # with ``on_snapshot``: cut and call it before every ``every``-th move
-        self.on_snapshot: Callable[[int, RoundStock], None] | None = None
         self.tips: array[float] | None = None  # with tips: axial position, bar angle of each move's end
 
     def _tool(self, number: int) -> Tool:
@@ -126,21 +118,12 @@ class CylinderSimulator:
             return self.table[number]
         return ini_tool(self.run.config, number)
 
-    def on_event(self, event: Event) -> None:
-        if isinstance(event, SpindleEvent):
-            self.spindle_on = event.m in (3, 4)
-        elif isinstance(event, ToolChangeEvent):
-            self.flush()
-            self.last = None
-            self.tool = self._tool(event.tool)
+    def change_tool(self, number: int) -> None:
+        self.last = None
+        self.tool = self._tool(number)
 
     def on_move(self, move: Move, _joints: Pose) -> None:
-        index = len(self.lines)
-        if self.on_snapshot is not None and index % self.every == 0:
-            self.flush()
-            self.on_snapshot(index, self.stock)
-        self.lines.append(move.line)
-        self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        index = self.record(move)
         if move.kind not in CUTTING_KINDS:
             if self.tips is not None:  # a probe move: the tool stays where the last move left it
                 self.tips.extend(self.tips[-2:] if len(self.tips) else (math.nan, math.nan))
@@ -237,11 +220,10 @@ class CylinderSimulator:
         move = moves[at]
         order = np.lexsort((at, -depth, code, move))
         first = order[np.r_[True, (np.diff(move[order]) != 0) | (np.diff(code[order]) != 0)]]
-        paths = list(self.paths)
         for k in first.tolist():
             index = int(move[k])
             pose = poses[at[k]]
-            self.found.append(CutFinding(KIND_OF_CODE[int(code[k])], paths[self.files[index]], self.lines[index],
+            self.found.append(CutFinding(KIND_OF_CODE[int(code[k])], *self.source(index),
                                          self.axis.work(pose), float(depth[k]), tool, index, bar_angle(pose)))
 
     def notes(self) -> list[str]:

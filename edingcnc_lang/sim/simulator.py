@@ -1,0 +1,59 @@
+"""What the three simulators (the box's height field, the lathe's bar, the bar on a rotary axis)
+share as a run's ``on_move``/``on_event`` callbacks: the spindle's state (a cut with it stopped is a
+finding), a tool change cutting what is queued with the tool that made it, the file and line of
+every move (findings name them), and the snapshot hook ``ecnc view`` plays its frames from.
+"""
+from __future__ import annotations
+
+from array import array
+from collections.abc import Callable
+from typing import Generic, TypeVar
+
+from edingcnc_lang.canon import Event, Move
+from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
+from edingcnc_lang.sim.queue import MoveQueue
+
+StockT = TypeVar("StockT")
+
+
+class SimulatorBase(Generic[StockT]):
+    """The shared part of a simulator; a simulator adds its tools (``change_tool``) and its cut (``flush``)."""
+
+    def __init__(self, stock: StockT, width: int) -> None:
+        self.stock = stock
+        self.spindle_on = False
+        self.queue = MoveQueue(width)  # the numbers of ``width`` a row of the simulator's cut reads
+        self.lines = array("i")  # the line of each move, in program order
+        self.files = array("h")  # the file of each move, an index into ``paths``
+        self.paths: dict[str, int] = {}
+        self.every = 0  # with ``on_snapshot``: cut and call it before every ``every``-th move
+        self.on_snapshot: Callable[[int, StockT], None] | None = None
+
+    def flush(self) -> None:
+        """Cut what is queued."""
+        raise NotImplementedError
+
+    def change_tool(self, number: int) -> None:
+        """Tool ``number`` is in the spindle now (what is queued is cut already)."""
+        raise NotImplementedError
+
+    def on_event(self, event: Event) -> None:
+        if isinstance(event, SpindleEvent):
+            self.spindle_on = event.m in (3, 4)
+        elif isinstance(event, ToolChangeEvent):
+            self.flush()
+            self.change_tool(event.tool)
+
+    def record(self, move: Move) -> int:
+        """Note ``move``'s file and line (after a snapshot, when one is due); its index, in program order."""
+        index = len(self.lines)
+        if self.on_snapshot is not None and index % self.every == 0:
+            self.flush()
+            self.on_snapshot(index, self.stock)
+        self.lines.append(move.line)
+        self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        return index
+
+    def source(self, index: int) -> tuple[str, int]:
+        """The file and line of the move at ``index``."""
+        return list(self.paths)[self.files[index]], self.lines[index]
