@@ -26,7 +26,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.sampling import arc_points
 from edingcnc_lang.kinematics.trajectory import geometry_of
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.simulator import SimulatorBase
+from edingcnc_lang.sim.simulator import SimOutcome, SimulatorBase
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.stock import Stock
 from edingcnc_lang.sim.sweep import CODE_KINDS, EPS, NONE, PLUNGE, RAPID, SPINDLE_OFF, Hits, Segments, sweep
@@ -38,15 +38,9 @@ CUTTING_KINDS = frozenset({"rapid", "linear", "arc", "home"})  # probe moves tou
 
 
 @dataclass
-class SimResult:
+class SimResult(SimOutcome[Stock]):
     """The cut stock, the findings and what the run left; ``error`` when the job stopped early."""
 
-    stock: Stock
-    findings: list[CutFinding]
-    tools: dict[int, Tool]
-    notes: list[str]
-    seconds: float
-    moves: int
     run: RunResult | None = None
     error: EcncError | None = None
     frame: tuple[float, float, float] = (0.0, 0.0, 0.0)  # machine coordinates of the stock's origin

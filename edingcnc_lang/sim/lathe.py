@@ -22,7 +22,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.pipeline.comp_geometry import tip_shift
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.simulator import SimulatorBase
+from edingcnc_lang.sim.simulator import SimOutcome, SimulatorBase
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.insert import INSIDE, holder_ranges, holder_reach, holder_spans, insert_shape, insert_spans
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
@@ -36,15 +36,9 @@ CUT, RAPID, SPINDLE_OFF, HOLDER = 0, 1, 2, 3
 
 
 @dataclass
-class BarResult:
+class BarResult(SimOutcome[RoundStock]):
     """The cut bar, the findings and what the run left; ``error`` when the job stopped early."""
 
-    stock: RoundStock
-    findings: list[CutFinding]
-    tools: dict[int, Tool]
-    notes: list[str]
-    seconds: float
-    moves: int
     diameter_mode: bool
     chuck: float | None = None  # the axial position of the chuck's face
     run: RunResult | None = None

@@ -29,7 +29,7 @@ from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.machine import tables as t
 from edingcnc_lang.runner import Run, RunOptions, RunResult
-from edingcnc_lang.sim.simulator import SimulatorBase
+from edingcnc_lang.sim.simulator import SimOutcome, SimulatorBase
 from edingcnc_lang.sim.findings import CutFinding, merged
 from edingcnc_lang.sim.job import CUTTING_KINDS, chords, drive
 from edingcnc_lang.sim.round_stock import EPS, RoundStock
@@ -82,15 +82,9 @@ def rotary_axis(config: MachineConfig) -> RotaryAxis:
 
 
 @dataclass
-class CylinderResult:
+class CylinderResult(SimOutcome[RoundStock]):
     """The cut bar, the findings and what the run left; ``error`` when the job stopped early."""
 
-    stock: RoundStock
-    findings: list[CutFinding]
-    tools: dict[int, Tool]
-    notes: list[str]
-    seconds: float
-    moves: int
     run: RunResult | None = None
     error: EcncError | None = None
     axis: str = "A"  # the rotary axis the bar turned with: A (along X) or B (along Y)

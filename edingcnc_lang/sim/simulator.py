@@ -7,13 +7,30 @@ from __future__ import annotations
 
 from array import array
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Generic, TypeVar
 
 from edingcnc_lang.canon import Event, Move
 from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
+from edingcnc_lang.sim.findings import CutFinding
 from edingcnc_lang.sim.queue import MoveQueue
+from edingcnc_lang.sim.tools import Tool
 
 StockT = TypeVar("StockT")
+
+
+@dataclass
+class SimOutcome(Generic[StockT]):
+    """What every simulation gives (``SimResult``, ``BarResult``, ``CylinderResult`` add their own):
+    the cut stock, the findings, the tools that cut, notes for the report, the seconds it took and
+    the moves it heard."""
+
+    stock: StockT
+    findings: list[CutFinding]
+    tools: dict[int, Tool]
+    notes: list[str]
+    seconds: float
+    moves: int
 
 
 class SimulatorBase(Generic[StockT]):
