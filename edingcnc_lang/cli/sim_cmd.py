@@ -50,18 +50,26 @@ class StockBox(click.ParamType):
         return numbers
 
     def _cylinder(self, value: str, param: click.Parameter | None, ctx: click.Context | None) -> Cylinder:
-        from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
-        from edingcnc_lang.syntax.source import plain_float
+        return Cylinder(*_round_size(self, value[len("cylinder:"):], value, "cylinder:DIAMETER,LENGTH[,X0]",
+                                    "cylinder:40,100", param, ctx))
 
-        try:
-            numbers = tuple(plain_float(v) for v in value[len("cylinder:"):].split(","))
-        except ValueError:
-            numbers = ()
-        if len(numbers) not in (2, 3) or not all(abs(v) <= MAX_SIM_LENGTH for v in numbers):
-            self.fail(f"{value!r} is not cylinder:DIAMETER,LENGTH[,X0] (e.g. cylinder:40,100)", param, ctx)
-        if numbers[0] <= 0 or numbers[1] <= 0:
-            self.fail(f"{value!r}: the diameter and the length must be above 0", param, ctx)
-        return Cylinder(numbers[0], numbers[1], numbers[2] if len(numbers) == 3 else 0.0)
+
+def _round_size(kind: click.ParamType, text: str, value: str, form: str, example: str, param: click.Parameter | None,
+               ctx: click.Context | None) -> tuple[float, float, float]:
+    """``DIAMETER,LENGTH[,START]`` of round stock (a bar on a lathe or on a rotary axis), START 0 when
+    left out; a usage error (``kind.fail``) naming ``value`` and ``form`` otherwise."""
+    from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
+    from edingcnc_lang.syntax.source import plain_float
+
+    try:
+        numbers = tuple(plain_float(v) for v in text.split(","))
+    except ValueError:
+        numbers = ()
+    if len(numbers) not in (2, 3) or not all(abs(v) <= MAX_SIM_LENGTH for v in numbers):
+        kind.fail(f"{value!r} is not {form} (e.g. {example})", param, ctx)
+    if numbers[0] <= 0 or numbers[1] <= 0:
+        kind.fail(f"{value!r}: the diameter and the length must be above 0", param, ctx)
+    return numbers[0], numbers[1], numbers[2] if len(numbers) == 3 else 0.0
 
 
 class BarSize(click.ParamType):
@@ -72,18 +80,7 @@ class BarSize(click.ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> tuple[float, ...]:
         if isinstance(value, tuple):
             return value
-        from edingcnc_lang.syntax.input_limits import MAX_SIM_LENGTH
-        from edingcnc_lang.syntax.source import plain_float
-
-        try:
-            numbers = tuple(plain_float(v) for v in str(value).split(","))
-        except ValueError:
-            numbers = ()
-        if len(numbers) not in (2, 3) or not all(abs(v) <= MAX_SIM_LENGTH for v in numbers):
-            self.fail(f"{value!r} is not DIAMETER,LENGTH[,Z0] (e.g. 40,100 or 40,100,2)", param, ctx)
-        if numbers[0] <= 0 or numbers[1] <= 0:
-            self.fail(f"{value!r}: the diameter and the length must be above 0", param, ctx)
-        return numbers if len(numbers) == 3 else (*numbers, 0.0)
+        return _round_size(self, str(value), str(value), "DIAMETER,LENGTH[,Z0]", "40,100 or 40,100,2", param, ctx)
 
 
 @click.command("sim", cls=Command, short_help="Cut a stock with JOB: the part, its volumes and every collision.")
