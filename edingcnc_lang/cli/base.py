@@ -7,7 +7,6 @@ out in full, and commands loaded only when they are asked for (``LazyGroup``).
 """
 from __future__ import annotations
 
-import difflib
 import importlib
 import re
 from collections.abc import Iterable, Mapping
@@ -128,6 +127,8 @@ class UnknownCommand(click.UsageError):
 
     def __init__(self, name: str, known: Iterable[str], ctx: click.Context) -> None:
         super().__init__(f"unknown command {name!r}", ctx)
+        import difflib  # only for a mistyped name (start-up time)
+
         self.possibilities = difflib.get_close_matches(name, list(known))
 
 

@@ -14,7 +14,6 @@ import importlib
 import importlib.util
 import inspect
 import sys
-import traceback
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from types import ModuleType
@@ -107,6 +106,8 @@ def _failure_location(err: BaseException, path: Path) -> Location | None:
     """Where in the plug-in's own file its import failed, so the author is sent to the line."""
     if isinstance(err, SyntaxError) and err.lineno:
         return Location(str(path), err.lineno, err.offset or 0)
+    import traceback  # only when a plug-in fails (start-up time)
+
     own = path.resolve()
     lines = [line for frame, line in traceback.walk_tb(err.__traceback__)
              if Path(frame.f_code.co_filename).resolve() == own]
