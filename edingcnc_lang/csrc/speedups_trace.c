@@ -6,7 +6,8 @@ typedef struct {
     size_t used, size;
 } Text;
 
-static int text_add(Text *text, const char *s, size_t n)
+/* Room for n more bytes at text->data + text->used. */
+static int text_room(Text *text, size_t n)
 {
     if (text->used + n > text->size) {
         size_t size = text->size ? text->size : 1 << 16;
@@ -21,6 +22,13 @@ static int text_add(Text *text, const char *s, size_t n)
         text->data = grown;
         text->size = size;
     }
+    return 0;
+}
+
+static int text_add(Text *text, const char *s, size_t n)
+{
+    if (text->used + n > text->size && text_room(text, n) < 0)
+        return -1;
     memcpy(text->data + text->used, s, n);
     text->used += n;
     return 0;
@@ -40,11 +48,37 @@ typedef unsigned __int128 Wide;
  * would need at least s - 1 decimals, more than the 17 digits the shortest text has at most.
  * Returns the text's length, or -1 out of range (the caller then asks Python's routine).
  */
+/* 10^0 ... 10^21 (10^21 < 2^70). */
+#define TEN_E18 ((Wide)1000000000000000000ULL)
+static const Wide ten_to[22] = {
+    1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000, 10000000000ULL,
+    100000000000ULL, 1000000000000ULL, 10000000000000ULL, 100000000000000ULL, 1000000000000000ULL,
+    10000000000000000ULL, 100000000000000000ULL, TEN_E18, TEN_E18 * 10, TEN_E18 * 100, TEN_E18 * 1000,
+};
+
+/* The least k in 0..21 for which a multiple of 2^shift lies strictly between low * 10^k and high * 10^k
+ * (22 if none).  Once one does, one does for every larger k (ten times it), so a binary search finds it
+ * in five steps where trying k = 0, 1, ... takes up to seventeen for a time such as 0.7052213595499957. */
+static int fewest_decimals(Wide low, Wide high, int shift)
+{
+    int lo = 0, hi = 22;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        Wide below = ((high * ten_to[mid] - 1) >> shift) << shift;  /* the largest multiple under the top */
+        if (below > low * ten_to[mid])
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
 static int fixed_repr(double v, char *out)
 {
     double magnitude = v < 0 ? -v : v;
     int n = 0, exponent, shift, k;
     Wide f, scaled, low, high, one, half;
+    unsigned long long bits;
     if (v == 0.0) {
         if (1.0 / v < 0)
             out[n++] = '-';
@@ -53,14 +87,20 @@ static int fixed_repr(double v, char *out)
     }
     if (!(magnitude >= 1e-4 && magnitude < 562949953421312.0))
         return -1;
-    f = (Wide)(unsigned long long)ldexp(frexp(magnitude, &exponent), 53);
+    memcpy(&bits, &magnitude, sizeof bits);  /* normal here: the mantissa with its hidden bit, as frexp gives it */
+    f = (Wide)((bits & 0xFFFFFFFFFFFFFULL) | (1ULL << 52));
+    exponent = (int)(bits >> 52) - 1022;
     shift = 53 - exponent + 2;  /* 6 ... 68 */
     one = (Wide)1 << shift;
     half = one >> 1;
     scaled = f << 2;
     high = scaled + 2;
     low = f == ((Wide)1 << 52) ? scaled - 1 : scaled - 2;
-    for (k = 0; k <= 21; k++, scaled *= 10, low *= 10, high *= 10) {
+    k = fewest_decimals(low, high, shift);
+    scaled *= ten_to[k];
+    low *= ten_to[k];
+    high *= ten_to[k];
+    for (; k <= 21; k++, scaled *= 10, low *= 10, high *= 10) {
         Wide candidate = (scaled + half) >> shift, at = candidate << shift;
         unsigned long long digits_of;
         char digits[24];
@@ -125,12 +165,16 @@ static int text_repr(Text *text, PyObject *value)
 {
     int failed;
     if (PyFloat_CheckExact(value)) {
-        char quick[64];
         double v = PyFloat_AsDouble(value);
-        int n = fixed_repr(v, quick);
+        int n;
         char *digits;
-        if (n >= 0)
-            return text_add(text, quick, (size_t)n);
+        if (text_room(text, 64) < 0)  /* fixed_repr writes at most 41 */
+            return -1;
+        n = fixed_repr(v, text->data + text->used);
+        if (n >= 0) {
+            text->used += (size_t)n;
+            return 0;
+        }
         digits = PyOS_double_to_string(v, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
         if (digits == NULL)
             return -1;
