@@ -9,7 +9,8 @@ its joints, the limits it runs against and the speed the joints allow to the pla
 (``planner/``), which times it and feeds the output sinks.
 See docs/kinematics.md ("Running jobs") for the rules.
 
-numpy is imported by the sampling methods and for the limits a move is timed against: while the
+numpy is imported by the sampling methods and for the limits a move is timed against (but the fast path's
+straight moves', ``PlainLimits``): while the
 joints are simply the position (no kinematics, trivial kinematics, no bend knife), no samples are
 written and nothing reads time (the planner is ``planner.untimed``), a run never loads it.
 """
@@ -63,7 +64,7 @@ class PlannerStage(Protocol):
     def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None: ...
+    def move_batch(self, batch: Batch, limits: dict[str, PlainLimits] | None, arcs: ArcTable | None = None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -95,6 +96,15 @@ class AxisLimits:
     acceleration: np.ndarray
 
 
+@record(frozen=True)
+class PlainLimits:
+    """``AxisLimits`` as plain floats: those of the fast path's straight moves, which a planner times without
+    numpy (``Planner`` plans their windows in C on the compiled core)."""
+
+    velocity: tuple[float, ...]
+    acceleration: tuple[float, ...]
+
+
 def _positive(values: Sequence[float]) -> np.ndarray:
     """Limits as an array; a plug-in's answer of 0 or less means "not set" rather than "cannot move"
     (the ini's own limits are checked to be above 0 when it is read, see config/machine_config.py)."""
@@ -102,6 +112,11 @@ def _positive(values: Sequence[float]) -> np.ndarray:
 
     array = np.asarray(values, dtype=float)
     return np.where(array > 0.0, array, np.inf)
+
+
+def _plain_positive(value: float) -> float:
+    """``_positive`` of one limit, as a Python float."""
+    return float(value) if value > 0.0 else math.inf
 
 
 def _located(move: Move) -> Location:
@@ -208,10 +223,15 @@ class MotionStage:
             self.joints = batch.end
 
     @cached_property
-    def _straight_limits(self) -> dict[str, AxisLimits]:
-        """The limits of the fast path's rapids and feed moves (kinematics off)."""
-        origin = (0.0,) * 6
-        return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}
+    def _straight_limits(self) -> dict[str, PlainLimits]:
+        """The limits of the fast path's rapids and feed moves (kinematics off: the joints'), as ``_limits_for``
+        gives them, worked out without numpy."""
+        joints = self.config.joints
+        velocity = [_plain_positive(j.max_velocity) for j in joints]
+        acceleration = [_plain_positive(j.max_acceleration) for j in joints]
+        rapid_v, rapid_a = self._rapid_velocity_factor, self.config.g0_acceleration_factor
+        return {"rapid": PlainLimits(tuple(v * rapid_v for v in velocity), tuple(a * rapid_a for a in acceleration)),
+                "linear": PlainLimits(tuple(velocity), tuple(acceleration))}
 
     def event(self, event: Event) -> None:
         if isinstance(event, DwellEvent):
