@@ -46,14 +46,21 @@ static int plan_item(PyObject *seq, Py_ssize_t i, double *out)
     return (*out == -1.0 && PyErr_Occurred()) ? -1 : 0;
 }
 
-/* The six numbers of a pose (a sequence of six). */
+/* The six numbers of a pose (a sequence of six; a tuple, the usual case, read directly). */
 static int plan_pose(PyObject *pose, double out[PLAN_AXES])
 {
-    int k;
-    for (k = 0; k < PLAN_AXES; k++)
-        if (plan_item(pose, k, &out[k]) < 0)
-            return -1;
-    return 0;
+    int k, failed = 0;
+    if (!PyTuple_Check(pose) || PyTuple_Size(pose) != PLAN_AXES) {
+        for (k = 0; k < PLAN_AXES; k++)
+            if (plan_item(pose, k, &out[k]) < 0)
+                return -1;
+        return 0;
+    }
+    for (k = 0; k < PLAN_AXES; k++) {
+        out[k] = PyFloat_AsDouble(PyTuple_GetItem(pose, k));
+        failed |= out[k] == -1.0;
+    }
+    return failed && PyErr_Occurred() ? -1 : 0;
 }
 
 /* A Runs column (values, counts) as one int per move, for the first n moves. */
@@ -203,6 +210,14 @@ static void plan_segment(PlanWork *w, Py_ssize_t i, const double start[PLAN_AXES
     v_ratio = fabs(delta[0]) / vlim[0];
     a_ratio = fabs(delta[0]) / alim[0];
     for (k = 0; k < PLAN_AXES; k++) {
+        /* an axis that does not move: its direction is its delta (+-0; only moving moves' directions are
+         * read, and their norm is above 0), its share 0 / limit = +0 (limits above 0), which changes no
+         * maximum of shares that is not below 0: the divisions are skipped, the bits are the same */
+        if (delta[k] == 0.0
+            && (k == 0 || (vlim[k] > 0.0 && alim[k] > 0.0 && !(v_ratio < 0.0) && !(a_ratio < 0.0)))) {
+            w->tan_in[PLAN_AXES * i + k] = delta[k];
+            continue;
+        }
         w->tan_in[PLAN_AXES * i + k] = delta[k] / norm;
         if (k) {
             v_ratio = np_maximum(v_ratio, fabs(delta[k]) / vlim[k]);
@@ -357,17 +372,18 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
     for (k = 0; k < PLAN_AXES; k++)
         low[k] = high[k] = start[k];
     /* segments: every move's length, direction and limits */
+    if (!PyList_Check(ends) || PyList_Size(ends) < n || !PyList_Check(feeds) || PyList_Size(feeds) < n) {
+        PyErr_SetString(PyExc_TypeError, "plan_straight: ends and feeds must be lists of at least n moves");
+        goto done;
+    }
     for (i = 0; i < n; i++) {
-        PyObject *pose = PyList_Check(ends) ? PyList_GetItem(ends, i) : NULL;
-        double feed, speed;
+        PyObject *pose = PyList_GetItem(ends, i);
+        double feed = PyFloat_AsDouble(PyList_GetItem(feeds, i)), speed;
         long kind, s;
         const PlanState *st;
         const double *limit;
-        if (pose == NULL || plan_pose(pose, end) < 0 || plan_item(feeds, i, &feed) < 0) {
-            if (!PyErr_Occurred())
-                PyErr_SetString(PyExc_TypeError, "plan_straight: ends must be a list of poses");
+        if ((feed == -1.0 && PyErr_Occurred()) || plan_pose(pose, end) < 0)
             goto done;
-        }
         s = w.state[i];
         kind = w.kind[i];
         if (kind == KIND_STRAIGHT)

@@ -42,7 +42,7 @@ poses = st.one_of(
     st.tuples(coordinates, coordinates, coordinates, st.sampled_from([0.0, 0.0, 90.0, 45.5])).map(
         lambda p: (*p, 0.0, 0.0)))
 feeds = st.sampled_from([100.0, 600.0, 1500.0, 60000.0, 0.5, 3000.0, 20000.0])
-limit_values = st.tuples(*[st.sampled_from([50.0, 100.0, 250.0, 1000.0, math.inf])] * 6)
+limit_values = st.tuples(*[st.sampled_from([50.0, 100.0, 250.0, 1000.0, math.inf, 0.0])] * 6)  # (0: NaN shares)
 # accelerations low against the speeds: corners and short moves bind the speed (the passes matter)
 accel_values = st.tuples(*[st.sampled_from([2.0, 20.0, 200.0, 1000.0, 1e9])] * 6)
 plain_limits = st.builds(PlainLimits, limit_values, accel_values)
