@@ -38,7 +38,8 @@ class CallbackTap:
     def overrides(self) -> Any:
         return self.inner.overrides
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None,
+             limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
         self._deliver(move, joints)
         self.inner.move(move, joints, samples, limits, cap, accel_cap)

@@ -61,7 +61,7 @@ class PlannerStage(Protocol):
     # False: the stage does not time moves (``planner.untimed``), so they need no limits (nor numpy)
     needs_limits: bool
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
     def move_batch(self, batch: Batch, limits: dict[str, PlainLimits] | None, arcs: ArcTable | None = None) -> None: ...
@@ -174,8 +174,9 @@ class MotionStage:
                 self._check_samples(move, samples, start_time)
         if self.active is not None:
             self._user_output(self.active, _located(move))
-        self.planner.move(move, joints, samples, self._limits_for(move) if self.planner.needs_limits else None,
-                          cap, accel)
+        limits = None if not self.planner.needs_limits else \
+            self._plain_limits_for(move) if samples is None else self._limits_for(move)
+        self.planner.move(move, joints, samples, limits, cap, accel)
         self.joints = joints  # counted once the next stage took it (an embedder's callback may stop the run)
         self.moves += 1
 
@@ -402,14 +403,24 @@ class MotionStage:
         if move.kind == "home":
             import numpy as np
 
-            speed = move.feed / 60.0 if move.feed > 0 else None
-            return AxisLimits(np.array([speed or abs(j.home_velocity) or np.inf for j in self.config.joints]),
-                              self._joint_limits.acceleration)
+            return AxisLimits(np.array(self._home_velocity(move)), self._joint_limits.acceleration)
         limits = self._joint_limits if self._identity() else self._plugin_limits(move) or self._cartesian_limits
         if move.kind == "rapid":
             return AxisLimits(limits.velocity * self._rapid_velocity_factor,
                               limits.acceleration * self.config.g0_acceleration_factor)
         return limits
+
+    def _home_velocity(self, move: Move) -> list[float]:
+        """The joints' speeds of a homing move: its feed, else each joint's ``|homeVelocity|``."""
+        speed = move.feed / 60.0 if move.feed > 0 else None
+        return [float(speed or abs(j.home_velocity) or math.inf) for j in self.config.joints]
+
+    def _plain_limits_for(self, move: Move) -> PlainLimits:
+        """``_limits_for`` a move whose joints are its position (kinematics off, nothing sampled), as plain
+        floats: the planner times such moves without numpy."""
+        if move.kind == "home":
+            return PlainLimits(tuple(self._home_velocity(move)), self._straight_limits["linear"].acceleration)
+        return self._straight_limits["rapid" if move.kind == "rapid" else "linear"]
 
     @property
     def _rapid_velocity_factor(self) -> float:

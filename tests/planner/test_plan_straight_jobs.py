@@ -1,6 +1,7 @@
 """Whole jobs of straight moves on the compiled core: timed without numpy, to the same bytes as the Python core.
 
-``ecnc run --trace`` and ``--json`` of a G1 job and of a drilling job (the windows of straight moves are
+``ecnc run --trace`` and ``--json`` of a G1 job, a drilling job and a job of straight moves of every kind
+(moves one by one, exact stop, homing, a tool change; the windows of straight moves are
 planned in C, csrc/speedups_plan.c) must not load numpy at all; and the small versions of the
 benchmark jobs (benchmarks/bench_run.py's writers) and the examples run to the same trace, events,
 estimate and limits report on both cores (the Python core in a worker process, tests/core_outcome.py).
@@ -37,6 +38,29 @@ sys.exit(code)
 """
 
 
+# straight moves of every kind and state: the general path's single moves, exact stop and G64 P, an
+# override, a dwell, a rotary axis, a tool change (the macro's moves), homing, a canned cycle
+MIXED_JOB = """G21 G90 G64 P0.05
+G0 X10 Y10 Z5 M3 S1000
+G1 Z-1 F300 (plunge)
+#1 = 5
+G1 X[#1 * 4] Y20 F1200
+G61
+G1 X30
+G64
+M50 P120
+G1 Y40 A30
+G4 P0.5
+T2 M6
+G0 Z10
+G28
+G81 X5 Y5 Z-2 R1 F200
+X10
+G80
+M30
+"""
+
+
 def _bench() -> ModuleType:
     """benchmarks/bench_run.py, for its job writers (the jobs the figures are measured on)."""
     spec = importlib.util.spec_from_file_location("bench_run", ROOT / "benchmarks" / "bench_run.py")
@@ -49,7 +73,8 @@ def _bench() -> ModuleType:
 @pytest.fixture(scope="module")
 def jobs(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     bench, folder = _bench(), tmp_path_factory.mktemp("straight-jobs")
-    made = {"g1": folder / "g1.nc", "drill": folder / "drill.nc", "cam": folder / "cam.nc"}
+    made = {"g1": folder / "g1.nc", "drill": folder / "drill.nc", "cam": folder / "cam.nc", "mixed": folder / "mixed.nc"}
+    made["mixed"].write_text(MIXED_JOB)
     bench.write_g1_job(made["g1"], 6000)
     bench.write_drill_job(made["drill"], 1500)
     bench.write_cam_job(made["cam"], 3000)
@@ -57,7 +82,7 @@ def jobs(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
 
 
 @needs_c
-@pytest.mark.parametrize("name", ["g1", "drill"])
+@pytest.mark.parametrize("name", ["g1", "drill", "mixed"])
 @pytest.mark.parametrize("output", ["--trace", "--json"])
 def test_straight_jobs_are_timed_without_numpy(jobs: dict[str, Path], tmp_path: Path, name: str, output: str) -> None:
     args = [str(jobs[name]), "--trace", str(tmp_path / "trace.csv")] if output == "--trace" else [str(jobs[name]),
@@ -70,7 +95,7 @@ def test_straight_jobs_are_timed_without_numpy(jobs: dict[str, Path], tmp_path: 
         assert estimate["seconds"] > 0.0 and estimate["distance"]["feed"] > 0.0
     else:
         rows = (tmp_path / "trace.csv").read_text().splitlines()
-        assert len(rows) > 1000 and float(rows[-1].rsplit(",", 1)[1]) > 0.0
+        assert len(rows) > (10 if name == "mixed" else 1000) and float(rows[-1].rsplit(",", 1)[1]) > 0.0
 
 
 @pytest.fixture(scope="module")
@@ -93,11 +118,11 @@ def python_core() -> Iterator[Callable[[Path], str]]:
     worker.wait(timeout=60)
 
 
-@pytest.mark.parametrize("name", ["g1", "drill", "cam"])
+@pytest.mark.parametrize("name", ["g1", "drill", "cam", "mixed"])
 def test_benchmark_jobs_run_alike_on_both_cores(jobs: dict[str, Path], python_core: Callable[[Path], str],
                                                 name: str) -> None:
     compiled = outcome(jobs[name])
-    assert compiled.count("\n") > 1000 and compiled == python_core(jobs[name])
+    assert compiled.count("\n") > (10 if name == "mixed" else 1000) and compiled == python_core(jobs[name])
 
 
 EXAMPLES = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "examples").rglob("*.nc"))

@@ -94,7 +94,8 @@ class Planner:
         self._clear()
 
     # ------------------------------------------------------------------ input
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None,
+             limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
         """One move with the limits it runs against; ``cap`` and ``accel_cap`` are the path speed (mm/s) and
         acceleration (mm/s^2) the kinematics' joints allow."""

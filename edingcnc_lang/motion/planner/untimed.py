@@ -29,7 +29,8 @@ class Untimed:
     def __init__(self, overrides: Overrides) -> None:
         self.overrides = overrides
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None,
+             limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
         """Nothing to time: the embedding program's callbacks heard the move already (motion/callback_tap.py)."""
 
