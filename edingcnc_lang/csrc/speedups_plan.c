@@ -12,6 +12,7 @@
 #define KIND_STRAIGHT (-1)
 #define KIND_RAPID 0
 #define KIND_LINEAR 1
+#define KIND_ARC 2  /* (never planned here) */
 #define KIND_PROBE 3
 #define KIND_HOME 4
 
@@ -388,7 +389,7 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         kind = w.kind[i];
         if (kind == KIND_STRAIGHT)
             kind = w.kind[i] = feed > 0.0 ? KIND_LINEAR : KIND_RAPID;
-        if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME || kind == 2) {
+        if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME || kind == KIND_ARC) {
             PyErr_SetString(PyExc_ValueError, "plan_straight: a move of a kind or state it does not plan");
             goto done;
         }
