@@ -2,7 +2,7 @@
 reference (``Planner._commit``) does: the same bits in every move's times and speed, the estimate, the
 limits report and the speed the next window starts from.
 
-Random windows of rapids, feeds, probing and homing moves (zero-length moves, duplicate points, 90 and
+Random windows of rapids, feeds, probing and homing moves (and now and then an arc, whose window numpy plans) (zero-length moves, duplicate points, 90 and
 180 degree corners, collinear runs, rotary-only moves), exact stop on and off, G64 P, the feed override,
 several limit sets, moves one by one and in batches, with small windows so that windows are committed in
 part (``LOOKAHEAD``) and start from the speed the last one left; each job runs once with the C planner
@@ -21,7 +21,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import speedups
-from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.canon import Arc, Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.events import DwellEvent, OverrideEvent, PathControlEvent
 from edingcnc_lang.motion.planner import stage as planner_stage
@@ -55,7 +55,9 @@ operations = st.one_of(
     st.tuples(st.just("g64"), st.sampled_from([0.0, 0.0, 0.01, 0.1, 2.0])),
     st.tuples(st.just("g61")),
     st.tuples(st.just("override"), st.sampled_from([None, 50.0, 120.0, -1.0])),
-    st.tuples(st.just("dwell")))
+    st.tuples(st.just("dwell")),
+    # a half circle in XY: its window goes to numpy on both sides, and the next starts from its speed
+    st.tuples(st.just("arc"), st.sampled_from([0.5, 2.0, 5.0]), st.sampled_from([1, -1])))
 
 
 class Recorder:
@@ -108,6 +110,13 @@ def _run(ops: list[Any], limit_sets: list[PlainLimits], laf_angle: float, compil
                           list(range(line, line + len(ends))), ends, batch_feeds)
             planner.move_batch(batch, {"rapid": rapid, "linear": limit_sets[-1]})
             position = ends[-1]
+        elif op[0] == "arc":
+            radius, turn = op[1], op[2]
+            end = (position[0] + 2.0 * radius, *position[1:])
+            numpy_limits = AxisLimits(np.full(6, 100.0), np.full(6, 1000.0))
+            planner.move(Move("arc", "job.nc", line, position, end, 1200.0, Arc((position[0] + radius, position[1]),
+                                                                               "XY", turn)), end, None, numpy_limits)
+            position = end
         elif op[0] == "g64":
             planner.event(PathControlEvent("job.nc", line, "G64", op[1]))
         elif op[0] == "g61":
@@ -138,8 +147,8 @@ def test_the_c_planner_times_windows_of_straight_moves_as_the_reference(
             ops = [("g61",), *ops]
         compiled = _run(ops, limit_sets, laf_angle, True, patch)
         reference = _run(ops, limit_sets, laf_angle, False, patch)
-    moved = any(op[0] in ("move", "batch") for op in ops)
-    assert compiled[4] if moved else True  # the C planner took the windows
+    if any(op[0] in ("move", "batch") for op in ops) and not any(op[0] == "arc" for op in ops):
+        assert compiled[4]  # the C planner took the windows
     assert compiled[:4] == reference[:4]
 
 
