@@ -323,7 +323,7 @@ static PyObject *plan_list(const double *values, Py_ssize_t count)
 }
 
 /* plan_straight(origin, ends, feeds, n, count, kind_runs, state_runs, states, limit_sets, sharp_cos, start2,
- *               time) -> (t_end, peak, start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
+ *               time) -> (t_end, peak (bytes of doubles: few sinks read it), start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
  *                         low, high)
  * Plans the first n collected moves (straight ones: no arcs, no samples, no joints' caps, no G64 R) and
  * commits the first count: their end times and peak speeds, the squared speed the next window starts
@@ -444,7 +444,7 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         sums[rapid ? 0 : 1] += w.duration[i];
         sums[rapid ? 2 : 3] += w.xyz[i];
     }
-    if ((t_list = plan_list(t_end, count)) == NULL || (peak_list = plan_list(w.peak, count)) == NULL)
+    if ((t_list = plan_list(t_end, count)) == NULL || (peak_list = PyBytes_FromStringAndSize((const char *)w.peak, count * (Py_ssize_t)sizeof(double))) == NULL)
         goto done;
     if (count) {
         if ((low_list = plan_list(low, PLAN_AXES)) == NULL || (high_list = plan_list(high, PLAN_AXES)) == NULL)

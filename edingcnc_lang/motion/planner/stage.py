@@ -10,6 +10,7 @@ machine.  See docs/planner.md for the model and the decisions.
 from __future__ import annotations
 
 import math
+from array import array
 from collections import deque
 from collections.abc import Callable, Iterator, Sequence
 from itertools import chain
@@ -328,7 +329,9 @@ class Planner:
         self.estimate.add_moves(self.tool, rapid_seconds, feed_seconds, rapid_distance, feed_distance, count)
         if low is not None:
             self.limits.add_extremes(low, high)
-        self._emit(count, t_end, peak, None)
+        speeds = array("d")  # (as bytes: the trace never reads them, so they need not become floats)
+        speeds.frombytes(peak)
+        self._emit(count, t_end, speeds, None)
         if count:
             self.time = t_end[-1]
         self._drop(count)
@@ -351,7 +354,7 @@ class Planner:
         self._arc_tables = [left for table in self._arc_tables if len(left := table.after(count))]
 
     # ------------------------------------------------------------------ output
-    def _emit(self, count: int, ends: list[float], speeds: list[float],
+    def _emit(self, count: int, ends: list[float], speeds: Sequence[float],
               samples: Iterator[Samples | None] | None) -> None:
         """Hand the first ``count`` collected moves (their end times and peak speeds), and the events between
         them, to the sinks."""
