@@ -9,8 +9,8 @@ its joints, the limits it runs against and the speed the joints allow to the pla
 (``planner/``), which times it and feeds the output sinks.
 See docs/kinematics.md ("Running jobs") for the rules.
 
-numpy is imported by the sampling methods and for the limits a move is timed against (but the fast path's
-straight moves', ``PlainLimits``): while the
+numpy is imported by the sampling methods and for the limits a sampled move is timed against (a move whose
+joints are its position gets ``PlainLimits``, plain floats): while the
 joints are simply the position (no kinematics, trivial kinematics, no bend knife), no samples are
 written and nothing reads time (the planner is ``planner.untimed``), a run never loads it.
 """
@@ -98,8 +98,9 @@ class AxisLimits:
 
 @record(frozen=True)
 class PlainLimits:
-    """``AxisLimits`` as plain floats: those of the fast path's straight moves, which a planner times without
-    numpy (``Planner`` plans their windows in C on the compiled core)."""
+    """``AxisLimits`` as plain floats: those of the moves whose joints are their position (kinematics off,
+    nothing sampled), which a planner times without numpy (``Planner`` plans windows of straight ones in C
+    on the compiled core)."""
 
     velocity: tuple[float, ...]
     acceleration: tuple[float, ...]
