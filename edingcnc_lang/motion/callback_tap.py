@@ -19,7 +19,7 @@ from edingcnc_lang.errors import CallbackError, Cancelled, EcncError, Location
 
 if TYPE_CHECKING:
     from edingcnc_lang.motion.arc_table import ArcTable
-    from edingcnc_lang.motion.stage import AxisLimits, PlannerStage, Samples
+    from edingcnc_lang.motion.stage import AxisLimits, PlainLimits, PlannerStage, Samples
 
 
 class CallbackTap:
@@ -38,12 +38,13 @@ class CallbackTap:
     def overrides(self) -> Any:
         return self.inner.overrides
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None,
+             limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
         self._deliver(move, joints)
         self.inner.move(move, joints, samples, limits, cap, accel_cap)
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
+    def move_batch(self, batch: Batch, limits: dict[str, PlainLimits] | None, arcs: ArcTable | None = None) -> None:
         if self.on_move is None:  # only cancelling to watch: once per batch
             try:
                 if self.stopped is not None or self.cancelled:

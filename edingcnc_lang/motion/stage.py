@@ -9,7 +9,8 @@ its joints, the limits it runs against and the speed the joints allow to the pla
 (``planner/``), which times it and feeds the output sinks.
 See docs/kinematics.md ("Running jobs") for the rules.
 
-numpy is imported by the sampling methods and for the limits a move is timed against: while the
+numpy is imported by the sampling methods and for the limits a sampled move is timed against (a move whose
+joints are its position gets ``PlainLimits``, plain floats): while the
 joints are simply the position (no kinematics, trivial kinematics, no bend knife), no samples are
 written and nothing reads time (the planner is ``planner.untimed``), a run never loads it.
 """
@@ -60,10 +61,10 @@ class PlannerStage(Protocol):
     # False: the stage does not time moves (``planner.untimed``), so they need no limits (nor numpy)
     needs_limits: bool
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None: ...
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None: ...
+    def move_batch(self, batch: Batch, limits: dict[str, PlainLimits] | None, arcs: ArcTable | None = None) -> None: ...
 
     def event(self, event: Event) -> None: ...
 
@@ -95,6 +96,16 @@ class AxisLimits:
     acceleration: np.ndarray
 
 
+@record(frozen=True)
+class PlainLimits:
+    """``AxisLimits`` as plain floats: those of the moves whose joints are their position (kinematics off,
+    nothing sampled), which a planner times without numpy (``Planner`` plans windows of straight ones in C
+    on the compiled core)."""
+
+    velocity: tuple[float, ...]
+    acceleration: tuple[float, ...]
+
+
 def _positive(values: Sequence[float]) -> np.ndarray:
     """Limits as an array; a plug-in's answer of 0 or less means "not set" rather than "cannot move"
     (the ini's own limits are checked to be above 0 when it is read, see config/machine_config.py)."""
@@ -102,6 +113,11 @@ def _positive(values: Sequence[float]) -> np.ndarray:
 
     array = np.asarray(values, dtype=float)
     return np.where(array > 0.0, array, np.inf)
+
+
+def _plain_positive(value: float) -> float:
+    """``_positive`` of one limit, as a Python float."""
+    return float(value) if value > 0.0 else math.inf
 
 
 def _located(move: Move) -> Location:
@@ -159,8 +175,9 @@ class MotionStage:
                 self._check_samples(move, samples, start_time)
         if self.active is not None:
             self._user_output(self.active, _located(move))
-        self.planner.move(move, joints, samples, self._limits_for(move) if self.planner.needs_limits else None,
-                          cap, accel)
+        limits = None if not self.planner.needs_limits else \
+            self._plain_limits_for(move) if samples is None else self._limits_for(move)
+        self.planner.move(move, joints, samples, limits, cap, accel)
         self.joints = joints  # counted once the next stage took it (an embedder's callback may stop the run)
         self.moves += 1
 
@@ -208,10 +225,15 @@ class MotionStage:
             self.joints = batch.end
 
     @cached_property
-    def _straight_limits(self) -> dict[str, AxisLimits]:
-        """The limits of the fast path's rapids and feed moves (kinematics off)."""
-        origin = (0.0,) * 6
-        return {kind: self._limits_for(Move(kind, "", 0, origin, origin)) for kind in ("rapid", "linear")}
+    def _straight_limits(self) -> dict[str, PlainLimits]:
+        """The limits of the fast path's rapids and feed moves (kinematics off: the joints'), as ``_limits_for``
+        gives them, worked out without numpy."""
+        joints = self.config.joints
+        velocity = [_plain_positive(j.max_velocity) for j in joints]
+        acceleration = [_plain_positive(j.max_acceleration) for j in joints]
+        rapid_v, rapid_a = self._rapid_velocity_factor, self.config.g0_acceleration_factor
+        return {"rapid": PlainLimits(tuple(v * rapid_v for v in velocity), tuple(a * rapid_a for a in acceleration)),
+                "linear": PlainLimits(tuple(velocity), tuple(acceleration))}
 
     def event(self, event: Event) -> None:
         if isinstance(event, DwellEvent):
@@ -382,14 +404,24 @@ class MotionStage:
         if move.kind == "home":
             import numpy as np
 
-            speed = move.feed / 60.0 if move.feed > 0 else None
-            return AxisLimits(np.array([speed or abs(j.home_velocity) or np.inf for j in self.config.joints]),
-                              self._joint_limits.acceleration)
+            return AxisLimits(np.array(self._home_velocity(move)), self._joint_limits.acceleration)
         limits = self._joint_limits if self._identity() else self._plugin_limits(move) or self._cartesian_limits
         if move.kind == "rapid":
             return AxisLimits(limits.velocity * self._rapid_velocity_factor,
                               limits.acceleration * self.config.g0_acceleration_factor)
         return limits
+
+    def _home_velocity(self, move: Move) -> list[float]:
+        """The joints' speeds of a homing move: its feed, else each joint's ``|homeVelocity|``."""
+        speed = move.feed / 60.0 if move.feed > 0 else None
+        return [float(speed or abs(j.home_velocity) or math.inf) for j in self.config.joints]
+
+    def _plain_limits_for(self, move: Move) -> PlainLimits:
+        """``_limits_for`` a move whose joints are its position (kinematics off, nothing sampled), as plain
+        floats: the planner times such moves without numpy."""
+        if move.kind == "home":
+            return PlainLimits(tuple(self._home_velocity(move)), self._straight_limits["linear"].acceleration)
+        return self._straight_limits["rapid" if move.kind == "rapid" else "linear"]
 
     @property
     def _rapid_velocity_factor(self) -> float:

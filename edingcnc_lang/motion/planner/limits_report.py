@@ -52,6 +52,12 @@ class LimitsReport:
                                   starts[:, :1].T, ends[:, identity].T])
         self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
 
+    def add_extremes(self, low: list[float], high: list[float]) -> None:
+        """What ``add`` does for straight moves whose joints are their positions, given the lowest and highest
+        value of each axis over them (the C planner's window works them out)."""
+        self._widen("axis", low, high)
+        self._widen("joint", low, high)
+
     @staticmethod
     def joint_extremes(joints: np.ndarray) -> np.ndarray:
         """What ``add`` needs of a move's sampled joints ((N, 6)): their lowest and highest value per joint,

@@ -47,7 +47,8 @@ def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.nda
     alim = alim if alim.ndim == 2 else alim[:, None]
     delta = end - start
     square = delta * delta
-    linear2, rotary2 = square[:3].sum(axis=0), square[3:].sum(axis=0)
+    # summed axis by axis in order (numpy's sum over the axes may pair them otherwise): the C planner's order
+    linear2, rotary2 = square[0] + square[1] + square[2], square[3] + square[4] + square[5]
     linear = np.sqrt(linear2)
     length = np.where(linear2 > 0.0, linear, np.sqrt(rotary2))
     span = np.abs(delta)

@@ -10,15 +10,18 @@ machine.  See docs/planner.md for the model and the decisions.
 from __future__ import annotations
 
 import math
+from array import array
 from collections import deque
 from collections.abc import Callable, Iterator, Sequence
 from itertools import chain
 from typing import TYPE_CHECKING, Any, Protocol
 
+from edingcnc_lang import speedups
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.events import (DialogEvent, DwellEvent, EndEvent, ExecEvent, OperatorWaitEvent, OverrideEvent,
                                   PathControlEvent, PauseEvent, SpindleEvent, ToolChangeEvent)
 from edingcnc_lang.config.machine_config import MachineConfig
+from edingcnc_lang.motion.planner.angles import turns_beyond
 from edingcnc_lang.motion.planner.estimate import Estimate
 from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.planner.limits_report import LimitsReport
@@ -29,7 +32,7 @@ if TYPE_CHECKING:
     import numpy as np
 
     from edingcnc_lang.motion.arc_table import ArcTable
-    from edingcnc_lang.motion.stage import AxisLimits, Samples
+    from edingcnc_lang.motion.stage import AxisLimits, PlainLimits, Samples
 
 # Move kinds as small integers (the window keeps one per move).
 RAPID, LINEAR, ARC, PROBE, HOME = range(5)
@@ -43,6 +46,9 @@ LOOKAHEAD = 256    # moves the machine keeps in hand beyond what it commits to (
 STOPPING_EVENTS = (DwellEvent, ToolChangeEvent, PauseEvent, EndEvent, SpindleEvent, ExecEvent, DialogEvent,
                    OperatorWaitEvent)
 
+
+# A window of straight moves planned in C (csrc/speedups_plan.c), on the compiled core: None on the Python one
+_PLAN_STRAIGHT = speedups.compiled("plan_straight")
 
 # What a move runs under: exact stop, G64 P, the feed override, the limits of rapids and of the rest, G64 R S D.
 State = tuple[bool, float, float, int, int, tuple[float, float, float]]
@@ -80,8 +86,8 @@ class Planner:
         self.tolerance = config.g64_p
         # G64 R, S (degrees) and D (mm) as the job programmed them (manual pp. 37-40); NaN R: none yet
         self.laf: tuple[float, float, float] = (math.nan, math.nan, 0.0)
-        self._limit_sets: list[tuple[np.ndarray, np.ndarray]] = []
-        self._limit_index: dict[tuple[bytes, bytes], int] = {}
+        self._limit_sets: list[tuple[tuple[float, ...], tuple[float, ...]]] = []  # (velocity, acceleration)
+        self._limit_index: dict[tuple[tuple[float, ...], tuple[float, ...]], int] = {}
         self._states: list[State] = []
         self._state_index: dict[State, int] = {}
         self._start2 = 0.0
@@ -89,7 +95,8 @@ class Planner:
         self._clear()
 
     # ------------------------------------------------------------------ input
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None,
+             limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
         """One move with the limits it runs against; ``cap`` and ``accel_cap`` are the path speed (mm/s) and
         acceleration (mm/s^2) the kinematics' joints allow."""
@@ -116,7 +123,7 @@ class Planner:
         self._queue.append(("move", move, joints))
         self._after_add()
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
+    def move_batch(self, batch: Batch, limits: dict[str, PlainLimits] | None, arcs: ArcTable | None = None) -> None:
         """Moves in bulk whose joints are their positions (the interpreter's fast path).
 
         Per move only the end and the feed are kept (a straight move is a rapid if its feed is 0),
@@ -202,12 +209,13 @@ class Planner:
         self._arc_tables: list[ArcTable] = []  # the frames of the arcs among them, in order
         self._queue: deque[tuple[Any, ...]] = deque()
 
-    def _limit_id(self, limits: AxisLimits) -> int:
-        key = (limits.velocity.tobytes(), limits.acceleration.tobytes())
+    def _limit_id(self, limits: AxisLimits | PlainLimits) -> int:
+        """The index of a set of limits in a small table (kept as plain floats: the C planner reads them too)."""
+        key = (tuple(map(float, limits.velocity)), tuple(map(float, limits.acceleration)))
         index = self._limit_index.get(key)
         if index is None:
             index = self._limit_index[key] = len(self._limit_sets)
-            self._limit_sets.append((limits.velocity, limits.acceleration))
+            self._limit_sets.append(key)
         return index
 
     def _state_id(self, rapid_limits: int, other_limits: int, feed_factor: float) -> int:
@@ -233,8 +241,12 @@ class Planner:
         """Plan the first ``horizon`` collected moves (default: all), then commit the first ``count`` of them
         (all: the machine stops after them).
 
-        numpy and the model load here, with the first move: a job that does not move never needs them.
+        numpy and the model load here, with the first move: a job that does not move never needs them, and
+        on the compiled core a window of straight moves (``_straight``) never does.
         """
+        if self._straight():
+            self._commit_straight(count, horizon)
+            return
         import numpy as np
 
         from edingcnc_lang.motion.planner.junctions import corner_speeds2
@@ -263,7 +275,7 @@ class Planner:
         speed = np.minimum(self._cap.array(float)[:n], np.where(fastest, np.inf, feed * factor[state] / 60.0))
         cfg = self.config
         if (limit == limit[0]).all():  # the usual case: one set of limits for the whole window
-            vlim, alim = self._limit_sets[int(limit[0])]
+            vlim, alim = (np.array(column) for column in self._limit_sets[int(limit[0])])
         else:
             vlim = np.array([v for v, _ in self._limit_sets])[limit].T
             alim = np.array([a for _, a in self._limit_sets])[limit].T
@@ -278,7 +290,8 @@ class Planner:
                                 tolerance[state[after]], cfg.laf_angle,
                                 None if np.isnan(laf[0]).all() else (laf[0, state[after]], laf[1, state[after]],
                                                                      laf[2, state[after]]))
-        corner = np.where(exact[:-1] | exact[1:], 0.0, np.minimum(corner, np.minimum(vmax[:-1], vmax[1:]) ** 2))
+        with np.errstate(over="ignore"):  # a speed limit past 1e154 squares to inf: no limit, as it is
+            corner = np.where(exact[:-1] | exact[1:], 0.0, np.minimum(corner, np.minimum(vmax[:-1], vmax[1:]) ** 2))
         first = 0.0 if len(exact) and exact[0] else self._start2
         node2 = plan_nodes(length, accel, np.concatenate(([first], corner, [0.0]))[:len(moving) + 1], first)
         planned = profiles(length, vmax, accel, node2)
@@ -294,15 +307,39 @@ class Planner:
         if self.want_samples and self.joints_of is not None:
             samples = time_true_samples(starts[:, :count], ends[:, :count], arcs, moving[:done], planned, t_end,
                                         duration[:count], cfg.interpolation_time, self.joints_of)
-        self._emit(count, t_end, peak[:count], samples)
+        self._emit(count, t_end.tolist(), peak[:count].tolist(), samples)
         if count:
             self.time = float(t_end[-1])
         self._drop(count)
 
+    def _straight(self) -> bool:
+        """Whether the C planner takes this window: straight moves only (no arcs), each timed against the
+        limits of its state (no joints' caps, no samples wanted or kept) and no G64 R programmed."""
+        return (_PLAN_STRAIGHT is not None and not self._arc_tables and not self._sampled and not self.want_samples
+                and all(cap == math.inf for cap in chain(self._cap.values, self._accel_cap.values))
+                and all(math.isnan(self._states[state][5][0]) for state in self._state.values))
+
+    def _commit_straight(self, count: int, horizon: int | None) -> None:
+        """``_commit`` of a window of straight moves, in C: the same numbers to the bit (tests/planner)."""
+        n = len(self._ends) if horizon is None else horizon
+        t_end, peak, self._start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance, low, high = \
+            _PLAN_STRAIGHT(self._origin, self._ends, self._feed, n, count, (self._kind.values, self._kind.counts),
+                           (self._state.values, self._state.counts), self._states, self._limit_sets,
+                           turns_beyond(180.0 - self.config.laf_angle), self._start2, self.time)
+        self.estimate.add_moves(self.tool, rapid_seconds, feed_seconds, rapid_distance, feed_distance, count)
+        if low is not None:
+            self.limits.add_extremes(low, high)
+        speeds = array("d")  # (as bytes: the trace never reads them, so they need not become floats)
+        speeds.frombytes(peak)
+        self._emit(count, t_end, speeds, None)
+        if count:
+            self.time = t_end[-1]
+        self._drop(count)
+
     def _account(self, kinds: np.ndarray, duration: np.ndarray, distance: np.ndarray) -> None:
         rapid = (kinds == RAPID) | (kinds == HOME)
-        self.estimate.add_moves(self.tool, float(duration[rapid].sum()), float(duration[~rapid].sum()),
-                                float(distance[rapid].sum()), float(distance[~rapid].sum()), len(kinds))
+        self.estimate.add_moves(self.tool, _in_order(duration[rapid]), _in_order(duration[~rapid]),
+                                _in_order(distance[rapid]), _in_order(distance[~rapid]), len(kinds))
 
     def _drop(self, count: int) -> None:
         """Forget the first ``count`` collected moves (already committed)."""
@@ -317,10 +354,10 @@ class Planner:
         self._arc_tables = [left for table in self._arc_tables if len(left := table.after(count))]
 
     # ------------------------------------------------------------------ output
-    def _emit(self, count: int, t_end: np.ndarray, peak: np.ndarray,
+    def _emit(self, count: int, ends: list[float], speeds: Sequence[float],
               samples: Iterator[Samples | None] | None) -> None:
-        """Hand the first ``count`` collected moves, and the events between them, to the sinks."""
-        ends, speeds = t_end.tolist(), peak.tolist()
+        """Hand the first ``count`` collected moves (their end times and peak speeds), and the events between
+        them, to the sinks."""
         index = 0
         queue = self._queue
         while queue and index < count:
@@ -360,3 +397,9 @@ class Planner:
                                    f"{event.override} override knob (not timed); the run goes on at {knob:g} %")
         for sink in self.sinks:
             sink.event(event)
+
+
+def _in_order(values: np.ndarray) -> float:
+    """The sum of ``values`` added one after the other (numpy's ``sum`` adds in pairs, which the C planner's
+    window would have to copy block for block)."""
+    return float(values.cumsum()[-1]) if len(values) else 0.0

@@ -18,7 +18,7 @@ from edingcnc_lang.motion.planner.overrides import Overrides
 
 if TYPE_CHECKING:
     from edingcnc_lang.motion.arc_table import ArcTable
-    from edingcnc_lang.motion.stage import AxisLimits, Samples
+    from edingcnc_lang.motion.stage import AxisLimits, PlainLimits, Samples
 
 
 class Untimed:
@@ -29,11 +29,12 @@ class Untimed:
     def __init__(self, overrides: Overrides) -> None:
         self.overrides = overrides
 
-    def move(self, move: Move, joints: Pose, samples: Samples | None, limits: AxisLimits | None,
+    def move(self, move: Move, joints: Pose, samples: Samples | None,
+             limits: AxisLimits | PlainLimits | None,
              cap: float = math.inf, accel_cap: float = math.inf) -> None:
         """Nothing to time: the embedding program's callbacks heard the move already (motion/callback_tap.py)."""
 
-    def move_batch(self, batch: Batch, limits: dict[str, AxisLimits] | None, arcs: ArcTable | None = None) -> None:
+    def move_batch(self, batch: Batch, limits: dict[str, PlainLimits] | None, arcs: ArcTable | None = None) -> None:
         """As ``move``, for a batch."""
 
     def event(self, event: Event) -> None:
