@@ -8,6 +8,7 @@
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
+ * hypot:           math.hypot of two numbers as the other parts compute it (a test entry point).
  *
  * One translation unit in parts, a part per job (csrc/speedups_*.c), included below in order: their
  * helpers stay static, private to the extension.
@@ -19,6 +20,7 @@
 #define Py_LIMITED_API 0x030A0000
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,6 +48,7 @@ static PyMethodDef methods[] = {
     {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
     {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
+    {"hypot", hypot_entry, METH_VARARGS, "math.hypot(a, b) as the compiled core computes it, and whose algorithm."},
     {NULL, NULL, 0, NULL},
 };
 
@@ -60,15 +63,8 @@ PyMODINIT_FUNC PyInit__speedups(void)
     rapid_kind = PyUnicode_InternFromString("rapid");
     if (linear_kind == NULL || rapid_kind == NULL)
         return NULL;
-    {
-        PyObject *math = PyImport_ImportModule("math");
-        if (math == NULL)
-            return NULL;
-        math_hypot = PyObject_GetAttrString(math, "hypot");
-        Py_DECREF(math);
-        if (math_hypot == NULL)
-            return NULL;
-    }
+    if (hypot_init() < 0)
+        return NULL;
     {
         static const char *names[4] = {"center", "plane", "turn", "full_turns"};
         int k;
