@@ -5,6 +5,7 @@
  * plain_arcs:      machine/bulk.py's arc_run over BulkPath._arc_of_words (runs of arc lines with centre words or R).
  * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
  * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
+ * arc_frame_bytes: the same as the doubles of a bytearray (motion/arc_table.py's ArcTable).
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
@@ -22,6 +23,7 @@
 #include <Python.h>
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -46,6 +48,7 @@ static PyMethodDef methods[] = {
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
     {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
+    {"arc_frame_bytes", arc_frame_bytes, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled, as doubles in a bytearray."},
     {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
     {"hypot", hypot_entry, METH_VARARGS, "math.hypot(a, b) as the compiled core computes it, and whose algorithm."},

@@ -84,14 +84,32 @@ static PyObject *math_hypot;
 static enum { HYPOT_CALL, HYPOT_310, HYPOT_312 } hypot_kind = HYPOT_CALL;
 static double py_nan = NAN;  /* CPython's Py_NAN: 3.10's is -nan (HUGE_VAL * 0.), later ones +nan */
 
+/* frexp's exponent of max (> 0, finite) and ldexp(1.0, -exponent), by the bits where both are normal numbers
+   (the same values; the library calls otherwise). */
+static inline double norm_scale(double max, int *max_e)
+{
+    uint64_t bits;
+    int field;
+    memcpy(&bits, &max, sizeof bits);
+    field = (int)((bits >> 52) & 0x7ff);
+    if (field >= 2 && field <= 2044) {
+        double scale;
+        *max_e = field - 1022;
+        bits = (uint64_t)(1023 - *max_e) << 52;
+        memcpy(&scale, &bits, sizeof scale);
+        return scale;
+    }
+    frexp(max, max_e);
+    return *max_e < -1023 ? 0.0 : ldexp(1.0, -*max_e);
+}
+
 static double norm_310(const double *vec, double max)  /* 3.10 and 3.11, n = 2 */
 {
     const double T27 = 134217729.0;  /* ldexp(1.0, 27) + 1.0 */
     double x, scale, oldcsum, csum = 1.0, frac1 = 0.0, frac2 = 0.0, frac3 = 0.0, t, hi, lo, h;
     int max_e, i;
-    frexp(max, &max_e);
+    scale = norm_scale(max, &max_e);
     if (max_e >= -1023) {
-        scale = ldexp(1.0, -max_e);
         for (i = 0; i < 2; i++) {
             x = vec[i] * scale;
             t = x * T27;
@@ -141,12 +159,11 @@ static double norm_312(const double *vec, double max)  /* 3.12 on, n = 2 */
 {
     double x, h, scale, csum = 1.0, frac1 = 0.0, frac2 = 0.0, hi, lo, sum;
     int max_e, i;
-    frexp(max, &max_e);
+    scale = norm_scale(max, &max_e);
     if (max_e < -1023) {  /* subnormals to normals */
         double scaled[2] = {vec[0] / DBL_MIN, vec[1] / DBL_MIN};
         return DBL_MIN * norm_312(scaled, max / DBL_MIN);
     }
-    scale = ldexp(1.0, -max_e);
     for (i = 0; i < 2; i++) {
         x = vec[i] * scale;
         hi = x * x;  /* dl_mul */
@@ -342,6 +359,12 @@ static PyObject *new_arc(PyObject *cls, PyObject *center, PyObject *plane, PyObj
             Py_CLEAR(made);
     for (k = 0; k < 4; k++)
         Py_XDECREF(values[k]);
+    /* a frozen record of a pair of floats, a str and two ints can be in no reference cycle: the collector need
+       not walk the thousands a job keeps (as pose_tuple's poses) */
+    if (made != NULL) {
+        PyObject_GC_UnTrack(made);
+        PyObject_GC_UnTrack(center);
+    }
     return made;
 }
 
@@ -617,33 +640,35 @@ static PyObject *arc_frame(PyObject *self, PyObject *args)
     return Py_BuildValue("ii(dd)ddddd", u, v, cu, cv, out[0], out[1], out[2], out[3], out[4]);
 }
 
-/* kinematics/trajectory.py's arc_frame_rows, compiled: the frames of a batch's arcs (canon.Arc records, None
- * for a straight move), ARC_ROW numbers each, as arc_geometry and arc_frame make them. */
-static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
+/* The frame numbers of a batch's arcs, ARC_ROW (10) doubles each, grown as the arcs are read. */
+struct frame_buffer {
+    double *rows;
+    Py_ssize_t count, room;
+};
+
+/* The frames of a batch's arcs (canon.Arc records, None for a straight move) into ``out``, as arc_geometry and
+ * arc_frame make them: -1 with an error set (``out`` is freed). */
+static int fill_frame_rows(PyObject *start_obj, PyObject *ends, PyObject *arcs, struct frame_buffer *out)
 {
-    PyObject *start_obj, *ends, *arcs, *rows;
     double previous[6], end[6];
     Py_ssize_t count, index;
-    (void)self;
-    if (!PyArg_ParseTuple(args, "OOO", &start_obj, &ends, &arcs))
-        return NULL;
+    out->rows = NULL;
+    out->count = out->room = 0;
     if (read_six(start_obj, previous) < 0 || (count = PySequence_Size(arcs)) < 0)
-        return NULL;
-    if ((rows = PyList_New(0)) == NULL)
-        return NULL;
+        return -1;
     for (index = 0; index < count; index++) {
         PyObject *end_obj = PySequence_GetItem(ends, index), *arc = PySequence_GetItem(arcs, index);
         PyObject *center = NULL, *plane = NULL, *turn = NULL, *full = NULL;
         int failed = end_obj == NULL || arc == NULL || read_six(end_obj, end) < 0;
         if (!failed && arc != Py_None) {
             const char *name;
-            double c1 = 0.0, c2 = 0.0, swap, row[10];
+            double c1 = 0.0, c2 = 0.0, swap, *row;
             long turns = 0, full_turns = 0;
-            int normal = 2, k;
-            failed = (center = PyObject_GetAttrString(arc, "center")) == NULL
-                || (plane = PyObject_GetAttrString(arc, "plane")) == NULL
-                || (turn = PyObject_GetAttrString(arc, "turn")) == NULL
-                || (full = PyObject_GetAttrString(arc, "full_turns")) == NULL
+            int normal = 2;
+            failed = (center = PyObject_GetAttr(arc, arc_fields[0])) == NULL
+                || (plane = PyObject_GetAttr(arc, arc_fields[1])) == NULL
+                || (turn = PyObject_GetAttr(arc, arc_fields[2])) == NULL
+                || (full = PyObject_GetAttr(arc, arc_fields[3])) == NULL
                 || item_double(center, 0, &c1) < 0 || item_double(center, 1, &c2) < 0
                 || (name = PyUnicode_AsUTF8AndSize(plane, NULL)) == NULL
                 || ((turns = PyLong_AsLong(turn)) == -1 && PyErr_Occurred())
@@ -663,7 +688,19 @@ static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
                 PyErr_SetString(PyExc_ValueError, "an arc's turn is non-zero");
                 failed = 1;
             }
+            if (!failed && out->count == out->room) {
+                Py_ssize_t room = out->room ? 2 * out->room : 64;
+                double *grown = PyMem_Realloc(out->rows, (size_t)room * 10 * sizeof(double));
+                if (grown == NULL) {
+                    PyErr_NoMemory();
+                    failed = 1;
+                } else {
+                    out->rows = grown;
+                    out->room = room;
+                }
+            }
             if (!failed) {
+                row = out->rows + 10 * out->count;
                 row[0] = (double)index;
                 row[1] = (double)((normal + 1) % 3);
                 row[2] = (double)((normal + 2) % 3);
@@ -671,9 +708,8 @@ static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
                 row[4] = c2;
                 failed = frame_of(previous, end, c1, c2, normal, (int)(turns * (full_turns > 1 ? full_turns : 1)),
                                   full_turns ? INFINITY : -1.0, row + 5) < 0;
+                out->count += !failed;
             }
-            for (k = 0; !failed && k < 10; k++)
-                failed = append_new(rows, PyFloat_FromDouble(row[k])) < 0;
         }
         Py_XDECREF(center);
         Py_XDECREF(plane);
@@ -682,10 +718,47 @@ static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
         Py_XDECREF(end_obj);
         Py_XDECREF(arc);
         if (failed) {
-            Py_DECREF(rows);
-            return NULL;
+            PyMem_Free(out->rows);
+            out->rows = NULL;
+            return -1;
         }
         memcpy(previous, end, sizeof previous);
     }
+    return 0;
+}
+
+/* kinematics/trajectory.py's arc_frame_rows, compiled: the frames of a batch's arcs, ARC_ROW numbers each
+ * (one flat list). */
+static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
+{
+    PyObject *start_obj, *ends, *arcs, *rows;
+    struct frame_buffer frames;
+    Py_ssize_t k;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOO", &start_obj, &ends, &arcs) || fill_frame_rows(start_obj, ends, arcs, &frames) < 0)
+        return NULL;
+    rows = PyList_New(10 * frames.count);
+    for (k = 0; rows != NULL && k < 10 * frames.count; k++) {
+        PyObject *number = PyFloat_FromDouble(frames.rows[k]);
+        if (number == NULL)
+            Py_CLEAR(rows);
+        else
+            PyList_SetItem(rows, k, number);
+    }
+    PyMem_Free(frames.rows);
     return rows;
+}
+
+/* The same frames as the doubles of a bytearray (native order): what motion/arc_table.py's ArcTable reads
+ * as an array without a float object per number (array("d", arc_frame_rows(...)).tobytes()). */
+static PyObject *arc_frame_bytes(PyObject *self, PyObject *args)
+{
+    PyObject *start_obj, *ends, *arcs, *made;
+    struct frame_buffer frames;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOO", &start_obj, &ends, &arcs) || fill_frame_rows(start_obj, ends, arcs, &frames) < 0)
+        return NULL;
+    made = PyByteArray_FromStringAndSize((const char *)frames.rows, frames.count * 10 * (Py_ssize_t)sizeof(double));
+    PyMem_Free(frames.rows);
+    return made;
 }

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import os
+from array import array
 import struct
 import subprocess
 import sys
@@ -16,6 +17,10 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from edingcnc_lang.canon import Arc
+from edingcnc_lang.kinematics.trajectory import arc_frame_rows
+from edingcnc_lang.motion.arc_table import ArcTable
 
 pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
@@ -47,6 +52,23 @@ def test_the_supported_pythons_run_the_ported_hypot() -> None:
     assert kind[0] == 5.0
     if (3, 10) <= sys.version_info[:2] <= (3, 13):
         assert kind[1] == ("3.10" if sys.version_info < (3, 12) else "3.12")
+
+
+coordinates = st.one_of(st.floats(-1e4, 1e4), st.sampled_from([0.0, -0.0, 5.0, -5.0, 1e-9]))
+poses = st.tuples(*[coordinates] * 6)
+arcs = st.builds(Arc, st.tuples(coordinates, coordinates), st.sampled_from(["XY", "XZ", "YZ"]),
+                 st.sampled_from([1, -1]), st.sampled_from([0, 0, 1, 3]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(poses, st.lists(st.tuples(poses, st.none() | arcs), max_size=8))
+def test_the_frames_of_a_batchs_arcs_as_doubles_are_the_same(start: tuple[float, ...],
+                                                             moves: list[tuple[tuple[float, ...], Arc | None]]) -> None:
+    """The bytes ArcTable reads on the compiled core are the doubles of the Python rows, and so is its table."""
+    ends, arcs_of = [end for end, _ in moves], [arc for _, arc in moves]
+    rows = arc_frame_rows(start, ends, arcs_of)
+    assert bytes(compiled.arc_frame_bytes(start, ends, arcs_of)) == array("d", rows).tobytes()
+    assert ArcTable.of(start, ends, arcs_of).rows.tobytes() == array("d", rows).tobytes()
 
 
 def _arc_job(r_form: bool) -> str:
