@@ -9,6 +9,7 @@
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
+ * arcs_beyond:     motion/reach.py's arcs_beyond (whether an arc of a batch reaches outside the limits).
  * hypot:           math.hypot of two numbers as the other parts compute it (a test entry point).
  *
  * One translation unit in parts, a part per job (csrc/speedups_*.c), included below in order: their
@@ -51,6 +52,7 @@ static PyMethodDef methods[] = {
     {"arc_frame_bytes", arc_frame_bytes, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled, as doubles in a bytearray."},
     {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
+    {"arcs_beyond", arcs_beyond, METH_VARARGS, "motion.reach.arcs_beyond, compiled."},
     {"hypot", hypot_entry, METH_VARARGS, "math.hypot(a, b) as the compiled core computes it, and whose algorithm."},
     {NULL, NULL, 0, NULL},
 };

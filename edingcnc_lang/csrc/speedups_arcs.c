@@ -646,85 +646,185 @@ struct frame_buffer {
     Py_ssize_t count, room;
 };
 
-/* The frames of a batch's arcs (canon.Arc records, None for a straight move) into ``out``, as arc_geometry and
- * arc_frame make them: -1 with an error set (``out`` is freed). */
-static int fill_frame_rows(PyObject *start_obj, PyObject *ends, PyObject *arcs, struct frame_buffer *out)
+/* A canon.Arc record as arc_geometry reads it: its centre in the plane's axis order (c1, c2), the normal axis of
+   canon.PLANES (its in-plane axes (first, second) are (u, v) = ((normal + 1) % 3, (normal + 2) % 3)), the signed
+   turns and arc_sweep's epsilon.  -1 with an error set. */
+static int read_arc_record(PyObject *arc, double *c1, double *c2, int *normal, int *turns, double *epsilon)
+{
+    PyObject *center = NULL, *plane = NULL, *turn = NULL, *full = NULL;
+    const char *name = NULL;
+    long turn_value = 0, full_turns = 0;
+    int failed = (center = PyObject_GetAttr(arc, arc_fields[0])) == NULL
+        || (plane = PyObject_GetAttr(arc, arc_fields[1])) == NULL
+        || (turn = PyObject_GetAttr(arc, arc_fields[2])) == NULL
+        || (full = PyObject_GetAttr(arc, arc_fields[3])) == NULL
+        || item_double(center, 0, c1) < 0 || item_double(center, 1, c2) < 0
+        || (name = PyUnicode_AsUTF8AndSize(plane, NULL)) == NULL
+        || ((turn_value = PyLong_AsLong(turn)) == -1 && PyErr_Occurred())
+        || ((full_turns = PyLong_AsLong(full)) == -1 && PyErr_Occurred());
+    Py_XDECREF(center);
+    Py_XDECREF(plane);
+    Py_XDECREF(turn);
+    Py_XDECREF(full);
+    if (failed)
+        return -1;
+    if (strcmp(name, "XZ") == 0) {
+        double swap = *c1;
+        *normal = 1;
+        *c1 = *c2, *c2 = swap;  /* the canon names the XZ centre (x, z) */
+    } else if (strcmp(name, "YZ") == 0) {
+        *normal = 0;
+    } else if (strcmp(name, "XY") == 0) {
+        *normal = 2;
+    } else {
+        PyErr_SetString(PyExc_ValueError, "an arc's plane is XY, XZ or YZ");
+        return -1;
+    }
+    if (turn_value == 0) {
+        PyErr_SetString(PyExc_ValueError, "an arc's turn is non-zero");
+        return -1;
+    }
+    *turns = (int)(turn_value * (full_turns > 1 ? full_turns : 1));
+    *epsilon = full_turns ? INFINITY : -1.0;
+    return 0;
+}
+
+/* Visit each arc of a batch (moves from start through ends, arcs[i] None for a straight move) with its start and
+   end poses and record: visit returns 0 to go on, 1 to stop (then this returns 1), -1 on an error (with it set). */
+typedef int (*arc_visit)(void *data, Py_ssize_t index, const double *start, const double *end, PyObject *arc);
+
+static int each_arc(PyObject *start_obj, PyObject *ends, PyObject *arcs, arc_visit visit, void *data)
 {
     double previous[6], end[6];
     Py_ssize_t count, index;
-    out->rows = NULL;
-    out->count = out->room = 0;
     if (read_six(start_obj, previous) < 0 || (count = PySequence_Size(arcs)) < 0)
         return -1;
     for (index = 0; index < count; index++) {
         PyObject *end_obj = PySequence_GetItem(ends, index), *arc = PySequence_GetItem(arcs, index);
-        PyObject *center = NULL, *plane = NULL, *turn = NULL, *full = NULL;
-        int failed = end_obj == NULL || arc == NULL || read_six(end_obj, end) < 0;
-        if (!failed && arc != Py_None) {
-            const char *name;
-            double c1 = 0.0, c2 = 0.0, swap, *row;
-            long turns = 0, full_turns = 0;
-            int normal = 2;
-            failed = (center = PyObject_GetAttr(arc, arc_fields[0])) == NULL
-                || (plane = PyObject_GetAttr(arc, arc_fields[1])) == NULL
-                || (turn = PyObject_GetAttr(arc, arc_fields[2])) == NULL
-                || (full = PyObject_GetAttr(arc, arc_fields[3])) == NULL
-                || item_double(center, 0, &c1) < 0 || item_double(center, 1, &c2) < 0
-                || (name = PyUnicode_AsUTF8AndSize(plane, NULL)) == NULL
-                || ((turns = PyLong_AsLong(turn)) == -1 && PyErr_Occurred())
-                || ((full_turns = PyLong_AsLong(full)) == -1 && PyErr_Occurred());
-            if (!failed) {  /* canon.PLANES' normal axis; its in-plane axes (first, second) are (u, v) */
-                if (strcmp(name, "XZ") == 0) {
-                    normal = 1;
-                    swap = c1, c1 = c2, c2 = swap;  /* the canon names the XZ centre (x, z) */
-                } else if (strcmp(name, "YZ") == 0) {
-                    normal = 0;
-                } else if (strcmp(name, "XY") != 0) {
-                    PyErr_SetString(PyExc_ValueError, "an arc's plane is XY, XZ or YZ");
-                    failed = 1;
-                }
-            }
-            if (!failed && turns == 0) {
-                PyErr_SetString(PyExc_ValueError, "an arc's turn is non-zero");
-                failed = 1;
-            }
-            if (!failed && out->count == out->room) {
-                Py_ssize_t room = out->room ? 2 * out->room : 64;
-                double *grown = PyMem_Realloc(out->rows, (size_t)room * 10 * sizeof(double));
-                if (grown == NULL) {
-                    PyErr_NoMemory();
-                    failed = 1;
-                } else {
-                    out->rows = grown;
-                    out->room = room;
-                }
-            }
-            if (!failed) {
-                row = out->rows + 10 * out->count;
-                row[0] = (double)index;
-                row[1] = (double)((normal + 1) % 3);
-                row[2] = (double)((normal + 2) % 3);
-                row[3] = c1;
-                row[4] = c2;
-                failed = frame_of(previous, end, c1, c2, normal, (int)(turns * (full_turns > 1 ? full_turns : 1)),
-                                  full_turns ? INFINITY : -1.0, row + 5) < 0;
-                out->count += !failed;
-            }
-        }
-        Py_XDECREF(center);
-        Py_XDECREF(plane);
-        Py_XDECREF(turn);
-        Py_XDECREF(full);
+        int done = end_obj == NULL || arc == NULL || read_six(end_obj, end) < 0 ? -1 : 0;
+        if (done == 0 && arc != Py_None)
+            done = visit(data, index, previous, end, arc);
         Py_XDECREF(end_obj);
         Py_XDECREF(arc);
-        if (failed) {
-            PyMem_Free(out->rows);
-            out->rows = NULL;
-            return -1;
-        }
+        if (done != 0)
+            return done;
         memcpy(previous, end, sizeof previous);
     }
     return 0;
+}
+
+static int frame_row(void *data, Py_ssize_t index, const double *start, const double *end, PyObject *arc)
+{
+    struct frame_buffer *out = data;
+    double c1, c2, epsilon, *row;
+    int normal, turns;
+    if (read_arc_record(arc, &c1, &c2, &normal, &turns, &epsilon) < 0)
+        return -1;
+    if (out->count == out->room) {
+        Py_ssize_t room = out->room ? 2 * out->room : 64;
+        double *grown = PyMem_Realloc(out->rows, (size_t)room * 10 * sizeof(double));
+        if (grown == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        out->rows = grown;
+        out->room = room;
+    }
+    row = out->rows + 10 * out->count;
+    row[0] = (double)index;
+    row[1] = (double)((normal + 1) % 3);
+    row[2] = (double)((normal + 2) % 3);
+    row[3] = c1;
+    row[4] = c2;
+    if (frame_of(start, end, c1, c2, normal, turns, epsilon, row + 5) < 0)
+        return -1;
+    out->count++;
+    return 0;
+}
+
+/* The frames of a batch's arcs (canon.Arc records, None for a straight move) into ``out``, as arc_geometry and
+ * arc_frame make them: -1 with an error set (``out`` is freed). */
+static int fill_frame_rows(PyObject *start_obj, PyObject *ends, PyObject *arcs, struct frame_buffer *out)
+{
+    out->rows = NULL;
+    out->count = out->room = 0;
+    if (each_arc(start_obj, ends, arcs, frame_row, out) < 0) {
+        PyMem_Free(out->rows);
+        out->rows = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+/* ---------------------------------------------------------------- the reach of arcs
+ * motion/reach.py's arcs_beyond, compiled: whether an arc of a batch reaches outside lower..upper, as beyond
+ * finds it arc by arc: its end, and when its whole circle (the larger radius) does not lie within the limits
+ * (machine/geometry.py's circle_within), the extremes of its circle it sweeps over (frame_extremes). */
+struct limits {
+    double lower[6], upper[6];
+};
+
+static inline int inside(const struct limits *limits, int axis, double value)
+{
+    return limits->lower[axis] <= value && value <= limits->upper[axis];
+}
+
+static int arc_outside(void *data, Py_ssize_t index, const double *start, const double *end, PyObject *arc)
+{
+    const struct limits *limits = data;
+    double c1, c2, epsilon, r0, r1, radius, frame[5], sweep, direction;
+    int normal, turns, u, v, k;
+    (void)index;
+    if (read_arc_record(arc, &c1, &c2, &normal, &turns, &epsilon) < 0)
+        return -1;
+    u = (normal + 1) % 3;
+    v = (normal + 2) % 3;
+    for (k = 0; k < 6; k++)
+        if (!inside(limits, k, end[k]))
+            return 1;
+    if (py_hypot(start[u] - c1, start[v] - c2, &r0) < 0 || py_hypot(end[u] - c1, end[v] - c2, &r1) < 0)
+        return -1;
+    radius = r1 > r0 ? r1 : r0;  /* max(r0, r1) */
+    if (limits->lower[u] <= c1 - radius && c1 + radius <= limits->upper[u] && limits->lower[v] <= c2 - radius
+        && c2 + radius <= limits->upper[v])
+        return 0;  /* circle_within */
+    if (frame_of(start, end, c1, c2, normal, turns, epsilon, frame) < 0)
+        return -1;
+    /* frame_extremes: machine/geometry.py's arc_extremes over min(|sweep|, 2 pi), the larger radius */
+    radius = frame[1] > frame[0] ? frame[1] : frame[0];
+    direction = frame[3] < 0.0 ? -1.0 : 1.0;
+    sweep = fabs(frame[3]);
+    if (2.0 * M_PI < sweep)
+        sweep = 2.0 * M_PI;
+    for (k = 0; k < 4; k++) {
+        double quadrant = (double)k * M_PI / 2;
+        if (py_mod(direction * (quadrant - frame[2]), 2 * M_PI) <= sweep + 1e-12) {
+            double point[6];
+            int axis;
+            memcpy(point, end, sizeof point);
+            point[u] = c1 + radius * cos(quadrant);
+            point[v] = c2 + radius * sin(quadrant);
+            for (axis = 0; axis < 6; axis++)
+                if (!inside(limits, axis, point[axis]))
+                    return 1;
+        }
+    }
+    return 0;
+}
+
+static PyObject *arcs_beyond(PyObject *self, PyObject *args)
+{
+    PyObject *start_obj, *ends, *arcs, *lower, *upper;
+    struct limits limits;
+    int found;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "OOOOO", &start_obj, &ends, &arcs, &lower, &upper)
+        || read_six(lower, limits.lower) < 0 || read_six(upper, limits.upper) < 0)
+        return NULL;
+    found = each_arc(start_obj, ends, arcs, arc_outside, &limits);
+    if (found < 0)
+        return NULL;
+    return PyBool_FromLong(found);
 }
 
 /* kinematics/trajectory.py's arc_frame_rows, compiled: the frames of a batch's arcs, ARC_ROW numbers each

@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 from edingcnc_lang.canon import Arc
 from edingcnc_lang.kinematics.trajectory import arc_frame_rows
 from edingcnc_lang.motion.arc_table import ArcTable
+from edingcnc_lang.motion.reach import arcs_beyond
 
 pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
@@ -69,6 +70,35 @@ def test_the_frames_of_a_batchs_arcs_as_doubles_are_the_same(start: tuple[float,
     rows = arc_frame_rows(start, ends, arcs_of)
     assert bytes(compiled.arc_frame_bytes(start, ends, arcs_of)) == array("d", rows).tobytes()
     assert ArcTable.of(start, ends, arcs_of).rows.tobytes() == array("d", rows).tobytes()
+
+
+small = st.one_of(st.floats(-20, 20), st.sampled_from([0.0, -0.0, 5.0, -5.0, 1e-9, math.nan]))
+small_poses = st.tuples(*[small] * 6)
+small_arcs = st.builds(Arc, st.tuples(small, small), st.sampled_from(["XY", "XZ", "YZ"]), st.sampled_from([1, -1]),
+                       st.sampled_from([0, 0, 1, 3]))
+bounds = st.tuples(*[st.floats(-25, 0)] * 6), st.tuples(*[st.floats(0, 25)] * 6)
+
+
+@settings(max_examples=1500, deadline=None)
+@given(small_poses, st.lists(st.tuples(small_poses, st.none() | small_arcs), max_size=6), *bounds)
+def test_whether_a_batchs_arcs_reach_outside_is_the_same(start: tuple[float, ...],
+                                                         moves: list[tuple[tuple[float, ...], Arc | None]],
+                                                         lower: tuple[float, ...], upper: tuple[float, ...]) -> None:
+    """The untimed run's limit check of a batch's arcs: their ends, the circles within the limits, the extremes
+    of those that are not (every plane, both ways, full circles), NaN."""
+    ends, arcs_of = [end for end, _ in moves], [arc for _, arc in moves]
+    low, high = list(lower), list(upper)
+    assert compiled.arcs_beyond(start, ends, arcs_of, low, high) is arcs_beyond(start, ends, arcs_of, low, high)
+
+
+def test_an_arc_reaches_outside_only_at_its_extremes() -> None:
+    """A half circle whose ends lie inside and whose top does not, either way round: the same answer as Python's."""
+    for turn, beyond_top in ((1, True), (-1, False)):  # from (1, 0) to (-1, 0) about the origin: over the top or not
+        arc = Arc((0.0, 0.0), "XY", turn)
+        start, end = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0), (-1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        low, high = [-5.0, -5.0, -5.0, -5.0, -5.0, -5.0], [5.0, 0.5, 5.0, 5.0, 5.0, 5.0]
+        assert compiled.arcs_beyond(start, [end], [arc], low, high) is beyond_top
+        assert arcs_beyond(start, [end], [arc], low, high) is beyond_top
 
 
 def _arc_job(r_form: bool) -> str:
