@@ -343,6 +343,21 @@ static double py_mod(double vx, double wx)  /* float's % (float_rem) */
     return mod;
 }
 
+/* (a, b) as a new tuple of two floats; NULL with an error set. */
+static PyObject *pair_tuple(double a, double b)
+{
+    PyObject *pair = PyTuple_New(2), *first = PyFloat_FromDouble(a), *second = PyFloat_FromDouble(b);
+    if (pair == NULL || first == NULL || second == NULL) {
+        Py_XDECREF(pair);
+        Py_XDECREF(first);
+        Py_XDECREF(second);
+        return NULL;
+    }
+    PyTuple_SetItem(pair, 0, first);
+    PyTuple_SetItem(pair, 1, second);
+    return pair;
+}
+
 /* The names of canon.Arc's fields, in order (set in PyInit__speedups). */
 static PyObject *arc_fields[4];
 
@@ -492,8 +507,8 @@ static int read_arc_line(PyObject *text, const double *start, const struct arc_s
         return -1;
     /* the centre named in the plane's name order: XZ is (x, z), its axes run (z, x) */
     Py_INCREF(set->plane_name);
-    *arc = new_arc(set->arc_class, Py_BuildValue("(dd)", plane == 1 ? c2 : c1, plane == 1 ? c1 : c2),
-                   set->plane_name, PyLong_FromLong(clockwise ? -1 : 1), PyLong_FromLong(full));
+    *arc = new_arc(set->arc_class, pair_tuple(plane == 1 ? c2 : c1, plane == 1 ? c1 : c2), set->plane_name,
+                   PyLong_FromLong(clockwise ? -1 : 1), PyLong_FromLong(full));
     if (*arc == NULL)
         return -1;
     *motion_io = motion;
