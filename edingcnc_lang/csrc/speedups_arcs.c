@@ -361,16 +361,43 @@ static PyObject *pair_tuple(double a, double b)
 /* The names of canon.Arc's fields, in order (set in PyInit__speedups). */
 static PyObject *arc_fields[4];
 
+/* How each of canon.Arc's fields is set past the frozen __setattr__: by its slot's member descriptor (what
+   PyObject_GenericSetAttr finds and calls, found once per run of lines), else the generic way (setter NULL). */
+struct arc_setters {
+    PyObject *descr[4];
+    descrsetfunc set[4];
+};
+
+static void find_setters(PyObject *cls, struct arc_setters *out)
+{
+    int k;
+    for (k = 0; k < 4; k++) {
+        out->descr[k] = PyObject_GetAttr(cls, arc_fields[k]);
+        out->set[k] = out->descr[k] == NULL ? NULL : (descrsetfunc)PyType_GetSlot(Py_TYPE(out->descr[k]),
+                                                                                  Py_tp_descr_set);
+    }
+    PyErr_Clear();  /* a field without a class attribute is set the generic way */
+}
+
+static void release_setters(struct arc_setters *setters)
+{
+    int k;
+    for (k = 0; k < 4; k++)
+        Py_CLEAR(setters->descr[k]);
+}
+
 /* A canon.Arc record made as its own __init__ makes it: each field set past the frozen __setattr__.
    Steals the references to the values (any may be NULL after a failure: then nothing is made). */
-static PyObject *new_arc(PyObject *cls, PyObject *center, PyObject *plane, PyObject *turn, PyObject *full)
+static PyObject *new_arc(PyObject *cls, const struct arc_setters *setters, PyObject *center, PyObject *plane,
+                         PyObject *turn, PyObject *full)
 {
     PyObject *values[4] = {center, plane, turn, full}, *made = NULL;
     int k;
     if (center != NULL && plane != NULL && turn != NULL && full != NULL)
         made = PyType_GenericAlloc((PyTypeObject *)cls, 0);
     for (k = 0; made != NULL && k < 4; k++)
-        if (PyObject_GenericSetAttr(made, arc_fields[k], values[k]) < 0)
+        if ((setters->set[k] != NULL ? setters->set[k](setters->descr[k], made, values[k])
+             : PyObject_GenericSetAttr(made, arc_fields[k], values[k])) < 0)
             Py_CLEAR(made);
     for (k = 0; k < 4; k++)
         Py_XDECREF(values[k]);
@@ -417,6 +444,7 @@ struct arc_setting {
     double offset[6], scale, tolerance, epsilon, tiny;
     int incremental, plane, reverse;
     PyObject *arc_class, *plane_name;
+    struct arc_setters setters;
 };
 
 /* One arc line from start: 1 an arc (target, a new canon.Arc in *arc, its length; *motion and *feed those in
@@ -507,7 +535,7 @@ static int read_arc_line(PyObject *text, const double *start, const struct arc_s
         return -1;
     /* the centre named in the plane's name order: XZ is (x, z), its axes run (z, x) */
     Py_INCREF(set->plane_name);
-    *arc = new_arc(set->arc_class, pair_tuple(plane == 1 ? c2 : c1, plane == 1 ? c1 : c2), set->plane_name,
+    *arc = new_arc(set->arc_class, &set->setters, pair_tuple(plane == 1 ? c2 : c1, plane == 1 ? c1 : c2), set->plane_name,
                    PyLong_FromLong(clockwise ? -1 : 1), PyLong_FromLong(full));
     if (*arc == NULL)
         return -1;
@@ -546,6 +574,7 @@ static PyObject *plain_arcs(PyObject *self, PyObject *args)
     count = PySequence_Size(lines);
     if (count < 0)
         return NULL;
+    find_setters(set.arc_class, &set.setters);
     numbers = PyList_New(0);
     ends = PyList_New(0);
     feeds = PyList_New(0);
@@ -583,9 +612,11 @@ static PyObject *plain_arcs(PyObject *self, PyObject *args)
             goto fail;
         memcpy(position, target, sizeof position);
     }
+    release_setters(&set.setters);
     return Py_BuildValue("nNidNNNNN", index, PyBool_FromLong(scanned), motion, feed, numbers, ends, feeds, arcs,
                          lengths);
 fail:
+    release_setters(&set.setters);
     Py_XDECREF(numbers);
     Py_XDECREF(ends);
     Py_XDECREF(feeds);
