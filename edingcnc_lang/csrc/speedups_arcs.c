@@ -737,6 +737,21 @@ static int read_arc_record(PyObject *arc, double *c1, double *c2, int *normal, i
 
 /* Visit each arc of a batch (moves from start through ends, arcs[i] None for a straight move) with its start and
    end poses and record: visit returns 0 to go on, 1 to stop (then this returns 1), -1 on an error (with it set). */
+/* read_six of a batch's pose: a tuple of six floats (every pose the canon hands on) read in place, else read_six. */
+static inline int read_pose(PyObject *pose, double out[6])
+{
+    Py_ssize_t k;
+    if (!PyTuple_CheckExact(pose) || PyTuple_Size(pose) != 6)
+        return read_six(pose, out);
+    for (k = 0; k < 6; k++) {
+        PyObject *item = PyTuple_GetItem(pose, k);  /* borrowed */
+        if (!PyFloat_CheckExact(item))
+            return read_six(pose, out);
+        out[k] = PyFloat_AsDouble(item);
+    }
+    return 0;
+}
+
 typedef int (*arc_visit)(void *data, Py_ssize_t index, const double *start, const double *end, PyObject *arc);
 
 static int each_arc(PyObject *start_obj, PyObject *ends, PyObject *arcs, arc_visit visit, void *data)
@@ -747,7 +762,7 @@ static int each_arc(PyObject *start_obj, PyObject *ends, PyObject *arcs, arc_vis
         return -1;
     for (index = 0; index < count; index++) {
         PyObject *end_obj = PySequence_GetItem(ends, index), *arc = PySequence_GetItem(arcs, index);
-        int done = end_obj == NULL || arc == NULL || read_six(end_obj, end) < 0 ? -1 : 0;
+        int done = end_obj == NULL || arc == NULL || read_pose(end_obj, end) < 0 ? -1 : 0;
         if (done == 0 && arc != Py_None)
             done = visit(data, index, previous, end, arc);
         Py_XDECREF(end_obj);
