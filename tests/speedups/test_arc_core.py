@@ -101,6 +101,17 @@ def test_an_arc_reaches_outside_only_at_its_extremes() -> None:
         assert arcs_beyond(start, [end], [arc], low, high) is beyond_top
 
 
+def test_a_hypot_that_differs_at_import_is_called_instead() -> None:
+    """The check at import: when math.hypot gives other bits than the port on one input of its table, the
+    compiled core calls math.hypot itself (a fresh process, math.hypot replaced before the import)."""
+    code = ("import math, sys; real = math.hypot\n"
+            "math.hypot = lambda a, b: 0.25 if (a, b) == (0.5, 0.5) else real(a, b)\n"
+            "from edingcnc_lang import _speedups\n"
+            "print(_speedups.hypot(0.5, 0.5), _speedups.hypot(3.0, 4.0))")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout.split() == ["(0.25,", "'call')", "(5.0,", "'call')"]
+
+
 def _arc_job(r_form: bool) -> str:
     """R or I/J arcs in every plane, over and under half a circle, full circles, helices, G91 and inch, CRLF."""
     lines = ["G21 G17 G90 G94 F800", "G0 X0 Y0 Z0"]
