@@ -39,7 +39,9 @@ static PyObject *rapid_kind;
 #include "csrc/common.c"
 #include "csrc/speedups_plain.c"
 #include "csrc/speedups_trace.c"
+#include "csrc/speedups_math.c"
 #include "csrc/speedups_arcs.c"
+#include "csrc/speedups_frames.c"
 #include "csrc/speedups_holes.c"
 
 static PyMethodDef methods[] = {
