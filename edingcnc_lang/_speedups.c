@@ -5,10 +5,13 @@
  * plain_arcs:      machine/bulk.py's arc_run over BulkPath._arc_of_words (runs of arc lines with centre words or R).
  * arc_frame:       kinematics/trajectory.py's arc_frame (an arc's circle, for the planner).
  * arc_frame_rows:  kinematics/trajectory.py's arc_frame_rows (the circles of a batch's arcs, as columns).
+ * arc_frame_bytes: the same as the doubles of a bytearray (motion/arc_table.py's ArcTable).
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
  * plan_straight:   motion/planner/stage.py's Planner._commit for a window of straight moves (times, estimate, extremes).
+ * arcs_beyond:     motion/reach.py's arcs_beyond (whether an arc of a batch reaches outside the limits).
+ * hypot:           math.hypot of two numbers as the other parts compute it (a test entry point).
  *
  * One translation unit in parts, a part per job (csrc/speedups_*.c), included below in order: their
  * helpers stay static, private to the extension.
@@ -20,7 +23,9 @@
 #define Py_LIMITED_API 0x030A0000
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -35,7 +40,9 @@ static PyObject *rapid_kind;
 #include "csrc/common.c"
 #include "csrc/speedups_plain.c"
 #include "csrc/speedups_trace.c"
+#include "csrc/speedups_math.c"
 #include "csrc/speedups_arcs.c"
+#include "csrc/speedups_frames.c"
 #include "csrc/speedups_holes.c"
 #include "csrc/speedups_plan.c"
 
@@ -46,9 +53,12 @@ static PyMethodDef methods[] = {
     {"column_bounds", column_bounds, METH_VARARGS, "motion.reach.column_bounds, compiled."},
     {"arc_frame", arc_frame, METH_VARARGS, "kinematics.trajectory.arc_frame, compiled (a plain tuple)."},
     {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
+    {"arc_frame_bytes", arc_frame_bytes, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled, as doubles in a bytearray."},
     {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
     {"plan_straight", plan_straight, METH_VARARGS, "motion.planner.stage.Planner._commit of straight moves, compiled."},
+    {"arcs_beyond", arcs_beyond, METH_VARARGS, "motion.reach.arcs_beyond, compiled."},
+    {"hypot", hypot_entry, METH_VARARGS, "math.hypot(a, b) as the compiled core computes it, and whose algorithm."},
     {NULL, NULL, 0, NULL},
 };
 
@@ -63,15 +73,8 @@ PyMODINIT_FUNC PyInit__speedups(void)
     rapid_kind = PyUnicode_InternFromString("rapid");
     if (linear_kind == NULL || rapid_kind == NULL)
         return NULL;
-    {
-        PyObject *math = PyImport_ImportModule("math");
-        if (math == NULL)
-            return NULL;
-        math_hypot = PyObject_GetAttrString(math, "hypot");
-        Py_DECREF(math);
-        if (math_hypot == NULL)
-            return NULL;
-    }
+    if (hypot_init() < 0)
+        return NULL;
     {
         static const char *names[4] = {"center", "plane", "turn", "full_turns"};
         int k;

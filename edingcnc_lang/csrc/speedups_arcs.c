@@ -1,136 +1,76 @@
-/* Part of _speedups.c (one translation unit: included there, in this order). A batch's bounds (column_bounds), runs of arc lines (plain_arcs) and an arc's frame (arc_frame). */
-
-/* motion.reach.column_bounds, compiled: the least and greatest value of each of the six columns of a
-   sequence of poses of floats, as min() and max() of each column find them (the first of equal values;
-   a NaN is never less or greater than another value), as two lists. */
-static PyObject *column_bounds(PyObject *self, PyObject *args)
-{
-    PyObject *ends, *low = NULL, *high = NULL;
-    double least[6], most[6];
-    Py_ssize_t count, i, k;
-    (void)self;
-    if (!PyArg_ParseTuple(args, "O", &ends))
-        return NULL;
-    count = PySequence_Size(ends);
-    if (count < 0)
-        return NULL;
-    if (count == 0) {
-        PyErr_SetString(PyExc_ValueError, "min() arg is an empty sequence");
-        return NULL;
-    }
-    for (i = 0; i < count; i++) {
-        PyObject *end = PySequence_GetItem(ends, i);
-        if (end == NULL)
-            return NULL;
-        if (PySequence_Size(end) != 6) {
-            Py_DECREF(end);
-            PyErr_SetString(PyExc_ValueError, "a pose has six values");
-            return NULL;
-        }
-        for (k = 0; k < 6; k++) {
-            PyObject *item = PySequence_GetItem(end, k);
-            double value = item == NULL ? -1.0 : PyFloat_AsDouble(item);
-            Py_XDECREF(item);
-            if (value == -1.0 && PyErr_Occurred()) {
-                Py_DECREF(end);
-                return NULL;
-            }
-            if (i == 0) {
-                least[k] = most[k] = value;
-            } else {
-                if (value < least[k])
-                    least[k] = value;
-                if (value > most[k])
-                    most[k] = value;
-            }
-        }
-        Py_DECREF(end);
-    }
-    low = PyList_New(6);
-    high = PyList_New(6);
-    for (k = 0; low != NULL && high != NULL && k < 6; k++) {
-        PyObject *a = PyFloat_FromDouble(least[k]), *b = PyFloat_FromDouble(most[k]);
-        if (a == NULL || b == NULL) {
-            Py_XDECREF(a);
-            Py_XDECREF(b);
-            break;
-        }
-        PyList_SetItem(low, k, a);
-        PyList_SetItem(high, k, b);
-    }
-    if (low == NULL || high == NULL || k < 6) {
-        Py_XDECREF(low);
-        Py_XDECREF(high);
-        return NULL;
-    }
-    return Py_BuildValue("(NN)", low, high);
-}
+/* Part of _speedups.c (one translation unit: included there, in this order). Runs of arc lines (plain_arcs). */
 
 /* ---------------------------------------------------------------- plain arcs
  * machine/bulk.py's BulkPath._arc_of_words, compiled: the words of the line, its target (as plain_moves finds
  * it), the centre from centre words or R, the radius check, the sweep and the length of machine/geometry.py's
  * center_from_radius, check_radius and sweep.  Every double is computed as Python computes it:
- * math.hypot and math.dist are Python's own (called, not libm's hypot, which rounds differently),
+ * math.hypot and math.dist are CPython's vector_norm (speedups_math.c; not libm's hypot, which rounds differently),
  * atan2 is CPython's m_atan2 and % is float's remainder. */
-static PyObject *math_hypot;
 
-static int py_hypot(double a, double b, double *out)
+/* (a, b) as a new tuple of two floats; NULL with an error set. */
+static PyObject *pair_tuple(double a, double b)
 {
-    /* the arguments as objects, no format to read and no tuple: the call goes the vector way */
-    PyObject *first = PyFloat_FromDouble(a), *second = PyFloat_FromDouble(b), *result = NULL;
-    if (first != NULL && second != NULL)
-        result = PyObject_CallFunctionObjArgs(math_hypot, first, second, NULL);
-    Py_XDECREF(first);
-    Py_XDECREF(second);
-    if (result == NULL)
-        return -1;
-    *out = PyFloat_AsDouble(result);
-    Py_DECREF(result);
-    return *out == -1.0 && PyErr_Occurred() ? -1 : 0;
-}
-
-static double py_atan2(double y, double x)  /* CPython's m_atan2 */
-{
-    if (isnan(x) || isnan(y))
-        return NAN;
-    if (isinf(y)) {
-        if (isinf(x))
-            return copysign(copysign(1., x) == 1. ? 0.25 * M_PI : 0.75 * M_PI, y);
-        return copysign(0.5 * M_PI, y);
+    PyObject *pair = PyTuple_New(2), *first = PyFloat_FromDouble(a), *second = PyFloat_FromDouble(b);
+    if (pair == NULL || first == NULL || second == NULL) {
+        Py_XDECREF(pair);
+        Py_XDECREF(first);
+        Py_XDECREF(second);
+        return NULL;
     }
-    if (isinf(x) || y == 0.)
-        return copysign(copysign(1., x) == 1. ? 0. : M_PI, y);
-    return atan2(y, x);
-}
-
-static double py_mod(double vx, double wx)  /* float's % (float_rem) */
-{
-    double mod = fmod(vx, wx);
-    if (mod) {
-        if ((wx < 0) != (mod < 0))
-            mod += wx;
-    } else {
-        mod = copysign(0.0, wx);
-    }
-    return mod;
+    PyTuple_SetItem(pair, 0, first);
+    PyTuple_SetItem(pair, 1, second);
+    return pair;
 }
 
 /* The names of canon.Arc's fields, in order (set in PyInit__speedups). */
 static PyObject *arc_fields[4];
 
+/* How each of canon.Arc's fields is set past the frozen __setattr__: by its slot's member descriptor (what
+   PyObject_GenericSetAttr finds and calls, found once per run of lines), else the generic way (setter NULL). */
+struct arc_setters {
+    PyObject *descr[4];
+    descrsetfunc set[4];
+};
+
+static void find_setters(PyObject *cls, struct arc_setters *out)
+{
+    int k;
+    for (k = 0; k < 4; k++) {
+        out->descr[k] = PyObject_GetAttr(cls, arc_fields[k]);
+        out->set[k] = out->descr[k] == NULL ? NULL : (descrsetfunc)PyType_GetSlot(Py_TYPE(out->descr[k]),
+                                                                                  Py_tp_descr_set);
+    }
+    PyErr_Clear();  /* a field without a class attribute is set the generic way */
+}
+
+static void release_setters(struct arc_setters *setters)
+{
+    int k;
+    for (k = 0; k < 4; k++)
+        Py_CLEAR(setters->descr[k]);
+}
+
 /* A canon.Arc record made as its own __init__ makes it: each field set past the frozen __setattr__.
    Steals the references to the values (any may be NULL after a failure: then nothing is made). */
-static PyObject *new_arc(PyObject *cls, PyObject *center, PyObject *plane, PyObject *turn, PyObject *full)
+static PyObject *new_arc(PyObject *cls, const struct arc_setters *setters, PyObject *center, PyObject *plane,
+                         PyObject *turn, PyObject *full)
 {
     PyObject *values[4] = {center, plane, turn, full}, *made = NULL;
     int k;
     if (center != NULL && plane != NULL && turn != NULL && full != NULL)
         made = PyType_GenericAlloc((PyTypeObject *)cls, 0);
     for (k = 0; made != NULL && k < 4; k++)
-        if (PyObject_GenericSetAttr(made, arc_fields[k], values[k]) < 0)
+        if ((setters->set[k] != NULL ? setters->set[k](setters->descr[k], made, values[k])
+             : PyObject_GenericSetAttr(made, arc_fields[k], values[k])) < 0)
             Py_CLEAR(made);
     for (k = 0; k < 4; k++)
         Py_XDECREF(values[k]);
+    /* a frozen record of a pair of floats, a str and two ints can be in no reference cycle: the collector need
+       not walk the thousands a job keeps (as pose_tuple's poses) */
+    if (made != NULL) {
+        PyObject_GC_UnTrack(made);
+        PyObject_GC_UnTrack(center);
+    }
     return made;
 }
 
@@ -168,6 +108,7 @@ struct arc_setting {
     double offset[6], scale, tolerance, epsilon, tiny;
     int incremental, plane, reverse;
     PyObject *arc_class, *plane_name;
+    struct arc_setters setters;
 };
 
 /* One arc line from start: 1 an arc (target, a new canon.Arc in *arc, its length; *motion and *feed those in
@@ -258,8 +199,8 @@ static int read_arc_line(PyObject *text, const double *start, const struct arc_s
         return -1;
     /* the centre named in the plane's name order: XZ is (x, z), its axes run (z, x) */
     Py_INCREF(set->plane_name);
-    *arc = new_arc(set->arc_class, Py_BuildValue("(dd)", plane == 1 ? c2 : c1, plane == 1 ? c1 : c2),
-                   set->plane_name, PyLong_FromLong(clockwise ? -1 : 1), PyLong_FromLong(full));
+    *arc = new_arc(set->arc_class, &set->setters, pair_tuple(plane == 1 ? c2 : c1, plane == 1 ? c1 : c2), set->plane_name,
+                   PyLong_FromLong(clockwise ? -1 : 1), PyLong_FromLong(full));
     if (*arc == NULL)
         return -1;
     *motion_io = motion;
@@ -297,6 +238,7 @@ static PyObject *plain_arcs(PyObject *self, PyObject *args)
     count = PySequence_Size(lines);
     if (count < 0)
         return NULL;
+    find_setters(set.arc_class, &set.setters);
     numbers = PyList_New(0);
     ends = PyList_New(0);
     feeds = PyList_New(0);
@@ -334,147 +276,15 @@ static PyObject *plain_arcs(PyObject *self, PyObject *args)
             goto fail;
         memcpy(position, target, sizeof position);
     }
+    release_setters(&set.setters);
     return Py_BuildValue("nNidNNNNN", index, PyBool_FromLong(scanned), motion, feed, numbers, ends, feeds, arcs,
                          lengths);
 fail:
+    release_setters(&set.setters);
     Py_XDECREF(numbers);
     Py_XDECREF(ends);
     Py_XDECREF(feeds);
     Py_XDECREF(arcs);
     Py_XDECREF(lengths);
     return NULL;
-}
-
-/* kinematics/trajectory.py's arc_frame, compiled: the same doubles, from Python's own math.hypot, CPython's
- * atan2 and float's remainder.  out: r0, r1, start angle, sweep, linear. */
-static int frame_of(const double *start, const double *end, double cu, double cv, int normal, int turns,
-                    double epsilon, double *out)
-{
-    int u = (normal + 1) % 3, v = (normal + 2) % 3;
-    double r0, r1, a0, a1, sweep, direction, linear;
-    if (py_hypot(start[u] - cu, start[v] - cv, &r0) < 0 || py_hypot(end[u] - cu, end[v] - cv, &r1) < 0)
-        return -1;
-    a0 = py_atan2(start[v] - cv, start[u] - cu);
-    a1 = py_atan2(end[v] - cv, end[u] - cu);
-    /* arc_sweep */
-    direction = turns > 0 ? 1.0 : -1.0;
-    sweep = py_mod(direction * (a1 - a0), 2.0 * M_PI);
-    if (sweep <= epsilon || sweep == 0.0)
-        sweep = 2.0 * M_PI;
-    sweep = direction * (sweep + 2.0 * M_PI * (double)(abs(turns) - 1));
-    if (py_hypot(fabs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal], &linear) < 0)
-        return -1;
-    out[0] = r0;
-    out[1] = r1;
-    out[2] = a0;
-    out[3] = sweep;
-    out[4] = linear;
-    return 0;
-}
-
-static int item_double(PyObject *sequence, Py_ssize_t index, double *out)
-{
-    PyObject *item = PySequence_GetItem(sequence, index);
-    *out = item == NULL ? -1.0 : PyFloat_AsDouble(item);
-    Py_XDECREF(item);
-    return *out == -1.0 && PyErr_Occurred() ? -1 : 0;
-}
-
-/* The planner asks for the frame of every arc of a job: one at a time here (a plain tuple), or a batch's
- * at once (arc_frame_rows). */
-static PyObject *arc_frame(PyObject *self, PyObject *args)
-{
-    PyObject *start_obj, *end_obj, *center_obj;
-    double start[6], end[6], cu, cv, out[5];
-    int normal, turns, u, v;
-    double epsilon;
-    (void)self;
-    if (!PyArg_ParseTuple(args, "OOOiid", &start_obj, &end_obj, &center_obj, &normal, &turns, &epsilon))
-        return NULL;
-    if (normal < 0 || normal > 2 || turns == 0) {
-        PyErr_SetString(PyExc_ValueError, "normal must be 0..2 and turns non-zero");
-        return NULL;
-    }
-    if (read_six(start_obj, start) < 0 || read_six(end_obj, end) < 0)
-        return NULL;
-    u = (normal + 1) % 3;
-    v = (normal + 2) % 3;
-    if (item_double(center_obj, u, &cu) < 0 || item_double(center_obj, v, &cv) < 0)
-        return NULL;
-    if (frame_of(start, end, cu, cv, normal, turns, epsilon, out) < 0)
-        return NULL;
-    return Py_BuildValue("ii(dd)ddddd", u, v, cu, cv, out[0], out[1], out[2], out[3], out[4]);
-}
-
-/* kinematics/trajectory.py's arc_frame_rows, compiled: the frames of a batch's arcs (canon.Arc records, None
- * for a straight move), ARC_ROW numbers each, as arc_geometry and arc_frame make them. */
-static PyObject *arc_frame_rows(PyObject *self, PyObject *args)
-{
-    PyObject *start_obj, *ends, *arcs, *rows;
-    double previous[6], end[6];
-    Py_ssize_t count, index;
-    (void)self;
-    if (!PyArg_ParseTuple(args, "OOO", &start_obj, &ends, &arcs))
-        return NULL;
-    if (read_six(start_obj, previous) < 0 || (count = PySequence_Size(arcs)) < 0)
-        return NULL;
-    if ((rows = PyList_New(0)) == NULL)
-        return NULL;
-    for (index = 0; index < count; index++) {
-        PyObject *end_obj = PySequence_GetItem(ends, index), *arc = PySequence_GetItem(arcs, index);
-        PyObject *center = NULL, *plane = NULL, *turn = NULL, *full = NULL;
-        int failed = end_obj == NULL || arc == NULL || read_six(end_obj, end) < 0;
-        if (!failed && arc != Py_None) {
-            const char *name;
-            double c1 = 0.0, c2 = 0.0, swap, row[10];
-            long turns = 0, full_turns = 0;
-            int normal = 2, k;
-            failed = (center = PyObject_GetAttrString(arc, "center")) == NULL
-                || (plane = PyObject_GetAttrString(arc, "plane")) == NULL
-                || (turn = PyObject_GetAttrString(arc, "turn")) == NULL
-                || (full = PyObject_GetAttrString(arc, "full_turns")) == NULL
-                || item_double(center, 0, &c1) < 0 || item_double(center, 1, &c2) < 0
-                || (name = PyUnicode_AsUTF8AndSize(plane, NULL)) == NULL
-                || ((turns = PyLong_AsLong(turn)) == -1 && PyErr_Occurred())
-                || ((full_turns = PyLong_AsLong(full)) == -1 && PyErr_Occurred());
-            if (!failed) {  /* canon.PLANES' normal axis; its in-plane axes (first, second) are (u, v) */
-                if (strcmp(name, "XZ") == 0) {
-                    normal = 1;
-                    swap = c1, c1 = c2, c2 = swap;  /* the canon names the XZ centre (x, z) */
-                } else if (strcmp(name, "YZ") == 0) {
-                    normal = 0;
-                } else if (strcmp(name, "XY") != 0) {
-                    PyErr_SetString(PyExc_ValueError, "an arc's plane is XY, XZ or YZ");
-                    failed = 1;
-                }
-            }
-            if (!failed && turns == 0) {
-                PyErr_SetString(PyExc_ValueError, "an arc's turn is non-zero");
-                failed = 1;
-            }
-            if (!failed) {
-                row[0] = (double)index;
-                row[1] = (double)((normal + 1) % 3);
-                row[2] = (double)((normal + 2) % 3);
-                row[3] = c1;
-                row[4] = c2;
-                failed = frame_of(previous, end, c1, c2, normal, (int)(turns * (full_turns > 1 ? full_turns : 1)),
-                                  full_turns ? INFINITY : -1.0, row + 5) < 0;
-            }
-            for (k = 0; !failed && k < 10; k++)
-                failed = append_new(rows, PyFloat_FromDouble(row[k])) < 0;
-        }
-        Py_XDECREF(center);
-        Py_XDECREF(plane);
-        Py_XDECREF(turn);
-        Py_XDECREF(full);
-        Py_XDECREF(end_obj);
-        Py_XDECREF(arc);
-        if (failed) {
-            Py_DECREF(rows);
-            return NULL;
-        }
-        memcpy(previous, end, sizeof previous);
-    }
-    return rows;
 }

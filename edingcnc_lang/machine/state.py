@@ -9,8 +9,10 @@ mixins on top of it, assembled in ``interpreter.py``.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping, Sequence
+import operator
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from functools import reduce
 from pathlib import Path
 from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING, ClassVar, Literal
@@ -360,14 +362,14 @@ class MachineState:
     def travelled(self, start: Pose | list[float], ends: Sequence[Pose], arc_lengths: Mapping[int, float]) -> None:
         """Count moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does: straight,
         or arcs, whose ``path_length`` the bulk path found as it read them (``arc_lengths``, by index)."""
-        distance = self.job_distance
-        points = [start[:3], *[end[:3] for end in ends]]
-        steps = list(map(math.dist, points, points[1:]))  # xyz_distance of each move
-        for index, length in arc_lengths.items():
-            steps[index] = length
-        for step in steps:
-            distance += step
-        self.job_distance = distance
+        if len(arc_lengths) == len(ends):  # arcs only (a run of arc lines): their lengths in order
+            steps: Iterable[float] = map(arc_lengths.__getitem__, range(len(ends)))
+        else:
+            points = [start[:3], *[end[:3] for end in ends]]
+            steps = list(map(math.dist, points, points[1:]))  # xyz_distance of each move
+            for index, length in arc_lengths.items():
+                steps[index] = length
+        self.job_distance = reduce(operator.add, steps, self.job_distance)  # one at a time, in order
 
     def spindle_along(self) -> tuple[float, Css | None]:
         """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the

@@ -18,7 +18,7 @@ from edingcnc_lang import speedups
 from edingcnc_lang.canon import Arc, Pose
 from edingcnc_lang.kinematics.trajectory import ARC_ROW, ArcFrame, arc_frame_rows
 
-_ARC_FRAME_ROWS = speedups.compiled("arc_frame_rows") or arc_frame_rows  # on the core that runs
+_FRAME_BYTES = speedups.compiled("arc_frame_bytes")  # the compiled core's rows as doubles, or None
 
 _NO_ROWS = np.empty((0, ARC_ROW))
 
@@ -35,7 +35,9 @@ class ArcTable:
     @classmethod
     def of(cls, start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]) -> ArcTable:
         """The arcs of moves from ``start`` through ``ends`` (``arcs[i]`` None for a straight move)."""
-        return cls(np.array(_ARC_FRAME_ROWS(start, ends, arcs), dtype=float).reshape(-1, ARC_ROW))
+        if _FRAME_BYTES is not None:  # no float object per number
+            return cls(np.frombuffer(_FRAME_BYTES(start, ends, arcs), dtype=float).reshape(-1, ARC_ROW))
+        return cls(np.array(arc_frame_rows(start, ends, arcs), dtype=float).reshape(-1, ARC_ROW))
 
     @classmethod
     def joined(cls, tables: Sequence[ArcTable]) -> ArcTable:

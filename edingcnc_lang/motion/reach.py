@@ -10,6 +10,7 @@ import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from edingcnc_lang import speedups
 from edingcnc_lang.canon import PLANES, Arc, Pose
 from edingcnc_lang.kinematics.base import as_pose
 from edingcnc_lang.kinematics.trajectory import ArcFrame, Geometry, arc_geometry
@@ -47,9 +48,13 @@ def beyond(start: Pose, end: Pose, arc: Arc | None, lower: Sequence[float],
 def arcs_beyond(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None], lower: Sequence[float],
                 upper: Sequence[float]) -> bool:
     """Whether an arc of a batch (moves from ``start`` through ``ends``) reaches outside ``lower``..``upper``,
-    found arc by arc with ``beyond``."""
+    found arc by arc with ``beyond``.  The reference for ``_speedups.arcs_beyond``."""
     return any(arc is not None and beyond(begin, end, arc, lower, upper) is not None
                for begin, end, arc in zip((start, *ends), ends, arcs))
+
+
+# ``arcs_beyond`` on the core that runs (the untimed run's check of a batch's arcs, which never loads numpy)
+batch_arcs_beyond = speedups.compiled("arcs_beyond") or arcs_beyond
 
 
 def table_beyond(arcs: ArcTable, ends: Sequence[Pose], lower: Sequence[float], upper: Sequence[float]) -> bool:

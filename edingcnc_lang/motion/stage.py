@@ -38,7 +38,7 @@ from edingcnc_lang.kinematics.builtin import (
     bend_knife_correction,
 )
 from edingcnc_lang.kinematics.trajectory import CURVATURE_SHARE, Dynamics, dynamics, geometry_of
-from edingcnc_lang.motion.reach import arcs_beyond, beyond, column_bounds, table_beyond
+from edingcnc_lang.motion.reach import batch_arcs_beyond, beyond, column_bounds, table_beyond
 
 _T = TypeVar("_T")
 
@@ -198,7 +198,7 @@ class MotionStage:
 
             arcs = ArcTable.of(batch.start, batch.ends, batch.arcs)
         if batch.arcs is not None and (table_beyond(arcs, batch.ends, lower, upper) if arcs is not None else
-                                       arcs_beyond(batch.start, batch.ends, batch.arcs, lower, upper)):
+                                       batch_arcs_beyond(batch.start, batch.ends, batch.arcs, lower, upper)):
             self._first_limit_violation(batch)  # (an untimed run checks them one by one: it never loads numpy)
         self._write_batch(batch, arcs)
 
