@@ -3,7 +3,8 @@
 Generates the jobs deterministically in a temporary folder, runs ``ecnc`` (on the compiled core and,
 with ``ECNC_PURE_PYTHON=1``, on the Python core) and ``rs274 -g`` alternately ``--repeat`` times and
 prints medians of CPU and wall time, ratios and peak memory (max RSS of the child process) as a
-table.  rs274 is optional: without it the reference column stays empty.
+table.  rs274 writes its canonical calls into a file, as ecnc writes its trace (issue 42's method), and, the
+stricter figure in brackets, into /dev/null.  rs274 is optional: without it the reference column stays empty.
 
     python benchmarks/bench_run.py               # all benchmarks
     python benchmarks/bench_run.py --only parse  # one of: parse run run1m macro startup comp cam arcs ijarcs rarcs drill
@@ -90,12 +91,19 @@ NEUTRAL_CWD = tempfile.gettempdir()
 ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
 
 
-def measure(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, float, float]:
-    """Wall seconds, CPU seconds (user + sys) and peak RSS (MB) of one run of ``cmd`` (stdout discarded)."""
+# rs274 -g prints its canonical calls: the reference writes them into this file, as ecnc writes its trace into
+# one (issue 42's method: "rs274 writing into a file as ecnc writes its trace"); the same run into /dev/null is
+# shown beside it, the stricter figure.
+REF_OUT = os.path.join(NEUTRAL_CWD, f"bench-run-rs274-{os.getpid()}.txt")
+
+
+def measure(cmd: list[str], env: dict[str, str] | None = None, out: str = os.devnull) -> tuple[float, float, float]:
+    """Wall seconds, CPU seconds (user + sys) and peak RSS (MB) of one run of ``cmd``, its output into ``out``."""
     start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=NEUTRAL_CWD,
-                            env={**ENV, **(env or {})})
-    _, _, usage = os.wait4(proc.pid, 0)
+    with open(out, "wb") as stdout:
+        proc = subprocess.Popen(cmd, stdout=stdout, stderr=subprocess.PIPE, cwd=NEUTRAL_CWD,
+                                env={**ENV, **(env or {})})
+        _, _, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - start
     if proc.stderr:
         proc.stderr.close()
@@ -105,13 +113,13 @@ def measure(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, f
 PURE = {"ECNC_PURE_PYTHON": "1"}  # the pure-Python core (docs/performance.md)
 
 
-def median_runs(cmds: dict[str, list[str]], repeat: int,
-                envs: dict[str, dict[str, str]] | None = None) -> dict[str, tuple[float, float, float]]:
+def median_runs(cmds: dict[str, list[str]], repeat: int, envs: dict[str, dict[str, str]] | None = None,
+                outs: dict[str, str] | None = None) -> dict[str, tuple[float, float, float]]:
     """Run the commands alternately; median wall and CPU time and max RSS for each."""
     results: dict[str, list[tuple[float, float, float]]] = {name: [] for name in cmds}
     for _ in range(repeat):
         for name, cmd in cmds.items():
-            results[name].append(measure(cmd, (envs or {}).get(name)))
+            results[name].append(measure(cmd, (envs or {}).get(name), (outs or {}).get(name, os.devnull)))
     return {name: (statistics.median(w for w, _, _ in runs), statistics.median(c for _, c, _ in runs),
                    max(m for _, _, m in runs)) for name, runs in results.items()}
 
@@ -137,18 +145,19 @@ def bench_parse(tmp: Path, repeat: int) -> list[tuple[str, str, str, str]]:
 
 
 def _versus(label: str, ours: list[str], ref: list[str] | None, repeat: int) -> list[tuple[str, str, str, str]]:
-    """``ours`` on the compiled core and on the Python core, and the reference, run in turn; CPU time ratios
-    (on a shared machine the CPU time of a run varies less than its wall time)."""
-    cmds = {"ecnc": ours, "pure": ours, **({"rs274": ref} if ref else {})}
-    res = median_runs(cmds, repeat, {"pure": PURE})
+    """``ours`` on the compiled core and on the Python core, and the reference (into a file, and into /dev/null),
+    run in turn; CPU time ratios (on a shared machine the CPU time of a run varies less than its wall time)."""
+    cmds = {"ecnc": ours, "pure": ours, **({"rs274": ref, "rs274-null": ref} if ref else {})}
+    res = median_runs(cmds, repeat, {"pure": PURE}, {"rs274": REF_OUT})
     rows = []
     for name, core in (("ecnc", "compiled core"), ("pure", "Python core")):
         wall, cpu, rss = res[name]
         if ref:
             ref_wall, ref_cpu, ref_rss = res["rs274"]
+            null_cpu = res["rs274-null"][1]
             rows.append((f"{label} ({core})", f"{cpu:.2f} s CPU, {wall:.2f} s wall, {rss:.0f} MB",
-                         f"{ref_cpu:.2f} s CPU, {ref_wall:.2f} s wall, {ref_rss:.0f} MB",
-                         f"{cpu / ref_cpu:.2f}x CPU, {wall / ref_wall:.2f}x wall"))
+                         f"{ref_cpu:.2f} s CPU ({null_cpu:.2f} s into /dev/null), {ref_wall:.2f} s wall, {ref_rss:.0f} MB",
+                         f"{cpu / ref_cpu:.2f}x CPU ({cpu / null_cpu:.2f}x), {wall / ref_wall:.2f}x wall"))
         else:
             rows.append((f"{label} ({core})", f"{cpu:.2f} s CPU, {wall:.2f} s wall, {rss:.0f} MB", "-", "-"))
     return rows
@@ -287,8 +296,12 @@ def main() -> None:
     args = parser.parse_args()
     rows = [("benchmark", "ecnc", "reference", "ratio")]
     with tempfile.TemporaryDirectory() as folder:
-        for name in args.only or list(BENCHES):
-            rows += BENCHES[name](Path(folder), args.repeat)
+        try:
+            for name in args.only or list(BENCHES):
+                rows += BENCHES[name](Path(folder), args.repeat)
+        finally:
+            if os.path.exists(REF_OUT):
+                os.remove(REF_OUT)
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for i, row in enumerate(rows):
         print(" | ".join(cell.ljust(w) for cell, w in zip(row, widths)))
