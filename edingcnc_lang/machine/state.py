@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from functools import reduce
+from operator import add, itemgetter
 from pathlib import Path
 from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING, ClassVar, Literal
@@ -143,6 +145,9 @@ def enters_box(start: Pose, end: Pose | list[float], low: tuple[float, ...], hig
         if t0 > t1:
             return False
     return True
+
+
+_XYZ = itemgetter(slice(0, 3))  # a pose's X Y Z (``travelled``)
 
 
 def path_length(start: Pose, end: Pose | list[float], arc: Arc | None) -> float:
@@ -360,14 +365,11 @@ class MachineState:
     def travelled(self, start: Pose | list[float], ends: Sequence[Pose], arc_lengths: Mapping[int, float]) -> None:
         """Count moves from ``start`` through ``ends`` into GetJobDistance, one by one as ``_move`` does: straight,
         or arcs, whose ``path_length`` the bulk path found as it read them (``arc_lengths``, by index)."""
-        distance = self.job_distance
-        points = [start[:3], *[end[:3] for end in ends]]
+        points = [start[:3], *map(_XYZ, ends)]
         steps = list(map(math.dist, points, points[1:]))  # xyz_distance of each move
         for index, length in arc_lengths.items():
             steps[index] = length
-        for step in steps:
-            distance += step
-        self.job_distance = distance
+        self.job_distance = reduce(add, steps, self.job_distance)  # one by one, in order (sum() may not be)
 
     def spindle_along(self) -> tuple[float, Css | None]:
         """The spindle a move made now carries: its speed in rpm (0 while stopped) and, under G96, the
