@@ -8,6 +8,7 @@ values once a value: its rows must be those a move at a time writes (``TraceWrit
 from __future__ import annotations
 
 import math
+import re
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -15,7 +16,7 @@ from hypothesis import strategies as st
 from edingcnc_lang.machine import plain_runs
 from edingcnc_lang.machine.plain_runs import G_0, G_1, USUAL_ORDER, _usual_order
 from edingcnc_lang.motion.sinks import SIX_REPR, trace_rows
-from edingcnc_lang.syntax.plain_words import FAST_NUMBER, is_fast_line
+from edingcnc_lang.syntax.plain_words import FAST_NUMBER, is_fast_line, plain_words, word_matches
 
 numbers = st.one_of(st.integers(-999, 99999).map(str), st.floats(-1000, 1000).map(lambda v: f"{v:.4f}"),
                     st.sampled_from([".5", "-.25", "+3", "7.", "0", "00012.500", "1" * 40, "-0", "1.2.3", ".", "1..",
@@ -101,3 +102,19 @@ def test_trace_rows_stop_at_the_shortest_column_when_every_coordinate_is_the_sam
     assert trace_rows([1, 2, 3, 4], ["rapid"] * 4, ends, "job.nc", [0.0, 1.0, 2.0, 3.0, 4.0]) == \
         "1,rapid,1.0,2.0,3.0,0.0,0.0,0.0,1.0,2.0,3.0,0.0,0.0,0.0,job.nc,1.0\n" \
         "2,rapid,1.0,2.0,3.0,0.0,0.0,0.0,1.0,2.0,3.0,0.0,0.0,0.0,job.nc,2.0\n"
+
+
+STRICT_WORDS = re.compile(rf"([A-Za-z])[ \t]*([+-]?{FAST_NUMBER})")
+
+
+@settings(max_examples=1000, deadline=None)
+@given(lines)
+def test_the_words_of_a_plain_line_are_those_fast_number_reads(text: str) -> None:
+    if not is_fast_line(text) or "(" in text:
+        return  # (a line with a comment is read token by token)
+    semicolon = text.find(";")
+    expected = STRICT_WORDS.findall(text, 0, semicolon if semicolon >= 0 else len(text))
+    assert plain_words(text) == expected
+    assert [(m.group(1), m.group(2), m.span()) for m in word_matches(text)] == \
+        [(m.group(1), m.group(2), m.span())
+         for m in STRICT_WORDS.finditer(text, 0, semicolon if semicolon >= 0 else len(text))]
