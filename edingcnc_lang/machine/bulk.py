@@ -16,8 +16,10 @@ the general path's.
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
+from functools import partial
 from typing import Any
 
 from edingcnc_lang.syntax import nodes as n
@@ -45,6 +47,7 @@ from edingcnc_lang.machine.state import (
 
 # The words a plain arc line may hold besides G and N, by plane: the axes, F, R and the plane's centre words.
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
+_ARC_WORD = re.compile("[IJKRijkr]")  # a letter an arc line needs one of (R or a centre word)
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arcs numbers them
 _COMPILED_ARCS = speedups.compiled("plain_arcs")  # None on the Python core
 _PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_moves  # the targets of a run of plain lines
@@ -184,20 +187,24 @@ class BulkPath(MachineState):
         lengths: dict[int, float] = {}  # the arcs' lengths, by their index among the moves
         read_arcs: ArcRun | None = None
         index = first
-        while index < len(lines) and room > 0:
-            index, done, after, feed, *columns = _PLAIN_MOVES(
+        total = len(lines)
+        while index < total and room > 0:  # (a CAM pass comes here every few lines: each step counts)
+            index, done, after, feed, run_kinds, run_numbers, run_ends, run_feeds, run_force = _PLAIN_MOVES(
                 lines, index, pos, offset, scale, incremental, motion if motion in (G_0, G_1) else NO_MOTION,
                 feed, room)
             room -= done
             if after != NO_MOTION:
                 motion = after
-            if columns[1]:
-                for column, values in zip((kinds, numbers, ends, feeds, in_force), columns):
-                    column.extend(values)  # type: ignore[attr-defined]
+            if run_numbers:
+                kinds += run_kinds
+                numbers += run_numbers
+                ends += run_ends
+                feeds += run_feeds
+                in_force += run_force
                 if arcs is not None:
-                    arcs.extend([None] * len(columns[1]))
+                    arcs += [None] * len(run_numbers)
                 pos = ends[-1]
-            if index >= len(lines) or room <= 0:
+            if index >= total or room <= 0:
                 break
             text = lines[index][1]
             if motion not in (G_2, G_3) and "G" not in text and "g" not in text:
@@ -242,8 +249,7 @@ class BulkPath(MachineState):
         within a run): the compiled one takes arcs with centre words or R, and leaves absolute centres and
         diameter programs to the Python reference (and a line it cannot scan, which the reference reads)."""
         if _COMPILED_ARCS is None or self.config.absolute_center_coords or self.diameter_mode:
-            return lambda lines, index, start, motion, feed, room: arc_run(
-                self._arc_of_words, lines, index, start, motion, feed, room)
+            return partial(arc_run, self._arc_of_words)
         plane = PLANE_OF[self.modal["plane"]]
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
         fixed = (_PLANE_INDEX[plane], self.config.reverse_g2g3, radius_tolerance(self.inch),
@@ -276,6 +282,8 @@ class BulkPath(MachineState):
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
         The reference for ``_speedups.plain_arcs``' reading of a line: the general path's own target and ``arc_plan``.
         """
+        if _ARC_WORD.search(text) is None:  # no R, I, J or K: no arc (arc_plan would refuse it), told at once
+            return None  # (a run of arcs ends at such a line: the straight line after it, in a CAM pass)
         pairs = plain_words(text)
         words = {letter.upper(): float(number) for letter, number in pairs}
         if len(words) < len(pairs):  # a letter twice

@@ -6,22 +6,41 @@ from __future__ import annotations
 
 import re
 import string
+import sys
 from collections.abc import Iterable, Sequence
 from itertools import accumulate, islice, repeat, takewhile
 from operator import add, mul
 
-from edingcnc_lang.syntax.plain_words import FAST_NUMBER, plain_words
+from edingcnc_lang.syntax.plain_words import plain_words
 from edingcnc_lang.machine.state import G_0, G_1
 
 NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one itself
-# The usual order of a CAM line's words, [N] [G] [X] [Y] [Z] [A] [B] [C] [F]; the words are
-# line_parser's (FAST_NUMBER), so it reads a line as plain_words would, only faster.  Each
-# optional word is "(?:...|)", which Python's engine runs faster than "(?:...)?".
-_VALUE = rf"([+-]?{FAST_NUMBER})[ \t]*"
-_USUAL = (rf"[ \t]*(?:[Nn][ \t]*[+-]?{FAST_NUMBER}[ \t]*|)"
-          + "".join(f"(?:[{a}{a.lower()}][ \\t]*{_VALUE}|)" for a in "GXYZABCF") + r"(?:;.*|)")
-USUAL_ORDER = re.compile(_USUAL + "$")
+# The usual order of a CAM line's words, [N] [G] [X] [Y] [Z] [A] [B] [C] [F], so it reads a line as
+# plain_words would, only faster.  A number is any run of digits and points: the lines are plain
+# (FAST_LINE), whose every number is a whole FAST_NUMBER (no digit or point follows one), so this reads
+# the same words as FAST_NUMBER would (tests/interpreter/test_plain_runs.py holds it to
+# ``_usual_order(FAST_NUMBER, "")``).  For the same reason no word, blank or number ever has to give
+# back what it took: from Python 3.11 on they are possessive, so that a line of other words (an arc's)
+# fails at once instead of trying every shorter number; before, each optional word is "(?:...|)", which
+# Python's engine runs faster than "(?:...)?".
+POSSESSIVE = "+" if sys.version_info >= (3, 11) else ""
+
+
+def _usual_order(number: str, possessive: str) -> re.Pattern[str]:
+    """The usual order's pattern, its numbers read by ``number``; ``possessive``: "+" or ""."""
+    blank = r"[ \t]*" + possessive
+    word = "(?:{}" + (")?+" if possessive else "|)")
+    return re.compile(blank + word.format(f"[Nn]{blank}[+-]?{number}{blank}")
+                      + "".join(word.format(f"[{a}{a.lower()}]{blank}([+-]?{number}){blank}") for a in "GXYZABCF")
+                      + word.format(";.*") + "$")
+
+
+USUAL_ORDER = _usual_order("[0-9.]+" + POSSESSIVE, POSSESSIVE)
 _WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
+# The motion of the G texts CAM output writes, looked up instead of read as a number (any other
+# text is read as one); a text is its number's motion: "01" is G1.
+_MOTION_OF = {text: G_0 if float(text) == 0.0 else G_1
+              for text in ("0", "1", "00", "01", "0.", "1.", "0.0", "1.0", "+0", "+1", "-0")}
 # A run of lines of one shape (the same letters in the same order, the same G text, no comment), as
 # CAM output and surfacing jobs write them, is read as columns with string methods instead of a match
 # and a loop step per line: the lines are plain (the check pass's FAST_LINE), so deleting the numbers
@@ -71,24 +90,28 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
     ends: list[tuple[float, ...]] = []
     feeds: list[float] = []
     in_force: list[float] = []
+    # (bound once: a CAM pass calls this for every few lines, and each line costs a handful of steps)
+    match, add_kind, add_number, add_end, add_feed, add_force = (
+        USUAL_ORDER.match, kinds.append, numbers.append, ends.append, feeds.append, in_force.append)
     position = tuple(pos)
-    done = 0
     stop = min(len(lines), first + max(room, 0))
     bulk = True  # whether to look for a run of lines of the shape of this one (_same_shape)
     index = first
     while index < stop:
         lineno, text = lines[index]
-        usual = USUAL_ORDER.match(text)
+        usual = match(text)
         row = usual.groups() if usual is not None else _words_row(text)
         if row is None:
             break
         g, x, y, z, a, b, c, f = row  # the number texts, empty or None where the line has no such word
         line_motion, new_feed = motion, feed
         if g:
-            value = float(g)
-            if value != 0.0 and value != 1.0:
-                break
-            line_motion = G_0 if value == 0.0 else G_1
+            line_motion = _MOTION_OF.get(g, NO_MOTION)
+            if line_motion == NO_MOTION:  # a text not in the table: read as a number
+                value = float(g)
+                if value != 0.0 and value != 1.0:
+                    break
+                line_motion = G_0 if value == 0.0 else G_1
         if f:
             value = float(f)
             if value < 0:
@@ -100,11 +123,11 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
             if line_motion == G_1:
                 if new_feed <= 0:
                     break
-                kinds.append("linear")
-                feeds.append(new_feed)
+                add_kind("linear")
+                add_feed(new_feed)
             else:
-                kinds.append("rapid")
-                feeds.append(0.0)
+                add_kind("rapid")
+                add_feed(0.0)
             base = position if incremental else offset
             position = (base[0] + float(x) * scale if x else position[0],
                         base[1] + float(y) * scale if y else position[1],
@@ -112,9 +135,9 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
                         base[3] + float(a) if a else position[3],
                         base[4] + float(b) if b else position[4],
                         base[5] + float(c) if c else position[5])
-            numbers.append(lineno)
-            ends.append(position)
-            in_force.append(new_feed)
+            add_number(lineno)
+            add_end(position)
+            add_force(new_feed)
             if bulk and usual is not None and stop - index > SHAPE_LEAST and ";" not in text:
                 # a run of this line's shape ahead (its SHAPE_LEAST-th line, then all of them, checked)?
                 bulk = False  # tried again after a run of one shape, not after a line that starts none
@@ -130,13 +153,11 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
                     if taken:
                         bulk = True
                         index += taken
-                        done += taken
                         position = ends[-1]
                         new_feed = in_force[-1]
         motion, feed = line_motion, new_feed
-        done += 1
         index += 1
-    return first + done, done, motion, feed, kinds, numbers, ends, feeds, in_force
+    return index, index - first, motion, feed, kinds, numbers, ends, feeds, in_force
 
 
 def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str, g: str | None, motion: int,

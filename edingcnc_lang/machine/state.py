@@ -13,6 +13,7 @@ import operator
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import reduce
+from operator import itemgetter
 from pathlib import Path
 from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING, ClassVar, Literal
@@ -145,6 +146,9 @@ def enters_box(start: Pose, end: Pose | list[float], low: tuple[float, ...], hig
         if t0 > t1:
             return False
     return True
+
+
+_XYZ = itemgetter(slice(0, 3))  # a pose's X Y Z (``travelled``)
 
 
 def path_length(start: Pose, end: Pose | list[float], arc: Arc | None) -> float:
@@ -365,7 +369,7 @@ class MachineState:
         if len(arc_lengths) == len(ends):  # arcs only (a run of arc lines): their lengths in order
             steps: Iterable[float] = map(arc_lengths.__getitem__, range(len(ends)))
         else:
-            points = [start[:3], *[end[:3] for end in ends]]
+            points = [start[:3], *map(_XYZ, ends)]
             steps = list(map(math.dist, points, points[1:]))  # xyz_distance of each move
             for index, length in arc_lengths.items():
                 steps[index] = length

@@ -13,6 +13,7 @@ import math
 import os
 import sys
 from collections.abc import Callable, Sequence
+from itertools import islice
 from operator import neg
 from pathlib import Path
 from typing import IO, TYPE_CHECKING
@@ -153,7 +154,8 @@ def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose],
     """The trace rows of straight moves whose joints are their end points (``times[i + 1]``: when move i ends).
 
     A coordinate that is the same in every row (A B C mostly, Z on a pass at one depth) is written
-    once into the format instead of once a row: ``repr`` is most of the cost.
+    once into the format instead of once a row, and one of few values (Z between cuts and lifts, a
+    hole's X Y in its four moves) once a value (``_column_texts``): ``repr`` is most of the cost.
     The reference for ``_speedups.trace_rows``, which must give the same text byte for byte.
     """
     count = len(ends)
@@ -166,12 +168,27 @@ def trace_rows(lines: Sequence[int], kinds: Sequence[str], ends: Sequence[Pose],
         if column.count(value) == count and (value != 0.0 or _same_bits(column, value)):
             fields.append(repr(value))
         else:
-            fields.append("%r")
-            varying.append(column)
-    coordinate = ",".join(fields)
-    coords = list(map(coordinate.__mod__, zip(*varying))) if varying else [coordinate] * count
-    row = "%s,%s,%s,%s," + name.replace("%", "%%") + ",%s\n"  # one format per row, applied in C
-    return "".join(map(row.__mod__, zip(lines, kinds, coords, coords, map(repr, times[1:]))))
+            fields.append("%s")
+            varying.append(_column_texts(column))
+    coordinate = ",".join(fields)  # (a float's repr has no '%')
+    # one format per row, applied in C, that takes the end point's texts twice (the joints are the end)
+    row = "%s,%s," + coordinate + "," + coordinate + "," + name.replace("%", "%%") + ",%s\n"
+    return "".join(map(row.__mod__, islice(zip(lines, kinds, *varying, *varying, map(repr, times[1:])), count)))
+
+
+REPEATS_SAMPLE = 64  # a column's first values, looked at to tell whether its values repeat
+
+
+def _column_texts(column: Sequence[float]) -> list[str]:
+    """``repr`` of each value of ``column``, each distinct value's once when the column's first values
+    repeat (each its own otherwise: the look costs less than a set of all of them).  Not with a zero
+    among them: 0.0 and -0.0 are one key of a dict, but their reprs differ."""
+    if len(set(column[:REPEATS_SAMPLE])) * 2 > min(len(column), REPEATS_SAMPLE):
+        return list(map(repr, column))
+    distinct = set(column)
+    if 0.0 in distinct:
+        return list(map(repr, column))
+    return list(map(dict(zip(distinct, map(repr, distinct))).__getitem__, column))
 
 
 def _same_bits(zeros: Sequence[float], value: float) -> bool:
