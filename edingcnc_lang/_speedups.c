@@ -8,6 +8,7 @@
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
+ * comp_lines:      pipeline/comp_runs.py's comp_lines (a run of plain corners of cutter compensation).
  *
  * One translation unit in parts, a part per job (csrc/speedups_*.c), included below in order: their
  * helpers stay static, private to the extension.
@@ -36,6 +37,7 @@ static PyObject *rapid_kind;
 #include "csrc/speedups_trace.c"
 #include "csrc/speedups_arcs.c"
 #include "csrc/speedups_holes.c"
+#include "csrc/speedups_comp.c"
 
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
@@ -46,6 +48,7 @@ static PyMethodDef methods[] = {
     {"arc_frame_rows", arc_frame_rows, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled."},
     {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
+    {"comp_lines", comp_lines, METH_VARARGS, "pipeline.comp_runs.comp_lines, compiled."},
     {NULL, NULL, 0, NULL},
 };
 
