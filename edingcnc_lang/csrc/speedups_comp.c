@@ -25,14 +25,17 @@ static int comp_point(PyObject *pose, int first, int second, double *x, double *
     return PyErr_Occurred() ? -1 : 0;
 }
 
-/* comp_geometry.Frame.poses for one pose: ``pose`` as a tuple with its in-plane values replaced. */
-static PyObject *comp_pose(PyObject *pose, int first, int second, double x, double y)
+/* ``pose`` as a tuple with its values on the axes ``at[0..count-1]`` replaced by ``value``. */
+static PyObject *comp_pose(PyObject *pose, const int *at, const double *value, int count)
 {
     PyObject *made = PyTuple_New(6);
     Py_ssize_t k;
     for (k = 0; made != NULL && k < 6; k++) {
-        PyObject *item = k == first ? PyFloat_FromDouble(x) : k == second ? PyFloat_FromDouble(y)
-                                                                           : PySequence_GetItem(pose, k);
+        PyObject *item = NULL;
+        int j;
+        for (j = 0; j < count && at[j] != k; j++)
+            ;
+        item = j < count ? PyFloat_FromDouble(value[j]) : PySequence_GetItem(pose, k);
         if (item == NULL || PyTuple_SetItem(made, k, item) < 0)
             Py_CLEAR(made);
     }
@@ -42,28 +45,28 @@ static PyObject *comp_pose(PyObject *pose, int first, int second, double x, doub
 /* comp_runs.comp_lines, compiled: see its docstring for the arguments and what it returns. */
 static PyObject *comp_lines(PyObject *self, PyObject *args)
 {
-    PyObject *ends, *poses = NULL, *previous = NULL, *result = NULL;
+    PyObject *ends, *poses = NULL, *corners = NULL, *previous = NULL, *result = NULL;
     Py_ssize_t index, stop, k;
-    int first, second, side;
-    double radius, sx, sy, cx, cy, qx, qy, px, py, gamma, held_x = 0.0, held_y = 0.0;
+    int axes[3], side;
+    double radius, sx, sy, cx, cy, qx, qy, px, py, level, gamma, held[2] = {0.0, 0.0};
     (void)self;
-    if (!PyArg_ParseTuple(args, "Onniiid(dd)(dd)(dd)(dd)", &ends, &index, &stop, &first, &second, &side, &radius,
-                          &sx, &sy, &cx, &cy, &qx, &qy, &px, &py))
+    if (!PyArg_ParseTuple(args, "Onn(iii)id(ddddddddd)", &ends, &index, &stop, &axes[0], &axes[1], &axes[2], &side,
+                          &radius, &sx, &sy, &cx, &cy, &qx, &qy, &px, &py, &level))
         return NULL;
-    if (first < 0 || first > 5 || second < 0 || second > 5 || first == second) {
-        PyErr_SetString(PyExc_ValueError, "the plane's axes are two of the six");
+    if (axes[0] < 0 || axes[0] > 5 || axes[1] < 0 || axes[1] > 5 || axes[2] < 0 || axes[2] > 5
+        || axes[0] == axes[1] || axes[0] == axes[2] || axes[1] == axes[2]) {
+        PyErr_SetString(PyExc_ValueError, "the plane's axes are three of the six");
         return NULL;
     }
-    if ((poses = PyList_New(0)) == NULL)
-        return NULL;
+    if ((poses = PyList_New(0)) == NULL || (corners = PyList_New(0)) == NULL)
+        goto done;
     gamma = side == COMP_LEFT ? M_PI / 2 : -M_PI / 2;  /* comp_geometry.side_angle */
     for (k = index; k < stop; k++) {
         double tx, ty, theta, alpha, beta, hx, hy;
-        int concave;
         PyObject *pose = PySequence_GetItem(ends, k);
         if (pose == NULL)
             goto done;
-        if (comp_point(pose, first, second, &tx, &ty) < 0) {
+        if (comp_point(pose, axes[0], axes[1], &tx, &ty) < 0) {
             Py_DECREF(pose);
             goto done;
         }
@@ -82,13 +85,9 @@ static PyObject *comp_lines(PyObject *self, PyObject *args)
                 alpha = alpha + 2 * M_PI;
             beta = alpha - theta - M_PI / 2;
         }
-        concave = beta < -COMP_TOLERANCE || beta > M_PI + COMP_TOLERANCE;  /* inside_corner */
-        if (!concave && beta > COMP_TOLERANCE) {  /* outside_corner: the tool goes round it */
-            Py_DECREF(pose);
-            break;
-        }
-        if (concave) {
-            double half = (beta + M_PI) / 2.0, distance;  /* half_corner, cut_back */
+        alpha = alpha + gamma;
+        if (beta < -COMP_TOLERANCE || beta > M_PI + COMP_TOLERANCE) {  /* inside_corner: half_corner, cut_back */
+            double half = (beta + M_PI) / 2.0, distance;
             if (half == 0.0) {
                 Py_DECREF(pose);
                 break;
@@ -97,37 +96,71 @@ static PyObject *comp_lines(PyObject *self, PyObject *args)
             theta = theta + gamma;
             hx = cx + distance * cos(theta);
             hy = cy + distance * sin(theta);
-            if (qx * (hx - px) + qy * (hy - py) < 0) {  /* reverses: the stage refuses it */
+            if (qx * (hx - px) + qy * (hy - py) < 0) {  /* reverses */
                 Py_DECREF(pose);
                 break;
             }
-        } else {
+            px = hx;
+            py = hy;
+        } else if (beta > COMP_TOLERANCE) {  /* outside_corner: round the corner point */
+            double value[3];
+            PyObject *corner;
+            if (qx * (cx - px) + qy * (cy - py) < 0) {  /* reverses */
+                Py_DECREF(pose);
+                break;
+            }
+            px = sx + radius * cos(alpha);  /* at(start, radius, alpha + gamma) */
+            py = sy + radius * sin(alpha);
+            if (fabs(px - cx) < 1e-9 && fabs(py - cy) < 1e-9) {  /* an arc that may be closed */
+                Py_DECREF(pose);
+                break;
+            }
             hx = cx;
             hy = cy;
+            value[0] = px;
+            value[1] = py;
+            value[2] = level;
+            corner = comp_pose(pose, axes, value, 3);
+            if (corner == NULL || append_new(corners, Py_BuildValue("(nNdd)", k, corner, sx, sy)) < 0) {
+                Py_DECREF(pose);
+                goto done;
+            }
+        } else {
+            hx = px = cx;
+            hy = py = cy;
         }
         /* the move before this one ends at (hx, hy): the one the stage holds, or the run's last */
         if (previous == NULL) {
-            held_x = hx;
-            held_y = hy;
-        } else if (append_new(poses, comp_pose(previous, first, second, hx, hy)) < 0) {
-            Py_DECREF(pose);
-            goto done;
+            held[0] = hx;
+            held[1] = hy;
+        } else {
+            double value[2] = {hx, hy};
+            if (append_new(poses, comp_pose(previous, axes, value, 2)) < 0) {
+                Py_DECREF(pose);
+                goto done;
+            }
         }
         Py_XDECREF(previous);
         previous = pose;
         qx = tx - sx;
         qy = ty - sy;
-        px = hx;
-        py = hy;
-        alpha = alpha + gamma;  /* at(target, radius, alpha + gamma) */
-        cx = tx + radius * cos(alpha);
+        cx = tx + radius * cos(alpha);  /* at(target, radius, alpha + gamma) */
         cy = ty + radius * sin(alpha);
         sx = tx;
         sy = ty;
+        {
+            PyObject *item = PySequence_GetItem(pose, axes[2]);
+            level = item == NULL ? -1.0 : PyFloat_AsDouble(item);
+            Py_XDECREF(item);
+            if (PyErr_Occurred())
+                goto done;
+        }
     }
-    result = Py_BuildValue("(n(dd)O(dddddddd))", k - index, held_x, held_y, poses, cx, cy, qx, qy, px, py, sx, sy);
+    result = Py_BuildValue("(n(dd)OO(ddddddddd))", k - index, held[0], held[1], poses, corners, sx, sy, cx, cy, qx, qy,
+                           px, py, level);
 done:
     Py_XDECREF(previous);
-    Py_DECREF(poses);
+    Py_XDECREF(poses);
+    Py_XDECREF(corners);
     return result;
 }

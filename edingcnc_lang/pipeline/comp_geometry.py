@@ -162,9 +162,13 @@ class Queued:
     turn: int = 0                  # arcs: +1 counter-clockwise, -1 clockwise
     sweep: float = 0.0             # arcs: the angle swept when queued
 
+    def arc(self, start: Pose, frame: Frame) -> Arc | None:
+        """The circle of the move handed on from ``start`` (None: straight); ends that meet: a full circle."""
+        if self.center is None:
+            return None
+        closed = math.dist(frame.point(start), frame.point(self.end)) < 1e-9
+        return Arc(frame.named(self.center), frame.plane, self.turn, 1 if closed else 0)
+
     def to_move(self, start: Pose, frame: Frame) -> Move:
-        arc = None
-        if self.center is not None:
-            closed = math.dist(frame.point(start), frame.point(self.end)) < 1e-9
-            arc = Arc(frame.named(self.center), frame.plane, self.turn, 1 if closed else 0)
-        return replace(self.origin, kind=self.kind, start=start, end=tuple(self.end), feed=self.feed, arc=arc)
+        return replace(self.origin, kind=self.kind, start=start, end=tuple(self.end), feed=self.feed,
+                       arc=self.arc(start, frame))

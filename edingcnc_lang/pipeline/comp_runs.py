@@ -25,34 +25,35 @@ if TYPE_CHECKING:
 
     from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 
-# where a run leaves the stage: the last move's compensated end (x, y), its programmed direction (x, y),
-# where it starts (x, y, the stage's endpoint) and its programmed end (x, y)
-Last = tuple[float, float, float, float, float, float, float, float]
+# What a run needs of the stage and leaves it: the held move's programmed end (x, y), compensated end
+# (x, y), programmed direction (x, y) and compensated start (x, y, the stage's endpoint), and the
+# compensated end's coordinate on the plane's normal axis.
+State = tuple[float, float, float, float, float, float, float, float, float]
+# an outside corner: the batch move it comes before, where the tool goes round it to, and the corner
+Corner = tuple[int, Pose, float, float]
 
 
-def comp_lines(ends: Sequence[Pose], index: int, stop: int, first: int, second: int, side: int, radius: float,
-               program: Point, current: Point, direction: Point, endpoint: Point
-               ) -> tuple[int, Point, list[Pose], Last]:
+def comp_lines(ends: Sequence[Pose], index: int, stop: int, axes: tuple[int, int, int], side: int, radius: float,
+               state: State) -> tuple[int, Point, list[Pose], list[Corner], State]:
     """Compensate the straight moves ending at ``ends[index:stop]`` while their corners are plain.
 
-    The stage holds one straight move back (programmed ``direction``, starting at ``endpoint``, its
-    compensated end ``current``, programmed end ``program``); ``first`` and ``second`` are the plane's
-    axes in a pose.  Stops before a move without motion in the plane, with an outside corner, or whose
-    corner the stage refuses (a fold or a reversal).
-    Returns how many moves it took; where the held move ends, cut back into the first corner; the
-    ends of the taken moves but the last, as poses; and the last one as ``Last`` (held back in turn).
+    The stage holds one straight move back, as ``state`` says; ``axes`` are the plane's first, second
+    and normal axes in a pose.  Stops before a move without motion in the plane or whose corner the
+    stage refuses (a fold or a reversal), and before an outside corner whose arc might be closed.
+    Returns how many moves it took; where the held move ends (cut back into an inside corner); the
+    ends of the taken moves but the last, as poses; the outside corners (the tool goes round each
+    corner point on an arc, or straight for a rapid); and the state the last move leaves, held back
+    in turn.
     """
-    sx, sy = program
-    cx, cy = current
-    qx, qy = direction
-    px, py = endpoint
+    sx, sy, cx, cy, qx, qy, px, py, level = state
+    first, second, normal = axes
     left = side == LEFT
     gamma = side_angle(side)
     atan2, cos, sin, tan = math.atan2, math.cos, math.sin, math.tan
     turn, low, high = 2 * math.pi, -CONCAVE_TOLERANCE, math.pi + CONCAVE_TOLERANCE
-    held, poses, previous = (0.0, 0.0), [], None
+    held, poses, corners, previous = (0.0, 0.0), [], [], None
     append = poses.append
-    plane_xy = (first, second) == (0, 1)
+    plane_xy = axes == (0, 1, 2)
     k = index
     for k, pose in enumerate(ends[index:stop], index):  # noqa: B007 (k: how far the run got)
         tx, ty = pose[first], pose[second]
@@ -68,6 +69,7 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, first: int, second: 
             if alpha < theta:
                 alpha = alpha + turn
             beta = alpha - theta - HALF_PI
+        alpha = alpha + gamma
         if beta < low or beta > high:  # inside_corner: cut the move before back (half_corner, cut_back)
             half = (beta + math.pi) / 2.0
             if half == 0.0:
@@ -77,10 +79,21 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, first: int, second: 
             hy = cy + distance * sin(theta)
             if qx * (hx - px) + qy * (hy - py) < 0:  # reverses
                 break
-        elif beta > CONCAVE_TOLERANCE:  # outside_corner: the tool goes round it
-            break
-        else:
+            px, py = hx, hy
+        elif beta > CONCAVE_TOLERANCE:  # outside_corner: round the corner point, from the tool to beside it
+            if qx * (cx - px) + qy * (cy - py) < 0:  # reverses
+                break
+            px = sx + radius * cos(alpha)  # at(start, radius, alpha + gamma)
+            py = sy + radius * sin(alpha)
+            if abs(px - cx) < 1e-9 and abs(py - cy) < 1e-9:  # an arc that may be closed: a whole circle
+                break
             hx, hy = cx, cy
+            made = list(pose)
+            made[first], made[second], made[normal] = px, py, level
+            corners.append((k, tuple(made), sx, sy))
+        else:
+            hx = px = cx
+            hy = py = cy
         if previous is None:
             held = (hx, hy)
         elif plane_xy:
@@ -91,14 +104,14 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, first: int, second: 
             made[first], made[second] = hx, hy
             append(tuple(made))
         previous = pose
-        qx, qy, px, py = tx - sx, ty - sy, hx, hy
-        alpha = alpha + gamma  # at(target, radius, alpha + gamma)
-        cx = tx + radius * cos(alpha)
+        qx = tx - sx
+        qy = ty - sy
+        cx = tx + radius * cos(alpha)  # at(target, radius, alpha + gamma)
         cy = ty + radius * sin(alpha)
-        sx, sy = tx, ty
+        sx, sy, level = tx, ty, pose[normal]
     else:
         k = stop
-    return k - index, held, poses, (cx, cy, qx, qy, px, py, sx, sy)
+    return k - index, held, poses, corners, (sx, sy, cx, cy, qx, qy, px, py, level)
 
 
 LINES = speedups.compiled("comp_lines") or comp_lines
@@ -113,25 +126,26 @@ def _steady(stage: CutterCompensation) -> bool:
 
 def _take_run(stage: CutterCompensation, batch: Batch, index: int, stop: int) -> int:
     """Compensate a run of batch moves from ``index`` (before ``stop``) with plain corners: hand on the
-    move the stage holds and all but the last of them, and hold the last one back, as the stage does
-    move by move.  Returns how many it took (0: the stage takes move ``index`` itself)."""
-    frame, queued = stage.frame, stage.queue[0]
+    move the stage holds, the corners and all but the last of the moves, and hold the last one back,
+    as the stage does move by move.  Returns how many it took (0: the stage takes move ``index`` itself)."""
+    frame, queued, current = stage.frame, stage.queue[0], stage.current
     assert isinstance(queued, Queued) and stage.endpoint is not None
-    taken, held, poses, (ex, ey, dx, dy, hx, hy, tx, ty) = LINES(
-        batch.ends, index, stop, frame.first, frame.second, stage.side, stage.radius, stage.program,
-        frame.point(stage.current), queued.direction, stage.endpoint)
+    state = (*stage.program, current[frame.first], current[frame.second], *queued.direction, *stage.endpoint,
+             current[frame.normal])
+    taken, held, poses, corners, state = LINES(batch.ends, index, stop, (frame.first, frame.second, frame.normal),
+                                               stage.side, stage.radius, state)
     if not taken:
         return 0
     queued.end = frame.pose(queued.end, held)
     stage._dequeue()
-    if poses:
-        stage._hand_on_run(batch, index, poses)
+    stage._hand_on_run(batch, index, poses, corners)
+    sx, sy, cx, cy, dx, dy, hx, hy, _ = state
     last = index + taken - 1
     move = batch.move(last, batch.ends[last - 1] if last else batch.start)
-    stage.queue.append(Queued(move, move.kind, frame.pose(move.end, (ex, ey)), move.feed, direction=(dx, dy)))
+    stage.queue.append(Queued(move, move.kind, frame.pose(move.end, (cx, cy)), move.feed, direction=(dx, dy)))
     stage.endpoint = (hx, hy)
-    stage.current = frame.pose(move.end, (ex, ey))
-    stage.program = (tx, ty)
+    stage.current = frame.pose(move.end, (cx, cy))
+    stage.program = (sx, sy)
     return taken
 
 

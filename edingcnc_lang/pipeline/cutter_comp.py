@@ -35,7 +35,7 @@ from edingcnc_lang.events import CutterCompEvent, EndEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.pipeline.base import FLUSHING_EVENTS, Stage
-from edingcnc_lang.pipeline.comp_runs import take_batch
+from edingcnc_lang.pipeline.comp_runs import Corner, take_batch
 from edingcnc_lang.pipeline.comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
     ARC_SWEEP_SLACK_MM,
@@ -83,8 +83,10 @@ class CutterCompensation(Stage):
         self.emitted: Pose | None = None   # where the machine is after the moves handed on
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
         self.tip = (0.0, 0.0)              # a lathe tool: X, Z from the nose centre to its controlled point
-        # compensated straight moves released during one call, handed on together as one Batch
+        # compensated moves released during one call, handed on together as one Batch; the arcs among
+        # them (the batch's arcs column, None while they are all straight)
         self.out: Batch | None = None
+        self.out_arcs: list[Arc | None] | None = None
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
@@ -141,23 +143,31 @@ class CutterCompensation(Stage):
 
     # ---------------------------------------------------------------- output
     def _hand_on(self, item: Queued, start: Pose) -> Pose:
-        """Hand a released move on: a straight one joins the batch being collected while it shares the
-        batch's spindle, caller and file; returns where it ends."""
+        """Hand a released move on: it joins the batch being collected while it shares the batch's
+        spindle, caller and file (a move under G96 goes on alone); returns where it ends."""
         origin = item.origin
         if self.tip != (0.0, 0.0):
             self._at_tip(item)
-        if item.center is not None or origin.css is not None:
+        if origin.css is not None:
             self._send()
             move = item.to_move(start, self.frame)
             self.next.move(move)
             return move.end
         end = tuple(item.end)
-        out = self._collecting(origin, start)
-        out.kinds.append(item.kind)  # type: ignore[attr-defined]
-        out.lines.append(origin.line)  # type: ignore[attr-defined]
-        out.ends.append(end)  # type: ignore[attr-defined]
-        out.feeds.append(item.feed)  # type: ignore[attr-defined]
+        self._append(self._collecting(origin, start), item.kind, origin.line, end, item.feed,
+                     item.arc(start, self.frame))
         return end
+
+    def _append(self, out: Batch, kind: str, line: int, end: Pose, feed: float, arc: Arc | None) -> None:
+        """Add one move to ``out``, the batch being collected."""
+        out.kinds.append(kind)  # type: ignore[attr-defined]
+        out.lines.append(line)  # type: ignore[attr-defined]
+        out.ends.append(end)  # type: ignore[attr-defined]
+        out.feeds.append(feed)  # type: ignore[attr-defined]
+        if arc is not None and self.out_arcs is None:
+            self.out_arcs = [None] * (len(out.lines) - 1)
+        if self.out_arcs is not None:
+            self.out_arcs.append(arc)
 
     def _at_tip(self, item: Queued) -> None:
         """A lathe tool's move, computed for the nose centre, moved to the tool's controlled point."""
@@ -168,15 +178,31 @@ class CutterCompensation(Stage):
         if item.center is not None:  # XZ frame points are (z, x)
             item.center = (item.center[0] + dz, item.center[1] + dx)
 
-    def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose]) -> None:
-        """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``."""
-        stop = first + len(ends)
+    def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose], corners: list[Corner]) -> None:
+        """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``, and
+        the outside corners before them (``comp_runs.comp_lines``)."""
         out = self._collecting(batch, self.emitted)  # type: ignore[arg-type]
+        at = first
+        for index, corner, x, y in corners:
+            self._hand_on_slice(out, batch, at, ends[at - first:index - first])
+            if batch.kinds[index] == "linear":  # made by the programmed move it comes before
+                arc = Arc(self.frame.named((x, y)), self.frame.plane, -1 if self.side == LEFT else 1, 0)
+                self._append(out, "arc", batch.lines[index], corner, batch.feeds[index], arc)
+            else:
+                self._append(out, "rapid", batch.lines[index], corner, 0.0, None)
+            at = index
+        self._hand_on_slice(out, batch, at, ends[at - first:])
+        self.emitted = out.ends[-1]
+
+    def _hand_on_slice(self, out: Batch, batch: Batch, first: int, ends: list[Pose]) -> None:
+        """Add batch moves ``first``.. (straight), compensated to end at ``ends``, to ``out``."""
+        stop = first + len(ends)
         out.kinds.extend(batch.kinds[first:stop])  # type: ignore[attr-defined]
         out.lines.extend(batch.lines[first:stop])  # type: ignore[attr-defined]
         out.ends.extend(ends)  # type: ignore[attr-defined]
         out.feeds.extend(batch.feeds[first:stop])  # type: ignore[attr-defined]
-        self.emitted = ends[-1]
+        if self.out_arcs is not None:
+            self.out_arcs.extend([None] * len(ends))
 
     def _collecting(self, source: Move | Batch, start: Pose) -> Batch:
         """The batch being collected, if moves from ``source`` (same file, spindle, caller) may join it;
@@ -191,9 +217,9 @@ class CutterCompensation(Stage):
 
     def _send(self) -> None:
         """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
-        out, self.out = self.out, None
+        out, arcs, self.out, self.out_arcs = self.out, self.out_arcs, None, None
         if out is not None:
-            self.next.move_batch(out)
+            self.next.move_batch(out if arcs is None else replace(out, arcs=arcs))
 
     # ---------------------------------------------------------------- on and off
     def _switch(self, event: CutterCompEvent) -> None:
