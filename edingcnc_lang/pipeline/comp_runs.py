@@ -51,7 +51,9 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, axes: tuple[int, int
     gamma = side_angle(side)
     atan2, cos, sin, tan = math.atan2, math.cos, math.sin, math.tan
     turn, low, high = 2 * math.pi, -CONCAVE_TOLERANCE, math.pi + CONCAVE_TOLERANCE
-    held, poses, corners, previous = (0.0, 0.0), [], [], None
+    held, previous = (0.0, 0.0), None
+    poses: list[Pose] = []
+    corners: list[Corner] = []
     append = poses.append
     plane_xy = axes == (0, 1, 2)
     k = index

@@ -15,7 +15,9 @@ import subprocess
 import sys
 from collections.abc import Iterable, Sequence
 from pathlib import Path
+from importlib import import_module
 from random import Random
+from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -26,12 +28,16 @@ from edingcnc_lang.canon import PLANES, Pose
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.pipeline import comp_runs
 from edingcnc_lang.pipeline.comp_geometry import LEFT, RIGHT
-from edingcnc_lang.speedups import SPEEDUPS
 
+try:  # the compiled core, also where ECNC_PURE_PYTHON=1 runs the suite on the Python one
+    COMPILED: Any = import_module("edingcnc_lang._speedups")
+except ImportError:
+    COMPILED = None
+NOT_BUILT = "the compiled core is not built here"
 TOOLS = Path(__file__).resolve().parents[1] / "golden" / "linuxcnc" / "tools.ini"
 LOOPS = [pytest.param(comp_runs.comp_lines, id="python"),
-         pytest.param(getattr(SPEEDUPS, "comp_lines", None), id="compiled",
-                      marks=pytest.mark.skipif(SPEEDUPS is None, reason="the compiled core is not built here"))]
+         pytest.param(getattr(COMPILED, "comp_lines", None), id="compiled",
+                      marks=pytest.mark.skipif(COMPILED is None, reason=NOT_BUILT))]
 
 
 def _walk(rng: Random, count: int, axes: tuple[int, int, int]) -> list[Pose]:
@@ -52,7 +58,7 @@ def _walk(rng: Random, count: int, axes: tuple[int, int, int]) -> list[Pose]:
     return ends
 
 
-@pytest.mark.skipif(SPEEDUPS is None, reason="the compiled core is not built here")
+@pytest.mark.skipif(COMPILED is None, reason=NOT_BUILT)
 @settings(max_examples=400, deadline=None)
 @given(seed=st.integers(0, 2**32), count=st.integers(1, 40), plane=st.sampled_from(sorted(PLANES)),
        side=st.sampled_from([LEFT, RIGHT]), radius=st.sampled_from([0.2, 1.0, 3.0, 1e-10, 5e-10]),
@@ -73,7 +79,7 @@ def test_the_compiled_run_of_corners_is_the_python_one(seed: int, count: int, pl
     runs = 0
     while index < count:
         args = (ends, index, count, axes, side, radius, state)
-        made = SPEEDUPS.comp_lines(*args)
+        made = COMPILED.comp_lines(*args)
         assert repr(made) == repr(comp_runs.comp_lines(*args))
         taken, _held, poses, corners, state = made
         assert len(poses) == max(taken - 1, 0) and all(index <= k < index + taken for k, *_ in corners)
@@ -94,7 +100,7 @@ def test_a_run_goes_round_outside_corners_and_into_inside_ones() -> None:
     each loop takes the whole square, cutting back or going round each corner (an arc of the tool radius)."""
     square = [(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0), (10.0, 0.0)]
     ends = [(x, y, -1.0, 0.0, 0.0, 0.0) for x, y in square]
-    for loop in (comp_runs.comp_lines, getattr(SPEEDUPS, "comp_lines", None)):
+    for loop in (comp_runs.comp_lines, getattr(COMPILED, "comp_lines", None)):
         if loop is None:
             continue
         inside = loop(ends, 0, 5, (0, 1, 2), LEFT, 1.0, (0.0, 0.0, 0.0, 1.0, 1.0, 0.0, -5.0, 1.0, -1.0))
@@ -190,8 +196,8 @@ WHOLE_JOBS = {
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(WHOLE_JOBS))
 def test_a_compensated_job_traces_the_same_bytes_on_both_cores(tmp_path: Path, name: str) -> None:
-    if SPEEDUPS is None:
-        pytest.skip("the compiled core is not built here")
+    if COMPILED is None:
+        pytest.skip(NOT_BUILT)
     job = tmp_path / "job.nc"
     job.write_text(WHOLE_JOBS[name])
     made = []
