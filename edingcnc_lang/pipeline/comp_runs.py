@@ -5,10 +5,11 @@ two straight moves.  For those the compensated path needs no look at anything bu
 points, so ``comp_lines`` computes a whole run of them, one after the other, with the very
 operations of the stage's ``_straight`` (``comp_geometry``'s ``line_corner``, ``at``, ``cut_back`` and
 ``reverses``, in the same order: the same bits), without a record per move, and the run goes on to
-the next stage as one piece of a ``Batch``.  The compiled core has it in C (``csrc/speedups_comp.c``);
-neither needs numpy.  Whatever needs more (an arc, an outside corner's arc, a move without motion in
-the plane, a corner the tool refuses) is left to the stage's own code for single moves, and the run
-goes on after it: a batch gives the moves, events and errors that its moves would give one by one.
+the next stage as one piece of a ``Batch``, with the arcs (or rapids) that go round its outside
+corners.  The compiled core has it in C (``csrc/speedups_comp.c``); neither needs numpy.  Whatever
+needs more (an arc, a move without motion in the plane, a corner the tool refuses) is left to the
+stage's own code for single moves, and the run goes on after it: a batch gives the moves, events and
+errors that its moves would give one by one.
 """
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ import math
 from typing import TYPE_CHECKING
 
 from edingcnc_lang import speedups
-from edingcnc_lang.canon import Batch, Pose
+from edingcnc_lang.canon import Arc, Batch, Pose
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.pipeline.comp_geometry import CONCAVE_TOLERANCE, HALF_PI, LEFT, Point, Queued, side_angle
 
@@ -29,24 +30,30 @@ if TYPE_CHECKING:
 # (x, y), programmed direction (x, y) and compensated start (x, y, the stage's endpoint), and the
 # compensated end's coordinate on the plane's normal axis.
 State = tuple[float, float, float, float, float, float, float, float, float]
+# a batch's columns: kinds, lines, ends, feeds
+Columns = tuple["Sequence[str]", "Sequence[int]", "Sequence[Pose]", "Sequence[float]"]
+# the moves a run hands on, as columns of a batch, and its arcs column (None: all straight)
+Made = tuple["Sequence[str]", "Sequence[int]", "Sequence[Pose]", "Sequence[float]", "Sequence[Arc | None] | None"]
 # an outside corner: the batch move it comes before, where the tool goes round it to, and the corner
 Corner = tuple[int, Pose, float, float]
 
 
-def comp_lines(ends: Sequence[Pose], index: int, stop: int, axes: tuple[int, int, int], side: int, radius: float,
-               state: State) -> tuple[int, Point, list[Pose], list[Corner], State]:
-    """Compensate the straight moves ending at ``ends[index:stop]`` while their corners are plain.
+def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, int, str], side: int, radius: float,
+               state: State, arc: type[Arc]) -> tuple[int, Point, Made, State]:
+    """Compensate the straight moves ``index`` to ``stop - 1`` of a batch's ``columns`` while their corners are plain.
 
-    The stage holds one straight move back, as ``state`` says; ``axes`` are the plane's first, second
-    and normal axes in a pose.  Stops before a move without motion in the plane or whose corner the
-    stage refuses (a fold or a reversal), and before an outside corner whose arc might be closed.
-    Returns how many moves it took; where the held move ends (cut back into an inside corner); the
-    ends of the taken moves but the last, as poses; the outside corners (the tool goes round each
-    corner point on an arc, or straight for a rapid); and the state the last move leaves, held back
-    in turn.
+    The stage holds one straight move back, as ``state`` says; ``frame`` is the plane's first, second
+    and normal axes in a pose and its name.  Stops before a move without motion in the plane or whose
+    corner the stage refuses (a fold or a reversal), and before an outside corner whose arc might be
+    closed.  Returns how many moves it took; where the held move ends (cut back into an inside corner);
+    the moves it hands on after the held one (all it took but the last, each after the ``arc`` record,
+    or the rapid, that goes round the outside corner before it); and the state the last move leaves,
+    held back in turn.
     """
+    kinds, lines, ends, feeds = columns
+    first, second, normal, plane = frame
+    axes = first, second, normal
     sx, sy, cx, cy, qx, qy, px, py, level = state
-    first, second, normal = axes
     left = side == LEFT
     gamma = side_angle(side)
     atan2, cos, sin, tan = math.atan2, math.cos, math.sin, math.tan
@@ -90,9 +97,9 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, axes: tuple[int, int
             if abs(px - cx) < 1e-9 and abs(py - cy) < 1e-9:  # an arc that may be closed: a whole circle
                 break
             hx, hy = cx, cy
-            made = list(pose)
-            made[first], made[second], made[normal] = px, py, level
-            corners.append((k, tuple(made), sx, sy))
+            moved = list(pose)
+            moved[first], moved[second], moved[normal] = px, py, level
+            corners.append((k, tuple(moved), sx, sy))
         else:
             hx = px = cx
             hy = py = cy
@@ -102,9 +109,9 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, axes: tuple[int, int
             _, _, z, a, b, c = previous
             append((hx, hy, z, a, b, c))
         else:
-            made = list(previous)
-            made[first], made[second] = hx, hy
-            append(tuple(made))
+            moved = list(previous)
+            moved[first], moved[second] = hx, hy
+            append(tuple(moved))
         previous = pose
         qx = tx - sx
         qy = ty - sy
@@ -113,7 +120,40 @@ def comp_lines(ends: Sequence[Pose], index: int, stop: int, axes: tuple[int, int
         sx, sy, level = tx, ty, pose[normal]
     else:
         k = stop
-    return k - index, held, poses, corners, (sx, sy, cx, cy, qx, qy, px, py, level)
+    made = _with_corners(kinds, lines, feeds, index, poses, corners, plane, -1 if left else 1, arc)
+    return k - index, held, made, (sx, sy, cx, cy, qx, qy, px, py, level)
+
+
+def _with_corners(kinds: Sequence[str], lines: Sequence[int], feeds: Sequence[float], index: int, poses: list[Pose],
+                  corners: list[Corner], plane: str, turn: int, arc: type[Arc]) -> Made:
+    """The columns of the moves ``index``.. ending at ``poses``, each outside corner's move before its move."""
+    stop = index + len(poses)
+    if not corners:
+        return kinds[index:stop], lines[index:stop], poses, feeds[index:stop], None
+    made: tuple[list[str], list[int], list[Pose], list[float], list[Arc | None]] = ([], [], [], [], [])
+    out_kinds, out_lines, out_ends, out_feeds, out_arcs = made
+
+    def moves(low: int, high: int) -> None:
+        out_kinds.extend(kinds[low:high])
+        out_lines.extend(lines[low:high])
+        out_ends.extend(poses[low - index:high - index])
+        out_feeds.extend(feeds[low:high])
+        out_arcs.extend([None] * (high - low))
+
+    at = index
+    for k, corner, x, y in corners:
+        moves(at, k)
+        straight = kinds[k] != "linear"  # a rapid goes straight round the corner
+        out_kinds.append("rapid" if straight else "arc")
+        out_lines.append(lines[k])
+        out_ends.append(corner)
+        out_feeds.append(0.0 if straight else feeds[k])
+        out_arcs.append(None if straight else arc((y, x) if plane == "XZ" else (x, y), plane, turn, 0))
+        at = k
+    moves(at, stop)
+    if not any(out_arcs):  # rapids only: an arcs column of None says so
+        return out_kinds, out_lines, out_ends, out_feeds, None
+    return made
 
 
 LINES = speedups.compiled("comp_lines") or comp_lines
@@ -134,13 +174,15 @@ def _take_run(stage: CutterCompensation, batch: Batch, index: int, stop: int) ->
     assert isinstance(queued, Queued) and stage.endpoint is not None
     state = (*stage.program, current[frame.first], current[frame.second], *queued.direction, *stage.endpoint,
              current[frame.normal])
-    taken, held, poses, corners, state = LINES(batch.ends, index, stop, (frame.first, frame.second, frame.normal),
-                                               stage.side, stage.radius, state)
+    taken, held, made, state = LINES((batch.kinds, batch.lines, batch.ends, batch.feeds), index, stop,
+                                     (frame.first, frame.second, frame.normal, frame.plane), stage.side,
+                                     stage.radius, state, Arc)
     if not taken:
         return 0
     queued.end = frame.pose(queued.end, held)
     stage._dequeue()
-    stage._hand_on_run(batch, index, poses, corners)
+    if made[0]:
+        stage._hand_on_run(batch, made)
     sx, sy, cx, cy, dx, dy, hx, hy, _ = state
     last = index + taken - 1
     move = batch.move(last, batch.ends[last - 1] if last else batch.start)

@@ -35,7 +35,7 @@ from edingcnc_lang.events import CutterCompEvent, EndEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.pipeline.base import FLUSHING_EVENTS, Stage
-from edingcnc_lang.pipeline.comp_runs import Corner, take_batch
+from edingcnc_lang.pipeline.comp_runs import Made, take_batch
 from edingcnc_lang.pipeline.comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
     ARC_SWEEP_SLACK_MM,
@@ -178,31 +178,19 @@ class CutterCompensation(Stage):
         if item.center is not None:  # XZ frame points are (z, x)
             item.center = (item.center[0] + dz, item.center[1] + dx)
 
-    def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose], corners: list[Corner]) -> None:
-        """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``, and
-        the outside corners before them (``comp_runs.comp_lines``)."""
-        out = self._collecting(batch, self.emitted)  # type: ignore[arg-type]
-        at = first
-        for index, corner, x, y in corners:
-            self._hand_on_slice(out, batch, at, ends[at - first:index - first])
-            if batch.kinds[index] == "linear":  # made by the programmed move it comes before
-                arc = Arc(self.frame.named((x, y)), self.frame.plane, -1 if self.side == LEFT else 1, 0)
-                self._append(out, "arc", batch.lines[index], corner, batch.feeds[index], arc)
-            else:
-                self._append(out, "rapid", batch.lines[index], corner, 0.0, None)
-            at = index
-        self._hand_on_slice(out, batch, at, ends[at - first:])
-        self.emitted = out.ends[-1]
-
-    def _hand_on_slice(self, out: Batch, batch: Batch, first: int, ends: list[Pose]) -> None:
-        """Add batch moves ``first``.. (straight), compensated to end at ``ends``, to ``out``."""
-        stop = first + len(ends)
-        out.kinds.extend(batch.kinds[first:stop])  # type: ignore[attr-defined]
-        out.lines.extend(batch.lines[first:stop])  # type: ignore[attr-defined]
+    def _hand_on_run(self, source: Batch, made: Made) -> None:
+        """Hand on the moves a run of ``source``'s moves made (``comp_runs.comp_lines``), as columns."""
+        kinds, lines, ends, feeds, arcs = made
+        out = self._collecting(source, self.emitted)  # type: ignore[arg-type]
+        if arcs is not None and self.out_arcs is None:
+            self.out_arcs = [None] * len(out.lines)
+        out.kinds.extend(kinds)  # type: ignore[attr-defined]
+        out.lines.extend(lines)  # type: ignore[attr-defined]
         out.ends.extend(ends)  # type: ignore[attr-defined]
-        out.feeds.extend(batch.feeds[first:stop])  # type: ignore[attr-defined]
+        out.feeds.extend(feeds)  # type: ignore[attr-defined]
         if self.out_arcs is not None:
-            self.out_arcs.extend([None] * len(ends))
+            self.out_arcs.extend([None] * len(ends) if arcs is None else arcs)
+        self.emitted = ends[-1]
 
     def _collecting(self, source: Move | Batch, start: Pose) -> Batch:
         """The batch being collected, if moves from ``source`` (same file, spindle, caller) may join it;

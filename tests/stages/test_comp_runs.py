@@ -24,7 +24,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang import EcncError, RunOptions, run_file
-from edingcnc_lang.canon import PLANES, Pose
+from edingcnc_lang.canon import PLANES, Arc, Pose
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.pipeline import comp_runs
 from edingcnc_lang.pipeline.comp_geometry import LEFT, RIGHT
@@ -65,11 +65,13 @@ def _walk(rng: Random, count: int, axes: tuple[int, int, int]) -> list[Pose]:
        start=st.integers(0, 5), jitter=st.sampled_from([0.0, 0.0, 1e-3, 1.0]))
 def test_the_compiled_run_of_corners_is_the_python_one(seed: int, count: int, plane: str, side: int, radius: float,
                                                        start: int, jitter: float) -> None:
-    """Any ends and any held move (one as the stage would hold it, or shifted): the same count, points, poses,
-    corners and state to the last bit; and each run is continued where it stopped, past the move it left."""
+    """Any ends and any held move (one as the stage would hold it, or shifted): the same count, points, moves
+    (corners among them) and state to the last bit; each run is continued past the move it stopped before."""
     rng = Random(seed)
     axes = PLANES[plane]
     ends = _walk(rng, count, axes)
+    columns = ([rng.choice(["linear", "linear", "rapid"]) for _ in ends], list(range(7, 7 + count)), ends,
+               [rng.choice([0.0, 250.0, 1200.5]) for _ in ends])
     index = min(start, count - 1)
     sx, sy = rng.uniform(-50, 50), rng.uniform(-50, 50)
     heading = rng.uniform(-math.pi, math.pi)
@@ -78,11 +80,12 @@ def test_the_compiled_run_of_corners_is_the_python_one(seed: int, count: int, pl
     state = (sx, sy, cx, cy, dx * 3, dy * 3, cx - dx * 3, cy - dy * 3, rng.choice([0.0, -1.0]))
     runs = 0
     while index < count:
-        args = (ends, index, count, axes, side, radius, state)
+        args = (columns, index, count, (*axes, plane), side, radius, state, Arc)
         made = COMPILED.comp_lines(*args)
         assert repr(made) == repr(comp_runs.comp_lines(*args))
-        taken, _held, poses, corners, state = made
-        assert len(poses) == max(taken - 1, 0) and all(index <= k < index + taken for k, *_ in corners)
+        taken, _held, (kinds, lines, ends_made, feeds, arcs), state = made
+        assert len(kinds) == len(lines) == len(ends_made) == len(feeds) >= taken - 1
+        assert arcs is None or len(arcs) == len(kinds)
         runs += 1
         index += taken + 1  # past the move the stage would take itself
         if index < count:  # as the stage leaves it after that move: held at its end, a radius to the side
@@ -97,24 +100,32 @@ def _flat(points: Iterable[Sequence[float]]) -> list[float]:
 
 def test_a_run_goes_round_outside_corners_and_into_inside_ones() -> None:
     """A square's corners on the left of a counter-clockwise walk are inside ones, on the right outside ones:
-    each loop takes the whole square, cutting back or going round each corner (an arc of the tool radius)."""
+    each loop takes the whole square, cutting back or going round each corner (an arc of the tool radius about
+    the corner point, or a rapid)."""
     square = [(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0), (10.0, 0.0)]
     ends = [(x, y, -1.0, 0.0, 0.0, 0.0) for x, y in square]
+    columns = (["linear", "linear", "rapid", "linear", "linear"], [2, 3, 4, 5, 6], ends, [90.0] * 5)
     for loop in (comp_runs.comp_lines, getattr(COMPILED, "comp_lines", None)):
         if loop is None:
             continue
-        inside = loop(ends, 0, 5, (0, 1, 2), LEFT, 1.0, (0.0, 0.0, 0.0, 1.0, 1.0, 0.0, -5.0, 1.0, -1.0))
-        assert inside[0] == 5 and inside[3] == [] and inside[1] == (0.0, 1.0)  # straight on: the held move stays
-        assert _flat(pose[:3] for pose in inside[2]) == pytest.approx(_flat([(9, 1, -1), (9, 9, -1), (1, 9, -1),
-                                                                              (1, 1, -1)]))
-        outside = loop(ends, 0, 5, (0, 1, 2), RIGHT, 1.0, (0.0, 0.0, 0.0, -1.0, 1.0, 0.0, -5.0, -1.0, -1.0))
-        assert outside[0] == 5 and outside[1] == (0.0, -1.0)
-        assert _flat(pose[:3] for pose in outside[2]) == pytest.approx(_flat([(10, -1, -1), (11, 10, -1), (0, 11, -1),
-                                                                               (-1, 0, -1)]))
-        assert [k for k, *_ in outside[3]] == [1, 2, 3, 4]  # before the moves from each corner point
-        assert _flat(corner[1][:3] for corner in outside[3]) == pytest.approx(_flat([(11, 0, -1), (10, 11, -1),
-                                                                                      (-1, 10, -1), (0, -1, -1)]))
-        assert [corner[2:] for corner in outside[3]] == [(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0)]
+        inside = loop(columns, 0, 5, (0, 1, 2, "XY"), LEFT, 1.0, (0.0, 0.0, 0.0, 1.0, 1.0, 0.0, -5.0, 1.0, -1.0), Arc)
+        taken, held, (kinds, lines, made, feeds, arcs), _ = inside
+        assert taken == 5 and held == (0.0, 1.0)  # straight on into the square: the held move stays
+        assert (kinds, lines, feeds, arcs) == (["linear", "linear", "rapid", "linear"], [2, 3, 4, 5], [90.0] * 4, None)
+        assert _flat(pose[:3] for pose in made) == pytest.approx(_flat([(9, 1, -1), (9, 9, -1), (1, 9, -1),
+                                                                         (1, 1, -1)]))
+        outside = loop(columns, 0, 5, (0, 1, 2, "XY"), RIGHT, 1.0, (0.0, 0.0, 0.0, -1.0, 1.0, 0.0, -5.0, -1.0, -1.0),
+                       Arc)
+        taken, held, (kinds, lines, made, feeds, arcs), _ = outside
+        assert taken == 5 and held == (0.0, -1.0)
+        assert kinds == ["linear", "arc", "linear", "rapid", "rapid", "arc", "linear", "arc"]
+        assert lines == [2, 3, 3, 4, 4, 5, 5, 6] and feeds == [90.0, 90.0, 90.0, 0.0, 90.0, 90.0, 90.0, 90.0]
+        assert _flat(pose[:3] for pose in made) == pytest.approx(_flat(
+            [(10, -1, -1), (11, 0, -1), (11, 10, -1), (10, 11, -1), (0, 11, -1), (-1, 10, -1), (-1, 0, -1),
+             (0, -1, -1)]))
+        assert arcs is not None and [arc.center if arc else None for arc in arcs] == [
+            None, (10.0, 0.0), None, None, None, (0.0, 10.0), None, (0.0, 0.0)]
+        assert {arc.turn for arc in arcs if arc} == {1}  # the tool on the right goes round counter-clockwise
 
 
 # --------------------------------------------------------------------------- whole jobs
