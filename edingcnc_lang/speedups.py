@@ -8,7 +8,8 @@ functions do (the equivalence tests run both), and every caller picks its functi
 (``syntax.parser.non_plain_lines``), runs of plain ``G0``/``G1`` lines (``machine.plain_runs.plain_moves``),
 trace rows (``motion.sinks.trace_rows``), the bounds of a batch (``motion.reach.column_bounds``), the arcs
 of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of arcs
-(``kinematics.trajectory.arc_frame`` and ``arc_frame_rows``); the macro line reader and the lint's walk
+(``kinematics.trajectory.arc_frame`` and ``arc_frame_rows``), the runs of corners of cutter compensation
+(``pipeline.comp_runs.comp_lines``); the macro line reader and the lint's walk
 take ``LEXER`` (``syntax.fastparse``, ``lint.facts``).  ``ecnc --version`` says which core runs.
 The 3-axis sim's sweep takes ``SWEEP`` (``_sweep.c``, ``sim.sweep``; not built on Python 3.10).
 
