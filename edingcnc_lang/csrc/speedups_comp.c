@@ -93,12 +93,12 @@ static PyObject *comp_lines(PyObject *self, PyObject *args)
     PyObject *columns[4], *plane, *arc_class, *previous = NULL, *result = NULL;
     struct comp_made made = {{NULL, NULL, NULL, NULL}, NULL};
     Py_ssize_t index, stop, k;
-    int axes[3], side, turn, j;
+    int axes[3], side, after_arc, turn, j;
     double radius, sx, sy, cx, cy, qx, qy, px, py, level, gamma, held[2] = {0.0, 0.0};
     (void)self;
-    if (!PyArg_ParseTuple(args, "(OOOO)nn(iiiU)id(ddddddddd)O", &columns[1], &columns[2], &columns[0], &columns[3],
+    if (!PyArg_ParseTuple(args, "(OOOO)nn(iiiU)id(ddddddddd)pO", &columns[1], &columns[2], &columns[0], &columns[3],
                           &index, &stop, &axes[0], &axes[1], &axes[2], &plane, &side, &radius, &sx, &sy, &cx, &cy,
-                          &qx, &qy, &px, &py, &level, &arc_class))
+                          &qx, &qy, &px, &py, &level, &after_arc, &arc_class))
         return NULL;
     if (axes[0] < 0 || axes[0] > 5 || axes[1] < 0 || axes[1] > 5 || axes[2] < 0 || axes[2] > 5
         || axes[0] == axes[1] || axes[0] == axes[2] || axes[1] == axes[2]) {
@@ -139,7 +139,7 @@ static PyObject *comp_lines(PyObject *self, PyObject *args)
         alpha = alpha + gamma;
         if (beta < -COMP_TOLERANCE || beta > M_PI + COMP_TOLERANCE) {  /* inside_corner: half_corner, cut_back */
             double half = (beta + M_PI) / 2.0, distance;
-            if (half == 0.0) {
+            if (half == 0.0 || (after_arc && previous == NULL)) {  /* after an arc: only a tangent here */
                 Py_DECREF(pose);
                 break;
             }
@@ -155,7 +155,7 @@ static PyObject *comp_lines(PyObject *self, PyObject *args)
             py = hy;
         } else if (beta > COMP_TOLERANCE) {  /* outside_corner: round the corner point */
             double value[3];
-            if (qx * (cx - px) + qy * (cy - py) < 0) {  /* reverses */
+            if ((after_arc && previous == NULL) || qx * (cx - px) + qy * (cy - py) < 0) {  /* reverses */
                 Py_DECREF(pose);
                 break;
             }

@@ -39,11 +39,12 @@ Corner = tuple[int, Pose, float, float]
 
 
 def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, int, str], side: int, radius: float,
-               state: State, arc: type[Arc]) -> tuple[int, Point, Made, State]:
+               state: State, after_arc: bool, arc: type[Arc]) -> tuple[int, Point, Made, State]:
     """Compensate the straight moves ``index`` to ``stop - 1`` of a batch's ``columns`` while their corners are plain.
 
-    The stage holds one straight move back, as ``state`` says; ``frame`` is the plane's first, second
-    and normal axes in a pose and its name.  Stops before a move without motion in the plane or whose
+    The stage holds one move back, as ``state`` says: a straight one, or an arc (``after_arc``: then only a
+    straight-on corner, a tangent, may follow it here); ``frame`` is the plane's first, second and
+    normal axes in a pose and its name.  Stops before a move without motion in the plane or whose
     corner the stage refuses (a fold or a reversal), and before an outside corner whose arc might be
     closed.  Returns how many moves it took; where the held move ends (cut back into an inside corner);
     the moves it hands on after the held one (all it took but the last, each after the ``arc`` record,
@@ -81,7 +82,7 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
         alpha = alpha + gamma
         if beta < low or beta > high:  # inside_corner: cut the move before back (half_corner, cut_back)
             half = (beta + math.pi) / 2.0
-            if half == 0.0:
+            if half == 0.0 or (after_arc and previous is None):
                 break
             distance, theta = radius / tan(half), theta + gamma
             hx = cx + distance * cos(theta)
@@ -90,7 +91,7 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
                 break
             px, py = hx, hy
         elif beta > CONCAVE_TOLERANCE:  # outside_corner: round the corner point, from the tool to beside it
-            if qx * (cx - px) + qy * (cy - py) < 0:  # reverses
+            if (after_arc and previous is None) or qx * (cx - px) + qy * (cy - py) < 0:  # reverses
                 break
             px = sx + radius * cos(alpha)  # at(start, radius, alpha + gamma)
             py = sy + radius * sin(alpha)
@@ -160,10 +161,10 @@ LINES = speedups.compiled("comp_lines") or comp_lines
 
 
 def _steady(stage: CutterCompensation) -> bool:
-    """Whether the stage holds exactly one straight move back, as after any line-line corner."""
+    """Whether the stage holds exactly one move back, as after any corner but the entry arc's."""
     queue = stage.queue
-    return (len(queue) == 1 and isinstance(queue[0], Queued) and queue[0].center is None
-            and stage.endpoint is not None and bool(stage.side) and not stage.first)
+    return (len(queue) == 1 and isinstance(queue[0], Queued) and stage.endpoint is not None and bool(stage.side)
+            and not stage.first)
 
 
 def _take_run(stage: CutterCompensation, batch: Batch, index: int, stop: int) -> int:
@@ -176,7 +177,7 @@ def _take_run(stage: CutterCompensation, batch: Batch, index: int, stop: int) ->
              current[frame.normal])
     taken, held, made, state = LINES((batch.kinds, batch.lines, batch.ends, batch.feeds), index, stop,
                                      (frame.first, frame.second, frame.normal, frame.plane), stage.side,
-                                     stage.radius, state, Arc)
+                                     stage.radius, state, queued.center is not None, Arc)
     if not taken:
         return 0
     queued.end = frame.pose(queued.end, held)

@@ -80,7 +80,7 @@ def test_the_compiled_run_of_corners_is_the_python_one(seed: int, count: int, pl
     state = (sx, sy, cx, cy, dx * 3, dy * 3, cx - dx * 3, cy - dy * 3, rng.choice([0.0, -1.0]))
     runs = 0
     while index < count:
-        args = (columns, index, count, (*axes, plane), side, radius, state, Arc)
+        args = (columns, index, count, (*axes, plane), side, radius, state, rng.random() < 0.3, Arc)
         made = COMPILED.comp_lines(*args)
         assert repr(made) == repr(comp_runs.comp_lines(*args))
         taken, _held, (kinds, lines, ends_made, feeds, arcs), state = made
@@ -108,14 +108,15 @@ def test_a_run_goes_round_outside_corners_and_into_inside_ones() -> None:
     for loop in (comp_runs.comp_lines, getattr(COMPILED, "comp_lines", None)):
         if loop is None:
             continue
-        inside = loop(columns, 0, 5, (0, 1, 2, "XY"), LEFT, 1.0, (0.0, 0.0, 0.0, 1.0, 1.0, 0.0, -5.0, 1.0, -1.0), Arc)
+        inside = loop(columns, 0, 5, (0, 1, 2, "XY"), LEFT, 1.0, (0.0, 0.0, 0.0, 1.0, 1.0, 0.0, -5.0, 1.0, -1.0), False,
+                      Arc)
         taken, held, (kinds, lines, made, feeds, arcs), _ = inside
         assert taken == 5 and held == (0.0, 1.0)  # straight on into the square: the held move stays
         assert (kinds, lines, feeds, arcs) == (["linear", "linear", "rapid", "linear"], [2, 3, 4, 5], [90.0] * 4, None)
         assert _flat(pose[:3] for pose in made) == pytest.approx(_flat([(9, 1, -1), (9, 9, -1), (1, 9, -1),
                                                                          (1, 1, -1)]))
         outside = loop(columns, 0, 5, (0, 1, 2, "XY"), RIGHT, 1.0, (0.0, 0.0, 0.0, -1.0, 1.0, 0.0, -5.0, -1.0, -1.0),
-                       Arc)
+                       False, Arc)
         taken, held, (kinds, lines, made, feeds, arcs), _ = outside
         assert taken == 5 and held == (0.0, -1.0)
         assert kinds == ["linear", "arc", "linear", "rapid", "rapid", "arc", "linear", "arc"]
