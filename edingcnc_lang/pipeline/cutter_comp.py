@@ -20,10 +20,11 @@ the path sideways by the tool radius in the selected plane:
 A compensated move is held back until the next move shows which kind of corner follows; events
 programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wait with it.
 
-A batch goes through ``comp_runs``: its runs of straight-on and inside line-line corners are
-computed in one loop (in C on the compiled core) with the operations of the corner functions here
-(``comp_geometry``) and go on as one batch; every other move (arcs among them) is taken here, one at
-a time, with the very same results.
+A batch goes through ``comp_runs``: its runs of corners between straight moves (straight on,
+inside, and outside ones with their arcs) are computed in one loop (in C on the compiled core) with
+the operations of the corner functions here (``comp_geometry``) and go on as one batch; every other
+move (the contour's arcs among them) is taken here, one at a time, with the very same results.
+Released moves go on as batches (an arc in the batch's arcs column); a move under G96 alone.
 """
 from __future__ import annotations
 
