@@ -1,10 +1,11 @@
-"""Cutter compensation of a batch: its runs of plain line-line corners in one loop.
+"""Cutter compensation of a batch: its runs of corners between straight moves in one loop.
 
-Most corners of a CAM contour under G41/G42 are straight on or inside (concave) corners between
-two straight moves.  For those the compensated path needs no look at anything but the programmed
-points, so ``comp_lines`` computes a whole run of them, one after the other, with the very
-operations of the stage's ``_straight`` (``comp_geometry``'s ``line_corner``, ``at``, ``cut_back`` and
-``reverses``, in the same order: the same bits), without a record per move, and the run goes on to
+Most corners of a CAM contour under G41/G42 are corners between two straight moves: straight on,
+inside (concave, the move before cut back) or outside (the tool goes round the corner point).  For
+those the compensated path needs no look at anything but the programmed points, so ``comp_lines``
+computes a whole run of them, one after the other, with the very operations of the stage's
+``_straight`` (``comp_geometry``'s ``line_corner``, ``at``, ``cut_back`` and ``reverses``, in the same
+order: the same bits), without a record per move, and the run goes on to
 the next stage as one piece of a ``Batch``, with the arcs (or rapids) that go round its outside
 corners.  The compiled core has it in C (``csrc/speedups_comp.c``); neither needs numpy.  Whatever
 needs more (an arc, a move without motion in the plane, a corner the tool refuses) is left to the
