@@ -15,13 +15,12 @@ import subprocess
 import sys
 from collections.abc import Iterable, Sequence
 from pathlib import Path
-from importlib import import_module
 from random import Random
-from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from stage_helpers import COMPILED, LOOPS, NOT_BUILT
 
 from edingcnc_lang import EcncError, RunOptions, run_file
 from edingcnc_lang.canon import PLANES, Arc, Pose
@@ -29,15 +28,7 @@ from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.pipeline import comp_runs
 from edingcnc_lang.pipeline.comp_geometry import LEFT, RIGHT
 
-try:  # the compiled core, also where ECNC_PURE_PYTHON=1 runs the suite on the Python one
-    COMPILED: Any = import_module("edingcnc_lang._speedups")
-except ImportError:
-    COMPILED = None
-NOT_BUILT = "the compiled core is not built here"
 TOOLS = Path(__file__).resolve().parents[1] / "golden" / "linuxcnc" / "tools.ini"
-LOOPS = [pytest.param(comp_runs.comp_lines, id="python"),
-         pytest.param(getattr(COMPILED, "comp_lines", None), id="compiled",
-                      marks=pytest.mark.skipif(COMPILED is None, reason=NOT_BUILT))]
 
 
 def _walk(rng: Random, count: int, axes: tuple[int, int, int]) -> list[Pose]:

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from stage_helpers import Recorder, pose
+from stage_helpers import LOOPS, Recorder, pose
 
 from edingcnc_lang import RunOptions, run_file, run_string
 from edingcnc_lang.canon import PLANES, Arc, Batch, Event, Move
@@ -31,7 +31,6 @@ from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 from edingcnc_lang.pipeline.height_comp import HeightCompensation
 from edingcnc_lang.pipeline.rotation import Rotation
 from edingcnc_lang.pipeline.scaling import Scaling
-from edingcnc_lang.speedups import SPEEDUPS
 
 CONFIG = MachineConfig.default()
 SURFACE = HeightMap((0.0, 10.0, 20.0), (0.0, 10.0), ((0.0, 1.0, 2.0), (0.5, 1.5, 2.5)))
@@ -177,8 +176,7 @@ def _compensated(programmed: list[Move], comp: tuple[str, float, str], send: obj
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("loop", [comp_runs.comp_lines, *([SPEEDUPS.comp_lines] if SPEEDUPS is not None else [])],
-                         ids=["python", "compiled"][:1 + (SPEEDUPS is not None)])
+@pytest.mark.parametrize("loop", LOOPS)
 @settings(max_examples=150, deadline=None)
 @given(rng=st.randoms(use_true_random=False), count=st.integers(1, 80), spindle=spindles, comp=compensations,
        cuts=st.lists(st.integers(1, 79), max_size=4))
