@@ -1,8 +1,9 @@
-/* Part of _speedups.c (one translation unit: included there, in this order). Runs of plain corners of cutter
- * compensation (pipeline/comp_runs.py's comp_lines): the straight-on and inside line-line corners of a run of
+/* Part of _speedups.c (one translation unit: included there, in this order). Runs of corners of cutter
+ * compensation (pipeline/comp_runs.py's comp_lines): the straight-on, inside and outside corners of a run of
  * straight moves under G41/G42, one after the other, as pipeline/cutter_comp.py's _straight computes each
- * (comp_geometry's line_corner, at, cut_back and reverses).  Every double is computed as Python computes it:
- * atan2 is CPython's m_atan2 (py_atan2, speedups_arcs.c), cos, sin and tan are the C library's, as math's are. */
+ * (comp_geometry's line_corner, at, cut_back and reverses), the moves it hands on made as a batch's columns.
+ * Every double is computed as Python computes it: atan2 is CPython's m_atan2 (py_atan2, speedups_arcs.c), cos,
+ * sin and tan are the C library's, as math's are; the file is compiled with -ffp-contract=off. */
 
 #define COMP_LEFT 1
 #define COMP_TOLERANCE 0.05  /* comp_geometry.CONCAVE_TOLERANCE */
@@ -31,7 +32,7 @@ static PyObject *comp_pose(PyObject *pose, const int *at, const double *value, i
     PyObject *made = PyTuple_New(6);
     Py_ssize_t k;
     for (k = 0; made != NULL && k < 6; k++) {
-        PyObject *item = NULL;
+        PyObject *item;
         int j;
         for (j = 0; j < count && at[j] != k; j++)
             ;
