@@ -12,6 +12,7 @@
  * plan_straight:   motion/planner/stage.py's Planner._commit for a window of straight moves (times, estimate, extremes).
  * arcs_beyond:     motion/reach.py's arcs_beyond (whether an arc of a batch reaches outside the limits).
  * hypot:           math.hypot of two numbers as the other parts compute it (a test entry point).
+ * comp_lines:      pipeline/comp_runs.py's comp_lines (a run of plain corners of cutter compensation).
  *
  * One translation unit in parts, a part per job (csrc/speedups_*.c), included below in order: their
  * helpers stay static, private to the extension.
@@ -45,6 +46,7 @@ static PyObject *rapid_kind;
 #include "csrc/speedups_frames.c"
 #include "csrc/speedups_holes.c"
 #include "csrc/speedups_plan.c"
+#include "csrc/speedups_comp.c"
 
 static PyMethodDef methods[] = {
     {"non_plain_lines", non_plain_lines, METH_VARARGS, "parser.non_plain_lines, compiled: (max_length, max_digits, chunk)."},
@@ -59,6 +61,7 @@ static PyMethodDef methods[] = {
     {"plan_straight", plan_straight, METH_VARARGS, "motion.planner.stage.Planner._commit of straight moves, compiled."},
     {"arcs_beyond", arcs_beyond, METH_VARARGS, "motion.reach.arcs_beyond, compiled."},
     {"hypot", hypot_entry, METH_VARARGS, "math.hypot(a, b) as the compiled core computes it, and whose algorithm."},
+    {"comp_lines", comp_lines, METH_VARARGS, "pipeline.comp_runs.comp_lines, compiled."},
     {NULL, NULL, 0, NULL},
 };
 

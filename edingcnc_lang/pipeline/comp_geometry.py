@@ -1,25 +1,16 @@
 """Plane geometry of cutter radius compensation: sweeps, corner points and the queued moves.
 
 Everything here works in the active plane's (first, second) frame (``canon.PLANES``), so the
-compensation stage can think of the XY plane only, whatever plane is selected.
-
-The functions of a corner between two straight moves take their numbers through an ``Ops``: with
-``SCALAR`` they work on one corner (floats, ``math``), with the array form in ``comp_runs`` on a
-whole run of corners at once (numpy arrays, elementwise through the same ``math`` functions), so a
-run of moves in a batch gets the very bits the moves would get one by one.
+compensation stage can think of the XY plane only, whatever plane is selected.  A run of plain
+line-line corners in a batch is computed by ``comp_runs.comp_lines`` with the very operations of the
+corner functions below, in the same order, so it gets the bits the moves get one by one.
 """
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from edingcnc_lang.canon import PLANES, Arc, Move, Pose
-from edingcnc_lang.records import record
-
-if TYPE_CHECKING:
-    import numpy as np
 
 LEFT = 1
 RIGHT = -1
@@ -33,25 +24,6 @@ ARC_SWEEP_SLACK_INCH = 0.001
 HALF_PI = math.pi / 2
 
 Point = tuple[float, float]
-R = TypeVar("R", float, "np.ndarray")  # one corner (float) or a run of corners (array)
-
-
-@record(frozen=True, slots=True)
-class Ops(Generic[R]):
-    """The elementary functions for one kind of number (``SCALAR``: floats; ``comp_runs.ARRAYS``: arrays)."""
-
-    atan2: Callable[[R, R], R]
-    cos: Callable[[R], R]
-    sin: Callable[[R], R]
-    tan: Callable[[R], R]
-    where: Callable[[Any, R, R], R]  # where(condition, if true, if false)
-
-
-def _pick(condition: Any, yes: float, no: float) -> float:
-    return yes if condition else no
-
-
-SCALAR: Ops[float] = Ops(math.atan2, math.cos, math.sin, math.tan, _pick)
 
 
 def tool_inside_arc(side: int, turn: int) -> bool:
@@ -74,21 +46,21 @@ def find_turn(start: Point, center: Point, turn: int, end: Point) -> float:
     return beta - alpha + (turn + 1) * 2 * math.pi
 
 
-def at(ops: Ops[R], origin: tuple[R, R], distance: R | float, angle: R) -> tuple[R, R]:
+def at(origin: Point, distance: float, angle: float) -> Point:
     """The point ``distance`` from ``origin`` in direction ``angle``."""
-    return (origin[0] + distance * ops.cos(angle), origin[1] + distance * ops.sin(angle))
+    return (origin[0] + distance * math.cos(angle), origin[1] + distance * math.sin(angle))
 
 
 # ---------------------------------------------------------------- a corner between two straight moves
 # (LinuxCNC's convert_straight_comp2): the tool is at ``current``, a radius to the side of the corner
 # ``start``, and the next move goes on from ``start`` to ``target``.
 
-def heading(ops: Ops[R], origin: tuple[R, R], toward: tuple[R, R]) -> R:
+def heading(origin: Point, toward: Point) -> float:
     """The direction (radians) from ``origin`` to ``toward``."""
-    return ops.atan2(toward[1] - origin[1], toward[0] - origin[0])
+    return math.atan2(toward[1] - origin[1], toward[0] - origin[0])
 
 
-def line_corner(ops: Ops[R], side: int, theta: R, alpha: R) -> tuple[R, R, R, float]:
+def line_corner(side: int, theta: float, alpha: float) -> tuple[float, float, float, float]:
     """``theta`` (corner to tool) and ``alpha`` (the next move) brought into one turn; with the turn
     ``beta`` the tool makes at the corner and ``gamma``, the tool's side as an angle from the move.
 
@@ -96,9 +68,11 @@ def line_corner(ops: Ops[R], side: int, theta: R, alpha: R) -> tuple[R, R, R, fl
     ``at(target, radius, alpha + gamma)``.
     """
     if side == LEFT:
-        theta = ops.where(theta < alpha, theta + 2 * math.pi, theta)
+        if theta < alpha:
+            theta = theta + 2 * math.pi
         return theta, alpha, theta - alpha - HALF_PI, side_angle(side)
-    alpha = ops.where(alpha < theta, alpha + 2 * math.pi, alpha)
+    if alpha < theta:
+        alpha = alpha + 2 * math.pi
     return theta, alpha, alpha - theta - HALF_PI, side_angle(side)
 
 
@@ -107,27 +81,27 @@ def side_angle(side: int) -> float:
     return HALF_PI if side == LEFT else -HALF_PI
 
 
-def inside_corner(beta: R) -> R:
+def inside_corner(beta: float) -> bool:
     """Whether the corner turns into the tool (concave): the previous move is cut back."""
-    return (beta < -CONCAVE_TOLERANCE) | (beta > math.pi + CONCAVE_TOLERANCE)
+    return beta < -CONCAVE_TOLERANCE or beta > math.pi + CONCAVE_TOLERANCE
 
 
-def outside_corner(beta: R) -> R:
+def outside_corner(beta: float) -> bool:
     """Whether a corner that is not inside turns away from the tool (convex): the tool goes round it."""
     return beta > CONCAVE_TOLERANCE
 
 
-def half_corner(beta: R) -> R:
+def half_corner(beta: float) -> float:
     """Half the angle of an inside corner (0: the moves fold back onto each other)."""
     return (beta + math.pi) / 2.0
 
 
-def cut_back(ops: Ops[R], radius: float, current: tuple[R, R], theta: R, gamma: float, half: R) -> tuple[R, R]:
+def cut_back(radius: float, current: Point, theta: float, gamma: float, half: float) -> Point:
     """Where the tool touches both sides of an inside corner (``half`` from ``half_corner``, not 0)."""
-    return at(ops, current, radius / ops.tan(half), theta + gamma)
+    return at(current, radius / math.tan(half), theta + gamma)
 
 
-def reverses(direction: tuple[R, R], endpoint: tuple[R, R], point: tuple[R, R]) -> R:
+def reverses(direction: Point, endpoint: Point, point: Point) -> bool:
     """Whether moving a straight move's end from ``endpoint`` to ``point`` turns it against its
     programmed ``direction`` (the tool would gouge)."""
     return direction[0] * (point[0] - endpoint[0]) + direction[1] * (point[1] - endpoint[1]) < 0
@@ -160,15 +134,6 @@ class Frame:
             pose[self.normal] = normal
         return pose
 
-    def poses(self, bases: Iterable[Pose], firsts: Iterable[float], seconds: Iterable[float]) -> list[Pose]:
-        """``pose`` for many six-value poses at once, as tuples (unpacked: the cheapest way in Python)."""
-        pairs = zip(firsts, seconds, bases)
-        if self.plane == "XY":
-            return [(a, b, z, u, v, w) for a, b, (_, _, z, u, v, w) in pairs]
-        if self.plane == "XZ":  # first Z, second X
-            return [(b, y, a, u, v, w) for a, b, (_, y, _, u, v, w) in pairs]
-        return [(x, a, b, u, v, w) for a, b, (x, _, _, u, v, w) in pairs]
-
 
 # A lathe tool's controlled point (the imaginary tip its offsets were measured to) seen from the
 # nose's centre, by its orientation 1..8 (the tool table's, #5700 + n), in tool radii along machine
@@ -197,9 +162,13 @@ class Queued:
     turn: int = 0                  # arcs: +1 counter-clockwise, -1 clockwise
     sweep: float = 0.0             # arcs: the angle swept when queued
 
+    def arc(self, start: Pose, frame: Frame) -> Arc | None:
+        """The circle of the move handed on from ``start`` (None: straight); ends that meet: a full circle."""
+        if self.center is None:
+            return None
+        closed = math.dist(frame.point(start), frame.point(self.end)) < 1e-9
+        return Arc(frame.named(self.center), frame.plane, self.turn, 1 if closed else 0)
+
     def to_move(self, start: Pose, frame: Frame) -> Move:
-        arc = None
-        if self.center is not None:
-            closed = math.dist(frame.point(start), frame.point(self.end)) < 1e-9
-            arc = Arc(frame.named(self.center), frame.plane, self.turn, 1 if closed else 0)
-        return replace(self.origin, kind=self.kind, start=start, end=tuple(self.end), feed=self.feed, arc=arc)
+        return replace(self.origin, kind=self.kind, start=start, end=tuple(self.end), feed=self.feed,
+                       arc=self.arc(start, frame))

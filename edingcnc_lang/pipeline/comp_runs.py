@@ -1,197 +1,216 @@
-"""Cutter compensation of a long batch: its runs of plain line-line corners as arrays.
+"""Cutter compensation of a batch: its runs of corners between straight moves in one loop.
 
-Most corners of a CAM contour under G41/G42 are straight on or inside (concave) corners between
-two straight moves.  For those the compensated path needs no look at anything but the programmed
-points, so a whole run is computed at once: the same corner functions as one move at a time
-(``comp_geometry``), through ``ARRAYS`` (numpy arrays, the trigonometry elementwise through the very
-``math`` functions, so the results are the same bits), and the run goes on to the next stage as one
-piece of a ``Batch``.  Whatever needs more (an outside corner's arc, a move without motion in the
-plane, a corner the tool refuses) is left to the stage's own code for single moves, and the run goes
-on after it: a batch gives the moves, events and errors that its moves would give one by one.
+Most corners of a CAM contour under G41/G42 are corners between two straight moves: straight on,
+inside (concave, the move before cut back) or outside (the tool goes round the corner point).  For
+those the compensated path needs no look at anything but the programmed points, so ``comp_lines``
+computes a whole run of them, one after the other, with the very operations of the stage's
+``_straight`` (``comp_geometry``'s ``line_corner``, ``at``, ``cut_back`` and ``reverses``, in the same
+order: the same bits), without a record per move, and the run goes on to
+the next stage as one piece of a ``Batch``, with the arcs (or rapids) that go round its outside
+corners.  The compiled core has it in C (``csrc/speedups_comp.c``); neither needs numpy.  Whatever
+needs more (an arc, a move without motion in the plane, a corner the tool refuses) is left to the
+stage's own code for single moves, and the run goes on after it: a batch gives the moves, events and
+errors that its moves would give one by one.
 """
 from __future__ import annotations
 
 import math
-from bisect import bisect_right
-from itertools import islice
-from operator import itemgetter
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
-import numpy as np
-
-from edingcnc_lang.canon import Batch
-from edingcnc_lang.pipeline.comp_geometry import (
-    Ops,
-    Queued,
-    at,
-    cut_back,
-    half_corner,
-    heading,
-    inside_corner,
-    line_corner,
-    outside_corner,
-    reverses,
-    side_angle,
-)
+from edingcnc_lang import speedups
+from edingcnc_lang.canon import Arc, Batch, Pose
+from edingcnc_lang.errors import EcncError
+from edingcnc_lang.pipeline.comp_geometry import CONCAVE_TOLERANCE, HALF_PI, LEFT, Point, Queued, side_angle
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 
-Array = np.ndarray
+# What a run needs of the stage and leaves it: the held move's programmed end (x, y), compensated end
+# (x, y), programmed direction (x, y) and compensated start (x, y, the stage's endpoint), and the
+# compensated end's coordinate on the plane's normal axis.
+State = tuple[float, float, float, float, float, float, float, float, float]
+# a batch's columns: kinds, lines, ends, feeds
+Columns = tuple["Sequence[str]", "Sequence[int]", "Sequence[Pose]", "Sequence[float]"]
+# the moves a run hands on, as columns of a batch, and its arcs column (None: all straight)
+Made = tuple["Sequence[str]", "Sequence[int]", "Sequence[Pose]", "Sequence[float]", "Sequence[Arc | None] | None"]
+# an outside corner: the batch move it comes before, where the tool goes round it to, and the corner
+Corner = tuple[int, Pose, float, float]
 
 
-def _atan2(y: Array, x: Array) -> Array:
-    return np.fromiter(map(math.atan2, y.tolist(), x.tolist()), np.float64, len(y))
+def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, int, str], side: int, radius: float,
+               state: State, after_arc: bool, arc: type[Arc]) -> tuple[int, Point, Made, State]:
+    """Compensate the straight moves ``index`` to ``stop - 1`` of a batch's ``columns`` while their corners are plain.
+
+    The stage holds one move back, as ``state`` says: a straight one, or an arc (``after_arc``: then only a
+    straight-on corner, a tangent, may follow it here); ``frame`` is the plane's first, second and
+    normal axes in a pose and its name.  Stops before a move without motion in the plane or whose
+    corner the stage refuses (a fold or a reversal), and before an outside corner whose arc might be
+    closed.  Returns how many moves it took; where the held move ends (cut back into an inside corner);
+    the moves it hands on after the held one (all it took but the last, each after the ``arc`` record,
+    or the rapid, that goes round the outside corner before it); and the state the last move leaves,
+    held back in turn.
+    """
+    kinds, lines, ends, feeds = columns
+    first, second, normal, plane = frame
+    axes = first, second, normal
+    sx, sy, cx, cy, qx, qy, px, py, level = state
+    left = side == LEFT
+    gamma = side_angle(side)
+    atan2, cos, sin, tan = math.atan2, math.cos, math.sin, math.tan
+    turn, low, high = 2 * math.pi, -CONCAVE_TOLERANCE, math.pi + CONCAVE_TOLERANCE
+    held, previous = (0.0, 0.0), None
+    poses: list[Pose] = []
+    corners: list[Corner] = []
+    append = poses.append
+    plane_xy = axes == (0, 1, 2)
+    k = index
+    for k, pose in enumerate(ends[index:stop], index):  # noqa: B007 (k: how far the run got)
+        tx, ty = pose[first], pose[second]
+        if tx == sx and ty == sy:  # no motion in the plane
+            break
+        theta = atan2(cy - sy, cx - sx)  # line_corner(heading(start, current), heading(start, target))
+        alpha = atan2(ty - sy, tx - sx)
+        if left:
+            if theta < alpha:
+                theta = theta + turn
+            beta = theta - alpha - HALF_PI
+        else:
+            if alpha < theta:
+                alpha = alpha + turn
+            beta = alpha - theta - HALF_PI
+        alpha = alpha + gamma
+        if beta < low or beta > high:  # inside_corner: cut the move before back (half_corner, cut_back)
+            half = (beta + math.pi) / 2.0
+            if half == 0.0 or (after_arc and previous is None):
+                break
+            distance, theta = radius / tan(half), theta + gamma
+            hx = cx + distance * cos(theta)
+            hy = cy + distance * sin(theta)
+            if qx * (hx - px) + qy * (hy - py) < 0:  # reverses
+                break
+            px, py = hx, hy
+        elif beta > CONCAVE_TOLERANCE:  # outside_corner: round the corner point, from the tool to beside it
+            if (after_arc and previous is None) or qx * (cx - px) + qy * (cy - py) < 0:  # reverses
+                break
+            px = sx + radius * cos(alpha)  # at(start, radius, alpha + gamma)
+            py = sy + radius * sin(alpha)
+            if abs(px - cx) < 1e-9 and abs(py - cy) < 1e-9:  # an arc that may be closed: a whole circle
+                break
+            hx, hy = cx, cy
+            moved = list(pose)
+            moved[first], moved[second], moved[normal] = px, py, level
+            corners.append((k, tuple(moved), sx, sy))
+        else:
+            hx = px = cx
+            hy = py = cy
+        if previous is None:
+            held = (hx, hy)
+        elif plane_xy:
+            _, _, z, a, b, c = previous
+            append((hx, hy, z, a, b, c))
+        else:
+            moved = list(previous)
+            moved[first], moved[second] = hx, hy
+            append(tuple(moved))
+        previous = pose
+        qx = tx - sx
+        qy = ty - sy
+        cx = tx + radius * cos(alpha)  # at(target, radius, alpha + gamma)
+        cy = ty + radius * sin(alpha)
+        sx, sy, level = tx, ty, pose[normal]
+    else:
+        k = stop
+    made = _with_corners(kinds, lines, feeds, index, poses, corners, plane, -1 if left else 1, arc)
+    return k - index, held, made, (sx, sy, cx, cy, qx, qy, px, py, level)
 
 
-def _cos(angle: Array) -> Array:
-    return np.fromiter(map(math.cos, angle.tolist()), np.float64, len(angle))
+def _with_corners(kinds: Sequence[str], lines: Sequence[int], feeds: Sequence[float], index: int, poses: list[Pose],
+                  corners: list[Corner], plane: str, turn: int, arc: type[Arc]) -> Made:
+    """The columns of the moves ``index``.. ending at ``poses``, each outside corner's move before its move."""
+    stop = index + len(poses)
+    if not corners:
+        return kinds[index:stop], lines[index:stop], poses, feeds[index:stop], None
+    made: tuple[list[str], list[int], list[Pose], list[float], list[Arc | None]] = ([], [], [], [], [])
+    out_kinds, out_lines, out_ends, out_feeds, out_arcs = made
+
+    def moves(low: int, high: int) -> None:
+        out_kinds.extend(kinds[low:high])
+        out_lines.extend(lines[low:high])
+        out_ends.extend(poses[low - index:high - index])
+        out_feeds.extend(feeds[low:high])
+        out_arcs.extend([None] * (high - low))
+
+    at = index
+    for k, corner, x, y in corners:
+        moves(at, k)
+        straight = kinds[k] != "linear"  # a rapid goes straight round the corner
+        out_kinds.append("rapid" if straight else "arc")
+        out_lines.append(lines[k])
+        out_ends.append(corner)
+        out_feeds.append(0.0 if straight else feeds[k])
+        out_arcs.append(None if straight else arc((y, x) if plane == "XZ" else (x, y), plane, turn, 0))
+        at = k
+    moves(at, stop)
+    if not any(out_arcs):  # rapids only: an arcs column of None says so
+        return out_kinds, out_lines, out_ends, out_feeds, None
+    return made
 
 
-def _sin(angle: Array) -> Array:
-    return np.fromiter(map(math.sin, angle.tolist()), np.float64, len(angle))
-
-
-def _tan(angle: Array) -> Array:
-    return np.fromiter(map(math.tan, angle.tolist()), np.float64, len(angle))
-
-
-def _where(condition: Any, yes: Array, no: Array) -> Array:
-    return np.where(condition, yes, no)
-
-
-# numpy's own atan2 and tan (SIMD) differ from math's in the last bit now and then: only the
-# arithmetic, which IEEE fixes to the bit, runs in numpy
-ARRAYS: Ops[Array] = Ops(_atan2, _cos, _sin, _tan, _where)
-
-
-def _after(first: float, column: Array) -> Array:
-    """``first`` followed by ``column`` without its last value (the value each move finds before it)."""
-    return np.concatenate(((first,), column[:-1]))
+LINES = speedups.compiled("comp_lines") or comp_lines
 
 
 def _steady(stage: CutterCompensation) -> bool:
-    """Whether the stage holds exactly one straight move back, as after any line-line corner."""
+    """Whether the stage holds exactly one move back, as after any corner but the entry arc's."""
     queue = stage.queue
-    return (len(queue) == 1 and isinstance(queue[0], Queued) and queue[0].center is None
-            and stage.endpoint is not None and bool(stage.side) and not stage.first)
+    return (len(queue) == 1 and isinstance(queue[0], Queued) and stage.endpoint is not None and bool(stage.side)
+            and not stage.first)
 
 
-class LineRun:
-    """The corners at the starts of batch moves ``base``.., computed for the stage's state there.
-
-    They stay valid after the stage took one of them on its own (the compensated end of a moving
-    straight move does not depend on its corner) up to ``limit``: the first move without motion
-    in the plane, or whose end depends on a corner not worked out yet.
-    """
-
-    def __init__(self, stage: CutterCompensation, batch: Batch, base: int) -> None:
-        frame = self.frame = stage.frame
-        self.base = base
-        count = len(batch) - base
-        tx = np.fromiter(map(itemgetter(frame.first), islice(batch.ends, base, None)), np.float64, count)
-        ty = np.fromiter(map(itemgetter(frame.second), islice(batch.ends, base, None)), np.float64, count)
-        sx, sy = _after(stage.program[0], tx), _after(stage.program[1], ty)
-        still = np.flatnonzero((tx == sx) & (ty == sy))
-        limit = int(still[0]) if len(still) else count
-        tx, ty, sx, sy = tx[:limit], ty[:limit], sx[:limit], sy[:limit]
-        side, radius = stage.side, stage.radius
-        cx0, cy0 = frame.point(stage.current)
-        alpha0 = heading(ARRAYS, (sx, sy), (tx, ty))
-        gamma = side_angle(side)
-        # each end depends on the corner before it only through line_corner's choice of turn for alpha:
-        # guess the choices from the directions to the tool (each move's alpha + gamma, in (-pi, pi]), and
-        # repeat until they agree with the corners they give
-        toward_tool = _after(math.atan2(cy0 - sy[0], cx0 - sx[0]) if limit else 0.0, alpha0 + gamma)
-        toward_tool = np.where(toward_tool > math.pi, toward_tool - 2 * math.pi,
-                               np.where(toward_tool <= -math.pi, toward_tool + 2 * math.pi, toward_tool))
-        adjusted = line_corner(ARRAYS, side, toward_tool, alpha0)[1]
-        for _ in range(3):
-            ex, ey = at(ARRAYS, (tx, ty), radius, adjusted + gamma)
-            cx, cy = _after(cx0, ex), _after(cy0, ey)
-            theta, alpha, beta, _ = line_corner(ARRAYS, side, heading(ARRAYS, (sx, sy), (cx, cy)), alpha0)
-            changed = np.flatnonzero(alpha != adjusted)
-            if not len(changed):
-                break
-            adjusted = alpha
-        else:
-            limit = int(changed[0])
-        self.limit = limit
-        concave = inside_corner(beta)
-        half = half_corner(beta)
-        # where each move starts: cut back into an inside corner, else where the tool is
-        hx, hy = cx.copy(), cy.copy()
-        inside = np.flatnonzero(concave & (half != 0.0))
-        if len(inside):
-            hx[inside], hy[inside] = cut_back(ARRAYS, radius, (cx[inside], cy[inside]), theta[inside], gamma,
-                                              half[inside])
-        dx, dy = tx - sx, ty - sy
-        queued = stage.queue[0]
-        assert isinstance(queued, Queued) and stage.endpoint is not None
-        back = reverses((_after(queued.direction[0], dx), _after(queued.direction[1], dy)),
-                        (_after(stage.endpoint[0], hx), _after(stage.endpoint[1], hy)), (hx, hy))
-        outside = ~concave & outside_corner(beta)
-        self.bad = np.flatnonzero(outside | (concave & ((half == 0.0) | back))).tolist()
-        self.outside, self.concave, self.half = outside, concave, half
-        self.hx, self.hy, self.ex, self.ey, self.tx, self.ty, self.dx, self.dy = hx, hy, ex, ey, tx, ty, dx, dy
-
-    def count_from(self, stage: CutterCompensation, index: int) -> int:
-        """How many moves from batch move ``index`` on this run can take (0: the stage takes that one)."""
-        i = index - self.base
-        if i >= self.limit or self.outside[i]:
-            return 0
-        if self.concave[i]:  # checked against where the stage really is (it may have taken the move before)
-            queued = stage.queue[0]
-            assert isinstance(queued, Queued) and stage.endpoint is not None
-            if self.half[i] == 0.0 or reverses(queued.direction, stage.endpoint,
-                                                  (float(self.hx[i]), float(self.hy[i]))):
-                return 0
-        following = self.bad[bisect_right(self.bad, i)] if self.bad and self.bad[-1] > i else self.limit
-        return min(following, self.limit) - i
-
-    def take(self, stage: CutterCompensation, batch: Batch, index: int, count: int) -> None:
-        """Compensate batch moves ``index`` .. ``index + count - 1``: hand on the move the stage holds and all
-        but the last of them, and hold the last one back, as the stage does move by move."""
-        frame, i = self.frame, index - self.base
-        queued = stage.queue[0]
-        assert isinstance(queued, Queued)
-        queued.end = frame.pose(queued.end, (float(self.hx[i]), float(self.hy[i])))
-        stage._dequeue()
-        last = i + count - 1
-        if count > 1:
-            stage._hand_on_run(batch, index, frame.poses(islice(batch.ends, index, index + count - 1),
-                                                         self.hx[i + 1:last + 1].tolist(),
-                                                         self.hy[i + 1:last + 1].tolist()))
-        move = batch.move(index + count - 1, batch.ends[index + count - 2] if index + count > 1 else batch.start)
-        end = (float(self.ex[last]), float(self.ey[last]))
-        stage.queue.append(Queued(move, move.kind, frame.pose(move.end, end), move.feed,
-                                  direction=(float(self.dx[last]), float(self.dy[last]))))
-        stage.endpoint = (float(self.hx[last]), float(self.hy[last]))
-        stage.current = frame.pose(move.end, end)
-        stage.program = (float(self.tx[last]), float(self.ty[last]))
+def _take_run(stage: CutterCompensation, batch: Batch, index: int, stop: int) -> int:
+    """Compensate a run of batch moves from ``index`` (before ``stop``) with plain corners: hand on the
+    move the stage holds, the corners and all but the last of the moves, and hold the last one back,
+    as the stage does move by move.  Returns how many it took (0: the stage takes move ``index`` itself)."""
+    frame, queued, current = stage.frame, stage.queue[0], stage.current
+    assert isinstance(queued, Queued) and stage.endpoint is not None
+    state = (*stage.program, current[frame.first], current[frame.second], *queued.direction, *stage.endpoint,
+             current[frame.normal])
+    taken, held, made, state = LINES((batch.kinds, batch.lines, batch.ends, batch.feeds), index, stop,
+                                     (frame.first, frame.second, frame.normal, frame.plane), stage.side,
+                                     stage.radius, state, queued.center is not None, Arc)
+    if not taken:
+        return 0
+    queued.end = frame.pose(queued.end, held)
+    stage._dequeue()
+    if made[0]:
+        stage._hand_on_run(batch, made)
+    sx, sy, cx, cy, dx, dy, hx, hy, _ = state
+    last = index + taken - 1
+    move = batch.move(last, batch.ends[last - 1] if last else batch.start)
+    stage.queue.append(Queued(move, move.kind, frame.pose(move.end, (cx, cy)), move.feed, direction=(dx, dy)))
+    stage.endpoint = (hx, hy)
+    stage.current = frame.pose(move.end, (cx, cy))
+    stage.program = (sx, sy)
+    return taken
 
 
 def take_batch(stage: CutterCompensation, batch: Batch) -> None:
-    """Compensate ``batch`` (straight moves without G96) on ``stage``: runs of plain corners as arrays,
-    every other move on its own."""
-    index, count, run = 0, len(batch), None
-    quiet_until = 0  # after a run that took little: no new one before this move (its set-up costs)
-    taken = 0
+    """Compensate ``batch`` (without G96) on ``stage``: runs of plain corners in one loop, every other
+    move on its own; a move refused says how many of the batch were made before it (``EcncError.done``)."""
+    index, count, arcs = 0, len(batch), batch.arcs
+    stop = count if arcs is None else 0  # the next arc (or the end): runs stop before it
     while index < count:
-        if run is not None and index - run.base >= run.limit:
-            if taken < stage.long_run // 2:
-                quiet_until = index + stage.long_run
-            run = None
-        if _steady(stage):
-            if run is None and index >= quiet_until and count - index >= stage.long_run \
-                    and stage.frame.point(batch.ends[index]) != stage.program:
-                run, taken = LineRun(stage, batch, index), 0
-            if run is not None:
-                plain = run.count_from(stage, index)
-                if plain:
-                    run.take(stage, batch, index, plain)
-                    index += plain
-                    taken += plain
-                    continue
-        stage._take(batch.move(index, batch.ends[index - 1] if index else batch.start))
+        if stop <= index and arcs is not None:
+            stop = next((k for k in range(index, count) if arcs[k] is not None), count)
+        if index < stop and _steady(stage):
+            taken = _take_run(stage, batch, index, stop)
+            if taken:
+                index += taken
+                continue
+        try:
+            stage._take(batch.move(index, batch.ends[index - 1] if index else batch.start))
+        except EcncError as err:
+            err.done = index
+            raise
         index += 1

@@ -20,14 +20,15 @@ the path sideways by the tool radius in the selected plane:
 A compensated move is held back until the next move shows which kind of corner follows; events
 programmed meanwhile wait behind it.  Moves without in-plane motion (plunges) wait with it.
 
-A long batch of straight moves goes through ``comp_runs``: its runs of straight-on and inside
-line-line corners are computed as arrays with the same corner functions (``comp_geometry``) and go
-on as one batch; every other move is taken here, one at a time, with the very same results.
+A batch goes through ``comp_runs``: its runs of corners between straight moves (straight on,
+inside, and outside ones with their arcs) are computed in one loop (in C on the compiled core) with
+the operations of the corner functions here (``comp_geometry``) and go on as one batch; every other
+move (the contour's arcs among them) is taken here, one at a time, with the very same results.
+Released moves go on as batches (an arc in the batch's arcs column); a move under G96 alone.
 """
 from __future__ import annotations
 
 import math
-import sys
 from dataclasses import replace
 
 from edingcnc_lang.canon import Arc, Batch, Canon, Event, Move, Pose
@@ -35,6 +36,7 @@ from edingcnc_lang.events import CutterCompEvent, EndEvent
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import Location, MachineError
 from edingcnc_lang.pipeline.base import FLUSHING_EVENTS, Stage
+from edingcnc_lang.pipeline.comp_runs import Made, take_batch
 from edingcnc_lang.pipeline.comp_geometry import (
     ARC_SWEEP_SLACK_INCH,
     ARC_SWEEP_SLACK_MM,
@@ -42,7 +44,6 @@ from edingcnc_lang.pipeline.comp_geometry import (
     HALF_PI,
     LEFT,
     RIGHT,
-    SCALAR,
     Frame,
     Point,
     Queued,
@@ -69,11 +70,6 @@ def _refuse(move: Move | Event, what: str) -> MachineError:
 class CutterCompensation(Stage):
     """Offsets the programmed path by the tool radius while G41/G42 is on."""
 
-    # A batch this long goes through comp_runs (its runs of plain corners as numpy arrays) once numpy
-    # is loaded, or once this many moves went one at a time (about what loading numpy costs).
-    long_run = 32
-    numpy_after = 8000
-
     def __init__(self, next_canon: Canon, config: MachineConfig) -> None:
         super().__init__(next_canon, config)
         self.side = 0                      # LEFT, RIGHT or 0 (off, or a radius of 0)
@@ -88,9 +84,10 @@ class CutterCompensation(Stage):
         self.emitted: Pose | None = None   # where the machine is after the moves handed on
         self.exit_from: Pose | None = None  # after G40: where the exit move starts
         self.tip = (0.0, 0.0)              # a lathe tool: X, Z from the nose centre to its controlled point
-        # compensated straight moves released during one call, handed on together as one Batch
+        # compensated moves released during one call, handed on together as one Batch; the arcs among
+        # them (the batch's arcs column, None while they are all straight)
         self.out: Batch | None = None
-        self.alone = 0  # moves of long batches taken one at a time because numpy was not loaded
+        self.out_arcs: list[Arc | None] | None = None
 
     # ---------------------------------------------------------------- canon
     def move(self, move: Move) -> None:
@@ -105,23 +102,12 @@ class CutterCompensation(Stage):
             self.next.move_batch(batch)
             return
         try:
-            if (self.side and batch.css is None and batch.arcs is None and len(batch) >= self.long_run
-                    and self.tip == (0.0, 0.0) and self._arrays_pay(len(batch))):
-                from edingcnc_lang.pipeline.comp_runs import take_batch
-
+            if self.side and batch.css is None and self.tip == (0.0, 0.0):
                 take_batch(self, batch)
             else:
                 batch.each(self._take)
         finally:
             self._send()
-
-    def _arrays_pay(self, count: int) -> bool:
-        """Whether to take a long batch as arrays: numpy is loaded, or the moves taken one at a time have
-        cost about what loading it does (a short job need not load it)."""
-        if "numpy" in sys.modules or self.alone >= self.numpy_after:
-            return True
-        self.alone += count
-        return False
 
     def _take(self, move: Move) -> None:
         if not self.side:
@@ -158,23 +144,31 @@ class CutterCompensation(Stage):
 
     # ---------------------------------------------------------------- output
     def _hand_on(self, item: Queued, start: Pose) -> Pose:
-        """Hand a released move on: a straight one joins the batch being collected while it shares the
-        batch's spindle, caller and file; returns where it ends."""
+        """Hand a released move on: it joins the batch being collected while it shares the batch's
+        spindle, caller and file (a move under G96 goes on alone); returns where it ends."""
         origin = item.origin
         if self.tip != (0.0, 0.0):
             self._at_tip(item)
-        if item.center is not None or origin.css is not None:
+        if origin.css is not None:
             self._send()
             move = item.to_move(start, self.frame)
             self.next.move(move)
             return move.end
         end = tuple(item.end)
-        out = self._collecting(origin, start)
-        out.kinds.append(item.kind)  # type: ignore[attr-defined]
-        out.lines.append(origin.line)  # type: ignore[attr-defined]
-        out.ends.append(end)  # type: ignore[attr-defined]
-        out.feeds.append(item.feed)  # type: ignore[attr-defined]
+        self._append(self._collecting(origin, start), item.kind, origin.line, end, item.feed,
+                     item.arc(start, self.frame))
         return end
+
+    def _append(self, out: Batch, kind: str, line: int, end: Pose, feed: float, arc: Arc | None) -> None:
+        """Add one move to ``out``, the batch being collected."""
+        out.kinds.append(kind)  # type: ignore[attr-defined]
+        out.lines.append(line)  # type: ignore[attr-defined]
+        out.ends.append(end)  # type: ignore[attr-defined]
+        out.feeds.append(feed)  # type: ignore[attr-defined]
+        if arc is not None and self.out_arcs is None:
+            self.out_arcs = [None] * (len(out.lines) - 1)
+        if self.out_arcs is not None:
+            self.out_arcs.append(arc)
 
     def _at_tip(self, item: Queued) -> None:
         """A lathe tool's move, computed for the nose centre, moved to the tool's controlled point."""
@@ -185,14 +179,18 @@ class CutterCompensation(Stage):
         if item.center is not None:  # XZ frame points are (z, x)
             item.center = (item.center[0] + dz, item.center[1] + dx)
 
-    def _hand_on_run(self, batch: Batch, first: int, ends: list[Pose]) -> None:
-        """Hand on moves ``first``.. of ``batch`` (straight, no G96), compensated to end at ``ends``."""
-        stop = first + len(ends)
-        out = self._collecting(batch, self.emitted)  # type: ignore[arg-type]
-        out.kinds.extend(batch.kinds[first:stop])  # type: ignore[attr-defined]
-        out.lines.extend(batch.lines[first:stop])  # type: ignore[attr-defined]
+    def _hand_on_run(self, source: Batch, made: Made) -> None:
+        """Hand on the moves a run of ``source``'s moves made (``comp_runs.comp_lines``), as columns."""
+        kinds, lines, ends, feeds, arcs = made
+        out = self._collecting(source, self.emitted)  # type: ignore[arg-type]
+        if arcs is not None and self.out_arcs is None:
+            self.out_arcs = [None] * len(out.lines)
+        out.kinds.extend(kinds)  # type: ignore[attr-defined]
+        out.lines.extend(lines)  # type: ignore[attr-defined]
         out.ends.extend(ends)  # type: ignore[attr-defined]
-        out.feeds.extend(batch.feeds[first:stop])  # type: ignore[attr-defined]
+        out.feeds.extend(feeds)  # type: ignore[attr-defined]
+        if self.out_arcs is not None:
+            self.out_arcs.extend([None] * len(ends) if arcs is None else arcs)
         self.emitted = ends[-1]
 
     def _collecting(self, source: Move | Batch, start: Pose) -> Batch:
@@ -208,9 +206,9 @@ class CutterCompensation(Stage):
 
     def _send(self) -> None:
         """Hand on the batch collected so far (before anything else goes on, so the order stays)."""
-        out, self.out = self.out, None
+        out, arcs, self.out, self.out_arcs = self.out, self.out_arcs, None, None
         if out is not None:
-            self.next.move_batch(out)
+            self.next.move_batch(out if arcs is None else replace(out, arcs=arcs))
 
     # ---------------------------------------------------------------- on and off
     def _switch(self, event: CutterCompEvent) -> None:
@@ -305,16 +303,16 @@ class CutterCompensation(Stage):
             self.current = frame.pose(move.end, current)
             return
         side, radius = self.side, self.radius
-        theta, alpha, beta, gamma = line_corner(SCALAR, side, heading(SCALAR, start, current),
-                                                heading(SCALAR, start, target))
-        end = at(SCALAR, target, radius, alpha + gamma)
+        theta, alpha, beta, gamma = line_corner(side, heading(start, current),
+                                                heading(start, target))
+        end = at(target, radius, alpha + gamma)
         front = self._front()
         concave = inside_corner(beta)
         if not concave and beta > math.pi - CONCAVE_TOLERANCE and front is not None and front.center is not None \
                 and ((side == RIGHT and front.turn > 0) or (side == LEFT and front.turn < 0)):
             concave = True  # over the round top of an "h": stay on the outside
         if not concave and outside_corner(beta):  # outside corner: round it
-            mid = at(SCALAR, start, radius, alpha + gamma)
+            mid = at(start, radius, alpha + gamma)
             self._move_endpoint_and_flush(current, move)
             corner = frame.pose(move.end, mid, self.current[frame.normal])
             if move.kind == "linear":
@@ -329,7 +327,7 @@ class CutterCompensation(Stage):
                 half = half_corner(beta)
                 if half == 0.0:
                     raise _refuse(move, "a zero-degree inside corner cannot be compensated")
-                self._move_endpoint_and_flush(cut_back(SCALAR, radius, current, theta, gamma, half), move)
+                self._move_endpoint_and_flush(cut_back(radius, current, theta, gamma, half), move)
             else:
                 self._move_endpoint_and_flush(self._arc_line_corner(front, start, target, move), move)
         else:  # straight on (or a tangent arc-line junction)
@@ -347,7 +345,7 @@ class CutterCompensation(Stage):
             raise _refuse(move, f"the entry move ({distance:.4f} mm in the plane) must be longer than the tool "
                                f"radius {self.radius:.4f} mm")
         alpha = math.atan2(target[1] - current[1], target[0] - current[0]) + HALF_PI * self.side
-        end = at(SCALAR, target, self.radius, alpha)
+        end = at(target, self.radius, alpha)
         self.endpoint = current
         self._enqueue(Queued(move, move.kind, self.frame.pose(move.end, end), move.feed,
                              direction=(math.cos(alpha), math.sin(alpha))))
@@ -373,7 +371,7 @@ class CutterCompensation(Stage):
         if not -1.0 <= ratio <= 1.0:
             raise _refuse(move, "the arc-to-line corner is too tight for the tool without gouging")
         sign = (-1 if prev.turn > 0 else 1) if inside else (1 if prev.turn > 0 else -1)
-        return at(SCALAR, prev.center, old, sign * math.acos(ratio) + theta + math.pi)
+        return at(prev.center, old, sign * math.acos(ratio) + theta + math.pi)
 
     # ---------------------------------------------------------------- arcs
     def _arc(self, move: Move) -> None:
@@ -406,7 +404,7 @@ class CutterCompensation(Stage):
         else:
             gamma = math.atan2(end_p[1] - center[1], end_p[0] - center[0])
             delta += math.pi
-        new_end = at(SCALAR, end_p, radius, gamma)
+        new_end = at(end_p, radius, gamma)
         sweep = find_turn(start, center, turn, end_p)
         arc_end = frame.pose(move.end, new_end)
         if inside_corner(beta) or (abs(beta - math.pi) < CONCAVE_TOLERANCE and not inside):
@@ -417,7 +415,7 @@ class CutterCompensation(Stage):
                 mid = self._arc_arc_corner(front, center, arc_radius, turn, move)
             self._move_endpoint_and_flush(mid, move)
         elif outside_corner(beta):  # outside corner: round it first
-            corner = at(SCALAR, start, radius, delta)
+            corner = at(start, radius, delta)
             self._dequeue()
             self._enqueue(Queued(move, "arc", frame.pose(move.end, corner, self.current[frame.normal]),
                                  move.feed, center=start, turn=-1 if side == LEFT else 1))
@@ -441,7 +439,7 @@ class CutterCompensation(Stage):
             raise _refuse(move, f"the tool radius {self.radius:.4f} mm does not fit inside the arc of radius "
                                 f"{math.dist(center, end_p):.4f} mm")
         toward = (center, end_p) if tool_inside_arc(self.side, arc.turn) else (end_p, center)
-        end = at(SCALAR, end_p, self.radius, math.atan2(toward[0][1] - toward[1][1], toward[0][0] - toward[1][0]))
+        end = at(end_p, self.radius, math.atan2(toward[0][1] - toward[1][1], toward[0][0] - toward[1][0]))
         # the compensated arc's centre: on the line from its end towards the programmed centre,
         # equally far from the end and from the start (the tool)
         half = math.dist(current, end) / 2.0
@@ -449,7 +447,7 @@ class CutterCompensation(Stage):
         cosine = math.cos(math.atan2(current[1] - end[1], current[0] - end[0]) - towards_center)
         if abs(cosine) < 1e-4:
             raise _refuse(move, "the tool radius is not smaller than the radius of the entry arc")
-        new_center = at(SCALAR, end, half / cosine, towards_center)
+        new_center = at(end, half / cosine, towards_center)
         self.endpoint = None
         self._enqueue(Queued(move, "arc", frame.pose(move.end, end), move.feed, center=new_center,
                              turn=arc.turn, sweep=find_turn(current, new_center, arc.turn, end)))
@@ -472,7 +470,7 @@ class CutterCompensation(Stage):
             ratio = (offset - radius) / distance
             self._fits(ratio, move)
             angle = theta + math.pi - math.asin(ratio) if turn > 0 else theta + math.pi + math.asin(ratio)
-        return at(SCALAR, center, distance, angle)
+        return at(center, distance, angle)
 
     def _arc_arc_corner(self, prev: Queued, center: Point, arc_radius: float, turn: int, move: Move) -> Point:
         """Where two compensated arcs meet in an inside corner."""
@@ -488,7 +486,7 @@ class CutterCompensation(Stage):
         pullback = math.acos(ratio)
         direction = math.atan2(center[1] - prev.center[1], center[0] - prev.center[0])
         sign = (1 if turn > 0 else -1) if tool_inside_arc(self.side, prev.turn) else (-1 if turn > 0 else 1)
-        return at(SCALAR, prev.center, old, direction + sign * pullback)
+        return at(prev.center, old, direction + sign * pullback)
 
     @staticmethod
     def _fits(ratio: float, move: Move) -> None:

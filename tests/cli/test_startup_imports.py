@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -68,16 +69,21 @@ def test_a_plain_run_of_a_job_that_moves_does_not_import_numpy(tmp_path: Path) -
     assert not {"numpy", "edingcnc_lang.motion.planner.profile", "edingcnc_lang.motion.planner.segments"} & modules
 
 
-def test_a_plain_run_of_a_short_compensated_contour_does_not_import_numpy(tmp_path: Path) -> None:
-    # its batches are long enough for compensation's arrays, but loading numpy would cost more than they save
+@pytest.mark.parametrize("core", ["compiled", "python"])
+def test_a_plain_run_of_a_compensated_contour_does_not_import_numpy(tmp_path: Path, core: str) -> None:
+    # compensation's runs of corners need no numpy on either core, however long the contour (10,000 segments:
+    # more than compensation once took one at a time before it loaded numpy for them)
     job = tmp_path / "contour.nc"
     job.write_text("G0 X60 Y0\nG41.1 D2\nG1 X40 Y0 F500\n"
-                   + "".join(f"X{40 * math.cos(k / 50):.3f} Y{40 * math.sin(k / 50):.3f}\n" for k in range(1, 300))
+                   + "".join(f"X{40 * math.cos(k / 50):.3f} Y{40 * math.sin(k / 50):.3f}\n" for k in range(1, 10_000))
                    + "G40\nG1 X0 Y0\nM30\n")
-    result = _python("-X", "importtime", "-m", "edingcnc_lang", "run", str(job))
-    modules = _imported_modules(result.stderr)
-    assert "edingcnc_lang.pipeline.cutter_comp" in modules  # compensated
-    assert not {"numpy", "edingcnc_lang.pipeline.comp_runs"} & modules
+    code = ("import sys; from edingcnc_lang.cli import run_command_line\n"
+            "code = run_command_line(['run', sys.argv[1]])\n"
+            "print(code, 'numpy' in sys.modules)")
+    env = {**os.environ, "ECNC_PURE_PYTHON": "1" if core == "python" else ""}
+    done = subprocess.run([sys.executable, "-c", code, str(job)], capture_output=True, text=True, cwd=ROOT, env=env)
+    loaded = done.stdout.splitlines()[-1]
+    assert loaded == "0 False"  # the job ran, and numpy was not loaded
 
 
 def test_an_unplanned_api_run_reports_moves_but_no_estimate(tmp_path: Path) -> None:

@@ -19,7 +19,6 @@ from hypothesis import strategies as st
 from edingcnc_lang import EcncError, Event, Move, RunOptions, run_file, run_string
 from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
-from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 
 numbers = st.one_of(st.integers(-200, 200).map(str),
                     st.floats(-200, 200, allow_nan=False).map(lambda v: f"{v:.3f}"),
@@ -73,11 +72,7 @@ def _outcome(run) -> tuple:  # type: ignore[no-untyped-def]
 @pytest.mark.slow
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(jobs, st.booleans())
-def test_bulk_and_general_paths_agree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, lines: list[str],
-                                      zhc: bool) -> None:
-    # compensation takes even short batches as arrays here (comp_runs), so the general path checks that too
-    monkeypatch.setattr(CutterCompensation, "long_run", 2)
-    monkeypatch.setattr(CutterCompensation, "numpy_after", 0)
+def test_bulk_and_general_paths_agree(tmp_path: Path, lines: list[str], zhc: bool) -> None:
     text = (ZHC_HEADER if zhc else "") + "\n".join([*lines, "GetJobDistance 101"]) + "\n"
     job = tmp_path / "job.nc"
     job.write_text(text)

@@ -1,7 +1,23 @@
 """A canon that records what reaches it, to test stages alone."""
 from __future__ import annotations
 
+from importlib import import_module
+from typing import Any
+
+import pytest
+
 from edingcnc_lang.canon import Batch, Event, Move, Pose
+from edingcnc_lang.pipeline import comp_runs
+
+try:  # the compiled core, also where ECNC_PURE_PYTHON=1 runs the suite on the Python one
+    COMPILED: Any = import_module("edingcnc_lang._speedups")
+except ImportError:
+    COMPILED = None
+NOT_BUILT = "the compiled core is not built here"
+# compensation's loop over a run of corners: the Python one and the compiled one (pipeline/comp_runs.py)
+LOOPS = [pytest.param(comp_runs.comp_lines, id="python"),
+         pytest.param(getattr(COMPILED, "comp_lines", None), id="compiled",
+                      marks=pytest.mark.skipif(COMPILED is None, reason=NOT_BUILT))]
 
 ZERO: Pose = (0.0,) * 6
 

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from stage_helpers import Recorder, pose
+from stage_helpers import LOOPS, Recorder, pose
 
 from edingcnc_lang import RunOptions, run_file, run_string
 from edingcnc_lang.canon import PLANES, Arc, Batch, Event, Move
@@ -25,6 +25,7 @@ from edingcnc_lang.errors import MachineError
 from edingcnc_lang.config.heightmap import HeightMap
 from edingcnc_lang.canon import Css
 from edingcnc_lang.pipeline import STAGES
+from edingcnc_lang.pipeline import comp_runs
 from edingcnc_lang.pipeline.base import Stage
 from edingcnc_lang.pipeline.cutter_comp import CutterCompensation
 from edingcnc_lang.pipeline.height_comp import HeightCompensation
@@ -175,13 +176,14 @@ def _compensated(programmed: list[Move], comp: tuple[str, float, str], send: obj
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("loop", LOOPS)
 @settings(max_examples=150, deadline=None)
 @given(rng=st.randoms(use_true_random=False), count=st.integers(1, 80), spindle=spindles, comp=compensations,
-       cuts=st.lists(st.integers(1, 79), max_size=4), long_run=st.sampled_from([1, 2, 5]))
+       cuts=st.lists(st.integers(1, 79), max_size=4))
 def test_compensation_in_batches_gives_the_moves_of_compensation_move_by_move(
-        rng: Random, count: int, spindle: tuple, comp: tuple, cuts: list[int], long_run: int) -> None:  # type: ignore[type-arg]
-    """Runs of corners as arrays (comp_runs) give the very moves, bit for bit, and the same refusals;
-    the batches are cut anywhere (the interpreter's batches end at any line)."""
+        loop: object, rng: Random, count: int, spindle: tuple, comp: tuple, cuts: list[int]) -> None:  # type: ignore[type-arg]
+    """Runs of corners in one loop (comp_runs, in Python and compiled) give the very moves, bit for bit, and
+    the same refusals; the batches are cut anywhere (the interpreter's batches end at any line)."""
     programmed = _walk([_step(rng) for _ in range(count)], spindle, comp[2])
     rpm, css, sync, caller = spindle
 
@@ -198,17 +200,14 @@ def test_compensation_in_batches_gives_the_moves_of_compensation_move_by_move(
                                        css, sync, caller))
 
     alone = _compensated(programmed, comp, one_by_one)
-    defaults = CutterCompensation.long_run, CutterCompensation.numpy_after
-    CutterCompensation.long_run, CutterCompensation.numpy_after = long_run, 0
-    try:
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(comp_runs, "LINES", loop)
         batched = _compensated(programmed, comp, in_batches)
-    finally:
-        CutterCompensation.long_run, CutterCompensation.numpy_after = defaults
     assert batched == alone
 
 
 def test_a_long_contour_goes_on_in_batches_and_gives_the_moves_one_by_one() -> None:
-    """The real threshold: a 200-segment spiral (straight on, then inside corners) leaves the stage as batches."""
+    """A 200-segment spiral (straight on, then inside corners) leaves the stage as one batch."""
     items = [("linear", 0.01, 5.0, 0.0)] * 100 + [("linear", 0.3, 4.0, 0.0)] * 100
     programmed = _walk(items, (1000.0, None, 0.0, 0), "XY")
     batch = Batch("job.nc", pose(), [m.kind for m in programmed], [m.line for m in programmed],
@@ -216,7 +215,6 @@ def test_a_long_contour_goes_on_in_batches_and_gives_the_moves_one_by_one() -> N
     alone = _compensated(programmed, ("left", 1.0, "XY"), lambda stage: [stage.move(m) for m in programmed])
     sink = Recorder()
     stage = CutterCompensation(sink, CONFIG)  # type: ignore[arg-type]
-    stage.numpy_after = 0
     stage.event(CutterCompEvent("job.nc", 1, "left", 1.0, "XY"))
     stage.move_batch(batch)
     assert [(kind, len(what)) for kind, what in sink.log[1:]] == [("batch", 199)]  # the last one held back
