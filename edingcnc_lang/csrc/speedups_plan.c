@@ -12,7 +12,8 @@
 #define KIND_STRAIGHT (-1)
 #define KIND_RAPID 0
 #define KIND_LINEAR 1
-#define KIND_ARC 2  /* (never planned here) */
+#define KIND_ARC 2
+#define ARC_ROW 10  /* an ArcTable row: move index, u, v, cu, cv, r0, r1, start angle, sweep, XYZ length */
 #define KIND_PROBE 3
 #define KIND_HOME 4
 
@@ -98,8 +99,9 @@ typedef struct {
 typedef struct {
     double *length, *xyz, *vmax, *accel, *tan_in, *duration, *peak, *node2, *cap2, *reach;
     double *m_length, *m_accel;  /* the moving moves' lengths and accelerations, gathered */
+    double *tan_out;             /* the arcs' directions at their ends, six per arc (a straight move's is tan_in) */
     long *kind, *state;
-    Py_ssize_t *moving;
+    Py_ssize_t *moving, *arc_of; /* arc_of: the move's row in the arc table, -1 for a straight move */
     char *exact;
 } PlanWork;
 
@@ -108,10 +110,10 @@ static void plan_free(PlanWork *w)
     PyMem_Free(w->length); PyMem_Free(w->xyz); PyMem_Free(w->vmax); PyMem_Free(w->accel);
     PyMem_Free(w->tan_in); PyMem_Free(w->duration); PyMem_Free(w->peak); PyMem_Free(w->node2);
     PyMem_Free(w->cap2); PyMem_Free(w->reach); PyMem_Free(w->m_length); PyMem_Free(w->m_accel); PyMem_Free(w->kind);
-    PyMem_Free(w->state); PyMem_Free(w->moving); PyMem_Free(w->exact);
+    PyMem_Free(w->state); PyMem_Free(w->moving); PyMem_Free(w->exact); PyMem_Free(w->arc_of); PyMem_Free(w->tan_out);
 }
 
-static int plan_alloc(PlanWork *w, Py_ssize_t n)
+static int plan_alloc(PlanWork *w, Py_ssize_t n, Py_ssize_t arcs)
 {
     size_t d = sizeof(double), m = (size_t)n + 1;
     memset(w, 0, sizeof(*w));
@@ -122,7 +124,8 @@ static int plan_alloc(PlanWork *w, Py_ssize_t n)
     w->m_length = PyMem_Malloc(m * d); w->m_accel = PyMem_Malloc(m * d);
     w->kind = PyMem_Malloc(m * sizeof(long)); w->state = PyMem_Malloc(m * sizeof(long));
     w->moving = PyMem_Malloc(m * sizeof(Py_ssize_t)); w->exact = PyMem_Malloc(m);
-    if (!w->length || !w->xyz || !w->vmax || !w->accel || !w->tan_in || !w->duration || !w->peak || !w->node2
+    w->arc_of = PyMem_Malloc(m * sizeof(Py_ssize_t)); w->tan_out = PyMem_Malloc(((size_t)arcs + 1) * PLAN_AXES * d);
+    if (!w->arc_of || !w->tan_out || !w->length || !w->xyz || !w->vmax || !w->accel || !w->tan_in || !w->duration || !w->peak || !w->node2
         || !w->cap2 || !w->reach || !w->m_length || !w->m_accel || !w->kind || !w->state || !w->moving || !w->exact) {
         plan_free(w);
         PyErr_NoMemory();
@@ -231,11 +234,63 @@ static void plan_segment(PlanWork *w, Py_ssize_t i, const double start[PLAN_AXES
     w->accel[i] = length / a_ratio;
 }
 
+/* segments._arcs for move i, arc table row `row` (its a-th row): what plan_segment worked out for it is
+ * replaced by the arc's length, in-plane shares, tangents at both ends and limits (`speed`: its own speed
+ * limit, before the arc's; `share`: segments.curvature_share).  sin and cos are libm's, which agree with
+ * numpy's float64 ones on the machines the project is built on (docs/planner.md). */
+static void plan_arc(PlanWork *w, Py_ssize_t i, Py_ssize_t a, const double *row, const double start[PLAN_AXES],
+                     const double end[PLAN_AXES], const double *vlim, const double *alim, double speed, double share,
+                     double min_arc_length)
+{
+    int u = (int)row[1], v = (int)row[2], k, side;
+    double r0 = row[5], r1 = row[6], angle = row[7], sweep = row[8], linear = row[9];
+    double delta[PLAN_AXES], fraction[PLAN_AXES], tangent[PLAN_AXES], in_plane, arc_len, v_ratio, a_ratio;
+    double vmax, accel, radius;
+    for (k = 0; k < PLAN_AXES; k++)
+        delta[k] = end[k] - start[k];
+    in_plane = fabs(sweep) * (r0 + r1) / 2.0;
+    arc_len = linear > 0.0 ? linear : sqrt(delta[3] * delta[3] + delta[4] * delta[4] + delta[5] * delta[5]);
+    for (k = 0; k < PLAN_AXES; k++)
+        fraction[k] = arc_len > 0.0 ? fabs(delta[k]) / arc_len : 0.0;
+    fraction[u] = fraction[v] = arc_len > 0.0 ? in_plane / arc_len : 0.0;
+    w->length[i] = arc_len;
+    w->xyz[i] = linear;
+    for (side = 0; side < 2; side++) {
+        double at = side ? angle + sweep : angle, r = side ? r1 : r0, norm;
+        double *out = side ? w->tan_out + PLAN_AXES * a : w->tan_in + PLAN_AXES * i;
+        memcpy(tangent, delta, sizeof(tangent));
+        tangent[u] = -sin(at) * sweep * r;
+        tangent[v] = cos(at) * sweep * r;
+        norm = tangent[0] * tangent[0];
+        for (k = 1; k < PLAN_AXES; k++)
+            norm = norm + tangent[k] * tangent[k];
+        norm = sqrt(norm);
+        for (k = 0; k < PLAN_AXES; k++)
+            out[k] = norm > 0.0 ? tangent[k] / norm : tangent[k];
+    }
+    v_ratio = fraction[0] / vlim[0];
+    a_ratio = fraction[0] / alim[0];
+    for (k = 1; k < PLAN_AXES; k++) {
+        v_ratio = np_maximum(v_ratio, fraction[k] / vlim[k]);
+        a_ratio = np_maximum(a_ratio, fraction[k] / alim[k]);
+    }
+    vmax = 1.0 / v_ratio;
+    accel = 1.0 / a_ratio;
+    radius = (r0 + r1) / 2.0;
+    if (arc_len >= min_arc_length && radius > 0.0) {  /* it turns: v^2 / r within its share of the plane's */
+        double plane_accel = np_minimum(alim[u], alim[v]), centripetal = plane_accel * share;
+        speed = np_minimum(np_minimum(speed, vmax), sqrt(centripetal * radius));
+        accel = np_minimum(accel, plane_accel - speed * speed / radius);
+    }
+    w->vmax[i] = np_minimum(vmax, speed);
+    w->accel[i] = accel;
+}
+
 /* junctions.corner_speeds2 for the corner between moves b and a (no G64 R programmed), then what the
  * stage makes of it: 0 next to an exact stop, never above either move's speed limit. */
 static double plan_corner(const PlanWork *w, Py_ssize_t b, Py_ssize_t a, double tolerance, double sharp_cos)
 {
-    const double *out = w->tan_in + PLAN_AXES * b, *in = w->tan_in + PLAN_AXES * a;
+    const double *out = w->arc_of[b] >= 0 ? w->tan_out + PLAN_AXES * w->arc_of[b] : w->tan_in + PLAN_AXES * b, *in = w->tan_in + PLAN_AXES * a;
     double cos_phi = out[0] * in[0], cos_half, tan_half, fit, within, radius, speed2, limit;
     int k;
     if (w->exact[b] || w->exact[a])
@@ -323,9 +378,10 @@ static PyObject *plan_list(const double *values, Py_ssize_t count)
 }
 
 /* plan_straight(origin, ends, feeds, n, count, kind_runs, state_runs, states, limit_sets, sharp_cos, start2,
- *               time) -> (t_end, peak (bytes of doubles: few sinks read it), start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
+ *               time, arc_rows, arc_share, min_arc_length) -> (t_end, peak (bytes of doubles: few sinks read it), start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
  *                         low, high)
- * Plans the first n collected moves (straight ones: no arcs, no samples, no joints' caps, no G64 R) and
+ * Plans the first n collected moves (straight ones and arcs: arc_rows holds the window's ArcTable rows as
+ * bytes of doubles, rows of moves from n on ignored; no samples, no joints' caps, no G64 R) and
  * commits the first count: their end times and peak speeds, the squared speed the next window starts
  * from, the estimate's sums (in order) and the extremes the limits report widens by (None, None when
  * count is 0). */
@@ -335,21 +391,46 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
     PyObject *t_list = NULL, *peak_list = NULL, *low_list = NULL, *high_list = NULL;
     Py_ssize_t n, count, i, m = 0, n_states = 0, n_sets = 0, done = 0;
     double sharp_cos, start2, time, start[PLAN_AXES], end[PLAN_AXES], low[PLAN_AXES], high[PLAN_AXES];
-    double sums[4] = {0.0, 0.0, 0.0, 0.0}, cum = 0.0, first, next2;
+    double sums[4] = {0.0, 0.0, 0.0, 0.0}, cum = 0.0, first, next2, arc_share, min_arc_length;
+    double *arc_rows = NULL;
+    char *row_bytes;
+    Py_ssize_t n_arcs, row_size;
+    PyObject *rows;
     PlanState *states = NULL;
     double *limits = NULL, *t_end = NULL;
     PlanWork w;
     int k;
     (void)self;
-    if (!PyArg_ParseTuple(args, "OOOnnOOOOddd", &origin, &ends, &feeds, &n, &count, &kind_runs, &state_runs,
-                          &table, &sets, &sharp_cos, &start2, &time))
+    if (!PyArg_ParseTuple(args, "OOOnnOOOOdddSdd", &origin, &ends, &feeds, &n, &count, &kind_runs, &state_runs,
+                          &table, &sets, &sharp_cos, &start2, &time, &rows, &arc_share, &min_arc_length))
         return NULL;
-    if (n < 0 || count < 0 || count > n) {
-        PyErr_SetString(PyExc_ValueError, "plan_straight: 0 <= count <= n");
+    if (PyBytes_AsStringAndSize(rows, &row_bytes, &row_size) < 0)
+        return NULL;
+    n_arcs = row_size / (Py_ssize_t)(ARC_ROW * sizeof(double));
+    if (n < 0 || count < 0 || count > n || row_size % (Py_ssize_t)(ARC_ROW * sizeof(double))) {
+        PyErr_SetString(PyExc_ValueError, "plan_straight: 0 <= count <= n, whole arc rows");
         return NULL;
     }
-    if (plan_alloc(&w, n) < 0)
+    if (plan_alloc(&w, n, n_arcs) < 0)
         return NULL;
+    /* (copied: the bytes' data need not be aligned for doubles) */
+    if ((arc_rows = PyMem_Malloc((size_t)row_size + sizeof(double))) == NULL) {
+        plan_free(&w);
+        return PyErr_NoMemory();
+    }
+    memcpy(arc_rows, row_bytes, (size_t)row_size);
+    for (i = 0; i < n; i++)
+        w.arc_of[i] = -1;
+    for (i = 0; i < n_arcs; i++) {  /* an ArcTable row: its move's index first, then its frame */
+        const double *row = arc_rows + ARC_ROW * i;
+        if (!(row[0] >= 0.0) || !(row[1] >= 0.0 && row[1] < PLAN_AXES) || !(row[2] >= 0.0 && row[2] < PLAN_AXES)
+            || row[1] == row[2]) {
+            PyErr_SetString(PyExc_ValueError, "plan_straight: an arc row without a move or a plane");
+            goto done;
+        }
+        if (row[0] < (double)n)
+            w.arc_of[(Py_ssize_t)row[0]] = i;
+    }
     if ((states = plan_states(table, &n_states)) == NULL || (limits = plan_limits(sets, &n_sets)) == NULL
         || (t_end = PyMem_Malloc(((size_t)count + 1) * sizeof(double))) == NULL)
         goto done;
@@ -387,9 +468,11 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
             goto done;
         s = w.state[i];
         kind = w.kind[i];
-        if (kind == KIND_STRAIGHT)
+        if (w.arc_of[i] >= 0)
+            kind = w.kind[i] = KIND_ARC;
+        else if (kind == KIND_STRAIGHT)
             kind = w.kind[i] = feed > 0.0 ? KIND_LINEAR : KIND_RAPID;
-        if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME || kind == KIND_ARC) {
+        if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME) {
             PyErr_SetString(PyExc_ValueError, "plan_straight: a move of a kind or state it does not plan");
             goto done;
         }
@@ -405,6 +488,9 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         w.exact[i] = (char)(st->exact || kind == KIND_RAPID || kind == KIND_PROBE || kind == KIND_HOME);
         speed = (kind == KIND_RAPID || kind == KIND_HOME) ? INFINITY : feed * st->factor / 60.0;
         plan_segment(&w, i, start, end, limit, limit + PLAN_AXES, speed);
+        if (w.arc_of[i] >= 0)
+            plan_arc(&w, i, w.arc_of[i], arc_rows + ARC_ROW * w.arc_of[i], start, end, limit, limit + PLAN_AXES, speed,
+                     arc_share, min_arc_length);
         if (w.length[i] > 0.0)
             w.moving[m++] = i;
         if (i < count)
@@ -464,5 +550,6 @@ done:
     PyMem_Free(limits);
     PyMem_Free(t_end);
     plan_free(&w);
+    PyMem_Free(arc_rows);
     return result;
 }
