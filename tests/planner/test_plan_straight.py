@@ -317,3 +317,24 @@ def test_the_c_planner_times_windows_with_arcs_as_the_reference(
         reference = _run_arcs(ops, limit_sets, config, batched, False, patch)
     assert compiled[4] or not any(op[0] in ("arc", "straight") for op in ops)  # the C planner took the windows
     assert compiled[:4] == reference[:4]
+
+
+@needs_c
+def test_an_arc_exactly_min_circle_segment_size_long_turns_on_both(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An arc as long as min_circle_segment_size still turns (the centripetal cap applies); just shorter, it
+    is a chord: the same on both planners, at the boundary and either side of it."""
+    from edingcnc_lang.kinematics.trajectory import arc_frame_rows
+
+    arc_op = ("arc", "XY", 0.02, 0.0, math.pi / 2, 0.0, 1, 1, 60000.0, 0, 1.0)
+    end, arc = _arc((0.0,) * 6, arc_op)
+    length = arc_frame_rows((0.0,) * 6, [end], [arc])[-1]
+    ops = [("g64", 0.0), ("straight", (0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 600.0), arc_op,
+           ("straight", (1.0, 1.0, 0.0, 0.0, 0.0, 0.0), 600.0)]
+    limits = [PlainLimits((100.0,) * 6, (1000.0,) * 6)]
+    times = set()
+    for min_circle in (math.nextafter(length, 0.0), length, math.nextafter(length, math.inf)):
+        config = dataclasses.replace(MachineConfig.default(), min_circle_segment_size=min_circle)
+        compiled = _run_arcs(ops, limits, config, False, True, monkeypatch)
+        assert compiled[4] and compiled[:4] == _run_arcs(ops, limits, config, False, False, monkeypatch)[:4]
+        times.add(compiled[2])
+    assert len(times) == 2  # turning at and under the length, a chord past it
