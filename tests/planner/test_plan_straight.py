@@ -338,3 +338,13 @@ def test_an_arc_exactly_min_circle_segment_size_long_turns_on_both(monkeypatch: 
         assert compiled[4] and compiled[:4] == _run_arcs(ops, limits, config, False, False, monkeypatch)[:4]
         times.add(compiled[2])
     assert len(times) == 2  # turning at and under the length, a chord past it
+
+
+def test_numpy_sine_and_cosine_are_libms() -> None:
+    """The C planner's arc tangents call libm's sin and cos where the reference calls numpy's (docs/planner.md):
+    on this machine they must agree to the bit (Python's math.sin and math.cos are libm's)."""
+    angles = np.random.default_rng(42).uniform(-4.0 * math.pi, 4.0 * math.pi, 20_000)
+    angles = np.concatenate((angles, [0.0, -0.0, math.pi, -math.pi, math.pi / 2, 2.5 * math.pi, 1e-300, 1e6]))
+    values = angles.tolist()
+    assert np.sin(angles).tolist() == [math.sin(a) for a in values]
+    assert np.cos(angles).tolist() == [math.cos(a) for a in values]

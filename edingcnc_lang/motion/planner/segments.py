@@ -97,7 +97,7 @@ def _arcs(start: np.ndarray, end: np.ndarray, arcs: ArcTable, vlim: np.ndarray, 
         tangents[:, index] = np.where(norm > 0.0, tangent / np.where(norm > 0.0, norm, 1.0), tangent)
     row_v = vlim[:, index] if vlim.shape[1] > 1 else vlim[:, [0]]
     row_a = alim[:, index] if alim.shape[1] > 1 else alim[:, [0]]
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore"):  # (a limit of 0: NaN shares, as for straight moves)
         vmax[index], accel[index] = 1.0 / np.max(fraction / row_v, axis=0), 1.0 / np.max(fraction / row_a, axis=0)
     radius = (r0 + r1) / 2.0
     turning = (arc_len >= min_arc_length) & (radius > 0.0)
