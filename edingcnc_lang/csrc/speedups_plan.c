@@ -12,7 +12,8 @@
 #define KIND_STRAIGHT (-1)
 #define KIND_RAPID 0
 #define KIND_LINEAR 1
-#define KIND_ARC 2  /* (never planned here) */
+#define KIND_ARC 2
+#define ARC_ROW 10  /* an ArcTable row: move index, u, v, cu, cv, r0, r1, start angle, sweep, XYZ length */
 #define KIND_PROBE 3
 #define KIND_HOME 4
 
@@ -26,80 +27,14 @@ static inline double np_clip(double x, double low, double high)
     return isnan(t) ? t : (t < high ? t : high);
 }
 
-/* Item i of a list or tuple (any sequence) as a double: -1 with an error set if it is no number. */
-static int plan_item(PyObject *seq, Py_ssize_t i, double *out)
-{
-    PyObject *item;
-    int owned = 0;
-    if (PyList_Check(seq))
-        item = PyList_GetItem(seq, i);
-    else if (PyTuple_Check(seq))
-        item = PyTuple_GetItem(seq, i);
-    else {
-        item = PySequence_GetItem(seq, i);
-        owned = 1;
-    }
-    if (item == NULL)
-        return -1;
-    *out = PyFloat_AsDouble(item);
-    if (owned)
-        Py_DECREF(item);
-    return (*out == -1.0 && PyErr_Occurred()) ? -1 : 0;
-}
-
-/* The six numbers of a pose (a sequence of six; a tuple, the usual case, read directly). */
-static int plan_pose(PyObject *pose, double out[PLAN_AXES])
-{
-    int k, failed = 0;
-    if (!PyTuple_Check(pose) || PyTuple_Size(pose) != PLAN_AXES) {
-        for (k = 0; k < PLAN_AXES; k++)
-            if (plan_item(pose, k, &out[k]) < 0)
-                return -1;
-        return 0;
-    }
-    for (k = 0; k < PLAN_AXES; k++) {
-        out[k] = PyFloat_AsDouble(PyTuple_GetItem(pose, k));
-        failed |= out[k] == -1.0;
-    }
-    return failed && PyErr_Occurred() ? -1 : 0;
-}
-
-/* A Runs column (values, counts) as one int per move, for the first n moves. */
-static int plan_runs(PyObject *values, PyObject *counts, Py_ssize_t n, long *out)
-{
-    Py_ssize_t runs = PySequence_Size(values), r, at = 0;
-    if (runs < 0)
-        return -1;
-    for (r = 0; r < runs && at < n; r++) {
-        PyObject *v = PySequence_GetItem(values, r), *c = PySequence_GetItem(counts, r);
-        long value = v ? PyLong_AsLong(v) : -1;
-        Py_ssize_t count = c ? PyLong_AsSsize_t(c) : -1;
-        Py_XDECREF(v);
-        Py_XDECREF(c);
-        if (PyErr_Occurred())
-            return -1;
-        for (; count > 0 && at < n; count--)
-            out[at++] = value;
-    }
-    if (at < n) {
-        PyErr_SetString(PyExc_ValueError, "plan_straight: the runs hold fewer moves than the window");
-        return -1;
-    }
-    return 0;
-}
-
-/* One machine state (Planner._states): exact stop, G64 P, feed factor, the limit sets of rapids and of the rest. */
-typedef struct {
-    int exact;
-    double tolerance, factor;
-    long rapid_limits, other_limits;
-} PlanState;
+#include "speedups_plan_read.c"  /* reading the window from Python: plan_item ... plan_list */
 
 typedef struct {
     double *length, *xyz, *vmax, *accel, *tan_in, *duration, *peak, *node2, *cap2, *reach;
     double *m_length, *m_accel;  /* the moving moves' lengths and accelerations, gathered */
+    double *tan_out;             /* the arcs' directions at their ends, six per arc (a straight move's is tan_in) */
     long *kind, *state;
-    Py_ssize_t *moving;
+    Py_ssize_t *moving, *arc_of; /* arc_of: the move's row in the arc table, -1 for a straight move */
     char *exact;
 } PlanWork;
 
@@ -108,10 +43,10 @@ static void plan_free(PlanWork *w)
     PyMem_Free(w->length); PyMem_Free(w->xyz); PyMem_Free(w->vmax); PyMem_Free(w->accel);
     PyMem_Free(w->tan_in); PyMem_Free(w->duration); PyMem_Free(w->peak); PyMem_Free(w->node2);
     PyMem_Free(w->cap2); PyMem_Free(w->reach); PyMem_Free(w->m_length); PyMem_Free(w->m_accel); PyMem_Free(w->kind);
-    PyMem_Free(w->state); PyMem_Free(w->moving); PyMem_Free(w->exact);
+    PyMem_Free(w->state); PyMem_Free(w->moving); PyMem_Free(w->exact); PyMem_Free(w->arc_of); PyMem_Free(w->tan_out);
 }
 
-static int plan_alloc(PlanWork *w, Py_ssize_t n)
+static int plan_alloc(PlanWork *w, Py_ssize_t n, Py_ssize_t arcs)
 {
     size_t d = sizeof(double), m = (size_t)n + 1;
     memset(w, 0, sizeof(*w));
@@ -122,75 +57,14 @@ static int plan_alloc(PlanWork *w, Py_ssize_t n)
     w->m_length = PyMem_Malloc(m * d); w->m_accel = PyMem_Malloc(m * d);
     w->kind = PyMem_Malloc(m * sizeof(long)); w->state = PyMem_Malloc(m * sizeof(long));
     w->moving = PyMem_Malloc(m * sizeof(Py_ssize_t)); w->exact = PyMem_Malloc(m);
-    if (!w->length || !w->xyz || !w->vmax || !w->accel || !w->tan_in || !w->duration || !w->peak || !w->node2
+    w->arc_of = PyMem_Malloc(m * sizeof(Py_ssize_t)); w->tan_out = PyMem_Malloc(((size_t)arcs + 1) * PLAN_AXES * d);
+    if (!w->arc_of || !w->tan_out || !w->length || !w->xyz || !w->vmax || !w->accel || !w->tan_in || !w->duration || !w->peak || !w->node2
         || !w->cap2 || !w->reach || !w->m_length || !w->m_accel || !w->kind || !w->state || !w->moving || !w->exact) {
         plan_free(w);
         PyErr_NoMemory();
         return -1;
     }
     return 0;
-}
-
-/* The states table and the limit sets (velocity, acceleration: six each) as C values. */
-static PlanState *plan_states(PyObject *table, Py_ssize_t *count)
-{
-    Py_ssize_t size = PySequence_Size(table), i;
-    PlanState *states;
-    if (size < 0 || (states = PyMem_Malloc(((size_t)size + 1) * sizeof(PlanState))) == NULL)
-        return NULL;
-    for (i = 0; i < size; i++) {
-        PyObject *row = PySequence_GetItem(table, i), *item;
-        int bad = row == NULL;
-        if (!bad) {
-            item = PySequence_GetItem(row, 0);
-            states[i].exact = item ? PyObject_IsTrue(item) : -1;
-            Py_XDECREF(item);
-            bad = states[i].exact < 0 || plan_item(row, 1, &states[i].tolerance) < 0
-                  || plan_item(row, 2, &states[i].factor) < 0;
-            if (!bad) {
-                PyObject *r = PySequence_GetItem(row, 3), *o = PySequence_GetItem(row, 4);
-                states[i].rapid_limits = r ? PyLong_AsLong(r) : -1;
-                states[i].other_limits = o ? PyLong_AsLong(o) : -1;
-                Py_XDECREF(r);
-                Py_XDECREF(o);
-                bad = PyErr_Occurred() != NULL;
-            }
-        }
-        Py_XDECREF(row);
-        if (bad) {
-            PyMem_Free(states);
-            return NULL;
-        }
-    }
-    *count = size;
-    return states;
-}
-
-static double *plan_limits(PyObject *sets, Py_ssize_t *count)
-{
-    Py_ssize_t size = PySequence_Size(sets), i;
-    double *limits;
-    if (size < 0 || (limits = PyMem_Malloc(((size_t)size + 1) * 2 * PLAN_AXES * sizeof(double))) == NULL)
-        return NULL;
-    for (i = 0; i < size; i++) {
-        PyObject *pair = PySequence_GetItem(sets, i), *v = NULL, *a = NULL;
-        int bad = pair == NULL;
-        if (!bad) {
-            v = PySequence_GetItem(pair, 0);
-            a = PySequence_GetItem(pair, 1);
-            bad = v == NULL || a == NULL || plan_pose(v, limits + 2 * PLAN_AXES * i) < 0
-                  || plan_pose(a, limits + 2 * PLAN_AXES * i + PLAN_AXES) < 0;
-        }
-        Py_XDECREF(v);
-        Py_XDECREF(a);
-        Py_XDECREF(pair);
-        if (bad) {
-            PyMem_Free(limits);
-            return NULL;
-        }
-    }
-    *count = size;
-    return limits;
 }
 
 /* segments(): length, XYZ length, direction, speed limit and acceleration of move i from start to end. */
@@ -231,11 +105,63 @@ static void plan_segment(PlanWork *w, Py_ssize_t i, const double start[PLAN_AXES
     w->accel[i] = length / a_ratio;
 }
 
+/* segments._arcs for move i, arc table row `row` (its a-th row): what plan_segment worked out for it is
+ * replaced by the arc's length, in-plane shares, tangents at both ends and limits (`speed`: its own speed
+ * limit, before the arc's; `share`: segments.curvature_share).  sin and cos are libm's, which agree with
+ * numpy's float64 ones on the machines the project is built on (docs/planner.md). */
+static void plan_arc(PlanWork *w, Py_ssize_t i, Py_ssize_t a, const double *row, const double start[PLAN_AXES],
+                     const double end[PLAN_AXES], const double *vlim, const double *alim, double speed, double share,
+                     double min_arc_length)
+{
+    int u = (int)row[1], v = (int)row[2], k, side;
+    double r0 = row[5], r1 = row[6], angle = row[7], sweep = row[8], linear = row[9];
+    double delta[PLAN_AXES], fraction[PLAN_AXES], tangent[PLAN_AXES], in_plane, arc_len, v_ratio, a_ratio;
+    double vmax, accel, radius;
+    for (k = 0; k < PLAN_AXES; k++)
+        delta[k] = end[k] - start[k];
+    in_plane = fabs(sweep) * (r0 + r1) / 2.0;
+    arc_len = linear > 0.0 ? linear : sqrt(delta[3] * delta[3] + delta[4] * delta[4] + delta[5] * delta[5]);
+    for (k = 0; k < PLAN_AXES; k++)
+        fraction[k] = arc_len > 0.0 ? fabs(delta[k]) / arc_len : 0.0;
+    fraction[u] = fraction[v] = arc_len > 0.0 ? in_plane / arc_len : 0.0;
+    w->length[i] = arc_len;
+    w->xyz[i] = linear;
+    for (side = 0; side < 2; side++) {
+        double at = side ? angle + sweep : angle, r = side ? r1 : r0, norm;
+        double *out = side ? w->tan_out + PLAN_AXES * a : w->tan_in + PLAN_AXES * i;
+        memcpy(tangent, delta, sizeof(tangent));
+        tangent[u] = -sin(at) * sweep * r;
+        tangent[v] = cos(at) * sweep * r;
+        norm = tangent[0] * tangent[0];
+        for (k = 1; k < PLAN_AXES; k++)
+            norm = norm + tangent[k] * tangent[k];
+        norm = sqrt(norm);
+        for (k = 0; k < PLAN_AXES; k++)
+            out[k] = norm > 0.0 ? tangent[k] / norm : tangent[k];
+    }
+    v_ratio = fraction[0] / vlim[0];
+    a_ratio = fraction[0] / alim[0];
+    for (k = 1; k < PLAN_AXES; k++) {
+        v_ratio = np_maximum(v_ratio, fraction[k] / vlim[k]);
+        a_ratio = np_maximum(a_ratio, fraction[k] / alim[k]);
+    }
+    vmax = 1.0 / v_ratio;
+    accel = 1.0 / a_ratio;
+    radius = (r0 + r1) / 2.0;
+    if (arc_len >= min_arc_length && radius > 0.0) {  /* it turns: v^2 / r within its share of the plane's */
+        double plane_accel = np_minimum(alim[u], alim[v]), centripetal = plane_accel * share;
+        speed = np_minimum(np_minimum(speed, vmax), sqrt(centripetal * radius));
+        accel = np_minimum(accel, plane_accel - speed * speed / radius);
+    }
+    w->vmax[i] = np_minimum(vmax, speed);
+    w->accel[i] = accel;
+}
+
 /* junctions.corner_speeds2 for the corner between moves b and a (no G64 R programmed), then what the
  * stage makes of it: 0 next to an exact stop, never above either move's speed limit. */
 static double plan_corner(const PlanWork *w, Py_ssize_t b, Py_ssize_t a, double tolerance, double sharp_cos)
 {
-    const double *out = w->tan_in + PLAN_AXES * b, *in = w->tan_in + PLAN_AXES * a;
+    const double *out = w->arc_of[b] >= 0 ? w->tan_out + PLAN_AXES * w->arc_of[b] : w->tan_in + PLAN_AXES * b, *in = w->tan_in + PLAN_AXES * a;
     double cos_phi = out[0] * in[0], cos_half, tan_half, fit, within, radius, speed2, limit;
     int k;
     if (w->exact[b] || w->exact[a])
@@ -306,26 +232,11 @@ static void plan_profile(double length, double vmax, double accel, double v0_2, 
     *peak_out = peak;
 }
 
-static PyObject *plan_list(const double *values, Py_ssize_t count)
-{
-    PyObject *list = PyList_New(count);
-    Py_ssize_t i;
-    if (list == NULL)
-        return NULL;
-    for (i = 0; i < count; i++) {
-        PyObject *f = PyFloat_FromDouble(values[i]);
-        if (f == NULL || PyList_SetItem(list, i, f) < 0) {
-            Py_DECREF(list);
-            return NULL;
-        }
-    }
-    return list;
-}
-
 /* plan_straight(origin, ends, feeds, n, count, kind_runs, state_runs, states, limit_sets, sharp_cos, start2,
- *               time) -> (t_end, peak (bytes of doubles: few sinks read it), start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
+ *               time, arc_rows, arc_share, min_arc_length) -> (t_end, peak (bytes of doubles: few sinks read it), start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
  *                         low, high)
- * Plans the first n collected moves (straight ones: no arcs, no samples, no joints' caps, no G64 R) and
+ * Plans the first n collected moves (straight ones and arcs: arc_rows holds the window's ArcTable rows as
+ * bytes of doubles, rows of moves from n on ignored; no samples, no joints' caps, no G64 R) and
  * commits the first count: their end times and peak speeds, the squared speed the next window starts
  * from, the estimate's sums (in order) and the extremes the limits report widens by (None, None when
  * count is 0). */
@@ -335,21 +246,46 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
     PyObject *t_list = NULL, *peak_list = NULL, *low_list = NULL, *high_list = NULL;
     Py_ssize_t n, count, i, m = 0, n_states = 0, n_sets = 0, done = 0;
     double sharp_cos, start2, time, start[PLAN_AXES], end[PLAN_AXES], low[PLAN_AXES], high[PLAN_AXES];
-    double sums[4] = {0.0, 0.0, 0.0, 0.0}, cum = 0.0, first, next2;
+    double sums[4] = {0.0, 0.0, 0.0, 0.0}, cum = 0.0, first, next2, arc_share, min_arc_length;
+    double *arc_rows = NULL;
+    char *row_bytes;
+    Py_ssize_t n_arcs, row_size;
+    PyObject *rows;
     PlanState *states = NULL;
     double *limits = NULL, *t_end = NULL;
     PlanWork w;
     int k;
     (void)self;
-    if (!PyArg_ParseTuple(args, "OOOnnOOOOddd", &origin, &ends, &feeds, &n, &count, &kind_runs, &state_runs,
-                          &table, &sets, &sharp_cos, &start2, &time))
+    if (!PyArg_ParseTuple(args, "OOOnnOOOOdddSdd", &origin, &ends, &feeds, &n, &count, &kind_runs, &state_runs,
+                          &table, &sets, &sharp_cos, &start2, &time, &rows, &arc_share, &min_arc_length))
         return NULL;
-    if (n < 0 || count < 0 || count > n) {
-        PyErr_SetString(PyExc_ValueError, "plan_straight: 0 <= count <= n");
+    if (PyBytes_AsStringAndSize(rows, &row_bytes, &row_size) < 0)
+        return NULL;
+    n_arcs = row_size / (Py_ssize_t)(ARC_ROW * sizeof(double));
+    if (n < 0 || count < 0 || count > n || row_size % (Py_ssize_t)(ARC_ROW * sizeof(double))) {
+        PyErr_SetString(PyExc_ValueError, "plan_straight: 0 <= count <= n, whole arc rows");
         return NULL;
     }
-    if (plan_alloc(&w, n) < 0)
+    if (plan_alloc(&w, n, n_arcs) < 0)
         return NULL;
+    /* (copied: the bytes' data need not be aligned for doubles) */
+    if ((arc_rows = PyMem_Malloc((size_t)row_size + sizeof(double))) == NULL) {
+        plan_free(&w);
+        return PyErr_NoMemory();
+    }
+    memcpy(arc_rows, row_bytes, (size_t)row_size);
+    for (i = 0; i < n; i++)
+        w.arc_of[i] = -1;
+    for (i = 0; i < n_arcs; i++) {  /* an ArcTable row: its move's index first, then its frame */
+        const double *row = arc_rows + ARC_ROW * i;
+        if (!(row[0] >= 0.0) || !(row[1] >= 0.0 && row[1] < PLAN_AXES) || !(row[2] >= 0.0 && row[2] < PLAN_AXES)
+            || row[1] == row[2]) {
+            PyErr_SetString(PyExc_ValueError, "plan_straight: an arc row without a move or a plane");
+            goto done;
+        }
+        if (row[0] < (double)n)
+            w.arc_of[(Py_ssize_t)row[0]] = i;
+    }
     if ((states = plan_states(table, &n_states)) == NULL || (limits = plan_limits(sets, &n_sets)) == NULL
         || (t_end = PyMem_Malloc(((size_t)count + 1) * sizeof(double))) == NULL)
         goto done;
@@ -387,9 +323,11 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
             goto done;
         s = w.state[i];
         kind = w.kind[i];
-        if (kind == KIND_STRAIGHT)
+        if (w.arc_of[i] >= 0)
+            kind = w.kind[i] = KIND_ARC;
+        else if (kind == KIND_STRAIGHT)
             kind = w.kind[i] = feed > 0.0 ? KIND_LINEAR : KIND_RAPID;
-        if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME || kind == KIND_ARC) {
+        if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME) {
             PyErr_SetString(PyExc_ValueError, "plan_straight: a move of a kind or state it does not plan");
             goto done;
         }
@@ -405,6 +343,9 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         w.exact[i] = (char)(st->exact || kind == KIND_RAPID || kind == KIND_PROBE || kind == KIND_HOME);
         speed = (kind == KIND_RAPID || kind == KIND_HOME) ? INFINITY : feed * st->factor / 60.0;
         plan_segment(&w, i, start, end, limit, limit + PLAN_AXES, speed);
+        if (w.arc_of[i] >= 0)
+            plan_arc(&w, i, w.arc_of[i], arc_rows + ARC_ROW * w.arc_of[i], start, end, limit, limit + PLAN_AXES, speed,
+                     arc_share, min_arc_length);
         if (w.length[i] > 0.0)
             w.moving[m++] = i;
         if (i < count)
@@ -464,5 +405,6 @@ done:
     PyMem_Free(limits);
     PyMem_Free(t_end);
     plan_free(&w);
+    PyMem_Free(arc_rows);
     return result;
 }

@@ -212,3 +212,139 @@ def test_exact_corners_stay_exact() -> None:
 def test_turns_beyond_is_exact_where_the_cosine_is() -> None:
     assert [turns_beyond(a) for a in (0.0, 60.0, 90.0, 120.0, 180.0, 270.0)] == [1.0, 0.5, 0.0, -0.5, -1.0, -1.0]
     assert turns_beyond(-1.0) == math.inf and turns_beyond(45.0) == math.cos(math.radians(45.0))
+
+
+# ---------------------------------------------------------------- windows with arcs
+PLANES = {"XY": (0, 1, 2), "XZ": (0, 2, 1), "YZ": (1, 2, 0)}  # in-plane axes in the plane's order, the normal
+radii = st.sampled_from([0.0, 1e-3, 0.02, 0.5, 2.0, 5.0, 37.5])
+arc_operations = st.one_of(
+    # an arc: plane, radius, start angle from the centre, angle to the end (0: full turns), normal travel,
+    # turn, full turns, feed, a limit set; now and then its end off the circle (a spiral: r0 != r1)
+    st.tuples(st.just("arc"), st.sampled_from(sorted(PLANES)), radii, st.floats(-math.pi, math.pi),
+              st.sampled_from([0.3, 1.0, math.pi / 2, math.pi, 3.0, 6.2, -0.7, -2.5, 0.0]),
+              st.sampled_from([0.0, 0.0, 0.0, 1.5, -0.25]), st.sampled_from([1, -1]), st.sampled_from([1, 1, 2]),
+              feeds, st.integers(0, 2), st.sampled_from([1.0, 1.0, 1.0002])),
+    st.tuples(st.just("straight"), poses, feeds),
+    st.tuples(st.just("g64"), st.sampled_from([0.0, 0.01, 0.1])),
+    st.tuples(st.just("g61")),
+    st.tuples(st.just("override"), st.sampled_from([None, 50.0, 150.0])))
+
+
+def _arc(position: Pose, op: tuple[Any, ...]) -> tuple[Pose, Arc]:
+    """An arc ``op`` from ``position``: its end and its circle."""
+    _, plane, radius, angle, turn_by, travel, turn, turns, _, _, spiral = op
+    u, v, normal = PLANES[plane]
+    centre = (position[u] - radius * math.cos(angle), position[v] - radius * math.sin(angle))
+    end = list(position)
+    if turn_by:
+        end[u] = centre[0] + radius * spiral * math.cos(angle + turn_by)
+        end[v] = centre[1] + radius * spiral * math.sin(angle + turn_by)
+    end[normal] += travel
+    return tuple(end), Arc(centre, plane, turn, 0 if turn_by else turns)  # type: ignore[return-value]
+
+
+def _run_arcs(ops: list[Any], limit_sets: list[PlainLimits], config: MachineConfig, batched: bool,
+              compiled: bool, monkeypatch: pytest.MonkeyPatch) -> tuple[Any, ...]:
+    """Feed the planner arcs and straight moves (one by one, or the runs of them in batches)."""
+    calls: list[int] = []
+
+    def counted(*args: Any) -> Any:
+        calls.append(args[4])
+        return PLAN_STRAIGHT(*args)
+    monkeypatch.setattr(planner_stage, "_PLAN_STRAIGHT", counted if compiled else None)
+    recorder = Recorder()
+    planner = Planner(config, [recorder], Overrides(feed_percent=90.0))
+    position: Pose = (0.0,) * 6
+    pending: list[tuple[Pose, float, Arc | None, int]] = []
+
+    def send() -> None:
+        if pending:
+            start = planner._ends[-1] if planner._ends else (0.0,) * 6
+            lines = [line for *_, line in pending]
+            batch = Batch("job.nc", start, ["arc" if a else "linear" for _, _, a, _ in pending], lines,
+                          [e for e, _, _, _ in pending], [f for _, f, _, _ in pending],
+                          arcs=[a for _, _, a, _ in pending])
+            planner.move_batch(batch, {"rapid": limit_sets[0], "linear": limit_sets[-1]})
+            pending.clear()
+
+    for line, op in enumerate(ops, 1):
+        if op[0] in ("arc", "straight"):
+            end, arc = _arc(position, op) if op[0] == "arc" else (op[1], None)
+            feed = op[-3] if op[0] == "arc" else op[2]
+            if batched:
+                pending.append((end, feed, arc, line))
+            else:
+                limits = limit_sets[(op[-2] if op[0] == "arc" else 0) % len(limit_sets)]
+                numpy_limits = AxisLimits(np.array(limits.velocity), np.array(limits.acceleration))
+                planner.move(Move("arc" if arc else "linear", "job.nc", line, position, end, feed, arc), end, None,
+                             numpy_limits)
+            position = end
+            continue
+        send()
+        if op[0] == "g64":
+            planner.event(PathControlEvent("job.nc", line, "G64", op[1]))
+        elif op[0] == "g61":
+            planner.event(PathControlEvent("job.nc", line, "G61", 0.0))
+        else:
+            planner.event(OverrideEvent("job.nc", line, 50, op[1]))
+    send()
+    planner.close()
+    limits = planner.limits
+    return (recorder.rows, repr(planner.estimate), repr(planner.time),
+            [repr(v) for v in (*limits.axis_low, *limits.axis_high, *limits.joint_low, *limits.joint_high)],
+            len(calls))
+
+
+@needs_c
+@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(st.lists(arc_operations, min_size=1, max_size=30), st.lists(plain_limits, min_size=1, max_size=3),
+       st.sampled_from([5.0, 0.0, 90.0, 180.0]), st.sampled_from([0.0, 0.0, 0.05, 1.0]),
+       st.sampled_from([1.0, 1.0, 0.5, 3.0]), st.sampled_from([(5, 3), (4, 1), (4096, 256)]), st.booleans(),
+       st.sampled_from([("g64", 0.0), ("g64", 0.0), ("g64", 0.05), ("g61",)]))
+def test_the_c_planner_times_windows_with_arcs_as_the_reference(
+        monkeypatch: pytest.MonkeyPatch, ops: list[Any], limit_sets: list[PlainLimits], laf_angle: float,
+        min_circle: float, arc_factor: float, window: tuple[int, int], batched: bool, mode: tuple[Any, ...]) -> None:
+    """Arcs in the three planes, helical ones, full circles (one or two turns, helical too), spirals, arcs
+    under min_circle_segment_size (one chord) and of zero radius, among straight moves, one by one and in
+    batches, under several limit sets and lafArcfeedFactor values."""
+    config = dataclasses.replace(MachineConfig.default(), laf_angle=laf_angle, min_circle_segment_size=min_circle,
+                                 laf_arcfeed_factor=arc_factor)
+    ops = [mode, *ops]  # mostly blending: the arcs' tangents decide the corners
+    with monkeypatch.context() as patch:
+        patch.setattr(planner_stage, "WINDOW", window[0])
+        patch.setattr(planner_stage, "LOOKAHEAD", window[1])
+        compiled = _run_arcs(ops, limit_sets, config, batched, True, patch)
+        reference = _run_arcs(ops, limit_sets, config, batched, False, patch)
+    assert compiled[4] or not any(op[0] in ("arc", "straight") for op in ops)  # the C planner took the windows
+    assert compiled[:4] == reference[:4]
+
+
+@needs_c
+def test_an_arc_exactly_min_circle_segment_size_long_turns_on_both(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An arc as long as min_circle_segment_size still turns (the centripetal cap applies); just shorter, it
+    is a chord: the same on both planners, at the boundary and either side of it."""
+    from edingcnc_lang.kinematics.trajectory import arc_frame_rows
+
+    arc_op = ("arc", "XY", 0.02, 0.0, math.pi / 2, 0.0, 1, 1, 60000.0, 0, 1.0)
+    end, arc = _arc((0.0,) * 6, arc_op)
+    length = arc_frame_rows((0.0,) * 6, [end], [arc])[-1]
+    ops = [("g64", 0.0), ("straight", (0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 600.0), arc_op,
+           ("straight", (1.0, 1.0, 0.0, 0.0, 0.0, 0.0), 600.0)]
+    limits = [PlainLimits((100.0,) * 6, (1000.0,) * 6)]
+    times = set()
+    for min_circle in (math.nextafter(length, 0.0), length, math.nextafter(length, math.inf)):
+        config = dataclasses.replace(MachineConfig.default(), min_circle_segment_size=min_circle)
+        compiled = _run_arcs(ops, limits, config, False, True, monkeypatch)
+        assert compiled[4] and compiled[:4] == _run_arcs(ops, limits, config, False, False, monkeypatch)[:4]
+        times.add(compiled[2])
+    assert len(times) == 2  # turning at and under the length, a chord past it
+
+
+def test_numpy_sine_and_cosine_are_libms() -> None:
+    """The C planner's arc tangents call libm's sin and cos where the reference calls numpy's (docs/planner.md):
+    on this machine they must agree to the bit (Python's math.sin and math.cos are libm's)."""
+    angles = np.random.default_rng(42).uniform(-4.0 * math.pi, 4.0 * math.pi, 20_000)
+    angles = np.concatenate((angles, [0.0, -0.0, math.pi, -math.pi, math.pi / 2, 2.5 * math.pi, 1e-300, 1e6]))
+    values = angles.tolist()
+    assert np.sin(angles).tolist() == [math.sin(a) for a in values]
+    assert np.cos(angles).tolist() == [math.cos(a) for a in values]

@@ -1,9 +1,10 @@
-"""Whole jobs of straight moves on the compiled core: timed without numpy, to the same bytes as the Python core.
+"""Whole jobs on the compiled core: straight ones timed without numpy, all to the same bytes as the Python core.
 
 ``ecnc run --trace`` and ``--json`` of a G1 job, a drilling job and a job of straight moves of every kind
 (moves one by one, exact stop, homing, a tool change; the windows of straight moves are
 planned in C, csrc/speedups_plan.c) must not load numpy at all; and the small versions of the
-benchmark jobs (benchmarks/bench_run.py's writers) and the examples run to the same trace, events,
+benchmark jobs (benchmarks/bench_run.py's writers: CAM, R and I/J arcs among them, whose windows of arcs are
+planned in C too) and the examples run to the same trace, events,
 estimate and limits report on both cores (the Python core in a worker process, tests/core_outcome.py).
 """
 from __future__ import annotations
@@ -78,6 +79,9 @@ def jobs(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     bench.write_g1_job(made["g1"], 6000)
     bench.write_drill_job(made["drill"], 1500)
     bench.write_cam_job(made["cam"], 3000)
+    for name, r_form in (("rarcs", True), ("ijarcs", False)):
+        made[name] = folder / f"{name}.nc"
+        bench.write_arc_job(made[name], 3000, r_form)
     return made
 
 
@@ -118,7 +122,7 @@ def python_core() -> Iterator[Callable[[Path], str]]:
     worker.wait(timeout=60)
 
 
-@pytest.mark.parametrize("name", ["g1", "drill", "cam", "mixed"])
+@pytest.mark.parametrize("name", ["g1", "drill", "cam", "rarcs", "ijarcs", "mixed"])
 def test_benchmark_jobs_run_alike_on_both_cores(jobs: dict[str, Path], python_core: Callable[[Path], str],
                                                 name: str) -> None:
     compiled = outcome(jobs[name])

@@ -10,9 +10,10 @@ rather than the samples, and a window of long moves holds two rows per move.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-from edingcnc_lang.canon import AXES
+from edingcnc_lang.canon import AXES, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 
 if TYPE_CHECKING:
@@ -52,9 +53,27 @@ class LimitsReport:
                                   starts[:, :1].T, ends[:, identity].T])
         self._widen("joint", joint_points.min(axis=0).tolist(), joint_points.max(axis=0).tolist())
 
-    def add_extremes(self, low: list[float], high: list[float]) -> None:
-        """What ``add`` does for straight moves whose joints are their positions, given the lowest and highest
-        value of each axis over them (the C planner's window works them out)."""
+    def add_extremes(self, low: list[float], high: list[float], arcs: ArcTable | None = None,
+                     ends: Sequence[Pose] = ()) -> None:
+        """What ``add`` does for moves whose joints are their positions, given the lowest and highest value of
+        each axis over their end points (the C planner's window works them out) and the ``arcs`` among them
+        (their moves ending at ``ends``): an arc whose circle leaves those reaches its extremes, as in ``add``."""
+        if arcs is not None and len(arcs):
+            import numpy as np
+
+            from edingcnc_lang.motion.arc_table import ArcTable
+
+            inside_low = np.minimum(low, self.axis_low).tolist()
+            inside_high = np.maximum(high, self.axis_high).tolist()
+            outside = arcs.rows[~arcs.circle_within(inside_low, inside_high)]
+            if len(outside):  # (renumbered: their moves' end points are gathered, not the window's)
+                arc_ends = np.array([ends[k] for k in outside[:, 0].astype(np.intp).tolist()], dtype=float).T
+                rows = outside.copy()
+                rows[:, 0] = np.arange(len(rows))
+                extremes = ArcTable(rows).extremes(arc_ends, inside_low, inside_high)
+                if len(extremes):
+                    low = np.minimum(low, np.min(extremes, axis=0)).tolist()
+                    high = np.maximum(high, np.max(extremes, axis=0)).tolist()
         self._widen("axis", low, high)
         self._widen("joint", low, high)
 

@@ -33,6 +33,11 @@ class Segments:
     accel: np.ndarray        # (n,) path acceleration limit, units/s^2
 
 
+def curvature_share(arc_accel_factor: float) -> float:
+    """The share of the in-plane acceleration an arc may spend on turning (lafArcfeedFactor raises it)."""
+    return min(CURVATURE_SHARE * arc_accel_factor, MAX_CURVATURE_SHARE)
+
+
 def segments(start: np.ndarray, end: np.ndarray, speed: np.ndarray, vlim: np.ndarray, alim: np.ndarray,
              arcs: ArcTable, arc_accel_factor: float, min_arc_length: float) -> Segments:
     """Arrays for a window of n moves from ``start`` to ``end`` (columns, (6, n)).
@@ -92,7 +97,7 @@ def _arcs(start: np.ndarray, end: np.ndarray, arcs: ArcTable, vlim: np.ndarray, 
         tangents[:, index] = np.where(norm > 0.0, tangent / np.where(norm > 0.0, norm, 1.0), tangent)
     row_v = vlim[:, index] if vlim.shape[1] > 1 else vlim[:, [0]]
     row_a = alim[:, index] if alim.shape[1] > 1 else alim[:, [0]]
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore"):  # (a limit of 0: NaN shares, as for straight moves)
         vmax[index], accel[index] = 1.0 / np.max(fraction / row_v, axis=0), 1.0 / np.max(fraction / row_a, axis=0)
     radius = (r0 + r1) / 2.0
     turning = (arc_len >= min_arc_length) & (radius > 0.0)
@@ -101,7 +106,7 @@ def _arcs(start: np.ndarray, end: np.ndarray, arcs: ArcTable, vlim: np.ndarray, 
         chosen = columns[turning]
         plane_accel = np.minimum(row_a[u[turning], chosen if row_a.shape[1] > 1 else 0],
                                  row_a[v[turning], chosen if row_a.shape[1] > 1 else 0])
-        centripetal = plane_accel * min(CURVATURE_SHARE * arc_accel_factor, MAX_CURVATURE_SHARE)
+        centripetal = plane_accel * curvature_share(arc_accel_factor)
         speed[at] = np.minimum(np.minimum(speed[at], vmax[at]), np.sqrt(centripetal * radius))
         # speeding up along the arc gets what the circle leaves of the in-plane acceleration
         accel[at] = np.minimum(accel[at], plane_accel - speed[at] ** 2 / radius)

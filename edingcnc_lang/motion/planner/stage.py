@@ -47,7 +47,7 @@ STOPPING_EVENTS = (DwellEvent, ToolChangeEvent, PauseEvent, EndEvent, SpindleEve
                    OperatorWaitEvent)
 
 
-# A window of straight moves planned in C (csrc/speedups_plan.c), on the compiled core: None on the Python one
+# A window of straight moves and arcs planned in C (csrc/speedups_plan.c), on the compiled core: None on the Python one
 _PLAN_STRAIGHT = speedups.compiled("plan_straight")
 
 # What a move runs under: exact stop, G64 P, the feed override, the limits of rapids and of the rest, G64 R S D.
@@ -242,10 +242,10 @@ class Planner:
         (all: the machine stops after them).
 
         numpy and the model load here, with the first move: a job that does not move never needs them, and
-        on the compiled core a window of straight moves (``_straight``) never does.
+        on the compiled core a window of straight moves (``_in_c``) never does.
         """
-        if self._straight():
-            self._commit_straight(count, horizon)
+        if self._in_c():
+            self._commit_in_c(count, horizon)
             return
         import numpy as np
 
@@ -312,23 +312,36 @@ class Planner:
             self.time = float(t_end[-1])
         self._drop(count)
 
-    def _straight(self) -> bool:
-        """Whether the C planner takes this window: straight moves only (no arcs), each timed against the
-        limits of its state (no joints' caps, no samples wanted or kept) and no G64 R programmed."""
-        return (_PLAN_STRAIGHT is not None and not self._arc_tables and not self._sampled and not self.want_samples
+    def _in_c(self) -> bool:
+        """Whether the C planner takes this window: straight moves and arcs, each timed against the limits of
+        its state (no joints' caps, no samples wanted or kept) and no G64 R programmed."""
+        return (_PLAN_STRAIGHT is not None and not self._sampled and not self.want_samples
                 and all(cap == math.inf for cap in chain(self._cap.values, self._accel_cap.values))
                 and all(math.isnan(self._states[state][5][0]) for state in self._state.values))
 
-    def _commit_straight(self, count: int, horizon: int | None) -> None:
-        """``_commit`` of a window of straight moves, in C: the same numbers to the bit (tests/planner)."""
+    def _commit_in_c(self, count: int, horizon: int | None) -> None:
+        """``_commit`` of a window of straight moves and arcs, in C: the same numbers to the bit (tests/planner).
+
+        The arcs' frames go to C as the bytes of their table's rows; their extremes (the limits report)
+        are the table's own (numpy is loaded anyway where there are arcs)."""
         n = len(self._ends) if horizon is None else horizon
+        cfg = self.config
+        rows, share, arcs = b"", 0.0, None
+        if self._arc_tables:
+            from edingcnc_lang.motion.arc_table import ArcTable
+            from edingcnc_lang.motion.planner.segments import curvature_share
+
+            arcs = ArcTable.joined(self._arc_tables)
+            self._arc_tables = [arcs]
+            rows, share = arcs.rows.tobytes(), curvature_share(cfg.laf_arcfeed_factor)
         t_end, peak, self._start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance, low, high = \
             _PLAN_STRAIGHT(self._origin, self._ends, self._feed, n, count, (self._kind.values, self._kind.counts),
                            (self._state.values, self._state.counts), self._states, self._limit_sets,
-                           turns_beyond(180.0 - self.config.laf_angle), self._start2, self.time)
+                           turns_beyond(180.0 - cfg.laf_angle), self._start2, self.time, rows, share,
+                           cfg.min_circle_segment_size)
         self.estimate.add_moves(self.tool, rapid_seconds, feed_seconds, rapid_distance, feed_distance, count)
         if low is not None:
-            self.limits.add_extremes(low, high)
+            self.limits.add_extremes(low, high, None if arcs is None else arcs.before(count), self._ends)
         speeds = array("d")  # (as bytes: the trace never reads them, so they need not become floats)
         speeds.frombytes(peak)
         self._emit(count, t_end, speeds, None)
