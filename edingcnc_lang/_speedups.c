@@ -9,7 +9,7 @@
  * column_bounds:   motion/reach.py's column_bounds (the bounds of a batch, for the limit check).
  * trace_rows:      motion/sinks.py's trace_rows (the trace CSV rows of a batch, repr() of every number).
  * hole_moves:      machine/hole_runs.py's hole_moves (the moves of a run of lines that only name the next hole).
- * plan_straight:   motion/planner/stage.py's Planner._commit for a window of straight moves (times, estimate, extremes).
+ * plan_window:   motion/planner/stage.py's Planner._commit for a window of straight moves and arcs (times, estimate, extremes).
  * arcs_beyond:     motion/reach.py's arcs_beyond (whether an arc of a batch reaches outside the limits).
  * hypot:           math.hypot of two numbers as the other parts compute it (a test entry point).
  * comp_lines:      pipeline/comp_runs.py's comp_lines (a run of plain corners of cutter compensation).
@@ -58,7 +58,7 @@ static PyMethodDef methods[] = {
     {"arc_frame_bytes", arc_frame_bytes, METH_VARARGS, "kinematics.trajectory.arc_frame_rows, compiled, as doubles in a bytearray."},
     {"plain_arcs", plain_arcs, METH_VARARGS, "machine.bulk.arc_run over BulkPath._arc_of_words, compiled."},
     {"hole_moves", hole_moves, METH_VARARGS, "machine.hole_runs.hole_moves, compiled."},
-    {"plan_straight", plan_straight, METH_VARARGS, "motion.planner.stage.Planner._commit of straight moves, compiled."},
+    {"plan_window", plan_window, METH_VARARGS, "motion.planner.stage.Planner._commit of a window of straight moves and arcs, compiled."},
     {"arcs_beyond", arcs_beyond, METH_VARARGS, "motion.reach.arcs_beyond, compiled."},
     {"hypot", hypot_entry, METH_VARARGS, "math.hypot(a, b) as the compiled core computes it, and whose algorithm."},
     {"comp_lines", comp_lines, METH_VARARGS, "pipeline.comp_runs.comp_lines, compiled."},

@@ -9,8 +9,8 @@ functions do (the equivalence tests run both), and every caller picks its functi
 trace rows (``motion.sinks.trace_rows``), the bounds of a batch (``motion.reach.column_bounds``), the arcs
 of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of arcs
 (``kinematics.trajectory.arc_frame`` and ``arc_frame_rows``, as doubles for ``motion.arc_table``), whether
-a batch's arcs reach outside the limits (``motion.reach.arcs_beyond``), the planner's windows of straight moves
-(``motion.planner.stage``, ``plan_straight``), the runs of corners of cutter compensation
+a batch's arcs reach outside the limits (``motion.reach.arcs_beyond``), the planner's windows of moves
+(``motion.planner.stage``, ``plan_window``), the runs of corners of cutter compensation
 (``pipeline.comp_runs.comp_lines``); the macro line reader and the lint's walk
 take ``LEXER`` (``syntax.fastparse``, ``lint.facts``).  ``ecnc --version`` says which core runs.
 The 3-axis sim's sweep takes ``SWEEP`` (``_sweep.c``, ``sim.sweep``; not built on Python 3.10).

@@ -232,7 +232,7 @@ static void plan_profile(double length, double vmax, double accel, double v0_2, 
     *peak_out = peak;
 }
 
-/* plan_straight(origin, ends, feeds, n, count, kind_runs, state_runs, states, limit_sets, sharp_cos, start2,
+/* plan_window(origin, ends, feeds, n, count, kind_runs, state_runs, states, limit_sets, sharp_cos, start2,
  *               time, arc_rows, arc_share, min_arc_length) -> (t_end, peak (bytes of doubles: few sinks read it), start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance,
  *                         low, high)
  * Plans the first n collected moves (straight ones and arcs: arc_rows holds the window's ArcTable rows as
@@ -240,7 +240,7 @@ static void plan_profile(double length, double vmax, double accel, double v0_2, 
  * commits the first count: their end times and peak speeds, the squared speed the next window starts
  * from, the estimate's sums (in order) and the extremes the limits report widens by (None, None when
  * count is 0). */
-static PyObject *plan_straight(PyObject *self, PyObject *args)
+static PyObject *plan_window(PyObject *self, PyObject *args)
 {
     PyObject *origin, *ends, *feeds, *kind_runs, *state_runs, *table, *sets, *result = NULL;
     PyObject *t_list = NULL, *peak_list = NULL, *low_list = NULL, *high_list = NULL;
@@ -263,7 +263,7 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         return NULL;
     n_arcs = row_size / (Py_ssize_t)(ARC_ROW * sizeof(double));
     if (n < 0 || count < 0 || count > n || row_size % (Py_ssize_t)(ARC_ROW * sizeof(double))) {
-        PyErr_SetString(PyExc_ValueError, "plan_straight: 0 <= count <= n, whole arc rows");
+        PyErr_SetString(PyExc_ValueError, "plan_window: 0 <= count <= n, whole arc rows");
         return NULL;
     }
     if (plan_alloc(&w, n, n_arcs) < 0)
@@ -280,7 +280,7 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         const double *row = arc_rows + ARC_ROW * i;
         if (!(row[0] >= 0.0) || !(row[1] >= 0.0 && row[1] < PLAN_AXES) || !(row[2] >= 0.0 && row[2] < PLAN_AXES)
             || row[1] == row[2]) {
-            PyErr_SetString(PyExc_ValueError, "plan_straight: an arc row without a move or a plane");
+            PyErr_SetString(PyExc_ValueError, "plan_window: an arc row without a move or a plane");
             goto done;
         }
         if (row[0] < (double)n)
@@ -310,7 +310,7 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         low[k] = high[k] = start[k];
     /* segments: every move's length, direction and limits */
     if (!PyList_Check(ends) || PyList_Size(ends) < n || !PyList_Check(feeds) || PyList_Size(feeds) < n) {
-        PyErr_SetString(PyExc_TypeError, "plan_straight: ends and feeds must be lists of at least n moves");
+        PyErr_SetString(PyExc_TypeError, "plan_window: ends and feeds must be lists of at least n moves");
         goto done;
     }
     for (i = 0; i < n; i++) {
@@ -328,14 +328,14 @@ static PyObject *plan_straight(PyObject *self, PyObject *args)
         else if (kind == KIND_STRAIGHT)
             kind = w.kind[i] = feed > 0.0 ? KIND_LINEAR : KIND_RAPID;
         if (s < 0 || s >= n_states || kind < KIND_RAPID || kind > KIND_HOME) {
-            PyErr_SetString(PyExc_ValueError, "plan_straight: a move of a kind or state it does not plan");
+            PyErr_SetString(PyExc_ValueError, "plan_window: a move of a kind or state it does not plan");
             goto done;
         }
         st = &states[s];
         {
             long set = kind == KIND_RAPID ? st->rapid_limits : st->other_limits;
             if (set < 0 || set >= n_sets) {
-                PyErr_SetString(PyExc_ValueError, "plan_straight: no such limit set");
+                PyErr_SetString(PyExc_ValueError, "plan_window: no such limit set");
                 goto done;
             }
             limit = limits + 2 * PLAN_AXES * set;

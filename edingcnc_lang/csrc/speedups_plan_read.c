@@ -58,7 +58,7 @@ static int plan_runs(PyObject *values, PyObject *counts, Py_ssize_t n, long *out
             out[at++] = value;
     }
     if (at < n) {
-        PyErr_SetString(PyExc_ValueError, "plan_straight: the runs hold fewer moves than the window");
+        PyErr_SetString(PyExc_ValueError, "plan_window: the runs hold fewer moves than the window");
         return -1;
     }
     return 0;

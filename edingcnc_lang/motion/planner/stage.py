@@ -48,7 +48,7 @@ STOPPING_EVENTS = (DwellEvent, ToolChangeEvent, PauseEvent, EndEvent, SpindleEve
 
 
 # A window of straight moves and arcs planned in C (csrc/speedups_plan.c), on the compiled core: None on the Python one
-_PLAN_STRAIGHT = speedups.compiled("plan_straight")
+_PLAN_WINDOW = speedups.compiled("plan_window")
 
 # What a move runs under: exact stop, G64 P, the feed override, the limits of rapids and of the rest, G64 R S D.
 State = tuple[bool, float, float, int, int, tuple[float, float, float]]
@@ -242,7 +242,7 @@ class Planner:
         (all: the machine stops after them).
 
         numpy and the model load here, with the first move: a job that does not move never needs them, and
-        on the compiled core a window of straight moves (``_in_c``) never does.
+        on the compiled core a window the C planner takes (``_in_c``) never does.
         """
         if self._in_c():
             self._commit_in_c(count, horizon)
@@ -315,7 +315,7 @@ class Planner:
     def _in_c(self) -> bool:
         """Whether the C planner takes this window: straight moves and arcs, each timed against the limits of
         its state (no joints' caps, no samples wanted or kept) and no G64 R programmed."""
-        return (_PLAN_STRAIGHT is not None and not self._sampled and not self.want_samples
+        return (_PLAN_WINDOW is not None and not self._sampled and not self.want_samples
                 and all(cap == math.inf for cap in chain(self._cap.values, self._accel_cap.values))
                 and all(math.isnan(self._states[state][5][0]) for state in self._state.values))
 
@@ -335,7 +335,7 @@ class Planner:
             self._arc_tables = [arcs]
             rows, share = arcs.rows.tobytes(), curvature_share(cfg.laf_arcfeed_factor)
         t_end, peak, self._start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance, low, high = \
-            _PLAN_STRAIGHT(self._origin, self._ends, self._feed, n, count, (self._kind.values, self._kind.counts),
+            _PLAN_WINDOW(self._origin, self._ends, self._feed, n, count, (self._kind.values, self._kind.counts),
                            (self._state.values, self._state.counts), self._states, self._limit_sets,
                            turns_beyond(180.0 - cfg.laf_angle), self._start2, self.time, rows, share,
                            cfg.min_circle_segment_size)

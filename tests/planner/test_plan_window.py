@@ -32,8 +32,8 @@ from edingcnc_lang.motion.planner.stage import Planner
 from edingcnc_lang.motion.sinks import Timing
 from edingcnc_lang.motion.stage import AxisLimits, PlainLimits
 
-PLAN_STRAIGHT = speedups.compiled("plan_straight")
-needs_c = pytest.mark.skipif(PLAN_STRAIGHT is None, reason="the compiled core is not built (or the Python one runs)")
+PLAN_WINDOW = speedups.compiled("plan_window")
+needs_c = pytest.mark.skipif(PLAN_WINDOW is None, reason="the compiled core is not built (or the Python one runs)")
 
 coordinates = st.one_of(st.sampled_from([0.0, 1.0, 2.0, -3.0, 0.5, 10.0, 1e-3]),
                         st.floats(-50, 50, allow_nan=False, allow_subnormal=False))
@@ -82,13 +82,13 @@ class Recorder:
 def _run(ops: list[Any], limit_sets: list[PlainLimits], laf_angle: float, compiled: bool,
          monkeypatch: pytest.MonkeyPatch) -> tuple[Any, ...]:
     """Feed the planner ``ops`` (with the C planner or the reference) and say what came out of it."""
-    monkeypatch.setattr(planner_stage, "_PLAN_STRAIGHT", PLAN_STRAIGHT if compiled else None)
+    monkeypatch.setattr(planner_stage, "_PLAN_WINDOW", PLAN_WINDOW if compiled else None)
     calls = []
     if compiled:
         def counted(*args: Any) -> Any:
             calls.append(args[4])
-            return PLAN_STRAIGHT(*args)
-        monkeypatch.setattr(planner_stage, "_PLAN_STRAIGHT", counted)
+            return PLAN_WINDOW(*args)
+        monkeypatch.setattr(planner_stage, "_PLAN_WINDOW", counted)
     config = dataclasses.replace(MachineConfig.default(), laf_angle=laf_angle)
     recorder = Recorder()
     planner = Planner(config, [recorder], Overrides(feed_percent=80.0))
@@ -169,7 +169,7 @@ def test_a_window_committed_in_part_starts_the_next_one_at_speed(monkeypatch: py
 
 def test_windows_the_c_planner_leaves_to_the_reference(monkeypatch: pytest.MonkeyPatch) -> None:
     """A G64 R programmed (the manual's corner rules) or samples wanted: the numpy reference plans them."""
-    monkeypatch.setattr(planner_stage, "_PLAN_STRAIGHT", lambda *args: pytest.fail("the C planner took the window"))
+    monkeypatch.setattr(planner_stage, "_PLAN_WINDOW", lambda *args: pytest.fail("the C planner took the window"))
     config = MachineConfig.default()
     planner = Planner(config, [], Overrides())
     planner.event(PathControlEvent("job.nc", 1, "G64", 0.0, r=30.0))
@@ -250,8 +250,8 @@ def _run_arcs(ops: list[Any], limit_sets: list[PlainLimits], config: MachineConf
 
     def counted(*args: Any) -> Any:
         calls.append(args[4])
-        return PLAN_STRAIGHT(*args)
-    monkeypatch.setattr(planner_stage, "_PLAN_STRAIGHT", counted if compiled else None)
+        return PLAN_WINDOW(*args)
+    monkeypatch.setattr(planner_stage, "_PLAN_WINDOW", counted if compiled else None)
     recorder = Recorder()
     planner = Planner(config, [recorder], Overrides(feed_percent=90.0))
     position: Pose = (0.0,) * 6

@@ -26,7 +26,7 @@ from tests.core_outcome import outcome
 pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
 ROOT = Path(__file__).resolve().parents[2]
-needs_c = pytest.mark.skipif(speedups.compiled("plan_straight") is None,
+needs_c = pytest.mark.skipif(speedups.compiled("plan_window") is None,
                              reason="the compiled core is not built (or the Python one runs)")
 
 # runs the ecnc command (as ``entry`` does, which ends the process at once) and then says whether numpy was loaded
