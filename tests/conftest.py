@@ -7,6 +7,11 @@ hunting: ``python -m pytest --hypothesis-profile=dev``; ``fuzz`` runs 20,000 ran
 """
 from __future__ import annotations
 
+import json
+import os
+import subprocess
+import sys
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -39,3 +44,26 @@ def golden(request: pytest.FixtureRequest):
         assert actual == path.read_text(encoding="utf-8"), f"differs from {path} (rerun with --regen-goldens if intended)"
 
     return check
+
+
+@pytest.fixture(scope="module")
+def python_core() -> Iterator[Callable[[Path], str]]:
+    """A worker process on the pure-Python core that runs a job and answers its outcome (``tests/core_outcome.py``),
+    for the tests that hold the compiled core to it."""
+    from edingcnc_lang import speedups
+
+    if speedups.SPEEDUPS is None:
+        pytest.skip("this process runs the Python core already: nothing to compare")
+    worker = subprocess.Popen([sys.executable, "-c", "from tests.core_outcome import serve; serve()"], cwd=ROOT,
+                              stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
+                              env={**os.environ, speedups.PURE_ENV: "1"})
+
+    def ask(job: Path) -> str:
+        assert worker.stdin is not None and worker.stdout is not None
+        worker.stdin.write(f"{job}\n")
+        worker.stdin.flush()
+        return str(json.loads(worker.stdout.readline()))
+    yield ask
+    assert worker.stdin is not None
+    worker.stdin.close()
+    worker.wait(timeout=60)

@@ -14,6 +14,19 @@ from pathlib import Path
 from edingcnc_lang import EcncError, RunOptions, run_file
 
 
+def traced_run(job: Path, ini: Path) -> tuple[str, str, list[object]]:
+    """The trace, the result (or the error and the state it left) and every move and event of running ``job``
+    with ``ini``: what a batched run and the same run one move at a time must share."""
+    seen: list[object] = []
+    trace = job.with_suffix(".csv")
+    options = RunOptions(ini=ini, trace=trace, on_move=lambda m, j: seen.append(m), on_event=seen.append)
+    try:
+        result = str(run_file(job, options).to_json())
+    except EcncError as err:
+        result = err.format() + str(err.result.to_json())  # type: ignore[attr-defined]
+    return trace.read_text(), result, seen
+
+
 def outcome(job: Path) -> str:
     """The trace, the events and the result of running ``job`` (or its error), as text."""
     trace, events = job.with_suffix(".csv"), job.with_suffix(".events")

@@ -8,21 +8,15 @@ events, results and errors must be equal.
 """
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from edingcnc_lang import speedups
 from tests.core_outcome import outcome
 
-ROOT = Path(__file__).resolve().parents[2]
 
 PLANE_WORDS = {"G17": ("X", "Y", "I", "J"), "G18": ("Z", "X", "K", "I"), "G19": ("Y", "Z", "J", "K")}
 steps = st.floats(-20, 20, allow_nan=False).filter(lambda v: abs(v) > 0.01)
@@ -71,26 +65,6 @@ def jobs(draw: st.DrawFn) -> str:
                                min_size=1, max_size=40))
         lines.append("G40" if comp else "")
     return "\n".join([*lines, "G40", "G90 G0 X0 Y0", "M30"]) + "\n"
-
-
-@pytest.fixture(scope="module")
-def python_core() -> Iterator[Callable[[Path], str]]:
-    """A worker process on the pure-Python core that runs a job and answers its outcome."""
-    if speedups.SPEEDUPS is None:
-        pytest.skip("this process runs the Python core already: nothing to compare")
-    worker = subprocess.Popen([sys.executable, "-c", "from tests.core_outcome import serve; serve()"], cwd=ROOT,
-                              stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
-                              env={**os.environ, speedups.PURE_ENV: "1"})
-    assert worker.stdin is not None and worker.stdout is not None
-
-    def ask(job: Path) -> str:
-        assert worker.stdin is not None and worker.stdout is not None
-        worker.stdin.write(f"{job}\n")
-        worker.stdin.flush()
-        return str(json.loads(worker.stdout.readline()))
-    yield ask
-    worker.stdin.close()
-    worker.wait(timeout=60)
 
 
 @pytest.mark.slow

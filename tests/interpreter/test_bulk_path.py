@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 from edingcnc_lang import EcncError, Event, Move, RunOptions, run_file, run_string
 from edingcnc_lang.config.heightmap import HeightMap, ProbeAt
 from edingcnc_lang.host import Host
+from tests.core_outcome import traced_run
 
 numbers = st.one_of(st.integers(-200, 200).map(str),
                     st.floats(-200, 200, allow_nan=False).map(lambda v: f"{v:.3f}"),
@@ -201,19 +202,9 @@ def _batched_and_one_by_one(job: Path, ini: Path, monkeypatch: pytest.MonkeyPatc
     batches and then with ``batchable()`` off (one move at a time): they must be the same; the first is returned."""
     from edingcnc_lang.machine.interpreter import Interpreter
 
-    def run() -> tuple[str, str, list[object]]:
-        seen: list[object] = []
-        trace = job.with_suffix(".csv")
-        options = RunOptions(ini=ini, trace=trace, on_move=lambda m, j: seen.append(m), on_event=seen.append)
-        try:
-            outcome = str(run_file(job, options).to_json())
-        except EcncError as err:
-            outcome = err.format() + str(err.result.to_json())  # type: ignore[attr-defined]
-        return trace.read_text(), outcome, seen
-
-    batched = run()
+    batched = traced_run(job, ini)
     monkeypatch.setattr(Interpreter, "batchable", lambda self: False)
-    assert run() == batched
+    assert traced_run(job, ini) == batched
     return batched
 
 

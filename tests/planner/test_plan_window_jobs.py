@@ -11,10 +11,9 @@ from __future__ import annotations
 
 import importlib.util
 import json
-import os
 import subprocess
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
 
@@ -100,26 +99,6 @@ def test_straight_jobs_are_timed_without_numpy(jobs: dict[str, Path], tmp_path: 
     else:
         rows = (tmp_path / "trace.csv").read_text().splitlines()
         assert len(rows) > (10 if name == "mixed" else 1000) and float(rows[-1].rsplit(",", 1)[1]) > 0.0
-
-
-@pytest.fixture(scope="module")
-def python_core() -> Iterator[Callable[[Path], str]]:
-    """A worker process on the pure-Python core that runs a job and answers its outcome."""
-    if speedups.SPEEDUPS is None:
-        pytest.skip("this process runs the Python core already: nothing to compare")
-    worker = subprocess.Popen([sys.executable, "-c", "from tests.core_outcome import serve; serve()"], cwd=ROOT,
-                              stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
-                              env={**os.environ, speedups.PURE_ENV: "1"})
-
-    def ask(job: Path) -> str:
-        assert worker.stdin is not None and worker.stdout is not None
-        worker.stdin.write(f"{job}\n")
-        worker.stdin.flush()
-        return str(json.loads(worker.stdout.readline()))
-    yield ask
-    assert worker.stdin is not None
-    worker.stdin.close()
-    worker.wait(timeout=60)
 
 
 @pytest.mark.parametrize("name", ["g1", "drill", "cam", "rarcs", "ijarcs", "mixed"])

@@ -22,11 +22,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from stage_helpers import COMPILED, LOOPS, NOT_BUILT
 
-from edingcnc_lang import EcncError, RunOptions, run_file
 from edingcnc_lang.canon import PLANES, Arc, Pose
 from edingcnc_lang.machine.interpreter import Interpreter
 from edingcnc_lang.pipeline import comp_runs
 from edingcnc_lang.pipeline.comp_geometry import LEFT, RIGHT
+from tests.core_outcome import traced_run
 
 TOOLS = Path(__file__).resolve().parents[1] / "golden" / "linuxcnc" / "tools.ini"
 
@@ -155,17 +155,6 @@ def _contour_job(items: list[tuple[str, float, float]]) -> str:
     return "\n".join(lines + ["G40", f"G1 X{x + 20:.4f} Y{y:.4f}", "M30"]) + "\n"
 
 
-def _run(job: Path) -> tuple[str, str, list[object]]:
-    seen: list[object] = []
-    trace = job.with_suffix(".csv")
-    options = RunOptions(ini=TOOLS, trace=trace, on_move=lambda m, j: seen.append(m), on_event=seen.append)
-    try:
-        outcome = str(run_file(job, options).to_json())
-    except EcncError as err:
-        outcome = err.format() + str(err.result.to_json())  # type: ignore[attr-defined]
-    return trace.read_text(), outcome, seen
-
-
 @pytest.mark.slow
 @pytest.mark.parametrize("loop", LOOPS)
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
@@ -179,9 +168,9 @@ def test_a_compensated_job_in_batches_is_the_job_one_move_at_a_time(tmp_path: Pa
     job.write_text(_contour_job(items))
     with monkeypatch.context() as patch:
         patch.setattr(comp_runs, "LINES", loop)
-        batched = _run(job)
+        batched = traced_run(job, TOOLS)
         patch.setattr(Interpreter, "batchable", lambda self: False)
-        assert _run(job) == batched
+        assert traced_run(job, TOOLS) == batched
 
 
 SPIRAL = [f"X{40 * math.cos(k / 40) * (1 + k / 3000):.3f} Y{40 * math.sin(k / 40) * (1 + k / 3000):.3f}\n"
