@@ -66,8 +66,9 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
     corners: list[Corner] = []
     append = poses.append
     plane_xy = axes == (0, 1, 2)
-    k = index
-    for k, pose in enumerate(ends[index:stop], index):  # noqa: B007 (k: how far the run got)
+    # no counter (enumerate makes an int a move): the moves taken so far are the held one (the first,
+    # ``previous`` set) and those handed on (``poses``)
+    for pose in ends[index:stop]:
         tx, ty = pose[first], pose[second]
         if tx == sx and ty == sy:  # no motion in the plane
             break
@@ -102,7 +103,7 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
             hx, hy = cx, cy
             moved = list(pose)
             moved[first], moved[second], moved[normal] = px, py, level
-            corners.append((k, tuple(moved), sx, sy))
+            corners.append((index + len(poses) + (previous is not None), tuple(moved), sx, sy))  # this move's index
         else:
             hx = px = cx
             hy = py = cy
@@ -121,10 +122,8 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
         cx = tx + radius * cos(alpha)  # at(target, radius, alpha + gamma)
         cy = ty + radius * sin(alpha)
         sx, sy, level = tx, ty, pose[normal]
-    else:
-        k = stop
     made = _with_corners(kinds, lines, feeds, index, poses, corners, plane, -1 if left else 1, arc)
-    return k - index, held, made, (sx, sy, cx, cy, qx, qy, px, py, level)
+    return len(poses) + (previous is not None), held, made, (sx, sy, cx, cy, qx, qy, px, py, level)
 
 
 def _with_corners(kinds: Sequence[str], lines: Sequence[int], feeds: Sequence[float], index: int, poses: list[Pose],
