@@ -108,6 +108,19 @@ def frame_extremes(frame: ArcFrame, end: Pose, low: Sequence[float] | None = Non
 
 def column_bounds(ends: Sequence[Pose]) -> tuple[list[float], list[float]]:
     """The least and greatest value of each axis over the poses ``ends`` (not empty): what a batch's
-    straight moves reach.  The reference for ``_speedups.column_bounds``."""
-    columns = list(zip(*ends))
-    return [min(column) for column in columns], [max(column) for column in columns]
+    straight moves reach.  The reference for ``_speedups.column_bounds``.
+
+    A column of one value (Z, A, B, C mostly) is found with one pass instead of two: ``min`` and
+    ``max`` of equal values give the first of them, so the bounds are that value, bit for bit."""
+    count = len(ends)
+    lows: list[float] = []
+    highs: list[float] = []
+    for column in zip(*ends):
+        value = column[0]
+        if column[-1] == value and column.count(value) == count:
+            lows.append(value)
+            highs.append(value)
+        else:
+            lows.append(min(column))
+            highs.append(max(column))
+    return lows, highs

@@ -59,14 +59,16 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
     left = side == LEFT
     gamma = side_angle(side)
     atan2, cos, sin, tan = math.atan2, math.cos, math.sin, math.tan
-    turn, low, high = 2 * math.pi, -CONCAVE_TOLERANCE, math.pi + CONCAVE_TOLERANCE
+    pi, half_pi, tolerance = math.pi, HALF_PI, CONCAVE_TOLERANCE  # locals: the loop looks them up every move
+    turn, low, high = 2 * pi, -tolerance, pi + tolerance
     held, previous = (0.0, 0.0), None
     poses: list[Pose] = []
     corners: list[Corner] = []
     append = poses.append
     plane_xy = axes == (0, 1, 2)
-    k = index
-    for k, pose in enumerate(ends[index:stop], index):  # noqa: B007 (k: how far the run got)
+    # no counter (enumerate makes an int a move): the moves taken so far are the held one (the first,
+    # ``previous`` set) and those handed on (``poses``)
+    for pose in ends[index:stop]:
         tx, ty = pose[first], pose[second]
         if tx == sx and ty == sy:  # no motion in the plane
             break
@@ -75,24 +77,24 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
         if left:
             if theta < alpha:
                 theta = theta + turn
-            beta = theta - alpha - HALF_PI
+            beta = theta - alpha - half_pi
         else:
             if alpha < theta:
                 alpha = alpha + turn
-            beta = alpha - theta - HALF_PI
+            beta = alpha - theta - half_pi
         alpha = alpha + gamma
         if beta < low or beta > high:  # inside_corner: cut the move before back (half_corner, cut_back)
-            half = (beta + math.pi) / 2.0
+            half = (beta + pi) / 2.0
             if half == 0.0 or (after_arc and previous is None):
                 break
             distance, theta = radius / tan(half), theta + gamma
             hx = cx + distance * cos(theta)
             hy = cy + distance * sin(theta)
-            if qx * (hx - px) + qy * (hy - py) < 0:  # reverses
+            if qx * (hx - px) + qy * (hy - py) < 0.0:  # reverses
                 break
             px, py = hx, hy
-        elif beta > CONCAVE_TOLERANCE:  # outside_corner: round the corner point, from the tool to beside it
-            if (after_arc and previous is None) or qx * (cx - px) + qy * (cy - py) < 0:  # reverses
+        elif beta > tolerance:  # outside_corner: round the corner point, from the tool to beside it
+            if (after_arc and previous is None) or qx * (cx - px) + qy * (cy - py) < 0.0:  # reverses
                 break
             px = sx + radius * cos(alpha)  # at(start, radius, alpha + gamma)
             py = sy + radius * sin(alpha)
@@ -101,7 +103,7 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
             hx, hy = cx, cy
             moved = list(pose)
             moved[first], moved[second], moved[normal] = px, py, level
-            corners.append((k, tuple(moved), sx, sy))
+            corners.append((index + len(poses) + (previous is not None), tuple(moved), sx, sy))  # this move's index
         else:
             hx = px = cx
             hy = py = cy
@@ -120,10 +122,8 @@ def comp_lines(columns: Columns, index: int, stop: int, frame: tuple[int, int, i
         cx = tx + radius * cos(alpha)  # at(target, radius, alpha + gamma)
         cy = ty + radius * sin(alpha)
         sx, sy, level = tx, ty, pose[normal]
-    else:
-        k = stop
     made = _with_corners(kinds, lines, feeds, index, poses, corners, plane, -1 if left else 1, arc)
-    return k - index, held, made, (sx, sy, cx, cy, qx, qy, px, py, level)
+    return len(poses) + (previous is not None), held, made, (sx, sy, cx, cy, qx, qy, px, py, level)
 
 
 def _with_corners(kinds: Sequence[str], lines: Sequence[int], feeds: Sequence[float], index: int, poses: list[Pose],
