@@ -7,6 +7,7 @@ inside the command.  ``main()`` reads the command line and turns every outcome i
 """
 from __future__ import annotations
 
+import gc
 import os
 import sys
 import warnings
@@ -166,6 +167,11 @@ def entry() -> NoReturn:
     """
     _terminate_cleanly()
     _one_blas_thread()
+    # What start-up made (modules, classes, click's commands) lives until the process ends: out of the cyclic
+    # collector's sight, its collections of a long run's young objects no longer walk it again and again
+    # (6 % of a compensated 50k-move run's CPU on the Python core). Only here, in the program, never in a
+    # process that embeds the command line.
+    gc.freeze()
     until_exit: list[object] = []
     try:
         code = run_command_line(sys.argv[1:], until_exit)
