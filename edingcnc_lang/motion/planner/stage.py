@@ -252,7 +252,6 @@ class Planner:
         from edingcnc_lang.motion.planner.junctions import corner_speeds2
         from edingcnc_lang.motion.planner.profile import plan_nodes, profiles
         from edingcnc_lang.motion.planner.samples import time_true_samples
-        from edingcnc_lang.motion.arc_table import ArcTable
         from edingcnc_lang.motion.planner.segments import segments
 
         n = len(self._ends) if horizon is None else horizon
@@ -261,9 +260,7 @@ class Planner:
         starts[:, 0], starts[:, 1:] = self._origin, ends[:, :-1]
         feed = np.fromiter(self._feed, float, n)
         kind, state = self._kind.array(np.int64)[:n], self._state.array(np.int64)[:n]
-        every_arc = ArcTable.joined(self._arc_tables)
-        self._arc_tables = [every_arc] if len(every_arc) else []
-        arcs = every_arc.before(n)
+        arcs = self._window_arcs().before(n)
         kind = np.where(kind == STRAIGHT, np.where(feed > 0.0, LINEAR, RAPID), kind)
         kind[arcs.index] = ARC
         exact_mode, tolerance, factor, rapid_limits, other_limits = (np.array(column) for column in
@@ -307,10 +304,7 @@ class Planner:
         if self.want_samples and self.joints_of is not None:
             samples = time_true_samples(starts[:, :count], ends[:, :count], arcs, moving[:done], planned, t_end,
                                         duration[:count], cfg.interpolation_time, self.joints_of)
-        self._emit(count, t_end.tolist(), peak[:count].tolist(), samples)
-        if count:
-            self.time = float(t_end[-1])
-        self._drop(count)
+        self._hand_on(count, t_end.tolist(), peak[:count].tolist(), samples)
 
     def _in_c(self) -> bool:
         """Whether the C planner takes this window: straight moves and arcs, each timed against the limits of
@@ -328,11 +322,9 @@ class Planner:
         cfg = self.config
         rows, share, arcs = b"", 0.0, None
         if self._arc_tables:
-            from edingcnc_lang.motion.arc_table import ArcTable
             from edingcnc_lang.motion.planner.segments import curvature_share
 
-            arcs = ArcTable.joined(self._arc_tables)
-            self._arc_tables = [arcs]
+            arcs = self._window_arcs().before(n)
             rows, share = arcs.rows.tobytes(), curvature_share(cfg.laf_arcfeed_factor)
         t_end, peak, self._start2, rapid_seconds, feed_seconds, rapid_distance, feed_distance, low, high = \
             _PLAN_WINDOW(self._origin, self._ends, self._feed, n, count, (self._kind.values, self._kind.counts),
@@ -344,7 +336,20 @@ class Planner:
             self.limits.add_extremes(low, high, None if arcs is None else arcs.before(count), self._ends)
         speeds = array("d")  # (as bytes: the trace never reads them, so they need not become floats)
         speeds.frombytes(peak)
-        self._emit(count, t_end, speeds, None)
+        self._hand_on(count, t_end, speeds, None)
+
+    def _window_arcs(self) -> ArcTable:
+        """The collected moves' arcs as one table, kept joined for the windows after this one."""
+        from edingcnc_lang.motion.arc_table import ArcTable
+
+        arcs = ArcTable.joined(self._arc_tables)
+        self._arc_tables = [arcs] if len(arcs) else []
+        return arcs
+
+    def _hand_on(self, count: int, t_end: list[float], speeds: Sequence[float],
+                 samples: Iterator[Samples | None] | None) -> None:
+        """Hand the first ``count`` planned moves to the sinks with their end times, then forget them."""
+        self._emit(count, t_end, speeds, samples)
         if count:
             self.time = t_end[-1]
         self._drop(count)
