@@ -7,7 +7,7 @@ functions do (the equivalence tests run both), and every caller picks its functi
 ``speedups.compiled("name") or python_reference``: the check pass's scan
 (``syntax.parser.non_plain_lines``), runs of plain ``G0``/``G1`` lines (``machine.plain_runs.plain_moves``),
 trace rows (``motion.sinks.trace_rows``), the bounds of a batch (``motion.reach.column_bounds``), the arcs
-of the bulk path (``machine.bulk.BulkPath._arc_of_words``) and the frames of arcs
+of the bulk path (``machine.plain_arcs.plain_arcs``) and the frames of arcs
 (``kinematics.trajectory.arc_frame`` and ``arc_frame_rows``, as doubles for ``motion.arc_table``), whether
 a batch's arcs reach outside the limits (``motion.reach.arcs_beyond``), the planner's windows of moves
 (``motion.planner.stage``, ``plan_window``), the runs of corners of cutter compensation

@@ -65,12 +65,18 @@ def arc_frame(start: Sequence[float], end: Sequence[float], center: Sequence[flo
     """The circle of an arc about ``center`` in the plane normal to axis ``normal`` (see ``sample_arc``)."""
     u, v = (normal + 1) % 3, (normal + 2) % 3
     cu, cv = float(center[u]), float(center[v])
-    r0 = math.hypot(start[u] - cu, start[v] - cv)
+    return ArcFrame(u, v, (cu, cv), *_circle(start, end, cu, cv, u, v, normal, turns, full_circle_epsilon))
+
+
+def _circle(start: Sequence[float], end: Sequence[float], cu: float, cv: float, u: int, v: int, normal: int,
+            turns: int, full_circle_epsilon: float) -> tuple[float, float, float, float, float]:
+    """``arc_frame``'s numbers after its centre: start and end radius, start angle, signed sweep, XYZ length."""
+    su, sv = start[u] - cu, start[v] - cv
+    r0 = math.hypot(su, sv)
     r1 = math.hypot(end[u] - cu, end[v] - cv)
-    a0 = math.atan2(start[v] - cv, start[u] - cu)
+    a0 = math.atan2(sv, su)
     sweep = arc_sweep(a0, math.atan2(end[v] - cv, end[u] - cu), turns, full_circle_epsilon)
-    linear = math.hypot(abs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal])
-    return ArcFrame(u, v, (cu, cv), r0, r1, a0, sweep, linear)
+    return r0, r1, a0, sweep, math.hypot(abs(sweep) * (r0 + r1) / 2.0, end[normal] - start[normal])
 
 
 ARC_ROW = 10  # the numbers of an arc in arc_frame_rows: move index, u, v, centre (2), r0, r1, start angle, sweep, linear
@@ -81,18 +87,24 @@ def arc_frame_rows(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]
     one flat list of ``ARC_ROW`` numbers per arc: its index among the moves, then its ``arc_frame``.
 
     The planner and the motion stage read a batch's arcs as columns (``motion.arc_table``): a frame per
-    arc, each the very numbers ``arc_geometry(...).frame`` gives.  The reference for
-    ``_speedups.arc_frame_rows``."""
+    arc, each the very numbers ``arc_geometry(...).frame`` gives (``arc_circle``, ``_circle``: without a
+    Geometry or an ArcFrame per arc).  The reference for ``_speedups.arc_frame_rows``."""
     rows: list[float] = []
+    extend = rows.extend
+    circles: dict[tuple[str, int, int], tuple[int, int, int, int, float]] = {}  # arc_circle's, by its arguments
     previous = start
     for index, arc in enumerate(arcs):
         end = ends[index]
         if arc is not None:
-            path = arc_geometry(previous, end, arc)
-            assert path.center is not None
-            frame = arc_frame(path.start, path.end, path.center, path.normal, path.turns, path.full_circle_epsilon)
-            rows += (float(index), float(frame.u), float(frame.v), *frame.center, frame.r0, frame.r1,
-                     frame.start_angle, frame.sweep, frame.linear)
+            key = (arc.plane, arc.turn, arc.full_turns)
+            circle = circles.get(key)
+            if circle is None:
+                circle = circles[key] = arc_circle(arc)
+            u, v, normal, turns, epsilon = circle
+            c1, c2 = arc.center
+            cu, cv = (float(c2), float(c1)) if u == 2 else (float(c1), float(c2))  # (XZ: named x, z; u is z)
+            extend((float(index), float(u), float(v), cu, cv))
+            extend(_circle(previous, end, cu, cv, u, v, normal, turns, epsilon))
         previous = end
     return rows
 
@@ -172,19 +184,23 @@ def geometry_of(move: Move) -> Geometry:
 
 
 def arc_geometry(start: Pose, end: Pose, arc: Arc) -> Geometry:
-    """The path of an arc from ``start`` to ``end``, for callers that hold no ``Move`` (a batch's columns).
+    """The path of an arc from ``start`` to ``end``, for callers that hold no ``Move`` (a batch's columns)."""
+    u, v, normal, turns, epsilon = arc_circle(arc)
+    c1, c2 = arc.center
+    center = list(start[:3])
+    center[u], center[v] = (c2, c1) if u == 2 else (c1, c2)  # (XZ: the canon names the centre x, z; u is z)
+    return Geometry(start, end, (center[0], center[1], center[2]), normal, turns, epsilon)
+
+
+def arc_circle(arc: Arc) -> tuple[int, int, int, int, float]:
+    """What the circle of an arc is as ``Geometry`` holds it, its centre aside: the plane's axes u and v (as
+    ``arc_frame`` numbers them, (normal + 1) % 3 and (normal + 2) % 3), its normal axis, the signed turns and
+    the full-circle epsilon ``arc_sweep`` is given.
 
     Whether an arc is a full circle was decided once, by the interpreter (``Arc.full_turns``); the
-    path follows that decision, never an angle epsilon of its own."""
-    first, second, normal = PLANES[arc.plane]
-    c1, c2 = arc.center
-    if arc.plane == "XZ":  # the canon names the XZ centre (x, z); the plane's order is (z, x)
-        c1, c2 = c2, c1
-    center = list(start[:3])
-    center[first], center[second] = c1, c2
-    turns = arc.turn * max(1, arc.full_turns)
-    full = math.inf if arc.full_turns else -1.0  # as arc_sweep's epsilon: always, or never (ends differ)
-    return Geometry(start, end, (center[0], center[1], center[2]), normal, turns, full)
+    path follows that decision, never an angle epsilon of its own: infinite (always) or -1 (never)."""
+    u, v, normal = PLANES[arc.plane]
+    return u, v, normal, arc.turn * max(1, arc.full_turns), math.inf if arc.full_turns else -1.0
 
 
 @record(frozen=True)

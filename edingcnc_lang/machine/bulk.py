@@ -3,16 +3,17 @@
 CAM output is mostly lines such as ``G1 X.. Y.. Z..`` and ``G2 X.. Y.. I.. J..``.  While the
 machine is in a state where such a line can only be a straight move or an arc (``batchable``, the
 one place that decides it), a run of them is turned into targets by ``plain_moves`` (straight
-lines, ``plain_runs.py``) and ``arc_run`` over ``BulkPath._arc_of_words`` (arc lines: the general path's own
-target and ``arc_plan``) and handed to the canon as one ``Batch``: the array form of the ``Move`` records the
-general path would have made, with the same spindle and caller.  The step budget and
-GetJobDistance are counted by the general path's own helpers (``MachineState.travelled``); any
-other line, and every error, goes to the general path, so messages stay exactly the same.
+lines, ``plain_runs.py``) and ``plain_arcs`` (arc lines, ``plain_arcs.py``) and handed to the canon as one
+``Batch``: the array form of the ``Move`` records the general path would have made, with the same spindle
+and caller.  The step budget and GetJobDistance are counted by the general path's own helpers
+(``MachineState.travelled``); any other line, and every error, goes to the general path, so messages stay
+exactly the same.
 
-``plain_runs.plain_moves`` and ``arc_run`` over ``_arc_of_words`` here are the references; ``_speedups.plain_moves``
+``plain_runs.plain_moves`` and ``plain_arcs.plain_arcs`` are the Python references; ``_speedups.plain_moves``
 and ``_speedups.plain_arcs`` are the same compiled (``edingcnc_lang/_speedups.c``), used when it is built
-and ``ECNC_PURE_PYTHON`` is not set.  The equivalence tests run both and compare whole moves with
-the general path's.
+and ``ECNC_PURE_PYTHON`` is not set.  ``arc_run`` over ``_arc_of_words`` reads arc lines with the general
+path's own ``_target`` and ``arc_plan``: it takes the runs ``plain_arcs`` does not (absolute centres, diameter
+programs), and the equivalence tests hold both ``plain_arcs`` to it and whole moves to the general path's.
 """
 from __future__ import annotations
 
@@ -29,6 +30,7 @@ from edingcnc_lang.errors import EcncError
 from edingcnc_lang.syntax.plain_words import plain_block, plain_words
 from edingcnc_lang.machine.parts import PendingMoves
 from edingcnc_lang.machine.geometry import TINY, ArcError, radius_tolerance
+from edingcnc_lang.machine.plain_arcs import plain_arcs
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.machine.state import (
     AXIS_SET,
@@ -49,7 +51,7 @@ from edingcnc_lang.machine.state import (
 _ARC_LETTERS = {plane: frozenset("XYZABCFR" + "".join(centre)) for plane, centre in CENTER_WORDS.items()}
 _ARC_WORD = re.compile("[IJKRijkr]")  # a letter an arc line needs one of (R or a centre word)
 _PLANE_INDEX = {"XY": 0, "XZ": 1, "YZ": 2}  # as _speedups.c's plain_arcs numbers them
-_COMPILED_ARCS = speedups.compiled("plain_arcs")  # None on the Python core
+_PLAIN_ARCS: Callable[..., Any] = speedups.compiled("plain_arcs") or plain_arcs  # the arcs of a run of arc lines
 _PLAIN_MOVES: Callable[..., Any] = speedups.compiled("plain_moves") or plain_moves  # the targets of a run of plain lines
 # What an arc line gives the bulk path: the motion and feed in force after it, its end, its arc and its
 # length (``path_length``, what GetJobDistance counts).
@@ -64,7 +66,7 @@ ArcRun = Callable[[Lines, int, Pose, int, float, int], ArcColumns]
 def arc_run(read_arc: Callable[[str, Pose, int, float], ArcLine | None], lines: Lines, index: int, start: Pose,
             motion: int, feed: float, room: int) -> ArcColumns:
     """The arc lines of ``lines[index:]`` one after another, at most ``room`` of them, each as ``read_arc`` reads
-    it (``BulkPath._arc_of_words``), as columns.  The reference for ``_speedups.plain_arcs``."""
+    it (``BulkPath._arc_of_words``), as columns.  What ``plain_arcs`` (compiled and Python) is held to."""
     numbers: list[int] = []
     ends: list[Pose] = []
     feeds: list[float] = []
@@ -245,10 +247,10 @@ class BulkPath(MachineState):
         return index
 
     def _arc_reader(self) -> ArcRun:
-        """``arc_run`` on the core that runs, for the lines of one run (the state it reads cannot change
-        within a run): the compiled one takes arcs with centre words or R, and leaves absolute centres and
-        diameter programs to the Python reference (and a line it cannot scan, which the reference reads)."""
-        if _COMPILED_ARCS is None or self.config.absolute_center_coords or self.diameter_mode:
+        """What reads the arc lines of one run (the state it reads cannot change within a run): ``plain_arcs``
+        (compiled or Python) takes arcs with centre words or R, and leaves absolute centres and diameter
+        programs to ``arc_run`` over the general path's reading (and a line the compiled one cannot scan)."""
+        if self.config.absolute_center_coords or self.diameter_mode:
             return partial(arc_run, self._arc_of_words)
         plane = PLANE_OF[self.modal["plane"]]
         offset, scale, incremental = self.offset(), self.scale, self.modal["distance"] == G_91
@@ -258,7 +260,7 @@ class BulkPath(MachineState):
         def read(lines: Lines, index: int, start: Pose, motion: int, feed: float, room: int) -> ArcColumns:
             columns: tuple[list[Any], ...] = ([], [], [], [], [])  # line numbers, ends, feeds, arcs, lengths
             while True:
-                index, scanned, motion, feed, *run = _COMPILED_ARCS(
+                index, scanned, motion, feed, *run = _PLAIN_ARCS(
                     lines, index, start, offset, scale, incremental, motion, feed, room - len(columns[0]), *fixed)
                 for column, values in zip(columns, run):
                     column.extend(values)
@@ -280,7 +282,7 @@ class BulkPath(MachineState):
         """The arc a plain line makes from ``start``, if it is a simple one: G2/G3 (or either in force), axis
         words, the plane's centre words or R, F and N, each once; with it the motion and feed in force
         after it.  None for any other line, and for an arc the general path would refuse (it reports it).
-        The reference for ``_speedups.plain_arcs``' reading of a line: the general path's own target and ``arc_plan``.
+        What ``plain_arcs``' reading of a line is held to: the general path's own target and ``arc_plan``.
         """
         if _ARC_WORD.search(text) is None:  # no R, I, J or K: no arc (arc_plan would refuse it), told at once
             return None  # (a run of arcs ends at such a line: the straight line after it, in a CAM pass)

@@ -19,24 +19,24 @@ NO_MOTION = -1  # the motion in force is neither G0 nor G1: a line must name one
 # plain_words would, only faster.  A number is any run of digits and points: the lines are plain
 # (FAST_LINE), whose every number is a whole FAST_NUMBER (no digit or point follows one), so this reads
 # the same words as FAST_NUMBER would (tests/interpreter/test_plain_runs.py holds it to
-# ``_usual_order(FAST_NUMBER, "")``).  For the same reason no word, blank or number ever has to give
+# ``usual_order(FAST_NUMBER, "")``).  For the same reason no word, blank or number ever has to give
 # back what it took: from Python 3.11 on they are possessive, so that a line of other words (an arc's)
 # fails at once instead of trying every shorter number; before, each optional word is "(?:...|)", which
 # Python's engine runs faster than "(?:...)?".
 POSSESSIVE = "+" if sys.version_info >= (3, 11) else ""
 
 
-def _usual_order(number: str, possessive: str) -> re.Pattern[str]:
-    """The usual order's pattern, its numbers read by ``number``; ``possessive``: "+" or ""."""
+def usual_order(number: str, possessive: str, letters: str = "GXYZABCF") -> re.Pattern[str]:
+    """The usual order's pattern, its numbers read by ``number``; ``possessive``: "+" or ""; ``letters``: the
+    words after N, in their order (plain_arcs.py reads arc lines with the same pattern of its own letters)."""
     blank = r"[ \t]*" + possessive
     word = "(?:{}" + (")?+" if possessive else "|)")
     return re.compile(blank + word.format(f"[Nn]{blank}[+-]?{number}{blank}")
-                      + "".join(word.format(f"[{a}{a.lower()}]{blank}([+-]?{number}){blank}") for a in "GXYZABCF")
+                      + "".join(word.format(f"[{a}{a.lower()}]{blank}([+-]?{number}){blank}") for a in letters)
                       + word.format(";.*") + "$")
 
 
-USUAL_ORDER = _usual_order("[0-9.]+" + POSSESSIVE, POSSESSIVE)
-_WORD_COLUMN = {letter: column for column, letter in enumerate("GXYZABCF")}
+USUAL_ORDER = usual_order("[0-9.]+" + POSSESSIVE, POSSESSIVE)
 # The motion of the G texts CAM output writes, looked up instead of read as a number (any other
 # text is read as one); a text is its number's motion: "01" is G1.
 _MOTION_OF = {text: G_0 if float(text) == 0.0 else G_1
@@ -47,7 +47,6 @@ _MOTION_OF = {text: G_0 if float(text) == 0.0 else G_1
 # and blanks leaves a line's letters, and blanking the letters leaves its number texts.
 _LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
 _NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
-_OTHER_LETTERS = str.maketrans(dict.fromkeys("0123456789.+- \tNGXYZABCFngxyzabcf"))  # what is left: other letters
 SHAPE_LEAST = 16  # lines of one shape that make a run worth reading in bulk
 SHAPE_BLOCK = 32  # lines read for the first block of a run of one shape; each further block is four times larger
 MAX_SKIP = 63  # chances let pass at most after looks for a run of one shape that found none
@@ -100,7 +99,7 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
     while index < stop:
         lineno, text = lines[index]
         usual = match(text)
-        row = usual.groups() if usual is not None else _words_row(text)
+        row = usual.groups() if usual is not None else words_row(text)
         if row is None:
             break
         g, x, y, z, a, b, c, f = row  # the number texts, empty or None where the line has no such word
@@ -226,18 +225,30 @@ def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: 
     return count
 
 
-def _words_row(text: str) -> list[str] | None:
-    """The G X Y Z A B C F number texts of a line whose words are in another order ('' where it
-    has no such word); None when it has another word (but N) or one twice."""
-    if "(" not in text and ";" not in text and text.translate(_OTHER_LETTERS):
+def _other_letters(letters: str) -> dict[int, int | None]:
+    """A translation that deletes a line's blanks, numbers, N and ``letters`` (either case): what is left
+    is the letters of other words."""
+    return str.maketrans(dict.fromkeys("0123456789.+- \tN" + letters + ("N" + letters).lower()))
+
+
+_ROWS: dict[str, tuple[dict[str, int], dict[int, int | None]]] = {}  # by letters: their columns, _other_letters
+
+
+def words_row(text: str, letters: str = "GXYZABCF") -> list[str] | None:
+    """The number texts of the words ``letters`` of a line whose words are in another order than usual_order's
+    ('' where it has no such word); None when it has another word (but N) or one twice."""
+    if letters not in _ROWS:
+        _ROWS[letters] = ({letter: column for column, letter in enumerate(letters)}, _other_letters(letters))
+    columns, other_letters = _ROWS[letters]
+    if "(" not in text and ";" not in text and text.translate(other_letters):
         return None  # a word of another letter (an arc's centre, M, S, T): told without reading the words
-    row = [""] * 8
+    row = [""] * len(letters)
     seen = ""
     for letter, number in plain_words(text):
         letter = letter.upper()
-        if letter in seen or (letter not in _WORD_COLUMN and letter != "N"):
+        if letter in seen or (letter not in columns and letter != "N"):
             return None
         seen += letter
         if letter != "N":
-            row[_WORD_COLUMN[letter]] = number
+            row[columns[letter]] = number
     return row

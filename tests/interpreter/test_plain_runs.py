@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from edingcnc_lang.machine import plain_runs
-from edingcnc_lang.machine.plain_runs import G_0, G_1, USUAL_ORDER, _usual_order
+from edingcnc_lang.machine.plain_runs import G_0, G_1, USUAL_ORDER, usual_order
 from edingcnc_lang.motion.sinks import SIX_REPR, trace_rows
 from edingcnc_lang.syntax.plain_words import FAST_NUMBER, is_fast_line, plain_words, word_matches
 
@@ -26,8 +26,8 @@ lines = st.builds(lambda lead, ws, gap, tail: lead + gap.join(f"{c}{a}{v}" for c
                   st.sampled_from(["", " ", "\t "]), st.lists(words, max_size=7), st.sampled_from([" ", "", "  "]),
                   st.sampled_from(["", " ", " ; cut X5", ";", " (note)", "\r", "\t"]))
 # the usual order's reference: FAST_NUMBER, nothing possessive (the pattern as Python 3.10 runs it, and as it was)
-STRICT = _usual_order(FAST_NUMBER, "")
-SIMPLE = _usual_order("[0-9.]+", "")
+STRICT = usual_order(FAST_NUMBER, "")
+SIMPLE = usual_order("[0-9.]+", "")
 
 
 @settings(max_examples=1000, deadline=None)

@@ -12,7 +12,6 @@ import os
 import random
 import subprocess
 import sys
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -22,13 +21,13 @@ from hypothesis import strategies as st
 from edingcnc_lang import RunOptions, run_file
 from edingcnc_lang.canon import Arc
 from edingcnc_lang.kinematics.trajectory import arc_frame, arc_frame_rows
-from edingcnc_lang.runner import Run
-from edingcnc_lang.machine import bulk, plain_runs
+from edingcnc_lang.machine import plain_runs
 from edingcnc_lang.machine.plain_runs import NO_MOTION, plain_moves
 from edingcnc_lang.syntax.input_limits import INTEGER_DIGITS, MAX_GCODE_LINE, MAX_NUMBER_DIGITS
 from edingcnc_lang.motion.reach import column_bounds
 from edingcnc_lang.motion.sinks import trace_rows
 from edingcnc_lang.syntax.parser import non_plain_lines
+from tests.arc_lines import assert_arc_reader_is_the_general_paths
 
 pytestmark = pytest.mark.slow  # the whole module (pyproject's slow marker)
 
@@ -65,54 +64,9 @@ def test_the_targets_of_plain_lines_are_the_same(chunk: list[str], scale: float,
     assert compiled.plain_moves(*args) == plain_moves(*args)
 
 
-# arc lines: centre words that fit (a half circle, a full circle, a helix), that nearly fit and that do
-# not, words of another plane, R (left to the Python function), F, N and comments
-ARC_LINES = ["G2 X10 Y0 I5 J0", "G2 X10 Y0 I5 J0 ;\udc80", "G3 X\ud8001 I1", "G3 X-10 Y0 I-5", "X10 Y10 I10", "G2 X0 Y0 Z-1 I5 J0", "G2 I5 Z-2",
-                             "G3 X4 Z4 I2 K2", "G2 Y6 Z0 J3 K0 F80", "G2 X20 R10", "G3 X10.0015 Y0 I5 J0",
-                             "G02 x10 y0 i5 j0.0001 f0", "G3 X10 Y0 I5 J0 F-1", "G2 X1 I1 I2", "G2 X5 Y5",
-                             "N7 G3 X10 Y0 I5 J0 (cut) F1200.5", "X3 Y4 J5 K1", "G2 X5 A10 B2 C3 I2.5 ; note",
-                             "G2.5 X1 I1", "G1 X1 I1", "G2 I5 J0", "G3 X1e3 I1", "G2 X10 Y0 I5 J0 M3",
-                             # R: under and over half a circle, too small to reach, R0, ends that meet, with a
-                             # centre word, another plane's, a helix, a long flat arc
-                             "G3 X10 Y0 R5", "G2 X10 Y0 R-5.0001", "G3 X10 Y10 R-7.5", "G2 X10 R4.9", "G2 X10 R0",
-                             "G3 X0 Y0 R5", "G2 X10 R5 I5", "G3 Z5 X5 R3", "G2 Y6 Z6 R-4.5 F100", "G2 X10 Z-1 R6",
-                             "G3 X10 R10000000", "G2 X0.00001 R1", "N9 X3 Y4 R2.5 (r)"]
-
-
-ARC_STATES = [f"{plane} {distance} {units}\n{offsets}\n" for plane in ("G17", "G18", "G19")
-              for distance in ("G90", "G91") for units in ("G21", "G20") for offsets in ("", "G10 L2 P1 X5 Y-3 Z1")]
-
-
-def test_the_arcs_of_plain_lines_are_the_same(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The compiled arcs of plain lines against the Python ones (the general path's target and arc_plan),
-    in every plane, G90/G91, mm and inch, with offsets and reversed G2/G3: the same records or the same
-    nothing, a line at a time and as runs of lines (from each line on, within a room of steps)."""
-    monkeypatch.setattr(bulk, "_COMPILED_ARCS", compiled.plain_arcs)  # also when ECNC_PURE_PYTHON picks Python
-    made, full, runs = 0, 0, 0
-    numbered = tuple(enumerate(ARC_LINES, 5))
-    for state in ARC_STATES:
-        run = Run(RunOptions())
-        run.execute_text(state, "job.nc")
-        interp = run.interpreter
-        for reverse in (False, True):
-            interp.config = replace(interp.config, reverse_g2g3=reverse)
-            read_arcs = interp._arc_reader()
-            for start in ((0.0, 0.0, 0.0), (1.5, -2.25, 10.0)):
-                pose = (*start, 0.0, 0.0, 0.0)
-                for motion in (0, 20, 30):
-                    for feed in (0.0, 300.0):
-                        for index, (number, text) in enumerate(numbered):
-                            one = read_arcs(((number, text),), 0, pose, motion, feed, 1)
-                            assert one == bulk.arc_run(interp._arc_of_words, ((number, text),), 0, pose, motion,
-                                                       feed, 1), (state, text, pose, motion)
-                            made += len(one[3])
-                            full += bool(one[3]) and one[6][0].full_turns == 1
-                            for room in (2, 40):
-                                several = read_arcs(numbered, index, pose, motion, feed, room)
-                                assert several == bulk.arc_run(interp._arc_of_words, numbered, index, pose, motion,
-                                                               feed, room), (state, text, pose, motion, room)
-                                runs += len(several[3]) > 1
-    assert made > 2000 and full > 50 and runs > 100
+def test_the_compiled_arcs_of_plain_lines_are_the_same() -> None:
+    """The compiled arcs of plain lines against the general path's reading (tests/arc_lines.py)."""
+    assert_arc_reader_is_the_general_paths(compiled.plain_arcs)
 
 
 coordinates = st.one_of(st.floats(-1e4, 1e4), st.sampled_from([0.0, -0.0, 5.0, -5.0, 1e-9]))
