@@ -29,6 +29,9 @@ CURVATURE_SHARE = math.sqrt(3.0) / 2.0
 _COMPILED_FRAME = speedups.compiled("arc_frame")  # arc_frame in C, or None on the Python core
 
 
+_TURN = 2.0 * math.pi
+
+
 def arc_sweep(start_angle: float, end_angle: float, turns: int, full_circle_epsilon: float = 1e-12) -> float:
     """Signed angle swept (radians): ``turns`` > 0 counter-clockwise, < 0 clockwise.
 
@@ -87,10 +90,11 @@ def arc_frame_rows(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]
     one flat list of ``ARC_ROW`` numbers per arc: its index among the moves, then its ``arc_frame``.
 
     The planner and the motion stage read a batch's arcs as columns (``motion.arc_table``): a frame per
-    arc, each the very numbers ``arc_geometry(...).frame`` gives (``arc_circle``, ``_circle``: without a
-    Geometry or an ArcFrame per arc).  The reference for ``_speedups.arc_frame_rows``."""
+    arc, each the very numbers ``arc_geometry(...).frame`` gives (``arc_circle``, then ``_circle``'s steps,
+    without a Geometry, an ArcFrame or a call per arc: tests/kinematics/test_arc_frame_rows.py holds the two
+    equal).  The reference for ``_speedups.arc_frame_rows``."""
     rows: list[float] = []
-    extend = rows.extend
+    extend, hypot, atan2 = rows.extend, math.hypot, math.atan2
     circles: dict[tuple[str, int, int], tuple[int, int, int, int, float]] = {}  # arc_circle's, by its arguments
     previous = start
     for index, arc in enumerate(arcs):
@@ -100,11 +104,22 @@ def arc_frame_rows(start: Pose, ends: Sequence[Pose], arcs: Sequence[Arc | None]
             circle = circles.get(key)
             if circle is None:
                 circle = circles[key] = arc_circle(arc)
+                if not circle[3]:
+                    raise ValueError("turns must be non-zero: its sign is the direction of the arc")  # (arc_sweep's)
             u, v, normal, turns, epsilon = circle
             c1, c2 = arc.center
             cu, cv = (float(c2), float(c1)) if u == 2 else (float(c1), float(c2))  # (XZ: named x, z; u is z)
-            extend((float(index), float(u), float(v), cu, cv))
-            extend(_circle(previous, end, cu, cv, u, v, normal, turns, epsilon))
+            # _circle and arc_sweep, inlined (a call each took a fifth of the time an arc took here)
+            su, sv = previous[u] - cu, previous[v] - cv
+            r0, r1 = hypot(su, sv), hypot(end[u] - cu, end[v] - cv)
+            a0 = atan2(sv, su)
+            direction = 1.0 if turns > 0 else -1.0
+            sweep = (direction * (atan2(end[v] - cv, end[u] - cu) - a0)) % _TURN
+            if sweep <= epsilon or sweep == 0.0:
+                sweep = _TURN
+            sweep = direction * (sweep + _TURN * (abs(turns) - 1))
+            extend((float(index), float(u), float(v), cu, cv, r0, r1, a0, sweep,
+                    hypot(abs(sweep) * (r0 + r1) / 2.0, end[normal] - previous[normal])))
         previous = end
     return rows
 

@@ -9,10 +9,10 @@ core a few microseconds a line instead of a dozen.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
-from edingcnc_lang.machine.plain_runs import POSSESSIVE, usual_order, words_row
+from edingcnc_lang.machine.plain_runs import LETTERS_OF, POSSESSIVE, SHAPE_LEAST, shape_values, usual_order, words_row
 from edingcnc_lang.machine.state import G_2, G_3
 
 NO_MOTION = -1  # the motion in force is neither G2 nor G3
@@ -63,12 +63,23 @@ def plain_arcs(lines: Sequence[tuple[int, str]], first: int, start: Sequence[flo
     position = tuple(start)
     stop = min(len(lines), first + max(room, 0))
     index = first
+    look = True  # whether to look for a run of lines of the shape of the next one read the usual way
+    ahead: Iterator[Sequence[str]] = iter(())  # the rows of such a run, read at once
+    ahead_stop = index  # the line after it
     while index < stop:
         lineno, text = lines[index]
-        usual = match(text)
-        row = usual.groups() if usual is not None else words_row(text, _LETTERS)
-        if row is None:
-            break
+        if index < ahead_stop:
+            row: Sequence[str | None] | None = next(ahead)
+        else:
+            usual = match(text)
+            row = usual.groups() if usual is not None else words_row(text, _LETTERS)
+            if row is None:
+                break
+            if look and usual is not None and stop - index > SHAPE_LEAST and ";" not in text:
+                look, ahead = _rows_ahead(lines, index + 1, stop, text.translate(LETTERS_OF))
+                ahead_stop = index + 1 + len(ahead)
+                ahead = iter(ahead)
+        assert row is not None
         g, x, y, z, a, b, c, i, j, k, r, f = row  # number texts; empty or None where the line has no such word
         line_motion = motion
         if g:
@@ -135,6 +146,22 @@ def plain_arcs(lines: Sequence[tuple[int, str]], first: int, start: Sequence[flo
         position, motion, feed = end, line_motion, line_feed
         index += 1
     return index, True, motion, feed, numbers, ends, feeds, arcs, lengths
+
+
+def _rows_ahead(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str) -> tuple[bool, list[tuple[str, ...]]]:
+    """The rows (``ARC_ORDER``'s groups, '' for None) of the lines from ``first`` whose letters are ``shape``
+    (a line's words in ARC_ORDER's order, no comment), read as columns with string methods instead of a match
+    a line (plain_runs.shape_values); with them whether to look again after them (not after a look that
+    found none: a CAM pass's arcs change shape every few lines)."""
+    if lines[min(first + SHAPE_LEAST - 1, stop - 1)][1].translate(LETTERS_OF) != shape:
+        return False, []
+    count, values = shape_values(lines, first, stop, shape)
+    if not count:
+        return False, []
+    width = len(shape)
+    missing = [""] * count
+    columns = [values[shape.index(letter)::width] if letter in shape else missing for letter in _LETTERS]
+    return True, list(zip(*columns))
 
 
 def _arc_maker(arc_class: Any) -> tuple[Callable[..., Any], ...]:

@@ -45,8 +45,7 @@ _MOTION_OF = {text: G_0 if float(text) == 0.0 else G_1
 # CAM output and surfacing jobs write them, is read as columns with string methods instead of a match
 # and a loop step per line: the lines are plain (the check pass's FAST_LINE), so deleting the numbers
 # and blanks leaves a line's letters, and blanking the letters leaves its number texts.
-_LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
-_NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
+LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
 SHAPE_LEAST = 16  # lines of one shape that make a run worth reading in bulk
 SHAPE_BLOCK = 32  # lines read for the first block of a run of one shape; each further block is four times larger
 MAX_SKIP = 63  # chances let pass at most after looks for a run of one shape that found none
@@ -143,9 +142,9 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
                 if _looks.skip:
                     _looks.skip -= 1
                 else:
-                    shape = text.translate(_LETTERS_OF)
+                    shape = text.translate(LETTERS_OF)
                     taken = 0
-                    if lines[index + SHAPE_LEAST][1].translate(_LETTERS_OF) == shape:
+                    if lines[index + SHAPE_LEAST][1].translate(LETTERS_OF) == shape:
                         taken = _same_shape(lines, index + 1, stop, shape, g, line_motion, new_feed, position,
                                             offset, scale, incremental, (kinds, numbers, ends, feeds, in_force))
                     _looks.found(taken > 0)
@@ -165,24 +164,7 @@ def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: 
     """The lines from ``first`` on whose letters are ``shape`` (a line's words in the usual order, no
     comment) and whose G text is ``g``, taken as the loop of ``plain_moves`` would take them once it has
     read a line of that shape and appended to ``columns``; returns how many (0 for fewer than SHAPE_LEAST)."""
-    if "\n".join([line for _, line in lines[first:first + SHAPE_LEAST]]).translate(_LETTERS_OF) \
-            != "\n".join([shape] * SHAPE_LEAST):
-        return 0  # too short a run to be worth it (CAM output changes shape every few lines)
-    values: list[str] = []
-    block, start = SHAPE_BLOCK, first
-    while start < stop:
-        texts = [line for _, line in lines[start:min(start + block, stop)]]
-        joined = "\n".join(texts)
-        letters = joined.translate(_LETTERS_OF)
-        if letters != "\n".join([shape] * len(texts)):
-            taken = sum(1 for _ in takewhile(shape.__eq__, letters.split("\n")))
-            values += "\n".join(texts[:taken]).translate(_NUMBERS_OF).split()
-            start += taken
-            break
-        values += joined.translate(_NUMBERS_OF).split()
-        start += len(texts)
-        block *= 4
-    count = start - first
+    count, values = shape_values(lines, first, stop, shape)
     if not count:
         return 0
     width = len(shape)
@@ -223,6 +205,47 @@ def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: 
     feeds.extend(in_force if motion == G_1 else [0.0] * count)
     forces.extend(in_force)
     return count
+
+
+def shape_values(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str) -> tuple[int, list[str]]:
+    """How many of the lines from ``first`` (before ``stop``) have the letters ``shape`` (a line's words in
+    the order ARC_ORDER or USUAL_ORDER read, no comment), and their number texts, ``len(shape)`` a line, read
+    in blocks of SHAPE_BLOCK lines, each four times larger than the last; (0, []) for fewer than SHAPE_LEAST.
+
+    A block is read as ASCII bytes (any other character a '?', which no shape has), whose translations
+    run over a table instead of a dict a character: what LETTERS_OF and a letter's blanking do to a str."""
+    letters_of = shape.encode() + b"\n"
+    if _letters("\n".join([line for _, line in lines[first:first + SHAPE_LEAST]])) != letters_of * SHAPE_LEAST:
+        return 0, []  # too short a run to be worth it (CAM output changes shape every few lines)
+    values: list[str] = []
+    block, start = SHAPE_BLOCK, first
+    while start < stop:
+        texts = [line for _, line in lines[start:min(start + block, stop)]]
+        joined = "\n".join(texts)
+        letters = _letters(joined)
+        if letters != letters_of * len(texts):
+            taken = sum(1 for _ in takewhile(letters_of[:-1].__eq__, letters.split(b"\n")))
+            values += _numbers("\n".join(texts[:taken]))
+            start += taken
+            break
+        values += _numbers(joined)
+        start += len(texts)
+        block *= 4
+    return start - first, values
+
+
+_UPPER = bytes.maketrans(string.ascii_lowercase.encode(), string.ascii_uppercase.encode())
+_BLANK_LETTERS = bytes.maketrans(string.ascii_letters.encode(), b" " * len(string.ascii_letters))
+
+
+def _letters(text: str) -> bytes:
+    """``text.translate(LETTERS_OF)`` + a newline, in ASCII (another character a '?')."""
+    return (text + "\n").encode("ascii", "replace").translate(_UPPER, b"0123456789.+- \t")
+
+
+def _numbers(text: str) -> list[str]:
+    """The number texts of plain lines: what is left of them with their letters blanked, split."""
+    return text.encode("ascii", "replace").translate(_BLANK_LETTERS).decode("ascii").split()
 
 
 def _other_letters(letters: str) -> dict[int, int | None]:
