@@ -68,18 +68,17 @@ def plain_arcs(lines: Sequence[tuple[int, str]], first: int, start: Sequence[flo
     ahead_stop = index  # the line after it
     while index < stop:
         lineno, text = lines[index]
+        row: Sequence[str | None] | None
         if index < ahead_stop:
-            row: Sequence[str | None] | None = next(ahead)
+            row = next(ahead)
         else:
             usual = match(text)
             row = usual.groups() if usual is not None else words_row(text, _LETTERS)
             if row is None:
                 break
             if look and usual is not None and stop - index > SHAPE_LEAST and ";" not in text:
-                look, ahead = _rows_ahead(lines, index + 1, stop, text.translate(LETTERS_OF))
-                ahead_stop = index + 1 + len(ahead)
-                ahead = iter(ahead)
-        assert row is not None
+                look, count, ahead = _rows_ahead(lines, index + 1, stop, text.translate(LETTERS_OF))
+                ahead_stop = index + 1 + count
         g, x, y, z, a, b, c, i, j, k, r, f = row  # number texts; empty or None where the line has no such word
         line_motion = motion
         if g:
@@ -148,20 +147,19 @@ def plain_arcs(lines: Sequence[tuple[int, str]], first: int, start: Sequence[flo
     return index, True, motion, feed, numbers, ends, feeds, arcs, lengths
 
 
-def _rows_ahead(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str) -> tuple[bool, list[tuple[str, ...]]]:
+def _rows_ahead(lines: Sequence[tuple[int, str]], first: int, stop: int,
+                shape: str) -> tuple[bool, int, Iterator[tuple[str, ...]]]:
     """The rows (``ARC_ORDER``'s groups, '' for None) of the lines from ``first`` whose letters are ``shape``
     (a line's words in ARC_ORDER's order, no comment), read as columns with string methods instead of a match
-    a line (plain_runs.shape_values); with them whether to look again after them (not after a look that
-    found none: a CAM pass's arcs change shape every few lines)."""
+    a line (plain_runs.shape_values): whether to look again after them (not after a look that found none: a
+    CAM pass's arcs change shape every few lines), how many and the rows."""
     if lines[min(first + SHAPE_LEAST - 1, stop - 1)][1].translate(LETTERS_OF) != shape:
-        return False, []
+        return False, 0, iter(())
     count, values = shape_values(lines, first, stop, shape)
-    if not count:
-        return False, []
     width = len(shape)
     missing = [""] * count
-    columns = [values[shape.index(letter)::width] if letter in shape else missing for letter in _LETTERS]
-    return True, list(zip(*columns))
+    return count > 0, count, zip(*[values[shape.index(letter)::width] if letter in shape else missing
+                                   for letter in _LETTERS])
 
 
 def _arc_maker(arc_class: Any) -> tuple[Callable[..., Any], ...]:

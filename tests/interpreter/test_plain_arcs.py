@@ -59,3 +59,36 @@ def test_random_runs_of_arcs_are_the_general_paths(words: list[tuple[str, str, s
         for motion in (20, 30):
             taken = read(lines, 0, pose, motion, 300.0, len(lines))
             assert taken == bulk.arc_run(interp._arc_of_words, lines, 0, pose, motion, 300.0, len(lines)), lines
+
+
+def _run_of_arcs(count: int, form: str) -> list[str]:
+    """``count`` half circles along X, G3 and G2 in turn, in R or I/J form (one shape, as a job's long runs)."""
+    words = "R-1.0" if form == "R" else "I1.0 J0"
+    return [f"G{3 - k % 2} X{2.0 * (k + 1):.4f} Y0 {words}" for k in range(count)]
+
+
+def test_runs_of_one_shape_are_read_as_the_lines_are_one_by_one() -> None:
+    """Long runs of one shape (read as columns) give the general path's arcs, and stop where it stops: at a
+    line of another shape, at an arc it refuses, at another motion, at the end of the room."""
+    run = Run(RunOptions())
+    run.execute_text("G17 G90 G21\n", "job.nc")
+    interp = run.interpreter
+    pose = (0.0, 0.0, -1.0, 0.0, 0.0, 0.0)
+    cases = []
+    for form in ("R", "IJ"):
+        lines = _run_of_arcs(80, form)
+        cases.append(lines)
+        for at, other in ((40, "G3 X81 Y0 R0.1"), (17, "G3 X36 Y0 Z-2 R-1"), (50, "g02 x102 y0 r-1.0"),
+                          (30, "G1 X62 Y0"), (64, "G2 X130 Y0 I1 J0 ; note"), (20, "G3 X42 Y0 R-1 (é)"),
+                          (33, "G2 X68.0000 Y0 I1.0 J0.0"), (45, "G3.5 X92 Y0 R-1.0")):
+            cases.append(lines[:at] + [other] + lines[at + 1:])
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        monkeypatch.setattr(bulk, "_PLAIN_ARCS", plain_arcs)
+        read = interp._arc_reader()
+        for texts in cases:
+            numbered = tuple(enumerate(texts, 4))
+            for first in (0, 1, 25):
+                for room in (len(texts), 30):
+                    taken = read(numbered, first, pose, 20, 300.0, room)
+                    assert taken == bulk.arc_run(interp._arc_of_words, numbered, first, pose, 20, 300.0, room), texts
+    assert len(read(tuple(enumerate(cases[0])), 0, pose, 20, 300.0, 80)[3]) == 80
