@@ -5,18 +5,14 @@ the same lines, to the bit (tests/interpreter/test_hole_runs.py).
 """
 from __future__ import annotations
 
-import string
 from collections.abc import Sequence
 from functools import cache
 from itertools import islice, repeat, takewhile
 from operator import add, mul
 
 from edingcnc_lang.canon import AXES
+from edingcnc_lang.machine.plain_runs import letters_of_lines, numbers_of_lines
 
-# A line's letters (upper case) once its numbers and blanks are deleted, and its number texts once its letters
-# are blanked: the lines are plain (the check pass's FAST_LINE), so each letter has exactly one number.
-_LETTERS_OF = str.maketrans({**dict.fromkeys("0123456789.+- \t"), **{c: c.upper() for c in string.ascii_lowercase}})
-_NUMBERS_OF = str.maketrans(dict.fromkeys(string.ascii_letters, " "))
 BLOCK = 512  # lines read at a time
 
 # What hole_moves returns: the index of the first line it left, the line number of each move and its end.
@@ -58,8 +54,10 @@ def hole_moves(lines: Sequence[tuple[int, str]], first: int, stop: int, axes: tu
     while index < stop:
         chunk = lines[index:min(index + BLOCK, stop)]
         joined = "\n".join([text for _, text in chunk])
-        letters = joined.translate(_LETTERS_OF).split("\n")
-        values = joined.translate(_NUMBERS_OF).split()
+        # each line's letters and the lines' number texts: the lines are plain (the check pass's FAST_LINE), so
+        # each letter has exactly one number
+        letters = letters_of_lines(joined).decode("ascii").split("\n")
+        values = numbers_of_lines(joined)
         at = taken = 0  # the numbers and lines of the chunk taken
         while taken < len(chunk):
             shape = shapes.get(letters[taken])

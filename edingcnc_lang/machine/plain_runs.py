@@ -215,20 +215,20 @@ def shape_values(lines: Sequence[tuple[int, str]], first: int, stop: int, shape:
     A block is read as ASCII bytes (any other character a '?', which no shape has), whose translations
     run over a table instead of a dict a character: what LETTERS_OF and a letter's blanking do to a str."""
     letters_of = shape.encode() + b"\n"
-    if _letters("\n".join([line for _, line in lines[first:first + SHAPE_LEAST]])) != letters_of * SHAPE_LEAST:
+    if letters_of_lines("\n".join([line for _, line in lines[first:first + SHAPE_LEAST]])) != letters_of * SHAPE_LEAST:
         return 0, []  # too short a run to be worth it (CAM output changes shape every few lines)
     values: list[str] = []
     block, start = SHAPE_BLOCK, first
     while start < stop:
         texts = [line for _, line in lines[start:min(start + block, stop)]]
         joined = "\n".join(texts)
-        letters = _letters(joined)
+        letters = letters_of_lines(joined)
         if letters != letters_of * len(texts):
             taken = sum(1 for _ in takewhile(letters_of[:-1].__eq__, letters.split(b"\n")))
-            values += _numbers("\n".join(texts[:taken]))
+            values += numbers_of_lines("\n".join(texts[:taken]))
             start += taken
             break
-        values += _numbers(joined)
+        values += numbers_of_lines(joined)
         start += len(texts)
         block *= 4
     return start - first, values
@@ -238,17 +238,18 @@ _UPPER = bytes.maketrans(string.ascii_lowercase.encode(), string.ascii_uppercase
 _BLANK_LETTERS = bytes.maketrans(string.ascii_letters.encode(), b" " * len(string.ascii_letters))
 
 
-def _letters(text: str) -> bytes:
-    """``text.translate(LETTERS_OF)`` + a newline, in ASCII (another character a '?')."""
+def letters_of_lines(text: str) -> bytes:
+    """The letters of the lines ``text`` (``text.translate(LETTERS_OF)``: upper case, numbers and blanks
+    deleted), each line's ended by a newline, as ASCII bytes (another character a '?', which no shape has)."""
     return (text + "\n").encode("ascii", "replace").translate(_UPPER, b"0123456789.+- \t")
 
 
-def _numbers(text: str) -> list[str]:
+def numbers_of_lines(text: str) -> list[str]:
     """The number texts of plain lines: what is left of them with their letters blanked, split."""
     return text.encode("ascii", "replace").translate(_BLANK_LETTERS).decode("ascii").split()
 
 
-def _other_letters(letters: str) -> dict[int, int | None]:
+def _otherletters_of_lines(letters: str) -> dict[int, int | None]:
     """A translation that deletes a line's blanks, numbers, N and ``letters`` (either case): what is left
     is the letters of other words."""
     return str.maketrans(dict.fromkeys("0123456789.+- \tN" + letters + ("N" + letters).lower()))
@@ -261,7 +262,7 @@ def words_row(text: str, letters: str = "GXYZABCF") -> list[str] | None:
     """The number texts of the words ``letters`` of a line whose words are in another order than usual_order's
     ('' where it has no such word); None when it has another word (but N) or one twice."""
     if letters not in _ROWS:
-        _ROWS[letters] = ({letter: column for column, letter in enumerate(letters)}, _other_letters(letters))
+        _ROWS[letters] = ({letter: column for column, letter in enumerate(letters)}, _otherletters_of_lines(letters))
     columns, other_letters = _ROWS[letters]
     if "(" not in text and ";" not in text and text.translate(other_letters):
         return None  # a word of another letter (an arc's centre, M, S, T): told without reading the words
