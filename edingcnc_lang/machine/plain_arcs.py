@@ -12,7 +12,8 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
-from edingcnc_lang.machine.plain_runs import LETTERS_OF, POSSESSIVE, SHAPE_LEAST, shape_values, usual_order, words_row
+from edingcnc_lang.machine.plain_runs import (LETTERS_OF, POSSESSIVE, SHAPE_LEAST, line_target, shape_values,
+                                               usual_order, words_row)
 from edingcnc_lang.machine.state import G_2, G_3
 
 NO_MOTION = -1  # the motion in force is neither G2 nor G3
@@ -98,13 +99,7 @@ def plain_arcs(lines: Sequence[tuple[int, str]], first: int, start: Sequence[flo
             line_feed = value * scale
         if line_feed <= 0:
             break
-        base = position if incremental else offset
-        end = (base[0] + float(x) * scale if x else position[0],
-               base[1] + float(y) * scale if y else position[1],
-               base[2] + float(z) * scale if z else position[2],
-               base[3] + float(a) if a else position[3],
-               base[4] + float(b) if b else position[4],
-               base[5] + float(c) if c else position[5])
+        end = line_target(position, offset, scale, incremental, x, y, z, a, b, c)
         s1, s2, e1, e2 = position[u], position[v], end[u], end[v]
         clockwise = (line_motion == G_2) != reverse
         if r:  # geometry.center_from_radius

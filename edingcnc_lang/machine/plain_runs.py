@@ -126,13 +126,7 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
             else:
                 add_kind("rapid")
                 add_feed(0.0)
-            base = position if incremental else offset
-            position = (base[0] + float(x) * scale if x else position[0],
-                        base[1] + float(y) * scale if y else position[1],
-                        base[2] + float(z) * scale if z else position[2],
-                        base[3] + float(a) if a else position[3],
-                        base[4] + float(b) if b else position[4],
-                        base[5] + float(c) if c else position[5])
+            position = line_target(position, offset, scale, incremental, x, y, z, a, b, c)
             add_number(lineno)
             add_end(position)
             add_force(new_feed)
@@ -156,6 +150,20 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
         motion, feed = line_motion, new_feed
         index += 1
     return index, index - first, motion, feed, kinds, numbers, ends, feeds, in_force
+
+
+def line_target(position: Sequence[float], offset: Sequence[float], scale: float, incremental: bool, x: str | None,
+                y: str | None, z: str | None, a: str | None, b: str | None, c: str | None) -> tuple[float, ...]:
+    """The machine position a line's axis words (number texts, empty or None where it has none) point at
+    from ``position``, as the general path's ``_target`` finds it: X Y Z times ``scale`` (inch), added to
+    the position under G91, to the work ``offset`` under G90; the bulk path's straight lines and arcs."""
+    base = position if incremental else offset
+    return (base[0] + float(x) * scale if x else position[0],
+            base[1] + float(y) * scale if y else position[1],
+            base[2] + float(z) * scale if z else position[2],
+            base[3] + float(a) if a else position[3],
+            base[4] + float(b) if b else position[4],
+            base[5] + float(c) if c else position[5])
 
 
 def _same_shape(lines: Sequence[tuple[int, str]], first: int, stop: int, shape: str, g: str | None, motion: int,
