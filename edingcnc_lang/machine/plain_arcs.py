@@ -2,9 +2,9 @@
 ``_speedups.plain_arcs`` (``csrc/speedups_arcs.c``), which the bulk path (``bulk.py``) calls for the arc
 lines of a run.  Both read a line as the general path does (``BulkPath._arc_of_words``: its ``_target``
 and ``arc_plan`` over geometry.py's ``center_from_radius``, ``check_radius`` and ``sweep``) and give the same
-records to the bit (tests/speedups/test_speedups.py holds all three equal); this one is that reading written
-as one loop over a run's lines, the steps of those functions inlined, so that a run of arcs costs the Python
-core a few microseconds a line instead of a dozen.
+records to the bit (tests/arc_lines.py holds both to it); this one is that reading written as one loop over a
+run's lines, the steps of those functions inlined and a run of lines of one shape read as columns, so that a
+run of arcs costs the Python core a few microseconds a line instead of a dozen.
 """
 from __future__ import annotations
 
