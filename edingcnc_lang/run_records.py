@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, overload
 
-from edingcnc_lang.canon import AXES, Event, Move, Pose
+from edingcnc_lang.canon import AXES, Batch, Event, Move, Pose
 from edingcnc_lang.diagnostics import Diagnostic
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.events import MessageEvent
@@ -149,6 +149,10 @@ class RunOptions:
     strict: bool = False  # macro lines that do not parse are errors at load, not warnings
     on_warning: Callable[[Diagnostic], None] | None = None  # each load warning, once, as it is found
     on_timed_move: Callable[[Move, Pose, Timing], None] | None = None  # every move with its planned Timing
+    # the moves the machine makes in bulk, a ``Batch`` at once (the array form of the records ``on_move`` would
+    # hear: ``batch.moves()``); ``on_move`` then hears only the moves made one at a time.  Not with
+    # ``on_timed_move``, whose moves come one at a time with their timing
+    on_batch: Callable[[Batch], None] | None = None
     # more outputs in this process (``ecnc diff``'s recorder): each hears every planned move, every batch of
     # straight moves at once (``write_batch``: the columns, no Move per move) and every event, in program order
     sinks: Sequence[TimedSink] = ()

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from edingcnc_lang.syntax import nodes as n
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Move, Pose
+from edingcnc_lang.canon import Batch, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig, load_config, save_variables
 from edingcnc_lang.errors import Cancelled, EcncError, Interrupted, Location, MachineError
 from edingcnc_lang.host import DialogAnswer, DialogCallback, DialogField, guarded
@@ -108,9 +108,12 @@ class Run:
         # without on_timed_move, on_move and on_event hear each move and event as the machine makes it;
         # with it, the tap only stops the run at once when it is cancelled (motion/callback_tap.py)
         self._tap: CallbackTap | None = None
-        if options.on_move or options.on_event or timed:
+        if timed and options.on_batch is not None:
+            raise EcncError("on_batch hears the moves as the machine makes them, on_timed_move one at a "
+                             "time with their timing: give one of them")
+        if options.on_move or options.on_event or options.on_batch or timed:
             stage = self._tap = CallbackTap(stage, None if timed else options.on_move,
-                                            None if timed else options.on_event)
+                                            None if timed else options.on_event, options.on_batch)
         self.motion = MotionStage(self.config, self.kinematics, stage, self._write_param,
                                   sample_always=options.samples is not None)
         if self.planner is not None:
@@ -437,13 +440,21 @@ class MoveStream(Iterator[Move]):
         self._closed = False
         self.result: RunResult | None = None
         self.error: EcncError | None = None
-        outer = run._tap.on_move
+        outer, outer_batch = run._tap.on_move, run._tap.on_batch
 
         def put(move: Move, joints: Pose) -> None:
             if outer is not None:
                 outer(move, joints)
             self._queue.put(move)
+
+        def put_batch(batch: Batch) -> None:  # (the moves of a batch one at a time, as without on_batch)
+            if outer_batch is not None:
+                outer_batch(batch)
+            for move in batch.moves():
+                self._queue.put(move)
         run._tap.on_move = put
+        if outer_batch is not None:
+            run._tap.on_batch = put_batch
         self._thread = threading.Thread(target=self._work, args=(job,), name="ecnc-run", daemon=True)
         self._thread.start()
 

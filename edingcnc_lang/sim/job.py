@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from edingcnc_lang.machine import tables as t
-from edingcnc_lang.canon import Event, Move, Pose
+from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.sampling import arc_points
@@ -107,20 +107,72 @@ class Simulator(SimulatorBase[Stock]):
         index = self.record(move)
         if move.kind not in CUTTING_KINDS:
             return
+        shift = self._shift()
+        self._queue_move(move, index, self._code(move.kind, move.start, move.end), shift)
+
+    def on_batch(self, batch: Batch) -> None:
+        """A batch's moves, as ``on_move`` takes them one by one: its straight moves' rows and codes as arrays,
+        queued in pieces that fill the queue exactly when ``on_move``'s would (a cut's findings depend on
+        what it cuts at once), its arcs a move at a time."""
+        if self.on_snapshot is not None:  # the viewer's frames: a cut and a snapshot before every every-th move
+            for move in batch.moves():
+                self.on_move(move, move.end)
+            return
+        first = self.record_batch(batch)  # (a batch holds rapids, feed moves and arcs: all of them cut)
+        shift = np.array(self._shift())
+        count = len(batch)
+        ends = np.array(batch.ends, dtype=float)[:, :3]
+        starts = np.vstack((np.array(batch.start[:3], dtype=float), ends[:-1]))
+        codes = self._codes(np.array([kind == "rapid" for kind in batch.kinds]), starts, ends)
+        rows = np.hstack((starts - shift, ends - shift))
+        arcs = [] if batch.arcs is None else [k for k, arc in enumerate(batch.arcs) if arc is not None]
+        index = 0
+        for stop in [*arcs, count]:
+            while index < stop:  # straight moves
+                take = min(stop - index, self.queue.room)
+                self.queue.add_rows(rows[index:index + take], np.arange(first + index, first + index + take),
+                                    codes[index:index + take])
+                index += take
+                if self.queue.full:
+                    self.flush()
+            if stop < count:  # an arc
+                start = batch.ends[stop - 1] if stop else batch.start
+                self._queue_move(batch.move(stop, start), first + stop, int(codes[stop]), tuple(shift.tolist()))
+                index = stop + 1
+
+    def _shift(self) -> tuple[float, float, float]:
+        """Machine coordinates of the stock's origin less the tool length in force: a move's tip in the stock's
+        frame is its point less this (the frame is the job's first work offset, set at its first move)."""
         ox, oy, oz, length = self._offset()
         if self.frame is None:
             self.frame = (ox, oy, oz)
         fx, fy, fz = self.frame
-        fz += length
+        return fx, fy, fz + length
+
+    def _code(self, kind: str, start: Pose, end: Pose) -> int:
+        """The finding code a move's cut is checked with: a rapid, a feed with the spindle off, a flat tool's
+        plunge (straight down), else none."""
+        if kind in ("rapid", "home"):
+            return RAPID
+        if not self.spindle_on:
+            return SPINDLE_OFF
+        if self.tool.shape == "flat" and end[2] < start[2] and start[0] == end[0] and start[1] == end[1]:
+            return PLUNGE
+        return NONE
+
+    def _codes(self, rapid: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+        """``_code`` of moves at once: ``rapid`` which are rapids, ``starts`` and ``ends`` their X Y Z."""
+        codes = np.full(len(rapid), NONE if self.spindle_on else SPINDLE_OFF, dtype=np.int8)
+        if self.spindle_on and self.tool.shape == "flat":
+            plunge = (ends[:, 2] < starts[:, 2]) & (starts[:, 0] == ends[:, 0]) & (starts[:, 1] == ends[:, 1])
+            codes[plunge] = PLUNGE
+        codes[rapid] = RAPID
+        return codes
+
+    def _queue_move(self, move: Move, index: int, code: int, shift: tuple[float, float, float]) -> None:
+        """Queue a move's rows (a straight move's segment, an arc's chords) in the stock's frame; cut when full."""
+        fx, fy, fz = shift
         start, end = move.start, move.end
-        if move.kind in ("rapid", "home"):
-            code = RAPID
-        elif not self.spindle_on:
-            code = SPINDLE_OFF
-        elif self.tool.shape == "flat" and end[2] < start[2] and start[0] == end[0] and start[1] == end[1]:
-            code = PLUNGE
-        else:
-            code = NONE
         if move.arc is None:
             self.queue.add((start[0] - fx, start[1] - fy, start[2] - fz, end[0] - fx, end[1] - fy, end[2] - fz),
                            index, code)
@@ -178,7 +230,7 @@ def drive(job: str | Path, options: RunOptions | None, name: str | None,
     ``on_move``/``on_event``; callbacks already in ``options`` still get them); a runtime error is
     returned, one before anything ran (syntax, configuration) raised."""
     options = options or RunOptions()
-    outer_move, outer_event = options.on_move, options.on_event
+    outer_move, outer_event, outer_batch = options.on_move, options.on_event, options.on_batch
     holder: list[Any] = []
 
     def on_move(move: Move, joints: Pose) -> None:
@@ -186,12 +238,21 @@ def drive(job: str | Path, options: RunOptions | None, name: str | None,
         if outer_move:
             outer_move(move, joints)
 
+    def on_batch(batch: Batch) -> None:
+        holder[0].on_batch(batch)
+        if outer_batch:
+            outer_batch(batch)
+        elif outer_move:
+            for move in batch.moves():
+                outer_move(move, move.end)
+
     def on_event(event: Event) -> None:
         holder[0].on_event(event)
         if outer_event:
             outer_event(event)
 
-    run = Run(replace(options, on_move=on_move, on_event=on_event, plan=False))
+    run = Run(replace(options, on_move=on_move, on_event=on_event, plan=False,
+                      on_batch=on_batch if options.on_timed_move is None else None))
     holder.append(make(run))
     result: RunResult | None = None
     error: EcncError | None = None

@@ -1,6 +1,7 @@
 """Moves waiting to be cut, as flat arrays of numbers: one queue for every simulator.
 
-A simulator hears moves one at a time (``on_move``) but cuts them in batches with numpy, so each
+A simulator hears moves one at a time (``on_move``) or a batch at a time (``on_batch``) but cuts them in
+batches with numpy, so each
 queues the rows of numbers its cut reads (the box sim a segment's two ends, the lathe the
 controlled point's two (z, r), the rotary axis the tool's sampled poses), each row with the index
 of the move it belongs to and its finding code, and takes them as arrays once ``full``.
@@ -32,6 +33,18 @@ class MoveQueue:
         count = (len(self.rows) - before) // self.width
         self.moves.extend([move] * count)
         self.codes.extend([code] * count)
+
+    def add_rows(self, rows: np.ndarray, moves: np.ndarray, codes: np.ndarray) -> None:
+        """Queue ``rows`` (N x ``width``), each of the move ``moves[i]`` with the code ``codes[i]``: what N calls
+        of ``add`` queue, for the moves of a batch at once."""
+        self.rows.frombytes(np.ascontiguousarray(rows, dtype=float).tobytes())
+        self.moves.frombytes(np.ascontiguousarray(moves, dtype=np.int64).tobytes())
+        self.codes.frombytes(np.ascontiguousarray(codes, dtype=np.int8).tobytes())
+
+    @property
+    def room(self) -> int:
+        """Rows still to queue before the queue is ``full``."""
+        return max(BATCH - len(self.moves), 0)
 
     def __len__(self) -> int:
         return len(self.moves)

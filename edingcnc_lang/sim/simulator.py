@@ -10,7 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Generic, TypeVar
 
-from edingcnc_lang.canon import Event, Move
+from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
 from edingcnc_lang.sim.findings import CutFinding
 from edingcnc_lang.sim.queue import MoveQueue
@@ -54,6 +54,15 @@ class SimulatorBase(Generic[StockT]):
         """Tool ``number`` is in the spindle now (what is queued is cut already)."""
         raise NotImplementedError
 
+    def on_move(self, move: Move, joints: Pose) -> None:
+        """Queue a move's cut (cutting what is queued once the queue is full)."""
+        raise NotImplementedError
+
+    def on_batch(self, batch: Batch) -> None:
+        """A batch's moves: one ``on_move`` each, unless the simulator has a batch form of its own."""
+        for move in batch.moves():
+            self.on_move(move, move.end)
+
     def on_event(self, event: Event) -> None:
         if isinstance(event, SpindleEvent):
             self.spindle_on = event.m in (3, 4)
@@ -69,6 +78,14 @@ class SimulatorBase(Generic[StockT]):
             self.on_snapshot(index, self.stock)
         self.lines.append(move.line)
         self.files.append(self.paths.setdefault(move.path, len(self.paths)))
+        return index
+
+    def record_batch(self, batch: Batch) -> int:
+        """Note the file and line of each of ``batch``'s moves, as ``record`` notes a move's (without snapshots:
+        a simulator with ``on_snapshot`` takes a batch a move at a time); the index of its first move."""
+        index = len(self.lines)
+        self.lines.extend(batch.lines)
+        self.files.extend([self.paths.setdefault(batch.path, len(self.paths))] * len(batch))
         return index
 
     def source(self, index: int) -> tuple[str, int]:
