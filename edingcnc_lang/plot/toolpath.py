@@ -11,19 +11,19 @@ from __future__ import annotations
 import math
 import tempfile
 from array import array
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.canon import Arc, Event, Move, Pose
+from edingcnc_lang.canon import Arc, Batch, Event, Move, Pose
 from edingcnc_lang.events import ToolChangeEvent
 from edingcnc_lang.config.machine_config import MachineConfig, load_config
 from edingcnc_lang.errors import EcncError
 from edingcnc_lang.kinematics.base import declared_joint_kinds
 from edingcnc_lang.kinematics.trajectory import arc_geometry
-from edingcnc_lang.motion.sinks import Timing
+from edingcnc_lang.motion.sinks import Samples, Timing
 from edingcnc_lang.machine.tables import TOOL_CURRENT
 from edingcnc_lang.plot.lathe import WorkOffsetEvent, watch_offsets
 from edingcnc_lang.runner import Run, RunOptions, RunResult
@@ -265,7 +265,8 @@ def _caller_lines(path: Toolpath) -> np.ndarray:
 
 
 class Recorder:
-    """The ``on_timed_move``/``on_event`` callbacks that collect a run's moves with the tool in use."""
+    """A sink of the run's planner (``RunOptions.sinks``) that collects its moves with the tool in use: a move
+    at a time (``move``) or a batch's columns at once (``write_batch``, the same numbers), and the events."""
 
     def __init__(self) -> None:
         # flat arrays of doubles, not lists of tuples: a million moves take ~180 MB, not ~750 MB
@@ -278,7 +279,7 @@ class Recorder:
         self.offset = (0.0, 0.0, 0.0)  # a lathe's run: the work offset in force (plot/lathe.py)
         self.offsets = array("d")      # ... and each move's
 
-    def move(self, move: Move, joints: Pose, timing: Timing) -> None:
+    def move(self, move: Move, joints: Pose, _samples: Samples | None, timing: Timing) -> None:
         file_index = self.paths.setdefault(move.path, len(self.paths))
         if move.arc is not None:
             self.arcs[len(self.rows) // ROW] = move.arc
@@ -288,6 +289,38 @@ class Recorder:
         self.poses.extend(move.end)
         self.poses.extend(joints)
         self.offsets.extend(self.offset)
+
+    def write_batch(self, batch: Batch, times: Sequence[float], speeds: Sequence[float]) -> None:
+        """A batch's rows from its columns: what ``move`` records for each of its moves (their joints are their
+        ends, as the planner hands a batch's moves on one at a time)."""
+        count = len(batch)
+        if not count:
+            return
+        first = len(self.rows) // ROW
+        table = np.empty((count, ROW))
+        kind = self._kind
+        table[:, 0] = [kind.get(k, 1) for k in batch.kinds]
+        table[:, 1] = self.tool
+        table[:, 2] = batch.lines
+        table[:, 3] = self.paths.setdefault(batch.path, len(self.paths))
+        table[:, 4] = batch.feeds
+        clock = np.asarray(times, dtype=float)
+        table[:, 5], table[:, 6] = clock[:count], clock[1:count + 1]
+        table[:, 7] = speeds[:count]
+        table[:, 8] = batch.caller
+        ends = np.array(batch.ends, dtype=float).reshape(count, 6)
+        poses = np.empty((count, 3, 6))
+        poses[0, 0] = batch.start
+        poses[1:, 0] = ends[:-1]
+        poses[:, 1] = poses[:, 2] = ends
+        self.rows.frombytes(table.tobytes())
+        self.poses.frombytes(poses.tobytes())
+        self.offsets.frombytes(np.tile(np.asarray(self.offset, dtype=float), count).tobytes())
+        if batch.arcs is not None:
+            self.arcs.update((first + k, arc) for k, arc in enumerate(batch.arcs) if arc is not None)
+
+    def close(self) -> None:
+        """(The rows are read by ``toolpath`` when the run has ended.)"""
 
     def event(self, event: Event) -> None:
         if isinstance(event, ToolChangeEvent):
@@ -346,22 +379,10 @@ def record_job(job: str | Path, options: RunOptions | None = None, samples: bool
             return path
     options = options or RunOptions()
     recorder = Recorder()
-    outer_move, outer_event = options.on_timed_move, options.on_event
-
-    def on_timed_move(move: Move, joints: Pose, timing: Timing) -> None:
-        recorder.move(move, joints, timing)
-        if outer_move:
-            outer_move(move, joints, timing)
-
-    def on_event(event: Event) -> None:
-        recorder.event(event)
-        if outer_event:
-            outer_event(event)
-
     config = load_config(options.ini) if options.ini else MachineConfig.default()
     result: RunResult | None = None
     error: EcncError | None = None
-    run = Run(replace(options, on_timed_move=on_timed_move, on_event=on_event))
+    run = Run(replace(options, sinks=(*options.sinks, recorder)))
     recorder.tool = int(run.interpreter.params.read(TOOL_CURRENT))  # the tool the ini's [VARIABLES] left in
     if config.lathe:
         watch_offsets(run)
