@@ -92,15 +92,17 @@ def stamps(stock: RoundStock, poses: np.ndarray, radius: float, part: Part | Non
     ray_start = np.cumsum(per_a) - per_a
     pair_s = np.repeat(np.arange(len(pose_s)), width)
     pair_a = np.arange(len(pair_s)) - np.repeat(np.cumsum(width) - width - ray_start[pose_s], width)
-    y = poses[pose_s, 1][pair_s]
-    lo_s, hi_s = _sides(y, half[pair_s], c[pair_a])
-    low, high = np.maximum(lo_a[pair_a], lo_s), np.minimum(hi_a[pair_a], hi_s)
-    keep = (low < high) & (high >= 0)
+    y = poses[pose_s, 1]
+    low, high = _sides(y, half, c, pair_s, pair_a)
+    np.maximum(lo_a[pair_a], low, out=low)  # (in _flat's order: the same zero's sign on a tie)
+    np.minimum(hi_a[pair_a], high, out=high)
+    keep = low < high
+    keep &= high >= 0
     if part.cutter is not None and keep.any():
         k = np.flatnonzero(keep)
         ks, ka = pair_s[k], pair_a[k]
         kp = pose_s[ks]
-        dx_k, y_k, z_k, c_k, s_k = dx[ks], y[k], poses[kp, 2], c[ka], s[ka]
+        dx_k, y_k, z_k, c_k, s_k = dx[ks], y[ks], poses[kp, 2], c[ka], s[ka]
         if part.cutter.shape == "ball":
             low[k], high[k] = _ball(part, dx_k, y_k, z_k, half[ks], c_k, s_k)
         elif part.cutter.shape == "vee":
@@ -142,14 +144,24 @@ def _heights(bottom: np.ndarray, top: np.ndarray | None, s: np.ndarray) -> tuple
     return lo, hi
 
 
-def _sides(y: np.ndarray, half: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _sides(y: np.ndarray, half: np.ndarray, c: np.ndarray, row: np.ndarray | None = None,
+           ray: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The ray's interval in the strip |ρ c - y| <= half, ``c`` its cosine (a ray along q: inside the
-    tool's width or not at all)."""
+    tool's width or not at all); with ``row`` and ``ray``, of the pairs (``y[row]``, ``half[row]``,
+    ``c[ray]``): the strip's edges y ± half worked out once a row."""
+    row = np.arange(len(y)) if row is None else row
+    ray = np.arange(len(c)) if ray is None else ray
     with np.errstate(divide="ignore", invalid="ignore"):
-        right, left = c > 1e-12, c < -1e-12
-        across = np.abs(y) <= half
-        side_lo = np.where(right, (y - half) / c, np.where(left, (y + half) / c, np.where(across, -np.inf, np.inf)))
-        side_hi = np.where(right, (y + half) / c, np.where(left, (y - half) / c, np.where(across, np.inf, -np.inf)))
+        right, level = c > 1e-12, np.abs(c) <= 1e-12  # (not right and not level: left, c < -1e-12)
+        edge = (y - half)[row] / c[ray]  # the edge a ray to the right (c > 0) enters at, one to the left leaves at
+        other = (y + half)[row] / c[ray]
+        facing = right[ray]
+        side_lo, side_hi = np.where(facing, edge, other), np.where(facing, other, edge)
+        if level.any():
+            along = np.flatnonzero(level[ray])
+            across = np.abs(y[row[along]]) <= half[row[along]]
+            side_lo[along] = np.where(across, -np.inf, np.inf)
+            side_hi[along] = np.where(across, np.inf, -np.inf)
     return side_lo, side_hi
 
 
