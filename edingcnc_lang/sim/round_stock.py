@@ -115,18 +115,21 @@ class RoundStock:
         bore = start_bore
         top = float(start_top.max()) if len(cell) else 0.0  # no running minimum above it counts
         groups = Groups(cell)
+        floor = np.maximum(lo, 0.0)  # a cut goes no deeper than the axis
         for _ in range(2):  # the second time with the bore as the earlier entries of the cell left it
             at_bore = lo <= bore + EPS
             outside = ~at_bore if open_top else ~at_bore & (hi >= start_top - EPS)
             before = np.minimum(start_top, groups.running_min(np.where(outside, lo, np.inf), top))
-            surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
-            before = np.minimum(start_top, groups.running_min(np.where(surface, np.maximum(lo, 0.0), np.inf), top))
+            surface = hi >= before - EPS  # a cut from outside if it reaches the surface
+            if open_top:
+                surface |= ~at_bore
+            before = np.minimum(start_top, groups.running_min(np.where(surface, floor, np.inf), top))
             while not open_top:  # a chain of cuts, each reaching only the surface the one before left
                 grown = surface | (hi >= before - EPS)  # grows as the surface sinks: its end is the cut in order
                 if np.array_equal(grown, surface):
                     break
                 surface = grown
-                before = np.minimum(start_top, groups.running_min(np.where(surface, np.maximum(lo, 0.0), np.inf), top))
+                before = np.minimum(start_top, groups.running_min(np.where(surface, floor, np.inf), top))
             surface &= lo < before - EPS
             boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
             if not boring.any() or bore is not start_bore:
@@ -135,7 +138,7 @@ class RoundStock:
         depth = np.zeros(len(cell))
         depth[surface] = np.maximum(before[surface] - np.maximum(lo[surface], bore[surface]), 0.0)
         depth[boring] = np.minimum(hi[boring], before[boring]) - bore[boring]
-        _fold(np.minimum, outer, cell[surface], np.maximum(lo[surface], 0.0).astype(np.float32))
+        _fold(np.minimum, outer, cell[surface], floor[surface].astype(np.float32))
         if boring.any():
             _fold(np.maximum, inner, cell[boring], hi[boring].astype(np.float32))
         removed = np.empty(len(cells))
