@@ -98,7 +98,7 @@ class CylinderResult(SimOutcome[RoundStock]):
 
 
 class CylinderSimulator(SimulatorBase[RoundStock]):
-    """The ``on_move``/``on_event`` callbacks stamping a mill's tool into a bar on its rotary axis."""
+    """The ``on_move``/``on_batch``/``on_event`` callbacks stamping a mill's tool into a bar on its rotary axis."""
 
     def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int,
                  axis: RotaryAxis | None = None) -> None:
