@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from edingcnc_lang.canon import Move, Pose
+from edingcnc_lang.canon import Batch, Move, Pose
 from edingcnc_lang.config.machine_config import MachineConfig
 from edingcnc_lang.errors import EcncError, Location
 from edingcnc_lang.machine import tables as t
@@ -62,6 +62,12 @@ class RotaryAxis:
             return row[1] - off[1], off[0] - row[0], row[2] - off[2], row[4] - off[4]
         return row[0] - off[0], row[1] - off[1], row[2] - off[2], row[3] - off[3]
 
+    def frames(self, rows: np.ndarray, off: Sequence[float]) -> np.ndarray:
+        """``frame`` of many rows of joints at once (N x 6 -> N x 4), the very same numbers."""
+        if self.letter == "B":
+            return np.column_stack((rows[:, 1] - off[1], off[0] - rows[:, 0], rows[:, 2] - off[2], rows[:, 4] - off[4]))
+        return np.column_stack((rows[:, 0] - off[0], rows[:, 1] - off[1], rows[:, 2] - off[2], rows[:, 3] - off[3]))
+
     def work(self, pose: Sequence[float]) -> tuple[float, float, float]:
         """The work X Y Z of a pose of the bar's frame (a finding's position)."""
         axial, p, q = float(pose[0]), float(pose[1]), float(pose[2])
@@ -92,7 +98,7 @@ class CylinderResult(SimOutcome[RoundStock]):
 
 
 class CylinderSimulator(SimulatorBase[RoundStock]):
-    """The ``on_move``/``on_event`` callbacks stamping a mill's tool into a bar on its rotary axis."""
+    """The ``on_move``/``on_batch``/``on_event`` callbacks stamping a mill's tool into a bar on its rotary axis."""
 
     def __init__(self, stock: RoundStock, run: Run, tools: dict[int, Tool] | None, first_tool: int,
                  axis: RotaryAxis | None = None) -> None:
@@ -122,6 +128,10 @@ class CylinderSimulator(SimulatorBase[RoundStock]):
             if self.tips is not None:  # a probe move: the tool stays where the last move left it
                 self.tips.extend(self.tips[-2:] if len(self.tips) else (math.nan, math.nan))
             return
+        self._queue_move(move, index)
+
+    def _queue_move(self, move: Move, index: int) -> None:
+        """Queue the samples of a cutting move (the ``index``-th) in the bar's frame; cut once the queue is full."""
         off = self.run.interpreter.offset()  # Z holds the tool length: the tip's Z
         code = RAPID if move.kind in ("rapid", "home") else CUT if self.spindle_on else SPINDLE_OFF
         rows: list[Sequence[float]]
@@ -147,6 +157,62 @@ class CylinderSimulator(SimulatorBase[RoundStock]):
         self.queue.add(samples, index, code)
         if self.queue.full:
             self.flush()
+
+    def on_batch(self, batch: Batch) -> None:
+        """A batch's moves, as ``on_move`` takes them one by one: the straight moves' samples and codes as
+        arrays, queued in pieces that fill the queue exactly when ``on_move``'s would (what is cut at once
+        decides the findings), its arcs a move at a time.  The viewer's frames and tips, and kinematics whose
+        joints are not the position, take the batch a move at a time."""
+        if self.on_snapshot is not None or self.tips is not None or not self.run.motion.joints_are_position:
+            super().on_batch(batch)
+            return
+        first = self.record_batch(batch)
+        count = len(batch)
+        if not count:
+            return
+        off = self.run.interpreter.offset()
+        poses = self.axis.frames(np.array([batch.start, *batch.ends], dtype=float), off)
+        code = np.array([RAPID if kind == "rapid" else CUT if self.spindle_on else SPINDLE_OFF
+                         for kind in batch.kinds], dtype=np.int8)
+        arcs = [] if batch.arcs is None else [k for k, arc in enumerate(batch.arcs) if arc is not None]
+        index = 0
+        for stop in [*arcs, count]:
+            if index < stop:  # straight moves
+                self._queue_straight(poses[index:stop + 1], first + index, code[index:stop])
+                index = stop
+            if stop < count:  # an arc
+                self._queue_move(batch.move(stop, batch.ends[stop - 1] if stop else batch.start), first + stop)
+                index = stop + 1
+
+    def _queue_straight(self, poses: np.ndarray, first: int, codes: np.ndarray) -> None:
+        """Queue straight moves ``first``, ``first + 1``, ... from ``poses[k]`` to ``poses[k + 1]`` (the bar's
+        frame) with ``codes``: ``_fill``'s samples, computed as arrays, cut each time the queue is full."""
+        turn, step = self.steps
+        delta = poses[1:] - poses[:-1]
+        reach = np.sqrt(np.sum(delta[:, :3] * delta[:, :3], axis=1)) / step
+        near = np.abs(reach - np.round(reach)) <= 1e-9 * np.maximum(reach, 1.0)
+        for k in np.flatnonzero(near).tolist():  # where math.dist's last bit could decide a ceiling
+            reach[k] = math.dist(poses[k, :3].tolist(), poses[k + 1, :3].tolist()) / step
+        counts = np.maximum(np.ceil(np.maximum(np.abs(delta[:, 3]) / turn, reach)), 1.0).astype(np.int64)
+        move = np.repeat(np.arange(len(counts)), counts)
+        j = np.arange(len(move)) - np.repeat(np.cumsum(counts) - counts, counts) + 1
+        rows = poses[move] + delta[move] * (j / counts[move])[:, None]
+        single = np.repeat(counts == 1, counts)
+        rows[single] = poses[1:][counts == 1]
+        if tuple(poses[0].tolist()) != self.last:  # not where the queue ends: the first move's start too
+            rows, move, counts = np.vstack((poses[:1], rows)), np.r_[0, move], counts.copy()
+            counts[0] += 1
+        self.last = tuple(poses[-1].tolist())
+        ends = np.cumsum(counts)
+        done = 0  # moves queued
+        while done < len(counts):
+            taken = ends[done - 1] if done else 0
+            stop = min(max(int(np.searchsorted(ends, taken + self.queue.room, side="left")) + 1, done + 1), len(counts))
+            self.queue.add_rows(rows[taken:ends[stop - 1]], first + move[taken:ends[stop - 1]],
+                                np.repeat(codes[done:stop], counts[done:stop]))
+            done = stop
+            if self.queue.full:
+                self.flush()
 
     def _fill(self, keys: Sequence[Sequence[float]], rows: Sequence[Sequence[float]]) -> list[float]:
         """``rows`` after the first, flat, with samples between where the ``keys`` (three lengths and an

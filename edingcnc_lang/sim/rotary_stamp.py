@@ -59,44 +59,77 @@ def parts_of(tool: Tool) -> list[Part]:
 def stamps(stock: RoundStock, poses: np.ndarray, radius: float, part: Part | None = None
            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(sample, cell, low, high): for each pose the interval of radii ``part`` (default: a flat end
-    mill of ``radius`` from the tip upwards) covers on each cell's ray."""
+    mill of ``radius`` from the tip upwards) covers on each cell's ray, pose by pose, slice by slice,
+    angle by angle.  A ray's angle and its heights depend on the pose and the angle only, the tool's
+    width on the pose and the slice only: each is worked out once (the trigonometry per pose and
+    angle, not per cell), the rays a pose cannot reach (a slice beyond the tool's radius, an angle
+    whose heights leave no interval) are dropped before the pairs are formed."""
     part = part or Part(radius, 0.0, math.inf, CUT)
-    first, slices, first_angle, spread, per = extent(stock, poses, part)
+    first, slices, first_angle, spread, _ = extent(stock, poses, part)
     step = math.radians(stock.angle_step())
-    sample = np.repeat(np.arange(len(poses)), per)
-    within = np.arange(len(sample)) - np.repeat(np.cumsum(per) - per, per)
-    spread_s = spread[sample]
-    slice_ = first[sample].astype(np.int64) + within // np.maximum(spread_s, 1)
-    angle = (first_angle[sample] + within % np.maximum(spread_s, 1)) % stock.shape[1]
-    x, y, z, a = poses[sample].T
-    dx = stock.centres()[slice_] - x
-    half = np.sqrt(np.maximum(part.radius * part.radius - dx * dx, 0.0))
-    phi = (angle + 0.5) * step + np.radians(a)
-    c, s = np.cos(phi), np.sin(phi)
+    angles = stock.shape[1]
     capped = math.isfinite(part.top) and float(poses[:, 2].min()) + part.top < float(stock.outer.max())
-    low, high = _flat(y, z + part.bottom, z + part.top if capped else None, half, c, s)
-    keep = (np.abs(dx) <= part.radius) & (low < high) & (high >= 0)
-    if part.cutter is not None and part.cutter.shape == "ball" and keep.any():
+    # (pose, angle) rays: their direction and the interval the part's heights leave on them
+    pose_a = np.repeat(np.arange(len(poses)), spread)
+    angle = (first_angle[pose_a] + (np.arange(len(pose_a)) - np.repeat(np.cumsum(spread) - spread, spread))) % angles
+    z_a = poses[pose_a, 2]
+    phi = (angle + 0.5) * step + np.radians(poses[pose_a, 3])
+    c, s = np.cos(phi), np.sin(phi)
+    lo_a, hi_a = _heights(z_a + part.bottom, z_a + part.top if capped else None, s)
+    ray = np.flatnonzero((lo_a < hi_a) & (hi_a >= 0))
+    pose_a, angle, c, s, lo_a, hi_a = pose_a[ray], angle[ray], c[ray], s[ray], lo_a[ray], hi_a[ray]
+    per_a = np.bincount(pose_a, minlength=len(poses))
+    # (pose, slice) rows within the tool's radius: the half width of its slice there
+    rows = np.where(per_a > 0, slices, 0)
+    pose_s = np.repeat(np.arange(len(poses)), rows)
+    slice_ = first[pose_s] + (np.arange(len(pose_s)) - np.repeat(np.cumsum(rows) - rows, rows))
+    dx = stock.centres()[slice_] - poses[pose_s, 0]
+    row = np.flatnonzero(np.abs(dx) <= part.radius)
+    pose_s, slice_, dx = pose_s[row], slice_[row], dx[row]
+    half = np.sqrt(np.maximum(part.radius * part.radius - dx * dx, 0.0))
+    # the pairs: each row with each ray of its pose, in that order
+    width = per_a[pose_s]
+    ray_start = np.cumsum(per_a) - per_a
+    pair_s = np.repeat(np.arange(len(pose_s)), width)
+    pair_a = np.arange(len(pair_s)) - np.repeat(np.cumsum(width) - width - ray_start[pose_s], width)
+    y = poses[pose_s, 1]
+    low, high = _sides(y, half, c, pair_s, pair_a)
+    np.maximum(lo_a[pair_a], low, out=low)  # (in _flat's order: the same zero's sign on a tie)
+    np.minimum(hi_a[pair_a], high, out=high)
+    keep = low < high
+    keep &= high >= 0
+    if part.cutter is not None and keep.any():
         k = np.flatnonzero(keep)
-        low[k], high[k] = _ball(part, dx[k], y[k], z[k], half[k], c[k], s[k])
-    elif part.cutter is not None and part.cutter.shape == "vee" and keep.any():
-        k = np.flatnonzero(keep)
-        lo, hi = _vee(part.cutter.cone_slope, dx[k], y[k], z[k], c[k], s[k])
-        low[k], high[k] = np.maximum(lo, low[k]), np.minimum(hi, high[k])
-    elif part.cutter is not None and keep.any():
-        top = float(stock.outer.max()) + 1.0  # beyond the surface every interval only needs to reach it
-        k = np.flatnonzero(keep)
-        lo, hi = _shaped(part.cutter, dx[k], y[k], z[k], c[k], s[k], np.maximum(low[k], -1.0), np.minimum(high[k], top))
-        low[k] = lo
-        high[k] = np.where(hi >= top, high[k], hi)  # reaching past the surface: as the flat part's
-    keep &= (high >= 0) & (low <= high)
-    return sample[keep], (slice_ * stock.shape[1] + angle)[keep], low[keep], high[keep]
+        ks, ka = pair_s[k], pair_a[k]
+        kp = pose_s[ks]
+        dx_k, y_k, z_k, c_k, s_k = dx[ks], y[ks], poses[kp, 2], c[ka], s[ka]
+        if part.cutter.shape == "ball":
+            low[k], high[k] = _ball(part, dx_k, y_k, z_k, half[ks], c_k, s_k)
+        elif part.cutter.shape == "vee":
+            lo, hi = _vee(part.cutter.cone_slope, dx_k, y_k, z_k, c_k, s_k)
+            low[k], high[k] = np.maximum(lo, low[k]), np.minimum(hi, high[k])
+        else:
+            top = float(stock.outer.max()) + 1.0  # beyond the surface every interval only needs to reach it
+            lo, hi = _shaped(part.cutter, dx_k, y_k, z_k, c_k, s_k, np.maximum(low[k], -1.0), np.minimum(high[k], top))
+            low[k] = lo
+            high[k] = np.where(hi >= top, high[k], hi)  # reaching past the surface: as the flat part's
+        keep &= (high >= 0) & (low <= high)
+    k = np.flatnonzero(keep)
+    ks = pair_s[k]
+    return pose_s[ks], slice_[ks] * angles + angle[pair_a[k]], low[k], high[k]
 
 
 def _flat(y: np.ndarray, bottom: np.ndarray, top: np.ndarray | None, half: np.ndarray, c: np.ndarray,
           s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The ray's interval in the strip |ρ c - y| <= half between the heights ``bottom`` and ``top``
     (None: no top, as for a part reaching up past the bar)."""
+    lo, hi = _heights(bottom, top, s)
+    side_lo, side_hi = _sides(y, half, c)
+    return np.maximum(lo, side_lo), np.minimum(hi, side_hi)
+
+
+def _heights(bottom: np.ndarray, top: np.ndarray | None, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The ray's interval between the heights ``bottom`` and ``top`` (None: none), ``s`` its sine."""
     with np.errstate(divide="ignore", invalid="ignore"):
         up, down = s > 1e-12, s < -1e-12
         level = ~up & ~down  # a ray along p: all of it between the heights when 0 is, else none
@@ -108,11 +141,28 @@ def _flat(y: np.ndarray, bottom: np.ndarray, top: np.ndarray | None, half: np.nd
         else:
             lo = np.where(up, bottom / s, np.where(down, top / s, along))
             hi = np.where(up, top / s, np.where(down, bottom / s, -along))
-        right, left = c > 1e-12, c < -1e-12
-        across = np.abs(y) <= half  # a ray along q: inside the tool's width or not at all
-        side_lo = np.where(right, (y - half) / c, np.where(left, (y + half) / c, np.where(across, -np.inf, np.inf)))
-        side_hi = np.where(right, (y + half) / c, np.where(left, (y - half) / c, np.where(across, np.inf, -np.inf)))
-    return np.maximum(lo, side_lo), np.minimum(hi, side_hi)
+    return lo, hi
+
+
+def _sides(y: np.ndarray, half: np.ndarray, c: np.ndarray, row: np.ndarray | None = None,
+           ray: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The ray's interval in the strip |ρ c - y| <= half, ``c`` its cosine (a ray along q: inside the
+    tool's width or not at all); with ``row`` and ``ray``, of the pairs (``y[row]``, ``half[row]``,
+    ``c[ray]``): the strip's edges y ± half worked out once a row."""
+    row = np.arange(len(y)) if row is None else row
+    ray = np.arange(len(c)) if ray is None else ray
+    with np.errstate(divide="ignore", invalid="ignore"):
+        right, level = c > 1e-12, np.abs(c) <= 1e-12  # (not right and not level: left, c < -1e-12)
+        edge = (y - half)[row] / c[ray]  # the edge a ray to the right (c > 0) enters at, one to the left leaves at
+        other = (y + half)[row] / c[ray]
+        facing = right[ray]
+        side_lo, side_hi = np.where(facing, edge, other), np.where(facing, other, edge)
+        if level.any():
+            along = np.flatnonzero(level[ray])
+            across = np.abs(y[row[along]]) <= half[row[along]]
+            side_lo[along] = np.where(across, -np.inf, np.inf)
+            side_hi[along] = np.where(across, np.inf, -np.inf)
+    return side_lo, side_hi
 
 
 def _ball(part: Part, dx: np.ndarray, y: np.ndarray, z: np.ndarray, half: np.ndarray, c: np.ndarray,

@@ -114,46 +114,74 @@ class RoundStock:
         start_top, start_bore = outer[cell].astype(np.float64), inner[cell].astype(np.float64)
         bore = start_bore
         top = float(start_top.max()) if len(cell) else 0.0  # no running minimum above it counts
+        groups = Groups(cell)
+        floor = np.maximum(lo, 0.0)  # a cut goes no deeper than the axis
         for _ in range(2):  # the second time with the bore as the earlier entries of the cell left it
             at_bore = lo <= bore + EPS
             outside = ~at_bore if open_top else ~at_bore & (hi >= start_top - EPS)
-            before = np.minimum(start_top, _running_min(cell, np.where(outside, lo, np.inf), top))
-            surface = (~at_bore & open_top) | (hi >= before - EPS)  # a cut from outside if it reaches the surface
-            before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf), top))
+            before = np.minimum(start_top, groups.running_min(np.where(outside, lo, np.inf), top))
+            surface = hi >= before - EPS  # a cut from outside if it reaches the surface
+            if open_top:
+                surface |= ~at_bore
+            before = np.minimum(start_top, groups.running_min(np.where(surface, floor, np.inf), top))
             while not open_top:  # a chain of cuts, each reaching only the surface the one before left
                 grown = surface | (hi >= before - EPS)  # grows as the surface sinks: its end is the cut in order
                 if np.array_equal(grown, surface):
                     break
                 surface = grown
-                before = np.minimum(start_top, _running_min(cell, np.where(surface, np.maximum(lo, 0.0), np.inf), top))
+                before = np.minimum(start_top, groups.running_min(np.where(surface, floor, np.inf), top))
             surface &= lo < before - EPS
             boring = at_bore & ~surface & (hi > bore + EPS) & (before > bore + EPS)
             if not boring.any() or bore is not start_bore:
                 break
-            bore = np.maximum(start_bore, -_running_min(cell, np.where(boring, -hi, np.inf), 0.0))
+            bore = np.maximum(start_bore, -groups.running_min(np.where(boring, -hi, np.inf), 0.0))
         depth = np.zeros(len(cell))
         depth[surface] = np.maximum(before[surface] - np.maximum(lo[surface], bore[surface]), 0.0)
         depth[boring] = np.minimum(hi[boring], before[boring]) - bore[boring]
-        np.minimum.at(outer, cell[surface], np.maximum(lo[surface], 0.0).astype(np.float32))
-        np.maximum.at(inner, cell[boring], hi[boring].astype(np.float32))
+        _fold(np.minimum, outer, cell[surface], floor[surface].astype(np.float32))
+        if boring.any():
+            _fold(np.maximum, inner, cell[boring], hi[boring].astype(np.float32))
         removed = np.empty(len(cells))
         removed[order] = depth
         return removed
 
 
-def _running_min(groups: np.ndarray, values: np.ndarray, ceiling: float) -> np.ndarray:
-    """Per entry, the least of the earlier ``values`` of its group; where there is none, inf or a
-    number above ``ceiling`` (the callers clamp to at most it).  ``groups`` ascending: shifting each
-    group below all earlier ones by more than the values' spread and ``ceiling`` makes one running
-    minimum serve all (an earlier group's minimum, shifted, is what an entry with none sees)."""
-    if not len(values):
-        return values
-    finite = values[np.isfinite(values)]
-    span = float(max(float(finite.max()), ceiling) - finite.min()) + 1.0 if len(finite) else 1.0
-    shift = (groups - groups[0]).astype(np.float64) * span
-    running = np.minimum.accumulate(values - shift) + shift
-    out = np.empty_like(running)
-    out[0] = np.inf
-    out[1:] = running[:-1]
-    out[1:][groups[1:] != groups[:-1]] = np.inf
-    return out
+def _fold(ufunc: np.ufunc, target: np.ndarray, cells: np.ndarray, values: np.ndarray) -> None:
+    """``ufunc.at(target, cells, values)`` for ``cells`` ascending: each cell's values folded first
+    (``reduceat``), then into the target once.  The same numbers: a least (greatest) value is one of
+    them whatever the order, and no cut leaves a -0 for a tie to tell apart from 0."""
+    if not len(cells):
+        return
+    starts = np.flatnonzero(np.r_[True, cells[1:] != cells[:-1]])
+    where = cells[starts]
+    target[where] = ufunc(target[where], ufunc.reduceat(values, starts))
+
+
+class Groups:
+    """Entries grouped by cell (``groups`` ascending): what every running minimum over them shares."""
+
+    def __init__(self, groups: np.ndarray) -> None:
+        self.base = (groups - groups[0]).astype(np.float64) if len(groups) else np.zeros(0)
+        self.new = groups[1:] != groups[:-1]  # where a group starts (after the first)
+
+    def running_min(self, values: np.ndarray, ceiling: float) -> np.ndarray:
+        """Per entry, the least of the earlier ``values`` of its group; where there is none, inf or a
+        number above ``ceiling`` (the callers clamp to at most it).  Shifting each group below all
+        earlier ones by more than the values' spread and ``ceiling`` makes one running minimum serve
+        all (an earlier group's minimum, shifted, is what an entry with none sees)."""
+        if not len(values):
+            return values
+        finite = np.isfinite(values)
+        span = 1.0
+        if finite.any():
+            most, least = values.max(where=finite, initial=-np.inf), values.min(where=finite, initial=np.inf)
+            span = float(max(float(most), ceiling) - least) + 1.0
+        shift = self.base[:-1] * span
+        out = np.empty(len(values))
+        out[0] = np.inf
+        running = out[1:]
+        np.subtract(values[:-1], shift, out=running)
+        np.minimum.accumulate(running, out=running)
+        running += shift
+        running[self.new] = np.inf
+        return out
