@@ -12,11 +12,10 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
-from edingcnc_lang.machine.plain_runs import (LETTERS_OF, POSSESSIVE, SHAPE_LEAST, line_target, shape_values,
-                                               usual_order, words_row)
+from edingcnc_lang.machine.plain_runs import (LETTERS_OF, NO_MOTION, POSSESSIVE, SHAPE_LEAST, line_target,
+                                               motion_texts, read_motion, shape_values, usual_order, words_row)
 from edingcnc_lang.machine.state import G_2, G_3
 
-NO_MOTION = -1  # the motion in force is neither G2 nor G3
 _LETTERS = "GXYZABCIJKRF"  # the words an arc line may hold besides N, in the order CAM output writes them
 ARC_ORDER = usual_order("[0-9.]+" + POSSESSIVE, POSSESSIVE, _LETTERS)
 # The slots of a row's centre words by plane (0 XY, 1 XZ, 2 YZ, as _speedups.c numbers them): the first and
@@ -27,10 +26,8 @@ _PLANE_WORDS = ((_I, _J, _K), (_K, _I, _J), (_J, _K, _I))
 _PLANE_AXES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
 _HALF_PI = math.pi / 2
 _TURN = 2 * math.pi
-# The motion of the G texts CAM output writes, looked up instead of read as a number (any other text is read
-# as one); a text is its number's motion: "02" is G2.
-_MOTION_OF = {text: G_2 if float(text) == 2.0 else G_3
-              for text in ("2", "3", "02", "03", "2.", "3.", "2.0", "3.0", "+2", "+3")}
+_MOTIONS = {2.0: G_2, 3.0: G_3}
+_MOTION_OF = motion_texts(_MOTIONS)  # "02" is G2, any other text is read as a number (read_motion)
 
 Pose = tuple[float, ...]
 # What plain_arcs returns (the compiled one's tuple): the index of the first line it left, whether it read
@@ -85,8 +82,7 @@ def plain_arcs(lines: Sequence[tuple[int, str]], first: int, start: Sequence[flo
         if g:
             line_motion = motion_of(g, NO_MOTION)
             if line_motion == NO_MOTION:  # a text not in the table: read as a number
-                value = float(g)
-                line_motion = G_2 if value == 2.0 else G_3 if value == 3.0 else NO_MOTION
+                line_motion = read_motion(g, _MOTIONS)
         d1, d2 = row[first_word], row[second_word]  # the centre words' texts
         if (line_motion != G_2 and line_motion != G_3) or row[other_word] or not (x or y or z or a or b or c) \
                 or (r and (d1 or d2)) or not (r or d1 or d2):

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 import string
 import sys
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from itertools import accumulate, islice, repeat, takewhile
 from operator import add, mul
 
@@ -37,10 +37,26 @@ def usual_order(number: str, possessive: str, letters: str = "GXYZABCF") -> re.P
 
 
 USUAL_ORDER = usual_order("[0-9.]+" + POSSESSIVE, POSSESSIVE)
-# The motion of the G texts CAM output writes, looked up instead of read as a number (any other
-# text is read as one); a text is its number's motion: "01" is G1.
-_MOTION_OF = {text: G_0 if float(text) == 0.0 else G_1
-              for text in ("0", "1", "00", "01", "0.", "1.", "0.0", "1.0", "+0", "+1", "-0")}
+
+
+def motion_texts(motions: Mapping[float, int]) -> dict[str, int]:
+    """The motion of each G text CAM output writes for the codes ``motions`` (number: motion), looked up
+    instead of read as a number: "1", "01", "1.", "1.0", "+1" (and "-0"); a text is its number's motion."""
+    texts = {}
+    for number, motion in motions.items():
+        code = f"{number:g}"
+        for text in (code, "0" + code, code + ".", code + ".0", "+" + code, *(("-0",) if number == 0 else ())):
+            texts[text] = motion
+    return texts
+
+
+def read_motion(g: str, motions: Mapping[float, int]) -> int:
+    """The motion of a G text that is not in ``motion_texts``' table, read as a number; NO_MOTION for another code."""
+    return motions.get(float(g), NO_MOTION)
+
+
+_MOTIONS = {0.0: G_0, 1.0: G_1}
+_MOTION_OF = motion_texts(_MOTIONS)
 # A run of lines of one shape (the same letters in the same order, the same G text, no comment), as
 # CAM output and surfacing jobs write them, is read as columns with string methods instead of a match
 # and a loop step per line: the lines are plain (the check pass's FAST_LINE), so deleting the numbers
@@ -106,10 +122,7 @@ def plain_moves(lines: Sequence[tuple[int, str]], first: int, pos: Sequence[floa
         if g:
             line_motion = _MOTION_OF.get(g, NO_MOTION)
             if line_motion == NO_MOTION:  # a text not in the table: read as a number
-                value = float(g)
-                if value != 0.0 and value != 1.0:
-                    break
-                line_motion = G_0 if value == 0.0 else G_1
+                line_motion = read_motion(g, _MOTIONS)
         if f:
             value = float(f)
             if value < 0:
