@@ -125,20 +125,12 @@ class Simulator(SimulatorBase[Stock]):
         starts = np.vstack((np.array(batch.start[:3], dtype=float), ends[:-1]))
         codes = self._codes(np.array([kind == "rapid" for kind in batch.kinds]), starts, ends)
         rows = np.hstack((starts - shift, ends - shift))
-        arcs = [] if batch.arcs is None else [k for k, arc in enumerate(batch.arcs) if arc is not None]
-        index = 0
-        for stop in [*arcs, count]:
-            while index < stop:  # straight moves
-                take = min(stop - index, self.queue.room)
-                self.queue.add_rows(rows[index:index + take], np.arange(first + index, first + index + take),
-                                    codes[index:index + take])
-                index += take
-                if self.queue.full:
-                    self.flush()
+        for begin, stop in self.straight_runs(batch):
+            self.queue_moves(rows[begin:stop], np.arange(first + begin, first + stop), codes[begin:stop],
+                             np.arange(1, stop - begin + 1))  # (a row each)
             if stop < count:  # an arc
                 start = batch.ends[stop - 1] if stop else batch.start
                 self._queue_move(batch.move(stop, start), first + stop, int(codes[stop]), tuple(shift.tolist()))
-                index = stop + 1
 
     def _shift(self) -> tuple[float, float, float]:
         """Machine coordinates of the stock's origin less the tool length in force: a move's tip in the stock's

@@ -174,15 +174,11 @@ class CylinderSimulator(SimulatorBase[RoundStock]):
         poses = self.axis.frames(np.array([batch.start, *batch.ends], dtype=float), off)
         code = np.array([RAPID if kind == "rapid" else CUT if self.spindle_on else SPINDLE_OFF
                          for kind in batch.kinds], dtype=np.int8)
-        arcs = [] if batch.arcs is None else [k for k, arc in enumerate(batch.arcs) if arc is not None]
-        index = 0
-        for stop in [*arcs, count]:
-            if index < stop:  # straight moves
-                self._queue_straight(poses[index:stop + 1], first + index, code[index:stop])
-                index = stop
+        for begin, stop in self.straight_runs(batch):
+            if begin < stop:
+                self._queue_straight(poses[begin:stop + 1], first + begin, code[begin:stop])
             if stop < count:  # an arc
                 self._queue_move(batch.move(stop, batch.ends[stop - 1] if stop else batch.start), first + stop)
-                index = stop + 1
 
     def _queue_straight(self, poses: np.ndarray, first: int, codes: np.ndarray) -> None:
         """Queue straight moves ``first``, ``first + 1``, ... from ``poses[k]`` to ``poses[k + 1]`` (the bar's
@@ -203,16 +199,7 @@ class CylinderSimulator(SimulatorBase[RoundStock]):
             rows, move, counts = np.vstack((poses[:1], rows)), np.r_[0, move], counts.copy()
             counts[0] += 1
         self.last = tuple(poses[-1].tolist())
-        ends = np.cumsum(counts)
-        done = 0  # moves queued
-        while done < len(counts):
-            taken = ends[done - 1] if done else 0
-            stop = min(max(int(np.searchsorted(ends, taken + self.queue.room, side="left")) + 1, done + 1), len(counts))
-            self.queue.add_rows(rows[taken:ends[stop - 1]], first + move[taken:ends[stop - 1]],
-                                np.repeat(codes[done:stop], counts[done:stop]))
-            done = stop
-            if self.queue.full:
-                self.flush()
+        self.queue_moves(rows, first + move, np.repeat(codes, counts), np.cumsum(counts))
 
     def _fill(self, keys: Sequence[Sequence[float]], rows: Sequence[Sequence[float]]) -> list[float]:
         """``rows`` after the first, flat, with samples between where the ``keys`` (three lengths and an

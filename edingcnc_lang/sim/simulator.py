@@ -6,9 +6,11 @@ every move (findings name them), and the snapshot hook ``ecnc view`` plays its f
 from __future__ import annotations
 
 from array import array
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Generic, TypeVar
+
+import numpy as np
 
 from edingcnc_lang.canon import Batch, Event, Move, Pose
 from edingcnc_lang.events import SpindleEvent, ToolChangeEvent
@@ -62,6 +64,33 @@ class SimulatorBase(Generic[StockT]):
         """A batch's moves: one ``on_move`` each, unless the simulator has a batch form of its own."""
         for move in batch.moves():
             self.on_move(move, move.end)
+
+    @staticmethod
+    def straight_runs(batch: Batch) -> Iterator[tuple[int, int]]:
+        """A batch as (begin, stop): moves begin..stop-1 straight (maybe none), then move ``stop`` an arc
+        (when ``stop`` is less than the batch's length), in order: what a batch form queues as arrays and
+        what it hands to its ``on_move`` form."""
+        begin = 0
+        if batch.arcs is not None:
+            for stop, arc in enumerate(batch.arcs):
+                if arc is not None:
+                    yield begin, stop
+                    begin = stop + 1
+        yield begin, len(batch)
+
+    def queue_moves(self, rows: np.ndarray, moves: np.ndarray, codes: np.ndarray, ends: np.ndarray) -> None:
+        """Queue the rows of consecutive moves (each row's move and code; move k's rows end at ``ends[k]``),
+        cutting each time the queue is full: in the pieces ``on_move`` a move at a time would fill it with
+        (what is cut at once decides the findings)."""
+        done = 0  # moves queued
+        while done < len(ends):
+            taken = int(ends[done - 1]) if done else 0
+            stop = min(max(int(np.searchsorted(ends, taken + self.queue.room, side="left")) + 1, done + 1), len(ends))
+            upto = int(ends[stop - 1])
+            self.queue.add_rows(rows[taken:upto], moves[taken:upto], codes[taken:upto])
+            done = stop
+            if self.queue.full:
+                self.flush()
 
     def on_event(self, event: Event) -> None:
         if isinstance(event, SpindleEvent):
